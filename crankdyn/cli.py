@@ -1,0 +1,60 @@
+"""The ``crankdyn`` command line.
+
+Each subcommand lives in its own module (``crankdyn.cmd_<name>``) exposing
+``add_parser(subparsers)``, which registers an argparse parser whose ``func(args)`` runs
+the job and returns an exit status.  Heavy libraries (numpy, pandas, matplotlib,
+openpyxl) are imported inside ``func`` only, so ``crankdyn --help`` stays fast.
+
+Bad input is reported one problem per line on stderr, without a traceback, with exit
+status 2; no output file is written in that case.
+"""
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+
+from . import __version__
+
+#: Subcommand modules, in the order ``--help`` lists them.
+SUBCOMMANDS = ("engine", "linkage", "synth")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="crankdyn",
+        description="Dynamics of crank mechanisms: engine force table (Table 2), "
+                    "planar linkage kinematics and kinetostatics, synthesis.")
+    parser.add_argument("--version", action="version", version=f"crankdyn {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    for name in SUBCOMMANDS:
+        try:
+            module = importlib.import_module(f"crankdyn.cmd_{name}")
+        except ModuleNotFoundError as exc:  # a subcommand not built yet
+            if exc.name != f"crankdyn.cmd_{name}":
+                raise
+            continue
+        module.add_parser(sub)
+    return parser
+
+
+def main(argv=None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    if not getattr(args, "func", None):
+        parser.print_help()
+        return 2
+    try:
+        return int(args.func(args) or 0)
+    except ValueError as exc:  # every crankdyn input error is a ValueError subclass
+        lines = exc.lines() if hasattr(exc, "lines") else str(exc).splitlines() or [repr(exc)]
+        for line in lines:
+            print(f"crankdyn {args.command}: error: {line}", file=sys.stderr)
+        return 2
+    except (FileNotFoundError, IsADirectoryError, PermissionError) as exc:
+        print(f"crankdyn {args.command}: error: {exc}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

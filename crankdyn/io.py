@@ -1,0 +1,70 @@
+"""Safe report output: write to a temporary file in the target folder, then rename.
+
+A crash or a bad value never leaves half a report, and an existing report is replaced
+only by a complete new one.  Inputs are never overwritten: :func:`check_not_input`
+refuses an output path that is one of the input files.
+"""
+from __future__ import annotations
+
+import contextlib
+import os
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+__all__ = ["atomic_path", "write_csv", "check_not_input", "ensure_finite", "OutputError"]
+
+
+class OutputError(ValueError):
+    """An output cannot be written safely (it would overwrite an input, or holds NaN)."""
+
+
+@contextlib.contextmanager
+def atomic_path(path):
+    """Context manager yielding a temporary path beside ``path``; renamed on success.
+
+    On an exception the temporary file is removed and ``path`` is left untouched.
+    """
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp" + path.suffix,
+                               dir=path.parent)
+    os.close(fd)
+    try:
+        yield Path(tmp)
+        os.replace(tmp, path)
+    except BaseException:
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(tmp)
+        raise
+
+
+def check_not_input(outputs, inputs) -> None:
+    """Raise :class:`OutputError` if any output path is one of the input paths."""
+    ins = {Path(p).resolve() for p in inputs if p is not None}
+    for out in outputs:
+        if Path(out).resolve() in ins:
+            raise OutputError(f"output {out} is an input file; choose another output folder")
+
+
+def ensure_finite(df, what: str) -> None:
+    """Raise :class:`OutputError` naming the column and row of the first non-finite number.
+
+    ``df`` is a pandas DataFrame; non-numeric columns are skipped.
+    """
+    for col in df.columns:
+        values = df[col].to_numpy()
+        if values.dtype.kind not in "fc":
+            continue
+        bad = ~np.isfinite(values)
+        if bad.any():
+            row = int(np.flatnonzero(bad)[0])
+            raise OutputError(f"{what}: column {col} is not finite at row {row + 1}")
+
+
+def write_csv(df, path) -> None:
+    """Write a DataFrame as CSV (comma, '.', header row, full float precision), atomically."""
+    with atomic_path(path) as tmp:
+        # float_format=None with pandas writes repr(), i.e. the shortest round-trip form.
+        df.to_csv(tmp, index=False, float_format=None, lineterminator="\n")

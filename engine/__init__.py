@@ -1,0 +1,1 @@
+"""Engine crank-slider dynamics: the force table (Table 2)."""

@@ -1,0 +1,1 @@
+"""Planar crank mechanisms: kinematics and kinetostatics by Assur groups."""
