@@ -1,0 +1,314 @@
+"""The linkage spec: a crank-rocker or crank-slider with masses, loads and an analysis plan.
+
+:func:`load_spec` reads TOML (or a dict of the same shape), checks every key and returns
+a frozen :class:`MechanismSpec`.  SI units, angles in degrees at the edge.  All problems
+are reported at once in one :class:`~linkage.errors.SpecError`.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from types import MappingProxyType
+
+from .errors import SpecError
+from .validation import Checker, read_toml
+
+__all__ = ["LinkSpec", "LoadSpec", "MechanismSpec", "load_spec", "LINK_NAMES", "KINDS"]
+
+KINDS = ("crank-rocker", "crank-slider")
+#: Link names per kind, in the textbook numbering 2, 3, 4.
+LINK_NAMES = {"crank-rocker": ("crank", "coupler", "rocker"),
+              "crank-slider": ("crank", "coupler", "slider")}
+#: Link number of each name.
+LINK_NUMBER = {"crank": 2, "coupler": 3, "rocker": 4, "slider": 4}
+#: Point names the core reports itself; extra points must not reuse them.
+RESERVED_POINTS = ("O", "A", "B", "C", "S2", "S3", "S4")
+
+_MECH_KEYS = ("kind", "name", "crank", "coupler", "rocker", "ground", "ground_angle_deg",
+              "offset", "assembly", "omega_rad_s", "epsilon_rad_s2", "gravity_m_s2")
+_LINK_KEYS = ("mass_kg", "inertia_kg_m2", "cg", "points")
+_LOAD_KEYS = ("link", "at", "force_N", "moment_Nm", "resistance_Nm", "resistance_N",
+              "stroke", "span_deg", "span_m")
+_ANALYSIS_KEYS = ("positions", "crank_angles_deg", "working_stroke")
+_POINT_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9]*$")
+
+
+@dataclass(frozen=True)
+class LinkSpec:
+    """Inertia and reported points of one link (local frame, see the module docs).
+
+    Attributes
+    ----------
+    mass : float  [kg]
+    inertia : float  Moment of inertia about the centre of mass. [kg·m²]
+    cg : complex  Centre of mass in local coordinates. [m]
+    points : mapping of str to complex  Extra named points in local coordinates. [m]
+    """
+
+    mass: float = 0.0
+    inertia: float = 0.0
+    cg: complex = 0j
+    points: MappingProxyType = field(default_factory=lambda: MappingProxyType({}))
+
+
+@dataclass(frozen=True)
+class LoadSpec:
+    """One external load.
+
+    ``kind`` is ``"force"`` (global components ``force`` [N] at local point ``at`` [m]),
+    ``"moment"`` (``moment`` [N·m], + ccw) or ``"resistance"`` (magnitude ``resistance``
+    [N·m] on a rocker or [N] on a slider, always opposing the link's motion, only in
+    ``stroke`` and, if ``span`` is set, only over that much swing [rad] or travel [m] from
+    the start of the stroke).
+    """
+
+    link: str
+    kind: str
+    at: complex = 0j
+    force: complex = 0j
+    moment: float = 0.0
+    resistance: float = 0.0
+    stroke: str = "working"
+    span: float | None = None
+
+
+@dataclass(frozen=True)
+class MechanismSpec:
+    """A validated linkage spec (SI, angles in radians inside; degrees as given kept in
+    ``raw``).  See the README for every key."""
+
+    kind: str
+    name: str
+    crank: float
+    coupler: float
+    rocker: float | None
+    ground: float | None
+    ground_angle: float
+    offset: float
+    assembly: int
+    omega: float
+    epsilon: float
+    gravity: float
+    links: MappingProxyType
+    loads: tuple
+    positions: int | None
+    crank_angles_deg: tuple | None
+    working_stroke: str | None
+    raw: MappingProxyType
+    source: str | None = None
+
+    @property
+    def link_names(self):
+        return LINK_NAMES[self.kind]
+
+    def link(self, name: str) -> LinkSpec:
+        return self.links[name]
+
+
+def _default_cg(kind, name, lengths):
+    """Default centre of mass: mid-length of a bar, the pin B of a slider."""
+    if name == "slider":
+        return 0j
+    return complex(lengths[name] / 2.0, 0.0)
+
+
+def load_spec(path_or_dict) -> MechanismSpec:
+    """Read and validate a linkage spec.
+
+    Parameters
+    ----------
+    path_or_dict : str, Path, dict or MechanismSpec
+        A TOML file, the same content as a dict, or an already loaded spec (returned as
+        is).
+
+    Returns
+    -------
+    MechanismSpec
+
+    Raises
+    ------
+    SpecError
+        With every problem found, each naming its key path, the value and what is valid.
+    """
+    if isinstance(path_or_dict, MechanismSpec):
+        return path_or_dict
+    data, _ = read_toml(path_or_dict)
+    source = None if isinstance(path_or_dict, dict) else str(path_or_dict)
+    ck = Checker()
+    ck.unknown(data, ("mechanism", "links", "load", "analysis"))
+
+    m = ck.table(data, "mechanism")
+    ck.unknown(m, _MECH_KEYS, "mechanism")
+    kind = ck.choice(m, "kind", KINDS, "mechanism")
+    name = ck.string(m, "name", "mechanism", required=False, default="mechanism")
+    crank = ck.number(m, "crank", "mechanism", gt=0, what="the crank length |OA| in m")
+    coupler = ck.number(m, "coupler", "mechanism", gt=0,
+                        what="the coupler (rod) length |AB| in m")
+    rocker = ground = None
+    if kind == "crank-rocker":
+        rocker = ck.number(m, "rocker", "mechanism", gt=0, what="the rocker length |CB| in m")
+        ground = ck.number(m, "ground", "mechanism", gt=0, what="the ground length |OC| in m")
+        if "offset" in m:
+            ck.add("mechanism.offset", "applies to a crank-slider only; remove it")
+    elif kind == "crank-slider":
+        for key in ("rocker", "ground"):
+            if key in m:
+                ck.add(f"mechanism.{key}", "applies to a crank-rocker only; remove it")
+    ground_angle = ck.number(m, "ground_angle_deg", "mechanism", required=False, default=0.0)
+    offset = ck.number(m, "offset", "mechanism", required=False, default=0.0)
+    assembly = ck.choice(m, "assembly", (1, -1), "mechanism", required=False, default=1)
+    omega = ck.number(m, "omega_rad_s", "mechanism",
+                      what="the crank angular velocity in rad/s (+ ccw, nonzero)")
+    if omega == 0.0:
+        ck.add("mechanism.omega_rad_s",
+               "got 0; must be nonzero (its sign gives the direction of rotation)")
+        omega = None
+    epsilon = ck.number(m, "epsilon_rad_s2", "mechanism", required=False, default=0.0)
+    gravity = ck.number(m, "gravity_m_s2", "mechanism", required=False, default=9.81, ge=0)
+
+    lengths = {"crank": crank, "coupler": coupler, "rocker": rocker}
+    link_names = LINK_NAMES.get(kind, ())
+    lt = ck.table(data, "links", required=False)
+    links = {}
+    for lname in lt:
+        if lname not in link_names:
+            ck.add(f"links.{lname}",
+                   f"unknown link; valid for {kind or 'this mechanism'}: {', '.join(link_names)}")
+    point_names = set()
+    for lname in link_names:
+        path = f"links.{lname}"
+        t = ck.table(lt, lname, "links", required=False)
+        ck.unknown(t, _LINK_KEYS, path)
+        mass = ck.number(t, "mass_kg", path, required=False, default=0.0, ge=0)
+        inertia = ck.number(t, "inertia_kg_m2", path, required=False, default=0.0, ge=0)
+        cg = None
+        if "cg" in t:
+            xy = ck.numbers(t, "cg", path, length=2)
+            cg = complex(*xy) if xy else None
+        if cg is None:
+            cg = _default_cg(kind, lname, lengths) if lengths.get(lname) or lname == "slider" \
+                else 0j
+        pts = {}
+        ptable = t.get("points", {})
+        if not isinstance(ptable, dict):
+            ck.add(f"{path}.points", f"must be a table of name = [x, y], got {ptable!r}")
+            ptable = {}
+        for pname in ptable:
+            ppath = f"{path}.points"
+            if not _POINT_NAME.match(pname) or pname in RESERVED_POINTS:
+                ck.add(f"{ppath}.{pname}",
+                       "invalid point name; use letters and digits, starting with a letter, "
+                       f"not one of {', '.join(RESERVED_POINTS)}")
+                continue
+            if pname in point_names:
+                ck.add(f"{ppath}.{pname}", "point name already used on another link")
+                continue
+            xy = ck.numbers(ptable, pname, ppath, length=2)
+            if xy:
+                pts[pname] = complex(*xy)
+                point_names.add(pname)
+        links[lname] = LinkSpec(mass if mass is not None else 0.0,
+                                inertia if inertia is not None else 0.0, cg,
+                                MappingProxyType(pts))
+
+    raw_loads = data.get("load", [])
+    if not isinstance(raw_loads, list):
+        ck.add("load", "must be an array of tables ([[load]])")
+        raw_loads = []
+    loads = []
+    output = "rocker" if kind == "crank-rocker" else "slider"
+    for i, t in enumerate(raw_loads):
+        path = f"load[{i}]"
+        if not isinstance(t, dict):
+            ck.add(path, f"must be a table, got {t!r}")
+            continue
+        ck.unknown(t, _LOAD_KEYS, path)
+        link = ck.choice(t, "link", link_names, path) if link_names else None
+        which = [k for k in ("force_N", "moment_Nm", "resistance_Nm", "resistance_N") if k in t]
+        if len(which) != 1:
+            ck.add(path, "needs exactly one of force_N, moment_Nm, resistance_Nm (rocker), "
+                         f"resistance_N (slider); got {', '.join(which) or 'none'}")
+            continue
+        key = which[0]
+        at = 0j
+        if "at" in t:
+            xy = ck.numbers(t, "at", path, length=2)
+            at = complex(*xy) if xy else 0j
+        if key == "force_N":
+            f = ck.numbers(t, "force_N", path, length=2)
+            for k in ("stroke", "span_deg", "span_m"):
+                if k in t:
+                    ck.add(f"{path}.{k}", "applies to a resistance only")
+            if f and link:
+                loads.append(LoadSpec(link, "force", at=at, force=complex(*f)))
+            continue
+        if key == "moment_Nm":
+            mval = ck.number(t, "moment_Nm", path)
+            for k in ("at", "stroke", "span_deg", "span_m"):
+                if k in t:
+                    ck.add(f"{path}.{k}", "does not apply to a moment; remove it")
+            if mval is not None and link:
+                loads.append(LoadSpec(link, "moment", moment=mval))
+            continue
+        # resistance
+        want = "resistance_Nm" if output == "rocker" else "resistance_N"
+        if key != want:
+            ck.add(f"{path}.{key}", f"a {kind} takes {want} on the {output}")
+            continue
+        if link is not None and link != output:
+            ck.add(f"{path}.link", f"a resistance acts on the output link {output!r}, got {link!r}")
+        r = ck.number(t, key, path, ge=0)
+        stroke = ck.choice(t, "stroke", ("working", "idle", "both"), path, required=False,
+                           default="working")
+        span_key = "span_deg" if output == "rocker" else "span_m"
+        other = "span_m" if output == "rocker" else "span_deg"
+        if other in t:
+            ck.add(f"{path}.{other}", f"use {span_key} for a {output}")
+        if "at" in t:
+            ck.add(f"{path}.at", "a resistance acts at the output link's pin; remove 'at'")
+        span = ck.number(t, span_key, path, required=False, default=None, gt=0)
+        if span is not None and span_key == "span_deg":
+            span = math.radians(span)
+        if r is not None:
+            loads.append(LoadSpec(output, "resistance", resistance=r,
+                                  stroke=stroke or "working", span=span))
+
+    a = ck.table(data, "analysis", required=False)
+    ck.unknown(a, _ANALYSIS_KEYS, "analysis")
+    positions = ck.number(a, "positions", "analysis", required=False, integer=True, ge=1)
+    angles = None
+    if "crank_angles_deg" in a:
+        angles = ck.numbers(a, "crank_angles_deg", "analysis", min_length=1)
+        angles = tuple(angles) if angles else None
+        if "positions" in a:
+            ck.add("analysis", "give either positions or crank_angles_deg, not both")
+    elif "positions" not in a:
+        positions = 12
+    strokes = ("ccw", "cw") if kind == "crank-rocker" else ("away", "toward")
+    working = ck.choice(a, "working_stroke", strokes, "analysis", required=False)
+    needs = []
+    if positions is not None and "crank_angles_deg" not in a:
+        needs.append("positions" + ("" if "positions" in a else " (12 by default)"))
+    if any(ld.kind == "resistance" and ld.stroke != "both" for ld in loads):
+        needs.append("a resistance limited to one stroke")
+    if any(ld.kind == "resistance" and ld.span is not None for ld in loads):
+        needs.append("a resistance with a span")
+    if needs and working is None and "working_stroke" not in a:
+        ck.add("analysis.working_stroke",
+               f"missing; required with {' and '.join(needs)}: one of "
+               f"{', '.join(map(repr, strokes))}")
+    ck.raise_if_any()
+    return MechanismSpec(
+        kind=kind, name=name, crank=crank, coupler=coupler, rocker=rocker, ground=ground,
+        ground_angle=math.radians(ground_angle), offset=offset, assembly=int(assembly),
+        omega=omega, epsilon=epsilon, gravity=gravity, links=MappingProxyType(links),
+        loads=tuple(loads), positions=None if angles else positions,
+        crank_angles_deg=angles, working_stroke=working,
+        raw=MappingProxyType(dict(data)), source=source)
+
+
+def spec_error(key: str, message: str) -> SpecError:
+    """One-problem :class:`SpecError` (for checks made after loading)."""
+    from .errors import Problem
+    return SpecError(Problem(key, message))
