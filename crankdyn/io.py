@@ -13,7 +13,8 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["atomic_path", "write_csv", "check_not_input", "ensure_finite", "OutputError"]
+__all__ = ["atomic_path", "staged_output", "write_csv", "check_not_input", "ensure_finite",
+           "OutputError"]
 
 
 class OutputError(ValueError):
@@ -31,8 +32,11 @@ def atomic_path(path):
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp" + path.suffix,
                                dir=path.parent)
     os.close(fd)
+    umask = os.umask(0)
+    os.umask(umask)
     try:
         yield Path(tmp)
+        os.chmod(tmp, 0o666 & ~umask)  # mkstemp creates 0600; a report is an ordinary file
         os.replace(tmp, path)
     except BaseException:
         with contextlib.suppress(FileNotFoundError):
@@ -68,3 +72,31 @@ def write_csv(df, path) -> None:
     with atomic_path(path) as tmp:
         # float_format=None with pandas writes repr(), i.e. the shortest round-trip form.
         df.to_csv(tmp, index=False, float_format=None, lineterminator="\n")
+
+
+@contextlib.contextmanager
+def staged_output(directory, inputs=()):
+    """Context manager for a multi-file report: yields a staging folder; on success every
+    file in it is moved into ``directory`` (created if needed), replacing older files of
+    the same name one by one with ``os.replace``; on an exception nothing is moved and the
+    staging folder is deleted, so a failed run writes nothing.
+
+    ``inputs`` are input paths that must not be overwritten (:class:`OutputError`).
+    """
+    import shutil
+
+    directory = Path(directory)
+    if directory.exists() and not directory.is_dir():
+        raise OutputError(f"output {directory} exists and is not a folder")
+    parent = directory.resolve().parent
+    parent.mkdir(parents=True, exist_ok=True)
+    stage = Path(tempfile.mkdtemp(prefix=f".{directory.name}.staging.", dir=parent))
+    try:
+        yield stage
+        names = sorted(p.name for p in stage.iterdir())
+        check_not_input([directory / n for n in names], inputs)
+        directory.mkdir(parents=True, exist_ok=True)
+        for name in names:
+            os.replace(stage / name, directory / name)
+    finally:
+        shutil.rmtree(stage, ignore_errors=True)

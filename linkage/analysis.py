@@ -306,7 +306,8 @@ def _summary(spec, mech, ext):
     with np.errstate(divide="ignore", invalid="ignore"):
         mu_min = float(mech.transmission_angle(mech.kinematics(np.array([phi_min]), 1.0, 0.0))[0])
     s["mu_min_deg"] = math.degrees(mu_min)
-    s["mu_min_phi_deg"] = math.degrees(phi_min) % 360.0
+    phi_min_deg = math.degrees(phi_min) % 360.0
+    s["mu_min_phi_deg"] = 0.0 if phi_min_deg > 360.0 - 1e-6 else phi_min_deg
     s["rotation"] = "ccw" if rot > 0 else "cw"
     return s
 

@@ -1,0 +1,230 @@
+"""Reports of a linkage analysis: CSV tables and the Excel workbook.
+
+Reports only consume an :class:`~linkage.analysis.AnalysisResult`; they compute no
+physics.  The workbook has the sheets ``inputs`` (spec values and the cycle geometry),
+``positions``, ``velocities``, ``accelerations``, ``forces`` (one row per position, the
+CSV columns regrouped) and ``extremes`` (the two extreme positions).  Every sheet has
+three header rows: the textbook symbol, the unit, and the CSV column name; numbers are
+stored at full precision (number formats only change how they are shown).
+"""
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+
+__all__ = ["column_label", "write_csvs", "write_workbook", "sheet_columns", "summary_lines"]
+
+_UNITS = {"m": "m", "m_s": "m/s", "m_s2": "m/s²", "deg": "°", "rad_s": "rad/s",
+          "rad_s2": "rad/s²", "N": "N", "Nm": "N·m"}
+_SIMPLE = {
+    "position": ("№", ""), "phi_deg": ("φ", "°"), "theta3_deg": ("θ3", "°"),
+    "theta4_deg": ("θ4", "°"), "omega3_rad_s": ("ω3", "rad/s"), "omega4_rad_s": ("ω4", "rad/s"),
+    "eps3_rad_s2": ("ε3", "rad/s²"), "eps4_rad_s2": ("ε4", "rad/s²"), "s4_m": ("s4", "m"),
+    "v4_m_s": ("v4", "m/s"), "a4_m_s2": ("a4", "m/s²"), "mu_deg": ("μ", "°"),
+    "M_drive_Nm": ("Mур", "N·m"), "M_res_Nm": ("Mпс", "N·m"), "F_res_N": ("Fпс", "N"),
+    "M14_Nm": ("M14", "N·m"), "N14_N": ("N14", "N"), "label": ("", ""),
+    "R23_n_N": ("R23n", "N"), "R23_t_N": ("R23t", "N"), "R14_n_N": ("R14n", "N"),
+    "R14_t_N": ("R14t", "N"),
+}
+_POINT_Q = {"x": ("x_{P}", ""), "y": ("y_{P}", ""), "vx": ("V_{P}x", ""), "vy": ("V_{P}y", ""),
+            "ax": ("a_{P}x", ""), "ay": ("a_{P}y", "")}
+
+
+def column_label(col: str):
+    """Textbook symbol and unit of a table column, e.g. ``"B_vx_m_s"`` → ("VBx", "m/s")."""
+    if col in _SIMPLE:
+        return _SIMPLE[col]
+    m = re.fullmatch(r"R(\d\d)_([xy])_N", col)
+    if m:
+        return f"R{m.group(1)}{m.group(2)}", "N"
+    m = re.fullmatch(r"(.+?)_(x|y|vx|vy|ax|ay)_(m|m_s|m_s2)", col)
+    if m:
+        p, q, unit = m.groups()
+        sym = {"x": f"x{p}", "y": f"y{p}", "vx": f"V{p}x", "vy": f"V{p}y",
+               "ax": f"a{p}x", "ay": f"a{p}y"}[q]
+        return sym, _UNITS[unit]
+    return col, ""
+
+
+def sheet_columns(kinematics_cols):
+    """Split the kinematics columns into the positions, velocities and accelerations sheets."""
+    head = ["position", "phi_deg"]
+    pos, vel, acc = list(head), list(head), list(head)
+    for c in kinematics_cols:
+        if c in head:
+            continue
+        if re.search(r"_(vx|vy)_m_s$", c) or c in ("omega3_rad_s", "omega4_rad_s", "v4_m_s"):
+            vel.append(c)
+        elif re.search(r"_(ax|ay)_m_s2$", c) or c in ("eps3_rad_s2", "eps4_rad_s2", "a4_m_s2"):
+            acc.append(c)
+        else:
+            pos.append(c)
+    return pos, vel, acc
+
+
+def write_csvs(result, folder):
+    """Write ``kinematics.csv`` and ``forces.csv`` (comma, '.', header, full precision)."""
+    from crankdyn.io import write_csv
+
+    write_csv(result.kinematics, folder / "kinematics.csv")
+    write_csv(result.forces, folder / "forces.csv")
+
+
+def summary_lines(result):
+    """The cycle geometry as (label, value, unit) rows for the inputs sheet and terminal."""
+    s = result.summary
+    rows = [("Grashof type", s["grashof"], "")]
+    if "time_ratio" in s:
+        rows += [("crank angle, working-stroke start (position 1)", s["phi_working_start_deg"], "°"),
+                 ("crank angle, working-stroke end", s["phi_working_end_deg"], "°"),
+                 ("crank rotation in the working stroke", s["working_crank_angle_deg"], "°"),
+                 ("crank rotation in the idle stroke", s["idle_crank_angle_deg"], "°"),
+                 ("time-ratio coefficient K = φwork/φidle", s["time_ratio"], "")]
+        if "swing_deg" in s:
+            rows += [("rocker angle at working-stroke start", s["theta4_working_start_deg"], "°"),
+                     ("rocker angle at working-stroke end", s["theta4_working_end_deg"], "°"),
+                     ("rocker swing", s["swing_deg"], "°")]
+        else:
+            rows += [("slider position at working-stroke start", s["s4_working_start_m"], "m"),
+                     ("slider position at working-stroke end", s["s4_working_end_m"], "m"),
+                     ("slider stroke", s["stroke_m"], "m")]
+    rows += [("minimum transmission angle μmin", s["mu_min_deg"], "°"),
+             ("crank angle of μmin", s["mu_min_phi_deg"], "°")]
+    if s.get("singular_phi_deg"):
+        rows.append(("singular crank angles (change point)",
+                     ", ".join(f"{a:.6g}" for a in s["singular_phi_deg"]), "°"))
+    return rows
+
+
+def _spec_rows(raw, prefix=""):
+    """Flatten the spec as given into (key path, value) rows."""
+    rows = []
+    for key, value in raw.items():
+        path = f"{prefix}.{key}" if prefix else key
+        if isinstance(value, dict):
+            rows += _spec_rows(value, path)
+        elif isinstance(value, list) and value and all(isinstance(v, dict) for v in value):
+            for i, item in enumerate(value):
+                rows += _spec_rows(item, f"{path}[{i}]")
+        else:
+            if isinstance(value, (list, tuple)):
+                value = ", ".join(f"{v:g}" if isinstance(v, float) else str(v) for v in value)
+            rows.append((path, value))
+    return rows
+
+
+def write_workbook(result, path):
+    """Write the Excel workbook of a linkage analysis (atomically).
+
+    Raises :class:`crankdyn.io.OutputError` if a table holds a non-finite number outside
+    the rows of singular positions of a change-point mechanism (those are left empty
+    and flagged).
+    """
+    from openpyxl import Workbook
+    from openpyxl.styles import Alignment, Border, Font, PatternFill, Side
+    from openpyxl.utils import get_column_letter
+
+    from crankdyn.io import atomic_path
+
+    wb = Workbook()
+    bold = Font(bold=True)
+    grey = Font(italic=True, size=8, color="808080")
+    head_fill = PatternFill("solid", fgColor="DDEBF7")
+    thin = Side(style="thin", color="999999")
+    box = Border(left=thin, right=thin, top=thin, bottom=thin)
+    center = Alignment(horizontal="center", vertical="center")
+
+    # -- inputs
+    ws = wb.active
+    ws.title = "inputs"
+    spec = result.spec
+    ws["A1"] = f"crankdyn linkage — {spec.name} ({spec.kind})"
+    ws["A1"].font = Font(bold=True, size=12)
+    ws.append([])
+    ws.append(["spec key", "value"])
+    for c in ws[3]:
+        c.font = bold
+        c.fill = head_fill
+    for key, value in _spec_rows(dict(spec.raw)):
+        ws.append([key, value])
+    ws.append([])
+    ws.append(["cycle geometry", "value", "unit"])
+    for c in ws[ws.max_row]:
+        c.font = bold
+        c.fill = head_fill
+    for label, value, unit in summary_lines(result):
+        ws.append([label, value, unit])
+        if isinstance(value, float):
+            ws.cell(ws.max_row, 2).number_format = "0.0000"
+    if result.warnings:
+        ws.append([])
+        for w in result.warnings:
+            ws.append(["warning", w])
+            ws.cell(ws.max_row, 1).font = Font(bold=True, color="C00000")
+    ws.append([])
+    ws.append(["conventions", "angles ccw from +x in degrees; SI units; Rij = force of link i "
+               "on link j (1 ground, 2 crank, 3 coupler/rod, 4 rocker/slider); "
+               "M_drive = driving (balancing) moment on the crank, + ccw"])
+    ws.column_dimensions["A"].width = 46
+    ws.column_dimensions["B"].width = 24
+    ws.column_dimensions["C"].width = 8
+
+    pos_cols, vel_cols, acc_cols = sheet_columns(list(result.kinematics.columns))
+    tables = [("positions", result.kinematics, pos_cols),
+              ("velocities", result.kinematics, vel_cols),
+              ("accelerations", result.kinematics, acc_cols),
+              ("forces", result.forces, list(result.forces.columns))]
+    if result.extremes is not None:
+        tables.append(("extremes", result.extremes, list(result.extremes.columns)))
+    for title, df, cols in tables:
+        ws = wb.create_sheet(title)
+        for j, col in enumerate(cols, start=1):
+            sym, unit = column_label(col)
+            for i, text in enumerate((sym, unit, col), start=1):
+                cell = ws.cell(i, j, text)
+                cell.alignment = center
+                cell.border = box
+                cell.font = grey if i == 3 else bold
+                if i < 3:
+                    cell.fill = head_fill
+            ws.column_dimensions[get_column_letter(j)].width = max(11, len(col) + 2)
+        for j, col in enumerate(cols, start=1):
+            for i, value in enumerate(_cell_values(df[col]), start=4):
+                cell = ws.cell(i, j, value)
+                cell.border = box
+                if col == "position":
+                    cell.number_format = "0"
+                elif col.endswith("_deg"):
+                    cell.number_format = "0.00"
+                elif isinstance(value, float):
+                    cell.number_format = "0.0000" if abs(value) < 100 else "0.00"
+        ws.freeze_panes = "C4" if "phi_deg" in cols else "B4"
+    _check_finite_tables(result)
+    with atomic_path(path) as tmp:
+        wb.save(tmp)
+
+
+def _cell_values(series):
+    """Python values for openpyxl: floats, ints, strings; missing or non-finite → None."""
+    if series.dtype.kind == "f":
+        return [float(v) if math.isfinite(v) else None for v in series.to_numpy()]
+    return [None if v is None or v is getattr(series.dtype, "na_value", None)
+            or (isinstance(v, float) and not math.isfinite(v))
+            else (v.item() if hasattr(v, "item") else v)
+            for v in series.astype(object).where(series.notna(), None)]
+
+
+def _check_finite_tables(result):
+    """Refuse to write non-finite values except on flagged singular positions."""
+    from crankdyn.io import OutputError
+
+    sing = result.summary.get("singular_phi_deg") or []
+    for name, df in (("kinematics", result.kinematics), ("forces", result.forces)):
+        num = df.drop(columns=["position"]).to_numpy(dtype=float)
+        bad_rows = np.flatnonzero(~np.isfinite(num).all(axis=1))
+        for r in bad_rows:
+            phi = float(df["phi_deg"].iat[r])
+            if not any(abs((phi - a + 180.0) % 360.0 - 180.0) < 1e-6 for a in sing):
+                raise OutputError(f"{name}: row {r + 1} (φ = {phi:g}°) is not finite")
