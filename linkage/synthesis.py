@@ -208,9 +208,10 @@ def _kolchin_residuals(l1, l2, l3):
 
 
 def _kolchin_margin(l1, l2, l3):
-    """The smallest Kolchin residual (≥ 0 for a crank-rocker or change point)."""
+    """Signed distance in the (λ2, λ3) plane to the nearest of Kolchin's lines for this
+    λ1: ≥ 0 for a crank-rocker or change point (the smallest residual over √2)."""
     r = _kolchin_residuals(l1, l2, l3)
-    return np.minimum(np.minimum(r[0], r[1]), r[2])
+    return np.minimum(np.minimum(r[0], r[1]), r[2]) / math.sqrt(2.0)
 
 
 def _type_with_tol(l1, l2, l3) -> GrashofType:
@@ -228,11 +229,21 @@ def _cos_mu(phi_deg, l1, l2, l3, l0=1.0):
     return (l2 ** 2 + l3 ** 2 - l1 ** 2 - l0 ** 2 + 2.0 * l1 * l0 * np.cos(phi)) / (2.0 * l2 * l3)
 
 
-def _acute_deg(cos_mu):
-    """Acute angle of arccos(cos μ) in degrees; |cos μ| ≤ 1 + TOL clipped, beyond → NaN."""
-    x = np.abs(cos_mu)
-    x = np.where(x <= 1.0 + TOL, np.minimum(x, 1.0), np.nan)
-    return np.degrees(np.arccos(x))
+def _acute_deg(cos_mu, ok=True):
+    """Acute angle of arccos(cos μ) in degrees, cos μ clipped to [−1, 1]; NaN where not
+    ``ok``."""
+    x = np.minimum(np.abs(cos_mu), 1.0)
+    return np.where(ok, np.degrees(np.arccos(x)), np.nan)
+
+
+def _assembles(phi_deg, l1, l2, l3, l0=1.0):
+    """True where the dyad closes: |λ2 − λ3| ≤ |AC| ≤ λ2 + λ3 within √2·TOL·λ0, |AC| the
+    diagonal from the crank pin to the rocker pivot.  (The residual of λ2 + λ3 ≥ |AC| over
+    √2 is the distance to that line in the (λ2, λ3) plane: the region's tolerance.)"""
+    phi = np.radians(phi_deg)
+    ac = np.sqrt(np.maximum(l0 ** 2 + l1 ** 2 - 2.0 * l0 * l1 * np.cos(phi), 0.0))
+    tol = math.sqrt(2.0) * TOL * l0
+    return (ac >= np.abs(l2 - l3) - tol) & (ac <= l2 + l3 + tol)
 
 
 def transmission_angle_deg(phi_deg, l1, l2, l3, l0=1.0):
@@ -251,7 +262,8 @@ def transmission_angle_deg(phi_deg, l1, l2, l3, l0=1.0):
     -------
     ndarray
         μ folded into 0…90° (broadcast shape of the arguments); NaN where the linkage
-        cannot be assembled at that crank angle. [deg]
+        cannot be assembled at that crank angle (|AC| outside |λ2 − λ3| … λ2 + λ3 by more
+        than √2·:data:`TOL`·λ0). [deg]
 
     Notes
     -----
@@ -268,7 +280,8 @@ def transmission_angle_deg(phi_deg, l1, l2, l3, l0=1.0):
     if phi is not None and not np.all(np.isfinite(phi)):
         problems.append(Problem("phi_deg", "must be finite crank angles [deg]"))
     _raise(problems)
-    return _acute_deg(_cos_mu(phi, n["l1"], n["l2"], n["l3"], n["l0"]))
+    args = (phi, n["l1"], n["l2"], n["l3"], n["l0"])
+    return _acute_deg(_cos_mu(*args), _assembles(*args))
 
 
 def min_transmission_angle_deg(l1, l2, l3, l0=1.0):
@@ -293,7 +306,7 @@ def min_transmission_angle_deg(l1, l2, l3, l0=1.0):
     ------
     SynthesisError
         A length is not positive, or the crank cannot turn fully (|cos μ| > 1 somewhere,
-        beyond :data:`TOL`).
+        beyond :data:`TOL`, as a distance relative to the ground).
 
     References
     ----------
@@ -303,9 +316,9 @@ def min_transmission_angle_deg(l1, l2, l3, l0=1.0):
     problems = []
     n = _lengths(problems, l1=l1, l2=l2, l3=l3, l0=l0)
     _raise(problems)
-    c0 = _cos_mu(0.0, n["l1"], n["l2"], n["l3"], n["l0"])
-    c180 = _cos_mu(180.0, n["l1"], n["l2"], n["l3"], n["l0"])
-    bad = (np.abs(c0) > 1.0 + TOL) | (np.abs(c180) > 1.0 + TOL)
+    args = (n["l1"], n["l2"], n["l3"], n["l0"])
+    c0, c180 = _cos_mu(0.0, *args), _cos_mu(180.0, *args)
+    bad = ~(_assembles(0.0, *args) & _assembles(180.0, *args))
     if np.any(bad):
         raise SynthesisError(Problem(
             "l1, l2, l3", f"the crank cannot turn fully (linkage not assemblable at φ = 0° "
@@ -387,8 +400,8 @@ def family_mu_min_deg(l1, l2, phi0_deg=30.0):
     -------
     ndarray
         μmin = arccos[λ1 (1 + |cos φ0|) / (λ2 √(λ1 (λ1 − 2 cos φ0) − λ2² + 1))]; NaN
-        where the member is not a crank-rocker (λ1 ≤ 0, λ1 > 1, λ3 not real, or the
-        argument of arccos > 1 + :data:`TOL`). [deg]
+        where the member is not a crank-rocker (λ1 < 0, λ1 > 1, λ3 not real, or the
+        argument of arccos > 1 + :data:`TOL`); λ1 = 0 gives the limit 90°. [deg]
 
     References
     ----------
@@ -400,7 +413,7 @@ def family_mu_min_deg(l1, l2, phi0_deg=30.0):
     l3 = family_l3(l1, l2, phi0_deg)
     with np.errstate(invalid="ignore", divide="ignore"):
         x = l1 * (1.0 + abs(c)) / (l2 * l3)
-        ok = (l1 > 0) & (l1 <= 1.0 + TOL) & (l2 > 0) & np.isfinite(x) & (x <= 1.0 + TOL)
+        ok = (l1 >= 0) & (l1 <= 1.0 + TOL) & (l2 > 0) & np.isfinite(x) & (x <= 1.0 + TOL)
         return np.where(ok, np.degrees(np.arccos(np.clip(x, 0.0, 1.0))), np.nan)
 
 
@@ -644,6 +657,9 @@ def _smallest_admissible_root(l2, l3, c, floor=0.0):
     that satisfies Kolchin's inequalities within TOL, else NaN.  Also returns both roots."""
     rho2 = l2 ** 2 + l3 ** 2
     disc = c * c - 1.0 + rho2
+    # within TOL of the circle of radius sin φ0 (where the two roots meet; the unit arc
+    # itself when φ0 = 90°), the discriminant is 0
+    disc = np.where((disc < 0) & (disc >= -2.0 * TOL * np.sqrt(rho2)), 0.0, disc)
     with np.errstate(invalid="ignore"):
         sq = np.where(disc >= 0.0, np.sqrt(np.maximum(disc, 0.0)), np.nan)
     # r_minus = c − sq without cancellation: (1 − ρ²)/(c + sq) when c + sq > 0.
@@ -661,7 +677,7 @@ def _smallest_admissible_root(l2, l3, c, floor=0.0):
 def _region_contains(l2, l3, phi0_deg):
     # The unit arc (λ1 = 0) is part of the boundary: roots down to −TOL count.
     best, _, _ = _smallest_admissible_root(l2, l3, _c(phi0_deg), floor=-TOL)
-    return np.isfinite(best) & (l2 > 0) & (l3 > 0)
+    return np.isfinite(best) & (l2 >= 0) & (l3 >= 0)
 
 
 def existence_region(phi0_deg=30.0, n=400) -> ExistenceRegion:
@@ -705,6 +721,7 @@ def existence_region(phi0_deg=30.0, n=400) -> ExistenceRegion:
     curve_l1 = np.concatenate([l1, l1[::-1][1:]])
     curve_l2 = np.concatenate([big_l2, sm_l2[1:]])
     curve_l3 = np.concatenate([big_l3, sm_l3[1:]])
+    curve_l2[[0, -1]], curve_l3[[0, -1]] = (1.0, 0.0), (0.0, 1.0)   # the ends a and c
     t = np.linspace(0.0, math.pi / 2.0, n)
     arc_l2, arc_l3 = np.cos(t), np.sin(t)
     arc_l2[-1], arc_l3[0] = 0.0, 0.0
