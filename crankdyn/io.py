@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 
 __all__ = ["atomic_path", "staged_output", "write_csv", "check_not_input", "ensure_finite",
-           "OutputError"]
+           "full_precision_xlsx", "OutputError"]
 
 
 class OutputError(ValueError):
@@ -100,3 +100,30 @@ def staged_output(directory, inputs=()):
             os.replace(stage / name, directory / name)
     finally:
         shutil.rmtree(stage, ignore_errors=True)
+
+
+@contextlib.contextmanager
+def full_precision_xlsx():
+    """While active, openpyxl stores floats at full precision.
+
+    openpyxl serialises numbers with ``"%.16g"``, which does not round-trip every double
+    (one unit in the last place can be lost).  Inside this context, finite floats are
+    written with Python's shortest round-trip representation instead, so a workbook read
+    back equals the CSV bit for bit.  Wrap ``Workbook.save`` in it.
+    """
+    import math
+
+    from openpyxl.cell import _writer
+
+    original = _writer.safe_string
+
+    def safe_string(value):
+        if isinstance(value, float) and math.isfinite(value):
+            return float.__repr__(value)
+        return original(value)
+
+    _writer.safe_string = safe_string
+    try:
+        yield
+    finally:
+        _writer.safe_string = original

@@ -126,7 +126,7 @@ def write_workbook(result, path):
     from openpyxl.styles import Alignment, Border, Font, PatternFill, Side
     from openpyxl.utils import get_column_letter
 
-    from crankdyn.io import atomic_path
+    from crankdyn.io import atomic_path, full_precision_xlsx
 
     wb = Workbook()
     bold = Font(bold=True)
@@ -202,7 +202,7 @@ def write_workbook(result, path):
                     cell.number_format = "0.0000" if abs(value) < 100 else "0.00"
         ws.freeze_panes = "C4" if "phi_deg" in cols else "B4"
     _check_finite_tables(result)
-    with atomic_path(path) as tmp:
+    with atomic_path(path) as tmp, full_precision_xlsx():
         wb.save(tmp)
 
 
