@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
 
 from . import __version__
@@ -51,6 +52,9 @@ def main(argv=None) -> int:
         for line in lines:
             print(f"crankdyn {args.command}: error: {line}", file=sys.stderr)
         return 2
+    except BrokenPipeError:  # e.g. `crankdyn ... | head`
+        sys.stdout = open(os.devnull, "w")
+        return 0
     except (FileNotFoundError, IsADirectoryError, PermissionError) as exc:
         print(f"crankdyn {args.command}: error: {exc}", file=sys.stderr)
         return 2

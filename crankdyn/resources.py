@@ -12,12 +12,27 @@ from pathlib import Path
 __all__ = ["template_path", "example_path", "list_examples"]
 
 
+#: Source-tree folder of each resource package (used when Python runs from a checkout
+#: whose own ``crankdyn`` folder shadows the installed one).
+_SOURCE_DIRS = {"crankdyn.templates": "templates", "crankdyn.examples": "examples"}
+
+
+def _folder(package: str):
+    try:
+        return resources.files(package)
+    except ModuleNotFoundError:
+        return Path(__file__).resolve().parent.parent / _SOURCE_DIRS[package]
+
+
 def _resource(package: str, name: str) -> Path:
-    ref = resources.files(package) / name
+    folder = _folder(package)
+    ref = folder / name
     if not ref.is_file():
-        available = sorted(p.name for p in resources.files(package).iterdir()
-                           if p.is_file() and not p.name.startswith("__"))
+        available = sorted(p.name for p in folder.iterdir()
+                           if p.is_file() and not p.name.startswith(("_", ".")))
         raise FileNotFoundError(f"{package}: no file {name!r}; shipped: {', '.join(available)}")
+    if isinstance(ref, Path):
+        return ref
     # Both install modes put real files on disk; as_file keeps zip installs working too.
     with resources.as_file(ref) as path:
         return Path(path)
@@ -35,5 +50,5 @@ def example_path(name: str) -> Path:
 
 def list_examples(suffix: str = ".toml") -> list[str]:
     """Names of the bundled example files with the given suffix."""
-    return sorted(p.name for p in resources.files("crankdyn.examples").iterdir()
+    return sorted(p.name for p in _folder("crankdyn.examples").iterdir()
                   if p.name.endswith(suffix))
