@@ -182,11 +182,14 @@ def plan_figure(result, full):
         label = k["position"].iat[i]
         label = str(label) if label is not None and not _isna(label) else \
             f"{k['phi_deg'].iat[i]:.0f}°"
-        for P, off in (("A", 1.07), ("B", 1.0)):
+        # B's labels: positions where the output moves one way on one side, the
+        # return on the other, so the two strokes' labels do not overprint.
+        rate = k["omega4_rad_s" if spec.kind == "crank-rocker" else "v4_m_s"].iat[i]
+        b_off = (5, 2) if rate >= 0 else (-12, 2)
+        for P, off in (("A", (3, 3)), ("B", b_off)):
             x, y = k[f"{P}_x_m"].iat[i], k[f"{P}_y_m"].iat[i]
-            dx, dy = (x * (off - 1), y * (off - 1)) if P == "A" else (0, 0)
-            ax.annotate(label, (x + dx, y + dy), fontsize=7, color="C0" if i == 0 else "0.3",
-                        textcoords="offset points", xytext=(3, 3))
+            ax.annotate(label, (x, y), fontsize=7, color="C0" if i == 0 else "0.3",
+                        textcoords="offset points", xytext=off)
     if result.extremes is not None:
         e = result.extremes
         _draw_links(ax, e, 1, zO, zC, 2.0, "C3", ls="--")

@@ -101,6 +101,16 @@ def test_workbook_inputs_and_extremes(ratchet_run):
     assert ext["phi_deg"].iat[0] == pytest.approx(k["phi_deg"].iat[0], abs=1e-9)
 
 
+@pytest.mark.parametrize("name", ["ratchet.toml", "press.toml"])
+def test_every_bundled_linkage_example_runs(name, tmp_path):
+    out = tmp_path / "out"
+    assert main(["linkage", "--example", name, "-o", str(out)]) == 0
+    for p in PLOTS:
+        assert (out / f"{p}.png").stat().st_size > 1000
+    k = pd.read_csv(out / "kinematics.csv")
+    assert len(k) == 12 and list(k["position"]) == list(range(1, 13))
+
+
 def test_explicit_angles_crank_slider(tmp_path):
     spec = tmp_path / "slider.toml"
     spec.write_text("""
