@@ -1,0 +1,308 @@
+"""Tables and files of the ККМ-φ0 synthesis: the paper's Table 1, the chosen mechanism,
+the workbook and the spec TOML.
+
+Everything here only arranges numbers computed by :mod:`linkage.synthesis`; pandas and
+openpyxl are imported inside the functions that need them.  Every file is written
+atomically (:func:`crankdyn.io.atomic_path`): a crash never leaves half a file.
+"""
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+
+from . import synthesis as syn
+
+__all__ = ["table1", "mechanism_table", "format_deg_min", "summary_lines",
+           "write_workbook", "dumps_toml", "write_toml"]
+
+
+def format_deg_min(deg) -> str:
+    """An angle in degrees and whole minutes, as the paper prints it: ``46°16′``.
+
+    Parameters
+    ----------
+    deg : float
+        Angle. [deg]
+    """
+    deg = float(deg)
+    if not math.isfinite(deg):
+        return str(deg)
+    sign = "−" if deg < 0 else ""
+    total = round(abs(deg) * 60.0)
+    return f"{sign}{total // 60}°{total % 60:02d}′"
+
+
+def table1(phi0_deg=30.0, l1=None, step=0.05):
+    """The paper's Table 1 for any φ0: where the family meets Kolchin's boundary line.
+
+    Parameters
+    ----------
+    phi0_deg : float
+        Crank angle where μ = 90°. [deg]
+    l1 : sequence of float, optional
+        Crank lengths of the rows; default: multiples of ``step`` below λ1max, then λ1max
+        (for φ0 = 30°: 0.05, 0.10, 0.15, 0.1896, the paper's rows). [-]
+    step : float
+        Spacing of the default crank lengths. [-]
+
+    Returns
+    -------
+    pandas.DataFrame
+        Columns ``l1``, ``l2``, ``l3`` (relative lengths) and ``mu_min_deg`` (0: these
+        mechanisms have a dead position).  Two rows per λ1, the larger λ2 first, as in the
+        paper; one row where they coincide (λ1max).
+
+    References
+    ----------
+    .. [1] seed 004, Table 1 and eq. (9)–(10).
+    """
+    import pandas as pd
+
+    top = syn.l1_max(phi0_deg)
+    if l1 is None:
+        if not (isinstance(step, (int, float)) and math.isfinite(step) and step > 0):
+            raise syn.SynthesisError([syn.Problem("step", f"must be a positive number, "
+                                                          f"got {step!r}")])
+        k = np.arange(1, int(math.floor(top / step * (1 - 1e-12))) + 1)
+        l1 = np.append(np.round(k * step, 12), top)
+    l1 = np.atleast_1d(np.asarray(l1, dtype=float))
+    pts = syn.kolchin_line_points(l1, phi0_deg)
+    rows = []
+    for lam, p in zip(l1, pts):
+        rows.append((lam, p[0, 0], p[0, 1]))
+        if p[0, 0] != p[1, 0]:
+            rows.append((lam, p[1, 0], p[1, 1]))
+    df = pd.DataFrame(rows, columns=["l1", "l2", "l3"])
+    # μmin = 0 on the boundary by construction (the paper: a dead position)
+    df["mu_min_deg"] = 0.0
+    return df
+
+
+def mechanism_table(design, ground_m=None):
+    """The chosen mechanism as a one-row DataFrame.
+
+    Parameters
+    ----------
+    design : linkage.synthesis.Design
+    ground_m : float, optional
+        Ground length; adds the absolute lengths. [m]
+
+    Returns
+    -------
+    pandas.DataFrame
+        ``phi0_deg, l1, l2, l3, mu_min_deg, mu_min_at_deg, mu_at_phi0_deg, grashof,
+        method`` and, with ``ground_m``, ``ground_m, crank_m, coupler_m, rocker_m``.
+    """
+    import pandas as pd
+
+    row = design.as_dict()
+    if ground_m is not None:
+        crank, coupler, rocker, ground = design.lengths_m(ground_m)
+        row.update(ground_m=ground, crank_m=crank, coupler_m=coupler, rocker_m=rocker)
+    return pd.DataFrame([row])
+
+
+def summary_lines(design, ground_m=None) -> list[str]:
+    """Human-readable lines describing the chosen mechanism (for the terminal)."""
+    d = design
+    out = [f"ККМ-{d.phi0_deg:g}° (μ = 90° at φ0 = {d.phi0_deg:g}°), {d.method}",
+           f"  λ1 = {d.l1:.4f}   λ2 = {d.l2:.4f}   λ3 = {d.l3:.4f}   (λ0 = 1)",
+           f"  μmin = {d.mu_min_deg:.4f}° ({format_deg_min(d.mu_min_deg)}) at φ = "
+           f"{d.mu_min_at_deg:g}°;  μ(φ0) = {d.mu_at_phi0_deg:.9g}°",
+           f"  Grashof type: {d.grashof}"]
+    if ground_m is not None:
+        crank, coupler, rocker, ground = d.lengths_m(ground_m)
+        out.append(f"  lengths: crank {crank:.6g} m, coupler {coupler:.6g} m, "
+                   f"rocker {rocker:.6g} m, ground {ground:.6g} m")
+    return out
+
+
+# --------------------------------------------------------------------------- workbook
+_T1_HEADERS = (("Длина λ1", "Длина λ2", "Длина λ3", "μmin, °"),
+               ("crank λ1", "coupler λ2", "rocker λ3", "mu_min_deg"))
+_MECH_LABELS = {
+    "phi0_deg": ("Угол φ0, °", "phi0_deg"),
+    "l1": ("Кривошип λ1", "crank l1"),
+    "l2": ("Шатун λ2", "coupler l2"),
+    "l3": ("Коромысло λ3", "rocker l3"),
+    "mu_min_deg": ("Минимальный угол передачи μmin, °", "mu_min_deg"),
+    "mu_min_at_deg": ("Положение μmin: φ, °", "mu_min_at_deg"),
+    "mu_at_phi0_deg": ("Угол передачи при φ0, °", "mu_at_phi0_deg"),
+    "grashof": ("Тип по Грасгофу", "grashof"),
+    "method": ("Задача синтеза", "method"),
+    "ground_m": ("Стойка l0, м", "ground_m"),
+    "crank_m": ("Кривошип l1, м", "crank_m"),
+    "coupler_m": ("Шатун l2, м", "coupler_m"),
+    "rocker_m": ("Коромысло l3, м", "rocker_m"),
+}
+
+
+def write_workbook(path, table, phi0_deg, mechanism=None) -> None:
+    """Write Table 1 (and the chosen mechanism) to an .xlsx workbook, atomically.
+
+    Parameters
+    ----------
+    path : str or Path
+        Target file.
+    table : pandas.DataFrame
+        From :func:`table1`.
+    phi0_deg : float
+        For the title. [deg]
+    mechanism : pandas.DataFrame, optional
+        From :func:`mechanism_table`; written to a second sheet ``mechanism``.
+
+    Notes
+    -----
+    Sheet ``table1``: row 1 the title, row 2 Russian headers, row 3 English headers
+    (the column names of the CSV), data from row 4.  Sheet ``mechanism``: one quantity
+    per row: Russian label, English name, value.
+    """
+    from openpyxl import Workbook
+    from openpyxl.styles import Alignment, Font
+
+    from crankdyn.io import atomic_path, ensure_finite
+
+    ensure_finite(table, "Table 1")
+    if mechanism is not None:
+        ensure_finite(mechanism, "mechanism")
+    wb = Workbook()
+    ws = wb.active
+    ws.title = "table1"
+    ws.append([f"Таблица 1 / Table 1. ККМ-{phi0_deg:g}°: точки пересечения с прямой "
+               f"Н. И. Колчина / intersections with Kolchin's line"])
+    ws["A1"].font = Font(bold=True)
+    for hdr in _T1_HEADERS:
+        ws.append(list(hdr))
+    for cell in (*ws[2], *ws[3]):
+        cell.font = Font(bold=True)
+        cell.alignment = Alignment(horizontal="center")
+    for row in table[["l1", "l2", "l3", "mu_min_deg"]].itertuples(index=False):
+        ws.append([float(v) for v in row])
+    for r in ws.iter_rows(min_row=4, max_col=3):
+        for cell in r:
+            cell.number_format = "0.0000"
+    for col, width in zip("ABCD", (14, 14, 14, 12)):
+        ws.column_dimensions[col].width = width
+    if mechanism is not None:
+        wm = wb.create_sheet("mechanism")
+        wm.append(["Параметр", "quantity", "value"])
+        for cell in wm[1]:
+            cell.font = Font(bold=True)
+        for key, value in mechanism.iloc[0].items():
+            ru, en = _MECH_LABELS.get(key, (key, key))
+            v = value.item() if hasattr(value, "item") else value
+            wm.append([ru, en, v])
+        wm.column_dimensions["A"].width = 36
+        wm.column_dimensions["B"].width = 18
+        wm.column_dimensions["C"].width = 40
+    with atomic_path(path) as tmp:
+        wb.save(tmp)
+
+
+# --------------------------------------------------------------------------- TOML
+_BARE = re.compile(r"^[A-Za-z0-9_-]+$")
+
+
+def _key(k) -> str:
+    k = str(k)
+    return k if _BARE.match(k) else _string(k)
+
+
+def _string(s: str) -> str:
+    out = ['"']
+    for ch in s:
+        if ch == '"':
+            out.append('\\"')
+        elif ch == "\\":
+            out.append("\\\\")
+        elif ch == "\n":
+            out.append("\\n")
+        elif ch == "\t":
+            out.append("\\t")
+        elif ord(ch) < 0x20 or ord(ch) == 0x7F:
+            out.append(f"\\u{ord(ch):04X}")
+        else:
+            out.append(ch)
+    out.append('"')
+    return "".join(out)
+
+
+def _value(v, where) -> str:
+    if isinstance(v, (bool, np.bool_)):
+        return "true" if v else "false"
+    if isinstance(v, (int, np.integer)):
+        return str(int(v))
+    if isinstance(v, (float, np.floating)):
+        v = float(v)
+        if not math.isfinite(v):
+            raise ValueError(f"{where}: {v!r} cannot be written to TOML (not finite)")
+        r = repr(v)
+        return r if any(ch in r for ch in ".en") else r + ".0"
+    if isinstance(v, str):
+        return _string(v)
+    if isinstance(v, (list, tuple, np.ndarray)):
+        items = [v_ for v_ in v]
+        if any(isinstance(x, dict) for x in items):
+            raise ValueError(f"{where}: an array of tables is only allowed at table level")
+        return "[" + ", ".join(_value(x, f"{where}[{i}]") for i, x in enumerate(items)) + "]"
+    if isinstance(v, dict):
+        return "{ " + ", ".join(f"{_key(k)} = {_value(x, f'{where}.{k}')}"
+                                for k, x in v.items()) + " }"
+    raise ValueError(f"{where}: cannot write a {type(v).__name__} to TOML")
+
+
+def _is_table_array(v) -> bool:
+    return isinstance(v, (list, tuple)) and len(v) > 0 and all(isinstance(x, dict) for x in v)
+
+
+def _emit(table, path, lines):
+    scalars = [(k, v) for k, v in table.items()
+               if not isinstance(v, dict) and not _is_table_array(v)]
+    for k, v in scalars:
+        lines.append(f"{_key(k)} = {_value(v, '.'.join(path + [str(k)]))}")
+    for k, v in table.items():
+        if isinstance(v, dict):
+            sub = path + [_key(k)]
+            lines.append("")
+            lines.append("[" + ".".join(sub) + "]")
+            _emit(v, sub, lines)
+    for k, v in table.items():
+        if _is_table_array(v):
+            sub = path + [_key(k)]
+            for item in v:
+                lines.append("")
+                lines.append("[[" + ".".join(sub) + "]]")
+                _emit(item, sub, lines)
+
+
+def dumps_toml(data: dict, header: str = "") -> str:
+    """A small TOML writer for spec dicts: tables, arrays of tables, strings, booleans,
+    integers, finite floats (shortest round-trip form), arrays and inline tables.
+
+    Parameters
+    ----------
+    data : dict
+        Nested dict (as :func:`linkage.synthesis.to_spec` returns).
+    header : str
+        Comment lines put at the top (each prefixed with ``# ``).
+    """
+    lines = [f"# {h}" if h else "#" for h in header.splitlines()] if header else []
+    body: list[str] = []
+    _emit(data, [], body)
+    while body and body[0] == "":
+        body.pop(0)
+    if lines and body:
+        lines.append("")
+    return "\n".join(lines + body) + "\n"
+
+
+def write_toml(data: dict, path, header: str = "") -> None:
+    """Write ``data`` as TOML (:func:`dumps_toml`), atomically, UTF-8."""
+    from crankdyn.io import atomic_path
+
+    text = dumps_toml(data, header)
+    with atomic_path(path) as tmp:
+        with open(tmp, "w", encoding="utf-8", newline="\n") as f:
+            f.write(text)
