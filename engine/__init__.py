@@ -6,11 +6,11 @@ angle) through the Assur-group routines of :mod:`linkage`; ``summarize`` gives i
 extremes and means.  Reports (:mod:`engine.report`, openpyxl) and plots
 (:mod:`engine.plots`, matplotlib) are imported only when used.
 """
-from .forces import COLUMNS, force_table, summarize, table_angles
+from .forces import COLUMNS, fine_angles, force_table, summarize, table_angles
 from .indicator import gas_pressure, indicated_mean_pressure
 from .kinematics import crank_slider
 from .spec import EngineSpec, EngineSpecError, load_spec
 
-__all__ = ["load_spec", "force_table", "summarize", "table_angles", "COLUMNS",
+__all__ = ["load_spec", "force_table", "summarize", "table_angles", "fine_angles", "COLUMNS",
            "EngineSpec", "EngineSpecError", "gas_pressure", "indicated_mean_pressure",
            "crank_slider"]

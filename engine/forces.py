@@ -34,7 +34,7 @@ from linkage.groups import dot, driver_reactions, link_wrench, rrp_reactions
 from .indicator import gas_pressure, indicated_mean_pressure
 from .kinematics import GUIDE_ANGLE, CrankSlider, crank_slider
 
-__all__ = ["COLUMNS", "table_angles", "gas_force", "two_term_acceleration",
+__all__ = ["COLUMNS", "table_angles", "fine_angles", "gas_force", "two_term_acceleration",
            "inertia_force", "crank_pin_forces", "force_table", "summarize",
            "SUMMARY_QUANTITIES"]
 
@@ -57,6 +57,12 @@ def table_angles(spec, step_deg=None) -> np.ndarray:
     if spec.extra_angles_deg:
         a = np.union1d(a, np.asarray(spec.extra_angles_deg, float))
     return a
+
+
+def fine_angles(spec, step_deg=0.5) -> np.ndarray:
+    """Angles for plots and the summary: a fine grid (default 0.5°) united with the
+    table's own rows, so every table row and every extra angle is on it. [deg]"""
+    return np.union1d(table_angles(spec, step_deg), table_angles(spec))
 
 
 def gas_force(p, p0, area):

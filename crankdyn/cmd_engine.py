@@ -1,0 +1,123 @@
+"""``crankdyn engine``: the engine force table (Table 2), its workbook and plots.
+
+    crankdyn engine SPEC.toml -o DIR [--lang ru|en] [--step DEG]
+    crankdyn engine --example [NAME] -o DIR
+
+Writes ``DIR/forces.csv``, ``DIR/<name>.xlsx`` and the plots (PNG and SVG) after
+everything has been validated and computed; bad input writes nothing.  Heavy libraries
+are imported inside :func:`run` only, so ``crankdyn --help`` stays fast.
+"""
+from __future__ import annotations
+
+#: Bundled examples by short name (``--example NAME``; a file stem works too).
+EXAMPLES = {"petrol": "petrol_vaz2106.toml", "diesel": "diesel_d240.toml"}
+
+
+def add_parser(subparsers):
+    p = subparsers.add_parser(
+        "engine", help="engine force table (Table 2), Excel report and plots",
+        description="Engine crank-slider forces over the crank angle (ΔPг, Pj, P, β, N, "
+                    "Sш, K, T, Mкр, Kr.ш, Rшш, Ψ): forces.csv, an Excel report from a "
+                    "template and the plots (indicator diagram, forces, torque, polar and "
+                    "developed crank-pin load diagrams).")
+    p.add_argument("spec", nargs="?", metavar="SPEC.toml", help="engine spec (TOML)")
+    p.add_argument("--example", nargs="?", const="petrol", metavar="NAME",
+                   help="run a bundled example instead of a spec: "
+                        + ", ".join(EXAMPLES) + " (default petrol)")
+    p.add_argument("-o", "--output", required=True, metavar="DIR",
+                   help="output folder (created if needed)")
+    p.add_argument("--lang", choices=("ru", "en"), default="ru",
+                   help="report and plot language (default ru, the textbook symbols)")
+    p.add_argument("--step", type=float, metavar="DEG",
+                   help="table step in crank degrees (overrides [table] step_deg)")
+    p.set_defaults(func=run)
+
+
+def _example_path(name):
+    from linkage.errors import SpecError
+
+    from .resources import example_path, list_examples
+
+    available = list_examples(".toml")
+    fname = EXAMPLES.get(name)
+    if fname is None:
+        stem = name[:-5] if name.endswith(".toml") else name
+        fname = next((f for f in available if f[:-5] == stem), None)
+    if fname is None:
+        raise SpecError(f"--example: no example {name!r}; available: "
+                        + ", ".join(list(EXAMPLES) + [f[:-5] for f in available]))
+    return example_path(fname)
+
+
+def _safe_name(name):
+    import re
+
+    safe = re.sub(r"[^\w.-]+", "_", name).strip("._")
+    return safe or "engine"
+
+
+def run(args) -> int:
+    from pathlib import Path
+
+    from linkage.errors import SpecError
+
+    if args.spec and args.example:
+        raise SpecError("give either SPEC.toml or --example, not both")
+    if not args.spec and not args.example:
+        raise SpecError("give an engine spec SPEC.toml or --example [NAME]")
+    spec_path = Path(args.spec) if args.spec else _example_path(args.example)
+    out = Path(args.output)
+    if out.exists() and not out.is_dir():
+        raise SpecError(f"-o: {out} exists and is not a folder")
+
+    import engine
+    from engine.plots import PLOT_NAMES, all_figures, save_figure
+    from engine.report import build_workbook, save_workbook
+
+    from .io import check_not_input, ensure_finite, write_csv
+
+    # 1. validate and compute everything
+    spec = engine.load_spec(spec_path)
+    if args.step is not None:
+        spec = spec.with_step(args.step)
+    table = engine.force_table(spec)
+    fine = engine.force_table(spec, engine.fine_angles(spec))
+    ensure_finite(table, "force table")
+    ensure_finite(fine, "force table (plot grid)")
+    summary = engine.summarize(fine, spec)
+    csv_path = out / "forces.csv"
+    xlsx_path = out / f"{_safe_name(spec.name)}.xlsx"
+    stems = [out / name for name in PLOT_NAMES]
+    outputs = [csv_path, xlsx_path] + [s.with_suffix(f".{e}") for s in stems
+                                       for e in ("png", "svg")]
+    check_not_input(outputs, [spec_path, spec.pressure_file])
+    wb = build_workbook(table, summary, spec, args.lang)
+    figs = all_figures(fine, spec, summary, args.lang)
+
+    # 2. write (each file atomically)
+    out.mkdir(parents=True, exist_ok=True)
+    write_csv(table, csv_path)
+    save_workbook(wb, xlsx_path)
+    for stem in stems:
+        save_figure(figs[stem.name], stem)
+
+    # 3. terminal summary
+    ext = summary["extremes"]
+    ru = args.lang == "ru"
+    pmax, apmax = summary["p_max_MPa"], summary["alpha_p_max_deg"]
+    lines = [
+        f"{spec.name}: {spec.strokes}-stroke, D x S = {spec.bore * 1e3:g} x "
+        f"{spec.stroke * 1e3:g} mm, lambda = {spec.lam:.4f}, n = {spec.speed_rpm:g} rpm, "
+        f"acceleration {spec.acceleration}",
+        f"  peak gas pressure  {pmax:10.3f} MPa  at alpha = {apmax:g} deg;  "
+        f"indicated mean pressure pi = {summary['pi_MPa']:.4f} MPa",
+        f"  P max              {ext['P_N'][0]:10.0f} N    at alpha = {ext['P_N'][1]:g} deg",
+        f"  T max              {ext['T_N'][0]:10.0f} N    at alpha = {ext['T_N'][1]:g} deg",
+        f"  mean torque        {summary['M_mean_Nm']:10.2f} N*m  (one cylinder)",
+        f"  R_crank-pin max    {ext['R_N'][0]:10.0f} N    at alpha = {ext['R_N'][1]:g} deg;"
+        f"  mean {summary['R_mean_N']:.0f} N;  chi = {summary['chi']:.3f}",
+        f"wrote {csv_path} ({len(table)} rows), {xlsx_path}, "
+        f"{len(stems)} plots (PNG, SVG) in {out}" + (" [ru]" if ru else " [en]"),
+    ]
+    print("\n".join(lines))
+    return 0
