@@ -37,6 +37,8 @@ def _wrap(x):
 
 def _intervals_deg(lo, hi):
     """Format a crank-angle interval (radians, lo < hi) in degrees wrapped to [0, 360)."""
+    if hi - lo >= TWO_PI * (1.0 - 1e-12):
+        return "0°…360° (every crank angle)"
     a, b = math.degrees(lo) % 360.0, math.degrees(hi) % 360.0
     return f"{a:.4g}°…{b:.4g}°"
 
