@@ -164,9 +164,10 @@ def write_workbook(result, path):
             ws.append(["warning", w])
             ws.cell(ws.max_row, 1).font = Font(bold=True, color="C00000")
     ws.append([])
-    ws.append(["conventions", "angles ccw from +x in degrees; SI units; Rij = force of link i "
-               "on link j (1 ground, 2 crank, 3 coupler/rod, 4 rocker/slider); "
-               "M_drive = driving (balancing) moment on the crank, + ccw"])
+    ws.append(["conventions"])
+    ws.cell(ws.max_row, 1).font = bold
+    for line in CONVENTIONS:
+        ws.append([line])
     ws.column_dimensions["A"].width = 46
     ws.column_dimensions["B"].width = 24
     ws.column_dimensions["C"].width = 8
@@ -191,19 +192,49 @@ def write_workbook(result, path):
                     cell.fill = head_fill
             ws.column_dimensions[get_column_letter(j)].width = max(11, len(col) + 2)
         for j, col in enumerate(cols, start=1):
-            for i, value in enumerate(_cell_values(df[col]), start=4):
+            values = _cell_values(df[col])
+            fmt = _number_format(col, values)
+            for i, value in enumerate(values, start=4):
                 cell = ws.cell(i, j, value)
                 cell.border = box
-                if col == "position":
-                    cell.number_format = "0"
-                elif col.endswith("_deg"):
-                    cell.number_format = "0.00"
-                elif isinstance(value, float):
-                    cell.number_format = "0.0000" if abs(value) < 100 else "0.00"
+                cell.number_format = fmt
         ws.freeze_panes = "C4" if "phi_deg" in cols else "B4"
+        ws.print_title_rows = "1:3"
+        _page_setup(ws, landscape=True)
+    _page_setup(wb["inputs"], landscape=False)
     _check_finite_tables(result)
     with atomic_path(path) as tmp, full_precision_xlsx():
         wb.save(tmp)
+
+
+#: Conventions printed on the inputs sheet.
+CONVENTIONS = (
+    "SI units; angles in degrees, counter-clockwise from +x; O at the origin.",
+    "Rij = force of link i on link j (1 ground, 2 crank, 3 coupler/rod, 4 rocker/slider).",
+    "Mур (M_drive) = driving (balancing) moment applied to the crank, + counter-clockwise.",
+    "R23n, R23t: along A→B and 90° ccw from it; R14n, R14t: along C→B and 90° ccw from it.",
+    "Position 1 = extreme position where the working stroke starts; then every 360°/N "
+    "in the direction of rotation.",
+)
+
+
+def _page_setup(ws, landscape):
+    """Print on A4, one page wide."""
+    ws.page_setup.orientation = "landscape" if landscape else "portrait"
+    ws.page_setup.paperSize = ws.PAPERSIZE_A4
+    ws.page_setup.fitToWidth = 1
+    ws.page_setup.fitToHeight = 0
+    ws.sheet_properties.pageSetUpPr.fitToPage = True
+
+
+def _number_format(col, values):
+    """One display format per column (the stored value keeps full precision)."""
+    if col == "position":
+        return "0"
+    if col.endswith("_deg"):
+        return "0.00"
+    big = max((abs(v) for v in values if isinstance(v, float)), default=0.0)
+    return "0.00" if big >= 100 else "0.000" if big >= 1 else "0.0000"
 
 
 def _cell_values(series):
