@@ -359,9 +359,9 @@ class CrankSlider(_CrankMechanism):
         """Crank angles where crank and rod are collinear (slider at rest)."""
         out = []
         for d, folded in ((self.l1 + self.l2, False), (self.l2 - self.l1, True)):
-            if d <= abs(self.offset):
-                continue
-            x = math.sqrt(d * d - self.offset ** 2)
+            if d < abs(self.offset) * (1.0 - 1e-12):
+                continue  # (d = |offset|: a change point, the extreme is the dead position)
+            x = math.sqrt(max(d * d - self.offset ** 2, 0.0))
             cands = [self.pivot + (s * x + 1j * self.offset) * self.u for s in (1, -1)]
             phis = [np.angle(b - self.pivot) + (math.pi if folded else 0.0) for b in cands]
             good = self._confirm(phis, cands)
