@@ -346,8 +346,9 @@ def analyze(spec, crank_angles_deg=None) -> AnalysisResult:
     mech = build_mechanism(spec)
     mech.check_rotatable()
     rot = 1 if spec.omega > 0 else -1
-    ext = mech.extremes(rot, spec.working_stroke or ("ccw" if spec.kind == "crank-rocker"
-                                                     else "away"))
+    with np.errstate(divide="ignore", invalid="ignore"):  # a change point at an extreme
+        ext = mech.extremes(rot, spec.working_stroke or ("ccw" if spec.kind == "crank-rocker"
+                                                         else "away"))
     if ext is None and (spec.positions is not None and crank_angles_deg is None
                         and spec.crank_angles_deg is None):
         raise SpecError(["analysis.positions: the output link turns fully (a double crank) "
@@ -370,7 +371,8 @@ def analyze(spec, crank_angles_deg=None) -> AnalysisResult:
         ek, ef = _table(spec, np.array([ext.phi_start, ext.phi_end]), mech, ext_loads, None)
         ek.insert(0, "label", ["working start", "working end"])
         ext_df = _join_extremes(ek, ef)
-    summary = _summary(spec, mech, ext)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        summary = _summary(spec, mech, ext)
     msgs = []
     sing = mech.singular_angles()
     if sing:
