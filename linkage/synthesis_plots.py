@@ -96,7 +96,7 @@ def plot_region(region, design=None, kolchin_l1=None, family=None, ax=None):
     return fig
 
 
-def plot_mu_min_curves(curves, design=None, ax=None):
+def plot_mu_min_curves(curves, design=None, mu_required=None, ax=None):
     """μmin over λ1 at constant λ2 (the paper's Fig. 3).
 
     Parameters
@@ -104,6 +104,8 @@ def plot_mu_min_curves(curves, design=None, ax=None):
     curves : linkage.synthesis.MuMinCurves
     design : linkage.synthesis.Design, optional
         Marked at (λ1, μmin).
+    mu_required : float, optional
+        A required minimum, drawn as a horizontal line. [deg]
     ax : matplotlib.axes.Axes, optional
 
     Returns
@@ -111,6 +113,9 @@ def plot_mu_min_curves(curves, design=None, ax=None):
     matplotlib.figure.Figure
     """
     fig, ax = _axes(ax, (9.0, 5.0))
+    if mu_required is not None:
+        ax.axhline(mu_required, color="tab:red", lw=0.9, ls="--",
+                   label=f"required μmin ≥ {mu_required:g}°")
     import matplotlib as mpl
 
     colors = mpl.colormaps["tab10"].colors
@@ -183,4 +188,5 @@ def save_figure(fig, path, dpi=150) -> None:
 
     fmt = Path(path).suffix.lstrip(".").lower()
     with atomic_path(path) as tmp:
-        fig.savefig(tmp, format=fmt, dpi=dpi)
+        # "tight" keeps a legend placed outside the axes inside the image
+        fig.savefig(tmp, format=fmt, dpi=dpi, bbox_inches="tight", pad_inches=0.15)

@@ -162,7 +162,7 @@ def write_workbook(path, table, phi0_deg, mechanism=None) -> None:
     from openpyxl import Workbook
     from openpyxl.styles import Alignment, Font
 
-    from crankdyn.io import atomic_path, ensure_finite
+    from crankdyn.io import atomic_path, ensure_finite, full_precision_xlsx
 
     ensure_finite(table, "Table 1")
     if mechanism is not None:
@@ -197,7 +197,7 @@ def write_workbook(path, table, phi0_deg, mechanism=None) -> None:
         wm.column_dimensions["A"].width = 36
         wm.column_dimensions["B"].width = 18
         wm.column_dimensions["C"].width = 40
-    with atomic_path(path) as tmp:
+    with atomic_path(path) as tmp, full_precision_xlsx():
         wb.save(tmp)
 
 

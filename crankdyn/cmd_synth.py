@@ -1,0 +1,227 @@
+"""``crankdyn synth``: synthesis of a crank-rocker by the transmission angle (ККМ-φ0).
+
+    crankdyn synth --phi0 30 [--l2 L2 --l3 L3 | --l1 L1 | --l2 L2 --mu-min DEG]
+                   [--ground M] -o DIR
+
+Writes the chosen mechanism (``mechanism.csv``, printed too), the paper's Table 1 for
+that φ0 (``table1.csv``, and the workbook ``synthesis.xlsx``), μ(φ) over a turn
+(``transmission_angle.csv``), with ``--ground`` a spec TOML for ``crankdyn linkage``, and
+the plots ``region``, ``mu_min`` and ``transmission_angle`` (PNG and SVG).  Every input is
+checked before anything is written; bad input prints one line per problem and exits 2.
+numpy, pandas, matplotlib and openpyxl are imported inside :func:`run` only.
+"""
+from __future__ import annotations
+
+import math
+import re
+
+MODES = {
+    frozenset(): "region",
+    frozenset({"l2", "l3"}): "l2_l3",
+    frozenset({"l1"}): "l1",
+    frozenset({"l2", "mu_min"}): "mu_min",
+}
+OPTION = {"l1": "--l1", "l2": "--l2", "l3": "--l3", "mu_min": "--mu-min"}
+
+
+def add_parser(sub):
+    p = sub.add_parser(
+        "synth", help="crank-rocker synthesis by the transmission angle (ККМ-φ0 family)",
+        description="Synthesis of a crank-rocker whose transmission angle is 90° at the "
+                    "crank angle φ0 (from the line of centres) and never below a minimum "
+                    "(Sereda 2016, the ККМ-30° family, generalised to any φ0). Lengths are "
+                    "relative to the ground (λ0 = 1). Choose the mechanism by one of: "
+                    "--l2 and --l3 (λ1 from eq. 6); --l1 (λ2 = λ3); --l2 and --mu-min (the "
+                    "largest λ1 with μmin ≥ the given angle). Without any, only the region "
+                    "of existence, Table 1 and Fig. 3 are written.")
+    p.add_argument("--phi0", default="30", metavar="DEG",
+                   help="crank angle where μ = 90°, 0 < φ0 < 180 (default 30)")
+    p.add_argument("--l1", metavar="L1", help="crank length λ1 = l1/l0 (then λ2 = λ3)")
+    p.add_argument("--l2", metavar="L2", help="coupler length λ2 = l2/l0")
+    p.add_argument("--l3", metavar="L3", help="rocker length λ3 = l3/l0 (with --l2)")
+    p.add_argument("--mu-min", dest="mu_min", metavar="DEG",
+                   help="required minimum transmission angle, 0 ≤ μmin < 90 (with --l2)")
+    p.add_argument("--l1-step", dest="l1_step", metavar="STEP",
+                   help="with --mu-min: round λ1 down to a multiple of STEP, as read off "
+                        "Fig. 3 (the paper: 0.01)")
+    p.add_argument("--ground", metavar="M",
+                   help="ground length l0 in metres: also write a spec TOML for "
+                        "`crankdyn linkage` with the absolute lengths")
+    p.add_argument("--name", metavar="NAME",
+                   help="mechanism name in the spec (default kkm-<φ0>; with --ground)")
+    p.add_argument("--omega", metavar="RAD_S",
+                   help="crank angular velocity in the spec, rad/s, + ccw (default 1; "
+                        "with --ground)")
+    p.add_argument("-o", "--output", required=True, metavar="DIR", help="output folder")
+    p.add_argument("--no-plots", action="store_true", help="write the tables only")
+    p.set_defaults(func=run)
+    return p
+
+
+def _number(problems, option, text, check, valid):
+    """Parse one option value; record a problem naming the option, the value and what is
+    valid when it is not a number or fails ``check``."""
+    if text is None:
+        return None
+    try:
+        value = float(text)
+    except (TypeError, ValueError):
+        problems.append(f"{option}: got {text!r}; must be a number ({valid})")
+        return None
+    if not (math.isfinite(value) and check(value)):
+        problems.append(f"{option}: got {text}; must be {valid}")
+        return None
+    return value
+
+
+def _validate(args):
+    """Every problem with the options at once; returns the parsed values."""
+    problems = []
+    positive = (lambda v: v > 0, "a positive length relative to the ground")
+    v = {
+        "phi0": _number(problems, "--phi0", args.phi0, lambda x: 0 < x < 180,
+                        "a crank angle strictly between 0 and 180 degrees"),
+        "l1": _number(problems, "--l1", args.l1, *positive),
+        "l2": _number(problems, "--l2", args.l2, *positive),
+        "l3": _number(problems, "--l3", args.l3, *positive),
+        "mu_min": _number(problems, "--mu-min", args.mu_min, lambda x: 0 <= x < 90,
+                          "an angle in degrees, 0 <= mu_min < 90"),
+        "l1_step": _number(problems, "--l1-step", args.l1_step, lambda x: x > 0,
+                           "a positive step of λ1"),
+        "ground": _number(problems, "--ground", args.ground, lambda x: x > 0,
+                          "a positive ground length in metres"),
+        "omega": _number(problems, "--omega", args.omega, lambda x: x != 0,
+                         "a non-zero angular velocity in rad/s"),
+    }
+    given = frozenset(k for k in ("l1", "l2", "l3", "mu_min") if getattr(args, k) is not None)
+    mode = MODES.get(given)
+    if mode is None:
+        got = " ".join(OPTION[k] for k in ("l1", "l2", "l3", "mu_min") if k in given)
+        problems.append(f"options: got {got}; choose one of: --l2 and --l3, --l1 alone, "
+                        f"--l2 and --mu-min (or none, for the region and tables only)")
+    if args.l1_step is not None and mode != "mu_min":
+        problems.append("--l1-step: only with --l2 and --mu-min")
+    if args.ground is not None and mode == "region":
+        problems.append("--ground: needs a chosen mechanism (--l2 --l3, --l1 or "
+                        "--l2 --mu-min)")
+    for opt, val in (("--name", args.name), ("--omega", args.omega)):
+        if val is not None and args.ground is None:
+            problems.append(f"{opt}: only with --ground (it goes into the spec TOML)")
+    if args.name is not None and not args.name.strip():
+        problems.append("--name: must not be empty")
+    return v, mode, problems
+
+
+#: Python argument names of linkage.synthesis → the options that set them.
+ARG_OPTION = {"l1": "--l1", "l2": "--l2", "l3": "--l3", "mu_min_deg": "--mu-min",
+              "l1_step": "--l1-step", "phi0_deg": "--phi0", "ground_m": "--ground"}
+
+
+def _as_options(exc):
+    """The same error with each problem's key path written as the CLI options."""
+    from linkage.errors import Problem, SpecError
+
+    problems = []
+    for p in getattr(exc, "problems", []):
+        key = ", ".join(ARG_OPTION.get(k.strip(), k.strip()) for k in p.key.split(","))
+        problems.append(Problem(key if p.key else "", p.message))
+    return SpecError(problems) if problems else exc
+
+
+def _safe_name(name: str) -> str:
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", name).strip("._") or "kkm"
+
+
+def run(args) -> int:
+    import numpy as np
+    import pandas as pd
+
+    from crankdyn.io import ensure_finite, staged_output, write_csv
+    from linkage import synthesis as syn
+    from linkage import synthesis_report as rep
+    from linkage.errors import SpecError
+
+    v, mode, problems = _validate(args)
+    if problems:
+        raise SpecError(problems)
+    phi0 = v["phi0"]
+
+    # ---- compute everything first (any SynthesisError leaves the output untouched)
+    design = None
+    try:
+        if mode == "l2_l3":
+            design = syn.design_from_l2_l3(v["l2"], v["l3"], phi0)
+        elif mode == "l1":
+            design = syn.design_equal_l2_l3(v["l1"], phi0)
+        elif mode == "mu_min":
+            design = syn.design_for_mu_min(v["l2"], v["mu_min"], phi0,
+                                           l1_step=v["l1_step"])
+    except syn.SynthesisError as exc:
+        raise _as_options(exc) from None
+    region = syn.existence_region(phi0)
+    table = rep.table1(phi0)
+    ensure_finite(table, "Table 1")
+    mech = None
+    spec = spec_name = None
+    phi = np.arange(0.0, 361.0, 1.0)
+    mu_turn = None
+    if design is not None:
+        mech = rep.mechanism_table(design, v["ground"])
+        ensure_finite(mech, "mechanism")
+        mu_turn = pd.DataFrame({"phi_deg": phi, "mu_deg": syn.transmission_angle_deg(
+            phi, design.l1, design.l2, design.l3)})
+        ensure_finite(mu_turn, "transmission angle")
+        if v["ground"] is not None:
+            spec_name = args.name if args.name is not None else f"kkm-{phi0:g}"
+            extra = {"name": spec_name}
+            if v["omega"] is not None:
+                extra["omega_rad_s"] = v["omega"]
+            spec = design.to_spec(v["ground"], **extra)
+            import linkage
+            linkage.load_spec(spec)   # the core must accept what we write
+    figures = {}
+    if not args.no_plots:
+        from linkage import synthesis_plots as plots
+
+        family = syn.right_angle_family(design.l1, phi0) if design is not None else None
+        figures["region"] = plots.plot_region(region, design, family=family)
+        figures["mu_min"] = plots.plot_mu_min_curves(syn.mu_min_curves(phi0), design,
+                                                     mu_required=v["mu_min"])
+        if design is not None:
+            figures["transmission_angle"] = plots.plot_transmission_angle(
+                phi, mu_turn["mu_deg"].to_numpy(), design)
+
+    # ---- write (all files appear together, or none)
+    written = []
+    with staged_output(args.output) as stage:
+        write_csv(table, stage / "table1.csv")
+        written.append("table1.csv")
+        rep.write_workbook(stage / "synthesis.xlsx", table, phi0, mech)
+        written.append("synthesis.xlsx")
+        if design is not None:
+            write_csv(mech, stage / "mechanism.csv")
+            write_csv(mu_turn, stage / "transmission_angle.csv")
+            written += ["mechanism.csv", "transmission_angle.csv"]
+        if spec is not None:
+            fname = f"{_safe_name(spec_name)}.toml"
+            header = (f"ККМ-{phi0:g}°: crank-rocker with μ = 90° at φ = {phi0:g}° from the "
+                      f"line of centres (ground along +x)\n"
+                      f"written by crankdyn synth; λ1 = {design.l1!r}, λ2 = {design.l2!r}, "
+                      f"λ3 = {design.l3!r}, μmin = {design.mu_min_deg:.6g}°\n"
+                      f"massless links, no loads: add [links.*] and [[load]] for forces")
+            rep.write_toml(spec, stage / fname, header)
+            written.append(fname)
+        from linkage.synthesis_plots import save_figure
+        for stem, fig in figures.items():
+            for ext in ("png", "svg"):
+                save_figure(fig, stage / f"{stem}.{ext}")
+                written.append(f"{stem}.{ext}")
+
+    reg = region
+    print(f"ККМ-{phi0:g}°: region of existence 0 < λ1 ≤ {reg.l1_max:.4f}, point d = "
+          f"({reg.d[0]:.4f}, {reg.d[1]:.4f}); Table 1: {len(table)} rows")
+    if design is not None:
+        for line in rep.summary_lines(design, v["ground"]):
+            print(line)
+    print(f"written to {args.output}: {', '.join(written)}")
+    return 0
