@@ -1,0 +1,309 @@
+"""Engine force table: exact identities, the closed-form textbook formulas as an
+independent check of the Assur-group (RRP dyad) path, and property-based tests.
+
+Layers (style.md): identities that need no reference data; then the textbook's closed
+forms (N = P tg β, Sш = P/cos β, K = P cos(α+β)/cos β, T = P sin(α+β)/cos β, x, v, j) which
+the code never uses; then hypothesis over random valid engines.
+"""
+import copy
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+import engine
+from engine.forces import crank_pin_forces, two_term_acceleration
+from engine.kinematics import GUIDE_ANGLE, crank_slider
+from linkage.groups import dot, link_wrench, rrp_reactions
+
+BASE = {
+    "engine": dict(name="test", bore_mm=92.0, stroke_mm=86.0, rod_ratio=0.28,
+                   speed_rpm=4800.0, crankcase_MPa=0.1),
+    "masses": dict(reciprocating_kg=0.9, rod_rotating_kg=0.7),
+    "pressure": {"cycle": dict(kind="otto", compression_ratio=9.5, pa_MPa=0.085,
+                               pr_MPa=0.115, n1=1.37, n2=1.25, pz_MPa=6.5)},
+    "table": dict(step_deg=1.0, extra_angles_deg=[372.5], force_scale_N_per_mm=100.0),
+}
+
+
+def make(acceleration="two-term", **engine_keys):
+    d = copy.deepcopy(BASE)
+    d["engine"]["acceleration"] = acceleration
+    d["engine"].update(engine_keys)
+    return engine.load_spec(d)
+
+
+def closed_forms(alpha, lam, P):
+    """The textbook formulas (Kolchin & Demidov; seed 003 eqs. 1.10–1.15)."""
+    beta = np.arcsin(lam * np.sin(alpha))
+    return dict(beta=beta, N=P * np.tan(beta), S=P / np.cos(beta),
+                K=P * np.cos(alpha + beta) / np.cos(beta),
+                T=P * np.sin(alpha + beta) / np.cos(beta))
+
+
+@pytest.fixture(scope="module", params=["two-term", "exact"])
+def table(request):
+    spec = make(request.param)
+    return spec, engine.force_table(spec)
+
+
+def scale(t):
+    return float(np.max(np.abs(t["P_N"])))
+
+
+# --------------------------------------------------------------------------- identities
+
+def test_columns_and_rows(table):
+    spec, t = table
+    assert list(t.columns)[:14] == ["alpha_deg", "p_gas_MPa", "dPg_N", "Pj_N", "P_N",
+                                    "beta_deg", "N_N", "S_N", "K_N", "T_N", "M_Nm",
+                                    "Kr_N", "R_N", "psi_deg"]
+    assert t["alpha_deg"].iloc[0] == 0 and t["alpha_deg"].iloc[-1] == 720
+    assert len(t) == 722            # 0..720 every 1° plus the extra 372.5°
+    assert 372.5 in set(t["alpha_deg"])
+    assert np.all(np.diff(t["alpha_deg"]) > 0)
+
+
+def test_S_squared_is_K_squared_plus_T_squared(table):
+    _, t = table
+    np.testing.assert_allclose(t["S_N"] ** 2, t["K_N"] ** 2 + t["T_N"] ** 2,
+                               rtol=1e-12, atol=1e-9 * scale(t) ** 2)
+
+
+def test_T_and_N_vanish_at_dead_centres(table):
+    _, t = table
+    dead = t[t["alpha_deg"].isin([0, 180, 360, 540, 720])]
+    assert len(dead) == 5
+    tol = 1e-12 * scale(t)
+    assert np.all(np.abs(dead["T_N"]) < tol)
+    assert np.all(np.abs(dead["N_N"]) < tol)
+    assert np.all(np.abs(dead["M_Nm"]) < tol)
+    # at the dead centres the whole rod force is radial: Sш = P, K = P at TDC, −P at BDC
+    cos_a = np.cos(np.radians(dead["alpha_deg"]))
+    np.testing.assert_allclose(dead["K_N"], dead["P_N"] * cos_a, rtol=1e-12)
+    np.testing.assert_allclose(dead["S_N"], dead["P_N"], rtol=1e-12)
+
+
+def test_power_balance_T_R_omega_equals_P_v(table):
+    """T·R·ω = P·v at every angle (v the exact piston velocity from the dyad)."""
+    spec, t = table
+    lhs = t["T_N"] * spec.R * spec.omega
+    rhs = t["P_N"] * t["v_m_s"]
+    np.testing.assert_allclose(lhs, rhs, rtol=0, atol=1e-10 * scale(t) * spec.R * spec.omega)
+
+
+def test_torque_is_T_times_R(table):
+    spec, t = table
+    np.testing.assert_allclose(t["M_Nm"], t["T_N"] * spec.R, rtol=1e-12,
+                               atol=1e-12 * scale(t) * spec.R)
+
+
+@pytest.mark.parametrize("accel", ["two-term", "exact"])
+def test_inertia_alone_gives_zero_mean_torque(accel):
+    d = copy.deepcopy(BASE)
+    d["engine"]["acceleration"] = accel
+    d["pressure"] = {"angle_deg": [0, 360], "p_MPa": [0.1, 0.1]}   # pг = p0: no gas force
+    d["table"]["extra_angles_deg"] = []    # a uniform grid: the trapezoid rule is spectral
+    spec = engine.load_spec(d)
+    t = engine.force_table(spec)
+    assert np.all(t["dPg_N"] == 0)
+    s = engine.summarize(t, spec)
+    amplitude = np.max(np.abs(t["M_Nm"]))
+    assert amplitude > 10
+    assert abs(s["M_mean_Nm"]) < 1e-12 * amplitude
+
+
+def test_two_term_inertia_force_formula():
+    spec = make("two-term")
+    t = engine.force_table(spec)
+    a = np.radians(t["alpha_deg"])
+    expected = -spec.mj * spec.R * spec.omega ** 2 * (np.cos(a) + spec.lam * np.cos(2 * a))
+    np.testing.assert_allclose(t["Pj_N"], expected, rtol=1e-13, atol=1e-9)
+
+
+def test_exact_inertia_force_uses_the_dyad_acceleration():
+    spec = make("exact")
+    t = engine.force_table(spec)
+    np.testing.assert_allclose(t["Pj_N"], -spec.mj * t["j_m_s2"], rtol=1e-13)
+    # and differs from the two-term form by the higher harmonics (~λ³)
+    t2 = engine.force_table(make("two-term"))
+    diff = np.max(np.abs(t["Pj_N"] - t2["Pj_N"])) / np.max(np.abs(t2["Pj_N"]))
+    assert 1e-4 < diff < 0.02
+
+
+def test_gas_force_and_total():
+    spec = make()
+    t = engine.force_table(spec)
+    np.testing.assert_allclose(t["dPg_N"], (t["p_gas_MPa"] * 1e6 - 0.1e6) * spec.area,
+                               rtol=1e-12, atol=1e-9)
+    np.testing.assert_allclose(t["P_N"], t["dPg_N"] + t["Pj_N"], rtol=1e-14, atol=1e-9)
+
+
+def test_crank_pin_force_equals_the_rrp_dyad_reaction():
+    """Independent assembly of the same dyad: the piston is given the mass mj (its
+    d'Alembert inertia from the dyad's exact acceleration) and only the gas force; the rod
+    force on the crank pin must equal −R23 and match the table (exact mode)."""
+    spec = make("exact")
+    t = engine.force_table(spec)
+    alpha = np.radians(t["alpha_deg"].to_numpy())
+    mech = crank_slider(alpha, spec.R, spec.L, spec.omega)
+    u = np.exp(1j * GUIDE_ANGLE)
+    sol = mech.dyad
+    W3 = link_wrench(sol.link3)
+    W4 = link_wrench(sol.link4, mass=spec.mj,
+                     forces=[(-t["dPg_N"].to_numpy() * u, sol.B.z)])
+    reac = rrp_reactions(sol, spec.L, W3, W4)
+    S32 = -reac.RA
+    e2 = mech.crank.e
+    K = dot(S32, -e2)
+    T = dot(S32, 1j * e2)
+    sc = scale(t)
+    np.testing.assert_allclose(t["K_N"], K, rtol=0, atol=1e-10 * sc)
+    np.testing.assert_allclose(t["T_N"], T, rtol=0, atol=1e-10 * sc)
+    np.testing.assert_allclose(t["N_N"], reac.RG_n, rtol=0, atol=1e-10 * sc)
+    # the massless rod is a two-force member: the force at A lies along the rod
+    assert np.max(np.abs(reac.RA_t)) < 1e-10 * sc
+
+
+def test_crank_pin_forces_returns_the_dyad_reaction_itself():
+    spec = make()
+    alpha = np.radians(np.arange(0, 720, 7.0))
+    mech = crank_slider(alpha, spec.R, spec.L, spec.omega)
+    P = 1e4 * np.cos(alpha / 3) + 2e3
+    f = crank_pin_forces(mech, P, spec.L)
+    np.testing.assert_array_equal(f["S32"], -f["reactions"].RA)
+
+
+def test_Rshsh_is_S_shifted_by_Kr(table):
+    spec, t = table
+    assert np.all(t["Kr_N"] == spec.Kr)
+    assert spec.Kr == pytest.approx(-spec.m_rod_rot * spec.R * spec.omega ** 2, rel=1e-15)
+    assert spec.Kr < 0
+    # the vector from the shifted pole Oш = (T, K) = (0, −Kr) to the S-diagram point
+    Oshift = 0 - 1j * spec.Kr
+    S = t["T_N"] + 1j * t["K_N"]
+    np.testing.assert_allclose(t["R_N"], np.abs(S - Oshift), rtol=1e-13)
+    # Ψ is the direction of that vector: tan Ψ = T/(K + Kr.ш)
+    psi = np.radians(t["psi_deg"].to_numpy())
+    np.testing.assert_allclose(t["R_N"] * np.sin(psi), t["T_N"], atol=1e-9 * scale(t))
+    np.testing.assert_allclose(t["R_N"] * np.cos(psi), t["K_N"] + spec.Kr,
+                               atol=1e-9 * scale(t))
+
+
+def test_psi_range_and_zero():
+    spec = make()
+    t = engine.force_table(spec)
+    assert np.all(t["psi_deg"] > -180) and np.all(t["psi_deg"] <= 180)
+    # at the intake TDC inertia pulls the pin outwards: Ψ = 180°
+    assert t["psi_deg"].iloc[0] == pytest.approx(180)
+    # at combustion TDC + 12.5° the gas force dominates: Rшш points to the shaft (|Ψ| < 90)
+    row = t[t["alpha_deg"] == 372.5].iloc[0]
+    assert abs(row["psi_deg"]) < 90 and row["T_N"] > 0
+
+
+# ------------------------------------------------------ closed forms (independent check)
+
+def test_closed_form_forces_match_the_dyad_path(table):
+    spec, t = table
+    alpha = np.radians(t["alpha_deg"].to_numpy())
+    P = t["P_N"].to_numpy()
+    cf = closed_forms(alpha, spec.lam, P)
+    sc = scale(t)
+    np.testing.assert_allclose(np.radians(t["beta_deg"]), cf["beta"], atol=1e-12)
+    for key in ("N", "S", "K", "T"):
+        np.testing.assert_allclose(t[f"{key}_N"], cf[key], rtol=1e-9, atol=1e-9 * sc,
+                                   err_msg=key)
+    np.testing.assert_allclose(t["M_Nm"], cf["T"] * spec.R, rtol=1e-9, atol=1e-9 * sc)
+    Kt = cf["K"] + spec.Kr
+    np.testing.assert_allclose(t["R_N"], np.sqrt(cf["T"] ** 2 + Kt ** 2), rtol=1e-9)
+
+
+def test_closed_form_kinematics_match_the_dyad():
+    lam, R, w = 0.3, 0.05, 400.0
+    alpha = np.radians(np.linspace(0, 720, 1441))
+    m = crank_slider(alpha, R, R / lam, w)
+    s2 = np.sin(alpha) ** 2
+    root = np.sqrt(1 - lam ** 2 * s2)
+    x = R * ((1 - np.cos(alpha)) + (1 - root) / lam)
+    v = R * w * (np.sin(alpha) + lam * np.sin(2 * alpha) / (2 * root))
+    j = R * w ** 2 * (np.cos(alpha) + lam * (np.cos(2 * alpha) + lam ** 2 * s2 ** 2) / root ** 3)
+    np.testing.assert_allclose(m.x, x, rtol=1e-9, atol=1e-12 * R)
+    np.testing.assert_allclose(m.v, v, rtol=1e-9, atol=1e-12 * R * w)
+    np.testing.assert_allclose(m.j, j, rtol=1e-9, atol=1e-12 * R * w * w)
+    # the two-term acceleration is the textbook approximation of j: error ~ λ³
+    j2 = two_term_acceleration(alpha, R, lam, w)
+    assert np.max(np.abs(j2 - j)) < 0.05 * R * w * w
+
+
+def test_piston_velocity_is_derivative_of_displacement():
+    lam, R, w = 0.27, 0.0625, 230.0
+    h = 1e-6
+    a = np.radians(np.arange(0, 360, 5.0))
+    m = crank_slider(a, R, R / lam, w)
+    dx = (crank_slider(a + h, R, R / lam, w).x - crank_slider(a - h, R, R / lam, w).x) / (2 * h)
+    np.testing.assert_allclose(m.v, dx * w, rtol=1e-6, atol=1e-8)
+
+
+# ------------------------------------------------------------------ property-based
+
+@st.composite
+def engines(draw):
+    bore = draw(st.floats(50, 160))
+    stroke = draw(st.floats(50, 180))
+    lam = draw(st.floats(0.15, 0.45))
+    n = draw(st.floats(500, 8000))
+    mj = draw(st.floats(0, 6))
+    mrot = draw(st.floats(0, 4))
+    npts = draw(st.integers(2, 12))
+    angles = sorted(set(round(a, 3) for a in draw(
+        st.lists(st.floats(0, 719.9), min_size=npts, max_size=npts))))
+    if len(angles) < 2:
+        angles = [0.0, 360.0]
+    p = draw(st.lists(st.floats(0.0, 12.0), min_size=len(angles), max_size=len(angles)))
+    accel = draw(st.sampled_from(["two-term", "exact"]))
+    step = draw(st.sampled_from([1.0, 2.5, 5.0, 7.0, 30.0]))
+    return {
+        "engine": dict(bore_mm=bore, stroke_mm=stroke, rod_ratio=lam, speed_rpm=n,
+                       acceleration=accel),
+        "masses": dict(reciprocating_kg=mj, rod_rotating_kg=mrot),
+        "pressure": dict(angle_deg=angles, p_MPa=p),
+        "table": dict(step_deg=step, force_scale_N_per_mm=100.0),
+    }
+
+
+@settings(max_examples=60, deadline=None)
+@given(engines())
+def test_identities_hold_for_random_engines(d):
+    spec = engine.load_spec(d)
+    t = engine.force_table(spec)
+    assert np.all(np.isfinite(t.to_numpy()))
+    sc = max(scale(t), 1.0)
+    np.testing.assert_allclose(t["S_N"] ** 2, t["K_N"] ** 2 + t["T_N"] ** 2,
+                               rtol=1e-10, atol=1e-10 * sc ** 2)
+    np.testing.assert_allclose(t["T_N"] * spec.R * spec.omega, t["P_N"] * t["v_m_s"],
+                               atol=1e-10 * sc * spec.R * spec.omega)
+    alpha = np.radians(t["alpha_deg"].to_numpy())
+    cf = closed_forms(alpha, spec.lam, t["P_N"].to_numpy())
+    for key in ("N", "S", "K", "T"):
+        np.testing.assert_allclose(t[f"{key}_N"], cf[key], rtol=1e-9, atol=1e-9 * sc)
+    Kt = t["K_N"] + spec.Kr
+    np.testing.assert_allclose(t["R_N"], np.hypot(t["T_N"], Kt), rtol=1e-12)
+    dead = t[np.isclose(np.mod(t["alpha_deg"], 180), 0)]
+    assert np.all(np.abs(dead["T_N"]) < 1e-9 * sc)
+    # the tabulated pressure is reproduced at its own points
+    p_at = engine.gas_pressure(spec, np.asarray(d["pressure"]["angle_deg"]))
+    np.testing.assert_allclose(p_at * 1e-6, d["pressure"]["p_MPa"], rtol=1e-12, atol=1e-12)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.floats(0.1, 0.6), st.floats(0.01, 0.2), st.floats(10, 900))
+def test_inertia_only_mean_torque_zero_random(lam, R, w):
+    alpha = np.radians(np.linspace(0, 360, 721))
+    m = crank_slider(alpha, R, R / lam, w)
+    for j in (m.j, two_term_acceleration(alpha, R, lam, w)):
+        P = -2.0 * j
+        f = crank_pin_forces(m, P, R / lam)
+        mean = np.trapezoid(f["M"], alpha) / (2 * math.pi)
+        assert abs(mean) < 1e-10 * np.max(np.abs(f["M"]))
