@@ -381,8 +381,20 @@ def analyze(spec, crank_angles_deg=None) -> AnalysisResult:
                     "(links collinear; the output's motion is indeterminate there)")
         hit = [a for a in sing if np.any(np.abs(np.angle(np.exp(1j * (phi - a)))) < 1e-9)]
         if hit:
-            msgs.append("requested crank angles include a singular position; its row is "
-                        "not finite")
+            msgs.append("requested crank angles include a singular position; its "
+                        "velocities, accelerations and forces are not finite")
+            # rounding can leave finite garbage there (e.g. a slider's rod exactly
+            # perpendicular to the guide): report them as NaN, keep the positions
+            near = np.zeros(len(phi), bool)
+            for a in hit:
+                near |= np.abs(np.angle(np.exp(1j * (phi - a)))) < 1e-9
+            rates = [c for c in ("omega3_rad_s", "eps3_rad_s2", "omega4_rad_s",
+                                 "eps4_rad_s2", "v4_m_s", "a4_m_s2") if c in kin.columns]
+            rates += [f"{p}_{q}" for p, (ln, _) in point_names(spec).items() if ln != "crank"
+                      for q in ("vx_m_s", "vy_m_s", "ax_m_s2", "ay_m_s2")]
+            kin.loc[near, rates] = np.nan
+            fcols = [c for c in frc.columns if c not in ("position", "phi_deg")]
+            frc.loc[near, fcols] = np.nan
         for m in msgs:
             warnings.warn(m, SingularPositionWarning, stacklevel=2)
     summary["singular_phi_deg"] = [math.degrees(a) for a in sing]
