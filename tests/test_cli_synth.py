@@ -1,0 +1,225 @@
+"""End-to-end tests of ``crankdyn synth`` (seed 004, Sereda 2016): run the CLI into a
+temporary folder, read the CSV, the workbook and the spec TOML back."""
+from __future__ import annotations
+
+import math
+import subprocess
+import sys
+import time
+import tomllib
+
+import numpy as np
+import pandas as pd
+import pytest
+from openpyxl import load_workbook
+
+import linkage
+from crankdyn.cli import main
+from linkage import synthesis as syn
+
+PLOTS = ["region", "mu_min", "transmission_angle"]
+
+
+def run(args, out):
+    return main(["synth", *args, "-o", str(out)])
+
+
+def test_paper_example_fig3_with_ground(tmp_path, capsys):
+    out = tmp_path / "out"
+    # seed 004, example 2 to Fig. 3: λ2 = 0.90, μmin ≥ 40° → λ1 = 0.08, λ3 = 0.24, μmin 46°16′
+    rc = run(["--phi0", "30", "--l2", "0.9", "--mu-min", "40", "--l1-step", "0.01",
+              "--ground", "0.5", "--name", "press drive"], out)
+    assert rc == 0
+    printed = capsys.readouterr().out
+    assert "λ1 = 0.0800" in printed and "λ3 = 0.2405" in printed and "46°24′" in printed
+    names = sorted(p.name for p in out.iterdir())
+    assert names == sorted(["table1.csv", "synthesis.xlsx", "mechanism.csv",
+                            "transmission_angle.csv", "press_drive.toml",
+                            *[f"{p}.{e}" for p in PLOTS for e in ("png", "svg")]])
+    for p in PLOTS:
+        for e in ("png", "svg"):
+            assert (out / f"{p}.{e}").stat().st_size > 1000
+    assert (out / "region.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert b"<svg" in (out / "region.svg").read_bytes()[:500]
+
+    mech = pd.read_csv(out / "mechanism.csv")
+    assert len(mech) == 1
+    m = mech.iloc[0]
+    assert m["l1"] == pytest.approx(0.08, abs=1e-15)
+    assert round(m["l3"], 2) == 0.24                         # seed 004: λ3 = 0.24
+    assert 46.2 <= m["mu_min_deg"] <= 46.4                   # seed 004: 46°16′ (rounded λ3)
+    assert m["mu_min_at_deg"] == 180.0 and m["mu_at_phi0_deg"] == pytest.approx(90, abs=1e-9)
+    assert m["grashof"] == "crank-rocker"
+    assert (m["crank_m"], m["coupler_m"], m["ground_m"]) == pytest.approx((0.04, 0.45, 0.5))
+
+    # the spec TOML: valid TOML, accepted by the core, and gives the same μ
+    with open(out / "press_drive.toml", "rb") as f:
+        spec = tomllib.load(f)
+    assert spec["mechanism"]["name"] == "press drive"
+    assert spec["mechanism"]["rocker"] == pytest.approx(0.5 * m["l3"], rel=1e-15)
+    loaded = linkage.load_spec(out / "press_drive.toml")
+    res = linkage.analyze(loaded, crank_angles_deg=[30.0, 180.0])
+    np.testing.assert_allclose(res.kinematics["mu_deg"], [90.0, m["mu_min_deg"]], atol=1e-9)
+
+    # μ(φ) table: 0…360° at 1°, 90° at φ0 and the minimum at 180°
+    mu = pd.read_csv(out / "transmission_angle.csv")
+    assert mu["phi_deg"].tolist() == list(np.arange(0.0, 361.0))
+    assert mu["mu_deg"].iloc[30] == pytest.approx(90.0, abs=1e-9)
+    assert mu["mu_deg"].min() == pytest.approx(m["mu_min_deg"], abs=1e-12)
+
+    # the spec runs through `crankdyn linkage`
+    assert main(["linkage", str(out / "press_drive.toml"), "-o", str(tmp_path / "lk")]) == 0
+    kin = pd.read_csv(tmp_path / "lk" / "kinematics.csv")
+    assert kin["mu_deg"].min() >= m["mu_min_deg"] - 1e-9
+
+
+def test_table1_csv_and_workbook(tmp_path):
+    out = tmp_path / "o"
+    assert run(["--l2", "0.7", "--l3", "0.6"], out) == 0
+    t1 = pd.read_csv(out / "table1.csv")
+    assert list(t1.columns) == ["l1", "l2", "l3", "mu_min_deg"]
+    # seed 004, Table 1 (four decimals)
+    expected = [(0.05, 0.9520, 0.0980), (0.05, 0.0980, 0.9520),
+                (0.10, 0.8904, 0.2096), (0.10, 0.2096, 0.8904),
+                (0.15, 0.8002, 0.3498), (0.15, 0.3498, 0.8002),
+                (0.1896, 0.5948, 0.5948)]
+    np.testing.assert_array_equal(t1[["l1", "l2", "l3"]].round(4).to_numpy(), expected)
+    assert (t1["mu_min_deg"] == 0).all()
+
+    wb = load_workbook(out / "synthesis.xlsx", read_only=True)
+    assert wb.sheetnames == ["table1", "mechanism"]
+    rows = list(wb["table1"].iter_rows(values_only=True))
+    assert "Таблица 1" in rows[0][0]
+    assert rows[1][:3] == ("Длина λ1", "Длина λ2", "Длина λ3")
+    assert rows[2][:3] == ("crank λ1", "coupler λ2", "rocker λ3")
+    data = np.array([r[:4] for r in rows[3:]], dtype=float)
+    np.testing.assert_array_equal(data, t1.to_numpy())          # full precision
+    mech = {r[1]: r[2] for r in wb["mechanism"].iter_rows(min_row=2, values_only=True)}
+    # seed 004, example 1 to Fig. 2: λ2 = 0.70, λ3 = 0.60 → λ1 = 0.09; μmin = 66°2′
+    assert round(mech["crank l1"], 2) == 0.09
+    assert mech["mu_min_deg"] == pytest.approx(66 + 2 / 60, abs=0.5 / 60)
+    assert mech["grashof"] == "crank-rocker"
+    csv = pd.read_csv(out / "mechanism.csv").iloc[0]
+    assert mech["crank l1"] == csv["l1"] and mech["mu_min_deg"] == csv["mu_min_deg"]
+
+
+def test_equal_l2_l3_example(tmp_path, capsys):
+    # seed 004, example 2 to Fig. 2: λ1 = 0.146, λ2 = λ3 → 0.620
+    assert run(["--l1", "0.146", "--no-plots"], tmp_path / "o") == 0
+    m = pd.read_csv(tmp_path / "o" / "mechanism.csv").iloc[0]
+    assert round(m["l2"], 3) == 0.620 and m["l3"] == m["l2"]
+    assert not list((tmp_path / "o").glob("*.png"))
+    assert "λ2 = 0.6199" in capsys.readouterr().out
+
+
+def test_region_only_and_other_phi0(tmp_path):
+    out = tmp_path / "o"
+    assert run(["--phi0", "120"], out) == 0
+    names = {p.name for p in out.iterdir()}
+    assert names == {"table1.csv", "synthesis.xlsx", "region.png", "region.svg",
+                     "mu_min.png", "mu_min.svg"}
+    t1 = pd.read_csv(out / "table1.csv")
+    # φ0 > 90°: the boundary is on Kolchin's lines (1)–(2): |λ2 − λ3| = 1 − λ1
+    np.testing.assert_allclose((t1["l2"] - t1["l3"]).abs(), 1 - t1["l1"], atol=1e-12)
+    assert t1["l1"].iloc[-1] == 1.0
+    wb = load_workbook(out / "synthesis.xlsx", read_only=True)
+    assert wb.sheetnames == ["table1"]
+
+
+def test_rerun_replaces_outputs(tmp_path):
+    out = tmp_path / "o"
+    assert run(["--l2", "0.7", "--l3", "0.6", "--no-plots"], out) == 0
+    assert run(["--l2", "0.6", "--l3", "0.7", "--no-plots"], out) == 0
+    assert pd.read_csv(out / "mechanism.csv")["l2"].iloc[0] == 0.6
+    assert not [p for p in out.iterdir() if p.name.startswith(".")]
+
+
+BAD = [
+    (["--phi0", "180", "--l1", "0.1"], ["--phi0: got 180"]),
+    (["--phi0", "0"], ["--phi0: got 0"]),
+    (["--phi0", "abc"], ["--phi0: got 'abc'"]),
+    (["--l2", "-0.7", "--l3", "0"], ["--l2: got -0.7", "--l3: got 0"]),
+    (["--l2", "nan", "--l3", "0.6"], ["--l2: got nan"]),
+    (["--l2", "0.9", "--l3", "0.9"], ["--l2, --l3: (λ2, λ3) = (0.9, 0.9) is outside the region"]),
+    (["--l2", "0.7", "--l3", "0.2"], ["--l2, --l3:"]),                 # beyond the curve cda
+    (["--l1", "0.19"], ["--l1: must not exceed λ1max = 0.189591"]),
+    (["--l2", "0.9", "--mu-min", "90"], ["--mu-min: got 90"]),
+    (["--phi0", "120", "--l2", "1.2", "--mu-min", "40"], ["--mu-min: μmin ≥ 40° is not reachable"]),
+    (["--l1", "0.1", "--l3", "0.5"], ["options: got --l1 --l3"]),
+    (["--l3", "0.5"], ["options: got --l3"]),
+    (["--mu-min", "40"], ["options: got --mu-min"]),
+    (["--l1", "0.1", "--l2", "0.5", "--mu-min", "40"], ["options: got --l1 --l2 --mu-min"]),
+    (["--l1", "0.1", "--l1-step", "0.01"], ["--l1-step: only with --l2 and --mu-min"]),
+    (["--ground", "0.5"], ["--ground: needs a chosen mechanism"]),
+    (["--l1", "0.1", "--name", "x"], ["--name: only with --ground"]),
+    (["--l1", "0.1", "--ground", "-1", "--omega", "0"],
+     ["--ground: got -1", "--omega: got 0"]),
+]
+
+
+@pytest.mark.parametrize("args, expected", BAD)
+def test_bad_input_exit_2_one_line_per_problem_nothing_written(tmp_path, capsys, args,
+                                                               expected):
+    out = tmp_path / "out"
+    out.mkdir()
+    rc = run(args, out)
+    assert rc == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == len(expected), err
+    for line, want in zip(err, expected):
+        assert line.startswith("crankdyn synth: error: ")
+        assert want in line, (line, want)
+    assert "Traceback" not in "\n".join(err)
+    assert list(out.iterdir()) == []
+    assert [p.name for p in tmp_path.iterdir()] == ["out"]     # no staging folder left
+
+
+def test_bad_input_does_not_create_the_folder(tmp_path):
+    assert run(["--l2", "0.9", "--l3", "0.9"], tmp_path / "new") == 2
+    assert not (tmp_path / "new").exists()
+
+
+def test_all_problems_at_once(tmp_path, capsys):
+    rc = run(["--phi0", "-5", "--l2", "x", "--l3", "-1", "--ground", "0"], tmp_path / "o")
+    assert rc == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert [ln.split(": ")[2] for ln in err] == ["--phi0", "--l2", "--l3", "--ground"]
+
+
+def test_help_is_fast_and_lists_synth():
+    code = ("import sys, time; t = time.perf_counter(); "
+            "from crankdyn.cli import build_parser; p = build_parser(); "
+            "h = p.format_help(); dt = time.perf_counter() - t; "
+            "print('synth' in h, dt, any(m in sys.modules for m in "
+            "('numpy', 'pandas', 'matplotlib', 'openpyxl')))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout.split()
+    assert out[0] == "True"
+    assert out[2] == "False"            # cmd_synth imports no heavy library at module top
+    t = time.perf_counter()
+    subprocess.run([sys.executable, "-m", "crankdyn", "--help"], capture_output=True,
+                   check=True)
+    assert time.perf_counter() - t < 0.3 + 0.2   # 0.3 s budget plus interpreter start slack
+
+
+def test_synth_help_mentions_the_modes(capsys):
+    with pytest.raises(SystemExit):
+        main(["synth", "--help"])
+    text = capsys.readouterr().out
+    for opt in ("--phi0", "--l1", "--l2", "--l3", "--mu-min", "--ground", "--output"):
+        assert opt in text
+
+
+def test_toml_writer_round_trip():
+    from linkage.synthesis_report import dumps_toml
+
+    spec = syn.to_spec(0.1, 0.7, 0.6, 1.0, name='a "quoted" name\\', omega_rad_s=2.5)
+    spec["links"] = {"coupler": {"mass_kg": 1.5, "cg": [0.1, 0.0],
+                                 "points": {"E": [0.3, 0.05]}}}
+    spec["load"] = [{"link": "rocker", "moment_Nm": 12.0},
+                    {"link": "rocker", "resistance_Nm": 100.0, "stroke": "working"}]
+    text = dumps_toml(spec, "comment line")
+    assert text.startswith("# comment line\n")
+    assert tomllib.loads(text) == spec
+    with pytest.raises(ValueError, match="not finite"):
+        dumps_toml({"a": math.inf})
