@@ -165,8 +165,10 @@ def plot_transmission_angle(phi_deg, mu_deg, design, ax=None):
     ats = [d.mu_min_at_deg] if abs(d.phi0_deg - 90.0) > 1e-9 else [0.0, 180.0, 360.0]
     if d.mu_min_at_deg == 0.0 and 360.0 not in ats:
         ats.append(360.0)
+    where = (f"{d.mu_min_at_deg:g}°" if abs(d.phi0_deg - 90.0) > 1e-9
+             else "0° and 180°")
     ax.plot(ats, [d.mu_min_deg] * len(ats), "v", color="tab:red", ms=7, zorder=5,
-            label=f"μmin = {d.mu_min_deg:.2f}° at φ = {d.mu_min_at_deg:g}°")
+            label=f"μmin = {d.mu_min_deg:.2f}° at φ = {where}")
     ax.set_xlim(0, 360)
     ax.set_xticks(np.arange(0, 361, 30))
     ax.set_ylim(0, 95)

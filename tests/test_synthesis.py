@@ -452,3 +452,19 @@ def test_property_design_for_mu_min(phi0, l2, mu):
         assert d.mu_min_deg == pytest.approx(mu, abs=1e-7)    # the largest λ1 is tight
         worse = syn.family_mu_min_deg(d.l1 * (1 + 1e-6), l2, phi0)
         assert not worse >= mu                                  # NaN or below
+
+
+def test_right_angle_family_arc():
+    # seed 004, Fig. 2: for 0 < λ1 < λ1max the family is the arc of radius
+    # R = √(λ1 (λ1 − √3) + 1) between its two Table 1 points
+    arc = right_angle_family(0.10, 30.0, n=101)
+    assert arc.radius == pytest.approx(math.sqrt(0.1 * (0.1 - SQ3) + 1), rel=1e-15)
+    np.testing.assert_allclose(np.hypot(arc.l2, arc.l3), arc.radius, rtol=1e-14)
+    np.testing.assert_array_equal(np.round([arc.l2[0], arc.l3[0]], 4), [0.8904, 0.2096])
+    np.testing.assert_array_equal(np.round([arc.l2[-1], arc.l3[-1]], 4), [0.2096, 0.8904])
+    assert arc.mu_min_deg[0] == pytest.approx(0, abs=1e-5)
+    assert arc.mu_min_deg[50] == pytest.approx(arc.mu_min_deg.max())   # best at λ2 = λ3
+    assert np.all(syn._kolchin_margin(0.1, arc.l2, arc.l3) >= -syn.TOL)
+    np.testing.assert_allclose(arc.l3_of(arc.l2[1:-1]), arc.l3[1:-1], rtol=1e-12)
+    with pytest.raises(SynthesisError, match="l1"):
+        right_angle_family(0.0, 30.0)
