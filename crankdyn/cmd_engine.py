@@ -36,16 +36,14 @@ def add_parser(subparsers):
 def _example_path(name):
     from linkage.errors import SpecError
 
-    from .resources import example_path, list_examples
+    from .resources import example_path
 
-    available = list_examples(".toml")
-    fname = EXAMPLES.get(name)
+    stems = {f[:-5]: f for f in EXAMPLES.values()}
+    stem = name[:-5] if name.endswith(".toml") else name
+    fname = EXAMPLES.get(stem) or stems.get(stem)
     if fname is None:
-        stem = name[:-5] if name.endswith(".toml") else name
-        fname = next((f for f in available if f[:-5] == stem), None)
-    if fname is None:
-        raise SpecError(f"--example: no example {name!r}; available: "
-                        + ", ".join(list(EXAMPLES) + [f[:-5] for f in available]))
+        raise SpecError(f"--example: no engine example {name!r}; available: "
+                        + ", ".join(list(EXAMPLES) + list(stems)))
     return example_path(fname)
 
 

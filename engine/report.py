@@ -73,6 +73,20 @@ def input_values(spec, summary, lang="ru"):
     return v
 
 
+def _put(cell, value):
+    """Store ``value`` in ``cell``; a float keeps every bit.
+
+    openpyxl writes numbers with ``"%.16g"``, which can lose the last bit of a double;
+    the shortest round-trip form ``repr`` is stored instead, still as a numeric cell
+    (data type "n"), so Excel and openpyxl read back exactly the computed number.
+    """
+    cell.value = value
+    if isinstance(value, float) and cell.data_type == "n":
+        cell._value = repr(value)
+    elif isinstance(value, str):
+        cell.data_type = "s"      # text, never a formula (a name may start with "=")
+
+
 def _copy_style(src, dst):
     dst._style = copy.copy(src._style)
 
@@ -120,13 +134,11 @@ def build_workbook(table, summary, spec, lang="ru"):
         key = row[0].value
         if key is None:
             continue
-        row[3].value = _text(values.get(key))
-        if isinstance(row[3].value, str):
-            row[3].data_type = "s"   # text, never a formula (a name may start with "=")
+        _put(row[3], _text(values.get(key)))
 
     # Table 2
     mu = spec.force_scale
-    ws_t2["C2"] = mu
+    _put(ws_t2["C2"], float(mu))
     proto = [ws_t2.cell(_T2_FIRST_ROW, c) for c in range(1, 2 * len(TABLE2_FORCES) + 4)]
     cols = [table["alpha_deg"].to_numpy()]
     for name in TABLE2_FORCES:
@@ -137,7 +149,8 @@ def build_workbook(table, summary, spec, lang="ru"):
     for i, rowvals in enumerate(data.tolist()):
         r = _T2_FIRST_ROW + i
         for j, val in enumerate(rowvals):
-            c = ws_t2.cell(r, j + 1, val)
+            c = ws_t2.cell(r, j + 1)
+            _put(c, val)
             if i:
                 _copy_style(proto[j], c)
     last = _T2_FIRST_ROW + len(data) - 1
@@ -148,9 +161,9 @@ def build_workbook(table, summary, spec, lang="ru"):
         key = row[0].value
         if key in ext:
             for cell, val in zip(row[3:7], ext[key]):
-                cell.value = val
+                _put(cell, float(val))
         elif key in summary:
-            row[3].value = summary[key]
+            _put(row[3], float(summary[key]))
 
     # Data: the CSV columns at full precision
     proto = [ws_data.cell(_DATA_FIRST_ROW, c) for c in range(1, len(COLUMNS) + 1)]
@@ -158,7 +171,8 @@ def build_workbook(table, summary, spec, lang="ru"):
         ws_data.cell(_DATA_FIRST_ROW - 1, j + 1, name)
     for i, rowvals in enumerate(table[list(COLUMNS)].to_numpy().tolist()):
         for j, val in enumerate(rowvals):
-            c = ws_data.cell(_DATA_FIRST_ROW + i, j + 1, val)
+            c = ws_data.cell(_DATA_FIRST_ROW + i, j + 1)
+            _put(c, val)
             if i:
                 _copy_style(proto[j], c)
 

@@ -1,0 +1,331 @@
+"""End to end: ``crankdyn engine`` on both bundled examples in both languages; the
+workbook read back with openpyxl equals the CSV; mm columns = N ÷ μP; every plot exists
+and is not empty; bad input exits 2 with one line per problem and writes nothing; an
+existing report is replaced only by a complete new one."""
+import math
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+from openpyxl import load_workbook
+
+import engine
+from crankdyn.cli import main
+from crankdyn.resources import example_path
+from engine.plots import PLOT_NAMES
+from engine.report import TABLE2_FORCES
+
+EXAMPLES = {"petrol": ("petrol_vaz2106.toml", "petrol-vaz2106.xlsx"),
+            "diesel": ("diesel_d240.toml", "diesel-d240.xlsx")}
+
+
+def run_cli(*argv):
+    return main(["engine", *map(str, argv)])
+
+
+@pytest.fixture(scope="module", params=[("petrol", "ru"), ("petrol", "en"),
+                                        ("diesel", "ru"), ("diesel", "en")],
+                ids=lambda p: "-".join(p))
+def run(request, tmp_path_factory):
+    name, lang = request.param
+    out = tmp_path_factory.mktemp(f"{name}_{lang}")
+    assert run_cli("--example", name, "-o", out, "--lang", lang) == 0
+    return name, lang, out
+
+
+def test_outputs_exist(run):
+    name, lang, out = run
+    files = {p.name for p in out.iterdir()}
+    expected = {"forces.csv", EXAMPLES[name][1]}
+    expected |= {f"{s}.{e}" for s in PLOT_NAMES for e in ("png", "svg")}
+    assert files == expected          # nothing else (no temporary files left)
+
+
+def test_csv_equals_force_table(run):
+    name, lang, out = run
+    df = pd.read_csv(out / "forces.csv")
+    spec = engine.load_spec(example_path(EXAMPLES[name][0]))
+    t = engine.force_table(spec)
+    assert list(df.columns) == list(engine.COLUMNS)
+    np.testing.assert_array_equal(df.to_numpy(), t.to_numpy())   # full precision
+    text = (out / "forces.csv").read_text()
+    assert text.splitlines()[0].startswith("alpha_deg,p_gas_MPa,dPg_N,Pj_N,P_N,beta_deg")
+    assert ";" not in text
+
+
+def test_workbook_equals_csv(run):
+    name, lang, out = run
+    df = pd.read_csv(out / "forces.csv")
+    wb = load_workbook(out / EXAMPLES[name][1])
+    assert len(wb.worksheets) == 5
+    ws_in, ws_t2, ws_sum, ws_data, ws_ch = wb.worksheets
+    spec = engine.load_spec(example_path(EXAMPLES[name][0]))
+    mu = spec.force_scale
+    # Table 2: α, (mm, N) × 8 forces, Mкр, Ψ — numbers, not formulas
+    assert ws_t2["C2"].value == mu
+    n = len(df)
+    rows = list(ws_t2.iter_rows(min_row=5, max_row=4 + n, values_only=True))
+    assert ws_t2.cell(5 + n, 1).value is None
+    arr = np.array(rows, dtype=float)
+    np.testing.assert_array_equal(arr[:, 0], df["alpha_deg"])
+    for k, col in enumerate(TABLE2_FORCES):
+        np.testing.assert_array_equal(arr[:, 2 + 2 * k], df[col])            # N
+        np.testing.assert_allclose(arr[:, 1 + 2 * k], df[col] / mu, rtol=1e-15)  # mm
+    np.testing.assert_array_equal(arr[:, 17], df["M_Nm"])
+    np.testing.assert_array_equal(arr[:, 18], df["psi_deg"])
+    for row in ws_t2.iter_rows(min_row=5, max_row=4 + n):
+        for c in row:
+            assert c.data_type == "n"
+    # Data sheet: the CSV, header and values, at full precision
+    assert [c.value for c in ws_data[3]][:len(df.columns)] == list(df.columns)
+    data = np.array(list(ws_data.iter_rows(min_row=4, max_row=3 + n, max_col=len(df.columns),
+                                           values_only=True)), dtype=float)
+    np.testing.assert_array_equal(data, df.to_numpy())
+    # native charts
+    assert len(ws_ch._charts) == 4
+
+
+def test_table2_layout_like_the_textbook(run):
+    name, lang, out = run
+    wb = load_workbook(out / EXAMPLES[name][1])
+    ws = wb.worksheets[1]
+    mm, nn = ("мм", "Н") if lang == "ru" else ("mm", "N")
+    head = [ws.cell(3, c).value for c in range(1, 20)]
+    sub = [ws.cell(4, c).value for c in range(1, 20)]
+    assert head[0] == "α, °"
+    assert [head[c] for c in range(1, 17, 2)] == ["ΔPг", "Pj", "P", "Sш", "N", "K", "T",
+                                                 "Rшш"]
+    assert sub[1:17] == [mm, nn] * 8
+    assert head[17].startswith("Mкр") and head[18] == "Ψ, °"
+    merged = {str(r) for r in ws.merged_cells.ranges}
+    assert {"A3:A4", "B3:C3", "P3:Q3", "R3:R4", "S3:S4"} <= merged
+    title = ws["A1"].value
+    assert ("Таблица 2" in title) if lang == "ru" else ("Table 2" in title)
+    # borders and number formats copied to every data row
+    last = ws.max_row
+    assert ws.cell(last, 3).border.left.style == "thin"
+    assert ws.cell(last, 2).number_format == "0.0" and ws.cell(last, 3).number_format == "0"
+
+
+def test_inputs_and_summary_sheets(run):
+    name, lang, out = run
+    spec = engine.load_spec(example_path(EXAMPLES[name][0]))
+    wb = load_workbook(out / EXAMPLES[name][1])
+    ws_in, ws_sum = wb.worksheets[0], wb.worksheets[2]
+    vals = {r[0]: r[3] for r in ws_in.iter_rows(min_row=4, max_col=4, values_only=True)
+            if r[0]}
+    assert vals["bore_mm"] == pytest.approx(spec.bore * 1e3)
+    assert vals["R_mm"] == pytest.approx(spec.R * 1e3)
+    assert vals["L_mm"] == pytest.approx(spec.L * 1e3)
+    assert vals["area_cm2"] == pytest.approx(spec.area * 1e4)
+    assert vals["Vh_l"] == pytest.approx(spec.Vh * 1e3)
+    assert vals["omega"] == pytest.approx(spec.omega)
+    assert vals["mj"] == pytest.approx(spec.mj)
+    assert vals["m_rod_rot"] == pytest.approx(spec.m_rod_rot)
+    assert vals["Kr"] == pytest.approx(spec.Kr)
+    assert vals["mu_P"] == spec.force_scale
+    assert vals["pi"] > 0.5
+    fine = engine.force_table(spec, engine.fine_angles(spec))
+    summ = engine.summarize(fine, spec)
+    rows = {r[0]: r[3:7] for r in ws_sum.iter_rows(min_row=4, max_col=7, values_only=True)
+            if r[0]}
+    for col in ("P_N", "S_N", "N_N", "K_N", "T_N", "M_Nm", "R_N"):
+        assert tuple(rows[col]) == pytest.approx(summ["extremes"][col])
+    for key in ("M_mean_Nm", "R_mean_N", "chi", "p_max_MPa", "pi_MPa"):
+        assert rows[key][0] == pytest.approx(summ[key])
+    assert summ["chi"] == pytest.approx(summ["extremes"]["R_N"][0] / summ["R_mean_N"])
+
+
+def test_plots_exist_and_are_not_empty(run):
+    import matplotlib.image as mpimg
+
+    _, _, out = run
+    for stem in PLOT_NAMES:
+        png = out / f"{stem}.png"
+        img = mpimg.imread(png)
+        assert img.shape[0] > 300 and img.shape[1] > 300
+        assert np.std(img[..., :3]) > 0.05                 # not a blank canvas
+        svg = (out / f"{stem}.svg").read_text()
+        assert "<svg" in svg and svg.count("<path") > 10
+
+
+def test_terminal_summary(tmp_path, capsys):
+    assert run_cli("--example", "-o", tmp_path) == 0
+    text = capsys.readouterr().out
+    for word in ("peak gas pressure", "P max", "T max", "mean torque", "chi", "petrol"):
+        assert word in text
+
+
+def test_step_option_and_spec_path(tmp_path):
+    spec = example_path("diesel_d240.toml")
+    assert run_cli(spec, "-o", tmp_path, "--step", 10, "--lang", "en") == 0
+    df = pd.read_csv(tmp_path / "forces.csv")
+    assert len(df) == 73 + 1          # 0..720 every 10°, plus 375° (370° is on the grid)
+    assert 375 in set(df["alpha_deg"])
+
+
+def test_help_is_fast_and_lazy():
+    code = ("import sys, crankdyn.cmd_engine as m, argparse; "
+            "p = argparse.ArgumentParser(); m.add_parser(p.add_subparsers()); "
+            "print(sorted(x for x in ('numpy', 'pandas', 'matplotlib', 'openpyxl', 'engine')"
+            " if x in sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout.strip()
+    assert out == "[]"
+    r = subprocess.run([sys.executable, "-m", "crankdyn", "engine", "--help"],
+                       capture_output=True, text=True)
+    assert r.returncode == 0 and "--example" in r.stdout and "--lang" in r.stdout
+
+
+# ------------------------------------------------------------------------ bad input
+
+GOOD = """[engine]
+name = "t"
+bore_mm = 110
+stroke_mm = 125
+rod_ratio = 0.27
+speed_rpm = 2000
+[masses]
+reciprocating_kg = 3
+rod_rotating_kg = 1
+[pressure]
+angle_deg = [0, 360, 370]
+p_MPa = [0.1, 6, 7]
+[table]
+force_scale_N_per_mm = 100
+"""
+
+BAD = {
+    "lambda_zero": (GOOD.replace("rod_ratio = 0.27", "rod_ratio = 0"), ["engine.rod_ratio"]),
+    "lambda_one": (GOOD.replace("rod_ratio = 0.27", "rod_ratio = 1"), ["engine.rod_ratio"]),
+    "bore": (GOOD.replace("bore_mm = 110", "bore_mm = 0"), ["engine.bore_mm"]),
+    "stroke": (GOOD.replace("stroke_mm = 125", "stroke_mm = -1"), ["engine.stroke_mm"]),
+    "speed": (GOOD.replace("speed_rpm = 2000", "speed_rpm = 0"), ["engine.speed_rpm"]),
+    "ratio_and_length": (GOOD.replace("rod_ratio = 0.27", "rod_ratio = 0.27\nrod_length_mm = 230"),
+                         ["engine.rod_ratio"]),
+    "no_masses": (GOOD.replace("[masses]\nreciprocating_kg = 3\nrod_rotating_kg = 1\n", ""),
+                  ["masses"]),
+    "no_pressure": (GOOD.replace("angle_deg = [0, 360, 370]\np_MPa = [0.1, 6, 7]\n", ""),
+                    ["pressure"]),
+    "pressure_twice": (GOOD.replace("p_MPa = [0.1, 6, 7]\n", "p_MPa = [0.1, 6, 7]\nfile = 'p.csv'\n"),
+                       ["pressure"]),
+    "csv_no_column": (GOOD.replace("angle_deg = [0, 360, 370]\np_MPa = [0.1, 6, 7]\n",
+                                   "file = 'nocol.csv'\n"), ["pressure.file"]),
+    "csv_missing": (GOOD.replace("angle_deg = [0, 360, 370]\np_MPa = [0.1, 6, 7]\n",
+                                 "file = 'missing.csv'\n"), ["pressure.file"]),
+    "unknown_keys": (GOOD.replace("speed_rpm = 2000", "speed_rpm = 2000\nspeed = 1")
+                     + "[colour]\nx = 1\n", ["engine.speed", "colour"]),
+    "many": (GOOD.replace("bore_mm = 110", "bore_mm = -1").replace("speed_rpm = 2000",
+                                                                  "speed_rpm = -5"),
+             ["engine.bore_mm", "engine.speed_rpm"]),
+    "toml_syntax": ("[engine\n", ["spec.toml"]),
+}
+
+
+@pytest.mark.parametrize("case", list(BAD))
+def test_bad_input_exit_2_nothing_written(case, tmp_path, capsys):
+    text, keys = BAD[case]
+    (tmp_path / "p.csv").write_text("angle_deg,p_MPa\n0,0.1\n360,5\n")
+    (tmp_path / "nocol.csv").write_text("angle_deg,pressure\n0,0.1\n360,5\n")
+    spec = tmp_path / "spec.toml"
+    spec.write_text(text)
+    out = tmp_path / "out"
+    assert run_cli(spec, "-o", out) == 2
+    err = capsys.readouterr().err
+    lines = err.strip().splitlines()
+    assert "Traceback" not in err
+    assert len(lines) == len(keys)
+    for line, key in zip(sorted(lines), sorted(keys)):
+        assert line.startswith("crankdyn engine: error: ")
+        assert key in line
+    assert not out.exists()
+
+
+def test_bad_input_via_subprocess_has_no_traceback(tmp_path):
+    spec = tmp_path / "spec.toml"
+    spec.write_text(GOOD.replace("rod_ratio = 0.27", "rod_ratio = 1.5"))
+    r = subprocess.run([sys.executable, "-m", "crankdyn", "engine", str(spec), "-o",
+                        str(tmp_path / "out")], capture_output=True, text=True)
+    assert r.returncode == 2
+    assert r.stderr.strip().splitlines() == [
+        "crankdyn engine: error: engine.rod_ratio: got 1.5; must be < 1"]
+    assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("argv", [
+    ["--example", "nope"],
+    [],
+    ["--example", "petrol", "--step", "0"],
+    ["--example", "petrol", "--step", "nan"],
+    ["SPEC", "--example", "petrol"],
+])
+def test_bad_arguments(argv, tmp_path, capsys):
+    argv = [str(tmp_path / "x.toml") if a == "SPEC" else a for a in argv]
+    assert run_cli(*argv, "-o", tmp_path / "out") == 2
+    err = capsys.readouterr().err
+    assert err.startswith("crankdyn engine: error: ") and len(err.strip().splitlines()) == 1
+    assert not (tmp_path / "out").exists()
+
+
+def _snapshot(folder):
+    return {p.name: p.read_bytes() for p in sorted(folder.iterdir())}
+
+
+def test_existing_report_survives_bad_input(tmp_path):
+    out = tmp_path / "out"
+    assert run_cli("--example", "diesel", "-o", out) == 0
+    before = _snapshot(out)
+    spec = tmp_path / "spec.toml"
+    spec.write_text(GOOD.replace("name = \"t\"", "name = \"diesel-d240\"")
+                    .replace("bore_mm = 110", "bore_mm = 0"))
+    assert run_cli(spec, "-o", out) == 2
+    assert _snapshot(out) == before
+
+
+def test_existing_report_survives_a_crash_while_saving(tmp_path, monkeypatch):
+    """A failure in the middle of saving the workbook leaves the old workbook whole and
+    no temporary file behind."""
+    out = tmp_path / "out"
+    assert run_cli("--example", "petrol", "-o", out) == 0
+    before = _snapshot(out)
+    import openpyxl.workbook.workbook as wbmod
+
+    def broken_save(self, filename):
+        Path(filename).write_bytes(b"partial")
+        raise OSError("disk full")
+
+    monkeypatch.setattr(wbmod.Workbook, "save", broken_save)
+    with pytest.raises(OSError):
+        run_cli("--example", "petrol", "-o", out, "--lang", "en")
+    after = _snapshot(out)
+    assert after["petrol-vaz2106.xlsx"] == before["petrol-vaz2106.xlsx"]
+    assert set(after) == set(before)
+    load_workbook(out / "petrol-vaz2106.xlsx")     # still a valid workbook
+
+
+def test_output_may_not_overwrite_an_input(tmp_path, capsys):
+    (tmp_path / "forces.csv").write_text("angle_deg,p_MPa\n0,0.1\n360,5\n")
+    spec = tmp_path / "spec.toml"
+    spec.write_text(GOOD.replace("angle_deg = [0, 360, 370]\np_MPa = [0.1, 6, 7]\n",
+                                 "file = 'forces.csv'\n"))
+    before = (tmp_path / "forces.csv").read_text()
+    assert run_cli(spec, "-o", tmp_path) == 2
+    assert "input" in capsys.readouterr().err
+    assert (tmp_path / "forces.csv").read_text() == before
+
+
+def test_name_is_text_not_formula(tmp_path):
+    spec = tmp_path / "spec.toml"
+    spec.write_text(GOOD.replace('name = "t"', 'name = "=1+1"'))
+    assert run_cli(spec, "-o", tmp_path / "o") == 0
+    files = [p.name for p in (tmp_path / "o").iterdir() if p.suffix == ".xlsx"]
+    assert files == ["1_1.xlsx"]
+    wb = load_workbook(tmp_path / "o" / files[0])
+    vals = {r[0]: r[3] for r in wb.worksheets[0].iter_rows(min_row=4, max_col=4,
+                                                           values_only=True) if r[0]}
+    assert vals["name"] == "=1+1"
+    assert wb.worksheets[0].cell(4, 4).data_type == "s"
