@@ -209,11 +209,13 @@ class CrankRocker(_CrankMechanism):
         c_far = (l0 * l0 + l1 * l1 - (l2 + l3) ** 2) / (2 * l0 * l1)   # D = l2 + l3
         return c_near, c_far
 
-    def check_rotatable(self, tol=1e-12):
+    def check_rotatable(self, tol=1e-9):
         """Raise :class:`AssemblyError` unless the crank can turn fully.
 
         The dyad assembles where ``|l2 − l3| ≤ |AC| ≤ l2 + l3``; the crank angles where it
-        does not are reported (closed form).
+        does not are reported (closed form).  A mechanism within ``tol`` (relative, in
+        cos(φ − γ)) of the limit counts as a change-point mechanism and is accepted, the
+        same margin :mod:`linkage.synthesis` uses for its region's boundary.
         """
         c_near, c_far = self._cos_limits()
         gam = self.ground_angle
@@ -230,7 +232,7 @@ class CrankRocker(_CrankMechanism):
         if bad:
             raise AssemblyError(
                 "the crank cannot turn fully (the dyad AB–CB cannot be assembled: "
-                + "; ".join(bad) + f"); Grashof type: {self.grashof().name}", ends)
+                + "; ".join(bad) + f"); Grashof type: {self.grashof()}", ends)
 
     def singular_angles(self, tol=1e-9):
         """Crank angles [rad] where all four joints are collinear (change point)."""
@@ -323,7 +325,7 @@ class CrankSlider(_CrankMechanism):
             return "change-point"
         return "rotatable" if margin > 0 else "non-rotatable"
 
-    def check_rotatable(self, tol=1e-12):
+    def check_rotatable(self, tol=1e-9):
         """Raise :class:`AssemblyError` unless the crank can turn fully
         (|offset − y_A| ≤ L in guide coordinates for every crank angle)."""
         l1, L, e = self.l1, self.l2, self.offset
