@@ -53,14 +53,19 @@ def _alpha_axis(ax, spec, t):
     ax.axhline(0, color="k", lw=0.7)
 
 
-def _new(figsize=(10, 5.6)):
-    return Figure(figsize=figsize, layout="constrained")
+def _new(figsize=(10, 5.6), **margins):
+    """A figure with fixed margins (a layout engine would double the rendering time)."""
+    fig = Figure(figsize=figsize)
+    adjust = dict(left=0.08, right=0.975, bottom=0.1, top=0.92)
+    adjust.update(margins)
+    fig.subplots_adjust(**adjust)
+    return fig
 
 
 def plot_indicator(table, spec, summary=None, lang="ru"):
     """Indicator diagram: p–V (left) and p–α (right) of the table's gas pressure."""
     t = _TXT[lang]
-    fig = _new((11, 5))
+    fig = _new((11, 5), left=0.065, right=0.98, bottom=0.11, top=0.86, wspace=0.2)
     ax1, ax2 = fig.subplots(1, 2)
     p = table["p_gas_MPa"].to_numpy()
     a = table["alpha_deg"].to_numpy()
@@ -159,7 +164,7 @@ def plot_polar(table, spec, summary=None, lang="ru"):
     labels every 30°, Rшш max and min marked.
     """
     t = _TXT[lang]
-    fig = _new((9, 9.5))
+    fig = _new((9, 9.5), left=0.09, right=0.97, bottom=0.08, top=0.93)
     ax = fig.subplots()
     T = table["T_N"].to_numpy() * 1e-3
     K = table["K_N"].to_numpy() * 1e-3
@@ -200,7 +205,7 @@ def plot_polar(table, spec, summary=None, lang="ru"):
     ax.grid(True, lw=0.4, alpha=0.6)
     ax.set_title(f"{t['polar']}: {spec.name}\nKr.ш = {spec.Kr:.0f} "
                  + ("Н" if lang == "ru" else "N") + f";  {t['poles']}", fontsize=11)
-    fig.supxlabel(t["frame"], fontsize=8, color="0.3")
+    fig.text(0.5, 0.012, t["frame"], fontsize=8, color="0.3", ha="center")
     return fig
 
 
