@@ -140,10 +140,6 @@ def sharp_cycle_pressure(alpha_deg, cyc, lam, vr=None):
     return p
 
 
-def _slope(f, a, h=1e-4):
-    return (f(a + h) - f(a - h)) / (2 * h)
-
-
 def _hermite(x, xk, yk, mk):
     """Piecewise cubic Hermite through (xk, yk) with slopes mk, evaluated at x (inside)."""
     xk, yk, mk = (np.asarray(v, float) for v in (xk, yk, mk))
@@ -206,30 +202,32 @@ def cycle_pressure(alpha_deg, cyc, lam, vr=None):
     if not cyc.rounding:
         return p
     eps = cyc.compression_ratio
-
-    def comp(x):
-        return _compression(volume_ratio(x, lam, eps), cyc)
-
-    def expn(x):
-        return _expansion(volume_ratio(x, lam, eps), cyc)
-
+    a0 = 360.0 - cyc.advance_deg                  # c': ignition / injection
+    a2 = 360.0 + cyc.peak_after_tdc_deg           # z_d: the real peak
+    a3 = a2 + JOIN_AFTER_PEAK_DEG                 # back on the expansion line
+    b0 = 540.0 - cyc.exhaust_opening_deg          # b': exhaust valve opens
+    b2 = 540.0 + cyc.exhaust_opening_deg / 2.0    # on the exhaust line pr
+    h = 1e-4
+    # V/Vc at every knot (and ±h for the slopes) in one kinematics pass
+    knots = np.array([a0 - h, a0, a0 + h, a3 - h, a3, a3 + h, b0 - h, b0, b0 + h, 540.0])
+    vk = volume_ratio(knots, lam, eps)
+    pc_k = _compression(vk[:3], cyc)
+    pe_k = _expansion(vk[3:], cyc)
+    slope_c0 = (pc_k[2] - pc_k[0]) / (2 * h)
+    slope_e3 = (pe_k[2] - pe_k[0]) / (2 * h)
+    slope_b0 = (pe_k[5] - pe_k[3]) / (2 * h)
     # combustion: c' -> c'' -> z_d -> expansion line
-    a0 = 360.0 - cyc.advance_deg
-    a2 = 360.0 + cyc.peak_after_tdc_deg
-    a3 = a2 + JOIN_AFTER_PEAK_DEG
     xk = [a0, 360.0, a2, a3]
-    yk = [comp(a0), cyc.pc_factor * cyc.pc, cyc.peak_factor * cyc.pz, expn(a3)]
-    mk = _limited_slopes(xk, yk, (_slope(comp, a0), _slope(expn, a3)))
+    yk = [pc_k[1], cyc.pc_factor * cyc.pc, cyc.peak_factor * cyc.pz, pe_k[1]]
+    mk = _limited_slopes(xk, yk, (slope_c0, slope_e3))
     mk[2] = 0.0
     zone = (a >= a0) & (a <= a3)
     p[zone] = _hermite(a[zone], xk, yk, mk)
     # exhaust blow-down: b' -> b'' -> pr
-    b0 = 540.0 - cyc.exhaust_opening_deg
-    b2 = 540.0 + cyc.exhaust_opening_deg / 2.0
-    pb = expn(540.0)
+    pb = pe_k[6]
     xk = [b0, 540.0, b2]
-    yk = [expn(b0), 0.5 * (pb + cyc.pa), cyc.pr]
-    mk = _limited_slopes(xk, yk, (_slope(expn, b0), 0.0))
+    yk = [pe_k[4], 0.5 * (pb + cyc.pa), cyc.pr]
+    mk = _limited_slopes(xk, yk, (slope_b0, 0.0))
     zone = (a >= b0) & (a <= b2)
     p[zone] = _hermite(a[zone], xk, yk, mk)
     # valve overlap at TDC: pr -> pa (smoothstep across 720/0)
