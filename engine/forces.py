@@ -217,7 +217,7 @@ def force_table(spec, alpha_deg=None):
     f = crank_pin_forces(mech, P, spec.L)
     Kr = np.full_like(P, spec.Kr)
     Kt = f["K"] + Kr
-    cols = dict(alpha_deg=a_deg, p_gas_MPa=p * 1e-6, dPg_N=dPg, Pj_N=Pj, P_N=P,
+    cols = dict(alpha_deg=a_deg, p_gas_MPa=p / 1e6, dPg_N=dPg, Pj_N=Pj, P_N=P,
                 beta_deg=np.degrees(mech.beta), N_N=f["N"], S_N=f["S"], K_N=f["K"],
                 T_N=f["T"], M_Nm=f["M"], Kr_N=Kr, R_N=np.hypot(f["T"], Kt),
                 psi_deg=_psi(f["T"], Kt), x_mm=mech.x * 1e3,
@@ -274,9 +274,9 @@ def summarize(table, spec):
     rmax = out["extremes"]["R_N"][0]
     out["chi"] = rmax / out["R_mean_N"] if out["R_mean_N"] > 0 else float("nan")
     pi = indicated_mean_pressure(spec)
-    out["pi_MPa"] = pi * 1e-6
+    out["pi_MPa"] = pi / 1e6
     out["power_i_kW"] = pi * spec.Vh * spec.speed_rpm / (30.0 * spec.strokes) * 1e-3
     if spec.cycle is not None:
         from .indicator import theoretical_mean_pressure
-        out["pi_theory_MPa"] = theoretical_mean_pressure(spec.cycle) * 1e-6
+        out["pi_theory_MPa"] = theoretical_mean_pressure(spec.cycle) / 1e6
     return out

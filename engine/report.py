@@ -55,7 +55,7 @@ def input_values(spec, summary, lang="ru"):
         "name": spec.name, "strokes": spec.strokes, "cylinders": spec.cylinders,
         "bore_mm": spec.bore * 1e3, "stroke_mm": spec.stroke * 1e3, "R_mm": spec.R * 1e3,
         "L_mm": spec.L * 1e3, "lam": spec.lam, "speed_rpm": spec.speed_rpm,
-        "omega": spec.omega, "v_mean": spec.piston_speed_mean, "p0_MPa": spec.p0 * 1e-6,
+        "omega": spec.omega, "v_mean": spec.piston_speed_mean, "p0_MPa": spec.p0 / 1e6,
         "area_cm2": spec.area * 1e4, "Vh_l": spec.Vh * 1e3,
         "compression_ratio": spec.compression_ratio, "acceleration": accel,
         "mass_input": mass_input, "mj": spec.mj, "m_rod_rot": spec.m_rod_rot,
@@ -65,8 +65,8 @@ def input_values(spec, summary, lang="ru"):
         "pressure_source": src, "pi": summary["pi_MPa"], "power_i": summary["power_i_kW"],
     }
     if cyc is not None:
-        v.update(cycle_kind=cyc.kind, pa=cyc.pa * 1e-6, pr=cyc.pr * 1e-6, n1=cyc.n1,
-                 n2=cyc.n2, pc=cyc.pc * 1e-6, pz=cyc.pz * 1e-6, lambda_z=cyc.lambda_z,
+        v.update(cycle_kind=cyc.kind, pa=cyc.pa / 1e6, pr=cyc.pr / 1e6, n1=cyc.n1,
+                 n2=cyc.n2, pc=cyc.pc / 1e6, pz=cyc.pz / 1e6, lambda_z=cyc.lambda_z,
                  rho=cyc.rho if cyc.kind == "diesel" else None,
                  rounding=(yes if cyc.rounding else no),
                  pi_theory=summary.get("pi_theory_MPa"))

@@ -181,6 +181,15 @@ SUMMARY_VALUES = [
      "Ni", "кВт", "kW", "0.00"),
 ]
 
+SUMMARY_NOTE = {
+    "ru": "Экстремумы и средние значения вычислены по сетке 0,5° (вместе со строками "
+          "таблицы 2), поэтому улавливают пики между строками таблицы; средние – по "
+          "правилу трапеций за цикл. Mкр.ср и Rшш.ср – для одного цилиндра.",
+    "en": "Extremes and means are computed on a 0.5° grid (together with the rows of "
+          "Table 2), so peaks between table rows are caught; means by the trapezoid rule "
+          "over the cycle. Mкр mean and Rшш mean are for one cylinder.",
+}
+
 THIN = Side(style="thin", color="000000")
 BORDER = Border(left=THIN, right=THIN, top=THIN, bottom=THIN)
 HEAD_FILL = PatternFill("solid", fgColor="DDE4EE")
@@ -323,6 +332,12 @@ def build(lang: str, path: Path) -> None:
             c.alignment = LEFT if j == 2 else CENTER
         ws.cell(i, 4).number_format = fmt
         ws.cell(i, 4).alignment = Alignment(horizontal="right")
+    note_row = r0 + len(SUMMARY_VALUES) + 2
+    c = ws.cell(note_row, 2, SUMMARY_NOTE[lang])
+    c.font = note
+    c.alignment = Alignment(wrap_text=True, vertical="top")
+    ws.merge_cells(start_row=note_row, start_column=2, end_row=note_row, end_column=8)
+    ws.row_dimensions[note_row].height = 45
     ws.column_dimensions["A"].hidden = True
     for col, w in zip("BCDEFGH", (44, 20, 13, 13, 13, 13, 9)):
         ws.column_dimensions[col].width = w
