@@ -135,6 +135,12 @@ def build_workbook(table, summary, spec, lang="ru"):
         if key is None:
             continue
         _put(row[3], _text(values.get(key)))
+        if isinstance(row[3].value, str):
+            # long text wraps: give the row the height of its lines
+            width = ws_in.column_dimensions["D"].width or 10
+            lines = math.ceil(len(row[3].value) * 1.1 / width)
+            if lines > 1:
+                ws_in.row_dimensions[row[3].row].height = 15 * lines
 
     # Table 2
     mu = spec.force_scale
@@ -200,6 +206,7 @@ def build_workbook(table, summary, spec, lang="ru"):
         ch.x_axis.scaling.min = 0
         ch.x_axis.scaling.max = spec.cycle_deg
         ch.x_axis.majorUnit = 90 if spec.cycle_deg > 360 else 30
+        ch.x_axis.tickLblPos = "low"        # α labels below the plot, not on y = 0
         ch.x_axis.delete = False
         ch.y_axis.delete = False
         ch.legend.position = "b"
@@ -210,8 +217,8 @@ def build_workbook(table, summary, spec, lang="ru"):
             s.marker.symbol = "none"
             s.smooth = False
             ch.series.append(s)
-        ch.width, ch.height = 24, 9
-        ws_ch.add_chart(ch, f"A{3 + 19 * k}")
+        ch.width, ch.height = 18, 8.5
+        ws_ch.add_chart(ch, f"A{3 + 18 * k}")
     return wb
 
 

@@ -203,6 +203,15 @@ def _fonts(lang):
             Font(name=family, size=13, bold=True), Font(name=family, size=10, italic=True))
 
 
+def _fit_width(ws, orientation):
+    """A4, one page wide, as many pages tall as needed."""
+    ws.page_setup.paperSize = ws.PAPERSIZE_A4
+    ws.page_setup.orientation = orientation
+    ws.sheet_properties.pageSetUpPr.fitToPage = True
+    ws.page_setup.fitToWidth = 1
+    ws.page_setup.fitToHeight = 0
+
+
 def build(lang: str, path: Path) -> None:
     body, bold, title, note = _fonts(lang)
     L = 0 if lang == "ru" else 1
@@ -242,9 +251,10 @@ def build(lang: str, path: Path) -> None:
         ws.merge_cells(start_row=r + k, start_column=2, end_row=r + k, end_column=5)
         ws.row_dimensions[r + k].height = 15 if k == 0 else 30
     ws.column_dimensions["A"].hidden = True
-    for col, w in zip("BCDE", (52, 22, 22, 10)):
+    for col, w in zip("BCDE", (50, 20, 40, 10)):
         ws.column_dimensions[col].width = w
     ws.freeze_panes = "B4"
+    _fit_width(ws, "portrait")
 
     # ---------------------------------------------------------------- Table 2
     ws = ws_t2
@@ -288,10 +298,7 @@ def build(lang: str, path: Path) -> None:
     ws.column_dimensions[get_column_letter(ncol)].width = 8
     ws.freeze_panes = "B5"
     ws.print_title_rows = "3:4"
-    ws.page_setup.orientation = "landscape"
-    ws.page_setup.fitToWidth = 1
-    ws.sheet_properties.pageSetUpPr.fitToPage = True
-    ws.page_setup.fitToHeight = 0
+    _fit_width(ws, "landscape")
 
     # ---------------------------------------------------------------- Summary
     ws = ws_sum
@@ -341,6 +348,7 @@ def build(lang: str, path: Path) -> None:
     ws.column_dimensions["A"].hidden = True
     for col, w in zip("BCDEFGH", (44, 20, 13, 13, 13, 13, 9)):
         ws.column_dimensions[col].width = w
+    _fit_width(ws, "landscape")
 
     # ---------------------------------------------------------------- Data
     ws = ws_data
@@ -355,12 +363,15 @@ def build(lang: str, path: Path) -> None:
         d.number_format = "0.000"
         ws.column_dimensions[get_column_letter(cc)].width = 12
     ws.freeze_panes = "B4"
+    ws.print_title_rows = "3:3"
+    _fit_width(ws, "landscape")
 
     # ---------------------------------------------------------------- Charts
     ws_ch["A1"] = ("Графики сил по углу поворота кривошипа (по данным листа «Таблица 2»)"
                    if lang == "ru" else
                    "Forces over the crank angle (from the sheet 'Table 2')")
     ws_ch["A1"].font = title
+    _fit_width(ws_ch, "portrait")
 
     wb.properties.title = TITLE[lang][1]
     wb.properties.creator = "crankdyn"
