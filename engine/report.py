@@ -16,7 +16,7 @@ import math
 
 import numpy as np
 
-from .forces import COLUMNS, SUMMARY_QUANTITIES
+from .forces import COLUMNS
 
 __all__ = ["build_workbook", "save_workbook", "input_values", "TABLE2_FORCES", "LANGS"]
 

@@ -379,7 +379,8 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
     mu = c.number(t, "force_scale_N_per_mm", "table", gt=0,
                   what="the force scale μP [N/mm]")
 
-    c.problems = [q if isinstance(q, Problem) else Problem("", str(q)) for q in c.problems]
+    if cycle is not None and cycle.rounding and not c.problems:
+        _check_rounded_peak(c, cycle, lam if lam is not None else stroke / 2.0 / L_mm)
     if c.problems:
         raise EngineSpecError(c.problems)
 
@@ -526,6 +527,31 @@ def read_pressure_csv(path, cycle_deg, checker=None):
     if checker is None:
         c.raise_if_any()
     return angle, p
+
+
+def _check_rounded_peak(c, cyc, lam):
+    """The real (rounded) diagram lies inside the theoretical one: its peak
+    peak_factor·pz must not rise above the expansion line at the peak angle, and must be
+    the maximum (the line where the rounding rejoins it must be lower)."""
+    from .indicator import sharp_cycle_pressure
+
+    a = 360.0 + cyc.peak_after_tdc_deg
+    line = float(sharp_cycle_pressure([a], cyc, lam)[0])
+    peak = cyc.peak_factor * cyc.pz
+    if peak > line:
+        c.add("pressure.cycle.peak_factor",
+              f"the rounded peak peak_factor·pz = {peak / 1e6:.4g} MPa at {a:g}° lies above "
+              f"the expansion line there ({line / 1e6:.4g} MPa); lower peak_factor or "
+              f"peak_after_tdc_deg")
+        return
+    join = a + JOIN_AFTER_PEAK_DEG
+    after = float(sharp_cycle_pressure([join], cyc, lam)[0])
+    if after >= peak:
+        c.add("pressure.cycle.peak_factor",
+              f"the expansion line at {join:g}° ({after / 1e6:.4g} MPa), where the rounded "
+              f"curve rejoins it, is not below the rounded peak ({peak / 1e6:.4g} MPa): the "
+              f"isobaric part (ρ) is too long for the rounding; raise peak_factor or "
+              f"peak_after_tdc_deg")
 
 
 def _cycle(c, cy, strokes):

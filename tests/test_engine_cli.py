@@ -2,8 +2,6 @@
 workbook read back with openpyxl equals the CSV; mm columns = N ÷ μP; every plot exists
 and is not empty; bad input exits 2 with one line per problem and writes nothing; an
 existing report is replaced only by a complete new one."""
-import math
-import os
 import subprocess
 import sys
 from pathlib import Path
@@ -211,8 +209,8 @@ BAD = {
                   ["masses"]),
     "no_pressure": (GOOD.replace("angle_deg = [0, 360, 370]\np_MPa = [0.1, 6, 7]\n", ""),
                     ["pressure"]),
-    "pressure_twice": (GOOD.replace("p_MPa = [0.1, 6, 7]\n", "p_MPa = [0.1, 6, 7]\nfile = 'p.csv'\n"),
-                       ["pressure"]),
+    "pressure_twice": (GOOD.replace("p_MPa = [0.1, 6, 7]\n",
+                                    "p_MPa = [0.1, 6, 7]\nfile = 'p.csv'\n"), ["pressure"]),
     "csv_no_column": (GOOD.replace("angle_deg = [0, 360, 370]\np_MPa = [0.1, 6, 7]\n",
                                    "file = 'nocol.csv'\n"), ["pressure.file"]),
     "csv_missing": (GOOD.replace("angle_deg = [0, 360, 370]\np_MPa = [0.1, 6, 7]\n",
@@ -329,3 +327,15 @@ def test_name_is_text_not_formula(tmp_path):
                                                            values_only=True) if r[0]}
     assert vals["name"] == "=1+1"
     assert wb.worksheets[0].cell(4, 4).data_type == "s"
+
+
+def test_two_stroke_engine_end_to_end(tmp_path):
+    spec = tmp_path / "two.toml"
+    spec.write_text(GOOD.replace("name = \"t\"", "name = \"two-stroke\"\nstrokes = 2")
+                    .replace("angle_deg = [0, 360, 370]\np_MPa = [0.1, 6, 7]",
+                             "angle_deg = [0, 10, 120, 180, 240, 350]\n"
+                             "p_MPa = [5.5, 6.0, 0.5, 0.1, 0.3, 2.5]"))
+    assert run_cli(spec, "-o", tmp_path / "o", "--step", 15) == 0
+    df = pd.read_csv(tmp_path / "o" / "forces.csv")
+    assert df["alpha_deg"].iloc[-1] == 360 and len(df) == 25
+    assert (tmp_path / "o" / "polar_Rshsh.png").stat().st_size > 10000
