@@ -70,6 +70,10 @@ def input_values(spec, summary, lang="ru"):
                  rho=cyc.rho if cyc.kind == "diesel" else None,
                  rounding=(yes if cyc.rounding else no),
                  pi_theory=summary.get("pi_theory_MPa"))
+        if cyc.rounding:
+            v.update({k: getattr(cyc, k) for k in (
+                "advance_deg", "pc_factor", "peak_factor", "peak_after_tdc_deg",
+                "exhaust_opening_deg", "intake_opening_deg", "exhaust_closing_deg")})
     return v
 
 
