@@ -29,7 +29,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from linkage.groups import dot, driver_reactions, link_wrench, rrp_reactions
+from linkage.groups import Wrench, dot, driver_reactions, link_wrench, rrp_reactions
 
 from .indicator import gas_pressure, indicated_mean_pressure
 from .kinematics import GUIDE_ANGLE, CrankSlider, crank_slider
@@ -162,13 +162,15 @@ def crank_pin_forces(mech: CrankSlider, P, L):
     sol = mech.dyad
     u = np.exp(1j * GUIDE_ANGLE)
     zB = sol.B.z
-    W3 = link_wrench(sol.link3)
+    zero = np.zeros(zB.shape)
+    W3 = Wrench(zero + 0j, zero, zB)               # massless rod without loads
     W4 = link_wrench(sol.link4, forces=[(-np.asarray(P, float) * u, zB)])
     reac = rrp_reactions(sol, L, W3, W4)
     S32 = -reac.RA
     e2 = mech.crank.e
     A = sol.link3.origin.z
-    drv = driver_reactions(mech.crank, A, S32, link_wrench(mech.crank))
+    W2 = Wrench(zero + 0j, zero, mech.crank.origin.z)   # massless crank
+    drv = driver_reactions(mech.crank, A, S32, W2)
     return dict(S32=S32, S=dot(S32, -sol.link3.e), K=dot(S32, -e2), T=dot(S32, 1j * e2),
                 N=reac.RG_n, M=-drv.M_drive, reactions=reac)
 
