@@ -282,7 +282,6 @@ class _Kernel:
                        for p, (lname, local) in pts.items() if p not in ("A", "B")]
         self.rowsA, self.rowsB = six("A"), six("B")
         self.rowsS = {lname: six(f"S{LINK_NUMBER[lname]}") for lname in spec.link_names}
-        self.cg = {lname: spec.links[lname].cg for lname in spec.link_names}
         self.deg = _c(180.0 / math.pi)
         self.omega, self.epsilon = float(spec.omega), float(spec.epsilon)
         self.px, self.py = mech.pivot.real, mech.pivot.imag
@@ -319,9 +318,9 @@ class _Kernel:
             self.ux, self.uy = mech.u.real, mech.u.imag
             self.gx, self.gy = mech.pivot.real, mech.pivot.imag
         self.size = size
-        self._names = ("c", "s", "t1", "t2", "t3", "t4", "dx", "dy", "D", "p", "h",
+        self._names = ("c", "s", "t1", "t2", "dx", "dy", "D", "p", "h",
                        "r3x", "r3y", "r4x", "r4y", "det", "w3sq", "w4sq", "dax", "day",
-                       "e3x", "e3y", "e4x", "e4y", "ce", "th4", "res", "F2x", "F2y", "M2",
+                       "e3x", "e3y", "e4x", "e4y", "ce", "th4", "F2x", "F2y", "M2",
                        "F3x", "F3y", "M3", "F4x", "F4y", "M4", "te3x", "te3y", "te4x",
                        "te4y", "Gx", "Gy", "px", "py", "B1", "B2", "B3")
         self._names += tuple(f"val{j}" for j in range(len(self.resistances)))
@@ -435,7 +434,7 @@ class _Kernel:
         _div(1.0, D, out=D)                                          # 1/D: d/D = d·(1/D)
         _mul(dx, D, out=dx)
         _mul(dy, D, out=dy)                                          # (dx, dy) = d/D now
-        # B = A + (p·ex − ah·ey, p·ey + ah·ex),  ah = asm·h
+        # B = A + (p·dx − ah·dy, p·dy + ah·dx),  ah = asm·h
         _mul(p, dx, out=Bx); _mul(h, dy, out=t1)
         _mul(p, dy, out=By); _mul(h, dx, out=t2)
         if m.assembly > 0:
