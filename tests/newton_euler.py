@@ -339,10 +339,12 @@ class Model:
         if self.kind == "crank-rocker":
             col.update({"theta4_deg": np.degrees(c4.theta), "omega4_rad_s": c4.omega,
                         "eps4_rad_s2": c4.eps})
-            mu = np.arccos(np.abs(np.cos(c3.theta - c4.theta)))
+            d = c3.theta - c4.theta  # acute angle between the lines of AB and CB
+            mu = np.arctan2(np.abs(np.sin(d)), np.abs(np.cos(d)))
         else:
             col.update({"s4_m": extra["s"], "v4_m_s": extra["v"], "a4_m_s2": extra["a"]})
-            mu = np.pi / 2 - np.arccos(np.abs(np.cos(c3.theta - self.gamma)))
+            d = c3.theta - self.gamma  # 90° minus the acute angle rod-guide
+            mu = np.arctan2(np.abs(np.cos(d)), np.abs(np.sin(d)))
         col["mu_deg"] = np.degrees(mu)
         pts = {"A": ("crank", complex(self.l1, 0)), "B": ("coupler", complex(self.l2, 0))}
         for k in names:
