@@ -78,17 +78,12 @@ def input_values(spec, summary, lang="ru"):
 
 
 def _put(cell, value):
-    """Store ``value`` in ``cell``; a float keeps every bit.
-
-    openpyxl writes numbers with ``"%.16g"``, which can lose the last bit of a double;
-    the shortest round-trip form ``repr`` is stored instead, still as a numeric cell
-    (data type "n"), so Excel and openpyxl read back exactly the computed number.
-    """
+    """Store ``value`` in ``cell``; a string always as text, never as a formula (a name
+    may start with "=").  Floats keep every bit when the workbook is saved by
+    :func:`save_workbook` (:func:`crankdyn.io.full_precision_xlsx`)."""
     cell.value = value
-    if isinstance(value, float) and cell.data_type == "n":
-        cell._value = repr(value)
-    elif isinstance(value, str):
-        cell.data_type = "s"      # text, never a formula (a name may start with "=")
+    if isinstance(value, str):
+        cell.data_type = "s"
 
 
 def _copy_style(src, dst):
@@ -228,7 +223,7 @@ def build_workbook(table, summary, spec, lang="ru"):
 
 def save_workbook(wb, path):
     """Save a workbook atomically (temporary file in the target folder, then rename)."""
-    from crankdyn.io import atomic_path
+    from crankdyn.io import atomic_path, full_precision_xlsx
 
-    with atomic_path(path) as tmp:
+    with atomic_path(path) as tmp, full_precision_xlsx():
         wb.save(tmp)
