@@ -860,7 +860,7 @@ def _table(spec, phi, mech, ext, positions):
 def _summary(spec, mech, ext):
     """Cycle geometry: Grashof type, extremes, swing/stroke, K, μmin over a full turn."""
     s = {"kind": spec.kind, "name": spec.name,
-         "grashof": mech.grashof() if spec.kind == "crank-slider" else mech.grashof().name}
+         "grashof": str(mech.grashof())}
     rot = 1 if spec.omega > 0 else -1
     if ext is not None:
         ek = mech.kinematics(np.array([ext.phi_start, ext.phi_end]), spec.omega, 0.0)

@@ -102,17 +102,12 @@ class Checker:
         if integer and value != int(value):
             self.add(full, f"must be a whole number, got {value!r}")
             return default
-        bounds = []
-        if gt is not None and not value > gt:
-            bounds.append(f"> {gt:g}")
-        if ge is not None and not value >= ge:
-            bounds.append(f">= {ge:g}")
-        if lt is not None and not value < lt:
-            bounds.append(f"< {lt:g}")
-        if le is not None and not value <= le:
-            bounds.append(f"<= {le:g}")
-        if bounds:
-            self.add(full, f"got {value:g}; must be {' and '.join(bounds)}")
+        checks = [(gt, ">", lambda b: value > b), (ge, ">=", lambda b: value >= b),
+                  (lt, "<", lambda b: value < b), (le, "<=", lambda b: value <= b)]
+        given = [(b, op, ok) for b, op, ok in checks if b is not None]
+        if not all(ok(b) for b, _, ok in given):
+            valid = " and ".join(f"{op} {b:g}" for b, op, _ in given)
+            self.add(full, f"got {value:g}; must be {valid}")
             return default
         return int(value) if integer else value
 
