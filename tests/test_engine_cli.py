@@ -250,7 +250,7 @@ def test_bad_input_via_subprocess_has_no_traceback(tmp_path):
                         str(tmp_path / "out")], capture_output=True, text=True)
     assert r.returncode == 2
     assert r.stderr.strip().splitlines() == [
-        "crankdyn engine: error: engine.rod_ratio: got 1.5; must be < 1"]
+        "crankdyn engine: error: engine.rod_ratio: got 1.5; must be > 0 and < 1"]
     assert not (tmp_path / "out").exists()
 
 
