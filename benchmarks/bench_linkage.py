@@ -5,7 +5,7 @@ positions, on one core, beside pylinkage.
 
 Times (best of several repeats, ``time.perf_counter``, BLAS/OpenMP pinned to one thread):
 
-* kernel: the vectorised kernel ``analyze`` runs (:class:`linkage.analysis._Kernel`, in
+* kernel: the vectorised kernel ``analyze`` runs (:class:`linkage.kernel.Kernel`, in
   cache-sized chunks of ``linkage.analysis.CHUNK`` positions) into preallocated column
   blocks: every kinematics and force column of the ratchet example (crank-rocker with
   masses, inertias, an extra point and a stroke-limited resistance);
@@ -62,6 +62,7 @@ def core_timings(example, n, repeat):
     """Kernel, reference and analyze on one bundled example; returns {label: seconds}."""
     import linkage
     from linkage import analysis as an
+    from linkage import kernel as kernel_mod
     from crankdyn.resources import example_path
 
     spec = linkage.load_spec(example_path(example))
@@ -73,10 +74,10 @@ def core_timings(example, n, repeat):
     nk = len(an.kinematics_columns(spec)) - 1
     nf = len(an.force_columns(spec)) - 1
     kblock, fblock = np.empty((nk, n)), np.empty((nf, n))
-    kernel = an._Kernel(spec, mech, ext, min(n, an.CHUNK))
+    kernel = kernel_mod.Kernel(spec, mech, ext, min(n, an.CHUNK))
 
     def run_kernel():
-        an._fill_blocks(kernel, phi, kblock, fblock)
+        kernel_mod.fill_blocks(kernel, phi, kblock, fblock)
 
     n_ref = min(n, 200_000)
     kref = {c: np.empty(n_ref) for c in an.kinematics_columns(spec) if c != "position"}
@@ -194,13 +195,14 @@ def main(argv=None):
     n = args.positions
 
     from linkage import analysis as an
+    from linkage import kernel as kernel_mod
     print(f"Python {platform.python_version()}, numpy {np.__version__}, "
           f"{os.cpu_count()} CPU(s) available, one thread used; CHUNK = {an.CHUNK}")
     rows = []
     spec, phi, res, rocker = core_timings("ratchet.toml", n, args.repeat)
     _, _, _, slider = core_timings("press.toml", n, args.repeat)
     for mech, timings in (("crank-rocker (ratchet)", rocker), ("crank-slider (press)", slider)):
-        for key, what in (("kernel", "kernel (_Kernel), kinematics + forces"),
+        for key, what in (("kernel", "kernel (linkage.kernel), kinematics + forces"),
                           ("reference", "reference (solve_columns, group routines)"),
                           ("analyze", "linkage.analyze incl. DataFrames")):
             npos, t = timings[key]
