@@ -32,7 +32,7 @@ import numpy as np
 from linkage.groups import Wrench, dot, driver_reactions, link_wrench, rrp_reactions
 
 from .indicator import gas_pressure, indicated_mean_pressure
-from .kinematics import GUIDE_ANGLE, CrankSlider, crank_slider
+from .kinematics import GUIDE_ANGLE, PistonKinematics, crank_slider
 
 __all__ = ["COLUMNS", "table_angles", "fine_angles", "gas_force", "two_term_acceleration",
            "inertia_force", "crank_pin_forces", "force_table", "summarize",
@@ -127,12 +127,12 @@ def inertia_force(mj, j):
     return -mj * np.asarray(j, float)
 
 
-def crank_pin_forces(mech: CrankSlider, P, L):
+def crank_pin_forces(mech: PistonKinematics, P, L):
     """Rod force on the crank pin and side force from the RRP dyad's kinetostatics.
 
     Parameters
     ----------
-    mech : CrankSlider
+    mech : PistonKinematics
         Kinematics (:func:`engine.kinematics.crank_slider`).
     P : array_like
         Total piston force ΔPг + Pj, + towards the crank axis, applied to a massless

@@ -19,15 +19,15 @@ import numpy as np
 
 from linkage.groups import LinkMotion, RRPSolution, crank, rrp
 
-__all__ = ["CrankSlider", "crank_slider", "GUIDE_ANGLE"]
+__all__ = ["PistonKinematics", "crank_slider", "GUIDE_ANGLE"]
 
 #: Direction of the cylinder axis (guide) in the linkage frame: +y, towards TDC. [rad]
 GUIDE_ANGLE = np.pi / 2
 
 
 @dataclass
-class CrankSlider:
-    """Kinematics of the engine crank-slider over an array of crank angles.
+class PistonKinematics:
+    """Kinematics of the engine crank-slider (piston, rod, crank) over an array of crank angles.
 
     Attributes
     ----------
@@ -57,7 +57,7 @@ class CrankSlider:
     beta: np.ndarray
 
 
-def crank_slider(alpha, R, L, omega) -> CrankSlider:
+def crank_slider(alpha, R, L, omega) -> PistonKinematics:
     """Kinematics of the central crank-slider by the Assur groups I(1,2) → II(3,4).
 
     Parameters
@@ -73,7 +73,7 @@ def crank_slider(alpha, R, L, omega) -> CrankSlider:
 
     Returns
     -------
-    CrankSlider
+    PistonKinematics
 
     Notes
     -----
@@ -91,4 +91,4 @@ def crank_slider(alpha, R, L, omega) -> CrankSlider:
     sol = rrp(A, L, 0j, GUIDE_ANGLE, 0.0, +1)
     u = np.exp(1j * GUIDE_ANGLE)
     beta = -np.angle(sol.link3.e * np.conj(u))
-    return CrankSlider(alpha, link2, sol, R + L - sol.s, -sol.v, -sol.a, beta)
+    return PistonKinematics(alpha, link2, sol, R + L - sol.s, -sol.v, -sol.a, beta)
