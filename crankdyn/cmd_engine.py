@@ -4,7 +4,8 @@
     crankdyn engine --example [NAME] -o DIR
 
 Writes ``DIR/forces.csv``, ``DIR/<name>.xlsx`` and the plots (PNG and SVG) after
-everything has been validated and computed; bad input writes nothing.  Heavy libraries
+everything has been validated and computed, all at once through a staging folder; bad
+input writes nothing.  Heavy libraries
 are imported inside :func:`run` only, so ``crankdyn --help`` stays fast.
 """
 from __future__ import annotations
@@ -72,7 +73,7 @@ def run(args) -> int:
     from engine.plots import PLOT_NAMES, all_figures, save_figure
     from engine.report import build_workbook, save_workbook
 
-    from .io import check_not_input, ensure_finite, write_csv
+    from .io import check_not_input, ensure_finite, staged_output, write_csv
 
     # 1. validate and compute everything
     spec = engine.load_spec(spec_path)
@@ -92,12 +93,12 @@ def run(args) -> int:
     wb = build_workbook(table, summary, spec, args.lang)
     figs = all_figures(fine, spec, summary, args.lang)
 
-    # 2. write (each file atomically)
-    out.mkdir(parents=True, exist_ok=True)
-    write_csv(table, csv_path)
-    save_workbook(wb, xlsx_path)
-    for stem in stems:
-        save_figure(figs[stem.name], stem)
+    # 2. write: every file into a staging folder, moved into DIR only when all are done
+    with staged_output(out, inputs=[spec_path, spec.pressure_file]) as stage:
+        write_csv(table, stage / csv_path.name)
+        save_workbook(wb, stage / xlsx_path.name)
+        for stem in stems:
+            save_figure(figs[stem.name], stage / stem.name)
 
     # 3. terminal summary
     ext = summary["extremes"]
