@@ -149,6 +149,13 @@ class _CrankMechanism:
     def _working_sign(self, working):
         return {"ccw": 1, "cw": -1, "away": self.assembly, "toward": -self.assembly}[working]
 
+    def _collinear_extreme(self, candidates, folded):
+        """The crank angle (a list of at most one) at which the crank pin lies on the line
+        O→B for one of the candidate pin positions B (extended) or opposite it (folded),
+        confirmed against the dyad's assembly branch."""
+        phis = [np.angle(b - self.pivot) + (math.pi if folded else 0.0) for b in candidates]
+        return self._confirm(phis, candidates)[:1]
+
     def _confirm(self, phis, targets):
         """Keep the candidate crank angles whose assembled B equals the target B."""
         phis = np.asarray(phis, float)
@@ -258,9 +265,7 @@ class CrankRocker(_CrankMechanism):
                 return []  # the rocker turns fully: no extreme positions
             ed = (self.zC - self.pivot) / D
             cands = [self.pivot + (p + 1j * s * math.sqrt(h2)) * ed for s in (1, -1)]
-            phis = [np.angle(b - self.pivot) + (math.pi if folded else 0.0) for b in cands]
-            good = self._confirm(phis, cands)
-            out.extend(good[:1])
+            out.extend(self._collinear_extreme(cands, folded))
         return out
 
     def _output_rate(self, kin, second=False):
@@ -365,9 +370,7 @@ class CrankSlider(_CrankMechanism):
                 continue  # (d = |offset|: a change point, the extreme is the dead position)
             x = math.sqrt(max(d * d - self.offset ** 2, 0.0))
             cands = [self.pivot + (s * x + 1j * self.offset) * self.u for s in (1, -1)]
-            phis = [np.angle(b - self.pivot) + (math.pi if folded else 0.0) for b in cands]
-            good = self._confirm(phis, cands)
-            out.extend(good[:1])
+            out.extend(self._collinear_extreme(cands, folded))
         return out
 
     def _output_rate(self, kin, second=False):
