@@ -9,8 +9,10 @@ project); each assertion cites the original beside it.  What was found:
   ``r·ω²·(cos θ + cos 2θ / n)``; the core uses the exact one.  Where that matters, the
   test puts the book's inertia force back (difference computed from the two formulas)
   and then compares at the printed precision;
-* Marghitu's R-RRT slider-crank (full rigid-body kinetostatics): printed kinematics and
-  intermediate equations; its printed joint forces were not retrievable;
+* Marghitu's R-RRT slider-crank (full rigid-body kinetostatics): printed kinematics,
+  intermediate equations and the printed rod-pin force F12 (his book, p. 144); the other
+  joint forces and the driver moment were not retrievable (checked against an
+  independent solution, labelled as such);
 * no four-bar force analysis with printed results could be read (Norton Ex. 11-3 data
   not retrievable; Rattan Ex. 13.1 solved graphically, answer not retrieved).  For the
   four-bar: the published transmission-angle design example of seed 004 (Sereda 2016),
@@ -210,8 +212,20 @@ def test_marghitu_r_rrt_printed_kinematics():
     assert k["S3_ay_m_s2"] == pytest.approx(-s / 4, rel=1e-12)
 
 
+def test_marghitu_r_rrt_printed_rod_pin_force():
+    """D. B. Marghitu, *Mechanisms and Robots Analysis with MATLAB*, Springer 2009, p. 144,
+    eqs. (4.51)–(4.52) (the same R-RRT example, solved link by link): the force of the
+    crank (his link 1) on the rod (his link 2) at B is printed in closed form,
+    F12 = (−(400 + 7√2)/4, 5(84 + √2)/4) N ≈ (−102.4749, 106.7678) N.  In crankdyn's
+    numbering that is R23, the crank's force on the rod at A."""
+    _, f = marghitu()
+    s = math.sqrt(2.0)
+    assert f["R23_x_N"] == pytest.approx(-(400 + 7 * s) / 4, rel=1e-6)   # eq. (4.51)
+    assert f["R23_y_N"] == pytest.approx(5 * (84 + s) / 4, rel=1e-6)     # eq. (4.52)
+
+
 def test_marghitu_r_rrt_forces_self_computed():
-    """The printed joint forces were not retrievable; these are the research helper's own
+    """The other printed joint forces were not retrievable; these are the research helper's own
     exact solution (sympy, moments about each centre of mass; notes B1): a third,
     independent implementation, not a published number."""
     _, f = marghitu()
