@@ -9,9 +9,10 @@ absolute crank angle.
 """
 from __future__ import annotations
 
-import math
 
 import numpy as np
+
+from .analysis import build_mechanism
 
 __all__ = ["plan_figure", "velocity_figure", "acceleration_figure", "moment_figure",
            "transmission_figure", "all_figures"]
@@ -159,7 +160,8 @@ def plan_figure(result, full):
     ax = fig.add_subplot()
     k = result.kinematics
     fk = full.kinematics
-    zO = 0j
+    mech = build_mechanism(spec)   # pivot positions and guide direction of the model
+    zO = mech.pivot
     ax.add_patch(_circle(zO, spec.crank))
     extras = [n for ls in spec.links.values() for n in ls.points]
     for name in ["B"] + extras:
@@ -167,10 +169,10 @@ def plan_figure(result, full):
                 color="C2" if name == "B" else "C4",
                 label=f"path of {name}")
     if spec.kind == "crank-rocker":
-        zC = spec.ground * complex(math.cos(spec.ground_angle), math.sin(spec.ground_angle))
+        zC = mech.zC
     else:
         zC = None
-        u = complex(math.cos(spec.ground_angle), math.sin(spec.ground_angle))
+        u = mech.u
         s4 = fk["s4_m"].to_numpy()
         lo, hi = np.nanmin(s4) - 0.15 * spec.coupler, np.nanmax(s4) + 0.15 * spec.coupler
         g0 = (lo + 1j * spec.offset) * u

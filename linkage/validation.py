@@ -82,15 +82,21 @@ class Checker:
                 self.add(_join(path, key),
                          f"unknown key; valid keys here: {', '.join(allowed)}")
 
+    def _lookup(self, data, key, path, required, wanted):
+        """``(full key path, value)``; value is ``_MISSING`` when absent (a problem is
+        recorded if the key is required, naming what is ``wanted``)."""
+        full = _join(path, key)
+        value = data.get(key, _MISSING) if isinstance(data, dict) else _MISSING
+        if value is _MISSING and required:
+            self.add(full, f"missing; {wanted} is required")
+        return full, value
+
     # -- scalars
     def number(self, data, key, path="", *, required=True, default=None,
                gt=None, ge=None, lt=None, le=None, integer=False, what=""):
         """A finite real number within the given bounds."""
-        full = _join(path, key)
-        value = data.get(key, _MISSING) if isinstance(data, dict) else _MISSING
+        full, value = self._lookup(data, key, path, required, what or "a number")
         if value is _MISSING:
-            if required:
-                self.add(full, f"missing; {what or 'a number'} is required")
             return default
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             self.add(full, f"must be a number, got {value!r}")
@@ -113,11 +119,9 @@ class Checker:
 
     def choice(self, data, key, choices, path="", *, required=True, default=None):
         """One of a fixed set of values."""
-        full = _join(path, key)
-        value = data.get(key, _MISSING) if isinstance(data, dict) else _MISSING
+        full, value = self._lookup(data, key, path, required,
+                                   f"one of {', '.join(map(repr, choices))}")
         if value is _MISSING:
-            if required:
-                self.add(full, f"missing; one of {', '.join(map(repr, choices))} is required")
             return default
         bool_mismatch = isinstance(value, bool) and not any(isinstance(c, bool) for c in choices)
         if bool_mismatch or value not in choices:
@@ -126,11 +130,8 @@ class Checker:
         return value
 
     def string(self, data, key, path="", *, required=True, default=None):
-        full = _join(path, key)
-        value = data.get(key, _MISSING) if isinstance(data, dict) else _MISSING
+        full, value = self._lookup(data, key, path, required, "a string")
         if value is _MISSING:
-            if required:
-                self.add(full, "missing; a string is required")
             return default
         if not isinstance(value, str):
             self.add(full, f"must be a string, got {value!r}")
@@ -140,11 +141,8 @@ class Checker:
     def numbers(self, data, key, path="", *, required=True, default=None, length=None,
                 min_length=None, gt=None, ge=None):
         """A list of finite numbers (fixed ``length`` if given)."""
-        full = _join(path, key)
-        value = data.get(key, _MISSING) if isinstance(data, dict) else _MISSING
+        full, value = self._lookup(data, key, path, required, "a list of numbers")
         if value is _MISSING:
-            if required:
-                self.add(full, "missing; a list of numbers is required")
             return default
         if not isinstance(value, (list, tuple)):
             self.add(full, f"must be a list of numbers, got {value!r}")
