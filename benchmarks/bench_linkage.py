@@ -8,11 +8,14 @@ Times (best of several repeats, ``time.perf_counter``, BLAS/OpenMP pinned to one
 * kernel: the vectorised kernel ``analyze`` runs (:class:`linkage.kernel.Kernel`, in
   cache-sized chunks of ``linkage.analysis.CHUNK`` positions) into preallocated column
   blocks: every kinematics and force column of the ratchet example (crank-rocker with
-  masses, inertias, an extra point and a stroke-limited resistance);
-* reference: the same columns through ``solve_columns`` (the group routines of
+  masses, inertias, an extra point and a stroke-limited resistance) -- the issue's
+  "kinematics plus forces" (``course_tables=False``), and again with the course tables'
+  magnitudes and inertia loads (:mod:`linkage.derived`, the default of ``analyze``);
+* reference: all columns through ``solve_columns`` (the group routines of
   :mod:`linkage.groups`, complex arrays), for comparison;
 * analyze: the public ``linkage.analyze(spec, crank_angles_deg=...)``, including the
-  extremes, the summary and the two pandas DataFrames (fresh memory every call);
+  extremes, the summary and the two pandas DataFrames (fresh memory every call), with
+  ``course_tables=False`` and with the default;
 * the same kernel and ``analyze`` for the bundled crank-slider (the press example);
 * pylinkage (optional: ``pip install pylinkage``, the ``bench`` extra; skipped when it is
   not installed): the same four-bar and the same crank positions.  pylinkage computes
@@ -71,13 +74,16 @@ def core_timings(example, n, repeat):
     ext = mech.extremes(rot, spec.working_stroke)
     phi = crank_angles(n)
     deg = np.degrees(phi)
-    nk = len(an.kinematics_columns(spec)) - 1
-    nf = len(an.force_columns(spec)) - 1
-    kblock, fblock = np.empty((nk, n)), np.empty((nf, n))
-    kernel = kernel_mod.Kernel(spec, mech, ext, min(n, an.CHUNK))
+    def kernel_runner(course_tables):
+        nk = len(an.kinematics_columns(spec, course_tables)) - 1
+        nf = len(an.force_columns(spec, course_tables)) - 1
+        kb, fb = np.empty((nk, n)), np.empty((nf, n))
+        kernel = kernel_mod.Kernel(spec, mech, ext, min(n, an.CHUNK), course_tables)
+        return kb, fb, lambda: kernel_mod.fill_blocks(kernel, phi, kb, fb)
 
-    def run_kernel():
-        kernel_mod.fill_blocks(kernel, phi, kblock, fblock)
+    kb_lean, fb_lean, run_kernel_lean = kernel_runner(False)
+    del kb_lean, fb_lean
+    kblock, fblock, run_kernel = kernel_runner(True)
 
     n_ref = min(n, 200_000)
     kref = {c: np.empty(n_ref) for c in an.kinematics_columns(spec) if c != "position"}
@@ -89,13 +95,15 @@ def core_timings(example, n, repeat):
                 rows = slice(a, min(n_ref, a + an.CHUNK))
                 an.solve_columns(spec, phi[rows], mech, ext, kref, fref, rows)
 
-    def run_analyze():
+    def run_analyze(course_tables=True):
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            return linkage.analyze(spec, crank_angles_deg=deg)
+            return linkage.analyze(spec, crank_angles_deg=deg, course_tables=course_tables)
 
-    out = {"kernel": (n, best_of(run_kernel, repeat)),
+    out = {"kernel-lean": (n, best_of(run_kernel_lean, repeat)),
+           "kernel": (n, best_of(run_kernel, repeat)),
            "reference": (n_ref, best_of(run_reference, max(2, repeat // 2))),
+           "analyze-lean": (n, best_of(lambda: run_analyze(False), repeat)),
            "analyze": (n, best_of(run_analyze, repeat))}
     # the kernel computes what the group routines compute: largest deviation over the
     # reference's positions, relative to the largest value of the same column
@@ -202,9 +210,11 @@ def main(argv=None):
     spec, phi, res, rocker = core_timings("ratchet.toml", n, args.repeat)
     _, _, _, slider = core_timings("press.toml", n, args.repeat)
     for mech, timings in (("crank-rocker (ratchet)", rocker), ("crank-slider (press)", slider)):
-        for key, what in (("kernel", "kernel (linkage.kernel), kinematics + forces"),
-                          ("reference", "reference (solve_columns, group routines)"),
-                          ("analyze", "linkage.analyze incl. DataFrames")):
+        for key, what in (("kernel-lean", "kernel, kinematics + forces"),
+                          ("kernel", "kernel, + course-table columns"),
+                          ("reference", "reference (group routines), + course tables"),
+                          ("analyze-lean", "analyze(course_tables=False), DataFrames"),
+                          ("analyze", "analyze (default), DataFrames")):
             npos, t = timings[key]
             rows.append((mech, what, npos, t))
 
@@ -233,7 +243,8 @@ def main(argv=None):
         if pl is not None and mech.startswith("crank-rocker"):
             line += f" {(npos / t) * t_pl:12.0f}"
         print(line)
-    print("\ntargets: kernel ≥ 5 M/s, analyze ≥ 2 M/s, kernel ≥ 100 × pylinkage")
+    print("\ntargets (issue 2, kinematics + forces): kernel ≥ 5 M/s, analyze ≥ 2 M/s, "
+          "kernel ≥ 100 × pylinkage")
 
 
 if __name__ == "__main__":

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from .spec import LINK_NUMBER, MechanismSpec
 
-__all__ = ["point_names", "kinematics_columns", "force_columns"]
+__all__ = ["point_names", "kinematics_columns", "force_columns", "derived_kinematics_columns",
+           "derived_force_columns"]
 
 
 def point_names(spec: MechanismSpec):
@@ -19,8 +20,9 @@ def point_names(spec: MechanismSpec):
     return out
 
 
-def kinematics_columns(spec: MechanismSpec):
-    """Names of the kinematics table's columns, in order."""
+def kinematics_columns(spec: MechanismSpec, course_tables=True):
+    """Names of the kinematics table's columns, in order (with the course tables'
+    magnitudes at the end unless ``course_tables`` is False)."""
     cols = ["position", "phi_deg", "theta3_deg", "omega3_rad_s", "eps3_rad_s2"]
     if spec.kind == "crank-rocker":
         cols += ["theta4_deg", "omega4_rad_s", "eps4_rad_s2"]
@@ -30,15 +32,43 @@ def kinematics_columns(spec: MechanismSpec):
         cols += [f"{p}_x_m", f"{p}_y_m", f"{p}_vx_m_s", f"{p}_vy_m_s",
                  f"{p}_ax_m_s2", f"{p}_ay_m_s2"]
     cols += ["mu_deg"]
+    return cols + (derived_kinematics_columns(spec) if course_tables else [])
+
+
+def derived_kinematics_columns(spec: MechanismSpec):
+    """The course tables' magnitudes appended to the kinematics table (see
+    :mod:`linkage.derived`): speed and acceleration of every point, and the relative
+    motion of B about A (and about C for a crank-rocker)."""
+    pts = list(point_names(spec))
+    cols = [f"{p}_v_m_s" for p in pts] + [f"{p}_a_m_s2" for p in pts]
+    cols += ["v_BA_m_s"] + (["v_BC_m_s"] if spec.kind == "crank-rocker" else [])
+    cols += ["a_BA_n_m_s2", "a_BA_t_m_s2", "a_BA_m_s2"]
+    if spec.kind == "crank-rocker":
+        cols += ["a_BC_n_m_s2", "a_BC_t_m_s2", "a_BC_m_s2"]
     return cols
 
 
-def force_columns(spec: MechanismSpec):
-    """Names of the force table's columns, in order."""
+def force_columns(spec: MechanismSpec, course_tables=True):
+    """Names of the force table's columns, in order (with the force inputs and reaction
+    magnitudes at the end unless ``course_tables`` is False)."""
     cols = ["position", "phi_deg", "R12_x_N", "R12_y_N", "R23_x_N", "R23_y_N",
             "R43_x_N", "R43_y_N", "R14_x_N", "R14_y_N", "M_drive_Nm", "R23_n_N", "R23_t_N"]
     if spec.kind == "crank-rocker":
         cols += ["R14_n_N", "R14_t_N", "M_res_Nm"]
     else:
         cols += ["N14_N", "M14_Nm", "F_res_N"]
-    return cols
+    return cols + (derived_force_columns(spec) if course_tables else [])
+
+
+def derived_force_columns(spec: MechanismSpec):
+    """The force inputs and reaction magnitudes appended to the force table (see
+    :mod:`linkage.derived`): per link i its weight ``Gi_N``, d'Alembert inertia force
+    ``Fui_x_N``, ``Fui_y_N``, ``Fui_N`` and (rotating links) inertia moment ``Mui_Nm``;
+    then ``R12_N``, ``R23_N``, ``R43_N``, ``R14_N``."""
+    cols = []
+    for lname in spec.link_names:
+        i = LINK_NUMBER[lname]
+        cols += [f"G{i}_N", f"Fu{i}_x_N", f"Fu{i}_y_N", f"Fu{i}_N"]
+        if lname != "slider":
+            cols += [f"Mu{i}_Nm"]
+    return cols + ["R12_N", "R23_N", "R43_N", "R14_N"]

@@ -31,7 +31,7 @@ __all__ = [
     "PointMotion", "LinkMotion", "Wrench",
     "cross", "dot",
     "crank", "rrr", "rrp", "RRRSolution", "RRPSolution",
-    "link_wrench", "rrr_reactions", "rrp_reactions", "driver_reactions",
+    "inertia_load", "link_wrench", "rrr_reactions", "rrp_reactions", "driver_reactions",
     "RRRReactions", "RRPReactions", "DriverReactions",
 ]
 
@@ -295,6 +295,32 @@ def rrp(A: PointMotion, L: float, guide_point=0j, guide_angle=0.0, offset=0.0,
 # ----------------------------------------------------------------------- kinetostatics
 
 
+def inertia_load(a_S, eps, mass=0.0, inertia=0.0):
+    """d'Alembert inertia load of a link: force ``Fu = −m·a_S`` at its centre of mass and
+    moment ``Mu = −J_S·ε`` (the course project's
+    Fui = −mi·aSi, Mui = −JSi·εi of its table of force inputs).
+
+    Parameters
+    ----------
+    a_S : complex array_like
+        Acceleration of the centre of mass. [m/s²]
+    eps : array_like
+        Angular acceleration of the link, + ccw. [rad/s²]
+    mass : float
+        m. [kg]
+    inertia : float
+        J_S about the centre of mass. [kg·m²]
+
+    Returns
+    -------
+    Fu : complex ndarray
+        Inertia force. [N]
+    Mu : ndarray
+        Inertia moment, + ccw. [N·m]
+    """
+    return -mass * np.asarray(a_S), -inertia * np.asarray(eps)
+
+
 def link_wrench(link: LinkMotion, mass=0.0, inertia=0.0, cg=0j, gravity=0.0,
                 forces=(), moments=()) -> Wrench:
     """Resultant of all loads on one link, with d'Alembert inertia, reduced to its centre
@@ -323,8 +349,9 @@ def link_wrench(link: LinkMotion, mass=0.0, inertia=0.0, cg=0j, gravity=0.0,
         Force ``ΣF + m·g·(−j) − m·a_S`` and moment about S ``Σ(r × F) + ΣM − J_S·ε``.
     """
     S = link.point(cg)
-    F = -mass * S.a - 1j * (mass * gravity) + 0 * S.z
-    M = -inertia * link.eps + 0.0 * S.z.real
+    Fu, Mu = inertia_load(S.a, link.eps, mass, inertia)
+    F = Fu - 1j * (mass * gravity) + 0 * S.z
+    M = Mu + 0.0 * S.z.real
     for f, at in forces:
         F = F + f
         M = M + cross(at - S.z, f)

@@ -17,6 +17,7 @@ import math
 import numpy as np
 
 from .columns import force_columns, kinematics_columns, point_names
+from .derived import fill_derived
 from .spec import LINK_NUMBER
 
 __all__ = ["Kernel", "fill_blocks"]
@@ -55,14 +56,16 @@ class Kernel:
     pairs of float arrays, ``cross(a, b) = a_x·b_y − a_y·b_x``, ``i·(x, y) = (−y, x)``.
     """
 
-    def __init__(self, spec, mech, ext, size):
+    def __init__(self, spec, mech, ext, size, course_tables=True):
         self.spec, self.mech, self.rocker = spec, mech, spec.kind == "crank-rocker"
-        kcols = [c for c in kinematics_columns(spec) if c != "position"]
-        fcols = [c for c in force_columns(spec) if c != "position"]
+        self.course_tables = course_tables
+        kcols = [c for c in kinematics_columns(spec, course_tables) if c != "position"]
+        fcols = [c for c in force_columns(spec, course_tables) if c != "position"]
         self.nk, self.nf = len(kcols), len(fcols)
         ki = {c: i for i, c in enumerate(kcols)}
         fi = {c: i for i, c in enumerate(fcols)}
         self.ki, self.fi = ki, fi
+        self.kcols, self.fcols = kcols, fcols
 
         def six(p):
             return tuple(ki[f"{p}_{s}"] for s in ("x_m", "y_m", "vx_m_s", "vy_m_s",
@@ -577,6 +580,9 @@ class Kernel:
         else:
             RA = self.rrp_reactions(K, Fo, T, B, W["coupler"], W[out_name])
         self.driver_reactions(K, Fo, T, RA, W["crank"])
+        if self.course_tables:
+            fill_derived(self.spec, dict(zip(self.kcols, K)), dict(zip(self.fcols, Fo)),
+                         T["t1"])
 
 
 def fill_blocks(kernel, phi, kblock, fblock):

@@ -2,8 +2,9 @@
 
 Reports only consume an :class:`~linkage.analysis.AnalysisResult`; they compute no
 physics.  The workbook has the sheets ``inputs`` (spec values and the cycle geometry),
-``positions``, ``velocities``, ``accelerations``, ``forces`` (one row per position, the
-CSV columns regrouped) and ``extremes`` (the two extreme positions).  Every sheet has
+``positions``, ``velocities``, ``accelerations``, ``loads`` (weights, inertia forces and
+moments, resistance), ``forces`` (reactions, driving moment) -- one row per position, the
+CSV columns regrouped -- and ``extremes`` (the two extreme positions).  Every sheet has
 three header rows: the textbook symbol, the unit, and the CSV column name; numbers are
 stored at full precision (number formats only change how they are shown).
 """
@@ -14,7 +15,8 @@ import re
 
 import numpy as np
 
-__all__ = ["column_label", "write_csvs", "write_workbook", "sheet_columns", "summary_lines"]
+__all__ = ["column_label", "write_csvs", "write_workbook", "sheet_columns",
+           "force_sheet_columns", "summary_lines"]
 
 _UNITS = {"m": "m", "m_s": "m/s", "m_s2": "m/s²", "deg": "°", "rad_s": "rad/s",
           "rad_s2": "rad/s²", "N": "N", "Nm": "N·m"}
@@ -39,6 +41,26 @@ def column_label(col: str):
     m = re.fullmatch(r"R(\d\d)_([xy])_N", col)
     if m:
         return f"R{m.group(1)}{m.group(2)}", "N"
+    m = re.fullmatch(r"(R\d\d|G\d)_N", col)
+    if m:
+        return m.group(1), "N"
+    m = re.fullmatch(r"Fu(\d)(_[xy])?_N", col)
+    if m:
+        return f"Fu{m.group(1)}{(m.group(2) or '')[1:]}", "N"
+    m = re.fullmatch(r"Mu(\d)_Nm", col)
+    if m:
+        return f"Mu{m.group(1)}", "N·m"
+    m = re.fullmatch(r"v_(\w\w)_m_s", col)
+    if m:
+        return f"V{m.group(1)}", "m/s"
+    m = re.fullmatch(r"a_(\w\w)(_[nt])?_m_s2", col)
+    if m:
+        sup = {"_n": "ⁿ", "_t": "ᵗ"}.get(m.group(2), "")
+        return f"a{m.group(1)}{sup}", "m/s²"
+    m = re.fullmatch(r"(.+?)_(v|a)_(m_s|m_s2)", col)
+    if m:
+        p, q, unit = m.groups()
+        return f"{'V' if q == 'v' else 'a'}{p}", _UNITS[unit]
     m = re.fullmatch(r"(.+?)_(x|y|vx|vy|ax|ay)_(m|m_s|m_s2)", col)
     if m:
         p, q, unit = m.groups()
@@ -49,19 +71,36 @@ def column_label(col: str):
 
 
 def sheet_columns(kinematics_cols):
-    """Split the kinematics columns into the positions, velocities and accelerations sheets."""
+    """Split the kinematics columns into the positions, velocities and accelerations sheets:
+    on the last two, the link rates first, then the course table's magnitudes (speeds of
+    the points, relative motion of B), then the x/y components."""
     head = ["position", "phi_deg"]
-    pos, vel, acc = list(head), list(head), list(head)
+    pos, vel, acc = list(head), [], []
     for c in kinematics_cols:
         if c in head:
             continue
-        if re.search(r"_(vx|vy)_m_s$", c) or c in ("omega3_rad_s", "omega4_rad_s", "v4_m_s"):
+        if c.endswith("_m_s") or c in ("omega3_rad_s", "omega4_rad_s"):
             vel.append(c)
-        elif re.search(r"_(ax|ay)_m_s2$", c) or c in ("eps3_rad_s2", "eps4_rad_s2", "a4_m_s2"):
+        elif c.endswith("_m_s2") or c in ("eps3_rad_s2", "eps4_rad_s2"):
             acc.append(c)
         else:
             pos.append(c)
-    return pos, vel, acc
+
+    def order(c):
+        return 2 if re.search(r"_(vx|vy|ax|ay)_m_s2?$", c) else \
+            1 if re.search(r"_(v_m_s|a_m_s2)$", c) or c.startswith(("v_B", "a_B")) else 0
+    return pos, head + sorted(vel, key=order), head + sorted(acc, key=order)
+
+
+def force_sheet_columns(force_cols):
+    """Split the force columns into the loads sheet (weights, inertia forces and moments,
+    useful resistance: the inputs of the kinetostatics) and the forces sheet (reactions
+    and the driving moment)."""
+    head = ["position", "phi_deg"]
+    loads = [c for c in force_cols
+             if re.fullmatch(r"(G\d|Fu\d(_[xy])?)_N|Mu\d_Nm|M_res_Nm|F_res_N", c)]
+    rest = [c for c in force_cols if c not in head and c not in loads]
+    return head + loads, head + rest
 
 
 def write_csvs(result, folder):
@@ -173,10 +212,12 @@ def write_workbook(result, path):
     ws.column_dimensions["C"].width = 8
 
     pos_cols, vel_cols, acc_cols = sheet_columns(list(result.kinematics.columns))
+    load_cols, force_cols = force_sheet_columns(list(result.forces.columns))
     tables = [("positions", result.kinematics, pos_cols),
               ("velocities", result.kinematics, vel_cols),
               ("accelerations", result.kinematics, acc_cols),
-              ("forces", result.forces, list(result.forces.columns))]
+              ("loads", result.forces, load_cols),
+              ("forces", result.forces, force_cols)]
     if result.extremes is not None:
         tables.append(("extremes", result.extremes, list(result.extremes.columns)))
     for title, df, cols in tables:

@@ -271,11 +271,13 @@ class Model:
                     fz = val * self.u
                     F["slider"] += fz
                     M["slider"] += _cross(bodies["slider"].z, fz)
+        inertia = {}
         for k in names:
             zS, _, aS = bodies[k].at(self.cg[k])
             f = -self.mass[k] * aS - 1j * self.mass[k] * self.g
             F[k] += f
             M[k] += _cross(zS, f) - self.J[k] * bodies[k].eps
+            inertia[k] = (-self.mass[k] * aS, -self.J[k] * bodies[k].eps + 0 * phi)
         zA = bodies["coupler"].z
         zB = bodies["coupler"].at(complex(self.l2, 0.0))[0]
         zO = np.zeros(n, complex)
@@ -332,6 +334,14 @@ class Model:
             R14 = x[:, 6] * 1j * self.u
             col.update({"R14_x_N": R14.real, "R14_y_N": R14.imag, "N14_N": x[:, 6],
                         "M14_Nm": x[:, 7], "F_res_N": res_total})
+        for name, R in (("R12", R12), ("R23", R23), ("R43", R43), ("R14", R14)):
+            col[f"{name}_N"] = np.abs(R)
+        for k in names:
+            i, (fu, mu) = NUMBER[k], inertia[k]
+            col.update({f"G{i}_N": self.mass[k] * self.g + 0 * phi, f"Fu{i}_x_N": fu.real,
+                        f"Fu{i}_y_N": fu.imag, f"Fu{i}_N": np.abs(fu)})
+            if k != "slider":
+                col[f"Mu{i}_Nm"] = mu
         # kinematics columns
         c3, c4 = bodies["coupler"], bodies[out_name]
         col.update({"theta3_deg": np.degrees(c3.theta), "omega3_rad_s": c3.omega,
@@ -354,7 +364,22 @@ class Model:
             z, v, a = bodies[k].at(local)
             col.update({f"{p}_x_m": z.real, f"{p}_y_m": z.imag, f"{p}_vx_m_s": v.real,
                         f"{p}_vy_m_s": v.imag, f"{p}_ax_m_s2": a.real,
-                        f"{p}_ay_m_s2": a.imag})
+                        f"{p}_ay_m_s2": a.imag, f"{p}_v_m_s": np.abs(v),
+                        f"{p}_a_m_s2": np.abs(a)})
+        # relative motion of B about A (and C): vector differences, and the normal and
+        # tangential parts of the relative acceleration by projection on the link
+        zA, vA, aA = bodies["crank"].at(complex(self.l1, 0))
+        zB, vB, aB = bodies["coupler"].at(complex(self.l2, 0))
+        rel = [("BA", zB - zA, vB - vA, aB - aA)]
+        if self.kind == "crank-rocker":
+            zC = self.l0 * self.u + 0 * zB
+            rel.append(("BC", zB - zC, vB, aB))
+        for name, r, v, a in rel:
+            e = r / np.abs(r)
+            col[f"v_{name}_m_s"] = np.abs(v)
+            col[f"a_{name}_n_m_s2"] = -(a.real * e.real + a.imag * e.imag)
+            col[f"a_{name}_t_m_s2"] = np.abs(_cross(e, a))
+            col[f"a_{name}_m_s2"] = np.abs(a)
         return col
 
 

@@ -12,7 +12,8 @@ from openpyxl import load_workbook
 from crankdyn.cli import main
 from crankdyn.resources import example_path
 
-SHEETS = ("inputs", "positions", "velocities", "accelerations", "forces", "extremes")
+SHEETS = ("inputs", "positions", "velocities", "accelerations", "loads", "forces",
+          "extremes")
 PLOTS = ("plan", "velocities", "accelerations", "driving_moment", "transmission_angle")
 
 
@@ -78,9 +79,19 @@ def test_workbook_read_back_equals_csv(ratchet_run):
             np.testing.assert_array_equal(df[c].to_numpy(float), k[c].to_numpy(float))
             seen.add(c)
     assert seen == set(k.columns)  # every kinematics column is on some sheet
-    df = _sheet_frame(wb["forces"])
-    assert list(df.columns) == list(f.columns)
-    np.testing.assert_array_equal(df.to_numpy(float), f.to_numpy(float))
+    seen = set()
+    for sheet in ("loads", "forces"):
+        df = _sheet_frame(wb[sheet])
+        assert list(df.columns[:2]) == ["position", "phi_deg"]
+        for c in df.columns:
+            np.testing.assert_array_equal(df[c].to_numpy(float), f[c].to_numpy(float))
+            seen.add(c)
+    assert seen == set(f.columns)  # every force column is on some sheet
+    # the course tables' magnitudes come first on the velocities sheet
+    vel = list(_sheet_frame(wb["velocities"]).columns)
+    assert vel.index("v_BA_m_s") < vel.index("A_vx_m_s")
+    assert {"G3_N", "Fu3_N", "Mu3_Nm", "M_res_Nm"} <= set(_sheet_frame(wb["loads"]).columns)
+    assert "Fu3_N" not in _sheet_frame(wb["forces"]).columns
 
 
 def test_workbook_inputs_and_extremes(ratchet_run):

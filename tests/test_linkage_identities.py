@@ -208,6 +208,69 @@ def test_every_link_in_equilibrium_with_the_reported_reactions(name):
         assert np.max(np.abs(v)) <= lim, key
 
 
+@pytest.mark.parametrize("name", list(ALL))
+def test_course_table_magnitudes(name):
+    """The course tables' columns (seed 000 Tables 3.1, 3.2): speeds and accelerations of
+    the points are the lengths of their vectors; VBA = |ω3|·lAB is the length of vB − vA,
+    and the relative acceleration splits into aBAⁿ = ω3²·lAB along B→A and aBAᵗ = |ε3|·lAB
+    across; for a crank-rocker likewise about the fixed C (VBC = VB, aBC = aB)."""
+    data, res = _run(name)
+    k, m = res.kinematics, data["mechanism"]
+    pts = [c[:-len("_vx_m_s")] for c in k.columns if c.endswith("_vx_m_s")]
+    assert {"A", "B", "S2", "S3"} <= set(pts)
+    for p in pts:
+        np.testing.assert_allclose(_col(k, f"{p}_v_m_s"), np.abs(_v(k, p)), rtol=1e-12)
+        np.testing.assert_allclose(_col(k, f"{p}_a_m_s2"), np.abs(_a(k, p)), rtol=1e-12)
+    rel = [("BA", _z(k, "A"), _v(k, "A"), _a(k, "A"), m["coupler"])]
+    if m["kind"] == "crank-rocker":
+        gam = math.radians(m.get("ground_angle_deg", 0.0))
+        zC = m["ground"] * complex(math.cos(gam), math.sin(gam))
+        rel.append(("BC", zC, 0.0, 0.0, m["rocker"]))
+    for name_, z0, v0, a0, length in rel:
+        dv, da = _v(k, "B") - v0, _a(k, "B") - a0
+        e = (_z(k, "B") - z0) / length                 # unit vector from the pivot to B
+        scale_v, scale_a = np.max(np.abs(dv)), np.max(np.abs(da))
+        assert np.max(np.abs(_col(k, f"v_{name_}_m_s") - np.abs(dv))) <= 1e-12 * scale_v
+        # normal part points from B to the pivot, tangential across the link
+        assert np.max(np.abs(_col(k, f"a_{name_}_n_m_s2") + _dot(da, e))) <= 1e-12 * scale_a
+        assert np.max(np.abs(_col(k, f"a_{name_}_t_m_s2") - np.abs(_cross(e, da)))) \
+            <= 1e-12 * scale_a
+        assert np.max(np.abs(_col(k, f"a_{name_}_m_s2") - np.abs(da))) <= 1e-12 * scale_a
+
+
+@pytest.mark.parametrize("name", list(ALL))
+def test_force_inputs_and_reaction_magnitudes(name):
+    """The loads sheet (seed 000 Table 4.1): Gi = mi·g, Fui = −mi·aSi, Mui = −JSi·εi; and
+    the reported reactions, weights and inertia loads alone close the coupler's force
+    polygon when the coupler carries no external force: R23 + R43 + Fu3 − j·G3 = 0
+    (what a teacher checks on the force plan)."""
+    data, res = _run(name)
+    k, f, m = res.kinematics, res.forces, data["mechanism"]
+    g = m.get("gravity_m_s2", 9.81)
+    eps = {"crank": m.get("epsilon_rad_s2", 0.0) + 0 * _col(k, "phi_deg"),
+           "coupler": _col(k, "eps3_rad_s2"),
+           "rocker": _col(k, "eps4_rad_s2") if "eps4_rad_s2" in k else None}
+    for lname, i in (("crank", 2), ("coupler", 3), ("rocker", 4), ("slider", 4)):
+        if lname not in data["links"]:
+            continue
+        t = data["links"][lname]
+        mass, J = t.get("mass_kg", 0.0), t.get("inertia_kg_m2", 0.0)
+        aS = _a(k, f"S{i}")
+        np.testing.assert_allclose(_col(f, f"G{i}_N"), mass * g, rtol=1e-15)
+        assert np.max(np.abs(_F(f, f"Fu{i}") + mass * aS)) <= 1e-12 * mass * np.max(np.abs(aS))
+        np.testing.assert_allclose(_col(f, f"Fu{i}_N"), mass * np.abs(aS), rtol=1e-12)
+        if lname == "slider":
+            assert f"Mu{i}_Nm" not in f
+        else:
+            np.testing.assert_allclose(_col(f, f"Mu{i}_Nm"), -J * eps[lname], rtol=1e-12,
+                                       atol=1e-12)
+    for r in ("R12", "R23", "R43", "R14"):
+        np.testing.assert_allclose(_col(f, f"{r}_N"), np.abs(_F(f, r)), rtol=1e-12)
+    if not any(ld.get("link") == "coupler" and "force_N" in ld for ld in data.get("load", [])):
+        close = _F(f, "R23") + _F(f, "R43") + _F(f, "Fu3") - 1j * _col(f, "G3_N")
+        assert np.max(np.abs(close)) <= 1e-9 * np.max(np.abs(_F(f, "R23")))
+
+
 @pytest.mark.parametrize("name", list(ROCKERS))
 def test_rocker_normal_and_tangential_components(name):
     """R23 = R23n·e3 + R23t·(i·e3) with e3 along A→B; R14 = R14n·e4 + R14t·(i·e4) with e4
@@ -475,3 +538,18 @@ def test_reversing_the_crank_reverses_velocities_and_keeps_accelerations(name):
             continue
         x, y = _col(a.forces, c), _col(b.forces, c)
         assert np.max(np.abs(y - x)) <= 1e-12 * max(np.max(np.abs(x)), 1.0), c
+
+
+@pytest.mark.parametrize("name", list(ALL))
+def test_course_tables_off_leaves_exactly_the_contract_columns(name):
+    """``course_tables=False`` drops the derived columns and changes nothing else."""
+    data = ALL[name]()
+    full = linkage.analyze(data, crank_angles_deg=ANGLES)
+    lean = linkage.analyze(data, crank_angles_deg=ANGLES, course_tables=False)
+    for a, b in ((full.kinematics, lean.kinematics), (full.forces, lean.forces)):
+        assert list(b.columns) == [c for c in a.columns if c in b.columns]
+        extra = set(a.columns) - set(b.columns)
+        assert extra and all(c.endswith(("_v_m_s", "_a_m_s2")) or c.startswith(
+            ("v_B", "a_B", "G", "Fu", "Mu")) or c in ("R12_N", "R23_N", "R43_N", "R14_N")
+            for c in extra)
+        np.testing.assert_array_equal(a[b.columns].to_numpy(float), b.to_numpy(float))
