@@ -290,3 +290,29 @@ def test_rattan_13_1_four_link_self_computed():
     assert (-f["R23_x_N"][0], -f["R23_y_N"][0]) == pytest.approx((116.8, 82.1), abs=0.05)
     assert (f["R43_x_N"][0], f["R43_y_N"][0]) == pytest.approx((42.3, -42.9), abs=0.05)
     assert (f["R14_x_N"][0], f["R14_y_N"][0]) == pytest.approx((-1.7, -85.2), abs=0.05)
+
+
+def test_seed000_table_4_1_force_inputs_of_the_crank_and_weights():
+    """Seed 000 (the ratchet drive course project), Table 4.1 "Исходные данные к силовому
+    расчету", positions 5 (working) and 11 (idle): weights G2 = 156,96 N, G3 = G4 =
+    166,77 N; the crank's centre-of-mass acceleration aS2 = 23,11 m/s² and inertia force
+    Fu2 = 369,76 / 369,16 N (read off its acceleration plans, hence 0.2 % apart).  The crank
+    quantities do not depend on the ground length OC that the source leaves out:
+    aS2 = ω²·lOS2 = 17²·0.08 = 23.12 m/s², Fu2 = m2·aS2 = 369.92 N at every position."""
+    from crankdyn.resources import example_path
+
+    res = linkage.analyze(example_path("ratchet.toml"))
+    k, f = res.kinematics, res.forces
+    assert f["G2_N"].to_numpy(float) == pytest.approx(156.96, abs=0.005)
+    assert f["G3_N"].to_numpy(float) == pytest.approx(166.77, abs=0.005)
+    assert f["G4_N"].to_numpy(float) == pytest.approx(166.77, abs=0.005)
+    assert k["S2_a_m_s2"].to_numpy(float) == pytest.approx(23.11, rel=1e-3)
+    for printed in (369.76, 369.16):                 # positions 5 and 11, graphical
+        assert f["Fu2_N"].to_numpy(float) == pytest.approx(printed, rel=3e-3)
+    # the exact value, which the plan readings bracket from below
+    assert f["Fu2_N"].to_numpy(float) == pytest.approx(16 * 17.0**2 * 0.08, rel=1e-12)
+    # the inertia force of the crank points from S2 back along OA's extension (−m·aS2 with
+    # aS2 towards O): outward from O
+    S2 = k["S2_x_m"].to_numpy(float) + 1j * k["S2_y_m"].to_numpy(float)
+    Fu2 = f["Fu2_x_N"].to_numpy(float) + 1j * f["Fu2_y_N"].to_numpy(float)
+    np.testing.assert_allclose(Fu2, 369.92 * S2 / np.abs(S2), rtol=1e-9)
