@@ -13,12 +13,19 @@ project); each assertion cites the original beside it.  What was found:
   intermediate equations and the printed rod-pin force F12 (his book, p. 144); the other
   joint forces and the driver moment were not retrievable (checked against an
   independent solution, labelled as such);
-* no four-bar force analysis with printed results could be read (Norton Ex. 11-3 data
-  not retrievable; Rattan Ex. 13.1 solved graphically, answer not retrieved).  For the
-  four-bar: the published transmission-angle design example of seed 004 (Sereda 2016),
-  the ratchet drive of seed 000 (swing, time ratio; tests/test_linkage_identities.py),
-  and Rattan Ex. 13.1 against the research helper's own independent solution, labelled
-  as such.
+* a four-bar force analysis with a printed result: Chirgwin & Plumpton, *A Course of
+  Mathematics for Engineers and Scientists*, Vol. 3, Exercises 2:4 No. 3 -- three heavy
+  rods on two fixed pins held as a rhombus by a string, string tension 2√3 W, reproduced
+  exactly (statics; the rhombus is a change-point four-bar);
+* no kinetostatic (moving) four-bar with printed results could be read: Norton Ex. 11-3
+  data not retrievable; Rattan Ex. 13.1 solved graphically, answer not retrieved (about
+  750 look-ups over two sessions, research notes kept outside the repository).  For the
+  moving four-bar:
+  the independent global Newton–Euler solve (tests/test_linkage_newton_euler.py), the
+  published transmission-angle design example of seed 004 (Sereda 2016), the ratchet
+  drive of seed 000 (swing, time ratio; its Table 4.1 weights and crank inertia force
+  here), and Rattan Ex. 13.1 against the research helper's own independent solution,
+  labelled as such.
 """
 import math
 import warnings
@@ -316,3 +323,63 @@ def test_seed000_table_4_1_force_inputs_of_the_crank_and_weights():
     S2 = k["S2_x_m"].to_numpy(float) + 1j * k["S2_y_m"].to_numpy(float)
     Fu2 = f["Fu2_x_N"].to_numpy(float) + 1j * f["Fu2_y_N"].to_numpy(float)
     np.testing.assert_allclose(Fu2, 369.92 * S2 / np.abs(S2), rtol=1e-9)
+
+
+def test_chirgwin_plumpton_rhombus_four_bar_string_tension():
+    """A textbook four-bar force analysis with a printed result: Chirgwin & Plumpton,
+    *A Course of Mathematics for Engineers and Scientists*, Vol. 3 *Theoretical Mechanics*
+    (Pergamon), Exercises 2:4, No. 3 (statics / virtual work), quoted at
+    http://lonnietapia.com/kindle/a-course-of-mathematics-for-engineers-and-scientists-volume-3-theoretical :
+
+        "Three equal uniform rods AB, BC, CD, each of weight W, are smoothly jointed to one
+        another at B and C and to two fixed points A, D in the same horizontal line. A light
+        inextensible string joining B to D maintains ABCD in the shape of a rhombus with
+        ∠BCD = 60°. Prove that when a weight 4W is suspended from B the tension in the
+        string is 2√3 W."
+
+    As a crankdyn four-bar: ground A→D (= O→C, length a), crank AB, coupler BC, rocker DC,
+    all of length a (a rhombus: a change-point mechanism, accepted with a warning); the
+    rhombus hangs below AD (a string can only pull), ∠DAB = ∠BCD = 60°, so the crank is at
+    −60° and BC is horizontal (assembly −1: C right of the directed line B→D).  Each rod
+    weighs W at its midpoint; 4W hangs at B (on the crank's end); statics (ω → 0, ε = 0).
+
+    Printed: T = 2√3 W.  Checked both ways: (1) with the string's pull 2√3 W applied at B
+    along B→D, the crank needs no driving moment; (2) without it, the driving moment the
+    crank needs, divided by the lever arm of the line BD about A, is 2√3 W.  A wrong weight
+    sign, a misplaced centre of mass or a wrong reaction split changes both."""
+    a, W, g = 0.5, 100.0, 9.81
+    mass = W / g
+    u_BD = complex(0.5, math.sqrt(3) / 2)                  # unit vector B → D
+    T_printed = 2 * math.sqrt(3) * W
+
+    def run(string):
+        loads = [{"link": "crank", "at": [a, 0.0], "force_N": [0.0, -4 * W]}]
+        if string:
+            f = T_printed * u_BD
+            loads.append({"link": "crank", "at": [a, 0.0], "force_N": [f.real, f.imag]})
+        rod = {"mass_kg": mass, "inertia_kg_m2": mass * a * a / 12, "cg": [a / 2, 0.0]}
+        data = {"mechanism": {"kind": "crank-rocker", "crank": a, "coupler": a, "rocker": a,
+                              "ground": a, "assembly": -1,
+                              # statics: inertia ∝ ω² is 1e-13 of the weights here
+                              "omega_rad_s": 1e-6, "gravity_m_s2": g},
+                "links": {"crank": dict(rod), "coupler": dict(rod), "rocker": dict(rod)},
+                "load": loads, "analysis": {"crank_angles_deg": [300.0]}}
+        with pytest.warns(linkage.SingularPositionWarning, match="change-point"):
+            return linkage.analyze(data)
+
+    held = run(string=True)
+    k = held.kinematics.iloc[0]
+    # the book's rhombus: C = (3a/2, −a√3/2), BC horizontal, ∠BCD = 60°
+    assert (k["B_x_m"], k["B_y_m"]) == pytest.approx((1.5 * a, -a * math.sqrt(3) / 2),
+                                                     abs=1e-12)
+    assert k["theta3_deg"] == pytest.approx(0.0, abs=1e-9)
+    assert k["theta4_deg"] % 360.0 == pytest.approx(300.0, abs=1e-9)
+    assert held.forces["M_drive_Nm"].iat[0] == pytest.approx(0.0, abs=1e-12 * W * a)
+
+    free = run(string=False)
+    zB = complex(k["A_x_m"], k["A_y_m"])                    # book's B = crank pin
+    arm = zB.real * u_BD.imag - zB.imag * u_BD.real         # (B − A) × u_BD
+    T = free.forces["M_drive_Nm"].iat[0] / arm
+    assert T == pytest.approx(T_printed, rel=1e-12)         # printed: 2√3 W
+    # the same equilibrium by hand: M = 3·W·a counter-clockwise
+    assert free.forces["M_drive_Nm"].iat[0] == pytest.approx(3 * W * a, rel=1e-12)
