@@ -23,8 +23,8 @@ project); each assertion cites the original beside it.  What was found:
   moving four-bar: the independent global Newton–Euler solve
   (tests/test_linkage_newton_euler.py), the published transmission-angle design example
   of seed 004 (Sereda 2016), the ratchet drive of seed 000 (swing, time ratio; its
-  Table 4.1 weights and crank inertia force here), and Rattan Ex. 13.1 against the research helper's own independent solution,
-  labelled as such.
+  Table 4.1 weights and crank inertia force here), and Rattan Ex. 13.1 against the
+  research helper's own independent solution, labelled as such.
 """
 import math
 import warnings
