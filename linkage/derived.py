@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from . import groups as g
 from .columns import point_names
 from .spec import LINK_NUMBER, MechanismSpec
 
@@ -44,9 +45,8 @@ def fill_derived(spec: MechanismSpec, K, F, scratch=None):
 
     Notes
     -----
-    Fui = −mi·aSi and Mui = −JSi·εi are the d'Alembert loads of
-    :func:`linkage.groups.inertia_load` (the model the kinetostatics applies), written
-    component by component here to stay in real arithmetic.
+    Fui = −mi·aSi and Mui = −JSi·εi come from :func:`linkage.groups.inertia_load`, the
+    model the kinetostatics applies, evaluated per component to stay in real arithmetic.
     """
     n = len(K["phi_deg"])
     t = np.empty(n) if scratch is None else scratch
@@ -76,19 +76,18 @@ def fill_derived(spec: MechanismSpec, K, F, scratch=None):
             np.add(out, t, out=out)
             np.sqrt(out, out=out)
 
+    eps = {"crank": spec.epsilon, "coupler": K["eps3_rad_s2"],
+           "rocker": K.get("eps4_rad_s2"), "slider": 0.0}
     for lname in spec.link_names:
         ls, i = spec.links[lname], LINK_NUMBER[lname]
         F[f"G{i}_N"].fill(ls.mass * spec.gravity)
-        np.multiply(K[f"S{i}_ax_m_s2"], -ls.mass, out=F[f"Fu{i}_x_N"])
-        np.multiply(K[f"S{i}_ay_m_s2"], -ls.mass, out=F[f"Fu{i}_y_N"])
+        # the model's d'Alembert loads, per component (inertia_load is linear in a_S)
+        fx, mu = g.inertia_load(K[f"S{i}_ax_m_s2"], eps[lname], ls.mass, ls.inertia)
+        fy, _ = g.inertia_load(K[f"S{i}_ay_m_s2"], 0.0, ls.mass, 0.0)
+        np.add(fx, 0.0, out=F[f"Fu{i}_x_N"])     # + 0.0: no −0.0 when m = 0
+        np.add(fy, 0.0, out=F[f"Fu{i}_y_N"])
         np.multiply(K[f"S{i}_a_m_s2"], ls.mass, out=F[f"Fu{i}_N"])
-        if lname == "crank":
-            F["Mu2_Nm"].fill(-ls.inertia * spec.epsilon)
-        elif lname != "slider":
-            np.multiply(K["eps3_rad_s2" if lname == "coupler" else "eps4_rad_s2"],
-                        -ls.inertia, out=F[f"Mu{i}_Nm"])
-    for c in F:                                 # no −0.0 in the tables (m = 0 or J = 0)
-        if c.startswith(("Fu", "Mu")):
-            np.add(F[c], 0.0, out=F[c])
+        if lname != "slider":                      # a slider does not turn
+            F[f"Mu{i}_Nm"][...] = mu + 0.0
     for r in ("R12", "R23", "R43", "R14"):
         _norm(F[f"{r}_x_N"], F[f"{r}_y_N"], F[f"{r}_N"], t)
