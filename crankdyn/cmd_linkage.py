@@ -42,6 +42,7 @@ def run(args) -> int:
     from linkage.analysis import SingularPositionWarning
     from linkage.errors import SpecError
     from linkage.report import summary_lines, write_csvs, write_workbook
+    from pandas import isna as pd_isna
 
     if args.example:
         from crankdyn.resources import example_path
@@ -67,14 +68,17 @@ def run(args) -> int:
             fig.savefig(stage / f"{stem}.png")
     for w in caught:
         print(f"crankdyn linkage: warning: {w.message}", file=sys.stderr)
-    print(f"{spec.name} ({spec.kind}): {len(result.kinematics)} positions -> {args.output}")
+    statics = "; statics, ω = 0" if spec.omega == 0 else ""
+    print(f"{spec.name} ({spec.kind}{statics}): {len(result.kinematics)} positions -> "
+          f"{args.output}")
     for label, value, unit in summary_lines(result):
         v = f"{value:.4f}" if isinstance(value, float) else str(value)
         print(f"  {label}: {v} {unit}".rstrip())
     m = result.forces["M_drive_Nm"].abs()
     if m.notna().any():
         i = int(m.idxmax())
+        pos = result.forces["position"].iat[i]
+        where = "" if pd_isna(pos) else f"position {pos}, "
         print(f"  max |Mур| at the positions: {result.forces['M_drive_Nm'].iat[i]:.2f} N·m "
-              f"(position {result.forces['position'].iat[i]}, "
-              f"φ = {result.forces['phi_deg'].iat[i]:.2f}°)")
+              f"({where}φ = {result.forces['phi_deg'].iat[i]:.2f}°)")
     return 0

@@ -250,7 +250,6 @@ def _summary(spec, mech, ext):
     """Cycle geometry: Grashof type, extremes, swing/stroke, K, μmin over a full turn."""
     s = {"kind": spec.kind, "name": spec.name,
          "grashof": str(mech.grashof())}
-    rot = 1 if spec.omega > 0 else -1
     if ext is not None:
         ek = mech.kinematics(np.array([ext.phi_start, ext.phi_end]), spec.omega, 0.0)
         c = mech.output_coordinate(ek)
@@ -286,7 +285,7 @@ def _summary(spec, mech, ext):
     s["mu_min_deg"] = math.degrees(mu_min)
     phi_min_deg = math.degrees(phi_min) % 360.0
     s["mu_min_phi_deg"] = 0.0 if phi_min_deg > 360.0 - 1e-6 else phi_min_deg
-    s["rotation"] = "ccw" if rot > 0 else "cw"
+    s["rotation"] = "ccw" if spec.omega > 0 else "cw" if spec.omega < 0 else "none (statics)"
     return s
 
 
@@ -330,9 +329,11 @@ def analyze(spec, crank_angles_deg=None, *, course_tables=True) -> AnalysisResul
     mech = build_mechanism(spec)
     mech.check_rotatable()
     rot = 1 if spec.omega > 0 else -1
-    with np.errstate(divide="ignore", invalid="ignore"):  # a change point at an extreme
-        ext = mech.extremes(rot, spec.working_stroke or ("ccw" if spec.kind == "crank-rocker"
-                                                         else "away"))
+    ext = None                 # statics (ω = 0): no rotation, hence no strokes
+    if spec.omega != 0:
+        default = "ccw" if spec.kind == "crank-rocker" else "away"
+        with np.errstate(divide="ignore", invalid="ignore"):  # a change point at an extreme
+            ext = mech.extremes(rot, spec.working_stroke or default)
     if ext is None and (spec.positions is not None and crank_angles_deg is None
                         and spec.crank_angles_deg is None):
         raise SpecError(["analysis.positions: the output link turns fully (a double crank) "

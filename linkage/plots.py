@@ -114,7 +114,8 @@ def moment_figure(result, full):
     """The driving (balancing) moment Mур on the crank and the useful resistance."""
     f = full.forces
     series = [("M_drive_Nm", "Mур, driving moment on the crank", f)]
-    if result.spec.kind == "crank-rocker" and np.any(f["M_res_Nm"].to_numpy() != 0):
+    res = f["M_res_Nm"].to_numpy(float) if result.spec.kind == "crank-rocker" else None
+    if res is not None and np.any(np.nan_to_num(res) != 0):   # NaN: left-out singular rows
         series.append(("M_res_Nm", "Mпс, resistance on the rocker", f))
     fig = _curves(result, full, series, "moment [N·m]",
                   f"{result.spec.name}: driving moment Mур (+ ccw)")
@@ -196,7 +197,11 @@ def plan_figure(result, full):
         e = result.extremes
         _draw_links(ax, e, 1, zO, zC, 2.0, "C3", ls="--")
         ax.plot([], [], color="C3", ls="--", lw=2.0, label="other extreme position")
-    ax.plot([], [], color="C0", lw=2.2, label="position 1 (working-stroke start)")
+    numbered = k["position"].notna().all() and len(k) and "phi_working_start_deg" in \
+        result.summary
+    ax.plot([], [], color="C0", lw=2.2,
+            label="position 1 (working-stroke start)" if numbered
+            else f"first crank angle given, φ = {k['phi_deg'].iat[0]:.4g}°")
     for z, name in ((zO, "O"), (zC, "C")):
         if z is None:
             continue
@@ -205,8 +210,9 @@ def plan_figure(result, full):
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
+    turn = "statics" if spec.omega == 0 else "ccw" if spec.omega > 0 else "cw"
     ax.set_title(f"{spec.name}: plan of positions ({spec.kind}, "
-                 f"ω = {spec.omega:g} rad/s {'ccw' if spec.omega > 0 else 'cw'})")
+                 f"ω = {spec.omega:g} rad/s, {turn})")
     ax.grid(True, lw=0.3, alpha=0.5)
     ax.legend(loc="upper left", fontsize=7, framealpha=0.85)
     return fig
@@ -235,9 +241,15 @@ def _draw_links(ax, df, i, zO, zC, lw, color, ls="-"):
 
 
 def all_figures(result, full):
-    """Every linkage figure as a dict ``file stem → Figure``."""
-    return {"plan": plan_figure(result, full),
-            "velocities": velocity_figure(result, full),
-            "accelerations": acceleration_figure(result, full),
-            "driving_moment": moment_figure(result, full),
-            "transmission_angle": transmission_figure(result, full)}
+    """Every linkage figure as a dict ``file stem → Figure``.  In statics (ω = 0) the
+    velocity curves are identically zero and left out, and so are the accelerations when
+    ε = 0 too."""
+    spec = result.spec
+    figs = {"plan": plan_figure(result, full)}
+    if spec.omega != 0:
+        figs["velocities"] = velocity_figure(result, full)
+    if spec.omega != 0 or spec.epsilon != 0:
+        figs["accelerations"] = acceleration_figure(result, full)
+    figs["driving_moment"] = moment_figure(result, full)
+    figs["transmission_angle"] = transmission_figure(result, full)
+    return figs

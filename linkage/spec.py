@@ -159,11 +159,7 @@ def load_spec(path_or_dict) -> MechanismSpec:
     offset = ck.number(m, "offset", "mechanism", required=False, default=0.0)
     assembly = ck.choice(m, "assembly", (1, -1), "mechanism", required=False, default=1)
     omega = ck.number(m, "omega_rad_s", "mechanism",
-                      what="the crank angular velocity in rad/s (+ ccw, nonzero)")
-    if omega == 0.0:
-        ck.add("mechanism.omega_rad_s",
-               "got 0; must be nonzero (its sign gives the direction of rotation)")
-        omega = None
+                      what="the crank angular velocity in rad/s (+ ccw; 0 = statics)")
     epsilon = ck.number(m, "epsilon_rad_s2", "mechanism", required=False, default=0.0)
     gravity = ck.number(m, "gravity_m_s2", "mechanism", required=False, default=9.81, ge=0)
 
@@ -216,7 +212,7 @@ def load_spec(path_or_dict) -> MechanismSpec:
     if not isinstance(raw_loads, list):
         ck.add("load", "must be an array of tables ([[load]])")
         raw_loads = []
-    loads = []
+    loads, resistance_paths = [], []
     output = "rocker" if kind == "crank-rocker" else "slider"
     for i, t in enumerate(raw_loads):
         path = f"load[{i}]"
@@ -273,6 +269,7 @@ def load_spec(path_or_dict) -> MechanismSpec:
         if r is not None:
             loads.append(LoadSpec(output, "resistance", resistance=r,
                                   stroke=stroke or "working", span=span))
+            resistance_paths.append(f"{path}.{key}")
 
     a = ck.table(data, "analysis", required=False)
     ck.unknown(a, _ANALYSIS_KEYS, "analysis")
@@ -294,6 +291,19 @@ def load_spec(path_or_dict) -> MechanismSpec:
         needs.append("a resistance limited to one stroke")
     if any(ld.kind == "resistance" and ld.span is not None for ld in loads):
         needs.append("a resistance with a span")
+    if omega == 0.0:
+        # statics (or start from rest): no direction of rotation, no strokes
+        if positions is not None and "crank_angles_deg" not in a:
+            ck.add("analysis.crank_angles_deg",
+                   "missing; with mechanism.omega_rad_s = 0 (statics) give the crank angles "
+                   "(the plan of positions needs a direction of rotation)")
+        for rp in resistance_paths:
+            ck.add(rp, "a resistance opposes motion and is zero with mechanism.omega_rad_s "
+                   "= 0 (statics); give the load as moment_Nm or force_N")
+        if "working_stroke" in a:
+            ck.add("analysis.working_stroke",
+                   "does not apply with mechanism.omega_rad_s = 0 (statics); remove it")
+        needs = []
     if needs and working is None and "working_stroke" not in a:
         ck.add("analysis.working_stroke",
                f"missing; required with {' and '.join(needs)}: one of "

@@ -267,3 +267,47 @@ def test_help_imports_nothing_heavy():
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip() == ""
+
+
+def test_statics_run_at_explicit_angles(tmp_path, capsys):
+    """ω = 0: a static force analysis at the given crank angles.  The velocity plot (and,
+    with ε = 0, the acceleration plot) would be flat zeros and is not written; the
+    terminal says statics; the driving moment is the static one (here the rhombus of
+    tests/test_linkage_published.py without its string: 3·W·a at −60°)."""
+    a, W, g = 0.5, 100.0, 9.81
+    rod = f"mass_kg = {W / g!r}\ncg = [{a / 2}, 0.0]\n"
+    spec = tmp_path / "rhombus.toml"
+    spec.write_text(f"""
+[mechanism]
+kind = "crank-rocker"
+name = "rhombus"
+crank = {a}
+coupler = {a}
+rocker = {a}
+ground = {a}
+assembly = -1
+omega_rad_s = 0.0
+gravity_m_s2 = {g}
+[links.crank]
+{rod}[links.coupler]
+{rod}[links.rocker]
+{rod}[[load]]
+link = "crank"
+at = [{a}, 0.0]
+force_N = [0.0, {-4 * W}]
+[analysis]
+crank_angles_deg = [300.0, 290.0]
+""")
+    out = tmp_path / "out"
+    assert main(["linkage", str(spec), "-o", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "statics, ω = 0" in text and "<NA>" not in text
+    for p in ("plan", "driving_moment", "transmission_angle"):
+        assert (out / f"{p}.png").stat().st_size > 1000
+    assert not (out / "velocities.png").exists() and not (out / "accelerations.png").exists()
+    f = pd.read_csv(out / "forces.csv")
+    assert f["M_drive_Nm"].iat[0] == pytest.approx(3 * W * a, rel=1e-12)
+    k = pd.read_csv(out / "kinematics.csv")
+    assert (k["omega3_rad_s"] == 0).all() and (k["B_a_m_s2"] == 0).all()
+    wb = load_workbook(out / "rhombus.xlsx")
+    assert "extremes" not in wb.sheetnames        # no strokes without rotation

@@ -308,10 +308,53 @@ def test_negative_mass_and_inertia(link):
                 (f"links.{link}.inertia_kg_m2", ">= 0"))
 
 
-def test_zero_omega_and_bad_choices():
-    _spec_error(rocker(omega_rad_s=0.0), ("mechanism.omega_rad_s", "nonzero"))
+def test_bad_choices():
     _spec_error(rocker(assembly=2), ("mechanism.assembly", "1, -1"))
     _spec_error(rocker(kind="four-bar"), ("mechanism.kind", "'crank-rocker'"))
+
+
+def test_statics_needs_explicit_angles_and_no_resistance_or_stroke():
+    """ω = 0 is a static force analysis: no direction of rotation, so no plan of positions,
+    no working stroke, and a resistance (which opposes motion) would silently be zero."""
+    d = rocker(omega_rad_s=0.0)
+    del d["analysis"]
+    _spec_error(d, ("analysis.crank_angles_deg", "statics"))
+    d = rocker(omega_rad_s=0.0)
+    d["analysis"] = {"positions": 6}
+    _spec_error(d, ("analysis.crank_angles_deg", "direction of rotation"))
+    d = rocker(omega_rad_s=0.0)
+    d["load"] = [{"link": "rocker", "moment_Nm": 10.0},
+                 {"link": "rocker", "resistance_Nm": 100.0, "stroke": "both"}]
+    d["analysis"]["working_stroke"] = "ccw"
+    _spec_error(d, ("load[1].resistance_Nm", "moment_Nm or force_N"),
+                ("analysis.working_stroke", "statics"))
+    for make in (rocker, slider):
+        with pytest.raises(linkage.SpecError):
+            linkage.analyze(make(omega_rad_s=0.0, foo=1))   # the usual checks still run
+
+
+@pytest.mark.parametrize("make", [rocker, slider])
+def test_statics_is_accepted_at_explicit_angles(make):
+    """ω = ε = 0: every velocity and acceleration is zero, the inertia loads vanish, and
+    the reactions and the driving moment balance weights and applied loads alone (the
+    same numbers as the quasi-static limit of a slowly turning crank)."""
+    d = make(omega_rad_s=0.0, gravity_m_s2=9.81)
+    if make is slider:              # a load along the guide, so the crank has work to do
+        d["load"] = [{"link": "slider", "at": [0.0, 0.0], "force_N": [-200.0, 0.0]}]
+    res = linkage.analyze(d)
+    k, f = res.kinematics, res.forces
+    rates = [c for c in k.columns if c.startswith(("omega", "eps", "v4", "a4"))
+             or c.endswith(("_vx_m_s", "_vy_m_s", "_ax_m_s2", "_ay_m_s2"))]
+    assert rates and np.all(k[rates].to_numpy(float) == 0.0)
+    fu = [c for c in f.columns if c.startswith(("Fu", "Mu"))]
+    assert np.all(f[fu].to_numpy(float) == 0.0)
+    assert res.summary["rotation"] == "none (statics)" and res.extremes is None
+    slow = dict(d, mechanism=dict(d["mechanism"], omega_rad_s=1e-4))
+    ref = linkage.analyze(slow).forces
+    scale = np.max(np.abs(f["M_drive_Nm"].to_numpy(float)))
+    np.testing.assert_allclose(f["M_drive_Nm"].to_numpy(float),
+                               ref["M_drive_Nm"].to_numpy(float), atol=1e-6 * scale)
+    assert scale > 0
 
 
 def test_resistance_on_the_wrong_link_or_unit():

@@ -340,7 +340,7 @@ def test_chirgwin_plumpton_rhombus_four_bar_string_tension():
     all of length a (a rhombus: a change-point mechanism, accepted with a warning); the
     rhombus hangs below AD (a string can only pull), ∠DAB = ∠BCD = 60°, so the crank is at
     −60° and BC is horizontal (assembly −1: C right of the directed line B→D).  Each rod
-    weighs W at its midpoint; 4W hangs at B (on the crank's end); statics (ω → 0, ε = 0).
+    weighs W at its midpoint; 4W hangs at B (on the crank's end); statics (ω = ε = 0).
 
     Printed: T = 2√3 W.  Checked both ways: (1) with the string's pull 2√3 W applied at B
     along B→D, the crank needs no driving moment; (2) without it, the driving moment the
@@ -359,8 +359,7 @@ def test_chirgwin_plumpton_rhombus_four_bar_string_tension():
         rod = {"mass_kg": mass, "inertia_kg_m2": mass * a * a / 12, "cg": [a / 2, 0.0]}
         data = {"mechanism": {"kind": "crank-rocker", "crank": a, "coupler": a, "rocker": a,
                               "ground": a, "assembly": -1,
-                              # statics: inertia ∝ ω² is 1e-13 of the weights here
-                              "omega_rad_s": 1e-6, "gravity_m_s2": g},
+                              "omega_rad_s": 0.0, "gravity_m_s2": g},      # statics
                 "links": {"crank": dict(rod), "coupler": dict(rod), "rocker": dict(rod)},
                 "load": loads, "analysis": {"crank_angles_deg": [300.0]}}
         with pytest.warns(linkage.SingularPositionWarning, match="change-point"):
