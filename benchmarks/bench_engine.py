@@ -37,7 +37,7 @@ def wall(cmd, repeat=5):
 
 def main():
     import engine
-    from crankdyn.resources import example_path
+    from crankbase.resources import example_path
 
     for name in ("petrol_vaz2106.toml", "diesel_d240.toml"):
         spec = engine.load_spec(example_path(name)).with_step(0.1)

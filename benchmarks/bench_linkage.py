@@ -66,7 +66,7 @@ def core_timings(example, n, repeat):
     import linkage
     from linkage import analysis as an
     from linkage import kernel as kernel_mod
-    from crankdyn.resources import example_path
+    from crankbase.resources import example_path
 
     spec = linkage.load_spec(example_path(example))
     mech = an.build_mechanism(spec)

@@ -35,9 +35,9 @@ def add_parser(subparsers):
 
 
 def _example_path(name):
-    from linkage.errors import SpecError
+    from crankbase.errors import SpecError
 
-    from .resources import example_path
+    from crankbase.resources import example_path
 
     stems = {f[:-5]: f for f in EXAMPLES.values()}
     stem = name[:-5] if name.endswith(".toml") else name
@@ -48,17 +48,10 @@ def _example_path(name):
     return example_path(fname)
 
 
-def _safe_name(name):
-    import re
-
-    safe = re.sub(r"[^\w.-]+", "_", name).strip("._")
-    return safe or "engine"
-
-
 def run(args) -> int:
     from pathlib import Path
 
-    from linkage.errors import SpecError
+    from crankbase.errors import SpecError
 
     if args.spec and args.example:
         raise SpecError("give either SPEC.toml or --example, not both")
@@ -70,10 +63,11 @@ def run(args) -> int:
         raise SpecError(f"-o: {out} exists and is not a folder")
 
     import engine
-    from engine.plots import PLOT_NAMES, all_figures, save_figure
+    from engine.plots import PLOT_NAMES, all_figures
     from engine.report import build_workbook, save_workbook
 
-    from .io import check_not_input, ensure_finite, staged_output, write_csv
+    from crankbase.output import (check_not_input, ensure_finite, safe_name, save_figure,
+                                  staged_output, write_csv)
 
     # 1. validate and compute everything
     spec = engine.load_spec(spec_path)
@@ -85,7 +79,7 @@ def run(args) -> int:
     ensure_finite(fine, "force table (plot grid)")
     summary = engine.summarize(fine, spec)
     csv_path = out / "forces.csv"
-    xlsx_path = out / f"{_safe_name(spec.name)}.xlsx"
+    xlsx_path = out / f"{safe_name(spec.name, 'engine')}.xlsx"
     stems = [out / name for name in PLOT_NAMES]
     outputs = [csv_path, xlsx_path] + [s.with_suffix(f".{e}") for s in stems
                                        for e in ("png", "svg")]

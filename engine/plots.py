@@ -12,7 +12,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 __all__ = ["plot_indicator", "plot_piston_forces", "plot_nkt", "plot_torque",
-           "plot_polar", "plot_developed", "all_figures", "save_figure", "PLOT_NAMES"]
+           "plot_polar", "plot_developed", "all_figures", "PLOT_NAMES"]
 
 #: File stems of the plots, in order.
 PLOT_NAMES = ("indicator", "forces_P", "forces_NKT", "torque", "polar_Rshsh",
@@ -239,18 +239,3 @@ def all_figures(table, spec, summary=None, lang="ru"):
     funcs = (plot_indicator, plot_piston_forces, plot_nkt, plot_torque, plot_polar,
              plot_developed)
     return {name: f(table, spec, summary, lang) for name, f in zip(PLOT_NAMES, funcs)}
-
-
-def save_figure(fig, stem, formats=("png", "svg"), dpi=110):
-    """Write ``stem.png`` and ``stem.svg`` atomically; returns the paths."""
-    from pathlib import Path
-
-    from crankdyn.io import atomic_path
-
-    out = []
-    for fmt in formats:
-        path = Path(f"{stem}.{fmt}")
-        with atomic_path(path) as tmp:
-            fig.savefig(tmp, format=fmt, dpi=dpi)
-        out.append(path)
-    return out

@@ -80,7 +80,7 @@ def input_values(spec, summary, lang="ru"):
 def _put(cell, value):
     """Store ``value`` in ``cell``; a string always as text, never as a formula (a name
     may start with "=").  Floats keep every bit when the workbook is saved by
-    :func:`save_workbook` (:func:`crankdyn.io.full_precision_xlsx`)."""
+    :func:`save_workbook` (:func:`crankbase.output.full_precision_xlsx`)."""
     cell.value = value
     if isinstance(value, str):
         cell.data_type = "s"
@@ -117,8 +117,8 @@ def build_workbook(table, summary, spec, lang="ru"):
     from openpyxl import load_workbook
     from openpyxl.chart import Reference, ScatterChart, Series
 
-    from crankdyn.io import ensure_finite
-    from crankdyn.resources import template_path
+    from crankbase.output import ensure_finite
+    from crankbase.resources import template_path
 
     if lang not in LANGS:
         raise ValueError(f"--lang: got {lang!r}; valid: {', '.join(LANGS)}")
@@ -223,7 +223,7 @@ def build_workbook(table, summary, spec, lang="ru"):
 
 def save_workbook(wb, path):
     """Save a workbook atomically (temporary file in the target folder, then rename)."""
-    from crankdyn.io import atomic_path, full_precision_xlsx
+    from crankbase.output import atomic_path, full_precision_xlsx
 
     with atomic_path(path) as tmp, full_precision_xlsx():
         wb.save(tmp)

@@ -20,8 +20,8 @@ from pathlib import Path
 
 import numpy as np
 
-from linkage.errors import Problem, SpecError
-from linkage.validation import Checker, read_toml
+from crankbase.errors import Problem, SpecError
+from crankbase.validation import Checker, read_toml
 
 __all__ = ["EngineSpec", "CycleSpec", "EngineSpecError", "load_spec",
            "PRESSURE_UNITS", "read_pressure_csv"]
@@ -34,7 +34,7 @@ ROD_SMALL_END_FRACTION = 0.275
 
 
 class EngineSpecError(SpecError):
-    """An engine spec is invalid (a :class:`linkage.errors.SpecError`, so a ValueError)."""
+    """An engine spec is invalid (a :class:`crankbase.errors.SpecError`, so a ValueError)."""
 
 
 @dataclass(frozen=True)

@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import groups as g
-from .errors import SpecError
+from crankbase.errors import SpecError
 from .mechanisms import CrankRocker, CrankSlider
 from .columns import derived_kinematics_columns, force_columns, kinematics_columns, point_names
 from .derived import fill_derived

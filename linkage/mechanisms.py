@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import groups as g
-from .errors import AssemblyError
+from crankbase.errors import AssemblyError
 
 __all__ = ["CrankRocker", "CrankSlider", "Extremes", "grashof_type"]
 

@@ -105,7 +105,7 @@ def force_sheet_columns(force_cols):
 
 def write_csvs(result, folder):
     """Write ``kinematics.csv`` and ``forces.csv`` (comma, '.', header, full precision)."""
-    from crankdyn.io import write_csv
+    from crankbase.output import write_csv
 
     write_csv(result.kinematics, folder / "kinematics.csv")
     write_csv(result.forces, folder / "forces.csv")
@@ -157,7 +157,7 @@ def _spec_rows(raw, prefix=""):
 def write_workbook(result, path):
     """Write the Excel workbook of a linkage analysis (atomically).
 
-    Raises :class:`crankdyn.io.OutputError` if a table holds a non-finite number outside
+    Raises :class:`crankbase.output.OutputError` if a table holds a non-finite number outside
     the rows of singular positions of a change-point mechanism (those are left empty
     and flagged).
     """
@@ -165,7 +165,7 @@ def write_workbook(result, path):
     from openpyxl.styles import Alignment, Border, Font, PatternFill, Side
     from openpyxl.utils import get_column_letter
 
-    from crankdyn.io import atomic_path, full_precision_xlsx
+    from crankbase.output import atomic_path, full_precision_xlsx
 
     wb = Workbook()
     bold = Font(bold=True)
@@ -290,7 +290,7 @@ def _cell_values(series):
 
 def _check_finite_tables(result):
     """Refuse to write non-finite values except on flagged singular positions."""
-    from crankdyn.io import OutputError
+    from crankbase.output import OutputError
 
     sing = result.summary.get("singular_phi_deg") or []
     for name, df in (("kinematics", result.kinematics), ("forces", result.forces)):

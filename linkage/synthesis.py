@@ -49,7 +49,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .errors import Problem, SpecError
+from crankbase.errors import Problem, SpecError
 
 __all__ = [
     "TOL", "SynthesisError", "GrashofType", "grashof",
@@ -72,7 +72,7 @@ GRASHOF_RTOL = 1e-12
 class SynthesisError(SpecError):
     """A synthesis argument is invalid or asks for a mechanism that does not exist.
 
-    A :class:`ValueError` (through :class:`~linkage.errors.SpecError`): each problem names
+    A :class:`ValueError` (through :class:`~crankbase.errors.SpecError`): each problem names
     the argument, the bad value and what would be valid; the CLI prints one per line.
     """
 

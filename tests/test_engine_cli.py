@@ -13,7 +13,7 @@ from openpyxl import load_workbook
 
 import engine
 from crankdyn.cli import main
-from crankdyn.resources import example_path
+from crankbase.resources import example_path
 from engine.plots import PLOT_NAMES
 from engine.report import TABLE2_FORCES
 

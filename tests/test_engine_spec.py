@@ -11,7 +11,7 @@ import pytest
 import engine
 from engine.indicator import (cycle_pressure, interpolate_periodic, sharp_cycle_pressure,
                               theoretical_mean_pressure, volume_ratio)
-from linkage.errors import SpecError
+from crankbase.errors import SpecError
 
 BASE = {
     "engine": dict(name="t", bore_mm=110.0, stroke_mm=125.0, rod_ratio=0.272,

@@ -305,7 +305,7 @@ def test_seed000_table_4_1_force_inputs_of_the_crank_and_weights():
     Fu2 = 369,76 / 369,16 N (read off its acceleration plans, hence 0.2 % apart).  The crank
     quantities do not depend on the ground length OC that the source leaves out:
     aS2 = ω²·lOS2 = 17²·0.08 = 23.12 m/s², Fu2 = m2·aS2 = 369.92 N at every position."""
-    from crankdyn.resources import example_path
+    from crankbase.resources import example_path
 
     res = linkage.analyze(example_path("ratchet.toml"))
     k, f = res.kinematics, res.forces
