@@ -257,9 +257,9 @@ def test_sereda_kkm30_design_example_minimum_transmission_angle():
                           "rocker": 0.24, "ground": 1.0, "omega_rad_s": 1.0},
             "analysis": {"crank_angles_deg": [180.0]}}
     res = linkage.analyze(data)
-    assert 46.2 <= res.summary["mu_min_deg"] <= 46.4                       # printed 46°16′
-    assert res.summary["mu_min_phi_deg"] == pytest.approx(180.0, abs=0.01)
-    assert res.kinematics["mu_deg"].iloc[0] == pytest.approx(res.summary["mu_min_deg"],
+    assert 46.2 <= res.summary.mu_min_deg <= 46.4                       # printed 46°16′
+    assert res.summary.mu_min_phi_deg == pytest.approx(180.0, abs=0.01)
+    assert res.kinematics["mu_deg"].iloc[0] == pytest.approx(res.summary.mu_min_deg,
                                                              abs=1e-6)
 
 
