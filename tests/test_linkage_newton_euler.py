@@ -154,3 +154,18 @@ def test_positions_across_chunk_boundaries_match_global_newton_euler():
     data = loaded_slider(offset=0.01)
     phi = np.linspace(-30.0, 700.0, 2 * CHUNK + 5)
     assert compare(data, linkage.analyze(data, crank_angles_deg=phi)) > 40
+
+
+@pytest.mark.parametrize("stroke", ["idle", "both"])
+@pytest.mark.parametrize("make", [loaded_rocker, loaded_slider])
+def test_resistance_in_other_strokes_matches_global_newton_euler(make, stroke):
+    """The judge's own rule (strokes as crank-angle intervals between the extreme
+    positions) against the library's, for a resistance in the idle stroke and in both."""
+    data = make()
+    for ld in data["load"]:
+        if "resistance_Nm" in ld or "resistance_N" in ld:
+            ld["stroke"] = stroke
+    res = linkage.analyze(data, crank_angles_deg=np.linspace(0.0, 360.0, 145)[:-1] + 0.21)
+    col = "M_res_Nm" if "M_res_Nm" in res.forces else "F_res_N"
+    assert np.count_nonzero(res.forces[col].to_numpy()) > 10
+    assert compare(data, res) > 40
