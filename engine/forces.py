@@ -22,8 +22,10 @@ Sign conventions (the textbook's):
 References
 ----------
 .. [1] Колчин А. И., Демидов В. П. Расчёт автомобильных и тракторных двигателей, 2008,
-   § "Силы, действующие в КШМ"; and the course manual page (seed 003 of this project),
-   eqs. (1.10)–(1.15) and its Table 2.
+   4-е изд., гл. "Динамика кривошипно-шатунного механизма" (силы, действующие в КШМ:
+   N = P tg β, Sш = P/cos β, K = P cos(α + β)/cos β, T = P sin(α + β)/cos β,
+   Mкр = T·R, Kr.ш = −mш.к·R·ω², Rшш, Ψ); the same formulas, numbered (1.10)–(1.15),
+   and the layout of "Таблица 2" in the Russian course-project manuals built on it.
 """
 from __future__ import annotations
 

@@ -21,6 +21,15 @@ PLOT_NAMES = ("indicator", "forces_P", "forces_NKT", "torque", "polar_Rshsh",
 
 LANGS = ("ru", "en")
 
+#: Symbols of the quantities: the Russian textbook's, and the English textbooks' (no
+#: Cyrillic in an English plot).
+SYMBOLS = {
+    "ru": dict(p="pг", dPg="ΔPг", Pj="Pj", P="P", S="Sш", N="N", K="K", T="T", M="Mкр",
+               R="Rшш", Kr="Kr.ш", Osh="Oш", Fx="Fп·x"),
+    "en": dict(p="$p_g$", dPg="$F_g$", Pj="$F_j$", P="$F$", S="$S$", N="$N$", K="$K$",
+               T="$T$", M="$M$", R="$R_{cp}$", Kr="$K_r$", Osh="$O_r$", Fx="$A_p x$"),
+}
+
 _TXT = {
     "ru": dict(alpha="α, ° п.к.в.", p="pг, МПа", V="V, л", Vs="Fп·x, л (от ВМТ)",
                force="Сила, кН", torque="Mкр, Н·м", Rk="Rшш, кН",
@@ -28,22 +37,22 @@ _TXT = {
                fP="Силы по оси цилиндра", fNKT="Силы N, K, T",
                tq="Крутящий момент одного цилиндра", polar="Полярная диаграмма нагрузки "
                "на шатунную шейку", dev="Развёрнутая диаграмма нагрузки на шатунную шейку",
-               mean="среднее", T="T, кН", K="K, кН", crank="кривошип",
+               T="T, кН", K="K, кН",
                frame="система координат кривошипа: кривошип вверх от оси вала O, "
                      "вращение по часовой стрелке; +T вправо, +K вниз (к оси вала)",
-               tdc="ВМТ", bdc="НМТ", sub="ср",
+               tdc="ВМТ", bdc="НМТ", sub=".ср", kN="кН", N="Н", Nm="Н·м", MPa="МПа",
                poles="O – полюс силы Sш (T, K), Oш – полюс силы Rшш"),
-    "en": dict(alpha="α, crank deg", p="pг, MPa", V="V, l", Vs="Fп·x, l (from TDC)",
-               force="Force, kN", torque="Mкр, N·m", Rk="Rшш, kN",
+    "en": dict(alpha="α, crank deg", p="$p_g$, MPa", V="V, l", Vs="$A_p x$, l (from TDC)",
+               force="Force, kN", torque="$M$, N·m", Rk="$R_{cp}$, kN",
                ind="Indicator diagram", pV="p–V", pa="p–α",
                fP="Forces along the cylinder axis", fNKT="Forces N, K, T",
                tq="Torque of one cylinder", polar="Polar diagram of the crank-pin load",
-               dev="Developed diagram of the crank-pin load", mean="mean", T="T, kN",
-               K="K, kN", crank="crank",
+               dev="Developed diagram of the crank-pin load", T="$T$, kN", K="$K$, kN",
                frame="crank-fixed frame: crank up from the shaft axis O, rotation "
                      "clockwise; +T to the right, +K downwards (towards the shaft axis)",
-               tdc="TDC", bdc="BDC", sub="mean",
-               poles="O – pole of the rod force S (T, K), Oш – pole of Rшш"),
+               tdc="TDC", bdc="BDC", sub=" mean", kN="kN", N="N", Nm="N·m", MPa="MPa",
+               poles="O – pole of the rod force S (T, K), $O_r$ – pole of the crank-pin "
+                     "load $R_{cp}$"),
 }
 
 
@@ -51,7 +60,7 @@ def _texts(lang):
     if lang not in _TXT:
         from .spec import EngineSpecError
         raise EngineSpecError(Problem("lang", f"got {lang!r}; valid: {', '.join(LANGS)}"))
-    return _TXT[lang]
+    return dict(_TXT[lang], sym=SYMBOLS[lang])
 
 
 def _axes(ax, figsize=(10, 5.6), **margins):
@@ -138,7 +147,9 @@ def plot_piston_forces(result, ax=None, lang="ru"):
     """ΔPг, Pj and P over α. Returns the Axes."""
     t = _texts(lang)
     ax = _axes(ax)
-    _lines(ax, result.curves, ("dPg_N", "Pj_N", "P_N"), ("ΔPг", "Pj", "P = ΔPг + Pj"))
+    y = t["sym"]
+    _lines(ax, result.curves, ("dPg_N", "Pj_N", "P_N"),
+           (y["dPg"], y["Pj"], f"{y['P']} = {y['dPg']} + {y['Pj']}"))
     _alpha_axis(ax, result.spec, t)
     ax.set_ylabel(t["force"])
     ax.set_title(f"{t['fP']}: {result.spec.name}")
@@ -149,7 +160,8 @@ def plot_nkt(result, ax=None, lang="ru"):
     """N, K and T over α. Returns the Axes."""
     t = _texts(lang)
     ax = _axes(ax)
-    _lines(ax, result.curves, ("N_N", "K_N", "T_N"), ("N", "K", "T"))
+    y = t["sym"]
+    _lines(ax, result.curves, ("N_N", "K_N", "T_N"), (y["N"], y["K"], y["T"]))
     _alpha_axis(ax, result.spec, t)
     ax.set_ylabel(t["force"])
     ax.set_title(f"{t['fNKT']}: {result.spec.name}")
@@ -161,11 +173,10 @@ def plot_torque(result, ax=None, lang="ru"):
     t = _texts(lang)
     ax = _axes(ax)
     c = result.curves
-    ax.plot(c["alpha_deg"].to_numpy(), c["M_Nm"].to_numpy(), lw=1.4, color="C0",
-            label="Mкр")
+    M = t["sym"]["M"]
+    ax.plot(c["alpha_deg"].to_numpy(), c["M_Nm"].to_numpy(), lw=1.4, color="C0", label=M)
     m = result.summary.M_mean_Nm
-    ax.axhline(m, color="C3", ls="--", lw=1.0,
-               label=f"Mкр.{t['sub']} = {m:.1f} " + ("Н·м" if lang == "ru" else "N·m"))
+    ax.axhline(m, color="C3", ls="--", lw=1.0, label=f"{M}{t['sub']} = {m:.1f} {t['Nm']}")
     ax.legend(loc="best", fontsize=9)
     _alpha_axis(ax, result.spec, t)
     ax.set_ylabel(t["torque"])
@@ -187,7 +198,7 @@ def plot_polar(result, ax=None, lang="ru"):
     labels every 30°, Rшш max and min marked.
     """
     t = _texts(lang)
-    ax = _axes(ax, (9, 9.5), left=0.09, right=0.97, bottom=0.08, top=0.93)
+    ax = _axes(ax, (9, 9.8), left=0.09, right=0.97, bottom=0.12, top=0.95)
     spec, c = result.spec, result.curves
     T = c["T_N"].to_numpy() * 1e-3
     K = c["K_N"].to_numpy() * 1e-3
@@ -207,26 +218,29 @@ def plot_polar(result, ax=None, lang="ru"):
     ax.annotate("O", (0, 0), xytext=(-12, -10), textcoords="offset points", fontsize=11,
                 weight="bold")
     ax.plot([0], [-kr], "o", color="C3", ms=6)
-    ax.annotate("Oш", (0, -kr), xytext=(-22, 6), textcoords="offset points", fontsize=11,
-                weight="bold", color="C3")
+    y = t["sym"]
+    ax.annotate(y["Osh"], (0, -kr), xytext=(-22, 6), textcoords="offset points",
+                fontsize=11, weight="bold", color="C3")
     R = c["R_N"].to_numpy() * 1e-3
     a = c["alpha_deg"].to_numpy()
-    unit = "кН" if lang == "ru" else "kN"
-    for idx, name, col in ((int(np.argmax(R)), "Rшш max", "C3"),
-                           (int(np.argmin(R)), "Rшш min", "C2")):
+    unit = t["kN"]
+    for idx, name, col in ((int(np.argmax(R)), f"{y['R']} max", "C3"),
+                           (int(np.argmin(R)), f"{y['R']} min", "C2")):
         ax.annotate("", xy=(T[idx], K[idx]), xytext=(0, -kr),
                     arrowprops=dict(arrowstyle="-|>", color=col, lw=1.3))
         at = (T[idx], K[idx]) if name.endswith("max") else (0, -kr)
         ax.annotate(f"{name} = {R[idx]:.2f} {unit}\n(α = {a[idx]:g}°)", at,
                     xytext=(8, -14) if name.endswith("max") else (10, 6),
                     textcoords="offset points", fontsize=9, color=col)
-    ax.set_xlabel(t["T"])
     ax.set_ylabel(t["K"])
     ax.grid(True, lw=0.4, alpha=0.6)
-    ax.set_title(f"{t['polar']}: {spec.name}\nKr.ш = {spec.Kr:.0f} "
-                 + ("Н" if lang == "ru" else "N") + f";  {t['poles']}", fontsize=11)
-    ax.text(0.5, -0.075, t["frame"], fontsize=8, color="0.3", ha="center",
-            transform=ax.transAxes)
+    ax.set_title(f"{t['polar']}: {spec.name}", fontsize=11)
+    import textwrap
+
+    # the conventions go under the T axis, outside the diagram (never over the curve)
+    note = (textwrap.wrap(f"{y['Kr']} = {spec.Kr:.0f} {t['N']};  {t['poles']}", 80)
+            + textwrap.wrap(t["frame"], 80))
+    ax.set_xlabel("\n".join([t["T"]] + note), fontsize=8.5, linespacing=1.4)
     return ax
 
 
@@ -237,10 +251,11 @@ def plot_developed(result, ax=None, lang="ru"):
     c = result.curves
     a = c["alpha_deg"].to_numpy()
     R = c["R_N"].to_numpy() * 1e-3
-    ax.plot(a, R, lw=1.4, color="C0", label="Rшш")
-    unit = "кН" if lang == "ru" else "kN"
+    Rs = t["sym"]["R"]
+    ax.plot(a, R, lw=1.4, color="C0", label=Rs)
+    unit = t["kN"]
     m = result.summary.R_mean_N * 1e-3
-    ax.axhline(m, color="C3", ls="--", lw=1.0, label=f"Rшш.{t['sub']} = {m:.2f} {unit}")
+    ax.axhline(m, color="C3", ls="--", lw=1.0, label=f"{Rs}{t['sub']} = {m:.2f} {unit}")
     for idx, col in ((int(np.argmax(R)), "C3"), (int(np.argmin(R)), "C2")):
         ax.plot(a[idx], R[idx], "o", color=col)
         ax.annotate(f"{R[idx]:.2f} {unit} ({a[idx]:g}°)", (a[idx], R[idx]),
@@ -264,8 +279,9 @@ def figures(result, lang="ru"):
     ax1, ax2 = fig.subplots(1, 2)
     plot_indicator(result, ax1, lang)
     plot_pressure(result, ax2, lang)
-    unit = "МПа" if lang == "ru" else "MPa"
-    fig.suptitle(f"{t['ind']}: {result.spec.name};  pi = {result.summary.pi_MPa:.3f} {unit}")
+    pi = "pi" if lang == "ru" else "$p_i$"
+    fig.suptitle(f"{t['ind']}: {result.spec.name};  {pi} = {result.summary.pi_MPa:.3f} "
+                 f"{t['MPa']}")
     out = {"indicator": fig}
     for name, f in zip(PLOT_NAMES[1:], (plot_piston_forces, plot_nkt, plot_torque,
                                         plot_polar, plot_developed)):

@@ -388,3 +388,166 @@ def test_formula_helpers_match_the_same_problem():
     FI = -inertia_force(250, two_term_acceleration(math.radians(60), r, 1 / n, w))
     assert FL == pytest.approx(68722, abs=1)
     assert FI == pytest.approx(19277, abs=1)
+
+
+# ------------------------------------ the parameterised cylinder: bank, pin offset, phase
+
+def offset_spec(e_mm, accel="exact"):
+    d = copy.deepcopy(BASE)
+    d["engine"]["acceleration"] = accel
+    d["engine"]["pin_offset_mm"] = e_mm
+    d["pressure"]["cycle"]["peak_factor"] = 0.8      # the rounded peak stays inside
+    return engine.load_spec(d)
+
+
+@pytest.mark.parametrize("e_mm,bank_deg", [(3.0, 0.0), (-4.0, 0.0), (3.0, 45.0),
+                                           (0.0, -30.0), (2.0, 180.0)])
+def test_offset_and_banked_table_equals_the_general_rrp_dyad(e_mm, bank_deg):
+    """An independent assembly of the general RRP dyad in the test: crank at
+    90° + γ + α, guide through O at 90° + γ with the offset e, the piston carrying the
+    mass mj (d'Alembert inertia from the dyad's exact acceleration) and the gas force
+    along −u; the rod force on the pin, resolved on the crank, must equal the table."""
+    from linkage.groups import crank, rrp
+
+    spec = offset_spec(e_mm)
+    t = engine.force_table(spec, settings=SETTINGS, bank_deg=bank_deg)
+    alpha = np.radians(t["alpha_deg"].to_numpy())
+    g = math.pi / 2 + math.radians(bank_deg)
+    link2 = crank(g + alpha, spec.omega, 0.0, spec.R)
+    sol = rrp(link2.point(spec.R), spec.L, 0j, g, e_mm / 1000, +1)
+    u = complex(math.cos(g), math.sin(g))
+    W3 = link_wrench(sol.link3)
+    W4 = link_wrench(sol.link4, mass=spec.mj, forces=[(-t["dPg_N"].to_numpy() * u, sol.B.z)])
+    reac = rrp_reactions(sol, spec.L, W3, W4)
+    S32 = -reac.RA
+    sc = scale(t)
+    np.testing.assert_allclose(t["K_N"], dot(S32, -link2.e), rtol=0, atol=1e-10 * sc)
+    np.testing.assert_allclose(t["T_N"], dot(S32, 1j * link2.e), rtol=0, atol=1e-10 * sc)
+    np.testing.assert_allclose(t["N_N"], reac.RG_n, rtol=0, atol=1e-10 * sc)
+    # the piston force P = ΔPг − mj·j is what loads the dyad along the axis
+    np.testing.assert_allclose(t["P_N"], t["dPg_N"] - spec.mj * t["j_m_s2"], rtol=1e-13,
+                               atol=1e-9)
+
+
+@pytest.mark.parametrize("e_mm,bank_deg,phase_deg", [(4.0, 0.0, 0.0), (-3.0, 90.0, 0.0),
+                                                     (0.0, 45.0, 180.0),
+                                                     (2.5, -60.0, 540.0)])
+def test_power_balance_offset_and_banked(e_mm, bank_deg, phase_deg):
+    """T·R·ω = P·v at every angle (exact acceleration): the crank's power equals the
+    power of the piston force, whatever the bank, offset and phase."""
+    spec = offset_spec(e_mm)
+    t = engine.force_table(spec, settings=SETTINGS, bank_deg=bank_deg, phase_deg=phase_deg)
+    sc = scale(t)
+    np.testing.assert_allclose(t["T_N"] * spec.R * spec.omega, t["P_N"] * t["v_m_s"],
+                               rtol=0, atol=1e-10 * sc * spec.R * spec.omega)
+    np.testing.assert_allclose(t["S_N"] ** 2, t["K_N"] ** 2 + t["T_N"] ** 2, rtol=1e-12,
+                               atol=1e-9 * sc ** 2)
+
+
+def test_bank_does_not_change_the_table_and_phase_shifts_it():
+    spec = offset_spec(3.0, "two-term")
+    theta = np.arange(0.0, 720.0, 2.0)
+    ref = engine.force_table(spec, theta)
+    for bank in (30.0, -45.0, 90.0, 180.0):
+        t = engine.force_table(spec, theta, bank_deg=bank)
+        np.testing.assert_allclose(t.drop(columns="beta_deg").to_numpy(),
+                                   ref.drop(columns="beta_deg").to_numpy(), rtol=1e-9,
+                                   atol=1e-8 * scale(ref))
+    # a cylinder lagging by φ shows at θ what the reference shows at θ − φ
+    shifted = engine.force_table(spec, theta + 240.0, phase_deg=240.0)
+    np.testing.assert_allclose(shifted.drop(columns="alpha_deg").to_numpy(),
+                               ref.drop(columns="alpha_deg").to_numpy(), rtol=1e-9,
+                               atol=1e-8 * scale(ref))
+    np.testing.assert_array_equal(shifted["alpha_deg"], theta + 240.0)
+
+
+def test_offset_lowers_the_side_force_on_expansion():
+    """The documented sign: a positive offset (towards the direction of rotation at TDC)
+    lowers the largest side force of the expansion stroke; a negative one raises it."""
+    theta = np.arange(360.0, 540.0, 0.5)
+    n_max = {e: engine.force_table(offset_spec(e), theta)["N_N"].max() for e in (-3, 0, 3)}
+    assert n_max[3.0] < n_max[0.0] < n_max[-3.0]
+
+
+def test_central_results_unchanged_by_zero_parameters():
+    spec = make("exact")
+    t = table_of(spec)
+    t0 = engine.force_table(spec, settings=SETTINGS, bank_deg=0.0, phase_deg=0.0)
+    assert t.equals(t0)
+
+
+@pytest.mark.parametrize("kw,key", [
+    (dict(alpha_deg=[0.0, float("nan")]), "alpha_deg[1]"),
+    (dict(alpha_deg=[0.0, float("inf"), 3.0]), "alpha_deg[1]"),
+    (dict(alpha_deg=[[0.0, 1.0]]), "alpha_deg"),
+    (dict(alpha_deg=[]), "alpha_deg"),
+    (dict(alpha_deg=["a"]), "alpha_deg"),
+    (dict(bank_deg=float("nan")), "bank_deg"),
+    (dict(phase_deg=None), "phase_deg"),
+])
+def test_bad_arguments_raise_a_typed_error_naming_them(kw, key):
+    with pytest.raises(engine.EngineSpecError) as info:
+        engine.force_table(make(), **kw)
+    assert info.value.lines()[0].startswith(key)
+
+
+def test_bad_spec_and_table_arguments():
+    with pytest.raises(engine.EngineSpecError, match="^spec"):
+        engine.force_table({"engine": {}})
+    with pytest.raises(engine.EngineSpecError, match="^table"):
+        engine.summarize(table_of(make()).drop(columns="T_N"), make())
+    with pytest.raises(engine.EngineSpecError, match="^settings"):
+        engine.analyze(make(), settings={"step_deg": 1})
+    with pytest.raises(engine.EngineSpecError, match="^step_deg"):
+        engine.table_angles(make(), engine.TableSettings(step_deg=800.0))
+
+
+def test_analyze_returns_the_typed_result():
+    spec = make()
+    r = engine.analyze(spec, SETTINGS)
+    assert isinstance(r, engine.EngineResult) and isinstance(r.summary, engine.EngineSummary)
+    assert r.table.equals(table_of(spec))
+    assert len(r.curves) > len(r.table) and set(r.table["alpha_deg"]) <= set(r.curves["alpha_deg"])
+    assert r.summary == engine.summarize(r.curves, spec)
+    assert r.summary.M_Nm.max == r.curves["M_Nm"].max()
+    assert r.summary.chi == pytest.approx(r.summary.R_N.max / r.summary.R_mean_N)
+
+
+@st.composite
+def placed_engines(draw):
+    lam = draw(st.floats(0.15, 0.4))
+    R = draw(st.floats(0.02, 0.09))
+    k = draw(st.floats(-0.3, 0.3))
+    return dict(lam=lam, R=R, e=k * R, w=draw(st.floats(50, 900)),
+                bank=draw(st.floats(-180, 180)), phase=draw(st.floats(0, 720)),
+                mj=draw(st.floats(0.1, 5)), p=draw(st.floats(0, 8e6)))
+
+
+@settings(max_examples=40, deadline=None)
+@given(placed_engines())
+def test_random_placed_cylinders(c):
+    """hypothesis over random bank, offset, phase: the identities hold and the table
+    does not depend on the bank."""
+    d = copy.deepcopy(BASE)
+    d["engine"].update(stroke_mm=2000 * c["R"], rod_ratio=c["lam"],
+                       speed_rpm=c["w"] * 30 / math.pi, acceleration="exact",
+                       pin_offset_mm=1000 * c["e"])
+    d["masses"] = dict(reciprocating_kg=c["mj"], rod_rotating_kg=0.5)
+    d["pressure"] = dict(angle_deg=[0, 350, 370], p_MPa=[0.1, c["p"] / 1e6 + 0.1, 0.2])
+    spec = engine.load_spec(d)
+    theta = np.arange(0.0, 720.0, 5.0)
+    t = engine.force_table(spec, theta, bank_deg=c["bank"], phase_deg=c["phase"])
+    sc = max(scale(t), 1.0)
+    np.testing.assert_allclose(t["T_N"] * spec.R * spec.omega, t["P_N"] * t["v_m_s"],
+                               atol=1e-9 * sc * spec.R * spec.omega)
+    np.testing.assert_allclose(t["S_N"] ** 2, t["K_N"] ** 2 + t["T_N"] ** 2,
+                               rtol=1e-10, atol=1e-10 * sc ** 2)
+    np.testing.assert_allclose(t["M_Nm"], t["T_N"] * spec.R, rtol=1e-12,
+                               atol=1e-12 * sc * spec.R)
+    up = engine.force_table(spec, theta, phase_deg=c["phase"])
+    np.testing.assert_allclose(t["T_N"], up["T_N"], rtol=1e-9, atol=1e-9 * sc)
+    np.testing.assert_allclose(t["N_N"], up["N_N"], rtol=1e-9, atol=1e-9 * sc)
+    # the closed form of the offset mechanism: N = P tg β, Sш = P/cos β
+    beta = np.arcsin(spec.lam * (np.sin(np.radians(theta - c["phase"])) - spec.k_offset))
+    np.testing.assert_allclose(t["N_N"], t["P_N"] * np.tan(beta), rtol=1e-9, atol=1e-9 * sc)
+    np.testing.assert_allclose(t["S_N"], t["P_N"] / np.cos(beta), rtol=1e-9, atol=1e-9 * sc)
