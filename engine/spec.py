@@ -191,7 +191,7 @@ _MASS_PARTS = ("piston_group_kg", "rod_kg")
 _MASS_AREA = ("piston_group_kg_m2", "rod_kg_m2")
 _MASS_KEYS = _MASS_DIRECT + _MASS_PARTS + _MASS_AREA + ("rod_small_end_fraction",
                                                         "crank_rotating_kg")
-_PRESSURE_KEYS = ("angle_deg", *PRESSURE_UNITS, "file", "cycle")
+_PRESSURE_KEYS = ("angle_deg", *PRESSURE_UNITS, "file", "cycle", "firing_tdc_deg")
 _CYCLE_KEYS = ("kind", "compression_ratio", "pa_MPa", "pr_MPa", "n1", "n2", "pz_MPa",
                "lambda_z", "rho", "rounding", "advance_deg", "pc_factor", "peak_factor",
                "peak_after_tdc_deg", "exhaust_opening_deg", "intake_opening_deg",
@@ -261,7 +261,7 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
         base = Path(base_dir) if base_dir is not None else Path.cwd()
         source_path = None
     c = Checker()
-    c.unknown(data, ("engine", "masses", "pressure", "table"))
+    c.unknown(data, ("engine", "masses", "pressure", "table", "rod", "bearings"))
 
     # ---- [engine]
     e = c.table(data, "engine")
@@ -354,6 +354,11 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
             pfile = (base / fname) if not Path(fname).is_absolute() else Path(fname)
             if not pfile.is_file():
                 c.add("pressure.file", f"file {str(pfile)!r} does not exist")
+            elif pfile.suffix.lower() == ".ind":          # Diesel-RK export
+                from .dieselrk import DIESEL_RK_TDC_DEG, read_ind
+                angle, p = read_ind(pfile, cycle_deg, c.number(
+                    pr, "firing_tdc_deg", "pressure", required=False,
+                    default=DIESEL_RK_TDC_DEG), c)
             else:
                 angle, p = read_pressure_csv(pfile, cycle_deg, c)
     elif sources == ["cycle"]:
@@ -390,7 +395,7 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
     else:
         L = L_mm / 1000.0
         lam = R / L
-    return EngineSpec(
+    spec = EngineSpec(
         name=name.strip(), strokes=int(strokes), bore=bore / 1000.0, stroke=stroke / 1000.0,
         R=R, L=L, lam=lam, speed_rpm=speed, omega=math.pi * speed / 30.0, p0=p0 * 1e6,
         acceleration=accel, mj=float(mj), m_rod_rot=float(m_rot), m_crank_rot=m_crank,
@@ -400,6 +405,9 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
         extra_angles_deg=tuple(sorted(set(extra or []))), force_scale=mu,
         compression_ratio=eps, cylinders=int(cylinders), source_path=source_path,
         raw=data)
+    from .bearing_spec import validate_options       # [rod] and [bearings]
+    validate_options(spec)
+    return spec
 
 
 def _check_pressure_points(c, angle, p, cycle_deg, where):
