@@ -200,8 +200,10 @@ class RodModelComparison:
     its K being K + Kr.ш) and the rigid rod (``rigid``), ``K_*_N``, ``T_*_N``, ``M_*_Nm``,
     ``R_*_N``, and the differences rigid − two-mass ``dK_N``, ``dT_N``, ``dM_Nm``,
     ``dR_N``.  ``extremes``: {column: (max, α at max, min, α at min)} of the differences.
-    ``rod``: the :class:`RigidRod`; ``J_two_mass``: m·a·b [kg·m²]; ``acceleration``: the
-    two-mass table's mode (the rigid rod is always exact).
+    ``rod``: the :class:`RigidRod`; ``J_two_mass``: m·a·b [kg·m²]; ``acceleration``:
+    "exact": both models use the exact piston kinematics, so the differences are those of
+    the rod's moment of inertia alone (with a two-term spec the two-mass table is
+    recomputed with the exact acceleration for the comparison).
     """
 
     table: object
@@ -221,16 +223,21 @@ def compare_rod_models(spec, rod: RigidRod, alpha_deg=None, table=None):
     alpha_deg : array_like, optional
         Angles [deg]; default those of ``table`` or the table rows.
     table : pandas.DataFrame, optional
-        The two-mass force table at those angles (computed if not given).
+        The two-mass force table at those angles, used as is when the spec's acceleration
+        is exact (else recomputed with the exact acceleration at its angles).
 
     Returns
     -------
     RodModelComparison
     """
     import pandas as pd
+    from dataclasses import replace
 
-    if table is None:
-        table = force_table(spec, alpha_deg)
+    if table is not None and alpha_deg is None:
+        alpha_deg = table["alpha_deg"].to_numpy()
+    if table is None or spec.acceleration != "exact":
+        exact = spec if spec.acceleration == "exact" else replace(spec, acceleration="exact")
+        table = force_table(exact, alpha_deg)
     a = table["alpha_deg"].to_numpy()
     rg = rigid_rod_forces(a, spec.R, spec.L, spec.omega, table["dPg_N"].to_numpy(), rod)
     K2 = (table["K_N"] + table["Kr_N"]).to_numpy()
@@ -247,5 +254,4 @@ def compare_rod_models(spec, rod: RigidRod, alpha_deg=None, table=None):
         y = df[col].to_numpy()
         i, k = int(np.argmax(y)), int(np.argmin(y))
         ext[col] = (float(y[i]), float(a[i]), float(y[k]), float(a[k]))
-    return RodModelComparison(df, ext, rod, rod.two_mass_inertia(spec.L),
-                              spec.acceleration)
+    return RodModelComparison(df, ext, rod, rod.two_mass_inertia(spec.L), "exact")
