@@ -38,6 +38,9 @@ __all__ = ["wear_profile", "least_wear_direction", "WearDiagram", "wear_diagram"
 
 #: Half-angle of the arc each load wears, as in the textbooks [1]_. [deg]
 DEFAULT_HALF_ANGLE_DEG = 60.0
+#: A contact point this close to the end of an arc counts as inside it (the ends belong to
+#: the arc; angles computed through atan2 and a shift carry ~1e-13° of round-off). [deg]
+_EDGE_DEG = 1e-9
 
 
 def _weights(alpha_deg):
@@ -81,13 +84,21 @@ def wear_profile(contact_deg, magnitude, half_angle_deg=DEFAULT_HALF_ANGLE_DEG,
     if not (np.isfinite(half_angle_deg) and 0 < half_angle_deg <= 180):
         raise SpecError(Problem("wear_half_angle_deg",
                                 f"got {half_angle_deg!r}; must be in (0, 180]"))
-    c = np.asarray(contact_deg, float).ravel()
+    c = np.mod(np.asarray(contact_deg, float).ravel(), 360.0)
     m = np.asarray(magnitude, float).ravel()
     w = np.ones_like(m) if weights is None else np.asarray(weights, float).ravel()
+    v = w * m
     phi = np.arange(n_points) * (360.0 / n_points)
-    d = np.abs(np.mod(phi[:, None] - c[None, :] + 180.0, 360.0) - 180.0)
-    inside = d <= half_angle_deg + 1e-9
-    return phi, inside.astype(float) @ (w * m)
+    if half_angle_deg >= 180.0:                     # every load wears the whole circle
+        return phi, np.full(n_points, v.sum())
+    # window sums by prefix sums over the contact angles, sorted and repeated one turn
+    # either side so that a window [φ − h, φ + h] never wraps (O((n + N) log n))
+    order = np.argsort(c, kind="stable")
+    ce = np.concatenate([c[order] - 360.0, c[order], c[order] + 360.0])
+    cum = np.concatenate([[0.0], np.cumsum(np.tile(v[order], 3))])
+    lo = np.searchsorted(ce, phi - half_angle_deg - _EDGE_DEG, side="left")
+    hi = np.searchsorted(ce, phi + half_angle_deg + _EDGE_DEG, side="right")
+    return phi, cum[hi] - cum[lo]
 
 
 def least_wear_direction(phi_deg, wear):

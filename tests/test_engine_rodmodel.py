@@ -51,8 +51,9 @@ def test_two_mass_inertia_reproduces_the_table():
 
 
 def test_real_inertia_differs_and_only_through_J():
-    """A rod with a larger J (a real rod's is some 10–30 % above m·a·b): the torque and the
-    pin load change; at TDC and BDC the rod's ε is extreme and its centre of mass moves the
+    """A rod whose J differs from m·a·b (a real rod's is usually smaller, the two-mass
+    model overstating it; here 25 % larger, the formula holds for either sign): the
+    torque and the pin load change; at TDC and BDC the rod's ε is extreme and its centre of mass moves the
     same in both models, so the difference is J's extra inertia couple −ΔJ·ε₃ alone."""
     L, m, b = 0.150, 0.88, 0.28 * 0.150
     J2 = m * b * (L - b)
