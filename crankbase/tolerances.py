@@ -31,3 +31,8 @@ SAME_ANGLE_DEG = 1e-6
 #: extreme position is confirmed against the assembly branch (the closed form goes through
 #: a square root, which loses about half the digits near a double root).
 ASSEMBLY_CHECK_RTOL = 1e-7
+
+#: Step of the central difference that gives the slope of a polytrope p(α) at a rounding
+#: knot of the indicator diagram [deg]: small against the 10–50° rounding zones, large
+#: enough that the difference of pressures keeps ~8 significant digits.
+POLYTROPE_SLOPE_STEP_DEG = 1e-4

@@ -1,7 +1,7 @@
 """Bearing loads, wear diagrams and the rod model of a one-cylinder engine spec.
 
-Reads the optional spec tables ``[bearings]`` and ``[rod]`` (:mod:`engine.rodmodel`) and
-composes :mod:`engine.bearings`, :mod:`engine.wear` and :mod:`engine.rodmodel` on the
+Reads the optional spec tables ``[bearings]`` and ``[rod]`` (:mod:`engine.rodmodel`;
+:func:`read_bearing_inputs`, their keys checked by :func:`engine.load` too) and composes :mod:`engine.bearings`, :mod:`engine.wear` and :mod:`engine.rodmodel` on the
 force table of :func:`engine.force_table` into one typed result,
 :class:`BearingAnalysis`.  (A multi-cylinder crank train feeds the same array functions
 with its own layout.)
@@ -28,7 +28,6 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from crankbase.errors import Problem, SpecError
 from crankbase.validation import Checker
 
 from .bearings import (Crankshaft, CrankshaftLoads, big_end_load, crank_pin_load,
@@ -37,8 +36,9 @@ from .forces import _psi
 from .rodmodel import RigidRod, _parts, compare_rod_models, rod_options
 from .wear import DEFAULT_HALF_ANGLE_DEG, WearDiagram, wear_diagram
 
-__all__ = ["BEARING_KEYS", "BearingOptions", "bearing_options", "validate_options",
-           "BearingAnalysis", "bearing_analysis", "wear_table", "rod_bearing_table"]
+__all__ = ["BEARING_KEYS", "BearingOptions", "bearing_options", "check_tables",
+           "BearingInputs", "read_bearing_inputs", "BearingAnalysis", "bearing_analysis",
+           "wear_table", "rod_bearing_table", "piston_mass"]
 
 BEARING_KEYS = ("wear_half_angle_deg", "journal_positions_mm", "counterweight_kg_mm",
                 "counterweight_angle_deg")
@@ -59,11 +59,13 @@ class BearingOptions:
     counterweight_angle_deg: float = 180.0
 
 
-def bearing_options(spec, checker=None):
-    """Validated :class:`BearingOptions` from ``spec.raw["bearings"]``."""
+def bearing_options(table, checker=None):
+    """Validated :class:`BearingOptions` from the ``[bearings]`` table (None: defaults)."""
     c = checker if checker is not None else Checker()
-    raw = getattr(spec, "raw", None) or {}
-    t = c.table(raw, "bearings", required=False)
+    t = table if table is not None else {}
+    if not isinstance(t, dict):
+        c.add("bearings", f"must be a table, got {t!r}")
+        t = {}
     c.unknown(t, BEARING_KEYS, "bearings")
     h = c.number(t, "wear_half_angle_deg", "bearings", required=False,
                  default=DEFAULT_HALF_ANGLE_DEG, gt=0, le=180)
@@ -88,23 +90,65 @@ def bearing_options(spec, checker=None):
         (mr or 0.0) / 1e3, ang if ang is not None else 180.0)
 
 
-def validate_options(spec):
-    """Check ``[bearings]``, ``[rod]`` and ``[pressure] firing_tdc_deg`` of a loaded spec;
-    raise one :class:`SpecError` with every problem (called by :func:`engine.load_spec`)."""
-    c = Checker()
-    bearing_options(spec, c)
-    raw = getattr(spec, "raw", None) or {}
-    pr = raw.get("pressure", {})
+def check_tables(c, data):
+    """Check the keys of ``[bearings]``, ``[rod]`` and ``[pressure] firing_tdc_deg`` of a
+    spec file's dict, adding the problems to the checker ``c`` (called by
+    :func:`engine.load`, so that every problem of a file is reported at once)."""
+    if "bearings" in data:
+        bearing_options(data["bearings"], c)
+    if "rod" in data:
+        rod_options(data["rod"], None, c)
+    pr = data.get("pressure")
     if isinstance(pr, dict) and "firing_tdc_deg" in pr and not (
-            spec.pressure_file is not None and spec.pressure_file.suffix.lower() == ".ind"):
+            isinstance(pr.get("file"), str) and pr["file"].lower().endswith(".ind")):
         c.add("pressure.firing_tdc_deg", "only used with a Diesel-RK file = \"....ind\"")
-    try:
-        rod_options(spec)
-    except SpecError as exc:
-        c.problems.extend(exc.problems)
+
+
+@dataclass(frozen=True)
+class BearingInputs:
+    """The inputs of the bearing calculation beside the engine spec.
+
+    ``options``: :class:`BearingOptions`; ``rod_model``: "two-mass" or "rigid"; ``rod``:
+    the :class:`~engine.rodmodel.RigidRod` (None for the two-mass rod); ``asked``: the
+    spec file has a ``[bearings]`` or ``[rod]`` table.
+    """
+
+    options: BearingOptions = BearingOptions()
+    rod_model: str = "two-mass"
+    rod: RigidRod | None = None
+    asked: bool = False
+
+
+def read_bearing_inputs(path_or_dict, spec):
+    """The ``[bearings]`` and ``[rod]`` tables of a spec file, for its loaded engine.
+
+    Parameters
+    ----------
+    path_or_dict : str, Path or dict
+        The spec file (as given to :func:`engine.load`) or its dict.
+    spec : EngineSpec
+        The engine loaded from it (for the rigid rod's defaults and checks).
+
+    Returns
+    -------
+    BearingInputs
+
+    Raises
+    ------
+    EngineSpecError
+        Every problem of the two tables.
+    """
+    from crankbase.validation import read_toml
+
+    from .spec import EngineSpecError
+
+    data, _ = read_toml(path_or_dict)
+    c = Checker()
+    opt = bearing_options(data.get("bearings"), c)
+    model, rod = rod_options(data.get("rod"), spec, c)
     if c.problems:
-        from .spec import EngineSpecError
         raise EngineSpecError(c.problems)
+    return BearingInputs(opt, model, rod, "bearings" in data or "rod" in data)
 
 
 def piston_mass(spec, rod: RigidRod | None = None):
@@ -175,7 +219,7 @@ def _shaft(spec, opt):
     return Crankshaft((0.0,), (0.0,), tuple(opt.journal_positions), (m_k,), cw)
 
 
-def bearing_analysis(spec, table, n_points=360):
+def bearing_analysis(spec, table, inputs: BearingInputs | None = None, n_points=360):
     """Bearing loads, wear diagrams and the rod model of a one-cylinder spec.
 
     Parameters
@@ -184,6 +228,8 @@ def bearing_analysis(spec, table, n_points=360):
     table : pandas.DataFrame
         :func:`engine.force_table` over the whole cycle, sorted, preferably on a fine grid
         (:func:`engine.fine_angles`): the statistics and wear integrate over its rows.
+    inputs : BearingInputs, optional
+        From :func:`read_bearing_inputs` (default: the defaults and the two-mass rod).
     n_points : int
         Points of the wear diagrams around the circumference.
 
@@ -191,8 +237,8 @@ def bearing_analysis(spec, table, n_points=360):
     -------
     BearingAnalysis
     """
-    opt = bearing_options(spec)
-    model, rod = rod_options(spec)
+    inputs = inputs if inputs is not None else BearingInputs()
+    opt, model, rod = inputs.options, inputs.rod_model, inputs.rod
     a = table["alpha_deg"].to_numpy()
     Kp, Tp = crank_pin_load(table["K_N"].to_numpy(), table["T_N"].to_numpy(),
                             spec.m_rod_rot, spec.R, spec.omega)
@@ -211,7 +257,8 @@ def bearing_analysis(spec, table, n_points=360):
     if mp is None:
         notes.append("piston-pin load not computed: give the masses as parts "
                      "(piston_group_kg, rod_kg) or [rod] mass_kg")
-    comp = compare_rod_models(spec, rod, table=table) if model == "rigid" else None
+    comp = compare_rod_models(spec, rod, table=table) \
+        if model == "rigid" and rod is not None else None
     return BearingAnalysis(loads, pin_wear, jw, rod_bearing_table(table, spec, mp), model,
                            comp, opt, mp, notes)
 

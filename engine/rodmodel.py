@@ -11,7 +11,8 @@ RRP dyad and the reactions from the dyad's kinetostatics (:mod:`linkage.groups`)
 Mкр and the pin load are exact for that body.  With J = m·a·b (and exact acceleration) it
 reproduces the two-mass table exactly.
 
-Spec table ``[rod]`` (read by :func:`rod_options`):
+Spec table ``[rod]`` (read by :func:`rod_options`; :func:`engine.load` checks its keys,
+:func:`engine.bearing_spec.read_bearing_inputs` builds the rod for a loaded spec):
 
 ``model``
     ``"two-mass"`` (default, the textbook) or ``"rigid"`` (computed beside it).
@@ -41,11 +42,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from crankbase.errors import Problem, SpecError
 from linkage.groups import Wrench, dot, driver_reactions, link_wrench, rrp_reactions
 
 from .forces import _psi, force_table
-from .kinematics import GUIDE_ANGLE, crank_slider
+from .kinematics import crank_slider
 
 __all__ = ["RigidRod", "rod_options", "rigid_rod_forces", "RodModelComparison",
            "compare_rod_models", "ROD_MODELS", "ROD_KEYS"]
@@ -82,8 +82,19 @@ def _parts(spec):
     return None
 
 
-def rod_options(spec):
-    """The ``[rod]`` table of a spec: ``("two-mass", None)`` or ``("rigid", RigidRod)``.
+def rod_options(table, spec=None, checker=None):
+    """Read the ``[rod]`` table: ``("two-mass", None)`` or ``("rigid", RigidRod)``.
+
+    Parameters
+    ----------
+    table : dict or None
+        The ``[rod]`` table of the spec file (None or {} when absent).
+    spec : EngineSpec, optional
+        The engine, for the defaults and the checks that need it (mass, centre of mass,
+        piston mass); without it only the keys and their ranges are checked and the
+        rigid rod is not built (``("rigid", None)``).
+    checker : Checker, optional
+        Problems are added to it (else a :class:`SpecError` is raised).
 
     Raises
     ------
@@ -93,38 +104,48 @@ def rod_options(spec):
     """
     from crankbase.validation import Checker
 
-    raw = getattr(spec, "raw", None) or {}
-    c = Checker()
-    t = c.table(raw, "rod", required=False) if "rod" in raw else {}
+    c = checker if checker is not None else Checker()
+    n0 = len(c.problems)
+    t = table if table is not None else {}
+    out = ("two-mass", None)
     if not isinstance(t, dict):
-        c.raise_if_any()
-        return "two-mass", None
+        c.add("rod", f"must be a table, got {t!r}")
+        t = {}
     c.unknown(t, ROD_KEYS, "rod")
     model = c.choice(t, "model", ROD_MODELS, "rod", required=False, default="two-mass")
     if model != "rigid":
-        extra = [k for k in t if k != "model" and k in ROD_KEYS]
-        for k in extra:
-            c.add(f"rod.{k}", 'only used with model = "rigid"')
+        for k in t:
+            if k != "model" and k in ROD_KEYS:
+                c.add(f"rod.{k}", 'only used with model = "rigid"')
+    else:
+        out = ("rigid", _rigid(c, t, spec))
+    if checker is None:
         c.raise_if_any()
-        return "two-mass", None
+    return out if len(c.problems) == n0 else ("two-mass", None)
+
+
+def _rigid(c, t, spec):
     J = c.number(t, "inertia_kg_m2", "rod", gt=0,
                  what="the rod's moment of inertia about its centre of mass [kg·m²]")
+    m = c.number(t, "mass_kg", "rod", required=False, gt=0)
+    b_mm = c.number(t, "cg_from_big_end_mm", "rod", required=False, gt=0)
+    if spec is None:
+        return None
     parts = _parts(spec)
-    if "mass_kg" in t:
-        m = c.number(t, "mass_kg", "rod", gt=0)
-    elif parts is not None:
-        m = parts[1]
-    else:
-        c.add("rod.mass_kg", "missing; needed for the rigid rod when [masses] gives "
-                             "reciprocating_kg and rod_rotating_kg")
-        m = None
     L = spec.L
+    if m is None and "mass_kg" not in t:
+        if parts is None:
+            c.add("rod.mass_kg", "missing; needed for the rigid rod when [masses] gives "
+                                 "reciprocating_kg and rod_rotating_kg")
+        else:
+            m = parts[1]
     b = None
-    if "cg_from_big_end_mm" in t:
-        b_mm = c.number(t, "cg_from_big_end_mm", "rod", gt=0, lt=L * 1e3,
-                        what=f"the centre of mass from the crank pin, 0 < b < Lш = "
-                             f"{L * 1e3:g} mm")
-        b = None if b_mm is None else b_mm / 1e3
+    if b_mm is not None:
+        if not b_mm < L * 1e3:
+            c.add("rod.cg_from_big_end_mm", f"got {b_mm:g}; the centre of mass must lie "
+                                            f"on the rod, 0 < b < Lш = {L * 1e3:g} mm")
+        else:
+            b = b_mm / 1e3
     elif m is not None:
         small = m - spec.m_rod_rot
         if not 0 < small < m:
@@ -132,17 +153,17 @@ def rod_options(spec):
                                  f"{spec.m_rod_rot:g} kg (or give cg_from_big_end_mm)")
         else:
             b = L * small / m
-    mp = None
-    if m is not None and b is not None:
-        mp = parts[0] if parts is not None else spec.mj - (m - spec.m_rod_rot)
-        if mp < 0:
-            c.add("rod.mass_kg", f"got {m:g} kg: the piston mass mj − (m − mш.к) = "
-                                 f"{mp:g} kg would be negative")
-    c.raise_if_any()
-    return "rigid", RigidRod(float(m), float(b), float(J), float(mp))
+    if m is None or b is None or J is None:
+        return None
+    mp = parts[0] if parts is not None else spec.mj - (m - spec.m_rod_rot)
+    if mp < 0:
+        c.add("rod.mass_kg", f"got {m:g} kg: the piston mass mj − (m − mш.к) = "
+                             f"{mp:g} kg would be negative")
+        return None
+    return RigidRod(float(m), float(b), float(J), float(mp))
 
 
-def rigid_rod_forces(alpha_deg, R, L, omega, dPg, rod: RigidRod):
+def rigid_rod_forces(alpha_deg, R, L, omega, dPg, rod: RigidRod, offset=0.0):
     """Forces of the crank-slider with a rigid rod, by the RRP dyad's kinetostatics.
 
     Parameters
@@ -154,6 +175,8 @@ def rigid_rod_forces(alpha_deg, R, L, omega, dPg, rod: RigidRod):
     dPg : array_like
         Gas force ΔPг, + towards the crank axis. [N]
     rod : RigidRod
+    offset : float
+        Piston-pin offset e (désaxé), as in :func:`engine.kinematics.crank_slider`. [m]
 
     Returns
     -------
@@ -174,9 +197,9 @@ def rigid_rod_forces(alpha_deg, R, L, omega, dPg, rod: RigidRod):
     :func:`linkage.groups.driver_reactions` with a massless crank [2]_.
     """
     a = np.radians(np.asarray(alpha_deg, float))
-    mech = crank_slider(a, R, L, omega)
+    mech = crank_slider(a, R, L, omega, offset=offset)
     sol = mech.dyad
-    u = np.exp(1j * GUIDE_ANGLE)
+    u = sol.link4.e                          # the guide: the cylinder axis towards TDC
     zB = sol.B.z
     W3 = link_wrench(sol.link3, mass=rod.mass, inertia=rod.inertia, cg=rod.cg)
     W4 = link_wrench(sol.link4, mass=rod.m_piston,
@@ -239,7 +262,8 @@ def compare_rod_models(spec, rod: RigidRod, alpha_deg=None, table=None):
         exact = spec if spec.acceleration == "exact" else replace(spec, acceleration="exact")
         table = force_table(exact, alpha_deg)
     a = table["alpha_deg"].to_numpy()
-    rg = rigid_rod_forces(a, spec.R, spec.L, spec.omega, table["dPg_N"].to_numpy(), rod)
+    rg = rigid_rod_forces(a, spec.R, spec.L, spec.omega, table["dPg_N"].to_numpy(), rod,
+                          spec.pin_offset)
     K2 = (table["K_N"] + table["Kr_N"]).to_numpy()
     T2 = table["T_N"].to_numpy()
     M2 = table["M_Nm"].to_numpy()

@@ -16,7 +16,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import engine
-from engine.bearing_spec import bearing_analysis, rod_bearing_table
+from engine.bearing_spec import bearing_analysis, read_bearing_inputs, rod_bearing_table
 from engine.bearings import (BearingInputError, Crankshaft, crank_pin_load,
                              crankshaft_loads, cylinder_alpha, journal_torques, lever_rule)
 
@@ -30,11 +30,15 @@ BASE = {
 }
 
 
-def make(**sections):
+def spec_dict(**sections):
     d = copy.deepcopy(BASE)
     for k, v in sections.items():
         d.setdefault(k, {}).update(v)
-    return engine.load_spec(d)
+    return d
+
+
+def make(**sections):
+    return engine.load_spec(spec_dict(**sections))
 
 
 def rel(a, b):
@@ -47,7 +51,7 @@ def rel(a, b):
 
 def test_single_cylinder_pin_is_the_tables_rshsh():
     spec = make()
-    t = engine.force_table(spec, engine.fine_angles(spec, 1.0))
+    t = engine.force_table(spec, engine.fine_angles(spec, step_deg=1.0))
     K, T = crank_pin_load(t["K_N"], t["T_N"], spec.m_rod_rot, spec.R, spec.omega)
     assert np.allclose(np.hypot(K, T), t["R_N"], rtol=1e-13, atol=0)
     res = bearing_analysis(spec, t)
@@ -55,8 +59,8 @@ def test_single_cylinder_pin_is_the_tables_rshsh():
     assert np.array_equal(res.loads.crankpins["psi_1_deg"], t["psi_deg"])
     # χ and the mean as the force table's summary gives them
     s = engine.summarize(t, spec)
-    assert res.loads.pin_stats[0].mean_N == pytest.approx(s["R_mean_N"], rel=1e-12)
-    assert res.loads.pin_stats[0].chi == pytest.approx(s["chi"], rel=1e-12)
+    assert res.loads.pin_stats[0].mean_N == pytest.approx(s.R_mean_N, rel=1e-12)
+    assert res.loads.pin_stats[0].chi == pytest.approx(s.chi, rel=1e-12)
 
 
 def _rod_force_engine_frame(t, bank_deg, spec):
@@ -215,9 +219,10 @@ def test_journal_torques_helper():
 def test_single_cylinder_counterweight_and_crank_mass():
     """One throw between two journals at −40 and +60 mm: the journals carry 60 % and 40 %
     of the pin load plus mк·R·ω² outwards plus the counterweight's m·r·ω² opposite."""
-    spec = make(bearings=dict(journal_positions_mm=[-40.0, 60.0], counterweight_kg_mm=30.0))
+    d = spec_dict(bearings=dict(journal_positions_mm=[-40.0, 60.0], counterweight_kg_mm=30.0))
+    spec = engine.load_spec(d)
     t = engine.force_table(spec, np.arange(0.0, 720.0, 5.0))
-    res = bearing_analysis(spec, t)
+    res = bearing_analysis(spec, t, read_bearing_inputs(d, spec))
     a = np.radians(t["alpha_deg"].to_numpy())
     e = np.exp(1j * (np.pi / 2 + a))
     pin = e * (-(t["K_N"] + t["Kr_N"]).to_numpy() + 1j * t["T_N"].to_numpy())

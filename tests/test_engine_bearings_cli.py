@@ -57,8 +57,9 @@ def test_bearings_flag_writes_tables_equal_to_the_library(tmp_path, capsys):
     for stem in BEARING_PLOT_NAMES[:-1]:
         for ext in ("png", "svg"):
             assert (out / f"{stem}.{ext}").stat().st_size > 1000, stem
-    spec = engine.load_spec(example_path("diesel_d240.toml"))
-    t = engine.force_table(spec)
+    study = engine.load(example_path("diesel_d240.toml"))
+    spec = study.spec
+    t = engine.force_table(spec, settings=study.settings)
     res = bearing_analysis(spec, t)
     pins = pd.read_csv(out / "crankpins.csv")
     np.testing.assert_array_equal(pins.to_numpy(), res.loads.crankpins.to_numpy())

@@ -48,9 +48,10 @@ def d240():
 def write_ind(path, fi, spec, tdc=360.0, preamble=True, rows=None, eol="\r\n"):
     """A Diesel-RK-style file of the D-240 diagram at the angles ``fi`` (file scale)."""
     alpha = np.mod(np.asarray(fi, float) - tdc + 360.0, spec.cycle_deg)
-    p_bar = interpolate_periodic(alpha, spec.angle_deg, spec.p, spec.cycle_deg) / 1e5
-    Vc = spec.Vh / (spec.compression_ratio - 1.0)
-    V = Vc * volume_ratio(alpha, spec.lam, spec.compression_ratio)
+    p_bar = interpolate_periodic(alpha, np.array(spec.pressure.angle_deg),
+                                 np.array(spec.pressure.p), spec.cycle_deg) / 1e5
+    Vc = spec.Vh / (spec.epsilon - 1.0)
+    V = Vc * volume_ratio(alpha, spec.lam, spec.epsilon)
     lines = (PREAMBLE.splitlines() if preamble else
              ["Fi        Pc        Tc        V         Alf_w     P_1ring   G_bb      "
               "P_pist    x", "Arrays"])
@@ -72,9 +73,9 @@ def spec_with(tmp_path, name, **pressure):
 
 def test_volume_ratio_of_the_fixture_is_least_at_tdc():
     s = d240()
-    vr = volume_ratio(np.array([0.0, 180.0, 360.0]), s.lam, s.compression_ratio)
+    vr = volume_ratio(np.array([0.0, 180.0, 360.0]), s.lam, s.epsilon)
     assert vr[0] == pytest.approx(1.0) and vr[2] == pytest.approx(1.0)
-    assert vr[1] == pytest.approx(s.compression_ratio)
+    assert vr[1] == pytest.approx(s.epsilon)
 
 
 def test_diesel_rk_file_gives_the_same_table_as_the_csv(tmp_path):
@@ -88,8 +89,9 @@ def test_diesel_rk_file_gives_the_same_table_as_the_csv(tmp_path):
         assert np.allclose(t[col], t_ref[col], rtol=1e-12,
                            atol=1e-12 * np.abs(t_ref[col]).max()), col
     # the rows landed at α = Fi mod 720: Fi = 366 is α = 366
-    assert spec.angle_deg[0] == 0.0 and spec.angle_deg[-1] == 719.0
-    assert len(spec.angle_deg) == 720
+    assert spec.pressure.angle_deg[0] == 0.0 and spec.pressure.angle_deg[-1] == 719.0
+    assert len(spec.pressure.angle_deg) == 720
+    assert spec.pressure_file == (tmp_path / "d240.ind").resolve()
 
 
 def test_another_origin_is_shifted(tmp_path):
@@ -191,4 +193,4 @@ def test_cp1251_preamble_is_read(tmp_path):
     raw = raw.replace("Crank angle, [deg]", "Угол поворота коленчатого вала, [град.]")
     (tmp_path / "r.ind").write_bytes(raw.encode("cp1251"))
     a, p = read_ind(tmp_path / "r.ind", 720.0)
-    assert math.isclose(p.max(), ref.p.max(), rel_tol=1e-12)
+    assert math.isclose(p.max(), max(ref.pressure.p), rel_tol=1e-12)

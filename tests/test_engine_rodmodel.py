@@ -9,7 +9,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import engine
-from engine.rodmodel import RigidRod, compare_rod_models, rigid_rod_forces, rod_options
+from engine.bearing_spec import read_bearing_inputs
+from engine.rodmodel import RigidRod, compare_rod_models, rigid_rod_forces
 from newton_euler import reference
 
 BASE = {
@@ -30,6 +31,15 @@ def make(rod=None, **engine_keys):
     return engine.load_spec(d)
 
 
+def rod_options(rod):
+    """(model, RigidRod) of a [rod] table on BASE, as the CLI reads them."""
+    d = copy.deepcopy(BASE)
+    d["rod"] = rod
+    spec = engine.load_spec(d)
+    inp = read_bearing_inputs(d, spec)
+    return inp.rod_model, inp.rod
+
+
 def test_two_mass_inertia_reproduces_the_table():
     """J = mш.п·a² + mш.к·b² = m·a·b (centre of mass at b = 0.28·L from the crank pin):
     the rigid rod and the two-mass table agree to round-off, exact acceleration."""
@@ -38,7 +48,7 @@ def test_two_mass_inertia_reproduces_the_table():
     J2 = 0.28 * m * (L - b) ** 2 + (1 - f) * m * b ** 2
     assert J2 == pytest.approx(m * b * (L - b))
     spec = make(rod=dict(model="rigid", inertia_kg_m2=J2))
-    model, rod = rod_options(spec)
+    model, rod = rod_options(dict(model="rigid", inertia_kg_m2=J2))
     assert model == "rigid"
     assert (rod.mass, rod.cg, rod.m_piston) == pytest.approx((m, b, 0.62))
     cmp_ = compare_rod_models(spec, rod)
@@ -58,7 +68,7 @@ def test_real_inertia_differs_and_only_through_J():
     L, m, b = 0.150, 0.88, 0.28 * 0.150
     J2 = m * b * (L - b)
     spec = make(rod=dict(model="rigid", inertia_kg_m2=1.25 * J2))
-    _, rod = rod_options(spec)
+    _, rod = rod_options(dict(model="rigid", inertia_kg_m2=1.25 * J2))
     c = compare_rod_models(spec, rod)
     assert c.table["dT_N"].abs().max() > 1.0
     # on the cylinder axis (α = 0, 180°) the couple −ΔJ·ε₃ is balanced by a pair of forces
@@ -124,19 +134,31 @@ def test_rigid_rod_against_newton_euler(j_factor, f_cg):
 ])
 def test_bad_rod_keys_are_named(rod, message):
     with pytest.raises(engine.EngineSpecError, match=message.replace(".", r"\.")):
-        make(rod=rod)
+        rod_options(rod)
 
 
 def test_direct_masses_need_the_rod_mass():
     d = copy.deepcopy(BASE)
     d["masses"] = dict(reciprocating_kg=0.87, rod_rotating_kg=0.63)
     d["rod"] = dict(model="rigid", inertia_kg_m2=0.003)
+    spec = engine.load_spec(d)          # the keys are fine; the rod needs its mass
     with pytest.raises(engine.EngineSpecError, match="rod.mass_kg: missing"):
-        engine.load_spec(d)
+        read_bearing_inputs(d, spec)
     d["rod"]["mass_kg"] = 0.88          # mш.п = 0.25, mп = 0.87 − 0.25
-    _, rod = rod_options(engine.load_spec(d))
+    rod = read_bearing_inputs(d, engine.load_spec(d)).rod
     assert rod.m_piston == pytest.approx(0.62)
     assert rod.cg == pytest.approx(0.150 * 0.25 / 0.88)
     d["rod"]["mass_kg"] = 2.0           # mш.п = 1.37 > mj
     with pytest.raises(engine.EngineSpecError, match="would be negative"):
+        read_bearing_inputs(d, engine.load_spec(d))
+
+
+def test_rod_key_problems_come_with_the_engine_problems():
+    """engine.load reports a bad [rod] key together with the other problems of the file."""
+    d = copy.deepcopy(BASE)
+    d["rod"] = dict(model="rigid", inertia_kg_m2=-1.0)
+    d["engine"]["bore_mm"] = -5.0
+    with pytest.raises(engine.EngineSpecError) as exc:
         engine.load_spec(d)
+    text = str(exc.value)
+    assert "engine.bore_mm" in text and "rod.inertia_kg_m2: got -1" in text
