@@ -411,10 +411,15 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
 
     ``[pressure]``, exactly one source: inline ``angle_deg`` with one of ``p_MPa``,
     ``p_bar``, ``p_kPa``, ``p_Pa`` (absolute); ``file`` (a CSV with a header row holding
-    ``angle_deg`` and one of those pressure columns); or ``[pressure.cycle]``.
+    ``angle_deg`` and one of those pressure columns, or a Diesel-RK ``.ind`` export read
+    by :func:`engine.dieselrk.read_ind`, with ``firing_tdc_deg`` its firing TDC, default
+    360); or ``[pressure.cycle]``.
 
     ``[table]``: ``step_deg`` (default 30), ``extra_angles_deg`` (default none),
     ``force_scale_N_per_mm`` (μP > 0, required).
+
+    ``[bearings]`` and ``[rod]`` (optional): checked here, read by
+    :func:`engine.bearing_spec.read_bearing_inputs`.
     """
     data, file_dir = read_toml(path_or_dict)
     if not isinstance(path_or_dict, dict):
