@@ -10,7 +10,7 @@ is printed at 100 %.
 from __future__ import annotations
 
 from .errors import PlanError
-from .layout import (CAP_EM, FONT, H_LABEL, H_POINT, S_MAIN, S_THIN, Arrow, Block, Circle,
+from .layout import (CAP_EM, text_width, FONT, H_LABEL, H_POINT, S_MAIN, S_THIN, Arrow, Block, Circle,
                      Line, Sheet, Text, _arrow_parts, diagram_block, lever_block,
                      positions_block)
 
@@ -182,8 +182,14 @@ def _title_block_items(x0, y0, fields, number, count, lang):
     def ln(xa, ya, xb, yb, layer="FRAME"):
         items.append(Line(z0 + complex(xa, ya), z0 + complex(xb, yb), layer))
 
-    def tx(x, y, s, h=H_LABEL, ha="center"):
+    def tx(x, y, s, h=H_LABEL, ha="center", cell=None):
+        """A text in a cell ``cell`` mm wide: smaller (never below 1.8 mm, the smallest
+        height of ГОСТ 2.304) when it would not fit."""
         if s:
+            if cell is not None:
+                w = text_width(s, h)
+                if w > cell - 1.0:
+                    h = max(1.8, h * (cell - 1.0) / w)
             items.append(Text(z0 + complex(x, y), s, h, "TEXT", ha, "center"))
 
     ln(0, 0, 185, 0)
@@ -211,30 +217,30 @@ def _title_block_items(x0, y0, fields, number, count, lang):
     heads = (["Изм.", "Лист", "№ докум.", "Подп.", "Дата"] if ru else
              ["Rev.", "Sheet", "Doc. No.", "Sign.", "Date"])
     for (xa, xb), s in zip(((0, 7), (7, 17), (17, 40), (40, 55), (55, 65)), heads):
-        tx((xa + xb) / 2, 32.5, s)
+        tx((xa + xb) / 2, 32.5, s, cell=xb - xa)
     roles = (["Разраб.", "Пров.", "Т.контр.", "", "Н.контр.", "Утв."] if ru else
              ["Drawn", "Checked", "Tech.", "", "Norm.", "Appr."])
     names = [fields["developer"], fields["checker"], fields["tech_control"], "",
              fields["norm_control"], fields["approver"]]
     for k, (role, name) in enumerate(zip(roles, names)):
         y = 27.5 - 5 * k
-        tx(1, y, role, ha="left")
-        tx(18, y, name, ha="left")
+        tx(1, y, role, ha="left", cell=17)
+        tx(18, y, name, ha="left", cell=23)
         if k == 0 and fields["date"]:
-            tx(60, y, fields["date"], h=H_LABEL)
-    tx(125, 47.5, fields["designation"], h=7.0)
-    tx(100, 27.5, fields["title"], h=5.0)
-    tx(100, 7.5, fields["material"], h=5.0)
+            tx(60, y, fields["date"], h=H_LABEL, cell=10)
+    tx(125, 47.5, fields["designation"], h=7.0, cell=120)
+    tx(100, 27.5, fields["title"], h=5.0, cell=70)
+    tx(100, 7.5, fields["material"], h=5.0, cell=70)
     for (xa, xb), s in zip(((135, 150), (150, 167), (167, 185)),
                            (["Лит.", "Масса", "Масштаб"] if ru else
                             ["Lit.", "Mass", "Scale"])):
-        tx((xa + xb) / 2, 37.5, s)
-    tx(142.5, 27.5, fields["letter"], h=H_POINT)
-    tx(158.5, 27.5, fields["mass"], h=H_POINT)
-    tx(176, 27.5, fields["scale"], h=H_POINT)
-    tx(136, 17.5, f"{'Лист' if ru else 'Sheet'} {number}", ha="left")
-    tx(156, 17.5, f"{'Листов' if ru else 'Sheets'} {count}", ha="left")
-    tx(160, 7.5, fields["organization"], h=H_POINT)
+        tx((xa + xb) / 2, 37.5, s, cell=xb - xa)
+    tx(142.5, 27.5, fields["letter"], h=H_POINT, cell=15)
+    tx(158.5, 27.5, fields["mass"], h=H_POINT, cell=17)
+    tx(176, 27.5, fields["scale"], h=H_POINT, cell=18)
+    tx(136, 17.5, f"{'Лист' if ru else 'Sheet'} {number}", ha="left", cell=19)
+    tx(156, 17.5, f"{'Листов' if ru else 'Sheets'} {count}", ha="left", cell=29)
+    tx(160, 7.5, fields["organization"], h=H_POINT, cell=50)
     return items
 
 

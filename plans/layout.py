@@ -285,7 +285,7 @@ def diagram_block(pp, kind, lang="ru") -> Block:
     segs = []
     for v in plan.vectors:
         layer = "VECTORS"
-        items.append(Arrow(v.start, v.end, layer, f"{kind}:{v.name}"))
+        items.append(Arrow(v.start, v.end, layer, f"{pp.tag}:{kind}:{v.name}"))
         segs.append((v.start, v.end))
     placer = _Placer(segs)
     # the pole and the points (kinematic plans)
