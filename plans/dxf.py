@@ -46,10 +46,6 @@ def sheet_dxf(sheet, names=None):
 
     doc = ezdxf.new("R2010", setup=True, units=4)       # 4 = millimetres
     doc.header["$MEASUREMENT"] = 1                       # metric
-    doc.header["$LIMMIN"] = (0.0, 0.0)
-    doc.header["$LIMMAX"] = (sheet.width, sheet.height)
-    doc.header["$EXTMIN"] = (0.0, 0.0, 0.0)
-    doc.header["$EXTMAX"] = (sheet.width, sheet.height, 0.0)
     doc.appids.add(APPID)
     for name, lw in LAYERS.items():
         layer = doc.layers.add(name, color=7)
@@ -58,6 +54,8 @@ def sheet_dxf(sheet, names=None):
             layer.dxf.linetype = "DASHED"
     doc.styles.add("GOST", font="isocpeur.ttf")
     msp = doc.modelspace()
+    msp.reset_limits((0.0, 0.0), (sheet.width, sheet.height))
+    msp.reset_extents((0.0, 0.0, 0.0), (sheet.width, sheet.height, 0.0))
     align = {("left", "bottom"): "BOTTOM_LEFT", ("center", "bottom"): "BOTTOM_CENTER",
              ("right", "bottom"): "BOTTOM_RIGHT", ("left", "center"): "MIDDLE_LEFT",
              ("center", "center"): "MIDDLE_CENTER", ("right", "center"): "MIDDLE_RIGHT",
