@@ -112,15 +112,17 @@ def position_blocks(pp, lang="ru"):
 
 
 def _pack(blocks, x0, y0, x1, y1, corner=None, gap=GAP):
-    """Place blocks in order, each at the top-most, then left-most free spot of the field
-    (x0, y0)–(x1, y1), clear of the other blocks by ``gap`` and of the lower right
-    ``corner`` = (x, y) region (the title block).  Blocks are kept in their order as long
-    as they fit; returns [(block, offset)] and the blocks left for the next sheet."""
+    """Place blocks in the field (x0, y0)–(x1, y1), each at the top-most, then left-most
+    free spot, clear of the others by ``gap`` and of the lower right ``corner`` = (x, y)
+    region (the title block).  Blocks are tried in their order; one that does not fit is
+    left for the next sheet while later ones may still fill the gaps.  Returns
+    [(block, offset)] and the blocks left over."""
     rects = []
     placed = []
+    left_over = []
     if corner is not None:
         rects.append((corner[0], y0 - gap, x1 + gap, corner[1]))
-    for k, b in enumerate(blocks):
+    for b in blocks:
         xs = sorted({x0} | {r[2] + gap for r in rects})
         ys = sorted({y1} | {r[1] - gap for r in rects}, reverse=True)
         spot = None
@@ -138,10 +140,11 @@ def _pack(blocks, x0, y0, x1, y1, corner=None, gap=GAP):
             if spot:
                 break
         if spot is None:
-            return placed, blocks[k:]
+            left_over.append(b)
+            continue
         rects.append(spot)
         placed.append((b, complex(spot[0] - b.bbox[0], spot[3] - b.bbox[3])))
-    return placed, []
+    return placed, left_over
 
 
 def position_figure(pp, lang="ru", max_width=560.0):

@@ -257,7 +257,8 @@ def _titled(items, bbox, title_lines, key):
         x0 = min(x0, (bbox[0] + bbox[2]) / 2 - w / 2)
         x1 = max(x1, (bbox[0] + bbox[2]) / 2 + w / 2)
         y += h * 1.6
-    return Block(items, (x0 - 2, y0 - 2, x1 + 2, y + 1), title_lines[0][0], key)
+    name = ", ".join(t for t, _ in title_lines[:2])
+    return Block(items, (x0 - 2, y0 - 2, x1 + 2, y + 1), name, key)
 
 
 def _items_bbox(items):
@@ -305,8 +306,8 @@ def diagram_block(pp, kind, lang="ru") -> Block:
                        _SCALE_UNIT[kind][0 if lang == "ru" else 1])
     if lang == "en":
         mu = {"μV": "kv", "μa": "ka", "μF": "kF"}[mu]
-    lines = [(f"{title}, {_where(pp, lang)}", H_TITLE),
-             (f"{mu} = {fmt(plan.scale, lang)} {unit}", H_POINT)]
+    lines = [(title, H_TITLE),
+             (f"{_where(pp, lang)}, {mu} = {fmt(plan.scale, lang)} {unit}", H_POINT)]
     return _titled(items, bbox, lines, f"{pp.tag}:{kind}")
 
 
@@ -367,11 +368,11 @@ def lever_block(pp, lang="ru", force_len=(8.0, 30.0)) -> Block:
         y -= H_LABEL * 1.7
     bbox = _items_bbox(items)
     title = _TITLES["lever"][0 if lang == "ru" else 1]
-    note = ("план скоростей, повёрнутый на 90° по часовой стрелке; длины сил не в масштабе"
+    note = ("план скоростей, повёрнутый на 90° по ч. с.; силы не в масштабе"
             if lang == "ru" else
-            "velocity diagram turned 90° clockwise; force arrows not to scale")
-    return _titled(items, bbox, [(f"{title}, {_where(pp, lang)}", H_TITLE), (note, H_LABEL)],
-                   f"{pp.tag}:lever")
+            "velocity diagram turned 90° clockwise; forces not to scale")
+    return _titled(items, bbox, [(title, H_TITLE), (_where(pp, lang), H_POINT),
+                                 (note, H_LABEL)], f"{pp.tag}:lever")
 
 
 def positions_block(result, chosen, lang="ru", longest_mm=220.0) -> Block:
