@@ -300,3 +300,15 @@ def test_random_mechanisms(spec):
             for v in plan.vectors:
                 assert math.isclose(v.length_mm, v.value / v.scale, rel_tol=TOL,
                                     abs_tol=1e-12)
+
+
+def test_import_is_light():
+    """Importing the plans (model and tables) pulls in neither matplotlib nor ezdxf."""
+    import subprocess
+    import sys
+
+    code = ("import sys, plans, plans.tables; "
+            "bad = [m for m in ('matplotlib', 'ezdxf', 'openpyxl') if m in sys.modules]; "
+            "print(bad); sys.exit(1 if bad else 0)")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert r.returncode == 0, r.stdout + r.stderr
