@@ -600,7 +600,7 @@ def _lever(spec, K, F, i, vplan: Plan):
             add(f"{name}_{p1}", f"F({lru})", f"F({len_})", p1, first.v, -f)
     total = sum(fc.moment_Nmm for fc in forces)
     omega = spec.omega
-    M_lever = -total * mu / omega
+    M_lever = -total * mu / omega + 0.0             # + 0.0: no −0.0 without loads
     vA = _c(K, i, "A", "v")
     pa = abs(vA) / mu
     Fb = M_lever / spec.crank                      # + in the sense of a ccw couple

@@ -312,3 +312,17 @@ def test_import_is_light():
             "print(bad); sys.exit(1 if bad else 0)")
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert r.returncode == 0, r.stdout + r.stderr
+
+
+@settings(max_examples=6, deadline=None,
+          suppress_health_check=[HealthCheck.filter_too_much, HealthCheck.too_slow])
+@given(mechanisms())
+def test_random_sheets_have_no_overlapping_labels(spec):
+    from plans import drawing
+
+    res = linkage.analyze(spec)
+    assume(np.isfinite(res.forces["M_drive_Nm"]).all())
+    assume((res.kinematics["mu_deg"] > 5).all())
+    pps = plans.build_plans(res, [1])
+    for sh in drawing.layout_sheets(res, pps, "en", "A1"):
+        assert drawing.check_no_overlap(sh.items) == []

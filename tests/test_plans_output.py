@@ -220,3 +220,18 @@ def test_bad_input_exits_2_and_writes_nothing(tmp_path, capsys):
     assert main(["linkage", str(bad), "-o", str(out), "--plans", "5"]) == 2
     assert "drawing.author: unknown key" in capsys.readouterr().err
     assert not out.exists()
+
+
+def test_massless_unloaded_mechanism_draws(tmp_path):
+    """No masses and no loads: the force polygons are all zero; the drawing and the DXF
+    are still written (nothing to label, nothing crashes)."""
+    spec = {"mechanism": {"kind": "crank-rocker", "name": "bare", "crank": 0.1,
+                          "coupler": 0.4, "rocker": 0.3, "ground": 0.45,
+                          "omega_rad_s": 5.0},
+            "analysis": {"positions": 6, "working_stroke": "ccw"}}
+    res = linkage.analyze(spec)
+    pps = plans.build_plans(res, [2])
+    assert pps[0].lever.M_kinetostatic_Nm == 0 and pps[0].lever.M_lever_Nm == 0
+    from plans.report import write_plans
+    info = write_plans(res, pps, tmp_path, previews=False)
+    assert info["sheets"] == 1 and (tmp_path / "sheet.dxf").is_file()
