@@ -10,9 +10,9 @@ is printed at 100 %.
 from __future__ import annotations
 
 from .errors import PlanError
-from .layout import (CAP_EM, text_width, FONT, H_LABEL, H_POINT, S_MAIN, S_THIN, Arrow, Block, Circle,
+from .layout import (CAP_EM, FONT, H_LABEL, H_POINT, S_MAIN, S_THIN, Arrow, Block, Circle,
                      Line, Sheet, Text, _arrow_parts, diagram_block, lever_block,
-                     positions_block)
+                     positions_block, text_width)
 
 __all__ = ["position_blocks", "position_figure", "layout_sheets", "sheet_figure",
            "render_items", "SHEETS", "title_fields", "TITLE_KEYS"]

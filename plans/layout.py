@@ -450,8 +450,8 @@ def positions_block(result, chosen, lang="ru", longest_mm=220.0) -> Block:
     bbox = _items_bbox(items)
     title = _TITLES["positions"][0 if lang == "ru" else 1]
     mul = "μl" if lang == "ru" else "kl"
-    return _titled(items, bbox, [(title, H_TITLE),
-                                 (f"{mul} = {fmt(mu, lang)} {_SCALE_UNIT['positions'][0 if lang == 'ru' else 1]}", H_POINT)],
+    unit = _SCALE_UNIT["positions"][0 if lang == "ru" else 1]
+    return _titled(items, bbox, [(title, H_TITLE), (f"{mul} = {fmt(mu, lang)} {unit}", H_POINT)],
                    "positions")
 
 

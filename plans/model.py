@@ -218,6 +218,10 @@ class Lever:
     balancing_force_N : float
         Fур at the crank pin (point a of the lever), perpendicular to pa, + in the sense of
         a counter-clockwise Mур. [N]
+    balancing_at : complex
+        Point a on the lever. [mm]
+    balancing_dir : complex
+        Unit direction of a positive Fур (i·e2, perpendicular to OA).
     pa_mm : float
         Its arm, the length of pa. [mm]
     M_lever_Nm, M_kinetostatic_Nm : float
@@ -227,6 +231,8 @@ class Lever:
         100·(M_lever − M_kinetostatic)/|M_kinetostatic| (0 when both are 0).
     points : dict of str to complex
         The turned velocity plan's points. [mm]
+    segments : list of tuple
+        The turned velocity plan's segments: (name, start, end, label ru, label en). [mm]
     """
 
     forces: list
