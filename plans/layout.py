@@ -159,7 +159,7 @@ class _Placer:
         for at in candidates:
             t = Text(at, text, height)
             box = _text_box(t)
-            score = sum(_boxes_overlap(box, b) for b in self.boxes) * 10
+            score = sum(_boxes_overlap(box, b) for b in self.boxes) * 1000
             score += sum(_seg_hits_box(p1, p2, box) for p1, p2 in self.segments)
             if score == 0:
                 best = t
@@ -183,7 +183,7 @@ def _arrow_parts(p1, p2):
     return (p2, base + 1j * u * hw / 2, base - 1j * u * hw / 2)
 
 
-def _label_candidates(p1, p2, dists=(2.2, 4.0, 6.5, 9.5)):
+def _label_candidates(p1, p2, dists=(2.2, 4.0, 6.5, 9.5, 13.0, 17.0)):
     d = p2 - p1
     L = abs(d)
     u = d / L if L > 0 else 1.0
@@ -197,10 +197,9 @@ def _label_candidates(p1, p2, dists=(2.2, 4.0, 6.5, 9.5)):
 
 
 def _point_candidates(z, r=3.0):
-    return [z + r * complex(math.cos(a), math.sin(a))
-            for a in [math.radians(k) for k in (45, 135, 225, 315, 90, 270, 0, 180)]] + \
-           [z + 2 * r * complex(math.cos(math.radians(k)), math.sin(math.radians(k)))
-            for k in (45, 135, 225, 315, 90, 270, 0, 180)]
+    """Spots around a point: 8 directions at r, 2r, 3r and 4r."""
+    return [z + f * r * complex(math.cos(math.radians(k)), math.sin(math.radians(k)))
+            for f in (1, 2, 3, 4) for k in (45, 135, 225, 315, 90, 270, 0, 180)]
 
 
 _QUANTITY_RU = {"V_A": "VA", "V_B": "VB", "V_BA": "VBA", "a_A": "aA", "a_B": "aB",

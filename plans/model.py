@@ -18,7 +18,10 @@ Conventions
   smallest μ = m·10^k, m ∈ {1, 1.5, 2, 2.5, 3, 4, 5, 6, 8}, that keeps the reference
   vector (pa, πa, the largest force of the polygon) at most 150 mm long; since
   consecutive round values differ by at most 1.5×, that vector is then longer than
-  100 mm (:func:`round_scale`).
+  100 mm (:func:`round_scale`).  When the whole plan would then be larger than
+  :data:`MAX_PLAN_MM` (250 mm) in width or height (near a dead position, ω3 and the
+  plan grow without bound while pa stays), the round scale that keeps it within
+  250 mm is taken instead, as a student would shorten pa.
 * Segment names are ASCII (``pa``, ``ab``, ``a_n3``, ``n3_b``, ``R23t``); the labels on
   the drawing are the textbook's: Russian p, a, b, s₃, π, n₃ …; English o, a, b, s₃ for
   the velocity diagram and o′, a′, b′ … for the acceleration diagram (Khurmi & Gupta).
@@ -45,6 +48,16 @@ ROUND_MANTISSAS = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
 PLAN_KINDS = ("velocity", "acceleration", "force_dyad", "force_crank")
 _UNITS = {"velocity": "m/s", "acceleration": "m/s2", "force_dyad": "N", "force_crank": "N"}
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+#: Largest extent (width or height) of a plan at the default scale. [mm]
+MAX_PLAN_MM = 250.0
+
+
+def _extent(plan):
+    """Largest side of a plan's bounding box (0 → 1 for an all-zero plan). [mm]"""
+    x0, y0, x1, y1 = plan.bbox()
+    return max(x1 - x0, y1 - y0) or 1.0
 
 
 def round_scale(value, longest_mm=150.0):
@@ -711,18 +724,24 @@ def build_plans(result, positions=None, *, scales=None, crank_angles_deg=None):
             problems.append(f"position {pos_col.iat[i]}: a singular (dead) position; its "
                             "velocities and forces are not finite, no plan can be drawn")
             continue
-        muV = scales.get("velocity") or round_scale(abs(_c(K, i, "A", "v")))
-        mua = scales.get("acceleration") or round_scale(abs(_c(K, i, "A", "a")))
-        vplan = _velocity_plan(spec, K, i, muV, pts)
-        aplan = _acceleration_plan(spec, K, i, mua, pts)
-        dyad = _force_dyad(spec, K, F, i, 1.0)
-        crank = _force_crank(spec, F, i, 1.0)
-        muFd = scales.get("force_dyad") or round_scale(
-            max(v.value for v in dyad.vectors if v.name != "R43") or 1.0)
-        muFc = scales.get("force_crank") or round_scale(max(v.value for v in crank.vectors)
-                                                        or 1.0)
-        dyad = _force_dyad(spec, K, F, i, muFd)
-        crank = _force_crank(spec, F, i, muFc)
+        # the textbook's round scale from the reference vector, coarser when the whole
+        # plan would be larger than MAX_PLAN_MM
+        def scale_of(kind, build, ref):
+            if scales.get(kind):
+                return build(scales[kind])
+            unit = build(1.0)
+            mu = max(round_scale(ref(unit)), round_scale(_extent(unit), MAX_PLAN_MM))
+            return build(mu)
+
+        vplan = scale_of("velocity", lambda m: _velocity_plan(spec, K, i, m, pts),
+                         lambda p: p.vector("pa").length_mm)
+        aplan = scale_of("acceleration", lambda m: _acceleration_plan(spec, K, i, m, pts),
+                         lambda p: p.vector("pi_a").length_mm)
+        dyad = scale_of("force_dyad", lambda m: _force_dyad(spec, K, F, i, m),
+                        lambda p: max(v.length_mm for v in p.vectors if v.name != "R43")
+                        or 1.0)
+        crank = scale_of("force_crank", lambda m: _force_crank(spec, F, i, m),
+                         lambda p: max(v.length_mm for v in p.vectors) or 1.0)
         lever = _lever(spec, K, F, i, vplan)
         geo = {"O": 0j, "A": _c(K, i, "A", ""), "B": _c(K, i, "B", "")}
         if spec.kind == "crank-rocker":

@@ -117,16 +117,26 @@ def test_lever_catches_a_wrong_sign(ratchet):
     assert abs(-total * mu / res.spec.omega - L.M_kinetostatic_Nm) > 1.0
 
 
+def _side(P):
+    x0, y0, x1, y1 = P.bbox()
+    return max(x1 - x0, y1 - y0)
+
+
 def test_round_scales(ratchet, press):
+    """Reference vector in (100, 150] mm, unless the whole plan would exceed 250 mm: then
+    the plan is within (250/1.5, 250] mm."""
+    binding = 0
     for res, pps in (ratchet, press):
         for pp in pps:
-            V, A = pp.plans["velocity"], pp.plans["acceleration"]
-            assert 100.0 < V.vector("pa").length_mm <= 150.0
-            assert 100.0 < A.vector("pi_a").length_mm <= 150.0
-            for kind in ("force_dyad", "force_crank"):
+            for kind, ref in (("velocity", "pa"), ("acceleration", "pi_a"),
+                              ("force_dyad", None), ("force_crank", None)):
                 P = pp.plans[kind]
-                big = max(v.length_mm for v in P.vectors if v.name != "R43")
-                assert 100.0 < big <= 150.0 + 1e-9
+                big = (P.vector(ref).length_mm if ref else
+                       max(v.length_mm for v in P.vectors if v.name != "R43"))
+                side = _side(P)
+                assert big <= 150.0 + 1e-9 and side <= 250.0 + 1e-9, (pp.tag, kind)
+                assert big > 100.0 or side > 250.0 / 1.5, (pp.tag, kind, big, side)
+                binding += big <= 100.0
             for P in pp.plans.values():
                 m = P.scale / 10 ** math.floor(math.log10(P.scale))
                 assert any(math.isclose(m, r, rel_tol=1e-9) for r in ROUND_MANTISSAS), P.scale
