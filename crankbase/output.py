@@ -408,13 +408,16 @@ def full_precision_xlsx():
         _writer.safe_string = original
 
 
-def safe_name(name: str, default: str = "report") -> str:
+def safe_name(name: str, default: str = "report", max_bytes: int = 160) -> str:
     """A file-name stem from a spec's name: letters (any script), digits, ``_``, ``.`` and
     ``-`` kept, every other run of characters replaced by ``_``; ``default`` if nothing is
-    left.  The full name stays inside the report."""
+    left; cut to at most ``max_bytes`` bytes of UTF-8 (at a character boundary), so the
+    file name fits any common file system.  The full name stays inside the report."""
     import re
 
-    return re.sub(r"[^\w.-]+", "_", name).strip("._") or default
+    stem = re.sub(r"[^\w.-]+", "_", name).strip("._") or default
+    cut = stem.encode("utf-8")[:max_bytes].decode("utf-8", "ignore").rstrip("._")
+    return cut or default
 
 
 def save_figure(fig, stem, formats=("png", "svg"), dpi=110, tight=False) -> list[Path]:

@@ -106,8 +106,11 @@ def _validate(args):
     for opt, val in (("--name", args.name), ("--omega", args.omega)):
         if val is not None and args.ground is None:
             problems.append(f"{opt}: only with --ground (it goes into the spec TOML)")
-    if args.name is not None and not args.name.strip():
-        problems.append("--name: must not be empty")
+    if args.name is not None:
+        from crankbase.validation import name_problem
+        why = name_problem(args.name)
+        if why:
+            problems.append(f"--name: {why}")
     return v, mode, problems
 
 

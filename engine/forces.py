@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from crankbase.validation import angles_argument
 from linkage.groups import Wrench, dot, driver_reactions, link_wrench, rrp_reactions
 
 from .indicator import gas_pressure, indicated_mean_pressure
@@ -205,7 +206,13 @@ def force_table(spec, alpha_deg=None):
     """
     import pandas as pd
 
-    a_deg = table_angles(spec) if alpha_deg is None else np.asarray(alpha_deg, float)
+    from .spec import EngineSpec, EngineSpecError
+
+    if not isinstance(spec, EngineSpec):
+        raise EngineSpecError(f"spec: expected an EngineSpec from engine.load_spec, got "
+                              f"{type(spec).__name__}")
+    a_deg = table_angles(spec) if alpha_deg is None else angles_argument(alpha_deg,
+                                                                         "alpha_deg")
     alpha = np.radians(a_deg)
     mech = crank_slider(alpha, spec.R, spec.L, spec.omega)
     p = gas_pressure(spec, a_deg, mech.x)

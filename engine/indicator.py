@@ -49,6 +49,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from crankbase.validation import angles_argument
+
 from .kinematics import crank_slider
 from .spec import JOIN_AFTER_PEAK_DEG
 
@@ -256,6 +258,7 @@ def gas_pressure(spec, alpha_deg, x=None):
     ndarray
         pг. [Pa]
     """
+    alpha_deg = angles_argument(alpha_deg, "alpha_deg")
     if spec.cycle is not None:
         vr = None
         if x is not None:

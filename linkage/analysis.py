@@ -22,7 +22,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import groups as g
-from crankbase.errors import SpecError
+from crankbase.errors import Problem, SpecError
+from crankbase.validation import angles_argument, rows_problem
 from .mechanisms import CrankRocker, CrankSlider
 from .columns import derived_kinematics_columns, force_columns, kinematics_columns, point_names
 from .derived import fill_derived
@@ -341,9 +342,7 @@ def analyze(spec, crank_angles_deg=None, *, course_tables=True) -> AnalysisResul
                          "analysis.crank_angles_deg instead"])
     positions = None
     if crank_angles_deg is not None:
-        phi = np.radians(np.atleast_1d(np.asarray(crank_angles_deg, dtype=float)))
-        if not np.all(np.isfinite(phi)):
-            raise SpecError(["crank_angles_deg: every angle must be finite"])
+        phi = np.radians(angles_argument(crank_angles_deg, "crank_angles_deg"))
     elif spec.crank_angles_deg is not None:
         phi = np.radians(np.asarray(spec.crank_angles_deg, dtype=float))
     else:
@@ -401,6 +400,11 @@ def full_turn(spec, step_deg=1.0):
     """Analysis over a full turn at ``step_deg`` from 0° (for plots), singular positions
     of a change-point mechanism left out (set to NaN)."""
     spec = load_spec(spec)
+    if isinstance(step_deg, bool) or not isinstance(step_deg, (int, float)) \
+            or not 0 < step_deg <= 30:
+        raise SpecError(Problem("step_deg", f"got {step_deg!r}; must be > 0 and <= 30"))
+    if rows_problem(360.0 / step_deg + 1, "step_deg"):
+        raise SpecError(rows_problem(360.0 / step_deg + 1, "step_deg"))
     phi = np.arange(0.0, 360.0 + 0.5 * step_deg, step_deg)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", SingularPositionWarning)
