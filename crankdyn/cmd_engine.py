@@ -108,7 +108,9 @@ def run(args) -> int:
         f"  T max              {ext['T_N'][0]:10.0f} N    at alpha = {ext['T_N'][1]:g} deg",
         f"  mean torque        {summary['M_mean_Nm']:10.2f} N*m  (one cylinder)",
         f"  R_crank-pin max    {ext['R_N'][0]:10.0f} N    at alpha = {ext['R_N'][1]:g} deg;"
-        f"  mean {summary['R_mean_N']:.0f} N;  chi = {summary['chi']:.3f}",
+        f"  mean {summary['R_mean_N']:.0f} N;  chi = "
+        + (f"{summary['chi']:.3f}" if summary["chi"] == summary["chi"] else "undefined "
+           "(the mean load is 0)"),
         f"wrote {csv_path} ({len(table)} rows), {xlsx_path}, "
         f"{len(stems)} plots (PNG, SVG) in {out}" + (" [ru]" if ru else " [en]"),
     ]
