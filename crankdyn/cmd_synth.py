@@ -70,6 +70,11 @@ def _number(problems, option, text, check, valid):
     if not (math.isfinite(value) and check(value)):
         problems.append(f"{option}: got {text}; must be {valid}")
         return None
+    from crankbase.validation import magnitude_problem
+    why = magnitude_problem(value)       # the same bound as every spec number
+    if why:
+        problems.append(f"{option}: {why}")
+        return None
     return value
 
 

@@ -343,3 +343,35 @@ def test_plan_of_many_positions_draws_at_most_24():
     assert "24 of 5000 rows drawn (1 in 209)" in ax.get_title()
     labels = [t for t in ax.texts if t.get_text().endswith("°")]
     assert len(labels) == 2 * MAX_PLAN_POSITIONS      # at A and at B
+
+
+ISSUE_CASES = {          # the issue's reproductions through the CLI: (spec edit, key)
+    "bore": (("engine.bore_mm", 1e308), "engine.bore_mm"),
+    "eps": (("engine.compression_ratio", 1e300), "engine.compression_ratio"),
+    "speed": (("engine.speed_rpm", 1e160), "engine.speed_rpm"),
+    "rod": (("engine.rod_ratio", 1e-300), "engine.rod_ratio"),
+    "digits": (("engine.stroke_mm", 10 ** 300), "engine.stroke_mm"),
+    "step": (("table.step_deg", 1e-9), "table.step_deg"),
+    "name": (("engine.name", "x" * 300), "engine.name"),
+    "tab": (("engine.name", "a\tb"), "engine.name"),
+}
+
+
+@pytest.mark.parametrize("case", list(ISSUE_CASES))
+def test_issue_reproductions_through_the_cli(case, tmp_path, capsys):
+    (path, value), key = ISSUE_CASES[case]
+    spec = tmp_path / "s.toml"
+    text = _toml(edit(ENGINE, path, value))
+    spec.write_text(text, encoding="utf-8")
+    assert main(["engine", str(spec), "-o", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(f"crankdyn engine: error: {key}: "), err
+    assert not (tmp_path / "o").exists()
+
+
+def test_synth_options_bounded_like_spec_numbers(tmp_path, capsys):
+    assert main(["synth", "--l2", "1e308", "--l3", "1e308", "-o", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == [f"crankdyn synth: error: --{k}: got 1e+308; every number must be at most "
+                   "1e+12 in magnitude" for k in ("l2", "l3")]
+    assert not (tmp_path / "o").exists()

@@ -296,3 +296,19 @@ def test_writable_folder_under_read_only_parent(tmp_path):
         "mount -o remount,ro,bind $M", [*RUN_B, "-o", "$M/w"], tmp_path)
     assert rc == 0, err
     assert "$M/w/mechanism.csv" in files
+
+
+def test_verify_report_detects_a_changed_or_missing_file(tmp_path):
+    out = tmp_path / "out"
+    with staged_output(out) as stage:
+        (stage / "a.csv").write_text("1\n")
+        (stage / "b.csv").write_text("2\n")
+    assert verify_report(out) == ["a.csv", "b.csv"]
+    (out / "a.csv").write_text("9\n")
+    with pytest.raises(OutputError, match="a.csv: not the file the report's manifest lists"):
+        verify_report(out)
+    (out / "a.csv").unlink()
+    with pytest.raises(OutputError, match="a.csv"):
+        verify_report(out)
+    with pytest.raises(OutputError, match="no crankdyn report"):
+        verify_report(tmp_path)
