@@ -12,7 +12,7 @@ from pathlib import Path
 
 from .errors import Problem, SpecError
 
-__all__ = ["Checker", "read_toml", "name_problem", "rows_problem", "angles_argument",
+__all__ = ["Checker", "read_toml", "name_problem", "rows_problem", "angles_argument", "step_argument",
            "MAX_NAME_CHARS", "MAX_NAME_BYTES", "MAX_ROWS", "MIN_MAGNITUDE", "MAX_MAGNITUDE"]
 
 #: Longest accepted name of an engine or mechanism [characters]: the name heads plot
@@ -113,6 +113,20 @@ def rows_problem(rows: float, key: str) -> Problem | None:
     shown = f"{rows:,.0f}" if rows < 1e15 else f"{rows:.3g}" if rows < math.inf \
         else "more than 1e308"
     return Problem(key, f"would make {shown} rows; at most {MAX_ROWS:,} are allowed")
+
+
+def step_argument(value, key: str, span: float, rows_span: float | None = None) -> float:
+    """A step argument of a public function [deg]: a real number with
+    0 < step <= ``span`` that makes at most :data:`MAX_ROWS` rows over ``rows_span``
+    (default ``span``); else a :class:`SpecError` naming ``key``."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)) \
+            or not math.isfinite(float(value)) or not 0 < value <= span:
+        raise SpecError(Problem(key, f"got {value!r:.40}; must be a number > 0 and "
+                                     f"<= {span:g}"))
+    too_many = rows_problem((rows_span or span) / float(value) + 1, key)
+    if too_many:
+        raise SpecError(too_many)
+    return float(value)
 
 
 def angles_argument(value, key: str, *, max_abs: float = 1e6):

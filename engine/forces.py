@@ -29,7 +29,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from crankbase.validation import angles_argument
+from crankbase.validation import angles_argument, step_argument
 from linkage.groups import Wrench, dot, driver_reactions, link_wrench, rrp_reactions
 
 from .indicator import gas_pressure, indicated_mean_pressure
@@ -47,8 +47,8 @@ COLUMNS = ("alpha_deg", "p_gas_MPa", "dPg_N", "Pj_N", "P_N", "beta_deg", "N_N", 
 def table_angles(spec, step_deg=None) -> np.ndarray:
     """Crank angles of the table rows: every ``step_deg`` from 0 to the cycle end (which
     is always included), plus the spec's extra angles, sorted, without repeats. [deg]"""
-    step = spec.step_deg if step_deg is None else step_deg
     cyc = spec.cycle_deg
+    step = spec.step_deg if step_deg is None else step_argument(step_deg, "step_deg", cyc)
     n = int(np.floor(cyc / step + 1e-9))
     a = step * np.arange(n + 1)
     if cyc - a[-1] > 1e-9 * cyc:

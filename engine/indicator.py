@@ -49,7 +49,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from crankbase.validation import angles_argument
+from crankbase.validation import angles_argument, step_argument
 
 from .kinematics import crank_slider
 from .spec import JOIN_AFTER_PEAK_DEG
@@ -287,6 +287,7 @@ def indicated_mean_pressure(spec, step_deg=0.05):
     dV = Fп·dx, so pi = ∮ p d(x/S) needs no clearance volume; x(α) is the exact piston
     displacement of the crank-slider dyad.
     """
+    step_deg = step_argument(step_deg, "step_deg", spec.cycle_deg)
     n = int(round(spec.cycle_deg / step_deg))
     alpha = np.linspace(0.0, spec.cycle_deg, n + 1)
     p = gas_pressure(spec, alpha)

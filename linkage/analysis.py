@@ -22,8 +22,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import groups as g
-from crankbase.errors import Problem, SpecError
-from crankbase.validation import angles_argument, rows_problem
+from crankbase.errors import SpecError
+from crankbase.validation import angles_argument, step_argument
 from .mechanisms import CrankRocker, CrankSlider
 from .columns import derived_kinematics_columns, force_columns, kinematics_columns, point_names
 from .derived import fill_derived
@@ -400,11 +400,7 @@ def full_turn(spec, step_deg=1.0):
     """Analysis over a full turn at ``step_deg`` from 0° (for plots), singular positions
     of a change-point mechanism left out (set to NaN)."""
     spec = load_spec(spec)
-    if isinstance(step_deg, bool) or not isinstance(step_deg, (int, float)) \
-            or not 0 < step_deg <= 30:
-        raise SpecError(Problem("step_deg", f"got {step_deg!r}; must be > 0 and <= 30"))
-    if rows_problem(360.0 / step_deg + 1, "step_deg"):
-        raise SpecError(rows_problem(360.0 / step_deg + 1, "step_deg"))
+    step_deg = step_argument(step_deg, "step_deg", 30.0, rows_span=360.0)
     phi = np.arange(0.0, 360.0 + 0.5 * step_deg, step_deg)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", SingularPositionWarning)

@@ -375,3 +375,13 @@ def test_synth_options_bounded_like_spec_numbers(tmp_path, capsys):
     assert err == [f"crankdyn synth: error: --{k}: got 1e+308; every number must be at most "
                    "1e+12 in magnitude" for k in ("l2", "l3")]
     assert not (tmp_path / "o").exists()
+
+
+@pytest.mark.parametrize("step", [0, -1, float("nan"), float("inf"), 1e-9, "1", True, 1e4])
+def test_step_arguments_checked(otto_spec, step):
+    for fn in (lambda: engine.table_angles(otto_spec, step),
+               lambda: engine.fine_angles(otto_spec, step),
+               lambda: engine.indicated_mean_pressure(otto_spec, step),
+               lambda: linkage.full_turn(LINKAGE, step)):
+        with pytest.raises(SpecError, match="step_deg"):
+            fn()
