@@ -452,7 +452,7 @@ def _check_pressure_points(c, angle, p, cycle_deg, where, unit="p_Pa"):
 
 def _inline_pressure(c, pr, cycle_deg):
     units = [k for k in PRESSURE_UNITS if k in pr]
-    angle = c.numbers(pr, "angle_deg", "pressure")
+    angle = c.numbers(pr, "angle_deg", "pressure", max_length=MAX_ROWS)
     if not units:
         c.add("pressure", "inline data need one of " + ", ".join(PRESSURE_UNITS)
               + " beside angle_deg")
@@ -461,7 +461,7 @@ def _inline_pressure(c, pr, cycle_deg):
         c.add("pressure", "give one pressure list, got " + ", ".join(units))
         return None, None
     key = units[0]
-    vals = c.numbers(pr, key, "pressure")
+    vals = c.numbers(pr, key, "pressure", max_length=MAX_ROWS)
     if angle is None or vals is None:
         return None, None
     p = [v * PRESSURE_UNITS[key] for v in vals]
