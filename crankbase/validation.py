@@ -12,7 +12,8 @@ from pathlib import Path
 
 from .errors import Problem, SpecError
 
-__all__ = ["Checker", "read_toml", "name_problem", "rows_problem", "angles_argument", "step_argument",
+__all__ = ["Checker", "read_toml", "name_problem", "rows_problem", "angles_argument",
+           "step_argument", "magnitude_problem",
            "MAX_NAME_CHARS", "MAX_NAME_BYTES", "MAX_ROWS", "MIN_MAGNITUDE", "MAX_MAGNITUDE"]
 
 #: Longest accepted name of an engine or mechanism [characters]: the name heads plot

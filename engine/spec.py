@@ -274,8 +274,10 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
     strokes = c.choice(e, "strokes", (4, 2), "engine", required=False, default=4)
     cylinders = c.number(e, "cylinders", "engine", required=False, default=1, ge=1,
                          integer=True)
-    bore = c.number(e, "bore_mm", "engine", gt=0, divisor=True, what="the cylinder bore D [mm]")
-    stroke = c.number(e, "stroke_mm", "engine", gt=0, divisor=True, what="the piston stroke S [mm]")
+    bore = c.number(e, "bore_mm", "engine", gt=0, divisor=True,
+                    what="the cylinder bore D [mm]")
+    stroke = c.number(e, "stroke_mm", "engine", gt=0, divisor=True,
+                      what="the piston stroke S [mm]")
     speed = c.number(e, "speed_rpm", "engine", gt=0, what="the crankshaft speed [rpm]")
     p0 = c.number(e, "crankcase_MPa", "engine", required=False, default=0.1, ge=0)
     accel = c.choice(e, "acceleration", ("two-term", "exact"), "engine", required=False,

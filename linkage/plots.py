@@ -220,8 +220,8 @@ def plan_figure(result, full):
     turn = "statics" if spec.omega == 0 else "ccw" if spec.omega > 0 else "cw"
     ax.set_title(f"{spec.name}: plan of positions ({spec.kind}, "
                  f"ω = {spec.omega:g} rad/s, {turn})"
-                 + (f"\n{-(-len(k) // every)} of {len(k)} rows drawn (1 in {every})" if every > 1
-                    else ""))
+                 + (f"\n{-(-len(k) // every)} of {len(k)} rows drawn (1 in {every})"
+                    if every > 1 else ""))
     ax.grid(True, lw=0.3, alpha=0.5)
     ax.legend(loc="upper left", fontsize=7, framealpha=0.85)
     return fig

@@ -142,13 +142,16 @@ def load_spec(path_or_dict) -> MechanismSpec:
     ck.unknown(m, _MECH_KEYS, "mechanism")
     kind = ck.choice(m, "kind", KINDS, "mechanism")
     name = ck.name(m, "name", "mechanism", default="mechanism")
-    crank = ck.number(m, "crank", "mechanism", gt=0, divisor=True, what="the crank length |OA| in m")
+    crank = ck.number(m, "crank", "mechanism", gt=0, divisor=True,
+                      what="the crank length |OA| in m")
     coupler = ck.number(m, "coupler", "mechanism", gt=0, divisor=True,
                         what="the coupler (rod) length |AB| in m")
     rocker = ground = None
     if kind == "crank-rocker":
-        rocker = ck.number(m, "rocker", "mechanism", gt=0, divisor=True, what="the rocker length |CB| in m")
-        ground = ck.number(m, "ground", "mechanism", gt=0, divisor=True, what="the ground length |OC| in m")
+        rocker = ck.number(m, "rocker", "mechanism", gt=0, divisor=True,
+                           what="the rocker length |CB| in m")
+        ground = ck.number(m, "ground", "mechanism", gt=0, divisor=True,
+                           what="the ground length |OC| in m")
         if "offset" in m:
             ck.add("mechanism.offset", "applies to a crank-slider only; remove it")
     elif kind == "crank-slider":
