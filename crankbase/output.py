@@ -103,15 +103,22 @@ def _process_start(pid: int):
             stat = f.read()
         return stat.rsplit(b")", 1)[1].split()[19].decode()
     except FileNotFoundError:
-        return None
-    except (OSError, IndexError):
-        try:
-            os.kill(pid, 0)
-        except ProcessLookupError:
+        if os.path.isdir("/proc/self"):
             return None
-        except PermissionError:
-            pass
-        return ""
+        return _process_start_without_proc(pid)
+    except (OSError, IndexError):
+        return _process_start_without_proc(pid)
+
+
+def _process_start_without_proc(pid: int):
+    """``None`` if no process ``pid`` exists, else ``""`` (start time unknown)."""
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return None
+    except PermissionError:
+        pass
+    return ""
 
 
 def _stage_is_dead(name: str) -> bool:
