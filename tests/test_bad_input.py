@@ -385,3 +385,19 @@ def test_step_arguments_checked(otto_spec, step):
                lambda: linkage.full_turn(LINKAGE, step)):
         with pytest.raises(SpecError, match="step_deg"):
             fn()
+
+
+def test_no_warning_reaches_the_terminal_at_the_edges(tmp_path):
+    """A real process (default warning filters, not the suite's) at the edges of the
+    accepted ranges: exit 0 and an empty stderr (no numpy RuntimeWarning)."""
+    import subprocess
+    import sys
+
+    d = edit(ENGINE, "engine", dict(ENGINE["engine"], bore_mm=1e12, stroke_mm=1e-12,
+                                    speed_rpm=1e12, rod_ratio=0.999999))
+    d["masses"] = dict(reciprocating_kg=1e12, rod_rotating_kg=0.0)
+    (tmp_path / "e.toml").write_text(_toml(d), encoding="utf-8")
+    r = subprocess.run([sys.executable, "-m", "crankdyn", "engine", str(tmp_path / "e.toml"),
+                        "--step", "90", "-o", str(tmp_path / "o")],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0 and r.stderr == "", r.stderr
