@@ -15,8 +15,9 @@ import numpy as np
 
 from .errors import OutputError
 
-__all__ = ["atomic_path", "staged_output", "write_csv", "check_not_input", "ensure_finite",
-           "full_precision_xlsx", "safe_name", "save_figure", "OutputError"]
+__all__ = ["atomic_path", "staged_output", "recover_output", "verify_report", "read_manifest",
+           "write_csv", "check_not_input", "ensure_finite", "full_precision_xlsx",
+           "safe_name", "save_figure", "OutputError", "MANIFEST_NAME"]
 
 
 @contextlib.contextmanager
@@ -72,32 +73,319 @@ def write_csv(df, path) -> None:
         df.to_csv(tmp, index=False, float_format=None, lineterminator="\n")
 
 
-@contextlib.contextmanager
-def staged_output(directory, inputs=()):
-    """Context manager for a multi-file report: yields a staging folder; on success every
-    file in it is moved into ``directory`` (created if needed), replacing older files of
-    the same name one by one with ``os.replace``; on an exception nothing is moved and the
-    staging folder is deleted, so a failed run writes nothing.
+# ----------------------------------------------------------------------------- reports
+#: Hidden names inside an output folder.  A run stages its files in
+#: ``.crankdyn-stage.<pid>.<start>.<random>``, renames that folder to ``.crankdyn-commit``
+#: when every file is complete (the point of no return), then moves the files into place
+#: and writes the manifest ``.crankdyn-report.json`` last.
+STAGE_PREFIX = ".crankdyn-stage."
+COMMIT_NAME = ".crankdyn-commit"
+MANIFEST_NAME = ".crankdyn-report.json"
+_OBSOLETE_NAME = ".obsolete.json"
 
-    ``inputs`` are input paths that must not be overwritten (:class:`OutputError`).
+
+def _reason(exc: OSError) -> str:
+    return exc.strerror or str(exc)
+
+
+def _output_error(exc: OSError, what: str, path=None) -> OutputError:
+    """One line naming the path and the reason of a file-system error."""
+    where = exc.filename if exc.filename is not None else path
+    return OutputError(f"{what} {where}: {_reason(exc)}" if where is not None
+                       else f"{what}: {_reason(exc)}")
+
+
+def _process_start(pid: int):
+    """Start time of a process (clock ticks since boot, from /proc), or None when the
+    process does not exist; ``""`` when it exists but /proc is not available."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            stat = f.read()
+        return stat.rsplit(b")", 1)[1].split()[19].decode()
+    except FileNotFoundError:
+        if os.path.isdir("/proc/self"):
+            return None
+        return _process_start_without_proc(pid)
+    except (OSError, IndexError):
+        return _process_start_without_proc(pid)
+
+
+def _process_start_without_proc(pid: int):
+    """``None`` if no process ``pid`` exists, else ``""`` (start time unknown)."""
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return None
+    except PermissionError:
+        pass
+    return ""
+
+
+def _stage_is_dead(name: str) -> bool:
+    """True when the run that owns staging folder ``name`` no longer exists (its pid is
+    gone, or the pid now belongs to a process started at another time)."""
+    parts = name[len(STAGE_PREFIX):].split(".")
+    try:
+        pid, start = int(parts[0]), parts[1]
+    except (IndexError, ValueError):
+        return True     # not a name this module makes: a leftover of an older version
+    if pid == os.getpid():
+        return False
+    now = _process_start(pid)
+    return now is None or (now != "" and start != "" and now != start)
+
+
+def _sha256(path: Path) -> str:
+    import hashlib
+
+    h = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            h.update(block)
+    return h.hexdigest()
+
+
+def _fsync_dir(path: Path) -> None:
+    try:
+        fd = os.open(path, os.O_RDONLY)
+    except OSError:
+        return
+    try:
+        os.fsync(fd)
+    except OSError:
+        pass
+    finally:
+        os.close(fd)
+
+
+def read_manifest(directory):
+    """The manifest of the report in ``directory`` (dict: ``files`` name → ``size`` and
+    ``sha256``, ``created`` UTC time), or None when the folder holds no crankdyn report."""
+    import json
+
+    path = Path(directory) / MANIFEST_NAME
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        return None
+    except (OSError, ValueError) as exc:
+        raise OutputError(f"{path}: unreadable report manifest: {exc}") from None
+
+
+def verify_report(directory) -> list[str]:
+    """Check that ``directory`` holds one complete crankdyn report; return its file names.
+
+    Raises :class:`OutputError` when a replacement was interrupted (a ``.crankdyn-commit``
+    folder is present: the next run, or :func:`recover_output`, completes it), or when a
+    file listed in the manifest is missing or differs from what was written.
     """
+    directory = Path(directory)
+    if (directory / COMMIT_NAME).exists():
+        raise OutputError(f"{directory}: a report replacement was interrupted; run crankdyn "
+                          f"again into this folder (or call recover_output) to complete it")
+    man = read_manifest(directory)
+    if man is None:
+        raise OutputError(f"{directory}: no crankdyn report here ({MANIFEST_NAME} missing)")
+    for name, info in man["files"].items():
+        p = directory / name
+        if not p.is_file() or p.stat().st_size != info["size"] or _sha256(p) != info["sha256"]:
+            raise OutputError(f"{p}: not the file the report's manifest lists")
+    return sorted(man["files"])
+
+
+def _roll_forward(directory: Path) -> None:
+    """Finish an interrupted replacement: the ``.crankdyn-commit`` folder holds the new
+    report complete with its manifest; move what is left of it into place (idempotent)."""
+    import json
+
+    commit = directory / COMMIT_NAME
+    obsolete_file = commit / _OBSOLETE_NAME
+    if obsolete_file.exists():
+        for name in json.loads(obsolete_file.read_text(encoding="utf-8")):
+            with contextlib.suppress(FileNotFoundError):
+                os.unlink(directory / name)
+        os.unlink(obsolete_file)
+    for p in sorted(commit.iterdir()):
+        if p.name != MANIFEST_NAME:
+            os.replace(p, directory / p.name)
+    if (commit / MANIFEST_NAME).exists():
+        os.replace(commit / MANIFEST_NAME, directory / MANIFEST_NAME)
+    os.rmdir(commit)
+    _fsync_dir(directory)
+
+
+def recover_output(directory) -> None:
+    """Bring an output folder back to one complete report: finish a replacement that a
+    killed run had begun (``.crankdyn-commit``) and delete the staging folders of runs that
+    no longer exist.  Every run does this first, holding the folder's lock; call it
+    yourself only while no crankdyn run writes into ``directory``."""
     import shutil
 
     directory = Path(directory)
+    commit = directory / COMMIT_NAME
+    if commit.is_dir():
+        if (commit / MANIFEST_NAME).exists():
+            _roll_forward(directory)
+        else:           # cannot happen with this module (the manifest goes in first)
+            shutil.rmtree(commit)
+    with os.scandir(directory) as it:
+        stale = [e.name for e in it if e.name.startswith(STAGE_PREFIX) and e.is_dir()
+                 and _stage_is_dead(e.name)]
+    for name in stale:
+        shutil.rmtree(directory / name, ignore_errors=True)
+
+
+def _make_folder(directory: Path) -> list[Path]:
+    """Create ``directory`` and its missing parents; return those created (outermost
+    first) so a failed run can remove them again."""
+    created = []
+    for p in reversed([directory, *directory.parents]):
+        if p.is_dir():
+            continue
+        try:
+            p.mkdir()
+        except FileExistsError:
+            if not p.is_dir():
+                raise OutputError(f"output folder {directory}: {p} exists and is not a "
+                                  f"folder") from None
+            continue
+        created.append(p)
+    return created
+
+
+def _lock(directory: Path):
+    """An exclusive lock on the output folder (flock on the folder itself, held until the
+    returned descriptor is closed); None where the file system has no locks.
+
+    A run that fails removes a folder it created; a run that waited for that folder's
+    lock then finds the path gone or a new folder there, and retries on the new one."""
+    import fcntl
+
+    for _ in range(100):
+        _make_folder(directory.absolute())
+        fd = os.open(directory, os.O_RDONLY | os.O_DIRECTORY)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX)
+        except OSError:         # e.g. a network file system without flock
+            os.close(fd)
+            return None
+        try:
+            same = os.path.samestat(os.fstat(fd), os.stat(directory))
+        except FileNotFoundError:
+            same = False
+        if same:
+            return fd
+        os.close(fd)
+    raise OutputError(f"output folder {directory}: keeps being removed by another run")
+
+
+def _commit(directory: Path, stage: Path, inputs) -> None:
+    import datetime
+    import json
+
+    names = sorted(p.name for p in stage.iterdir())
+    check_not_input([directory / n for n in names], inputs)
+    files = {}
+    for n in names:
+        p = stage / n
+        with open(p, "rb") as f:
+            os.fsync(f.fileno())
+        files[n] = {"size": p.stat().st_size, "sha256": _sha256(p)}
+    # files of the previous report that this one does not write are part of the old unit:
+    # removed, unless the user has changed them since (then they are not ours any more)
+    old = None
+    with contextlib.suppress(OutputError):
+        old = read_manifest(directory)
+    obsolete = []
+    if old is not None:
+        ins = {Path(p).resolve() for p in inputs if p is not None}
+        for n, info in old.get("files", {}).items():
+            p = directory / n
+            if n in files or p.resolve() in ins or not p.is_file():
+                continue
+            if p.stat().st_size == info.get("size") and _sha256(p) == info.get("sha256"):
+                obsolete.append(n)
+    manifest = {"format": 1, "created": datetime.datetime.now(datetime.timezone.utc)
+                .isoformat(timespec="seconds"), "files": files}
+    (stage / MANIFEST_NAME).write_text(json.dumps(manifest, indent=1), encoding="utf-8")
+    (stage / _OBSOLETE_NAME).write_text(json.dumps(obsolete), encoding="utf-8")
+    _fsync_dir(stage)
+    os.rename(stage, directory / COMMIT_NAME)      # the point of no return
+    _roll_forward(directory)
+
+
+@contextlib.contextmanager
+def staged_output(directory, inputs=()):
+    """Context manager for a multi-file report, replaced as one unit.
+
+    Yields a staging folder *inside* ``directory`` (so on the same file system, whatever
+    is mounted where); write every file of the report there.  On success the report
+    replaces the previous one as one unit; on an exception nothing in ``directory``
+    changes, the staging folder is deleted, and a folder this call had to create is
+    removed again.
+
+    Protocol (documented in the README, section "Output folders"):
+
+    1. ``directory`` (and missing parents) is created and locked (``flock`` on the folder)
+       for the rest of the call, so concurrent runs into one folder take turns and the
+       folder ends with the complete report of the last one;
+    2. :func:`recover_output` finishes a replacement a killed run had begun and deletes
+       staging folders whose run no longer exists;
+    3. the files are written into ``.crankdyn-stage.<pid>.<start>.<random>/``;
+    4. commit: the files are fsynced and listed with size and SHA-256 in the manifest
+       ``.crankdyn-report.json``; the staging folder is renamed to ``.crankdyn-commit``
+       (one atomic rename: from here the new report is complete on disk); then the files
+       of the old report that the new one does not write are deleted, the new files moved
+       into place with ``os.replace`` and the manifest last; ``.crankdyn-commit`` is
+       removed.  A kill during step 4 leaves ``.crankdyn-commit``, which the next run (or
+       :func:`recover_output`) rolls forward; :func:`verify_report` refuses such a folder.
+
+    Any :class:`OSError` (read-only file system, disk full, a path through a file, ...)
+    becomes one :class:`OutputError` naming the path and the reason.  ``inputs`` are input
+    paths that must not be overwritten (:class:`OutputError`).
+    """
+    import shutil
+
+    if directory is None or str(directory).strip() == "":
+        raise OutputError("output folder: empty path; give a folder name "
+                          "('.' for the current folder)")
+    directory = Path(directory)
     if directory.exists() and not directory.is_dir():
-        raise OutputError(f"output {directory} exists and is not a folder")
-    parent = directory.resolve().parent
-    parent.mkdir(parents=True, exist_ok=True)
-    stage = Path(tempfile.mkdtemp(prefix=f".{directory.name}.staging.", dir=parent))
+        raise OutputError(f"output folder {directory}: exists and is not a folder")
     try:
-        yield stage
-        names = sorted(p.name for p in stage.iterdir())
-        check_not_input([directory / n for n in names], inputs)
-        directory.mkdir(parents=True, exist_ok=True)
-        for name in names:
-            os.replace(stage / name, directory / name)
+        created = _make_folder(directory.absolute())
+    except OSError as exc:
+        raise _output_error(exc, "cannot create the output folder", directory) from None
+    stage = lock = None
+    try:
+        try:
+            lock = _lock(directory)
+            recover_output(directory)
+            start = _process_start(os.getpid()) or "0"
+            stage = Path(tempfile.mkdtemp(prefix=f"{STAGE_PREFIX}{os.getpid()}.{start}.",
+                                          dir=directory))
+        except OSError as exc:
+            raise _output_error(exc, "cannot write into the output folder", directory) \
+                from None
+        try:
+            yield stage
+        except OSError as exc:   # name the output folder, not the hidden temporary file
+            raise OutputError(f"cannot write the report into {directory}: {_reason(exc)}") \
+                from None
+        try:
+            _commit(directory, stage, inputs)
+        except OSError as exc:
+            raise _output_error(exc, "cannot replace the report in", directory) from None
+    except BaseException:
+        if stage is not None:
+            shutil.rmtree(stage, ignore_errors=True)
+        for p in reversed(created):          # a failed run leaves no folder behind
+            with contextlib.suppress(OSError):
+                p.rmdir()
+        raise
     finally:
-        shutil.rmtree(stage, ignore_errors=True)
+        if lock is not None:
+            os.close(lock)
 
 
 @contextlib.contextmanager
@@ -127,13 +415,16 @@ def full_precision_xlsx():
         _writer.safe_string = original
 
 
-def safe_name(name: str, default: str = "report") -> str:
+def safe_name(name: str, default: str = "report", max_bytes: int = 160) -> str:
     """A file-name stem from a spec's name: letters (any script), digits, ``_``, ``.`` and
     ``-`` kept, every other run of characters replaced by ``_``; ``default`` if nothing is
-    left.  The full name stays inside the report."""
+    left; cut to at most ``max_bytes`` bytes of UTF-8 (at a character boundary), so the
+    file name fits any common file system.  The full name stays inside the report."""
     import re
 
-    return re.sub(r"[^\w.-]+", "_", name).strip("._") or default
+    stem = re.sub(r"[^\w.-]+", "_", name).strip("._") or default
+    cut = stem.encode("utf-8")[:max_bytes].decode("utf-8", "ignore").rstrip("._")
+    return cut or default
 
 
 def save_figure(fig, stem, formats=("png", "svg"), dpi=110, tight=False) -> list[Path]:

@@ -48,6 +48,11 @@ def main(argv=None) -> int:
         return 2
     from crankbase.errors import CrankdynError
 
+    if getattr(args, "output", None) is not None and not args.output.strip():
+        # Path("") is ".": an empty -o would write into the current folder unasked
+        print(f"crankdyn {args.command}: error: -o: empty output folder; give a folder "
+              f"name ('.' for the current folder)", file=sys.stderr)
+        return 2
     try:
         return int(args.func(args) or 0)
     except CrankdynError as exc:  # the project's own errors only: anything else is a bug

@@ -68,14 +68,12 @@ def run(args) -> int:
     if out.exists() and not out.is_dir():
         raise SpecError(f"-o: {out} exists and is not a folder")
 
-    import math
     from dataclasses import replace
 
     import engine
     from engine.plots import PLOT_NAMES, figures
     from engine.report import build_workbook, save_workbook
 
-    from crankbase.errors import Problem
     from crankbase.output import (check_not_input, ensure_finite, safe_name, save_figure,
                                   staged_output, write_csv)
 
@@ -83,10 +81,11 @@ def run(args) -> int:
     study = engine.load(spec_path)
     spec, settings = study.spec, study.settings
     if args.step is not None:
-        if not (math.isfinite(args.step) and 0 < args.step <= spec.cycle_deg):
-            raise SpecError(Problem("--step", f"got {args.step!r}; must be > 0 and "
-                                              f"<= {spec.cycle_deg:g}"))
-        settings = replace(settings, step_deg=float(args.step))
+        from crankbase.validation import step_argument
+
+        rows = spec.cycle_deg + len(settings.extra_angles_deg) * args.step
+        step = step_argument(args.step, "--step", spec.cycle_deg, rows_span=rows)
+        settings = replace(settings, step_deg=step)
     result = engine.analyze(spec, settings)
     table = result.table
     ensure_finite(table, "force table")
@@ -133,7 +132,9 @@ def run(args) -> int:
         f"  T max              {T.max:10.0f} N    at alpha = {T.alpha_max_deg:g} deg",
         f"  mean torque        {summary.M_mean_Nm:10.2f} N*m  (one cylinder)",
         f"  R_crank-pin max    {R.max:10.0f} N    at alpha = {R.alpha_max_deg:g} deg;"
-        f"  mean {summary.R_mean_N:.0f} N;  chi = {summary.chi:.3f}",
+        f"  mean {summary.R_mean_N:.0f} N;  chi = "
+        + (f"{summary.chi:.3f}" if summary.chi == summary.chi else "undefined "
+           "(the mean load is 0)"),
         f"wrote {csv_path} ({len(table)} rows), {xlsx_path}, "
         f"{len(stems)} plots (PNG, SVG) in {out}" + (" [ru]" if ru else " [en]"),
     ]

@@ -99,6 +99,9 @@ def run(args) -> int:
         spec_path = args.spec
     if not (0 < args.step <= 30):
         raise SpecError([f"--step: got {args.step:g}; must be > 0 and <= 30 degrees"])
+    from crankbase.validation import rows_problem
+    if rows_problem(360.0 / args.step + 1, "--step"):
+        raise SpecError([rows_problem(360.0 / args.step + 1, "--step")])
     plan_opts = None
     if args.plans is not None:
         plan_opts = _plan_options(args)

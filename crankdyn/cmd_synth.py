@@ -70,6 +70,11 @@ def _number(problems, option, text, check, valid):
     if not (math.isfinite(value) and check(value)):
         problems.append(f"{option}: got {text}; must be {valid}")
         return None
+    from crankbase.validation import magnitude_problem
+    why = magnitude_problem(value)       # the same bound as every spec number
+    if why:
+        problems.append(f"{option}: {why}")
+        return None
     return value
 
 
@@ -106,8 +111,11 @@ def _validate(args):
     for opt, val in (("--name", args.name), ("--omega", args.omega)):
         if val is not None and args.ground is None:
             problems.append(f"{opt}: only with --ground (it goes into the spec TOML)")
-    if args.name is not None and not args.name.strip():
-        problems.append("--name: must not be empty")
+    if args.name is not None:
+        from crankbase.validation import name_problem
+        why = name_problem(args.name)
+        if why:
+            problems.append(f"--name: {why}")
     return v, mode, problems
 
 

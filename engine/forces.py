@@ -35,6 +35,7 @@ import numpy as np
 
 from crankbase.errors import Problem
 from crankbase.tolerances import ROUNDOFF_RTOL, SAME_ANGLE_DEG
+from crankbase.validation import angles_argument, step_argument
 from linkage.groups import Wrench, dot, driver_reactions, link_wrench, rrp_reactions
 
 from .indicator import gas_pressure, indicated_mean_pressure, theoretical_mean_pressure
@@ -67,23 +68,6 @@ def _check_angle(value, key):
     return float(value)
 
 
-def _check_angles(alpha_deg, key="alpha_deg"):
-    try:
-        a = np.asarray(alpha_deg, dtype=float)
-    except (TypeError, ValueError):
-        raise EngineSpecError(Problem(key, f"must be numbers [deg], got {alpha_deg!r}")) \
-            from None
-    if a.ndim != 1 or a.size == 0:
-        raise EngineSpecError(Problem(key, f"must be a non-empty 1-D sequence of angles "
-                                           f"[deg], got shape {a.shape}"))
-    bad = ~np.isfinite(a)
-    if bad.any():
-        i = int(np.flatnonzero(bad)[0])
-        raise EngineSpecError(Problem(f"{key}[{i}]", f"got {a[i]!r}; angles must be "
-                                                     "finite [deg]"))
-    return a
-
-
 def table_angles(spec, settings=None) -> np.ndarray:
     """Crank angles of the table rows: every ``settings.step_deg`` from 0 to the cycle end
     (which is always included), plus the extra angles, sorted, without repeats. [deg]
@@ -97,10 +81,8 @@ def table_angles(spec, settings=None) -> np.ndarray:
     """
     _check_spec(spec)
     settings = TableSettings() if settings is None else settings
-    step, cyc = settings.step_deg, spec.cycle_deg
-    if step > cyc:
-        raise EngineSpecError(Problem("step_deg", f"got {step:g}; must be <= the cycle "
-                                                  f"{cyc:g}°"))
+    cyc = spec.cycle_deg
+    step = step_argument(settings.step_deg, "step_deg", cyc, error=EngineSpecError)
     n = int(np.floor(cyc / step * (1 + ROUNDOFF_RTOL)))
     a = step * np.arange(n + 1)
     if cyc - a[-1] > SAME_ANGLE_DEG:
@@ -299,7 +281,7 @@ def _cylinder_forces(spec, alpha_deg, settings, bank_deg, phase_deg):
     _check_spec(spec)
     bank = math.radians(_check_angle(bank_deg, "bank_deg"))
     phase = _check_angle(phase_deg, "phase_deg")
-    theta = table_angles(spec, settings) if alpha_deg is None else _check_angles(alpha_deg)
+    theta = table_angles(spec, settings) if alpha_deg is None else angles_argument(alpha_deg, "alpha_deg", error=EngineSpecError)
     a_deg = theta - phase
     mech = crank_slider(np.radians(theta), spec.R, spec.L, spec.omega, bank=bank,
                         offset=spec.pin_offset, phase=math.radians(phase))

@@ -53,6 +53,7 @@ from pathlib import Path
 import numpy as np
 
 from crankbase.tolerances import POLYTROPE_SLOPE_STEP_DEG
+from crankbase.validation import angles_argument, step_argument
 
 from .kinematics import crank_slider
 
@@ -351,6 +352,7 @@ def gas_pressure(spec, alpha_deg, x=None):
     ndarray
         pг. [Pa]
     """
+    alpha_deg = angles_argument(alpha_deg, "alpha_deg")
     cyc = spec.cycle
     if cyc is not None:
         vr = None
@@ -383,6 +385,7 @@ def indicated_mean_pressure(spec, step_deg=0.05):
     exact piston displacement of the crank-slider dyad and Sп its travel between the dead
     centres.
     """
+    step_deg = step_argument(step_deg, "step_deg", spec.cycle_deg)
     n = int(round(spec.cycle_deg / step_deg))
     alpha = np.linspace(0.0, spec.cycle_deg, n + 1)
     m = crank_slider(np.radians(alpha), spec.R, spec.L, spec.omega, offset=spec.pin_offset)

@@ -26,7 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from crankbase.errors import Problem, SpecError
-from crankbase.validation import Checker, read_toml
+from crankbase.validation import MAX_ROWS, Checker, read_toml, rows_problem
 
 from .indicator import JOIN_AFTER_PEAK_DEG, CycleSpec, PressureTable, sharp_cycle_pressure
 from .kinematics import piston_travel
@@ -434,14 +434,14 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
     # ---- [engine]
     e = c.table(data, "engine")
     c.unknown(e, _ENGINE_KEYS, "engine")
-    name = c.string(e, "name", "engine", required=False, default="engine")
-    if name is not None and not name.strip():
-        c.add("engine.name", "must not be empty")
+    name = c.name(e, "name", "engine", default="engine")
     strokes = c.choice(e, "strokes", (4, 2), "engine", required=False, default=4)
     cylinders = c.number(e, "cylinders", "engine", required=False, default=1, ge=1,
                          integer=True)
-    bore = c.number(e, "bore_mm", "engine", gt=0, what="the cylinder bore D [mm]")
-    stroke = c.number(e, "stroke_mm", "engine", gt=0, what="the piston stroke S [mm]")
+    bore = c.number(e, "bore_mm", "engine", gt=0, divisor=True,
+                    what="the cylinder bore D [mm]")
+    stroke = c.number(e, "stroke_mm", "engine", gt=0, divisor=True,
+                      what="the piston stroke S [mm]")
     speed = c.number(e, "speed_rpm", "engine", gt=0, what="the crankshaft speed [rpm]")
     p0 = c.number(e, "crankcase_MPa", "engine", required=False, default=0.1, ge=0)
     accel = c.choice(e, "acceleration", ("two-term", "exact"), "engine", required=False,
@@ -456,9 +456,9 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
         c.add("engine.rod_ratio", "missing; give rod_ratio (λ = R/Lш, 0 < λ < 1) "
                                   "or rod_length_mm")
     elif has_ratio:
-        lam = c.number(e, "rod_ratio", "engine", gt=0, lt=1)
+        lam = c.number(e, "rod_ratio", "engine", gt=0, lt=1, divisor=True)
     else:
-        L_mm = c.number(e, "rod_length_mm", "engine", gt=0)
+        L_mm = c.number(e, "rod_length_mm", "engine", gt=0, divisor=True)
         if L_mm is not None and stroke is not None and not L_mm > stroke / 2:
             c.add("engine.rod_length_mm",
                   f"got {L_mm:g}; must be > the crank radius stroke_mm/2 = {stroke / 2:g}")
@@ -546,8 +546,13 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
     t = c.table(data, "table")
     c.unknown(t, _TABLE_KEYS, "table")
     step = c.number(t, "step_deg", "table", required=False, default=30.0, gt=0,
-                    le=cycle_deg)
-    extra = c.numbers(t, "extra_angles_deg", "table", required=False, default=[], ge=0)
+                    le=cycle_deg, divisor=True)
+    extra = c.numbers(t, "extra_angles_deg", "table", required=False, default=[], ge=0,
+                      max_length=MAX_ROWS)
+    if step is not None:     # rows of the table: every step over the cycle, its end, extras
+        too_many = rows_problem(cycle_deg / step + 1 + len(extra or []), "table.step_deg")
+        if too_many:
+            c.problems.append(too_many)
     for i, x in enumerate(extra or []):
         if x > cycle_deg:
             c.add(f"table.extra_angles_deg[{i}]", f"got {x:g}; must be <= {cycle_deg:g}")
@@ -583,12 +588,14 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
     return load(path_or_dict, base_dir).spec
 
 
-def _check_pressure_points(c, angle, p, cycle_deg, where):
+def _check_pressure_points(c, angle, p, cycle_deg, where, unit="p_Pa"):
     """Validate a tabulated diagram; ``where(i)`` names row i.  Returns arrays or None.
 
-    Points must lie in [0, cycle), sorted, without repeats; a last row at the cycle end
-    equal to the first row (720° = 0°) is accepted and dropped.
+    ``p`` is in Pa; messages give pressures in the user's ``unit`` (a key of
+    :data:`PRESSURE_UNITS`).  Points must lie in [0, cycle), sorted, without repeats; a
+    last row at the cycle end equal to the first row (720° = 0°) is accepted and dropped.
     """
+    f = PRESSURE_UNITS[unit]
     n0 = len(c.problems)
     if len(angle) != len(p):
         c.add(where(None), f"angle and pressure lists differ in length "
@@ -596,15 +603,16 @@ def _check_pressure_points(c, angle, p, cycle_deg, where):
         return None, None
     for i, (a, q) in enumerate(zip(angle, p)):
         if not (math.isfinite(a) and math.isfinite(q)):
-            c.add(where(i), f"angle {a!r} and pressure {q!r} must be finite numbers")
+            c.add(where(i), f"angle {a!r} and pressure {q / f!r} must be finite numbers")
         elif q < 0:
-            c.add(where(i), f"pressure {q:g} Pa is negative (pressures are absolute)")
+            c.add(where(i), f"{unit} {q / f:g} is negative (pressures are absolute)")
     if len(c.problems) > n0:
         return None, None
     if len(angle) >= 2 and angle[-1] == cycle_deg and angle[0] == 0.0:
         if p[-1] != p[0]:
             c.add(where(len(angle) - 1), f"the end row at {cycle_deg:g}° must repeat the "
-                                         f"row at 0° (got {p[-1]:g} and {p[0]:g} Pa)")
+                                         f"row at 0° (got {unit} {p[-1] / f:g} and "
+                                         f"{p[0] / f:g})")
             return None, None
         angle, p = angle[:-1], p[:-1]
     if len(angle) < 2:
@@ -623,7 +631,7 @@ def _check_pressure_points(c, angle, p, cycle_deg, where):
 
 def _inline_pressure(c, pr, cycle_deg):
     units = [k for k in PRESSURE_UNITS if k in pr]
-    angle = c.numbers(pr, "angle_deg", "pressure")
+    angle = c.numbers(pr, "angle_deg", "pressure", max_length=MAX_ROWS)
     if not units:
         c.add("pressure", "inline data need one of " + ", ".join(PRESSURE_UNITS)
               + " beside angle_deg")
@@ -632,20 +640,30 @@ def _inline_pressure(c, pr, cycle_deg):
         c.add("pressure", "give one pressure list, got " + ", ".join(units))
         return None, None
     key = units[0]
-    vals = c.numbers(pr, key, "pressure")
+    vals = c.numbers(pr, key, "pressure", max_length=MAX_ROWS)
     if angle is None or vals is None:
         return None, None
     p = [v * PRESSURE_UNITS[key] for v in vals]
 
     def where(i):
         return f"pressure.{key}" if i is None else f"pressure.{key}[{i}]"
-    return _check_pressure_points(c, list(angle), p, cycle_deg, where)
+    return _check_pressure_points(c, list(angle), p, cycle_deg, where, unit=key)
 
 
 def read_pressure_csv(path, cycle_deg, checker=None):
     """Read an indicator diagram from CSV: header row with ``angle_deg`` and one of
     ``p_MPa``, ``p_bar``, ``p_kPa``, ``p_Pa``; lines starting with ``#`` are comments;
     other columns are ignored.
+
+    The field separator is taken from the header: ``,`` (then the decimal mark must be
+    ``.``), ``;`` or a tab (then the decimal mark may be ``.`` or ``,``, one of them for the
+    whole file).  Nothing is guessed: a row with more or fewer fields than the header
+    (e.g. decimal commas in a comma-separated file: ``0,0,1015``), a header with two
+    kinds of separator, a file mixing decimal marks, or a number with both marks
+    (``1.015,5``) is refused naming the line and what is ambiguous; no field is ever
+    dropped.  Every problem of the file is reported at once (the first
+    :data:`~crankbase.validation.MAX_ITEM_PROBLEMS` lines one by one, then a count), with
+    values in the file's own unit.
 
     Parameters
     ----------
@@ -660,56 +678,148 @@ def read_pressure_csv(path, cycle_deg, checker=None):
     PressureTable or None
         Crank angle [deg] and absolute pressure [Pa], with the file (None on a problem).
     """
+    from crankbase.validation import MAX_ITEM_PROBLEMS, MAX_SPEC_BYTES, magnitude_problem
+
     c = checker if checker is not None else Checker()
     path = Path(path)
     name = path.name
-    try:
-        with open(path, newline="", encoding="utf-8-sig") as f:
-            rows = [(n, r) for n, r in enumerate(csv.reader(f), start=1)
-                    if r and any(x.strip() for x in r) and not r[0].lstrip().startswith("#")]
-    except (OSError, UnicodeDecodeError) as exc:
-        c.add("pressure.file", f"cannot read {name}: {exc}")
-        rows = None
+    key = "pressure.file"
     angle = p = None
-    if rows is not None:
-        if not rows:
-            c.add("pressure.file", f"{name} is empty")
+    try:
+        if path.stat().st_size > MAX_SPEC_BYTES:
+            raise ValueError(f"{path.stat().st_size:,} bytes; at most {MAX_SPEC_BYTES:,} "
+                             f"are read")
+        with open(path, encoding="utf-8-sig", newline="") as f:
+            text = f.read()
+    except (OSError, UnicodeDecodeError, ValueError) as exc:
+        c.add(key, f"cannot read {name}: {getattr(exc, 'strerror', None) or exc}")
+        text = None
+    lines = []
+    if text is not None:
+        lines = [(n, ln) for n, ln in enumerate(text.splitlines(), start=1)
+                 if ln.strip() and not ln.lstrip().startswith("#")]
+        if not lines:
+            c.add(key, f"{name} is empty")
+    if lines:
+        hline, htext = lines[0]
+        seps = [s for s in (",", ";", "\t") if s in htext]
+        shown = {",": "','", ";": "';'", "\t": "tab"}
+        if len(seps) > 1:
+            c.add(key, f"{name} line {hline}: the header uses more than one separator "
+                       f"({', '.join(shown[s] for s in seps)}); use one of them")
+        elif not seps:
+            c.add(key, f"{name} line {hline}: the header {htext.strip()!r} has one column; "
+                       f"it needs angle_deg and one of {', '.join(PRESSURE_UNITS)}, "
+                       f"separated by ',' or ';' or a tab")
         else:
-            hline, header = rows[0]
-            header = [h.strip() for h in header]
+            sep = seps[0]
+            rows = list(csv.reader([ln for _, ln in lines], delimiter=sep))
+            header = [h.strip() for h in rows[0]]
             units = [k for k in PRESSURE_UNITS if k in header]
             if "angle_deg" not in header or len(units) != 1:
                 what = ("no pressure column" if not units else
                         "more than one pressure column (" + ", ".join(units) + ")")
                 if "angle_deg" not in header:
                     what = "no angle_deg column" + ("" if units else " and " + what)
-                c.add("pressure.file", f"{name} line {hline}: {what}; the header needs "
-                      "angle_deg and exactly one of " + ", ".join(PRESSURE_UNITS)
-                      + f"; got {', '.join(header)}")
+                c.add(key, f"{name} line {hline}: {what}; the header needs angle_deg and "
+                           f"exactly one of {', '.join(PRESSURE_UNITS)}; got "
+                           f"{', '.join(header)}")
             else:
-                ia, ip = header.index("angle_deg"), header.index(units[0])
-                factor = PRESSURE_UNITS[units[0]]
-                a_list, p_list, lines = [], [], []
-                n0 = len(c.problems)
-                for line, r in rows[1:]:
-                    try:
-                        a_list.append(float(r[ia]))
-                        p_list.append(float(r[ip]) * factor)
-                        lines.append(line)
-                    except (ValueError, IndexError):
-                        c.add("pressure.file", f"{name} line {line}: not two numbers in "
-                              f"angle_deg and {units[0]}: {','.join(r)!r}")
-                if len(c.problems) == n0:
-                    def where(i):
-                        if i is None:
-                            return f"pressure.file {name}"
-                        return f"pressure.file {name} line {lines[i]}"
-                    angle, p = _check_pressure_points(c, a_list, p_list, cycle_deg, where)
-    if checker is None and c.problems:
-        raise EngineSpecError(c.problems)
+                angle, p = _read_pressure_rows(c, key, name, sep, header, units[0],
+                                               rows[1:], [n for n, _ in lines[1:]],
+                                               cycle_deg, MAX_ITEM_PROBLEMS,
+                                               magnitude_problem)
+    if checker is None:
+        c.raise_if_any()
     if angle is None:
         return None
     return PressureTable(tuple(angle.tolist()), tuple(p.tolist()), path.resolve())
+
+
+def _read_pressure_rows(c, key, name, sep, header, unit, rows, numbers, cycle_deg,
+                        max_shown, magnitude_problem):
+    """The data rows of a pressure CSV (see :func:`read_pressure_csv`)."""
+    from crankbase.validation import MAX_ROWS
+
+    if len(rows) > MAX_ROWS:
+        c.add(key, f"{name} has {len(rows):,} data rows; at most {MAX_ROWS:,} are read")
+        return None, None
+    ia, ip = header.index("angle_deg"), header.index(unit)
+    comma_sep = sep == ","
+    # decimal mark of the whole file (';' or tab separated): '.' or ',', never both
+    marks, problems = {}, []
+    if not comma_sep:
+        for line, r in zip(numbers, rows):
+            for i in (ia, ip):
+                v = r[i].strip() if i < len(r) else ""
+                if "." in v and "," in v:
+                    problems.append(f"{name} line {line}: {header[i]} {v!r} has both '.' and "
+                                    f"','; write numbers without thousands separators")
+                    continue
+                for m in (".", ","):
+                    if m in v:
+                        marks.setdefault(m, (line, v))
+    if len(marks) == 2:
+        (l1, v1), (l2, v2) = marks["."], marks[","]
+        problems.append(f"{name}: decimal marks are mixed ({v1!r} on line {l1}, {v2!r} on "
+                        f"line {l2}); use '.' or ',' throughout")
+    if problems:
+        for msg in problems[:max_shown]:
+            c.add(key, msg)
+        if len(problems) > max_shown:
+            c.add(key, f"{name}: ... and {len(problems) - max_shown:,} more problems")
+        return None, None
+    decimal_comma = not comma_sep and "," in marks
+    a_list, p_list, where = [], [], []
+    nfields = len(header)
+    for line, r in zip(numbers, rows):
+        fields = [x.strip() for x in r]
+        if len(fields) != nfields:
+            text = sep.join(r)
+            if len(fields) > nfields and comma_sep:
+                why = (f"{len(fields)} fields but the header has {nfields}: decimal commas "
+                       f"in a comma-separated file? {text!r} cannot be split into "
+                       f"{', '.join(header)} without guessing; use '.' as the decimal mark "
+                       f"or ';' as the separator")
+            else:
+                why = (f"{len(fields)} fields but the header has {nfields} "
+                       f"({', '.join(header)}): {text!r}")
+            problems.append(f"{name} line {line}: {why}")
+            continue
+        vals = []
+        for i, col in ((ia, "angle_deg"), (ip, unit)):
+            v = fields[i]
+            if decimal_comma and v.count(",") == 1:
+                v = v.replace(",", ".")
+            try:
+                x = float(v)
+                why = magnitude_problem(x)
+            except ValueError:
+                why = "is not a number"
+            if why:
+                problems.append(f"{name} line {line}: {col} {fields[i]!r} {why}")
+                vals = None
+                break
+            vals.append(x)
+        if vals is None:
+            continue
+        if vals[1] < 0:
+            problems.append(f"{name} line {line}: {unit} {fields[ip]} is negative "
+                            f"(pressures are absolute)")
+            continue
+        a_list.append(vals[0])
+        p_list.append(vals[1] * PRESSURE_UNITS[unit])
+        where.append(line)
+    for msg in problems[:max_shown]:
+        c.add(key, msg)
+    if len(problems) > max_shown:
+        c.add(key, f"{name}: ... and {len(problems) - max_shown:,} more lines with problems")
+    if problems:
+        return None, None
+
+    def at(i):
+        return f"{key} {name}" if i is None else f"{key} {name} line {where[i]}"
+    return _check_pressure_points(c, a_list, p_list, cycle_deg, at, unit=unit)
 
 
 def _check_rounded_peak(c, cyc, lam, k):
@@ -743,8 +853,8 @@ def _cycle(c, cy, strokes):
         c.add(path, "a computed diagram is available for four-stroke engines only; "
                     "give a pressure table for a two-stroke engine")
     eps = c.number(cy, "compression_ratio", path, gt=1)
-    pa = c.number(cy, "pa_MPa", path, gt=0)
-    pr = c.number(cy, "pr_MPa", path, gt=0)
+    pa = c.number(cy, "pa_MPa", path, gt=0, divisor=True)
+    pr = c.number(cy, "pr_MPa", path, gt=0, divisor=True)
     n1 = c.number(cy, "n1", path, gt=1, lt=2)
     n2 = c.number(cy, "n2", path, gt=1, lt=2)
     if "pz_MPa" in cy and "lambda_z" in cy:
@@ -764,7 +874,9 @@ def _cycle(c, cy, strokes):
         rho = 1.0
     rounding = c.choice(cy, "rounding", (True, False), path, required=False, default=True)
     d = ROUNDING_DEFAULTS
-    opts = {k: c.number(cy, k, path, required=False, default=v, gt=0, lt=90)
+    # at least 1°: the rounding curves span these angles (a near-zero span is a division
+    # by ~0 in the Hermite segments)
+    opts = {k: c.number(cy, k, path, required=False, default=v, ge=1, lt=90)
             for k, v in d.items() if k not in ("pc_factor", "peak_factor")}
     opts["pc_factor"] = c.number(cy, "pc_factor", path, required=False,
                                  default=d["pc_factor"], ge=1, le=2)

@@ -24,6 +24,7 @@ import numpy as np
 
 from crankbase.errors import SpecError
 from crankbase.tolerances import SAME_ANGLE_RAD
+from crankbase.validation import angles_argument, step_argument
 
 from . import groups as g
 from .columns import derived_kinematics_columns, force_columns, kinematics_columns, point_names
@@ -365,9 +366,7 @@ def analyze(spec, crank_angles_deg=None, *, course_tables=True) -> AnalysisResul
                          "analysis.crank_angles_deg instead"])
     positions = None
     if crank_angles_deg is not None:
-        phi = np.radians(np.atleast_1d(np.asarray(crank_angles_deg, dtype=float)))
-        if not np.all(np.isfinite(phi)):
-            raise SpecError(["crank_angles_deg: every angle must be finite"])
+        phi = np.radians(angles_argument(crank_angles_deg, "crank_angles_deg"))
     elif spec.crank_angles_deg is not None:
         phi = np.radians(np.asarray(spec.crank_angles_deg, dtype=float))
     else:
@@ -429,6 +428,7 @@ def full_turn(spec, step_deg=1.0):
     """Analysis over a full turn at ``step_deg`` from 0° (for plots), singular positions
     of a change-point mechanism left out (set to NaN)."""
     spec = load_spec(spec)
+    step_deg = step_argument(step_deg, "step_deg", 30.0, rows_span=360.0)
     phi = np.arange(0.0, 360.0 + 0.5 * step_deg, step_deg)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", SingularPositionWarning)

@@ -150,6 +150,10 @@ def transmission_figure(result, full):
     return fig
 
 
+#: Most positions the plan of positions draws (rows beyond it are thinned out evenly).
+MAX_PLAN_POSITIONS = 24
+
+
 def plan_figure(result, full):
     """The mechanism drawn at the numbered positions (the textbook plan of positions).
 
@@ -179,7 +183,10 @@ def plan_figure(result, full):
         g0 = (lo + 1j * spec.offset) * u
         g1 = (hi + 1j * spec.offset) * u
         ax.plot([g0.real, g1.real], [g0.imag, g1.imag], color="k", lw=1.2, label="guide")
-    for i in range(len(k)):
+    # at most MAX_PLAN_POSITIONS drawn (beyond that the plan is unreadable and drawing
+    # costs ~7 ms a position): every n-th row, the first always
+    every = max(1, -(-len(k) // MAX_PLAN_POSITIONS))
+    for i in range(0, len(k), every):
         lw, col = (2.2, "C0") if i == 0 else (0.9, _GREY)
         _draw_links(ax, k, i, zO, zC, lw, col)
         label = k["position"].iat[i]
@@ -211,7 +218,9 @@ def plan_figure(result, full):
     ax.set_ylabel("y [m]")
     turn = "statics" if spec.omega == 0 else "ccw" if spec.omega > 0 else "cw"
     ax.set_title(f"{spec.name}: plan of positions ({spec.kind}, "
-                 f"ω = {spec.omega:g} rad/s, {turn})")
+                 f"ω = {spec.omega:g} rad/s, {turn})"
+                 + (f"\n{-(-len(k) // every)} of {len(k)} rows drawn (1 in {every})"
+                    if every > 1 else ""))
     ax.grid(True, lw=0.3, alpha=0.5)
     ax.legend(loc="upper left", fontsize=7, framealpha=0.85)
     return fig

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 
 from crankbase.errors import SpecError
-from crankbase.validation import Checker, read_toml
+from crankbase.validation import MAX_ROWS, Checker, read_toml, rows_problem
 
 __all__ = ["LinkSpec", "LoadSpec", "MechanismSpec", "load_spec", "LINK_NAMES", "KINDS"]
 
@@ -142,14 +142,17 @@ def load_spec(path_or_dict) -> MechanismSpec:
     m = ck.table(data, "mechanism")
     ck.unknown(m, _MECH_KEYS, "mechanism")
     kind = ck.choice(m, "kind", KINDS, "mechanism")
-    name = ck.string(m, "name", "mechanism", required=False, default="mechanism")
-    crank = ck.number(m, "crank", "mechanism", gt=0, what="the crank length |OA| in m")
-    coupler = ck.number(m, "coupler", "mechanism", gt=0,
+    name = ck.name(m, "name", "mechanism", default="mechanism")
+    crank = ck.number(m, "crank", "mechanism", gt=0, divisor=True,
+                      what="the crank length |OA| in m")
+    coupler = ck.number(m, "coupler", "mechanism", gt=0, divisor=True,
                         what="the coupler (rod) length |AB| in m")
     rocker = ground = None
     if kind == "crank-rocker":
-        rocker = ck.number(m, "rocker", "mechanism", gt=0, what="the rocker length |CB| in m")
-        ground = ck.number(m, "ground", "mechanism", gt=0, what="the ground length |OC| in m")
+        rocker = ck.number(m, "rocker", "mechanism", gt=0, divisor=True,
+                           what="the rocker length |CB| in m")
+        ground = ck.number(m, "ground", "mechanism", gt=0, divisor=True,
+                           what="the ground length |OC| in m")
         if "offset" in m:
             ck.add("mechanism.offset", "applies to a crank-slider only; remove it")
     elif kind == "crank-slider":
@@ -275,9 +278,13 @@ def load_spec(path_or_dict) -> MechanismSpec:
     a = ck.table(data, "analysis", required=False)
     ck.unknown(a, _ANALYSIS_KEYS, "analysis")
     positions = ck.number(a, "positions", "analysis", required=False, integer=True, ge=1)
+    if positions is not None and rows_problem(positions, "analysis.positions"):
+        ck.problems.append(rows_problem(positions, "analysis.positions"))
+        positions = None
     angles = None
     if "crank_angles_deg" in a:
-        angles = ck.numbers(a, "crank_angles_deg", "analysis", min_length=1)
+        angles = ck.numbers(a, "crank_angles_deg", "analysis", min_length=1,
+                            max_length=MAX_ROWS)
         angles = tuple(angles) if angles else None
         if "positions" in a:
             ck.add("analysis", "give either positions or crank_angles_deg, not both")

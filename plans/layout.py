@@ -132,7 +132,7 @@ def _seg_hits_box(p1, p2, box, pad=0.3):
     t0, t1 = 0.0, 1.0
     for p, q in ((-dx, p1.real - x0), (dx, x1 - p1.real), (-dy, p1.imag - y0),
                  (dy, y1 - p1.imag)):
-        if p == 0:
+        if abs(p) < 1e-9:   # parallel to this edge (in mm: 1e-9 mm is no slope at all)
             if q < 0:
                 return False
         else:

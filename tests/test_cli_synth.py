@@ -14,6 +14,7 @@ import pytest
 from openpyxl import load_workbook
 
 import linkage
+from crankbase.output import MANIFEST_NAME
 from crankdyn.cli import main
 from linkage import synthesis as syn
 
@@ -32,7 +33,7 @@ def test_paper_example_fig3_with_ground(tmp_path, capsys):
     assert rc == 0
     printed = capsys.readouterr().out
     assert "λ1 = 0.0800" in printed and "λ3 = 0.2405" in printed and "46°24′" in printed
-    names = sorted(p.name for p in out.iterdir())
+    names = sorted(p.name for p in out.iterdir() if p.name != MANIFEST_NAME)
     assert names == sorted(["table1.csv", "synthesis.xlsx", "mechanism.csv",
                             "transmission_angle.csv", "press_drive.toml",
                             *[f"{p}.{e}" for p in PLOTS for e in ("png", "svg")]])
@@ -115,7 +116,7 @@ def test_equal_l2_l3_example(tmp_path, capsys):
 def test_region_only_and_other_phi0(tmp_path):
     out = tmp_path / "o"
     assert run(["--phi0", "120"], out) == 0
-    names = {p.name for p in out.iterdir()}
+    names = {p.name for p in out.iterdir()} - {MANIFEST_NAME}
     assert names == {"table1.csv", "synthesis.xlsx", "region.png", "region.svg",
                      "mu_min.png", "mu_min.svg"}
     t1 = pd.read_csv(out / "table1.csv")
@@ -131,7 +132,7 @@ def test_rerun_replaces_outputs(tmp_path):
     assert run(["--l2", "0.7", "--l3", "0.6", "--no-plots"], out) == 0
     assert run(["--l2", "0.6", "--l3", "0.7", "--no-plots"], out) == 0
     assert pd.read_csv(out / "mechanism.csv")["l2"].iloc[0] == 0.6
-    assert not [p for p in out.iterdir() if p.name.startswith(".")]
+    assert [p.name for p in out.iterdir() if p.name.startswith(".")] == [MANIFEST_NAME]
 
 
 BAD = [

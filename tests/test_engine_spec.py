@@ -234,7 +234,7 @@ def test_csv_file_does_not_exist(tmp_path):
     ("0,0.1\n-10,5\n", 3, "outside the cycle"),
     ("0,0.1\n360,-5\n", 3, "negative"),
     ("0,0.1\n360,nan\n", 3, "finite"),
-    ("0,0.1\n360,abc\n", 3, "not two numbers"),
+    ("0,0.1\n360,abc\n", 3, "not a number"),
     ("0,0.1\n720,0.2\n", 3, "must repeat"),
 ])
 def test_csv_bad_rows_name_the_row(tmp_path, body, line, word):
