@@ -25,6 +25,9 @@ def add_parser(sub):
     p.add_argument("--step", type=float, default=1.0, metavar="DEG",
                    help="crank-angle step of the full-turn plots (default 1°)")
     p.add_argument("--no-plots", action="store_true", help="write the tables only")
+    p.add_argument("--lang", choices=("en", "ru"), default="en",
+                   help="language of the plot labels: en (English symbols, default) or ru "
+                        "(Russian textbook symbols: Mур, Mпс)")
     p.set_defaults(func=run)
     return p
 
@@ -55,7 +58,7 @@ def run(args) -> int:
     figures = {}
     if full is not None:
         from linkage.plots import all_figures
-        figures = all_figures(result, full)
+        figures = all_figures(result, full, lang=args.lang)
     with staged_output(args.output, inputs=[spec_path]) as stage:
         write_csvs(result, stage)
         write_workbook(result, stage / f"{safe_name(spec.name, 'linkage')}.xlsx")
