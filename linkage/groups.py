@@ -21,10 +21,10 @@ statically determinate on its own), then the driver, which yields the balancing
 
 References
 ----------
-.. [1] Артоболевский И. И. Теория механизмов и машин. 4-е изд. М.: Наука, 1988, гл. 4
-   (kinematics of the class-II groups) and гл. 13 (kinetostatics by Assur groups).
-.. [2] 孙桓, 陈作模, 葛文杰. 机械原理, 第 8 版. 北京: 高等教育出版社, 2013, 第 4 章:
-   kinetostatics by basic link groups, one subroutine per group type (seed 001).
+.. [1] Артоболевский И. И. Теория механизмов и машин. 4-е изд. М.: Наука, 1988: the
+   kinematics of the class-II groups and the kinetostatics by Assur groups.
+.. [2] 孙桓 等. 机械原理 (Theory of machines), ch. 11 "Dynamic analysis and design of
+   machine systems": kinetostatics by basic link groups, one subroutine per group type.
 """
 from __future__ import annotations
 

@@ -30,6 +30,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from crankbase.tolerances import SAME_ANGLE_DEG
+
 from .analysis import build_mechanism
 
 __all__ = ["plot_plan", "plot_velocities", "plot_accelerations", "plot_driving_moment",
@@ -115,7 +117,7 @@ def _cycle_axis(result, plan, t):
         return phi, np.argsort(phi), t["phi"], None
     rot = 1 if result.spec.omega > 0 else -1
     x = np.mod((phi - s.phi_working_start_deg) * rot, 360.0)
-    x[-1] = 360.0 if abs(x[-1]) < 1e-9 and len(x) > 1 else x[-1]
+    x[-1] = 360.0 if abs(x[-1]) < SAME_ANGLE_DEG and len(x) > 1 else x[-1]
     order = np.argsort(x, kind="stable")
     work = s.working_crank_angle_deg
     n = 0

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from crankbase.tolerances import SAME_ANGLE_DEG
+
 __all__ = ["plot_region", "plot_mu_min_curves", "plot_transmission_angle"]
 
 
@@ -162,10 +164,10 @@ def plot_transmission_angle(phi_deg, mu_deg, design, ax=None):
         ax.plot([p], [90.0], "o", color="tab:green", ms=6, zorder=5)
     ax.plot([], [], "o", color="tab:green", label=f"μ = 90° at φ = {d.phi0_deg:g}° and "
                                                    f"{360 - d.phi0_deg:g}°")
-    ats = [d.mu_min_at_deg] if abs(d.phi0_deg - 90.0) > 1e-9 else [0.0, 180.0, 360.0]
+    ats = [d.mu_min_at_deg] if abs(d.phi0_deg - 90.0) > SAME_ANGLE_DEG else [0.0, 180.0, 360.0]
     if d.mu_min_at_deg == 0.0 and 360.0 not in ats:
         ats.append(360.0)
-    where = (f"{d.mu_min_at_deg:g}°" if abs(d.phi0_deg - 90.0) > 1e-9
+    where = (f"{d.mu_min_at_deg:g}°" if abs(d.phi0_deg - 90.0) > SAME_ANGLE_DEG
              else "0° and 180°")
     ax.plot(ats, [d.mu_min_deg] * len(ats), "v", color="tab:red", ms=7, zorder=5,
             label=f"μmin = {d.mu_min_deg:.2f}° at φ = {where}")
