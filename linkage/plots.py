@@ -176,32 +176,32 @@ def _twin(ax, result, plan, t, col, label, ylabel):
     return ax
 
 
+def _rates(result, ax, lang, plan, order):
+    """Link 3 and 4 rates of the given ``order`` (1: velocities, 2: accelerations)."""
+    t, k, name = _text(lang), result.kinematics, result.spec.name
+    ax = _axes(ax)
+    w3, w4, s4 = (("omega3_rad_s", "omega4_rad_s", "v4") if order == 1
+                  else ("eps3_rad_s2", "eps4_rad_s2", "a4"))
+    sym, kind = ("omega", "vel") if order == 1 else ("eps", "acc")
+    if result.spec.kind == "crank-rocker":
+        return _curves(ax, result, plan, t, [(w3, t[f"{sym}3_c"], k), (w4, t[f"{sym}4"], k)],
+                       t[f"ang_{kind}"], t[f"{kind}_title"].format(name=name))
+    _curves(ax, result, plan, t, [(w3, t[f"{sym}3_r"], k)], t["w3" if order == 1 else "e3"],
+            t[f"{kind}_title_s"].format(name=name))
+    col = "v4_m_s" if order == 1 else "a4_m_s2"
+    return _twin(ax, result, plan, t, col, t[s4], t[f"{s4}_unit"])
+
+
 def plot_velocities(result, ax=None, lang="en", *, plan=None):
     """ω3 and ω4 (a crank-slider: ω3 and, on a second axis, the slider velocity v4) over
     the rows of ``result`` (a full turn).  Returns the Axes."""
-    t, k, name = _text(lang), result.kinematics, result.spec.name
-    ax = _axes(ax)
-    if result.spec.kind == "crank-rocker":
-        return _curves(ax, result, plan, t, [("omega3_rad_s", t["omega3_c"], k),
-                                             ("omega4_rad_s", t["omega4"], k)],
-                       t["ang_vel"], t["vel_title"].format(name=name))
-    _curves(ax, result, plan, t, [("omega3_rad_s", t["omega3_r"], k)], t["w3"],
-            t["vel_title_s"].format(name=name))
-    return _twin(ax, result, plan, t, "v4_m_s", t["v4"], t["v4_unit"])
+    return _rates(result, ax, lang, plan, 1)
 
 
 def plot_accelerations(result, ax=None, lang="en", *, plan=None):
     """ε3 and ε4 (a crank-slider: ε3 and, on a second axis, the slider acceleration a4)
     over the rows of ``result`` (a full turn).  Returns the Axes."""
-    t, k, name = _text(lang), result.kinematics, result.spec.name
-    ax = _axes(ax)
-    if result.spec.kind == "crank-rocker":
-        return _curves(ax, result, plan, t, [("eps3_rad_s2", t["eps3_c"], k),
-                                             ("eps4_rad_s2", t["eps4"], k)],
-                       t["ang_acc"], t["acc_title"].format(name=name))
-    _curves(ax, result, plan, t, [("eps3_rad_s2", t["eps3_r"], k)], t["e3"],
-            t["acc_title_s"].format(name=name))
-    return _twin(ax, result, plan, t, "a4_m_s2", t["a4"], t["a4_unit"])
+    return _rates(result, ax, lang, plan, 2)
 
 
 def plot_driving_moment(result, ax=None, lang="en", *, plan=None):
