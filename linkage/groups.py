@@ -122,7 +122,9 @@ class Vec:
         return getattr(ufunc, method)(*args, **kwargs)
 
     def __getitem__(self, index):
-        return Vec(np.asarray(self.x)[index], np.asarray(self.y)[index])
+        # a constant component (a float, e.g. a guide direction) is the same at every index
+        return Vec(self.x[index] if np.ndim(self.x) else self.x,
+                   self.y[index] if np.ndim(self.y) else self.y)
 
     def __len__(self):
         return len(self.x) if np.ndim(self.x) else len(self.y)

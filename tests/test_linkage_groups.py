@@ -4,6 +4,7 @@ them; the README's direct use of the groups runs and closes the loop."""
 import math
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -69,6 +70,9 @@ def test_groups_take_complex_inputs_as_the_engine_passes_them():
                              g.Wrench(zero + 0j, zero, cr.origin.z))
     T = g.dot(-reac.RA, 1j * cr.e)
     np.testing.assert_allclose(-drv.M_drive, T * R, rtol=1e-12)
+    # per-position indexing of a constant direction (the guide) gives that direction
+    assert np.asarray(sol.link4.e[1]) == pytest.approx(1j, abs=1e-15)
+    assert np.asarray(sol.B.z[2]) == pytest.approx(np.asarray(sol.B.z)[2])
 
 
 def test_readme_example_closes_the_loop():
