@@ -36,3 +36,8 @@ ASSEMBLY_CHECK_RTOL = 1e-7
 #: the ground) below this is zero: solving it as a quadratic would divide round-off by
 #: round-off, so the equation is solved as the linear one it has become.
 DEGENERATE_QUADRATIC_ATOL = 1e-15
+
+#: Step of the central difference that gives the slope of a polytrope p(α) at a rounding
+#: knot of the indicator diagram [deg]: small against the 10–50° rounding zones, large
+#: enough that the difference of pressures keeps ~8 significant digits.
+POLYTROPE_SLOPE_STEP_DEG = 1e-4

@@ -104,6 +104,7 @@ class Vec:
         return np.broadcast_shapes(np.shape(self.x), np.shape(self.y))
 
     def __array__(self, dtype=None, copy=None):
+        # numpy 2 wants an ndarray here, also for scalar components (a 0-d array)
         z = np.asarray(np.asarray(self.x) + 1j * np.asarray(self.y))
         return z if dtype is None else z.astype(dtype)
 
