@@ -35,7 +35,7 @@ from crankbase.tolerances import SAME_ANGLE_DEG
 from .analysis import build_mechanism
 
 __all__ = ["plot_plan", "plot_velocities", "plot_accelerations", "plot_driving_moment",
-           "plot_transmission_angle", "all_figures"]
+           "plot_transmission_angle", "all_figures", "MAX_PLAN_POSITIONS"]
 
 _GREY = "#9a9a9a"
 #: Dash patterns and markers of successive curves (told apart in black-and-white print).
@@ -63,6 +63,7 @@ _TEXT = {
         "first": "first crank angle given, φ = {v:.4g}°",
         "x": "x [m]", "y": "y [m]", "statics": "statics", "ccw": "ccw", "cw": "cw",
         "plan_title": "{name}: plan of positions ({kind}, ω = {w:g} rad/s, {turn})",
+        "thinned": "{k} of {n} rows drawn (1 in {every})",
     },
     "ru": {
         "phi": "угол поворота кривошипа φ [°]",
@@ -88,6 +89,7 @@ _TEXT = {
         "x": "x [м]", "y": "y [м]", "statics": "статика", "ccw": "против часовой стрелки",
         "cw": "по часовой стрелке",
         "plan_title": "{name}: план положений ({kind}, ω = {w:g} рад/с, {turn})",
+        "thinned": "показано {k} из {n} строк (каждая {every}-я)",
     },
 }
 
@@ -238,12 +240,18 @@ def plot_transmission_angle(result, ax=None, lang="en", *, plan=None):
     return ax
 
 
+#: Most positions the plan of positions draws (rows beyond it are thinned out evenly: a
+#: plan of more is unreadable, and each position costs ~7 ms to draw).
+MAX_PLAN_POSITIONS = 24
+
+
 def plot_plan(result, ax=None, lang="en", *, full=None):
     """The mechanism drawn at the rows of ``result`` (the textbook plan of positions).
 
     Position 1 (start of the working stroke) and the other extreme position are drawn
     bold; with ``full`` (a full-turn result) the paths of B and of the extra points are
-    dashed.  Returns the Axes."""
+    dashed.  At most :data:`MAX_PLAN_POSITIONS` rows are drawn (every n-th, the first
+    always; the title says so).  Returns the Axes."""
     t = _text(lang)
     spec = result.spec
     ax = _axes(ax, 8.0, 6.5)
@@ -266,7 +274,8 @@ def plot_plan(result, ax=None, lang="en", *, full=None):
         lo, hi = np.nanmin(s4) - 0.15 * spec.coupler, np.nanmax(s4) + 0.15 * spec.coupler
         g0, g1 = (lo + 1j * spec.offset) * u, (hi + 1j * spec.offset) * u
         ax.plot([g0.real, g1.real], [g0.imag, g1.imag], color="k", lw=1.2, label=t["guide"])
-    for i in range(len(k)):
+    every = max(1, -(-len(k) // MAX_PLAN_POSITIONS))
+    for i in range(0, len(k), every):
         lw, col = (2.2, "C0") if i == 0 else (0.9, _GREY)
         _draw_links(ax, k, i, zO, zC, lw, col)
         label = k["position"].iat[i]
@@ -295,8 +304,10 @@ def plot_plan(result, ax=None, lang="en", *, full=None):
     ax.set_xlabel(t["x"])
     ax.set_ylabel(t["y"])
     turn = t["statics"] if spec.omega == 0 else t["ccw"] if spec.omega > 0 else t["cw"]
-    ax.set_title(t["plan_title"].format(name=spec.name, kind=spec.kind, w=spec.omega,
-                                        turn=turn))
+    title = t["plan_title"].format(name=spec.name, kind=spec.kind, w=spec.omega, turn=turn)
+    if every > 1:
+        title += "\n" + t["thinned"].format(k=-(-len(k) // every), n=len(k), every=every)
+    ax.set_title(title)
     ax.grid(True, lw=0.3, alpha=0.5)
     ax.legend(loc="upper left", fontsize=7, framealpha=0.85)
     return ax

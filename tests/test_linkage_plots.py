@@ -66,3 +66,12 @@ def test_plot_helpers_make_their_own_figure(results):
 def test_unknown_language_is_refused(results):
     with pytest.raises(ValueError, match="lang"):
         plots.plot_velocities(results[1], lang="de")
+
+
+def test_a_long_plan_is_thinned_to_at_most_max_positions():
+    spec = linkage.load_spec(example_path("ratchet.toml"))
+    res = linkage.analyze(spec, crank_angles_deg=range(0, 360, 3))       # 120 rows
+    ax = plots.plot_plan(res)
+    drawn = [ln for ln in ax.lines if ln.get_marker() == "o" and len(ln.get_xdata()) >= 3]
+    assert 1 < len(drawn) <= plots.MAX_PLAN_POSITIONS + 1        # + the other extreme
+    assert "of 120 rows drawn" in ax.get_title()
