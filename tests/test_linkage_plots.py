@@ -75,3 +75,24 @@ def test_a_long_plan_is_thinned_to_at_most_max_positions():
     drawn = [ln for ln in ax.lines if ln.get_marker() == "o" and len(ln.get_xdata()) >= 3]
     assert 1 < len(drawn) <= plots.MAX_PLAN_POSITIONS + 1        # + the other extreme
     assert "of 120 rows drawn" in ax.get_title()
+
+
+def test_synthesis_plots_return_their_axes_without_cyrillic():
+    import numpy as np
+    from matplotlib.figure import Figure
+
+    from linkage import synthesis as syn
+    from linkage import synthesis_plots as sp
+
+    d = syn.design_for_mu_min(0.90, 40, 30, l1_step=0.01)
+    phi = np.arange(0.0, 361.0)
+    fig = Figure()
+    axes = fig.subplots(1, 3)
+    got = [sp.plot_region(syn.existence_region(30), d, family=syn.right_angle_family(d.l1, 30),
+                          ax=axes[0]),
+           sp.plot_mu_min_curves(syn.mu_min_curves(30), d, mu_required=40, ax=axes[1]),
+           sp.plot_transmission_angle(phi, syn.transmission_angle_deg(phi, d.l1, d.l2, d.l3),
+                                      d, ax=axes[2])]
+    assert got == list(axes)
+    texts = " ".join(t for ax in axes for t in _texts(ax))
+    assert "KKM-30" in texts and not CYRILLIC.search(texts), CYRILLIC.findall(texts)
