@@ -3,7 +3,9 @@ positions, on one core, beside pylinkage.
 
     python benchmarks/bench_linkage.py [--positions N] [--pylinkage-positions M]
 
-Times (best of several repeats, ``time.perf_counter``, BLAS/OpenMP pinned to one thread):
+Times: best of several repeats of the CPU time of this process (``time.process_time``: on
+a shared machine the wall time also counts the time other processes hold the core), one
+thread (BLAS/OpenMP pinned to one); ``--wall`` times wall-clock instead:
 
 * analyze: the public ``linkage.analyze(spec, crank_angles_deg=...)`` on the ratchet
   example (crank-rocker with masses, inertias, an extra point and a stroke- and
@@ -43,14 +45,17 @@ import warnings  # noqa: E402
 import numpy as np  # noqa: E402
 
 
+CLOCK = time.process_time
+
+
 def best_of(fn, repeat):
-    """Best wall time of ``repeat`` calls (after one warm-up call). [s]"""
+    """Best time of ``repeat`` calls (after one warm-up call) on :data:`CLOCK`. [s]"""
     fn()
     times = []
     for _ in range(repeat):
-        t0 = time.perf_counter()
+        t0 = CLOCK()
         fn()
-        times.append(time.perf_counter() - t0)
+        times.append(CLOCK() - t0)
     return min(times)
 
 
@@ -172,12 +177,18 @@ def main(argv=None):
     ap.add_argument("--positions", type=int, default=1_000_000)
     ap.add_argument("--pylinkage-positions", type=int, default=20_000)
     ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--wall", action="store_true", help="wall-clock time instead of CPU time")
     args = ap.parse_args(argv)
+    global CLOCK
+    if args.wall:
+        CLOCK = time.perf_counter
     n = args.positions
 
     from linkage import analysis as an
     print(f"Python {platform.python_version()}, numpy {np.__version__}, "
-          f"{os.cpu_count()} CPU(s) available, one thread used; CHUNK = {an.CHUNK}")
+          f"{os.cpu_count()} CPU(s) available, one thread used; CHUNK = {an.CHUNK}; "
+          f"{'wall-clock' if args.wall else 'CPU'} time; load average "
+          f"{', '.join(f'{x:.1f}' for x in os.getloadavg())}")
     rows = []
     spec, phi, res, rocker = core_timings("ratchet.toml", n, args.repeat)
     _, _, _, slider = core_timings("press.toml", n, args.repeat)

@@ -32,6 +32,11 @@ SAME_ANGLE_DEG = 1e-6
 #: a square root, which loses about half the digits near a double root).
 ASSEMBLY_CHECK_RTOL = 1e-7
 
+#: A quadratic's leading coefficient (an O(1) difference of squares of lengths relative to
+#: the ground) below this is zero: solving it as a quadratic would divide round-off by
+#: round-off, so the equation is solved as the linear one it has become.
+DEGENERATE_QUADRATIC_ATOL = 1e-15
+
 #: Step of the central difference that gives the slope of a polytrope p(α) at a rounding
 #: knot of the indicator diagram [deg]: small against the 10–50° rounding zones, large
 #: enough that the difference of pressures keeps ~8 significant digits.

@@ -25,6 +25,9 @@ def add_parser(sub):
     p.add_argument("--step", type=float, default=1.0, metavar="DEG",
                    help="crank-angle step of the full-turn plots (default 1°)")
     p.add_argument("--no-plots", action="store_true", help="write the tables only")
+    p.add_argument("--lang", choices=("ru", "en"), default="ru",
+                   help="language of plots and drawings: ru (the Russian textbook's symbols "
+                        "and labels, default) or en (English symbols)")
     g = p.add_argument_group(
         "graphical method (velocity and acceleration plans, force polygons, Zhukovsky lever)")
     g.add_argument("--plans", metavar="LIST",
@@ -32,8 +35,6 @@ def add_parser(sub):
                         "plans.csv, lever.csv, student_table.csv, sheet.pdf, sheet.dxf")
     g.add_argument("--sheet", default="A1", metavar="A1|A3",
                    help="drawing sheet size, landscape (default A1)")
-    g.add_argument("--lang", default="ru", metavar="ru|en",
-                   help="language of the drawings (default ru: the textbook's labels)")
     g.add_argument("--measured", metavar="CSV",
                    help="a student's measured segments (position, segment, length_mm or "
                         "value): writes plan_errors.csv, the error of the plan method in %%")
@@ -125,7 +126,7 @@ def run(args) -> int:
     figures = {}
     if full is not None:
         from linkage.plots import all_figures
-        figures = all_figures(result, full)
+        figures = all_figures(result, full, lang=args.lang)
     inputs = [spec_path] + ([args.measured] if args.measured else [])
     with staged_output(args.output, inputs=inputs) as stage:
         if plan_list is not None:

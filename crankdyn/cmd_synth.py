@@ -187,12 +187,12 @@ def run(args) -> int:
         from linkage import synthesis_plots as plots
 
         family = syn.right_angle_family(design.l1, phi0) if design is not None else None
-        figures["region"] = plots.plot_region(region, design, family=family)
+        figures["region"] = plots.plot_region(region, design, family=family).figure
         figures["mu_min"] = plots.plot_mu_min_curves(syn.mu_min_curves(phi0), design,
-                                                     mu_required=v["mu_min"])
+                                                     mu_required=v["mu_min"]).figure
         if design is not None:
             figures["transmission_angle"] = plots.plot_transmission_angle(
-                phi, mu_turn["mu_deg"].to_numpy(), design)
+                phi, mu_turn["mu_deg"].to_numpy(), design).figure
 
     # ---- write (all files appear together, or none)
     written = []

@@ -3,17 +3,22 @@
 Public API::
 
     spec = linkage.load_spec("ratchet.toml")      # or a dict of the same shape
-    res = linkage.analyze(spec)                   # res.kinematics, res.forces (DataFrames)
+    res = linkage.analyze(spec)                   # AnalysisResult: .kinematics, .forces
+                                                  # (DataFrames), .summary (typed), ...
+    linkage.plots.plot_driving_moment(linkage.full_turn(spec), ax=ax)   # draw on an Axes
 
-The group routines (driver, RRR and RRP dyads, their kinetostatics) are in
-:mod:`linkage.groups`; the mechanisms in :mod:`linkage.mechanisms`.  This package never
-imports matplotlib or openpyxl (reports and plots import them when called).
+The group routines (driver, RRR and RRP dyads, their kinetostatics; the one
+implementation) are in :mod:`linkage.groups`; four-bar geometry in :mod:`linkage.fourbar`;
+the useful resistance in :mod:`linkage.loads`; the mechanisms in
+:mod:`linkage.mechanisms`.  This package never imports matplotlib or openpyxl (reports and
+plots import them when called).
 """
-from .analysis import AnalysisResult, SingularPositionWarning, analyze, full_turn
+from .analysis import AnalysisResult, AnalysisSummary, SingularPositionWarning, analyze, full_turn
 from crankbase.errors import AssemblyError, CrankdynError, Problem, SpecError
 from .mechanisms import CrankRocker, CrankSlider
 from .spec import MechanismSpec, load_spec
 
-__all__ = ["load_spec", "analyze", "full_turn", "AnalysisResult", "MechanismSpec",
+__all__ = ["load_spec", "analyze", "full_turn", "AnalysisResult", "AnalysisSummary",
+           "MechanismSpec",
            "CrankRocker", "CrankSlider", "SpecError", "AssemblyError", "CrankdynError",
            "Problem", "SingularPositionWarning"]

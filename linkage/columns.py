@@ -1,5 +1,5 @@
-"""Column names of the linkage tables and the reported points (shared by the group-routine
-reference :func:`linkage.analysis.solve_columns` and the fused :mod:`linkage.kernel`)."""
+"""Column names of the linkage tables and the reported points (:func:`linkage.analyze`,
+:func:`linkage.analysis.solve_columns`, the reports)."""
 from __future__ import annotations
 
 from .spec import LINK_NUMBER, MechanismSpec

@@ -5,8 +5,8 @@ The course project tabulates, per position, the speeds and accelerations of the 
 about A and about C (VBA = ω3·lAB, aBA^n = ω3²·lAB, aBA^t = ε3·lAB, ...), the force inputs
 of the kinetostatics (weights Gi = mi·g, inertia forces Fui = −mi·aSi, inertia moments
 Mui = −JSi·εi) and the magnitudes of the reactions.  :func:`fill_derived` computes them
-from the columns already filled by the kernel or by the group routines, so both paths
-report the same numbers.  The inertia loads are those of
+from the columns the group routines have filled (chunk by chunk, in
+:func:`linkage.analyze`).  The inertia loads are those of
 :func:`linkage.groups.inertia_load`, the model that enters the kinetostatics; the tests
 hold them, with the reactions, to the equilibrium of every link.
 """
@@ -23,7 +23,7 @@ __all__ = ["fill_derived"]
 
 def _norm(x, y, out, t):
     """|(x, y)| into ``out`` (``t`` scratch): sqrt(x² + y²), out= throughout (the
-    kernel's chunks stay in cache; ``np.hypot``'s overflow care is not needed here)."""
+    chunks stay in cache; ``np.hypot``'s overflow care is not needed here)."""
     np.multiply(x, x, out=out)
     np.multiply(y, y, out=t)
     np.add(out, t, out=out)

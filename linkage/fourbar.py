@@ -16,11 +16,11 @@ summary (:mod:`linkage.analysis`) and the synthesis (:mod:`linkage.synthesis`) s
 
 References
 ----------
-.. [1] Артоболевский И. И. Теория механизмов и машин. 4-е изд. М.: Наука, 1988, § 22
-   (Grashof's criterion s + l ≤ p + q) and § 23 (the angle of transmission).
+.. [1] Артоболевский И. И. Теория механизмов и машин. 4-е изд. М.: Наука, 1988: Grashof's
+   criterion s + l ≤ p + q for a link that turns fully, and the angle of transmission.
 .. [2] Середа Н. А. Семейство кривошипно-коромысловых механизмов с максимумом угла
    передачи при угле поворота кривошипа, равном 30°. Известия Самарского научного центра
-   РАН, 2016 (seed 004): eq. (4)–(5), (12) μ(φ) and (13) μmin on the line of centres.
+   РАН, 2016: eq. (4)–(5), (12) μ(φ) and (13) μmin on the line of centres.
 """
 from __future__ import annotations
 

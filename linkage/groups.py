@@ -21,10 +21,10 @@ statically determinate on its own), then the driver, which yields the balancing
 
 References
 ----------
-.. [1] Артоболевский И. И. Теория механизмов и машин. 4-е изд. М.: Наука, 1988, гл. 4
-   (kinematics of the class-II groups) and гл. 13 (kinetostatics by Assur groups).
-.. [2] 孙桓, 陈作模, 葛文杰. 机械原理, 第 8 版. 北京: 高等教育出版社, 2013, 第 4 章:
-   kinetostatics by basic link groups, one subroutine per group type (seed 001).
+.. [1] Артоболевский И. И. Теория механизмов и машин. 4-е изд. М.: Наука, 1988: the
+   kinematics of the class-II groups and the kinetostatics by Assur groups.
+.. [2] 孙桓 等. 机械原理 (Theory of machines), ch. 11 "Dynamic analysis and design of
+   machine systems": kinetostatics by basic link groups, one subroutine per group type.
 """
 from __future__ import annotations
 
@@ -136,7 +136,9 @@ class Vec:
     __hash__ = None
 
     def __getitem__(self, index):
-        return Vec(np.asarray(self.x)[index], np.asarray(self.y)[index])
+        # a constant component (a float, e.g. a guide direction) is the same at every index
+        return Vec(self.x[index] if np.ndim(self.x) else self.x,
+                   self.y[index] if np.ndim(self.y) else self.y)
 
     def __len__(self):
         return len(self.x) if np.ndim(self.x) else len(self.y)
@@ -381,22 +383,23 @@ def rrr(A: PointMotion, C: PointMotion, l3: float, l4: float, assembly: int) -> 
     """
     d = C.z - A.z
     D2 = dot(d, d)
-    D = np.sqrt(D2)
-    p = (l3 * l3 - l4 * l4 + D2) / (2.0 * D)
+    iD = 1.0 / np.sqrt(D2)                       # (products by reciprocals: one division)
+    p = (l3 * l3 - l4 * l4 + D2) * (0.5 * iD)
     h2 = l3 * l3 - p * p
     h = np.sqrt(np.maximum(h2, 0.0))
-    ed = d / D
+    ed = d * iD
     zB = A.z + ed * p + ed.perp() * (h if assembly > 0 else -h)
     r3 = zB - A.z
     r4 = zB - C.z
     det = cross(r3, r4)
+    idet = 1.0 / det
     dv = C.v - A.v
-    w3 = dot(r4, dv) / det
-    w4 = dot(r3, dv) / det
+    w3 = dot(r4, dv) * idet
+    w4 = dot(r3, dv) * idet
     r3w3sq, r4w4sq = r3 * (w3 * w3), r4 * (w4 * w4)
     da = C.a - A.a + r3w3sq - r4w4sq
-    e3 = dot(r4, da) / det
-    e4 = dot(r3, da) / det
+    e3 = dot(r4, da) * idet
+    e4 = dot(r3, da) * idet
     ir3 = r3.perp()
     B = PointMotion(zB, A.v + ir3 * w3, A.a + ir3 * e3 - r3w3sq)
     link3 = LinkMotion(A, r3 * (1.0 / l3), w3, e3)
@@ -467,12 +470,12 @@ def rrp(A: PointMotion, L: float, guide_point=0j, guide_angle=0.0, offset=0.0,
     s = rel.x + h if assembly > 0 else rel.x - h
     zB = O + Vec(s, offset) * u
     r3 = zB - A.z
-    den = dot(u, r3)
-    w3 = -cross(u, A.v) / den
+    mden = -1.0 / dot(u, r3)
+    w3 = cross(u, A.v) * mden
     ir3 = r3.perp()
     v = dot(u, A.v + ir3 * w3)
     rhs = A.a - r3 * (w3 * w3)
-    e3 = -cross(u, rhs) / den
+    e3 = cross(u, rhs) * mden
     a = dot(u, rhs + ir3 * e3)
     B = PointMotion(zB, u * v, u * a)
     link3 = LinkMotion(A, r3 * (1.0 / L), w3, e3)
@@ -554,8 +557,8 @@ def link_wrench(link: LinkMotion, mass=0.0, inertia=0.0, cg=0j, gravity=0.0,
 
 def _split(W, e1, e2):
     """Solve n1·e1 + n2·e2 = W for the real magnitudes n1, n2 (vectorised)."""
-    det = cross(e1, e2)
-    return cross(W, e2) / det, cross(e1, W) / det
+    idet = 1.0 / cross(e1, e2)
+    return cross(W, e2) * idet, cross(e1, W) * idet
 
 
 @dataclass
@@ -604,8 +607,8 @@ def rrr_reactions(sol: RRRSolution, l3: float, l4: float, W3: Wrench, W4: Wrench
     """
     zB = sol.B.z
     e3, e4 = sol.link3.e, sol.link4.e
-    t3 = W3.moment_about(zB) / l3
-    t4 = W4.moment_about(zB) / l4
+    t3 = W3.moment_about(zB) * (1.0 / l3)
+    t4 = W4.moment_about(zB) * (1.0 / l4)
     T3, T4 = e3.perp() * t3, e4.perp() * t4
     n3, n4 = _split(-(W3.force + W4.force + T3 + T4), e3, e4)
     RA = e3 * n3 + T3
@@ -660,7 +663,7 @@ def rrp_reactions(sol: RRPSolution, L: float, W3: Wrench, W4: Wrench) -> RRPReac
     zB = sol.B.z
     e3 = sol.link3.e
     iu = sol.link4.e.perp()
-    t3 = W3.moment_about(zB) / L
+    t3 = W3.moment_about(zB) * (1.0 / L)
     T3 = e3.perp() * t3
     n3, nG = _split(-(W3.force + W4.force + T3), e3, iu)
     RA = e3 * n3 + T3

@@ -4,10 +4,10 @@ the useful resistance (the one implementation of its rule).
 A useful resistance (``[[load]] resistance_Nm`` on the rocker, ``resistance_N`` on the
 slider) always opposes the motion of its link, acts only while the link moves in the
 load's stroke (``"working"``, ``"idle"`` or ``"both"``), and, with a ``span``, only while
-the swing (travel) from the start of that stroke is within the span.  This is the
-resistance of the course projects: e.g. a constant moment Mпс on the rocker of a ratchet
-drive during the first τ radians of the working stroke (seed 000 of this project,
-ч. 1: "момент полезного сопротивления").
+the swing (travel) from the start of that stroke is within the span.  This is the useful
+resistance (момент полезного сопротивления Mпс) of the course projects on the theory of
+machines, e.g. a constant moment on the rocker of a ratchet drive during the first τ
+radians of the working stroke.
 """
 from __future__ import annotations
 

@@ -194,10 +194,6 @@ class CrankRocker(_CrankMechanism):
         self.ground_angle = float(ground_angle)
         self.zC = self.pivot + self.l0 * complex(math.cos(ground_angle), math.sin(ground_angle))
 
-    @property
-    def lengths(self):
-        return {"crank": self.l1, "coupler": self.l2, "rocker": self.l3, "ground": self.l0}
-
     def _dyad(self, A):
         C = g.PointMotion(self.zC, 0j, 0j)        # the rocker pivot, at rest
         return g.rrr(A, C, self.l2, self.l3, self.assembly)
@@ -317,10 +313,6 @@ class CrankSlider(_CrankMechanism):
         self.guide_angle = float(guide_angle)
         self.offset = float(offset)
         self.u = complex(math.cos(guide_angle), math.sin(guide_angle))
-
-    @property
-    def lengths(self):
-        return {"crank": self.l1, "coupler": self.l2}
 
     def _dyad(self, A):
         return g.rrp(A, self.l2, self.pivot, self.guide_angle, self.offset, self.assembly)

@@ -1,190 +1,279 @@
 """Plots of a linkage analysis (matplotlib object-oriented API, headless).
 
-Every function takes computed results (an :class:`~linkage.analysis.AnalysisResult` of the
-plan of positions and one over a full turn) and returns a :class:`matplotlib.figure.Figure`;
-nothing here computes physics.  Curves over the cycle are drawn against the crank rotation
-from position 1 (the start of the working stroke) when the mechanism has extreme
-positions, with the numbered positions marked on a top axis; otherwise against the
-absolute crank angle.
+Compute, then plot (python-control style): every ``plot_*`` helper takes an
+:class:`~linkage.analysis.AnalysisResult`, draws on the given Axes (a new figure's when
+``ax`` is None) and returns the Axes; nothing here computes physics.
+
+* :func:`plot_plan`: the mechanism at the rows of ``result`` (the plan of positions);
+  ``full=`` a full-turn result adds the paths of B and the extra points;
+* :func:`plot_velocities`, :func:`plot_accelerations`, :func:`plot_driving_moment`,
+  :func:`plot_transmission_angle`: curves over the rows of ``result`` (a full turn,
+  :func:`linkage.full_turn`); ``plan=`` the plan-of-positions result marks and numbers
+  its positions.
+
+Curves are drawn against the crank rotation from position 1 (the start of the working
+stroke) when the mechanism has extreme positions, otherwise against the absolute crank
+angle.  ``lang="en"`` labels with the English textbook symbols (no Cyrillic), ``"ru"``
+with the Russian ones (Mур, Mпс).  Curves differ by dash pattern and marker, so they can
+be told apart in black-and-white print.
+
+Example::
+
+    import linkage
+    from linkage.plots import plot_driving_moment
+    spec = linkage.load_spec("ratchet.toml")
+    res, full = linkage.analyze(spec), linkage.full_turn(spec)
+    ax = plot_driving_moment(full, plan=res, lang="en")
+    ax.figure.savefig("moment.png")
 """
 from __future__ import annotations
 
-
 import numpy as np
+
+from crankbase.tolerances import SAME_ANGLE_DEG
 
 from .analysis import build_mechanism
 
-__all__ = ["plan_figure", "velocity_figure", "acceleration_figure", "moment_figure",
-           "transmission_figure", "all_figures"]
+__all__ = ["plot_plan", "plot_velocities", "plot_accelerations", "plot_driving_moment",
+           "plot_transmission_angle", "all_figures", "MAX_PLAN_POSITIONS"]
 
 _GREY = "#9a9a9a"
+#: Dash patterns and markers of successive curves (told apart in black-and-white print).
+_STYLES = [dict(ls="-", marker=None), dict(ls="--", marker=None), dict(ls="-.", marker=None)]
+
+_TEXT = {
+    "en": {
+        "phi": "crank angle φ [°]", "phi1": "crank rotation from position 1, φ − φ1 [°]",
+        "position": "position", "working": "working stroke",
+        "omega3_c": "ω3 (coupler)", "omega4": "ω4 (rocker)", "omega3_r": "ω3 (rod)",
+        "v4": "v4 (slider)", "eps3_c": "ε3 (coupler)", "eps4": "ε4 (rocker)",
+        "eps3_r": "ε3 (rod)", "a4": "a4 (slider)",
+        "ang_vel": "angular velocity [rad/s]", "ang_acc": "angular acceleration [rad/s²]",
+        "w3": "ω3 [rad/s]", "e3": "ε3 [rad/s²]", "v4_unit": "v4 [m/s]", "a4_unit": "a4 [m/s²]",
+        "vel_title": "{name}: angular velocities",
+        "vel_title_s": "{name}: rod angular velocity and slider velocity",
+        "acc_title": "{name}: angular accelerations",
+        "acc_title_s": "{name}: rod angular acceleration and slider acceleration",
+        "Md": "Mb, balancing (driving) moment on the crank", "Mr": "Mr, resistance on the rocker",
+        "moment": "moment [N·m]", "Md_title": "{name}: balancing moment Mb (+ ccw)",
+        "plan_pts": "plan positions", "mu": "μ", "mu_axis": "transmission angle μ [°]",
+        "mu_title": "{name}: transmission angle", "mu_min": "μmin = {v:.2f}°",
+        "path": "path of {p}", "guide": "guide", "other": "other extreme position",
+        "pos1": "position 1 (working-stroke start)",
+        "first": "first crank angle given, φ = {v:.4g}°",
+        "x": "x [m]", "y": "y [m]", "statics": "statics", "ccw": "ccw", "cw": "cw",
+        "plan_title": "{name}: plan of positions ({kind}, ω = {w:g} rad/s, {turn})",
+        "thinned": "{k} of {n} rows drawn (1 in {every})",
+    },
+    "ru": {
+        "phi": "угол поворота кривошипа φ [°]",
+        "phi1": "поворот кривошипа от положения 1, φ − φ1 [°]",
+        "position": "положение", "working": "рабочий ход",
+        "omega3_c": "ω3 (шатун)", "omega4": "ω4 (коромысло)", "omega3_r": "ω3 (шатун)",
+        "v4": "v4 (ползун)", "eps3_c": "ε3 (шатун)", "eps4": "ε4 (коромысло)",
+        "eps3_r": "ε3 (шатун)", "a4": "a4 (ползун)",
+        "ang_vel": "угловая скорость [рад/с]", "ang_acc": "угловое ускорение [рад/с²]",
+        "w3": "ω3 [рад/с]", "e3": "ε3 [рад/с²]", "v4_unit": "v4 [м/с]", "a4_unit": "a4 [м/с²]",
+        "vel_title": "{name}: угловые скорости",
+        "vel_title_s": "{name}: угловая скорость шатуна и скорость ползуна",
+        "acc_title": "{name}: угловые ускорения",
+        "acc_title_s": "{name}: угловое ускорение шатуна и ускорение ползуна",
+        "Md": "Mур, уравновешивающий момент на кривошипе",
+        "Mr": "Mпс, момент сопротивления на коромысле",
+        "moment": "момент [Н·м]", "Md_title": "{name}: уравновешивающий момент Mур (+ против ч. с.)",
+        "plan_pts": "положения плана", "mu": "μ", "mu_axis": "угол передачи μ [°]",
+        "mu_title": "{name}: угол передачи", "mu_min": "μmin = {v:.2f}°",
+        "path": "траектория {p}", "guide": "направляющая", "other": "второе крайнее положение",
+        "pos1": "положение 1 (начало рабочего хода)",
+        "first": "первый заданный угол, φ = {v:.4g}°",
+        "x": "x [м]", "y": "y [м]", "statics": "статика", "ccw": "против часовой стрелки",
+        "cw": "по часовой стрелке",
+        "plan_title": "{name}: план положений ({kind}, ω = {w:g} рад/с, {turn})",
+        "thinned": "показано {k} из {n} строк (каждая {every}-я)",
+    },
+}
 
 
-def _figure(w=8.0, h=5.0):
+def _text(lang):
+    try:
+        return _TEXT[lang]
+    except KeyError:
+        raise ValueError(f"lang: got {lang!r}; one of 'en', 'ru'") from None
+
+
+def _axes(ax, w=8.0, h=5.0):
+    """The given Axes, or the single Axes of a new headless figure."""
+    if ax is not None:
+        return ax
     from matplotlib.figure import Figure
 
-    return Figure(figsize=(w, h), dpi=120, layout="constrained")
+    return Figure(figsize=(w, h), dpi=120, layout="constrained").add_subplot()
 
 
-def _cycle_axis(result, full):
-    """x values for the full-turn curves and a function that decorates an axis."""
-    phi = full.kinematics["phi_deg"].to_numpy()
+def _cycle_axis(result, plan, t):
+    """x values of the rows of ``result``, their order, the x label and a function that
+    decorates an axis (working stroke shaded, plan positions numbered on top)."""
+    phi = result.kinematics["phi_deg"].to_numpy()
     s = result.summary
-    rot = 1 if result.spec.omega > 0 else -1
     if not s.has_extremes:
-        order = np.argsort(phi)
-        return phi, order, "crank angle φ [°]", None
+        return phi, np.argsort(phi), t["phi"], None
+    rot = 1 if result.spec.omega > 0 else -1
     x = np.mod((phi - s.phi_working_start_deg) * rot, 360.0)
-    x[-1] = 360.0 if abs(x[-1]) < 1e-9 and len(x) > 1 else x[-1]
+    x[-1] = 360.0 if abs(x[-1]) < SAME_ANGLE_DEG and len(x) > 1 else x[-1]
     order = np.argsort(x, kind="stable")
     work = s.working_crank_angle_deg
-    pos = result.kinematics["position"]
-    n = int(pos.max()) if pos.notna().all() and len(pos) else 0
+    n = 0
+    if plan is not None:
+        pos = plan.kinematics["position"]
+        n = int(pos.max()) if len(pos) and pos.notna().all() else 0
 
     def decorate(ax):
-        ax.axvspan(0, work, color="#fff2cc", alpha=0.6, lw=0, label="working stroke")
+        ax.axvspan(0, work, color="#fff2cc", alpha=0.6, lw=0, label=t["working"])
         ax.axvline(work, color="k", lw=0.8, ls=":")
         ax.set_xlim(0, 360)
         ax.set_xticks(np.arange(0, 361, 30))
         if n:
             top = ax.secondary_xaxis("top")
-            ticks = np.arange(n) * 360.0 / n
-            top.set_xticks(ticks, [str(k + 1) for k in range(n)])
-            top.set_xlabel("position")
-    return x, order, "crank rotation from position 1, φ − φ1 [°]", decorate
+            top.set_xticks(np.arange(n) * 360.0 / n, [str(k + 1) for k in range(n)])
+            top.set_xlabel(t["position"])
+    return x, order, t["phi1"], decorate
 
 
-def _curves(result, full, series, ylabel, title):
-    fig = _figure()
-    ax = fig.add_subplot()
-    x, order, xlabel, decorate = _cycle_axis(result, full)
+def _plan_x(plan):
+    """x of the plan positions on the cycle axis, or None when they are not numbered."""
+    s = plan.summary
+    if not s.has_extremes or plan.kinematics["position"].isna().any():
+        return None
+    rot = 1 if plan.spec.omega > 0 else -1
+    return np.mod((plan.kinematics["phi_deg"].to_numpy() - s.phi_working_start_deg) * rot,
+                  360.0)
+
+
+def _curves(ax, result, plan, t, series, ylabel, title):
+    x, order, xlabel, decorate = _cycle_axis(result, plan, t)
     if decorate:
         decorate(ax)
-    for col, label, df in series:
-        y = df[col].to_numpy()
-        ax.plot(x[order], y[order], lw=1.6, label=label)
+    for (col, label, df), style in zip(series, _STYLES):
+        ax.plot(x[order], df[col].to_numpy()[order], lw=1.6, color="k" if style["ls"] == "-"
+                else "C0", ls=style["ls"], label=label)
     ax.axhline(0, color="k", lw=0.6)
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.set_title(title)
     ax.grid(True, lw=0.4, alpha=0.6)
     ax.legend(loc="best", fontsize=8)
-    return fig
+    return ax
 
 
-def velocity_figure(result, full):
-    """ω3 and ω4 (or the slider velocity v4 on a second axis) over a full turn."""
-    k = full.kinematics
-    if result.spec.kind == "crank-rocker":
-        return _curves(result, full, [("omega3_rad_s", "ω3 (coupler)", k),
-                                      ("omega4_rad_s", "ω4 (rocker)", k)],
-                       "angular velocity [rad/s]", f"{result.spec.name}: angular velocities")
-    fig = _curves(result, full, [("omega3_rad_s", "ω3 (rod)", k)], "ω3 [rad/s]",
-                  f"{result.spec.name}: rod angular velocity and slider velocity")
-    _twin(fig, result, full, "v4_m_s", "v4 (slider)", "v4 [m/s]")
-    return fig
-
-
-def acceleration_figure(result, full):
-    """ε3 and ε4 (or the slider acceleration a4 on a second axis) over a full turn."""
-    k = full.kinematics
-    if result.spec.kind == "crank-rocker":
-        return _curves(result, full, [("eps3_rad_s2", "ε3 (coupler)", k),
-                                      ("eps4_rad_s2", "ε4 (rocker)", k)],
-                       "angular acceleration [rad/s²]",
-                       f"{result.spec.name}: angular accelerations")
-    fig = _curves(result, full, [("eps3_rad_s2", "ε3 (rod)", k)], "ε3 [rad/s²]",
-                  f"{result.spec.name}: rod angular acceleration and slider acceleration")
-    _twin(fig, result, full, "a4_m_s2", "a4 (slider)", "a4 [m/s²]")
-    return fig
-
-
-def _twin(fig, result, full, col, label, ylabel):
-    ax = fig.axes[0]
-    x, order, _, _ = _cycle_axis(result, full)
+def _twin(ax, result, plan, t, col, label, ylabel):
+    """A second y axis with the slider curve (dotted, square markers every 30 rows)."""
+    x, order, _, _ = _cycle_axis(result, plan, t)
     ax2 = ax.twinx()
-    ax2.plot(x[order], full.kinematics[col].to_numpy()[order], color="C1", lw=1.6, label=label)
+    ax2.plot(x[order], result.kinematics[col].to_numpy()[order], color="C3", lw=1.6, ls=":",
+             marker="s", ms=3, markevery=max(1, len(x) // 12), label=label)
     ax2.set_ylabel(ylabel)
     h1, l1 = ax.get_legend_handles_labels()
     h2, l2 = ax2.get_legend_handles_labels()
     ax.legend(h1 + h2, l1 + l2, loc="best", fontsize=8)
+    return ax
 
 
-def moment_figure(result, full):
-    """The driving (balancing) moment Mур on the crank and the useful resistance."""
-    f = full.forces
-    series = [("M_drive_Nm", "Mур, driving moment on the crank", f)]
+def _rates(result, ax, lang, plan, order):
+    """Link 3 and 4 rates of the given ``order`` (1: velocities, 2: accelerations)."""
+    t, k, name = _text(lang), result.kinematics, result.spec.name
+    ax = _axes(ax)
+    w3, w4, s4 = (("omega3_rad_s", "omega4_rad_s", "v4") if order == 1
+                  else ("eps3_rad_s2", "eps4_rad_s2", "a4"))
+    sym, kind = ("omega", "vel") if order == 1 else ("eps", "acc")
+    if result.spec.kind == "crank-rocker":
+        return _curves(ax, result, plan, t, [(w3, t[f"{sym}3_c"], k), (w4, t[f"{sym}4"], k)],
+                       t[f"ang_{kind}"], t[f"{kind}_title"].format(name=name))
+    _curves(ax, result, plan, t, [(w3, t[f"{sym}3_r"], k)], t["w3" if order == 1 else "e3"],
+            t[f"{kind}_title_s"].format(name=name))
+    col = "v4_m_s" if order == 1 else "a4_m_s2"
+    return _twin(ax, result, plan, t, col, t[s4], t[f"{s4}_unit"])
+
+
+def plot_velocities(result, ax=None, lang="en", *, plan=None):
+    """ω3 and ω4 (a crank-slider: ω3 and, on a second axis, the slider velocity v4) over
+    the rows of ``result`` (a full turn).  Returns the Axes."""
+    return _rates(result, ax, lang, plan, 1)
+
+
+def plot_accelerations(result, ax=None, lang="en", *, plan=None):
+    """ε3 and ε4 (a crank-slider: ε3 and, on a second axis, the slider acceleration a4)
+    over the rows of ``result`` (a full turn).  Returns the Axes."""
+    return _rates(result, ax, lang, plan, 2)
+
+
+def plot_driving_moment(result, ax=None, lang="en", *, plan=None):
+    """The balancing (driving) moment Mур on the crank over the rows of ``result`` (a full
+    turn), with the resistance moment of a crank-rocker and the values at the positions of
+    ``plan``.  Returns the Axes."""
+    t, f = _text(lang), result.forces
+    ax = _axes(ax)
+    series = [("M_drive_Nm", t["Md"], f)]
     res = f["M_res_Nm"].to_numpy(float) if result.spec.kind == "crank-rocker" else None
     if res is not None and np.any(np.nan_to_num(res) != 0):   # NaN: left-out singular rows
-        series.append(("M_res_Nm", "Mпс, resistance on the rocker", f))
-    fig = _curves(result, full, series, "moment [N·m]",
-                  f"{result.spec.name}: driving moment Mур (+ ccw)")
-    ax = fig.axes[0]
-    pts = result.forces
-    x = _plan_x(result)
+        series.append(("M_res_Nm", t["Mr"], f))
+    _curves(ax, result, plan, t, series, t["moment"],
+            t["Md_title"].format(name=result.spec.name))
+    x = _plan_x(plan) if plan is not None else None
     if x is not None:
-        ax.plot(x, pts["M_drive_Nm"].to_numpy(), "o", color="C0", ms=4,
-                label="plan positions")
-    return fig
+        ax.plot(x, plan.forces["M_drive_Nm"].to_numpy(), "o", color="k", mfc="w", ms=5,
+                label=t["plan_pts"])
+        ax.legend(loc="best", fontsize=8)
+    return ax
 
 
-def _plan_x(result):
-    s = result.summary
-    if not s.has_extremes or result.kinematics["position"].isna().any():
-        return None
-    rot = 1 if result.spec.omega > 0 else -1
-    return np.mod((result.kinematics["phi_deg"].to_numpy() - s.phi_working_start_deg) * rot,
-                  360.0)
-
-
-def transmission_figure(result, full):
-    """Transmission angle μ over a full turn, with its minimum marked."""
-    fig = _curves(result, full, [("mu_deg", "μ", full.kinematics)], "transmission angle μ [°]",
-                  f"{result.spec.name}: transmission angle")
-    ax = fig.axes[0]
-    s = result.summary
-    ax.axhline(s.mu_min_deg, color="C3", lw=0.8, ls="--",
-               label=f"μmin = {s.mu_min_deg:.2f}°")
+def plot_transmission_angle(result, ax=None, lang="en", *, plan=None):
+    """Transmission angle μ over the rows of ``result`` (a full turn), with μmin of the
+    summary (closed form over the full turn) marked.  Returns the Axes."""
+    t = _text(lang)
+    ax = _axes(ax)
+    _curves(ax, result, plan, t, [("mu_deg", t["mu"], result.kinematics)], t["mu_axis"],
+            t["mu_title"].format(name=result.spec.name))
+    v = result.summary.mu_min_deg
+    ax.axhline(v, color="k", lw=0.9, ls="--", label=t["mu_min"].format(v=v))
     ax.set_ylim(0, 95)
     ax.legend(loc="best", fontsize=8)
-    return fig
+    return ax
 
 
-#: Most positions the plan of positions draws (rows beyond it are thinned out evenly).
+#: Most positions the plan of positions draws (rows beyond it are thinned out evenly: a
+#: plan of more is unreadable, and each position costs ~7 ms to draw).
 MAX_PLAN_POSITIONS = 24
 
 
-def plan_figure(result, full):
-    """The mechanism drawn at the numbered positions (the textbook plan of positions).
+def plot_plan(result, ax=None, lang="en", *, full=None):
+    """The mechanism drawn at the rows of ``result`` (the textbook plan of positions).
 
     Position 1 (start of the working stroke) and the other extreme position are drawn
-    bold; the paths of B and of the extra coupler points over a full turn are dashed.
-    """
+    bold; with ``full`` (a full-turn result) the paths of B and of the extra points are
+    dashed.  At most :data:`MAX_PLAN_POSITIONS` rows are drawn (every n-th, the first
+    always; the title says so).  Returns the Axes."""
+    t = _text(lang)
     spec = result.spec
-    fig = _figure(8.0, 6.5)
-    ax = fig.add_subplot()
+    ax = _axes(ax, 8.0, 6.5)
     k = result.kinematics
-    fk = full.kinematics
     mech = build_mechanism(spec)   # pivot positions and guide direction of the model
     zO = mech.pivot
     ax.add_patch(_circle(zO, spec.crank))
+    path_df = full.kinematics if full is not None else k
     extras = [n for ls in spec.links.values() for n in ls.points]
-    for name in ["B"] + extras:
-        ax.plot(fk[f"{name}_x_m"], fk[f"{name}_y_m"], "--", lw=0.8,
-                color="C2" if name == "B" else "C4",
-                label=f"path of {name}")
+    if full is not None:
+        for name, ls_ in zip(["B"] + extras, ["--", ":", "-.", (0, (5, 1, 1, 1))] * 4):
+            ax.plot(path_df[f"{name}_x_m"], path_df[f"{name}_y_m"], ls=ls_, lw=0.9,
+                    color="0.25", label=t["path"].format(p=name))
     if spec.kind == "crank-rocker":
         zC = mech.zC
     else:
         zC = None
         u = mech.u
-        s4 = fk["s4_m"].to_numpy()
+        s4 = path_df["s4_m"].to_numpy()
         lo, hi = np.nanmin(s4) - 0.15 * spec.coupler, np.nanmax(s4) + 0.15 * spec.coupler
-        g0 = (lo + 1j * spec.offset) * u
-        g1 = (hi + 1j * spec.offset) * u
-        ax.plot([g0.real, g1.real], [g0.imag, g1.imag], color="k", lw=1.2, label="guide")
-    # at most MAX_PLAN_POSITIONS drawn (beyond that the plan is unreadable and drawing
-    # costs ~7 ms a position): every n-th row, the first always
+        g0, g1 = (lo + 1j * spec.offset) * u, (hi + 1j * spec.offset) * u
+        ax.plot([g0.real, g1.real], [g0.imag, g1.imag], color="k", lw=1.2, label=t["guide"])
     every = max(1, -(-len(k) // MAX_PLAN_POSITIONS))
     for i in range(0, len(k), every):
         lw, col = (2.2, "C0") if i == 0 else (0.9, _GREY)
@@ -201,29 +290,27 @@ def plan_figure(result, full):
             ax.annotate(label, (x, y), fontsize=7, color="C0" if i == 0 else "0.3",
                         textcoords="offset points", xytext=off)
     if result.extremes is not None:
-        e = result.extremes
-        _draw_links(ax, e, 1, zO, zC, 2.0, "C3", ls="--")
-        ax.plot([], [], color="C3", ls="--", lw=2.0, label="other extreme position")
+        _draw_links(ax, result.extremes, 1, zO, zC, 2.0, "C3", ls="--")
+        ax.plot([], [], color="C3", ls="--", lw=2.0, label=t["other"])
     numbered = k["position"].notna().all() and len(k) and result.summary.has_extremes
     ax.plot([], [], color="C0", lw=2.2,
-            label="position 1 (working-stroke start)" if numbered
-            else f"first crank angle given, φ = {k['phi_deg'].iat[0]:.4g}°")
+            label=t["pos1"] if numbered else t["first"].format(v=k["phi_deg"].iat[0]))
     for z, name in ((zO, "O"), (zC, "C")):
         if z is None:
             continue
         ax.plot(z.real, z.imag, marker="^", ms=11, color="k", mfc="w", zorder=5)
         ax.annotate(name, (z.real, z.imag), textcoords="offset points", xytext=(-12, -14))
     ax.set_aspect("equal", adjustable="datalim")
-    ax.set_xlabel("x [m]")
-    ax.set_ylabel("y [m]")
-    turn = "statics" if spec.omega == 0 else "ccw" if spec.omega > 0 else "cw"
-    ax.set_title(f"{spec.name}: plan of positions ({spec.kind}, "
-                 f"ω = {spec.omega:g} rad/s, {turn})"
-                 + (f"\n{-(-len(k) // every)} of {len(k)} rows drawn (1 in {every})"
-                    if every > 1 else ""))
+    ax.set_xlabel(t["x"])
+    ax.set_ylabel(t["y"])
+    turn = t["statics"] if spec.omega == 0 else t["ccw"] if spec.omega > 0 else t["cw"]
+    title = t["plan_title"].format(name=spec.name, kind=spec.kind, w=spec.omega, turn=turn)
+    if every > 1:
+        title += "\n" + t["thinned"].format(k=-(-len(k) // every), n=len(k), every=every)
+    ax.set_title(title)
     ax.grid(True, lw=0.3, alpha=0.5)
     ax.legend(loc="upper left", fontsize=7, framealpha=0.85)
-    return fig
+    return ax
 
 
 def _isna(v):
@@ -248,16 +335,17 @@ def _draw_links(ax, df, i, zO, zC, lw, color, ls="-"):
     ax.plot(xs, ys, ls, color=color, lw=lw, marker="o", ms=3 if lw < 2 else 4)
 
 
-def all_figures(result, full):
-    """Every linkage figure as a dict ``file stem → Figure``.  In statics (ω = 0) the
-    velocity curves are identically zero and left out, and so are the accelerations when
-    ε = 0 too."""
+def all_figures(result, full, lang="en"):
+    """Every linkage figure as a dict ``file stem → Figure`` (what ``crankdyn linkage``
+    writes): ``result`` the plan of positions, ``full`` the same mechanism over a full
+    turn.  In statics (ω = 0) the velocity curves are identically zero and left out, and
+    so are the accelerations when ε = 0 too."""
     spec = result.spec
-    figs = {"plan": plan_figure(result, full)}
+    axes = {"plan": plot_plan(result, lang=lang, full=full)}
     if spec.omega != 0:
-        figs["velocities"] = velocity_figure(result, full)
+        axes["velocities"] = plot_velocities(full, lang=lang, plan=result)
     if spec.omega != 0 or spec.epsilon != 0:
-        figs["accelerations"] = acceleration_figure(result, full)
-    figs["driving_moment"] = moment_figure(result, full)
-    figs["transmission_angle"] = transmission_figure(result, full)
-    return figs
+        axes["accelerations"] = plot_accelerations(full, lang=lang, plan=result)
+    axes["driving_moment"] = plot_driving_moment(full, lang=lang, plan=result)
+    axes["transmission_angle"] = plot_transmission_angle(full, lang=lang, plan=result)
+    return {stem: ax.figure for stem, ax in axes.items()}

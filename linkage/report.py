@@ -17,6 +17,8 @@ import re
 
 import numpy as np
 
+from crankbase.tolerances import SAME_ANGLE_DEG
+
 __all__ = ["column_label", "write_csvs", "write_workbook", "sheet_columns",
            "force_sheet_columns", "summary_lines"]
 
@@ -305,5 +307,5 @@ def _check_finite_tables(result):
         bad_rows = np.flatnonzero(~np.isfinite(num).all(axis=1))
         for r in bad_rows:
             phi = float(df["phi_deg"].iat[r])
-            if not any(abs((phi - a + 180.0) % 360.0 - 180.0) < 1e-6 for a in sing):
+            if not any(abs((phi - a + 180.0) % 360.0 - 180.0) < SAME_ANGLE_DEG for a in sing):
                 raise OutputError(f"{name}: row {r + 1} (φ = {phi:g}°) is not finite")

@@ -36,7 +36,7 @@ References
 ----------
 .. [1] Середа Н. А. Семейство кривошипно-коромысловых механизмов с максимумом угла
    передачи при угле поворота кривошипа, равном 30°. Известия Самарского научного центра
-   РАН, 2016 (seed 004 of this project): eq. (1)–(3) Kolchin's lines, (6) the family,
+   РАН, 2016 (the journal paper the ККМ-30° family comes from): eq. (1)–(3) Kolchin's lines, (6) the family,
    (9)–(11) the boundary and λ1max, (12)–(16) the transmission angle, Table 1, Fig. 2, 3.
 .. [2] Колчин Н. И. Механика машин, т. 1. М.–Л.: Машгиз, 1963, p. 86 (the region of
    geometric rotatability, eq. (1)–(3) of [1]).
@@ -49,7 +49,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from crankbase.errors import Problem
-from crankbase.tolerances import ROTATABILITY_RTOL
+from crankbase.tolerances import DEGENERATE_QUADRATIC_ATOL, ROTATABILITY_RTOL, ROUNDOFF_RTOL
 
 from .fourbar import (GeometryError, GrashofType, _as_float, _fmt, _lengths, grashof,
                       min_transmission_angle_deg, transmission_angle_deg)
@@ -144,7 +144,7 @@ def family_radius(l1, phi0_deg=30.0):
 
     References
     ----------
-    .. [1] seed 004, eq. (4)–(6): λ2² + λ3² = λ1 (λ1 − √3) + 1 for φ0 = 30°.
+    .. [1] Sereda (2016), eq. (4)–(6): λ2² + λ3² = λ1 (λ1 − √3) + 1 for φ0 = 30°.
     """
     c = _c(phi0_deg)
     l1 = np.asarray(l1, dtype=float)
@@ -168,7 +168,7 @@ def family_l3(l1, l2, phi0_deg=30.0):
 
     References
     ----------
-    .. [1] seed 004, eq. (6) solved for λ3 (the root under eq. (16)).
+    .. [1] Sereda (2016), eq. (6) solved for λ3 (the root under eq. (16)).
     """
     c = _c(phi0_deg)
     l1 = np.asarray(l1, dtype=float)
@@ -198,7 +198,7 @@ def family_mu_min_deg(l1, l2, phi0_deg=30.0):
 
     References
     ----------
-    .. [1] seed 004, eq. (16) (and (15) with λ2 ↔ λ3); (14) for λ2 = λ3.
+    .. [1] Sereda (2016), eq. (16) (and (15) with λ2 ↔ λ3); (14) for λ2 = λ3.
     """
     c = _c(phi0_deg)
     l1 = np.asarray(l1, dtype=float)
@@ -233,7 +233,7 @@ def l1_max(phi0_deg=30.0) -> float:
 
     References
     ----------
-    .. [1] seed 004, eq. (11): λ1² − 2 λ1 (1 + √3) + 1 = 0 → λ1 = 0.1896.
+    .. [1] Sereda (2016), eq. (11): λ1² − 2 λ1 (1 + √3) + 1 = 0 → λ1 = 0.1896.
     """
     problems = []
     phi0 = _phi0(problems, phi0_deg)
@@ -300,7 +300,7 @@ def kolchin_line_points(l1, phi0_deg=30.0):
 
     References
     ----------
-    .. [1] seed 004, eq. (7)–(10) and Table 1.
+    .. [1] Sereda (2016), eq. (7)–(10) and Table 1.
     """
     problems = []
     phi0 = _phi0(problems, phi0_deg)
@@ -369,7 +369,7 @@ def right_angle_family(l1, phi0_deg=30.0, n=181) -> FamilyArc:
 
     References
     ----------
-    .. [1] seed 004, eq. (6) and Fig. 2 (the arcs of radius R = √(λ1 (λ1 − √3) + 1)).
+    .. [1] Sereda (2016), eq. (6) and Fig. 2 (the arcs of radius R = √(λ1 (λ1 − √3) + 1)).
     """
     problems = []
     phi0 = _phi0(problems, phi0_deg)
@@ -457,7 +457,7 @@ def _smallest_admissible_root(l2, l3, c, floor=0.0):
         sq = np.where(disc >= 0.0, np.sqrt(np.maximum(disc, 0.0)), np.nan)
     # r_minus = c − sq without cancellation: (1 − ρ²)/(c + sq) when c + sq > 0.
     with np.errstate(invalid="ignore", divide="ignore"):
-        r_minus = np.where(c + sq > 0.5 * abs(c) + 1e-300, (1.0 - rho2) / (c + sq), c - sq)
+        r_minus = np.where(c + sq > 0.5 * abs(c) + np.finfo(float).tiny, (1.0 - rho2) / (c + sq), c - sq)
     r_plus = c + sq
     best = np.full(np.broadcast(l2, l3).shape, np.nan)
     for r in (r_plus, r_minus):  # later assignment (the smaller root) wins
@@ -495,7 +495,7 @@ def existence_region(phi0_deg=30.0, n=400) -> ExistenceRegion:
 
     References
     ----------
-    .. [1] seed 004, eq. (9)–(11), Table 1 and Fig. 2.
+    .. [1] Sereda (2016), eq. (9)–(11), Table 1 and Fig. 2.
     """
     problems = []
     phi0 = _phi0(problems, phi0_deg)
@@ -583,7 +583,7 @@ def mu_min_curves(phi0_deg=30.0, l2=tuple(np.round(np.arange(1, 10) / 10.0, 2)),
 
     References
     ----------
-    .. [1] seed 004, eq. (16) and Fig. 3.
+    .. [1] Sereda (2016), eq. (16) and Fig. 3.
     """
     problems = []
     phi0 = _phi0(problems, phi0_deg)
@@ -605,7 +605,7 @@ def _largest_l1_for_k(l2, c, k):
     a = (1.0 + abs(c)) ** 2 - kk
     b = 2.0 * c * kk
     e = -kk * (1.0 - l2 ** 2)
-    if abs(a) < 1e-15:
+    if abs(a) < DEGENERATE_QUADRATIC_ATOL:
         roots = [-e / b] if b != 0 else []
     else:
         disc = b * b - 4.0 * a * e
@@ -689,11 +689,11 @@ def design(l1, l2, l3, phi0_deg=30.0, method="given") -> Design:
     ------
     SynthesisError
         Non-positive lengths, φ0 out of range, the lengths off the family's circle
-        (eq. (6), beyond 1e-9) or outside the region of existence.
+        (eq. (6), beyond :data:`TOL`) or outside the region of existence.
 
     References
     ----------
-    .. [1] seed 004, eq. (6), (13).
+    .. [1] Sereda (2016), eq. (6), (13).
     """
     problems = []
     phi0 = _phi0(problems, phi0_deg)
@@ -743,7 +743,7 @@ def crank_length_for_right_angle(l2, l3, phi0_deg=30.0) -> float:
 
     References
     ----------
-    .. [1] seed 004, eq. (6): λ2² + λ3² = λ1 (λ1 − √3) + 1; first example: λ2 = 0.70,
+    .. [1] Sereda (2016), eq. (6): λ2² + λ3² = λ1 (λ1 − √3) + 1; first example: λ2 = 0.70,
        λ3 = 0.60 → λ1 = 0.09.
     """
     problems = []
@@ -788,7 +788,7 @@ def design_from_l2_l3(l2, l3, phi0_deg=30.0) -> Design:
 
     References
     ----------
-    .. [1] seed 004, practical example 1 to Fig. 2: λ2 = 0.70, λ3 = 0.60 → λ1 = 0.09.
+    .. [1] Sereda (2016), practical example 1 to Fig. 2: λ2 = 0.70, λ3 = 0.60 → λ1 = 0.09.
     """
     l1 = crank_length_for_right_angle(l2, l3, phi0_deg)
     return design(l1, float(l2), float(l3), phi0_deg, method="given l2, l3")
@@ -811,7 +811,7 @@ def design_equal_l2_l3(l1, phi0_deg=30.0) -> Design:
 
     References
     ----------
-    .. [1] seed 004, practical example 2 to Fig. 2: λ1 = 0.146, λ2 = λ3 → 0.620; eq. (14).
+    .. [1] Sereda (2016), practical example 2 to Fig. 2: λ1 = 0.146, λ2 = λ3 → 0.620; eq. (14).
     """
     problems = []
     phi0 = _phi0(problems, phi0_deg)
@@ -860,7 +860,7 @@ def design_for_mu_min(l2, mu_min_deg, phi0_deg=30.0, l1_step=None) -> Design:
 
     References
     ----------
-    .. [1] seed 004, eq. (16), Fig. 3 and practical example 2 to it: λ2 = 0.90,
+    .. [1] Sereda (2016), eq. (16), Fig. 3 and practical example 2 to it: λ2 = 0.90,
        μmin ≥ 40° → λ1 = 0.08, λ3 = 0.24, μmin = 46°16′.
     """
     problems = []
@@ -887,7 +887,7 @@ def design_for_mu_min(l2, mu_min_deg, phi0_deg=30.0, l1_step=None) -> Design:
     if ok:
         l3 = float(family_l3(l1, l2f, phi0))
         ok = (math.isfinite(l3) and l3 > 0 and _kolchin_margin(l1, l2f, l3) >= -TOL
-              and l1 * (1 + abs(c)) <= k * l2f * l3 * (1 + 1e-12) + TOL)
+              and l1 * (1 + abs(c)) <= k * l2f * l3 * (1 + ROUNDOFF_RTOL) + TOL)
     if not ok:
         grid = np.linspace(0.0, top, 4001)[1:]
         best = family_mu_min_deg(grid, l2f, phi0)
@@ -902,7 +902,7 @@ def design_for_mu_min(l2, mu_min_deg, phi0_deg=30.0, l1_step=None) -> Design:
                           f"with λ2 = {l2f:g}: {hint}"))
     method = f"given l2 and mu_min >= {mu:g} deg"
     if step is not None:
-        n = math.floor(l1 / step * (1 + 1e-12))
+        n = math.floor(l1 / step * (1 + ROUNDOFF_RTOL))
         if n < 1:
             raise SynthesisError(Problem(
                 "l1_step", f"rounding λ1 = {l1:.6g} down to a multiple of {step:g} gives 0; "

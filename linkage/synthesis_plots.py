@@ -4,12 +4,17 @@ Compute first, then plot: every function here only draws arrays computed by
 :mod:`linkage.synthesis` (an :class:`~linkage.synthesis.ExistenceRegion`, a
 :class:`~linkage.synthesis.MuMinCurves`, a :class:`~linkage.synthesis.Design`, μ(φ)).
 matplotlib's object-oriented API only (``Figure``, never ``pyplot``), imported inside
-the functions; works headless.  Each ``plot_*`` draws into ``ax`` when given and returns
-its figure, else makes a new :class:`~matplotlib.figure.Figure`.
+the functions; works headless.  Each ``plot_*`` draws on ``ax`` when given (else on a new
+:class:`~matplotlib.figure.Figure`'s) and returns the Axes (``ax.figure`` for the figure),
+like the helpers of :mod:`linkage.plots`.  Labels use the English textbook symbols and
+name the family KKM-φ0 (the paper's ККМ-φ0, transliterated: no Cyrillic in English
+figures).
 """
 from __future__ import annotations
 
 import numpy as np
+
+from crankbase.tolerances import SAME_ANGLE_DEG
 
 __all__ = ["plot_region", "plot_mu_min_curves", "plot_transmission_angle"]
 
@@ -42,12 +47,12 @@ def plot_region(region, design=None, kolchin_l1=None, family=None, ax=None):
 
     Returns
     -------
-    matplotlib.figure.Figure
+    matplotlib.axes.Axes
     """
     fig, ax = _axes(ax, (6.4, 8.2))
     phi0 = region.phi0_deg
     ax.fill(region.l2, region.l3, color="tab:blue", alpha=0.12, lw=0,
-            label=f"region of existence of ККМ-{phi0:g}°")
+            label=f"region of existence of KKM-{phi0:g}°")
     ax.plot(region.arc_l2, region.arc_l3, color="k", lw=1.6,
             label="arc abc: unit circle (λ1 = 0)")
     ax.plot(region.curve_l2, region.curve_l3, color="tab:blue", lw=2.0,
@@ -68,9 +73,9 @@ def plot_region(region, design=None, kolchin_l1=None, family=None, ax=None):
                 label=f"family arc for λ1 = {family.l1:.4g} (R = {family.radius:.4f})")
     if region.kkm5_l2 is not None:
         ax.plot(region.kkm5_l2, region.kkm5_l3, color="tab:orange", lw=2.2,
-                label=f"ККМ-{phi0:g}° → ККМ-5 (λ3 = sin φ0)")
+                label=f"KKM-{phi0:g}° → KKM-5 (λ3 = sin φ0)")
         ax.plot(region.kkm7_l2, region.kkm7_l3, color="tab:purple", lw=2.2,
-                label=f"ККМ-{phi0:g}° → ККМ-7 (λ2 = sin φ0)")
+                label=f"KKM-{phi0:g}° → KKM-7 (λ2 = sin φ0)")
     # the letters of the paper's figure
     mid = len(region.arc_l2) // 2
     marks = {"a": (1.0, 0.0, (6, 4)), "b": (region.arc_l2[mid], region.arc_l3[mid], (5, 5)),
@@ -88,12 +93,12 @@ def plot_region(region, design=None, kolchin_l1=None, family=None, ax=None):
     ax.set_aspect("equal")
     ax.set_xlabel("coupler λ2 = l2/l0  [–]")
     ax.set_ylabel("rocker λ3 = l3/l0  [–]")
-    ax.set_title(f"Region of existence of ККМ-{phi0:g}° (μ = 90° at φ0 = {phi0:g}°), "
+    ax.set_title(f"Region of existence of KKM-{phi0:g}° (μ = 90° at φ0 = {phi0:g}°), "
                  f"λ1max = {region.l1_max:.4f}", fontsize=10)
     ax.grid(True, lw=0.4, alpha=0.5)
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.09), fontsize=8, ncols=1,
               frameon=False)
-    return fig
+    return ax
 
 
 def plot_mu_min_curves(curves, design=None, mu_required=None, ax=None):
@@ -110,7 +115,7 @@ def plot_mu_min_curves(curves, design=None, mu_required=None, ax=None):
 
     Returns
     -------
-    matplotlib.figure.Figure
+    matplotlib.axes.Axes
     """
     fig, ax = _axes(ax, (9.0, 5.0))
     if mu_required is not None:
@@ -130,11 +135,11 @@ def plot_mu_min_curves(curves, design=None, mu_required=None, ax=None):
     ax.set_yticks(np.arange(0, 91, 10))
     ax.set_xlabel("crank λ1 = l1/l0  [–]")
     ax.set_ylabel("minimum transmission angle μmin  [°]")
-    ax.set_title(f"ККМ-{curves.phi0_deg:g}°: μmin over λ1 at constant λ2 (eq. 16)",
+    ax.set_title(f"KKM-{curves.phi0_deg:g}°: μmin over λ1 at constant λ2 (eq. 16)",
                  fontsize=10)
     ax.grid(True, lw=0.4, alpha=0.5)
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
-    return fig
+    return ax
 
 
 def plot_transmission_angle(phi_deg, mu_deg, design, ax=None):
@@ -152,7 +157,7 @@ def plot_transmission_angle(phi_deg, mu_deg, design, ax=None):
 
     Returns
     -------
-    matplotlib.figure.Figure
+    matplotlib.axes.Axes
     """
     fig, ax = _axes(ax, (7.2, 4.4))
     d = design
@@ -162,10 +167,10 @@ def plot_transmission_angle(phi_deg, mu_deg, design, ax=None):
         ax.plot([p], [90.0], "o", color="tab:green", ms=6, zorder=5)
     ax.plot([], [], "o", color="tab:green", label=f"μ = 90° at φ = {d.phi0_deg:g}° and "
                                                    f"{360 - d.phi0_deg:g}°")
-    ats = [d.mu_min_at_deg] if abs(d.phi0_deg - 90.0) > 1e-9 else [0.0, 180.0, 360.0]
+    ats = [d.mu_min_at_deg] if abs(d.phi0_deg - 90.0) > SAME_ANGLE_DEG else [0.0, 180.0, 360.0]
     if d.mu_min_at_deg == 0.0 and 360.0 not in ats:
         ats.append(360.0)
-    where = (f"{d.mu_min_at_deg:g}°" if abs(d.phi0_deg - 90.0) > 1e-9
+    where = (f"{d.mu_min_at_deg:g}°" if abs(d.phi0_deg - 90.0) > SAME_ANGLE_DEG
              else "0° and 180°")
     ax.plot(ats, [d.mu_min_deg] * len(ats), "v", color="tab:red", ms=7, zorder=5,
             label=f"μmin = {d.mu_min_deg:.2f}° at φ = {where}")
@@ -175,8 +180,8 @@ def plot_transmission_angle(phi_deg, mu_deg, design, ax=None):
     ax.set_yticks(np.arange(0, 91, 15))
     ax.set_xlabel("crank angle φ from the line of centres  [°]")
     ax.set_ylabel("transmission angle μ  [°]")
-    ax.set_title(f"ККМ-{d.phi0_deg:g}°: λ1 = {d.l1:.4f}, λ2 = {d.l2:.4f}, "
+    ax.set_title(f"KKM-{d.phi0_deg:g}°: λ1 = {d.l1:.4f}, λ2 = {d.l2:.4f}, "
                  f"λ3 = {d.l3:.4f}", fontsize=10)
     ax.grid(True, lw=0.4, alpha=0.5)
     ax.legend(loc="lower left", fontsize=8, framealpha=0.92)
-    return fig
+    return ax

@@ -12,6 +12,8 @@ import re
 
 import numpy as np
 
+from crankbase.tolerances import ROUNDOFF_RTOL
+
 from . import synthesis as syn
 
 __all__ = ["table1", "mechanism_table", "format_deg_min", "summary_lines",
@@ -56,7 +58,7 @@ def table1(phi0_deg=30.0, l1=None, step=0.05):
 
     References
     ----------
-    .. [1] seed 004, Table 1 and eq. (9)–(10).
+    .. [1] Sereda (2016), Table 1 and eq. (9)–(10).
     """
     import pandas as pd
 
@@ -65,7 +67,7 @@ def table1(phi0_deg=30.0, l1=None, step=0.05):
         if not (isinstance(step, (int, float)) and math.isfinite(step) and step > 0):
             raise syn.SynthesisError([syn.Problem("step", f"must be a positive number, "
                                                           f"got {step!r}")])
-        k = np.arange(1, int(math.floor(top / step * (1 - 1e-12))) + 1)
+        k = np.arange(1, int(math.floor(top / step * (1 - ROUNDOFF_RTOL))) + 1)
         l1 = np.append(np.round(k * step, 12), top)
     l1 = np.atleast_1d(np.asarray(l1, dtype=float))
     pts = syn.kolchin_line_points(l1, phi0_deg)

@@ -334,14 +334,13 @@ def test_crankdyn_errors_are_value_errors():
 def test_plan_of_many_positions_draws_at_most_24():
     """A plan of 5,000 explicit angles draws 24 of them (drawing each costs ~7 ms and the
     plan would be unreadable), saying so in its title."""
-    from linkage.plots import MAX_PLAN_POSITIONS, plan_figure
+    from linkage.plots import MAX_PLAN_POSITIONS, plot_plan
 
     d = copy.deepcopy(LINKAGE)
     d["mechanism"]["omega_rad_s"] = 0.0
     d["analysis"] = {"crank_angles_deg": np.linspace(0.0, 359.0, 5000).tolist()}
     res = linkage.analyze(d, course_tables=False)
-    fig = plan_figure(res, linkage.full_turn(d, 5.0))
-    ax = fig.axes[0]
+    ax = plot_plan(res, full=linkage.full_turn(d, 5.0))
     assert "24 of 5000 rows drawn (1 in 209)" in ax.get_title()
     labels = [t for t in ax.texts if t.get_text().endswith("°")]
     assert len(labels) == 2 * MAX_PLAN_POSITIONS      # at A and at B

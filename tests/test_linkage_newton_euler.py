@@ -2,7 +2,6 @@
 ``linkage.analyze`` against one global Newton–Euler linear solve over all moving links
 (tests/newton_euler.py: law-of-cosines positions with a Newton polish, loop-closure
 Jacobian velocities and accelerations, 9×9 equilibrium system per position)."""
-import copy
 import math
 
 import numpy as np
