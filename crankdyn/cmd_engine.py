@@ -108,7 +108,9 @@ def run(args) -> int:
     figs = figures(result, args.lang)
     if bearing is not None:
         from engine.bearing_plots import bearing_figures
+        from engine.bearing_report import add_bearing_sheets
         figs.update(bearing_figures(bearing["analysis"], args.lang))
+        add_bearing_sheets(wb, bearing["csv"], bearing["analysis"], args.lang)
 
     # 2. write: every file into a staging folder, moved into DIR only when all are done
     with staged_output(out, inputs=[spec_path, spec.pressure_file]) as stage:

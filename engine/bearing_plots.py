@@ -12,7 +12,8 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["plot_pin_polar", "plot_journal_polar", "plot_wear", "plot_journal_torques",
+__all__ = ["plot_pin_polar", "plot_journal_polar", "plot_developed_loads", "plot_wear",
+           "plot_journal_torques",
            "plot_rod_model", "plot_big_end", "plot_piston_pin", "bearing_figures",
            "BEARING_PLOT_NAMES"]
 
@@ -26,6 +27,8 @@ _TXT = {
                          "0° — {zero}, углы по направлению вращения (по часовой)",
                axis={"pin": "к оси вала O", "journal": "от кривошипа (кривошип — 180°)"},
                tq="Крутящие моменты, передаваемые коренными шейками",
+               dev="Развёрнутые диаграммы нагрузок", dev_pin="шатунная шейка",
+               dev_j="коренная шейка",
                Mj="Mк.ш {j}", M="Mк.ш, Н·м", alpha="α, ° п.к.в.",
                rod="Жёсткий шатун минус двухмассовая модель",
                dN="ΔT, ΔK, ΔRшш, Н", exact="обе модели с точной кинематикой",
@@ -45,6 +48,7 @@ _TXT = {
                axis={"pin": "towards the shaft axis O",
                      "journal": "away from the crank (the crank at 180°)"},
                tq="Torques carried by the main journals",
+               dev="Developed load diagrams", dev_pin="crank pin", dev_j="main journal",
                Mj="M journal {j}", M="M, N·m", alpha="α, crank deg",
                rod="Rigid rod minus the two-mass model",
                dN="ΔT, ΔK, ΔR, N", exact="both with exact kinematics",
@@ -77,9 +81,13 @@ def _xy(phi_deg, r):
     return r * np.sin(p), -r * np.cos(p)
 
 
-def _polar(ax, a, T, K, title, lang, stats, cycle):
+def _polar(ax, a, T, K, title, lang, stats, cycle, Kr=0.0):
+    """The load locus (T, K) with its pole; with Kr ≠ 0 (a crank pin) the curve is the
+    rods' force ΣS with the pole O and the pole Oш = (0, −ΣKr.ш), from which the same
+    curve reads as the pin load R (as :func:`engine.plots.plot_polar`)."""
     t = _TXT[lang]
-    T, K = np.asarray(T) * 1e-3, np.asarray(K) * 1e-3
+    T, K = np.asarray(T) * 1e-3, (np.asarray(K) - Kr) * 1e-3
+    kr = Kr * 1e-3
     ax.plot(T, K, color="C0", lw=1.3)
     ax.set_aspect("equal", adjustable="datalim")
     ax.invert_yaxis()
@@ -91,15 +99,21 @@ def _polar(ax, a, T, K, title, lang, stats, cycle):
     for ang, x, y in zip(labels, lt, lk):
         ax.annotate(f"{ang:g}", (x, y), xytext=(3, 3), textcoords="offset points",
                     fontsize=7, color="0.25")
-    R = np.hypot(T, K)
+    R = np.hypot(T, K + kr)
     for idx, name, col in ((int(np.argmax(R)), "max", "C3"), (int(np.argmin(R)), "min",
                                                                "C2")):
-        ax.annotate("", xy=(T[idx], K[idx]), xytext=(0, 0),
+        ax.annotate("", xy=(T[idx], K[idx]), xytext=(0, -kr),
                     arrowprops=dict(arrowstyle="-|>", color=col, lw=1.2))
         ax.annotate(f"R{name} = {R[idx]:.2f} {t['kN']} (α = {a[idx]:g}°)",
                     (T[idx], K[idx]), xytext=(8, -12 if name == "max" else 8),
                     textcoords="offset points", fontsize=8, color=col)
     ax.plot([0], [0], "ks", ms=4)
+    if kr != 0.0:
+        ax.annotate("O", (0, 0), xytext=(-12, -10), textcoords="offset points",
+                    fontsize=10, weight="bold")
+        ax.plot([0], [-kr], "o", color="C3", ms=5)
+        ax.annotate("Oш", (0, -kr), xytext=(-22, 6), textcoords="offset points",
+                    fontsize=10, weight="bold", color="C3")
     ax.set_xlabel(t["T"])
     ax.set_ylabel(t["K"])
     ax.grid(True, lw=0.4, alpha=0.6)
@@ -116,8 +130,10 @@ def plot_pin_polar(result, ax=None, lang="ru", throw=1):
     ax = _axes(ax)
     p = loads.crankpins
     cyc = _cycle(loads)
+    kr = 0.0 if loads.Kr_throw is None else float(loads.Kr_throw[throw - 1])
     return _polar(ax, p["alpha_deg"].to_numpy(), p[f"T_{throw}_N"], p[f"K_{throw}_N"],
-                  _TXT[lang]["pin"].format(k=throw), lang, loads.pin_stats[throw - 1], cyc)
+                  _TXT[lang]["pin"].format(k=throw), lang, loads.pin_stats[throw - 1], cyc,
+                  kr)
 
 
 def plot_journal_polar(result, ax=None, lang="ru", journal=1):
@@ -136,6 +152,33 @@ def plot_journal_polar(result, ax=None, lang="ru", journal=1):
 def _cycle(loads):
     a = loads.alpha_deg
     return 720.0 if a[-1] - a[0] > 360.0 + 1e-9 else 360.0
+
+
+def plot_developed_loads(result, ax=None, lang="ru", which="journals"):
+    """Developed diagrams R(α) of every crank pin (``which="pins"``) or main journal, with
+    their cycle means (thin lines of the same style)."""
+    loads = getattr(result, "loads", result)
+    t = _TXT[lang]
+    ax = _axes(ax, (10, 5.6))
+    df = loads.crankpins if which == "pins" else loads.journals
+    stats = loads.pin_stats if which == "pins" else loads.journal_stats
+    a = df["alpha_deg"].to_numpy()
+    label = t["dev_pin"] if which == "pins" else t["dev_j"]
+    for k, s in enumerate(stats, start=1):
+        st = _STYLES[(k - 1) % len(_STYLES)]
+        ax.plot(a, df[f"R_{k}_N"] * 1e-3, color="k", lw=1.1,
+                label=f"{label} {k}: max {s.max_N * 1e-3:.2f}, {t['mean']} "
+                      f"{s.mean_N * 1e-3:.2f} {t['kN']}, χ = {s.chi:.2f}", **st)
+        ax.axhline(s.mean_N * 1e-3, color="0.4", lw=0.7, ls=st["ls"])
+    ax.set_xlim(a[0], a[-1])
+    ax.set_xticks(np.arange(a[0], a[-1] + 1, 90))
+    ax.set_ylim(bottom=0)
+    ax.set_xlabel(t["alpha"])
+    ax.set_ylabel(t["R"])
+    ax.grid(True, lw=0.4, alpha=0.6)
+    ax.legend(fontsize=8, loc="upper left")
+    ax.set_title(t["dev"])
+    return ax
 
 
 def plot_wear(diagram, ax=None, lang="ru"):
@@ -278,8 +321,9 @@ def plot_piston_pin(result, ax=None, lang="ru"):
 
 #: File stems of the one-cylinder bearing plots (rod_model only with the rigid rod,
 #: piston_pin only when the piston mass is known).
-BEARING_PLOT_NAMES = ("polar_pin", "polar_journal_1", "wear_pin", "wear_journal_1",
-                      "journal_torques", "big_end", "piston_pin", "rod_model")
+BEARING_PLOT_NAMES = ("polar_pin", "polar_journal_1", "developed_journals", "wear_pin",
+                      "wear_journal_1", "journal_torques", "big_end", "piston_pin",
+                      "rod_model")
 
 
 def bearing_figures(analysis, lang="ru"):
@@ -293,6 +337,7 @@ def bearing_figures(analysis, lang="ru"):
 
     fig("polar_pin", plot_pin_polar, analysis)
     fig("polar_journal_1", plot_journal_polar, analysis)
+    fig("developed_journals", plot_developed_loads, analysis, size=(10, 5.6))
     fig("wear_pin", plot_wear, analysis.pin_wear, size=(7, 7.4))
     fig("wear_journal_1", plot_wear, analysis.journal_wear[0], size=(7, 7.4))
     fig("journal_torques", plot_journal_torques, analysis, size=(10, 5.6))

@@ -243,7 +243,7 @@ def bearing_analysis(spec, table, inputs: BearingInputs | None = None, n_points=
     Kp, Tp = crank_pin_load(table["K_N"].to_numpy(), table["T_N"].to_numpy(),
                             spec.m_rod_rot, spec.R, spec.omega)
     loads = crankshaft_loads(a, _shaft(spec, opt), Kp[None, :], Tp[None, :], spec.R,
-                             spec.omega, spec.cycle_deg)
+                             spec.omega, spec.cycle_deg, pin_Kr=[spec.Kr])
     h = opt.wear_half_angle_deg
     pins = loads.crankpins
     pin_wear = wear_diagram("pin 1", a, pins["psi_1_deg"].to_numpy() + 180.0,

@@ -404,6 +404,9 @@ class CrankshaftLoads:
         Centrifugal forces of the counterweights. [N]
     Q : complex ndarray (n_journals, n)
         Journal loads, engine frame. [N]
+    shaft : Crankshaft
+    Kr_throw : ndarray (n_throws,)
+        ΣKr.ш of each throw's rods, when given (the pole Oш of the polar diagram). [N]
     """
 
     alpha_deg: np.ndarray
@@ -421,10 +424,11 @@ class CrankshaftLoads:
     F_cw: np.ndarray = field(repr=False)
     Q: np.ndarray = field(repr=False)
     shaft: Crankshaft = field(repr=False, default=None)
+    Kr_throw: np.ndarray = field(repr=False, default=None)
 
 
 def crankshaft_loads(theta_deg, shaft: Crankshaft, pin_K, pin_T, R, omega, cycle_deg,
-                     rod_z=None):
+                     rod_z=None, pin_Kr=None):
     """Crank-pin and main-journal loads and the journal torques of a crankshaft.
 
     Parameters
@@ -443,6 +447,9 @@ def crankshaft_loads(theta_deg, shaft: Crankshaft, pin_K, pin_T, R, omega, cycle
         Per throw, a list of (K, T, z) of its rods when they sit at different axial
         positions on the pin (a vee with a bank offset): each rod's force then enters the
         lever rule at its own z.  By default the pin load acts at the throw's centre.
+    pin_Kr : array_like, shape (n_throws,), optional
+        ΣKr.ш of each throw's rods (included in ``pin_K``), kept for the polar diagram's
+        pole Oш. [N]
 
     Returns
     -------
@@ -524,4 +531,5 @@ def crankshaft_loads(theta_deg, shaft: Crankshaft, pin_K, pin_T, R, omega, cycle
         most_loaded_pin=1 + int(np.argmax([s.max_N for s in pin_stats])),
         most_loaded_journal=1 + int(np.argmax([s.max_N for s in j_stats])),
         most_twisted_journal=1 + int(np.argmax([s["swing_Nm"] for s in t_stats])),
-        F_throw=F_throw, F_rot=F_rot, F_cw=F_cw, Q=Q, shaft=shaft)
+        F_throw=F_throw, F_rot=F_rot, F_cw=F_cw, Q=Q, shaft=shaft,
+        Kr_throw=np.zeros(nt) if pin_Kr is None else np.asarray(pin_Kr, float))

@@ -72,6 +72,24 @@ def test_bearings_flag_writes_tables_equal_to_the_library(tmp_path, capsys):
     assert len(wear) == 360
     rb = pd.read_csv(out / "rod_bearings.csv")
     assert list(rb.columns)[-3:] == ["Pp_axial_N", "Pp_side_N", "Pp_N"]
+    # the workbook's bearing sheets hold the CSVs bit for bit, and the summary
+    from openpyxl import load_workbook
+    from engine.bearing_report import SHEET_NAMES
+    wb = load_workbook(out / "diesel-d240.xlsx")
+    for fname in CSVS:
+        ws = wb[SHEET_NAMES["en"][fname]]
+        rows = list(ws.values)
+        df = pd.read_csv(out / fname)
+        assert list(rows[0]) == list(df.columns)
+        np.testing.assert_array_equal(np.array(rows[1:], float), df.to_numpy())
+    summ = {r[0]: r[1:] for r in wb[SHEET_NAMES["en"]["summary"]].values if r and r[0]}
+    fine = bearing_analysis(spec, engine.analyze(spec, study.settings).curves)
+    assert summ["Crank pin 1, R, N"][:6] == (
+        fine.loads.pin_stats[0].max_N, fine.loads.pin_stats[0].alpha_max_deg,
+        fine.loads.pin_stats[0].min_N, fine.loads.pin_stats[0].alpha_min_deg,
+        fine.loads.pin_stats[0].mean_N, fine.loads.pin_stats[0].chi)
+    assert summ["crank pin 1"][0] == fine.pin_wear.oil_hole_deg
+    assert summ["Most loaded main journal"][0] in (1, 2)
 
 
 def test_rigid_rod_spec_writes_rod_model(tmp_path, capsys):
