@@ -9,16 +9,18 @@ journals.
 
 Frames and signs
 ----------------
-*Engine frame* (x, y): the crank axis O at the origin, y up along the cylinder axis of a
-bank with bank angle 0, x to the right, looking at the front (free) end of the
-crankshaft; the shaft turns counter-clockwise (ω > 0), as in :mod:`engine.kinematics`.
-Forces are complex numbers ``x + iy``.
+*Engine frame* (x, y), as in :mod:`engine.kinematics`: the crank axis O at the origin, y
+up along the cylinder axis of a bank with bank angle 0, x to the right, seen from the
+flywheel end (z runs from the front to the flywheel); the shaft turns counter-clockwise
+in this view (ω > 0).  Forces are complex numbers ``x + iy``.
 
-*Crankshaft angle* θ [deg]: the angle of throw 1 from the vertical (+y), counted in the
-direction of rotation.  Throw k points at δk = θ + τk (τk its throw angle).  A cylinder
-whose axis is turned by its bank angle γ from +y (in the direction of rotation) sees the
-crank of its throw at its own crank angle α = δk − γ (mod 360°); its working cycle lags
-cylinder 1's by its phase, α = θ − phase (mod cycle), so ``phase = γ − τk`` (mod 360°).
+*Crankshaft angle* θ [deg] and throws: throw k points at δk = θ + τk from the vertical
+(+y), counted in the direction of rotation; τk is the throw's direction at θ = 0 (for an
+engine whose θ is cylinder 1's α, τk = γ1 + the throw's angle from throw 1, γ1 the bank
+angle of cylinder 1).  A cylinder whose axis is turned by its bank angle γ from +y (in
+the direction of rotation) sees the crank of its throw at its own crank angle
+α = δk − γ (mod 360°); its working cycle lags by its phase, α = θ − phase (mod cycle), so
+``phase ≡ γ − τk`` (mod 360°).
 
 *Crank frame* of a throw (the textbook's, as for Rшш in :mod:`engine.forces`): K along
 the crank towards the crank axis, T perpendicular to it in the direction of rotation; the
@@ -326,9 +328,10 @@ class Crankshaft:
     Attributes
     ----------
     throw_angle_deg : tuple of float
-        τk, the angle of each throw from throw 1, in the direction of rotation. [deg]
+        τk, the direction of each throw from the vertical at θ = 0, in the direction of
+        rotation (module docstring). [deg]
     z_throw : tuple of float
-        Axial position of each throw (its crank-pin centre), from the free end. [m]
+        Axial position of each throw (its crank-pin centre), from the front. [m]
     z_journal : tuple of float
         Axial positions of the main journals, increasing. [m]
     m_crank_rot : tuple of float
