@@ -194,12 +194,13 @@ class BearingAnalysis:
     notes: list = field(default_factory=list)
 
 
-def rod_bearing_table(table, spec, m_piston):
-    """Big-end (rod frame) and piston-pin loads from a force table (DataFrame)."""
+def rod_bearing_table(table, spec, m_piston, phase_deg=0.0):
+    """Big-end (rod frame) and piston-pin loads from a force table (DataFrame) whose rows
+    are at the crankshaft angles θ of a cylinder with phase ``phase_deg`` (α = θ − φ)."""
     import pandas as pd
 
     a = table["alpha_deg"].to_numpy()
-    along, across = big_end_load(table["K_N"], table["T_N"], table["Kr_N"], a,
+    along, across = big_end_load(table["K_N"], table["T_N"], table["Kr_N"], a - phase_deg,
                                  table["beta_deg"])
     out = dict(alpha_deg=a, Rbe_along_N=along, Rbe_across_N=across,
                Rbe_N=np.hypot(along, across), Rbe_angle_deg=_psi(across, along))
