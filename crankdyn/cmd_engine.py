@@ -11,7 +11,8 @@ are imported inside :func:`run` only, so ``crankdyn --help`` stays fast.
 from __future__ import annotations
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
-EXAMPLES = {"petrol": "petrol_vaz2106.toml", "diesel": "diesel_d240.toml"}
+EXAMPLES = {"petrol": "petrol_vaz2106.toml", "diesel": "diesel_d240.toml",
+            "six": "petrol_bmw_m54.toml", "v8": "diesel_kamaz740.toml"}
 
 
 def add_parser(subparsers):
@@ -66,8 +67,8 @@ def run(args) -> int:
     from dataclasses import replace
 
     import engine
-    from engine.plots import PLOT_NAMES, figures
-    from engine.report import build_workbook, save_workbook
+    from engine.plots import PLOT_NAMES, TRAIN_PLOT_NAMES, figures, train_figures
+    from engine.report import add_engine_sheets, build_workbook, save_workbook
 
     from crankbase.errors import Problem
     from crankbase.output import (check_not_input, ensure_finite, safe_name, save_figure,
@@ -81,23 +82,31 @@ def run(args) -> int:
             raise SpecError(Problem("--step", f"got {args.step!r}; must be > 0 and "
                                               f"<= {spec.cycle_deg:g}"))
         settings = replace(settings, step_deg=float(args.step))
-    result = engine.analyze(spec, settings)
+    whole = engine.analyze_engine(spec, study.train, settings)
+    result = whole.cylinder
     table = result.table
     ensure_finite(table, "force table")
     ensure_finite(result.curves, "force table (plot grid)")
     summary = result.summary
+    for df, what in ((whole.torque, "torque"), (whole.balance, "balance")):
+        ensure_finite(df, what)
     csv_path = out / "forces.csv"
+    csvs = {"cylinders.csv": whole.layout.cylinders, "torque.csv": whole.torque,
+            "balance.csv": whole.balance}
     xlsx_path = out / f"{safe_name(spec.name, 'engine')}.xlsx"
-    stems = [out / name for name in PLOT_NAMES]
-    outputs = [csv_path, xlsx_path] + [s.with_suffix(f".{e}") for s in stems
-                                       for e in ("png", "svg")]
+    stems = [out / name for name in PLOT_NAMES + TRAIN_PLOT_NAMES]
+    outputs = [csv_path, xlsx_path] + [out / n for n in csvs] + [
+        s.with_suffix(f".{e}") for s in stems for e in ("png", "svg")]
     check_not_input(outputs, [spec_path, spec.pressure_file])
-    wb = build_workbook(result, args.lang)
+    wb = add_engine_sheets(build_workbook(result, args.lang), whole, args.lang)
     figs = figures(result, args.lang)
+    figs.update(train_figures(whole, args.lang))
 
     # 2. write: every file into a staging folder, moved into DIR only when all are done
     with staged_output(out, inputs=[spec_path, spec.pressure_file]) as stage:
         write_csv(table, stage / csv_path.name)
+        for name, df in csvs.items():
+            write_csv(df, stage / name)
         save_workbook(wb, stage / xlsx_path.name)
         for stem in stems:
             save_figure(figs[stem.name], stage / stem.name)
@@ -117,8 +126,35 @@ def run(args) -> int:
         f"  mean torque        {summary.M_mean_Nm:10.2f} N*m  (one cylinder)",
         f"  R_crank-pin max    {R.max:10.0f} N    at alpha = {R.alpha_max_deg:g} deg;"
         f"  mean {summary.R_mean_N:.0f} N;  chi = {summary.chi:.3f}",
-        f"wrote {csv_path} ({len(table)} rows), {xlsx_path}, "
-        f"{len(stems)} plots (PNG, SVG) in {out}" + (" [ru]" if ru else " [en]"),
     ]
+    ws = whole.summary
+    lay = whole.layout
+    lines += [
+        f"whole engine: {lay.n} cylinders {whole.train.arrangement}, firing order "
+        f"{'-'.join(map(str, lay.firing_order))}, throws "
+        f"{', '.join(f'{x:g}' for x in lay.throw_angles_deg)} deg ({lay.crankshaft})"
+        + ("" if lay.even_firing else ", uneven firing"),
+        f"  total torque       mean {ws.M_mean_Nm:.1f} N*m, max {ws.M_max_Nm:.1f} at "
+        f"{ws.alpha_M_max_deg:g} deg, min {ws.M_min_Nm:.1f} at {ws.alpha_M_min_deg:g} deg;"
+        f"  mu = {ws.mu:.3f}",
+        f"  indicated          Mi = {ws.Mi_Nm:.1f} N*m (mean differs by {ws.diff_pct:+.3f} %),"
+        f" Ni = {ws.Ni_kW:.2f} kW"
+        + ("" if ws.Me_Nm is None else f";  Me = {ws.Me_Nm:.1f} N*m, Ne = {ws.Ne_kW:.2f} kW"),
+        f"  excess work        L = {ws.L_excess_J:.1f} J"
+        + ("" if ws.flywheel is None else
+           f";  J0 = {ws.flywheel.J0_kgm2:.4f} kg*m^2 (delta = {ws.flywheel.delta:g}), "
+           f"flywheel m*D^2 = {ws.flywheel.mD2_kgm2:.4f} kg*m^2"),
+    ]
+    amp = whole.balance_amplitudes.set_index("part")
+    unbalanced = [p for p in ("1", "2", "r") if not (amp.loc[p, "F_balanced"]
+                                                    and amp.loc[p, "M_balanced"])]
+    lines.append(f"  balance            free force max {amp.loc['after', 'F_max_N']:.1f} N, "
+                 f"free moment max {amp.loc['after', 'M_max_Nm']:.1f} N*m with "
+                 f"{len(ws.counterweights)} counterweights; unbalanced before them: "
+                 + (", ".join({"1": "1st order", "2": "2nd order", "r": "rotating"}[p]
+                              for p in unbalanced) or "none"))
+    lines.append(f"wrote {csv_path} ({len(table)} rows), cylinders.csv, torque.csv, "
+                 f"balance.csv, {xlsx_path}, {len(stems)} plots (PNG, SVG) in {out}"
+                 + (" [ru]" if ru else " [en]"))
     print("\n".join(lines))
     return 0
