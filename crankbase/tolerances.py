@@ -36,3 +36,8 @@ ASSEMBLY_CHECK_RTOL = 1e-7
 #: knot of the indicator diagram [deg]: small against the 10–50° rounding zones, large
 #: enough that the difference of pressures keeps ~8 significant digits.
 POLYTROPE_SLOPE_STEP_DEG = 1e-4
+
+#: A free force (moment) of an engine below this fraction of its largest possible inertia
+#: force (times the crankshaft length) counts as balanced: an exact cancellation leaves
+#: round-off of ~1e-15 of it, while a real residue (e.g. λ³ harmonics) is >= 1e-4.
+BALANCED_RTOL = 1e-9

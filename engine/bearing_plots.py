@@ -181,9 +181,10 @@ def plot_developed_loads(result, ax=None, lang="ru", which="journals"):
     return ax
 
 
-def plot_wear(diagram, ax=None, lang="ru"):
+def plot_wear(diagram, ax=None, lang="ru", note=True):
     """Wear diagram on the journal's circle: the wear drawn inwards from the circle
-    (depth ∝ wear, the largest at 40 % of the radius), the oil-hole direction marked."""
+    (depth ∝ wear, the largest at 40 % of the radius), the oil-hole direction marked;
+    ``note``: the method and the frame written under it (a grid writes it once)."""
     t = _TXT[lang]
     ax = _axes(ax, (7, 7.4))
     phi = np.append(diagram.phi_deg, diagram.phi_deg[0] + 360.0)
@@ -220,8 +221,10 @@ def plot_wear(diagram, ax=None, lang="ru"):
     ax.set_ylim(-1.65, 1.65)
     ax.axis("off")
     ax.set_title(t["wear"].format(name=f"{t['names'].get(kind, kind)} {num}"), fontsize=11)
-    note = t["wear_note"].format(h=diagram.half_angle_deg, zero=t["axis"].get(kind, ""))
-    ax.text(0.5, -0.02, note,
+    if not note:
+        return ax
+    text = t["wear_note"].format(h=diagram.half_angle_deg, zero=t["axis"].get(kind, ""))
+    ax.text(0.5, -0.02, text,
             transform=ax.transAxes, ha="center", va="top", fontsize=7.5, color="0.3")
     return ax
 
@@ -321,30 +324,68 @@ def plot_piston_pin(result, ax=None, lang="ru"):
 
 #: File stems of the one-cylinder bearing plots (rod_model only with the rigid rod,
 #: piston_pin only when the piston mass is known).
-BEARING_PLOT_NAMES = ("polar_pin", "polar_journal_1", "developed_journals", "wear_pin",
-                      "wear_journal_1", "journal_torques", "big_end", "piston_pin",
-                      "rod_model")
+BEARING_PLOT_NAMES = ("polar_pins", "polar_journals", "developed_pins",
+                      "developed_journals", "wear_pins", "wear_journals", "journal_torques",
+                      "big_end", "piston_pin", "rod_model")
+
+
+def _wears(w):
+    return list(w) if isinstance(w, (list, tuple)) else [w]
+
+
+def _grid(n, cell, cols=3):
+    """A figure with n axes in a grid of cell-sized cells (fixed margins)."""
+    from matplotlib.figure import Figure
+    ncol = min(n, cols)
+    nrow = -(-n // ncol)
+    fig = Figure(figsize=(cell[0] * ncol, cell[1] * nrow))
+    fig.subplots_adjust(left=0.06 if ncol > 1 else 0.1, right=0.97, bottom=0.07 / nrow,
+                        top=1 - 0.09 / nrow, wspace=0.28, hspace=0.32)
+    axes = np.atleast_1d(fig.subplots(nrow, ncol)).ravel()
+    for ax in axes[n:]:
+        ax.set_visible(False)
+    return fig, axes[:n]
 
 
 def bearing_figures(analysis, lang="ru"):
-    """``{stem: Figure}`` of a :class:`engine.bearing_spec.BearingAnalysis`."""
+    """``{stem: Figure}`` of a :class:`engine.bearing_spec.BearingAnalysis` (one
+    cylinder) or an :class:`engine.train_bearings.EngineBearings` (a whole engine): the
+    polar and wear diagrams of every pin and journal in one grid each."""
     out = {}
+    loads = analysis.loads
+    npin, nj = len(loads.pin_stats), len(loads.journal_stats)
 
-    def fig(stem, func, *args, size=(8, 8), right=0.96):
+    def fig(stem, func, *args, size=(8, 8), right=0.96, **kw):
         ax = _axes(None, size, right)
-        func(*args, ax=ax, lang=lang)
+        func(*args, ax=ax, lang=lang, **kw)
         out[stem] = ax.figure
 
-    fig("polar_pin", plot_pin_polar, analysis)
-    fig("polar_journal_1", plot_journal_polar, analysis)
+    def grid(stem, n, cell, draw):
+        f, axes = _grid(n, cell)
+        for k, ax in enumerate(axes, start=1):
+            draw(ax, k)
+            ax.title.set_fontsize(9)
+        out[stem] = f
+
+    grid("polar_pins", npin, (7, 7),
+         lambda ax, k: plot_pin_polar(analysis, ax=ax, lang=lang, throw=k))
+    grid("polar_journals", nj, (7, 7),
+         lambda ax, k: plot_journal_polar(analysis, ax=ax, lang=lang, journal=k))
+    fig("developed_pins", plot_developed_loads, analysis, size=(10, 5.6), which="pins")
     fig("developed_journals", plot_developed_loads, analysis, size=(10, 5.6))
-    fig("wear_pin", plot_wear, analysis.pin_wear, size=(7, 7.4))
-    fig("wear_journal_1", plot_wear, analysis.journal_wear[0], size=(7, 7.4))
+    pins, jw = _wears(analysis.pin_wear), _wears(analysis.journal_wear)
+    t = _TXT[lang]
+    for stem, diagrams, kind in (("wear_pins", pins, "pin"), ("wear_journals", jw, "journal")):
+        grid(stem, len(diagrams), (6, 6.2),
+             lambda ax, k, d=diagrams: plot_wear(d[k - 1], ax=ax, lang=lang, note=False))
+        out[stem].text(0.5, 0.005, t["wear_note"].format(
+            h=diagrams[0].half_angle_deg, zero=t["axis"][kind]).replace("\n", " "),
+            ha="center", va="bottom", fontsize=8, color="0.3")
     fig("journal_torques", plot_journal_torques, analysis, size=(10, 5.6))
     fig("big_end", plot_big_end, analysis)
     if not analysis.rod_bearings["Pp_N"].isna().all():
         fig("piston_pin", plot_piston_pin, analysis, size=(10, 5.6))
-    if analysis.rod_comparison is not None:
+    if getattr(analysis, "rod_comparison", None) is not None:
         fig("rod_model", plot_rod_model, analysis.rod_comparison, size=(10, 5.6),
             right=0.9)
     return out

@@ -117,7 +117,8 @@ def add_bearing_sheets(wb, tables, analysis, lang="ru"):
         row += 1
     _put(ws, row, 1, t["hole"]).font = Font(bold=True)
     row += 1
-    holes = [(t["hole_pin"].format(k=1), analysis.pin_wear.oil_hole_deg)]
+    pins = analysis.pin_wear if isinstance(analysis.pin_wear, list) else [analysis.pin_wear]
+    holes = [(t["hole_pin"].format(k=k + 1), w.oil_hole_deg) for k, w in enumerate(pins)]
     holes += [(t["hole_j"].format(j=j + 1), w.oil_hole_deg)
               for j, w in enumerate(analysis.journal_wear)]
     for label, v in holes:

@@ -22,7 +22,8 @@ from .bearings import BearingInputError, Crankshaft, CrankshaftLoads, crankshaft
 from .forces import force_table
 from .wear import wear_diagram
 
-__all__ = ["Cylinder", "EngineBearings", "engine_bearings", "full_support_journals"]
+__all__ = ["Cylinder", "EngineBearings", "engine_bearings", "full_support_journals",
+           "layout_cylinders"]
 
 #: A cylinder's phase must agree with its bank angle and throw (φ ≡ γ − τ mod 360°)
 #: within this: the layout's angles are sums of degrees given to ~1e-12. [deg]
@@ -38,6 +39,27 @@ class Cylinder:
     phase_deg: float
     throw: int
     z: float
+
+
+def layout_cylinders(lay):
+    """The cylinders, throw directions and throw positions of a crank-train layout
+    (:func:`engine.train.layout`: θ is cylinder 1's α, throw angles from throw 1, bank
+    angles, phases, throws and axial positions per cylinder).
+
+    Returns
+    -------
+    cylinders : tuple of Cylinder
+    throw_dir_deg : ndarray
+        γ₁ + each throw's angle from throw 1. [deg]
+    z_throw : ndarray
+        [m]
+    """
+    df = lay.cylinders
+    cyl = tuple(Cylinder(float(g), float(p), int(k) - 1, float(z) * 1e-3)
+                for g, p, k, z in zip(df["bank_angle_deg"], df["phase_deg"], df["throw"],
+                                      df["axial_position_mm"]))
+    tau = float(df["bank_angle_deg"].iloc[0]) + np.asarray(lay.throw_angles_deg, float)
+    return cyl, tau, np.asarray(lay.throw_z, float)
 
 
 def full_support_journals(z_throw, spacing=None):
@@ -67,6 +89,9 @@ class EngineBearings:
     cylinders : tuple of Cylinder
     options : BearingOptions
     m_piston : float or None
+    rod_model : str
+    rod_comparison : RodModelComparison or None
+        The rigid rod beside the two-mass one (the same for every cylinder).
     notes : list of str
     """
 
@@ -77,6 +102,8 @@ class EngineBearings:
     cylinders: tuple
     options: object
     m_piston: float | None
+    rod_model: str = "two-mass"
+    rod_comparison: object = None
     notes: list = field(default_factory=list)
 
 
@@ -165,4 +192,9 @@ def engine_bearings(spec, theta_deg, cylinders, throw_dir_deg, z_throw, *,
     notes = [] if mp is not None else [
         "piston-pin load not computed: give the masses as parts (piston_group_kg, rod_kg) "
         "or [rod] mass_kg"]
-    return EngineBearings(loads, pin_wear, jw, rb, cyl, inputs.options, mp, notes)
+    comp = None
+    if inputs.rod_model == "rigid" and inputs.rod is not None:
+        from .rodmodel import compare_rod_models
+        comp = compare_rod_models(spec, inputs.rod, th)
+    return EngineBearings(loads, pin_wear, jw, rb, cyl, inputs.options, mp,
+                          inputs.rod_model, comp, notes)
