@@ -5,6 +5,8 @@ import copy
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import engine
 from engine.bearing_spec import bearing_analysis
@@ -107,3 +109,41 @@ def test_a_phase_that_contradicts_the_layout_is_refused():
         engine_bearings(SPEC, THETA, bad, tau, zt)
     with pytest.raises(BearingInputError, match="throw 5 does not exist"):
         engine_bearings(SPEC, THETA, [Cylinder(0.0, 0.0, 4, 0.0)], tau, zt)
+
+
+@st.composite
+def layouts(draw):
+    nt = draw(st.integers(1, 3))
+    tau = [draw(st.floats(-180.0, 180.0)) for _ in range(nt)]
+    cyls = []
+    for k in range(nt):
+        for r in range(draw(st.integers(1, 2))):
+            g = draw(st.floats(-80.0, 80.0))
+            phase = (g - tau[k]) % 360.0 + 360.0 * draw(st.integers(0, 1))
+            cyls.append(Cylinder(g, phase, k, 0.1 * k + 0.02 * r))
+    return cyls, tau, [0.1 * k + 0.01 for k in range(nt)]
+
+
+@settings(max_examples=8, deadline=None)
+@given(layouts())
+def test_random_layouts_pins_and_equilibrium(case):
+    cyls, tau, zt = case
+    th = np.arange(0.0, 720.0, 15.0)
+    res = engine_bearings(SPEC, th, cyls, tau, zt)
+    L = res.loads
+    F_all = []
+    for k in range(len(tau)):
+        e = np.exp(1j * np.radians(90.0 + th + tau[k]))
+        F = 0
+        for c in cyls:
+            if c.throw == k:
+                t = engine.force_table(SPEC, th, bank_deg=c.bank_deg, phase_deg=c.phase_deg)
+                F = F + _rod_engine_frame(t, c)
+        K = F.real * -e.real + F.imag * -e.imag
+        T = F.real * -e.imag + F.imag * e.real
+        scale = np.abs(F).max()
+        assert np.abs(L.crankpins[f"K_{k + 1}_N"] - K).max() < 1e-10 * scale
+        assert np.abs(L.crankpins[f"T_{k + 1}_N"] - T).max() < 1e-10 * scale
+        F_all.append(F + 0.8 * SPEC.R * SPEC.omega ** 2 * e)
+    total = np.sum(F_all, axis=0)
+    assert np.abs(total - L.Q.sum(axis=0)).max() < 1e-9 * np.abs(total).max() * len(cyls)
