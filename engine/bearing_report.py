@@ -9,6 +9,8 @@ precision (saved by :func:`engine.report.save_workbook`).  Nothing here computes
 """
 from __future__ import annotations
 
+from .bearings import load_stats
+
 __all__ = ["add_bearing_sheets", "SHEET_NAMES"]
 
 #: Sheet title of each bearing table (by CSV file name), per language.
@@ -32,6 +34,8 @@ _T = {
                most_t="Наибольший размах момента: коренная шейка",
                hole="Масляное отверстие (наименьший износ), °", hole_pin="шатунная шейка {k}",
                hole_j="коренная шейка {j}", half="Дуга износа ±, °",
+               be="Подшипник нижней головки шатуна (цилиндр 1), Н",
+               pp="Поршневой палец (цилиндр 1), Н",
                rod="Жёсткий шатун − двухмассовый (точная кинематика)",
                conv=("Система координат кривошипа: K — к оси вала, T — по вращению; "
                      "углы Ψ и направления износа от направления к оси вала по вращению.",
@@ -47,6 +51,7 @@ _T = {
                most_t="Largest torque swing: main journal",
                hole="Oil hole (least wear), °", hole_pin="crank pin {k}",
                hole_j="main journal {j}", half="Wear arc ±, °",
+               be="Big-end bearing (cylinder 1), N", pp="Piston pin (cylinder 1), N",
                rod="Rigid rod − two-mass rod (exact kinematics)",
                conv=("Crank frame: K towards the shaft axis, T in the direction of "
                      "rotation; angles Ψ and wear directions from the direction towards "
@@ -95,6 +100,11 @@ def add_bearing_sheets(wb, tables, analysis, lang="ru"):
     row = 4
     stats = [(t["pin"].format(k=k + 1), s) for k, s in enumerate(loads.pin_stats)]
     stats += [(t["jr"].format(j=j + 1), s) for j, s in enumerate(loads.journal_stats)]
+    rb = analysis.rod_bearings
+    cyc = 720.0 if rb["alpha_deg"].iloc[-1] - rb["alpha_deg"].iloc[0] > 360.0 else 360.0
+    for col, label in (("Rbe_N", t["be"]), ("Pp_N", t["pp"])):
+        if not rb[col].isna().any():
+            stats.append((label, load_stats(rb["alpha_deg"], rb[col], cyc)))
     for label, s in stats:
         for c, v in enumerate((label, s.max_N, s.alpha_max_deg, s.min_N, s.alpha_min_deg,
                                s.mean_N, s.chi), start=1):

@@ -51,12 +51,13 @@ _DEFAULT_HALF_SPAN = 0.05
 @dataclass(frozen=True)
 class BearingOptions:
     """``[bearings]`` in SI: half-angle [deg], journal positions [m], counterweight
-    m·r [kg·m] and angle [deg]."""
+    m·r [kg·m] and angle [deg]; ``given``: the keys the spec gave."""
 
     wear_half_angle_deg: float = DEFAULT_HALF_ANGLE_DEG
     journal_positions: tuple = (-_DEFAULT_HALF_SPAN, _DEFAULT_HALF_SPAN)
     counterweight_mr: float = 0.0
     counterweight_angle_deg: float = 180.0
+    given: tuple = ()
 
 
 def bearing_options(table, checker=None):
@@ -87,7 +88,8 @@ def bearing_options(table, checker=None):
     return BearingOptions(
         h if h is not None else DEFAULT_HALF_ANGLE_DEG,
         tuple(x / 1e3 for x in zj) if zj else (-_DEFAULT_HALF_SPAN, _DEFAULT_HALF_SPAN),
-        (mr or 0.0) / 1e3, ang if ang is not None else 180.0)
+        (mr or 0.0) / 1e3, ang if ang is not None else 180.0,
+        tuple(k for k in t if k in BEARING_KEYS))
 
 
 def check_tables(c, data):

@@ -144,9 +144,18 @@ def engine_bearings(spec, theta_deg, cylinders, throw_dir_deg, z_throw, *,
     ------
     BearingInputError
         A cylinder whose phase does not match its bank angle and throw
-        (φ ≢ γ − τ mod 360°), or a throw index out of range.
+        (φ ≢ γ − τ mod 360°), a throw index out of range, or one-cylinder ``[bearings]``
+        keys (journal positions, counterweight).
     """
     inputs = inputs if inputs is not None else BearingInputs()
+    one_cylinder_keys = [k for k in inputs.options.given
+                         if k in ("journal_positions_mm", "counterweight_kg_mm",
+                                  "counterweight_angle_deg")]
+    if one_cylinder_keys:
+        raise BearingInputError([Problem(
+            f"bearings.{k}", "only for a one-cylinder spec; a whole engine takes its main "
+            "journals from the layout (cylinder_spacing_mm) and its counterweights from "
+            "[balance]") for k in one_cylinder_keys])
     th = np.asarray(theta_deg, float)
     tau = np.asarray(throw_dir_deg, float)
     nt = len(tau)

@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import engine
-from engine.bearing_spec import bearing_analysis
+from engine.bearing_spec import bearing_analysis, read_bearing_inputs
 from engine.bearings import BearingInputError
 from engine.train_bearings import Cylinder, engine_bearings, full_support_journals
 
@@ -109,6 +109,12 @@ def test_a_phase_that_contradicts_the_layout_is_refused():
         engine_bearings(SPEC, THETA, bad, tau, zt)
     with pytest.raises(BearingInputError, match="throw 5 does not exist"):
         engine_bearings(SPEC, THETA, [Cylinder(0.0, 0.0, 4, 0.0)], tau, zt)
+    d = copy.deepcopy(BASE)
+    d["bearings"] = dict(journal_positions_mm=[-40.0, 40.0], wear_half_angle_deg=50.0)
+    inputs = read_bearing_inputs(d, SPEC)
+    with pytest.raises(BearingInputError, match="bearings.journal_positions_mm: only for a "
+                                                "one-cylinder spec"):
+        engine_bearings(SPEC, THETA, cyls, tau, zt, inputs=inputs)
 
 
 @st.composite
