@@ -426,7 +426,9 @@ def counterweights_for(spec, lay, train):
         u = np.exp(1j * (np.pi / 2 + np.radians(lay.bank_deg)))
         g1 = math.radians(float(lay.bank_deg[0]))
         # F1_fwd = ω²·(A/2)·Σ e^{−iφ}u; a mass·radius c at angle ψ gives ω²·i·e^{iγ1}·c
-        unb = (A / 2) * np.exp(-1j * phi) * u / (1j * np.exp(1j * g1))
+        # cos α + kλ sin α = Re[(1 − ikλ)e^{iα}]: the pin offset turns the forward part
+        c1 = 1 - 1j * spec.k_offset * spec.lam
+        unb = (A / 2) * c1 * np.exp(-1j * phi) * u / (1j * np.exp(1j * g1))
         zs = lay.z
         c_a, c_b = two_plane_balance(unb, zs, float(zs.min()), float(zs.max()))
         for zz, c in ((float(zs.min()), c_a), (float(zs.max()), c_b)):
