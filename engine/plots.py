@@ -350,7 +350,7 @@ def plot_total_torque(result, ax=None, lang="ru"):
     """Total torque over the cycle: each cylinder's curve faint, the sum, its mean, max
     and min. ``result``: :class:`engine.EngineTrainResult`. Returns the Axes."""
     t = _ttexts(lang)
-    ax = _axes(ax)
+    ax = _axes(ax, (10, 6), bottom=0.2, left=0.09)
     c, s = result.curves, result.summary
     th = c["alpha_deg"].to_numpy()
     n = result.layout.n
@@ -366,7 +366,9 @@ def plot_total_torque(result, ax=None, lang="ru"):
                     fontsize=8, color="C3")
     _theta_axis(ax, result.layout.cycle_deg, t)
     ax.set_ylabel(t["M"])
-    ax.legend(loc="best", fontsize=8, framealpha=0.9)
+    # below the axes: the curves fill the whole plot, a legend inside would cover them
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.11), ncol=3, fontsize=8,
+              frameon=False)
     ax.set_title(f"{t['tq']}: {result.cylinder.spec.name}, μ = {s.mu:.3f}")
     return ax
 
@@ -475,14 +477,15 @@ def _over_alpha(ax, result, kind, t):
     lo, hi = ax.get_ylim()
     ax.set_ylim(min(lo, -lim), max(hi, lim))
     _theta_axis(ax, 360.0, t)
-    ax.legend(loc="best", fontsize=8, ncol=2, framealpha=0.9)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.11), ncol=4, fontsize=8,
+              frameon=False)
 
 
 def plot_free_forces(result, ax=None, lang="ru"):
     """Free force components over one revolution, before and after the counterweights.
     Returns the Axes."""
     t = _ttexts(lang)
-    ax = _axes(ax)
+    ax = _axes(ax, (10, 6), bottom=0.2, left=0.1)
     _over_alpha(ax, result, "F", t)
     ax.set_ylabel(t["force"])
     ax.set_title(f"{t['Fa']}: {result.cylinder.spec.name}")
@@ -493,7 +496,7 @@ def plot_free_moments(result, ax=None, lang="ru"):
     """Free moment components over one revolution, before and after the counterweights.
     Returns the Axes."""
     t = _ttexts(lang)
-    ax = _axes(ax)
+    ax = _axes(ax, (10, 6), bottom=0.2, left=0.1)
     _over_alpha(ax, result, "M", t)
     ax.set_ylabel(t["moment"])
     ax.set_title(f"{t['Ma']}: {result.cylinder.spec.name}")
