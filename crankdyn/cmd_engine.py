@@ -155,7 +155,7 @@ def run(args) -> int:
         f"  total torque       mean {ws.M_mean_Nm:.1f} N*m, max {ws.M_max_Nm:.1f} at "
         f"{ws.alpha_M_max_deg:g} deg, min {ws.M_min_Nm:.1f} at {ws.alpha_M_min_deg:g} deg;"
         f"  mu = {ws.mu:.3f}",
-        f"  indicated          Mi = {ws.Mi_Nm:.1f} N*m (mean differs by {ws.diff_pct:+.3f} %),"
+        f"  indicated          Mi = {ws.Mi_Nm:.1f} N*m (mean differs by {ws.diff_pct:+.4f} %),"
         f" Ni = {ws.Ni_kW:.2f} kW"
         + ("" if ws.Me_Nm is None else f";  Me = {ws.Me_Nm:.1f} N*m, Ne = {ws.Ne_kW:.2f} kW"),
         f"  excess work        L = {ws.L_excess_J:.1f} J"
@@ -171,6 +171,14 @@ def run(args) -> int:
                  f"{len(ws.counterweights)} counterweights; unbalanced before them: "
                  + (", ".join({"1": "1st order", "2": "2nd order", "r": "rotating"}[p]
                               for p in unbalanced) or "none"))
+    if ws.flywheel is not None and ws.flywheel.mass_kg is not None:
+        lines.append(f"  flywheel           J = {ws.flywheel.J_flywheel_kgm2:.4f} kg*m^2 "
+                     f"({ws.flywheel.share:g} of J0): rim D = "
+                     f"{ws.flywheel.diameter_m * 1e3:g} mm, m = {ws.flywheel.mass_kg:.2f} kg,"
+                     f" rim speed {ws.flywheel.rim_speed_m_s:.1f} m/s")
+    for cw in ws.counterweights:
+        lines.append(f"  counterweight      m*r = {cw.mr * 1e3:9.2f} kg*mm at "
+                     f"{cw.angle_deg:6.1f} deg from throw 1, z = {cw.z * 1e3:7.1f} mm")
     if bearing is not None:
         lines += bearing["lines"]
     lines.append(f"wrote {csv_path} ({len(table)} rows), cylinders.csv, torque.csv, "

@@ -350,7 +350,7 @@ def plot_total_torque(result, ax=None, lang="ru"):
     """Total torque over the cycle: each cylinder's curve faint, the sum, its mean, max
     and min. ``result``: :class:`engine.EngineTrainResult`. Returns the Axes."""
     t = _ttexts(lang)
-    ax = _axes(ax)
+    ax = _axes(ax, (10, 6), bottom=0.2, left=0.09)
     c, s = result.curves, result.summary
     th = c["alpha_deg"].to_numpy()
     n = result.layout.n
@@ -366,7 +366,9 @@ def plot_total_torque(result, ax=None, lang="ru"):
                     fontsize=8, color="C3")
     _theta_axis(ax, result.layout.cycle_deg, t)
     ax.set_ylabel(t["M"])
-    ax.legend(loc="upper right", fontsize=8)
+    # below the axes: the curves fill the whole plot, a legend inside would cover them
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.11), ncol=3, fontsize=8,
+              frameon=False)
     ax.set_title(f"{t['tq']}: {result.cylinder.spec.name}, μ = {s.mu:.3f}")
     return ax
 
@@ -385,20 +387,34 @@ def plot_excess_work(result, ax=None, lang="ru"):
     x = th[i] if abs(th[i] - th[k]) > 20 else th[i] + 20
     ax.annotate("", xy=(x, w[i]), xytext=(x, w[k]),
                 arrowprops=dict(arrowstyle="<->", color="C3", lw=1.2))
+    right = x > 0.75 * result.layout.cycle_deg
     ax.annotate(t["L"].format(v=result.summary.L_excess_J), (x, (w[i] + w[k]) / 2),
-                xytext=(6, 0), textcoords="offset points", color="C3", fontsize=9)
+                xytext=(-6 if right else 6, 0), textcoords="offset points", color="C3",
+                fontsize=9, ha="right" if right else "left", va="center")
     _theta_axis(ax, result.layout.cycle_deg, t)
     ax.set_ylabel(t["work"])
     ax.set_title(f"{t['wt']}: {result.cylinder.spec.name}")
     return ax
 
 
+def _min_extent(result, kind):
+    """Smallest half-range of a force (kN) or moment (N·m) axis: 2 % of the engine's
+    first-order inertia force (times its length), so that round-off of a balanced
+    engine (~1e-13) is drawn as the zero it is."""
+    spec, lay = result.cylinder.spec, result.layout
+    F = lay.n * spec.mj * spec.R * spec.omega ** 2
+    if kind == "F":
+        return 0.02 * F * 1e-3
+    return 0.02 * F * max(float(np.ptp(lay.z)), spec.bore)
+
+
 def _locus(ax, result, kind, t):
     b = result.balance_curves
     unit = "N" if kind == "F" else "Nm"
     scale = 1e-3 if kind == "F" else 1.0
-    for key, label, style in (("before", t["before"], dict(color="C1", ls="--", lw=1.3)),
-                              ("after", t["after"], dict(color="C0", ls="-", lw=1.6))):
+    for key, label, style in (("after", t["after"], dict(color="C0", ls="-", lw=2.6,
+                                                         alpha=0.45)),
+                              ("before", t["before"], dict(color="C1", ls="--", lw=1.2))):
         if key == "before":
             x = b[f"{kind}j_x_{unit}"] + b[f"{kind}r_x_{unit}"]
             y = b[f"{kind}j_y_{unit}"] + b[f"{kind}r_y_{unit}"]
@@ -408,6 +424,8 @@ def _locus(ax, result, kind, t):
         ax.plot(x, y, label=label, **style)
         ax.plot(x[:1], y[:1], "o" if key == "after" else "s", color=style["color"], ms=5)
     ax.plot([0], [0], "k+", ms=10)
+    lim = _min_extent(result, kind)
+    ax.plot([-lim, lim], [-lim, lim], alpha=0)          # keeps at least this extent
     ax.set_aspect("equal", adjustable="datalim")
     ax.grid(True, lw=0.4, alpha=0.6)
     ax.legend(loc="upper right", fontsize=8)
@@ -443,25 +461,31 @@ def _over_alpha(ax, result, kind, t):
     unit = "N" if kind == "F" else "Nm"
     scale = 1e-3 if kind == "F" else 1.0
     sym = {"F": ("F_x", "F_y"), "M": ("M_x", "M_y")}[kind]
-    for key, lab, styles in (("before", t["before"], ("--", "-.")),
-                             ("after", t["after"], ("-", ":"))):
+    for key, lab, styles in (("after", t["after"], ("-", "-")),
+                             ("before", t["before"], ("--", "-."))):
         for comp, name, ls, col in (("x", sym[0], styles[0], "C0"),
                                     ("y", sym[1], styles[1], "C3")):
             if key == "before":
                 v = b[f"{kind}j_{comp}_{unit}"] + b[f"{kind}r_{comp}_{unit}"]
             else:
                 v = b[f"{kind}_{comp}_{unit}"]
-            ax.plot(th, v.to_numpy() * scale, ls=ls, color=col if key == "after" else
-                    ("C1" if comp == "x" else "C2"), lw=1.3, label=f"${name}$, {lab}")
+            after = key == "after"
+            ax.plot(th, v.to_numpy() * scale, ls=ls, color=col if after else
+                    ("C1" if comp == "x" else "C2"), lw=2.6 if after else 1.2,
+                    alpha=0.4 if after else 1.0, label=f"${name}$, {lab}")
+    lim = _min_extent(result, kind)
+    lo, hi = ax.get_ylim()
+    ax.set_ylim(min(lo, -lim), max(hi, lim))
     _theta_axis(ax, 360.0, t)
-    ax.legend(loc="upper right", fontsize=8, ncol=2)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.11), ncol=4, fontsize=8,
+              frameon=False)
 
 
 def plot_free_forces(result, ax=None, lang="ru"):
     """Free force components over one revolution, before and after the counterweights.
     Returns the Axes."""
     t = _ttexts(lang)
-    ax = _axes(ax)
+    ax = _axes(ax, (10, 6), bottom=0.2, left=0.1)
     _over_alpha(ax, result, "F", t)
     ax.set_ylabel(t["force"])
     ax.set_title(f"{t['Fa']}: {result.cylinder.spec.name}")
@@ -472,7 +496,7 @@ def plot_free_moments(result, ax=None, lang="ru"):
     """Free moment components over one revolution, before and after the counterweights.
     Returns the Axes."""
     t = _ttexts(lang)
-    ax = _axes(ax)
+    ax = _axes(ax, (10, 6), bottom=0.2, left=0.1)
     _over_alpha(ax, result, "M", t)
     ax.set_ylabel(t["moment"])
     ax.set_title(f"{t['Ma']}: {result.cylinder.spec.name}")
@@ -496,14 +520,18 @@ def plot_crankshaft(result, ax=None, lang="ru"):
     from matplotlib.patches import Circle
 
     ax.add_patch(Circle((0, 0), 1.0, fill=False, color="0.8", lw=0.8))
+    groups = {}                                  # throws at the same angle: one label
     for k, tau in enumerate(lay.throw_angles_deg):
+        groups.setdefault(round(tau % 360.0, 6), []).append(k)
+    for g, (tau, ks) in enumerate(sorted(groups.items())):
         d = np.exp(1j * np.radians(90 + g1 + tau))
-        members = ", ".join(str(c) for c in cyl["cylinder"][cyl["throw"] == k + 1])
+        members = ", ".join(str(c) for k in ks
+                            for c in cyl["cylinder"][cyl["throw"] == k + 1])
         ax.annotate("", xy=(d.real, d.imag), xytext=(0, 0),
-                    arrowprops=dict(arrowstyle="-|>", color=f"C{k % 10}", lw=2.2))
-        r = 1.12 + 0.1 * (k % 2)
-        ax.annotate(t["throw"].format(k=k + 1, c=members), (r * d.real, r * d.imag),
-                    ha="center", va="center", fontsize=8, color=f"C{k % 10}")
+                    arrowprops=dict(arrowstyle="-|>", color=f"C{g % 10}", lw=2.2))
+        label = t["throw"].format(k=", ".join(str(k + 1) for k in ks), c=members)
+        ax.annotate(label, (1.2 * d.real, 1.2 * d.imag), ha="center", va="center",
+                    fontsize=8, color=f"C{g % 10}")
     ax.annotate("", xy=(-0.35, 0.18), xytext=(0.35, 0.18),
                 arrowprops=dict(arrowstyle="-|>", connectionstyle="arc3,rad=0.5",
                                 color="k", lw=1.0))

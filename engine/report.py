@@ -479,7 +479,7 @@ def add_engine_sheets(wb, tr, lang="ru"):
     ws.cell(r, 1, t["cw_title"]).font = Font(bold=True)
     if s.counterweights:
         _write_rows(ws, r + 1, 1, [t["cw_cols"]], bold=True)
-        r = _write_rows(ws, r + 2, 1, [(c.z * 1e3, c.mr * 1e6, c.angle_deg)
+        r = _write_rows(ws, r + 2, 1, [(c.z * 1e3, c.mr * 1e3, c.angle_deg)
                                        for c in s.counterweights]) + 1
     else:
         _put(ws.cell(r + 1, 1), t["cw_none"])

@@ -759,7 +759,7 @@ def _crank_train(c, data, e, cylinders):
         mr = c.number(cw, "mr_kg_mm", where, ge=0)
         ang = c.number(cw, "angle_deg", where)
         if None not in (z, mr, ang):
-            cws.append(Counterweight(z / 1000.0, mr / 1e6, ang))
+            cws.append(Counterweight(z / 1000.0, mr / 1e3, ang))
     if cws and "counterweights" in bal and design != "none":
         c.add("balance.counterweights", "give a design or [[balance.counterweight]] "
                                         "tables, not both")

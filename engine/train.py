@@ -307,7 +307,7 @@ def _uniform_grid(theta_deg, cycle):
     return step, int(round(n))
 
 
-def cylinder_torques(spec, lay, theta_deg, columns=("M_Nm",)):
+def cylinder_torques(spec, lay, theta_deg, columns=("M_Nm",), base=None):
     """Each cylinder's table columns at the crankshaft angles θ, from the one-cylinder
     model at the cylinder's bank angle and phase.
 
@@ -319,6 +319,9 @@ def cylinder_torques(spec, lay, theta_deg, columns=("M_Nm",)):
         Crankshaft angles (cylinder 1's α). [deg]
     columns : tuple of str
         Columns of :func:`engine.force_table` wanted.
+    base : pandas.DataFrame, optional
+        The one-cylinder table at step·(0, 1, …, n − 1) when already computed (the shifted
+        path only).
 
     Returns
     -------
@@ -342,12 +345,13 @@ def cylinder_torques(spec, lay, theta_deg, columns=("M_Nm",)):
         step, n = grid
         shifts = phases / step
         if np.all(np.abs(shifts - np.round(shifts)) < ROUNDOFF_RTOL * max(n, 1)):
-            base = force_table(spec, step * np.arange(n))
+            if base is None or len(base) != n:
+                base = force_table(spec, step * np.arange(n))
             idx = np.arange(theta.size)
-            for j, sh in enumerate(np.round(shifts).astype(int)):
-                rows = np.mod(idx - sh, n)
-                for c in columns:
-                    out[c][j] = base[c].to_numpy()[rows]
+            for c in columns:
+                col = base[c].to_numpy()
+                rows = np.mod(idx[None, :] - np.round(shifts).astype(int)[:, None], n)
+                out[c] = col[rows]
             return out
     for j in range(lay.n):
         t = force_table(spec, theta, bank_deg=float(lay.bank_deg[j]),
@@ -422,7 +426,9 @@ def counterweights_for(spec, lay, train):
         u = np.exp(1j * (np.pi / 2 + np.radians(lay.bank_deg)))
         g1 = math.radians(float(lay.bank_deg[0]))
         # F1_fwd = ω²·(A/2)·Σ e^{−iφ}u; a mass·radius c at angle ψ gives ω²·i·e^{iγ1}·c
-        unb = (A / 2) * np.exp(-1j * phi) * u / (1j * np.exp(1j * g1))
+        # cos α + kλ sin α = Re[(1 − ikλ)e^{iα}]: the pin offset turns the forward part
+        c1 = 1 - 1j * spec.k_offset * spec.lam
+        unb = (A / 2) * c1 * np.exp(-1j * phi) * u / (1j * np.exp(1j * g1))
         zs = lay.z
         c_a, c_b = two_plane_balance(unb, zs, float(zs.min()), float(zs.max()))
         for zz, c in ((float(zs.min()), c_a), (float(zs.max()), c_b)):
@@ -662,14 +668,12 @@ def _uniform(step, cycle):
 def _balance_frame(theta_deg, f):
     import pandas as pd
 
-    cols = {"alpha_deg": np.asarray(theta_deg, float)}
-    for kind, unit in (("F", "N"), ("M", "Nm")):
+    cols = [np.asarray(theta_deg, float)]
+    for kind in ("F", "M"):
         for p in BALANCE_PARTS:
-            key = {"j": "j", "r": "r", "cw": "cw", "": ""}.get(p, p)
-            v = f[f"{kind}{key}"]
-            cols[f"{kind}{p}_x_{unit}"] = v.real
-            cols[f"{kind}{p}_y_{unit}"] = v.imag
-    return pd.DataFrame(cols, columns=list(BALANCE_COLUMNS))
+            v = f[f"{kind}{p}"]
+            cols += [v.real, v.imag]
+    return pd.DataFrame(np.column_stack(cols), columns=list(BALANCE_COLUMNS))
 
 
 def analyze_engine(spec, train, settings=None, *, fine_step_deg=None) -> EngineTrainResult:
@@ -704,33 +708,42 @@ def analyze_engine(spec, train, settings=None, *, fine_step_deg=None) -> EngineT
     fine = min(step, PLOT_STEP_DEG) if fine_step_deg is None else fine_step_deg
     cols = TORQUE_COLUMNS(n)
 
-    def torque_frame(theta):
-        M = cylinder_torques(spec, lay, theta)["M_Nm"]
-        data = {"alpha_deg": theta}
-        data.update({f"M_{j + 1}_Nm": M[j] for j in range(n)})
-        data["M_total_Nm"] = M.sum(0)
-        return pd.DataFrame(data, columns=list(cols))
+    def torque_frame(theta, M):
+        return pd.DataFrame(np.column_stack([theta, M.T, M.sum(0)]), columns=list(cols))
 
-    table_theta = _uniform(step, cyc) if abs(cyc / step - round(cyc / step)) < \
-        ROUNDOFF_RTOL * cyc / step else np.append(step * np.arange(int(cyc // step) + 1), cyc)
-    torque = torque_frame(table_theta)
-    theta_f = _uniform(fine, cyc)
-    parts = cylinder_torques(spec, lay, theta_f, ("M_Nm", "Pj_N"))
+    n_steps = cyc / step
+    if abs(n_steps - round(n_steps)) < ROUNDOFF_RTOL * n_steps:
+        table_theta = _uniform(step, cyc)
+    else:
+        table_theta = np.append(step * np.arange(int(cyc // step) + 1), cyc)
+    theta_f = table_theta if (step <= fine and table_theta.size > 1 and np.allclose(
+        np.diff(table_theta), step)) else _uniform(fine, cyc)
+    # the one-cylinder table over the cycle, shared by every cylinder when it fits
+    base = None
+    a_one = one.table["alpha_deg"].to_numpy()
+    if a_one.size == theta_f.size and np.allclose(a_one, theta_f, rtol=0,
+                                                  atol=SAME_ANGLE_DEG):
+        base = one.table.iloc[:-1]
+    parts = cylinder_torques(spec, lay, theta_f, ("M_Nm", "Pj_N"), base=base)
+    same = theta_f is table_theta
+    torque = torque_frame(table_theta, parts["M_Nm"] if same else
+                          cylinder_torques(spec, lay, table_theta, base=base)["M_Nm"])
     M_total = parts["M_Nm"].sum(0)
-    curves = pd.DataFrame({"alpha_deg": theta_f, **{f"M_{j + 1}_Nm": parts["M_Nm"][j]
-                                                     for j in range(n)},
-                           "M_total_Nm": M_total})
     work, L, M_mean = excess_work(theta_f, M_total)
-    curves["work_J"] = work
+    curves = pd.DataFrame(np.column_stack([theta_f, parts["M_Nm"].T, M_total, work]),
+                          columns=list(cols) + ["work_J"])
     span = lay.firing_interval_deg if lay.even_firing else cyc
-    torque_table = torque_frame(table_theta[table_theta <= span + SAME_ANGLE_DEG])
+    torque_table = torque[torque["alpha_deg"] <= span + SAME_ANGLE_DEG].reset_index(drop=True)
 
     cws = counterweights_for(spec, lay, train)
-    rev = table_theta[table_theta <= 360.0 + SAME_ANGLE_DEG]
-    balance = _balance_frame(rev, free_forces(spec, lay, rev, cws))
     keep = theta_f <= 360.0 + SAME_ANGLE_DEG
     fb = free_forces(spec, lay, theta_f[keep], cws, Pj=parts["Pj_N"][:, keep])
     balance_curves = _balance_frame(theta_f[keep], fb)
+    if same:
+        balance = balance_curves
+    else:
+        rev = table_theta[table_theta <= 360.0 + SAME_ANGLE_DEG]
+        balance = _balance_frame(rev, free_forces(spec, lay, rev, cws))
     scale_F = n * spec.mj * spec.R * spec.omega ** 2 + \
         (n * spec.m_rod_rot + (spec.m_crank_rot or 0) * len(lay.throw_angles_deg)) \
         * spec.R * spec.omega ** 2

@@ -194,6 +194,14 @@ def test_engine_csvs_equal_the_workbook_and_the_library(run):
     assert len(head) == 1
     np.testing.assert_array_equal(np.array(_block(ws_bal, head[0] + 1, 1, len(bal.columns)),
                                            float), bal.to_numpy())
+    # the counterweights, in kg·mm, under their header
+    cws = res.summary.counterweights
+    head = [r for r in range(1, ws_bal.max_row + 1)
+            if str(ws_bal.cell(r, 1).value).startswith("z ")]
+    if cws:
+        got = np.array(_block(ws_bal, head[0] + 1, 1, 3), float)
+        np.testing.assert_allclose(got, [(c.z * 1e3, c.mr * 1e3, c.angle_deg) for c in cws])
+        assert np.all(got[:, 1] < 1e4)          # kg·mm of a real counterweight
     # the textbook total-torque table: one firing interval for an even-firing engine
     table = np.array(_block(ws_tq, 4, 1, n + 2), float)
     assert table[-1, 0] == pytest.approx(720.0 / n)

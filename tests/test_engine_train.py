@@ -506,3 +506,30 @@ def test_explicit_counterweight_list():
     both = r.balance_curves
     np.testing.assert_allclose(both["Fr_x_N"] + both["Fcw_x_N"], 0, atol=1e-9 * amp.loc[
         "r", "F_max_N"])
+
+
+def test_two_stroke_even_firing():
+    d = copy.deepcopy(BASE)
+    d["engine"].update(cylinders=3, strokes=2)
+    d["pressure"] = dict(angle_deg=[0, 10, 120, 180, 240, 350], p_MPa=[5.5, 6, 0.5, 0.1, 0.3, 2.5])
+    s = engine.load_spec(d)
+    lay = layout(s, CrankTrain(firing_order=(1, 3, 2)))
+    np.testing.assert_allclose(lay.phase_deg, [0, 240, 120], atol=1e-9)
+    np.testing.assert_allclose(lay.throw_angles_deg, [0, 120, 240], atol=1e-9)
+    r = engine.analyze_engine(s, CrankTrain(firing_order=(1, 3, 2)), SETTINGS)
+    M = r.torque["M_total_Nm"].to_numpy()
+    np.testing.assert_allclose(M[120:], M[:-120], rtol=1e-9, atol=1e-9 * np.ptp(M))
+    assert r.summary.M_mean_Nm == pytest.approx(3 * r.cylinder.summary.M_mean_Nm, rel=1e-9)
+
+
+def test_first_order_counterweights_with_a_pin_offset():
+    """A 90° V-twin whose pins are offset: the end counterweights still cancel the whole
+    first-order force (its forward part includes the kλ·sin α term)."""
+    s = spec_of(2, pin_offset_mm=4.0)
+    tr = CrankTrain(arrangement="vee", vee_angle_deg=90, throw_angles_deg=(0,),
+                    firing_order=(1, 2), counterweights="throws+first_order")
+    lay = layout(s, tr)
+    f = free_forces(s, lay, THETA, engine.train.counterweights_for(s, lay, tr))
+    sc = s.mj * s.R * s.omega ** 2
+    assert np.abs(f["F1"]).max() > 0.5 * sc
+    assert np.abs(f["F1"] + f["Fr"] + f["Fcw"]).max() < 1e-9 * sc
