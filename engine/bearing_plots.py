@@ -104,9 +104,13 @@ def _polar(ax, a, T, K, title, lang, stats, cycle, Kr=0.0):
                                                                "C2")):
         ax.annotate("", xy=(T[idx], K[idx]), xytext=(0, -kr),
                     arrowprops=dict(arrowstyle="-|>", color=col, lw=1.2))
+        right = T[idx] > 0                    # keep the label inside the axes
         ax.annotate(f"R{name} = {R[idx]:.2f} {t['kN']} (α = {a[idx]:g}°)",
-                    (T[idx], K[idx]), xytext=(8, -12 if name == "max" else 8),
-                    textcoords="offset points", fontsize=8, color=col)
+                    (T[idx], K[idx]), xytext=(-8 if right else 8,
+                                              -12 if name == "max" else 8),
+                    textcoords="offset points", fontsize=8, color=col,
+                    ha="right" if right else "left",
+                    bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.8))
     ax.plot([0], [0], "ks", ms=4)
     if kr != 0.0:
         ax.annotate("O", (0, 0), xytext=(-12, -10), textcoords="offset points",
@@ -122,29 +126,31 @@ def _polar(ax, a, T, K, title, lang, stats, cycle, Kr=0.0):
     return ax
 
 
-def plot_pin_polar(result, ax=None, lang="ru", throw=1):
+def plot_pin_polar(result, ax=None, lang="ru", throw=1, short=False):
     """Polar diagram of a crank pin's load (rods incl. Kr.ш) in its crank frame, pole at
     the pin centre.  ``result``: :class:`engine.bearings.CrankshaftLoads` or a
-    :class:`engine.bearing_spec.BearingAnalysis`."""
+    :class:`engine.bearing_spec.BearingAnalysis`; ``short``: a short title (grids)."""
     loads = getattr(result, "loads", result)
     ax = _axes(ax)
     p = loads.crankpins
     cyc = _cycle(loads)
     kr = 0.0 if loads.Kr_throw is None else float(loads.Kr_throw[throw - 1])
+    t = _TXT[lang]
+    title = f"{t['dev_pin']} {throw}" if short else t["pin"].format(k=throw)
     return _polar(ax, p["alpha_deg"].to_numpy(), p[f"T_{throw}_N"], p[f"K_{throw}_N"],
-                  _TXT[lang]["pin"].format(k=throw), lang, loads.pin_stats[throw - 1], cyc,
-                  kr)
+                  title, lang, loads.pin_stats[throw - 1], cyc, kr)
 
 
-def plot_journal_polar(result, ax=None, lang="ru", journal=1):
+def plot_journal_polar(result, ax=None, lang="ru", journal=1, short=False):
     """Polar diagram of a main journal's load Q in the crank frame of its reference
-    throw."""
+    throw; ``short``: a short title (grids)."""
     loads = getattr(result, "loads", result)
     ax = _axes(ax)
     j = loads.journals
     k = loads.shaft.frame_throw()[journal - 1] + 1
     t = _TXT[lang]
-    title = t["journal"].format(k=journal) + " " + t["frame_j"].format(k=k)
+    title = (f"{t['dev_j']} {journal} " if short else t["journal"].format(k=journal) + " ") \
+        + t["frame_j"].format(k=k)
     return _polar(ax, j["alpha_deg"].to_numpy(), j[f"T_{journal}_N"], j[f"K_{journal}_N"],
                   title, lang, loads.journal_stats[journal - 1], _cycle(loads))
 
@@ -207,6 +213,7 @@ def plot_wear(diagram, ax=None, lang="ru", note=True):
     tx, ty = _xy(hole + 14.0, 1.36)
     ax.annotate(f"{t['hole']}\n{hole:g}°", xy=(hx, hy), xytext=(tx, ty),
                 ha="center", va="center", fontsize=9, color="C3",
+                bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.85),
                 arrowprops=dict(arrowstyle="-|>", color="C3", lw=1.4))
     ax.plot([0, 0.62 * hx], [0, 0.62 * hy], color="C3", lw=1.0, ls="--")
     ax.plot([0], [0], "ko", ms=3)
@@ -339,7 +346,7 @@ def _grid(n, cell, cols=3):
     ncol = min(n, cols)
     nrow = -(-n // ncol)
     fig = Figure(figsize=(cell[0] * ncol, cell[1] * nrow))
-    fig.subplots_adjust(left=0.06 if ncol > 1 else 0.1, right=0.97, bottom=0.07 / nrow,
+    fig.subplots_adjust(left=0.06 if ncol > 1 else 0.1, right=0.97, bottom=0.12 / nrow,
                         top=1 - 0.09 / nrow, wspace=0.28, hspace=0.32)
     axes = np.atleast_1d(fig.subplots(nrow, ncol)).ravel()
     for ax in axes[n:]:
@@ -367,16 +374,17 @@ def bearing_figures(analysis, lang="ru"):
             ax.title.set_fontsize(9)
         out[stem] = f
 
-    grid("polar_pins", npin, (7, 7),
-         lambda ax, k: plot_pin_polar(analysis, ax=ax, lang=lang, throw=k))
-    grid("polar_journals", nj, (7, 7),
-         lambda ax, k: plot_journal_polar(analysis, ax=ax, lang=lang, journal=k))
+    grid("polar_pins", npin, (5.6, 5.6),
+         lambda ax, k: plot_pin_polar(analysis, ax=ax, lang=lang, throw=k, short=True))
+    grid("polar_journals", nj, (5.6, 5.6),
+         lambda ax, k: plot_journal_polar(analysis, ax=ax, lang=lang, journal=k,
+                                          short=True))
     fig("developed_pins", plot_developed_loads, analysis, size=(10, 5.6), which="pins")
     fig("developed_journals", plot_developed_loads, analysis, size=(10, 5.6))
     pins, jw = _wears(analysis.pin_wear), _wears(analysis.journal_wear)
     t = _TXT[lang]
     for stem, diagrams, kind in (("wear_pins", pins, "pin"), ("wear_journals", jw, "journal")):
-        grid(stem, len(diagrams), (6, 6.2),
+        grid(stem, len(diagrams), (4.8, 5.0),
              lambda ax, k, d=diagrams: plot_wear(d[k - 1], ax=ax, lang=lang, note=False))
         out[stem].text(0.5, 0.005, t["wear_note"].format(
             h=diagrams[0].half_angle_deg, zero=t["axis"][kind]).replace("\n", " "),
