@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from crankbase.errors import Problem
+from crankbase.tolerances import PHASE_MATCH_DEG
 
 from .bearing_spec import BearingInputs, piston_mass, rod_bearing_table
 from .bearings import BearingInputError, Crankshaft, CrankshaftLoads, crankshaft_loads
@@ -25,9 +26,6 @@ from .wear import wear_diagram
 __all__ = ["Cylinder", "EngineBearings", "engine_bearings", "full_support_journals",
            "layout_cylinders"]
 
-#: A cylinder's phase must agree with its bank angle and throw (φ ≡ γ − τ mod 360°)
-#: within this: the layout's angles are sums of degrees given to ~1e-12. [deg]
-_PHASE_TOL_DEG = 1e-6
 
 
 @dataclass(frozen=True)
@@ -165,7 +163,7 @@ def engine_bearings(spec, theta_deg, cylinders, throw_dir_deg, z_throw, *,
             raise BearingInputError(Problem(f"cylinder {i}", f"throw {c.throw + 1} does not "
                                             f"exist (the crankshaft has {nt})"))
         lag = (c.bank_deg - tau[c.throw] - c.phase_deg) % 360.0
-        if min(lag, 360.0 - lag) > _PHASE_TOL_DEG:
+        if min(lag, 360.0 - lag) > PHASE_MATCH_DEG:
             raise BearingInputError(Problem(
                 f"cylinder {i}", f"phase {c.phase_deg:g}° does not match its bank angle "
                 f"{c.bank_deg:g}° and throw {c.throw + 1} at {tau[c.throw]:g}°: "
