@@ -247,10 +247,8 @@ def big_end_load(K, T, Kr, alpha_deg, beta_deg):
     crank is e = exp(i(90° + α)) and the rod points from the crank pin to the piston pin
     along e₃ = exp(i(90° − β)).
     """
-    a = np.radians(np.asarray(alpha_deg, float))
-    b = np.radians(np.asarray(beta_deg, float))
-    e = np.exp(1j * (np.pi / 2 + a))
-    e3 = np.exp(1j * (np.pi / 2 - b))
+    e = crank_unit(alpha_deg)                        # the crank, cylinder frame
+    e3 = np.exp(1j * (np.pi / 2 - np.radians(np.asarray(beta_deg, float))))
     F = -(e * (-(np.asarray(K, float) + np.asarray(Kr, float)) + 1j * np.asarray(T, float)))
     return dot(F, e3), dot(F, 1j * e3)
 
