@@ -475,7 +475,7 @@ def crankshaft_loads(theta_deg, shaft: Crankshaft, pin_K, pin_T, R, omega, cycle
     tau = np.asarray(shaft.throw_angle_deg, float)
     delta = th[None, :] + tau[:, None]                       # (nt, n)
     e = crank_unit(delta)
-    F_throw = e * (-pin_K + 1j * pin_T)
+    F_throw = to_engine_frame(pin_K, pin_T, delta)
     F_rot = np.asarray(shaft.m_crank_rot, float)[:, None] * R * omega ** 2 * e
     cw = shaft.counterweights
     if cw:
@@ -492,7 +492,7 @@ def crankshaft_loads(theta_deg, shaft: Crankshaft, pin_K, pin_T, R, omega, cycle
         Fr, zr = [], []
         for k, rods in enumerate(rod_z):
             for K_r, T_r, z_r in rods:
-                Fr.append(e[k] * (-np.asarray(K_r, float) + 1j * np.asarray(T_r, float)))
+                Fr.append(to_engine_frame(K_r, T_r, delta[k]))
                 zr.append(z_r)
         loads, zs = [np.array(Fr)], [np.array(zr, float)]
     loads += [F_rot, F_cw]
