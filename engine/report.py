@@ -172,7 +172,7 @@ def build_workbook(result, lang="ru"):
     last = _T2_FIRST_ROW + len(data) - 1
 
     # Summary
-    extremes = {col for col, _ in SUMMARY_QUANTITIES}
+    extremes = set(SUMMARY_QUANTITIES)
     for row in ws_sum.iter_rows(min_row=4, max_col=7):
         key = row[0].value
         if key in extremes:

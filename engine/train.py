@@ -51,6 +51,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -61,6 +62,11 @@ from .forces import force_table, two_term_acceleration
 from .kinematics import crank_slider
 from .spec import (ARRANGEMENTS, COUNTERWEIGHT_DESIGNS, Counterweight, CrankTrain, EngineSpec,
                    EngineSpecError)
+
+if TYPE_CHECKING:                       # annotations only: no pandas import at run time
+    import pandas as pd
+
+    from .result import EngineResult
 
 __all__ = ["ARRANGEMENTS", "COUNTERWEIGHT_DESIGNS", "Counterweight", "CrankTrain", "Layout",
            "layout", "default_firing_order", "cylinder_torques", "free_forces",
@@ -107,7 +113,7 @@ class Layout:
         How the throw angles were obtained ("given" or "default for even firing").
     """
 
-    cylinders: object
+    cylinders: pd.DataFrame
     firing_order: tuple
     throw_angles_deg: tuple
     throw_z: np.ndarray
@@ -648,15 +654,15 @@ class EngineTrainResult:
     summary : EngineTrainSummary
     """
 
-    cylinder: object
+    cylinder: EngineResult
     train: CrankTrain
     layout: Layout
-    torque: object
-    curves: object
-    torque_table: object
-    balance: object
-    balance_curves: object
-    balance_amplitudes: object
+    torque: pd.DataFrame
+    curves: pd.DataFrame
+    torque_table: pd.DataFrame
+    balance: pd.DataFrame
+    balance_curves: pd.DataFrame
+    balance_amplitudes: pd.DataFrame
     summary: EngineTrainSummary
 
 
