@@ -292,6 +292,22 @@ BAD = {
                                                                   "speed_rpm = -5"),
              ["engine.bore_mm", "engine.speed_rpm"]),
     "toml_syntax": ("[engine\n", ["spec.toml"]),
+    "v6_60_cannot_fire_evenly": (GOOD.replace("speed_rpm = 2000", "speed_rpm = 2000\n"
+                                              "cylinders = 6\narrangement = \"vee\"\n"
+                                              "vee_angle_deg = 60\n"
+                                              "firing_order = [1, 4, 2, 5, 3, 6]"),
+                                 ["engine.firing_order"]),
+    "firing_order_not_a_permutation": (GOOD.replace("speed_rpm = 2000", "speed_rpm = 2000\n"
+                                                    "cylinders = 4\n"
+                                                    "firing_order = [1, 2, 2, 4]"),
+                                       ["engine.firing_order"]),
+    "vee_angle_out_of_range": (GOOD.replace("speed_rpm = 2000", "speed_rpm = 2000\n"
+                                            "cylinders = 2\narrangement = \"vee\"\n"
+                                            "vee_angle_deg = 200"),
+                               ["engine.vee_angle_deg"]),
+    "throws_count": (GOOD.replace("speed_rpm = 2000", "speed_rpm = 2000\ncylinders = 4\n"
+                                  "throw_angles_deg = [0, 180]\nfiring_order = [1, 3, 4, 2]"),
+                     ["engine.throw_angles_deg"]),
 }
 
 
