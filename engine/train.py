@@ -185,6 +185,9 @@ def layout(spec: EngineSpec, train: CrankTrain) -> Layout:
     """
     import pandas as pd
 
+    if not isinstance(spec, EngineSpec):
+        raise _bad("spec", f"must be an EngineSpec (engine.load_spec), got "
+                           f"{type(spec).__name__}")
     if not isinstance(train, CrankTrain):
         raise _bad("train", f"must be a CrankTrain, got {type(train).__name__}")
     n, cyc = spec.cylinders, spec.cycle_deg
@@ -707,6 +710,13 @@ def analyze_engine(spec, train, settings=None, *, fine_step_deg=None) -> EngineT
     from .spec import TableSettings
 
     settings = TableSettings() if settings is None else settings
+    if not isinstance(settings, TableSettings):
+        raise _bad("settings", f"must be a TableSettings, got {type(settings).__name__}")
+    if fine_step_deg is not None and not (
+            isinstance(fine_step_deg, (int, float)) and math.isfinite(fine_step_deg)
+            and 0 < fine_step_deg <= spec.cycle_deg if isinstance(spec, EngineSpec) else True):
+        raise _bad("fine_step_deg", f"got {fine_step_deg!r}; must be a finite number > 0 "
+                                    "and not above the cycle [deg]")
     lay = layout(spec, train)
     one = analyze(spec, settings)
     cyc, n = spec.cycle_deg, lay.n
