@@ -321,9 +321,8 @@ def _psi(T, Kt):
     return np.where(psi <= -180.0 + SAME_ANGLE_DEG, psi + 360.0, psi)
 
 
-#: Quantities whose max and min the summary reports: (column, symbol).
-SUMMARY_QUANTITIES = (("P_N", "P"), ("S_N", "Sш"), ("N_N", "N"), ("K_N", "K"),
-                      ("T_N", "T"), ("M_Nm", "Mкр"), ("R_N", "Rшш"))
+#: Columns whose max and min the summary reports (P, Sш, N, K, T, Mкр, Rшш).
+SUMMARY_QUANTITIES = ("P_N", "S_N", "N_N", "K_N", "T_N", "M_Nm", "R_N")
 
 
 def _cycle_mean(alpha, y, cycle_deg):
@@ -356,7 +355,7 @@ def summarize(table, spec) -> EngineSummary:
     a = table["alpha_deg"].to_numpy()
     cyc = spec.cycle_deg
     ext = {}
-    for col, _ in SUMMARY_QUANTITIES:
+    for col in SUMMARY_QUANTITIES:
         y = table[col].to_numpy()
         i, k = int(np.argmax(y)), int(np.argmin(y))
         ext[col] = Extreme(float(y[i]), float(a[i]), float(y[k]), float(a[k]))

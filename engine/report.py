@@ -172,7 +172,7 @@ def build_workbook(result, lang="ru"):
     last = _T2_FIRST_ROW + len(data) - 1
 
     # Summary
-    extremes = {col for col, _ in SUMMARY_QUANTITIES}
+    extremes = set(SUMMARY_QUANTITIES)
     for row in ws_sum.iter_rows(min_row=4, max_col=7):
         key = row[0].value
         if key in extremes:
@@ -200,13 +200,13 @@ def build_workbook(result, lang="ru"):
     m_col = 2 * len(TABLE2_FORCES) + 2
     ru = lang == "ru"
     charts = [
-        (("Силы ΔPг, Pj, P" if ru else "Forces ΔPг, Pj, P"), ("Н" if ru else "N"),
+        (("Силы ΔPг, Pj, P" if ru else "Forces ΔPg, Pj, P"), ("Н" if ru else "N"),
          [force_col[k] for k in ("dPg_N", "Pj_N", "P_N")]),
         (("Силы N, K, T" if ru else "Forces N, K, T"), ("Н" if ru else "N"),
          [force_col[k] for k in ("N_N", "K_N", "T_N")]),
-        (("Крутящий момент цилиндра Mкр" if ru else "Torque of one cylinder Mкр"),
+        (("Крутящий момент цилиндра Mкр" if ru else "Torque of one cylinder M"),
          ("Н·м" if ru else "N·m"), [m_col]),
-        (("Сила на шатунную шейку Rшш" if ru else "Crank-pin load Rшш"),
+        (("Сила на шатунную шейку Rшш" if ru else "Crank-pin load Rcp"),
          ("Н" if ru else "N"), [force_col["S_N"], force_col["R_N"]]),
     ]
     for k, (title, unit, ycols) in enumerate(charts):
@@ -223,7 +223,7 @@ def build_workbook(result, lang="ru"):
         ch.y_axis.delete = False
         ch.legend.position = "b"
         for col in ycols:
-            label = ws_t2.cell(3, col - 1).value if col != m_col else "Mкр"
+            label = ws_t2.cell(3, col - 1).value if col != m_col else ("Mкр" if ru else "M")
             yref = Reference(ws_t2, min_col=col, min_row=_T2_FIRST_ROW, max_row=last)
             s = Series(yref, xref, title=str(label))
             s.marker.symbol = "none"

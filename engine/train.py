@@ -51,6 +51,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -61,6 +62,11 @@ from .forces import force_table, two_term_acceleration
 from .kinematics import crank_slider
 from .spec import (ARRANGEMENTS, COUNTERWEIGHT_DESIGNS, Counterweight, CrankTrain, EngineSpec,
                    EngineSpecError)
+
+if TYPE_CHECKING:                       # annotations only: no pandas import at run time
+    import pandas as pd
+
+    from .result import EngineResult
 
 __all__ = ["ARRANGEMENTS", "COUNTERWEIGHT_DESIGNS", "Counterweight", "CrankTrain", "Layout",
            "layout", "default_firing_order", "cylinder_torques", "free_forces",
@@ -107,7 +113,7 @@ class Layout:
         How the throw angles were obtained ("given" or "default for even firing").
     """
 
-    cylinders: object
+    cylinders: pd.DataFrame
     firing_order: tuple
     throw_angles_deg: tuple
     throw_z: np.ndarray
@@ -179,6 +185,9 @@ def layout(spec: EngineSpec, train: CrankTrain) -> Layout:
     """
     import pandas as pd
 
+    if not isinstance(spec, EngineSpec):
+        raise _bad("spec", f"must be an EngineSpec (engine.load_spec), got "
+                           f"{type(spec).__name__}")
     if not isinstance(train, CrankTrain):
         raise _bad("train", f"must be a CrankTrain, got {type(train).__name__}")
     n, cyc = spec.cylinders, spec.cycle_deg
@@ -648,15 +657,15 @@ class EngineTrainResult:
     summary : EngineTrainSummary
     """
 
-    cylinder: object
+    cylinder: EngineResult
     train: CrankTrain
     layout: Layout
-    torque: object
-    curves: object
-    torque_table: object
-    balance: object
-    balance_curves: object
-    balance_amplitudes: object
+    torque: pd.DataFrame
+    curves: pd.DataFrame
+    torque_table: pd.DataFrame
+    balance: pd.DataFrame
+    balance_curves: pd.DataFrame
+    balance_amplitudes: pd.DataFrame
     summary: EngineTrainSummary
 
 
@@ -701,6 +710,13 @@ def analyze_engine(spec, train, settings=None, *, fine_step_deg=None) -> EngineT
     from .spec import TableSettings
 
     settings = TableSettings() if settings is None else settings
+    if not isinstance(settings, TableSettings):
+        raise _bad("settings", f"must be a TableSettings, got {type(settings).__name__}")
+    if fine_step_deg is not None and not (
+            isinstance(fine_step_deg, (int, float)) and math.isfinite(fine_step_deg)
+            and 0 < fine_step_deg <= spec.cycle_deg if isinstance(spec, EngineSpec) else True):
+        raise _bad("fine_step_deg", f"got {fine_step_deg!r}; must be a finite number > 0 "
+                                    "and not above the cycle [deg]")
     lay = layout(spec, train)
     one = analyze(spec, settings)
     cyc, n = spec.cycle_deg, lay.n

@@ -97,10 +97,11 @@ def test_table2_layout_like_the_textbook(run):
     head = [ws.cell(3, c).value for c in range(1, 20)]
     sub = [ws.cell(4, c).value for c in range(1, 20)]
     assert head[0] == "α, °"
-    assert [head[c] for c in range(1, 17, 2)] == ["ΔPг", "Pj", "P", "Sш", "N", "K", "T",
-                                                 "Rшш"]
+    symbols = (["ΔPг", "Pj", "P", "Sш", "N", "K", "T", "Rшш"] if lang == "ru" else
+               ["ΔPg", "Pj", "P", "S", "N", "K", "T", "Rcp"])   # English: no Cyrillic
+    assert [head[c] for c in range(1, 17, 2)] == symbols
     assert sub[1:17] == [mm, nn] * 8
-    assert head[17].startswith("Mкр") and head[18] == "Ψ, °"
+    assert head[17].startswith("Mкр" if lang == "ru" else "M,") and head[18] == "Ψ, °"
     merged = {str(r) for r in ws.merged_cells.ranges}
     assert {"A3:A4", "B3:C3", "P3:Q3", "R3:R4", "S3:S4"} <= merged
     title = ws["A1"].value
@@ -214,7 +215,7 @@ def test_engine_csvs_equal_the_workbook_and_the_library(run):
     if lang == "en":
         import re
         cyr = re.compile("[\u0400-\u04ff]")
-        for ws in (ws_lay, ws_tq, ws_bal, ws_fw):
+        for ws in wb.worksheets:                  # every sheet, the template's included
             for row in ws.iter_rows(values_only=True):
                 for v in row:
                     assert not (isinstance(v, str) and cyr.search(v)), (ws.title, v)
@@ -291,6 +292,22 @@ BAD = {
                                                                   "speed_rpm = -5"),
              ["engine.bore_mm", "engine.speed_rpm"]),
     "toml_syntax": ("[engine\n", ["spec.toml"]),
+    "v6_60_cannot_fire_evenly": (GOOD.replace("speed_rpm = 2000", "speed_rpm = 2000\n"
+                                              "cylinders = 6\narrangement = \"vee\"\n"
+                                              "vee_angle_deg = 60\n"
+                                              "firing_order = [1, 4, 2, 5, 3, 6]"),
+                                 ["engine.firing_order"]),
+    "firing_order_not_a_permutation": (GOOD.replace("speed_rpm = 2000", "speed_rpm = 2000\n"
+                                                    "cylinders = 4\n"
+                                                    "firing_order = [1, 2, 2, 4]"),
+                                       ["engine.firing_order"]),
+    "vee_angle_out_of_range": (GOOD.replace("speed_rpm = 2000", "speed_rpm = 2000\n"
+                                            "cylinders = 2\narrangement = \"vee\"\n"
+                                            "vee_angle_deg = 200"),
+                               ["engine.vee_angle_deg"]),
+    "throws_count": (GOOD.replace("speed_rpm = 2000", "speed_rpm = 2000\ncylinders = 4\n"
+                                  "throw_angles_deg = [0, 180]\nfiring_order = [1, 3, 4, 2]"),
+                     ["engine.throw_angles_deg"]),
 }
 
 

@@ -413,10 +413,13 @@ def test_flywheel_rejects_bad_arguments():
 def layouts(draw):
     arr = draw(st.sampled_from(["inline", "vee", "boxer"]))
     n = draw(st.sampled_from([2, 4, 6, 8] if arr != "inline" else [1, 2, 3, 4, 5, 6]))
-    vee = draw(st.floats(20, 160)) if arr == "vee" else None
+    vee = draw(st.integers(40, 320)) / 2 if arr == "vee" else None
     n_thr = n // 2 if arr == "vee" else n
-    throws = (0.0,) + tuple(draw(st.lists(st.floats(0, 359), min_size=n_thr - 1,
-                                          max_size=n_thr - 1)))
+    # throw angles on a 0.5° grid: TDCs either coincide exactly or differ by ≥ 0.5°
+    # (angles closer than SAME_ANGLE_DEG count as the same position)
+    throws = (0.0,) + tuple(k / 2 for k in draw(st.lists(st.integers(0, 719),
+                                                         min_size=n_thr - 1,
+                                                         max_size=n_thr - 1)))
     # a firing order that fits the random crankshaft: by increasing TDC lag
     # g = γ_j − γ_1 − τ_throw (mod 360°), from a random first cylinder
     half = n // 2
@@ -533,3 +536,19 @@ def test_first_order_counterweights_with_a_pin_offset():
     sc = s.mj * s.R * s.omega ** 2
     assert np.abs(f["F1"]).max() > 0.5 * sc
     assert np.abs(f["F1"] + f["Fr"] + f["Fcw"]).max() < 1e-9 * sc
+
+
+@pytest.mark.parametrize("args,kw,key", [
+    (("spec", CrankTrain()), {}, "spec"),
+    ((None, "train"), {}, "train"),
+    ((None, CrankTrain()), dict(settings={"step_deg": 1}), "settings"),
+    ((None, CrankTrain()), dict(fine_step_deg=float("nan")), "fine_step_deg"),
+    ((None, CrankTrain()), dict(fine_step_deg=0.0), "fine_step_deg"),
+])
+def test_analyze_engine_names_a_bad_argument(args, kw, key):
+    s = spec_of(1)
+    args = tuple(s if a is None else a for a in args)
+    settings_ = kw.pop("settings", None)
+    with pytest.raises(engine.EngineSpecError) as info:
+        engine.analyze_engine(*args, settings_, **kw)
+    assert info.value.lines()[0].startswith(key)
