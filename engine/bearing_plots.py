@@ -67,12 +67,12 @@ _STYLES = [dict(ls="-", marker=None), dict(ls="--", marker=None), dict(ls="-.", 
                                                                markevery=60, ms=3)]
 
 
-def _axes(ax, size=(8, 8), right=0.96):
+def _axes(ax, size=(8, 8), right=0.96, bottom=0.09):
     if ax is not None:
         return ax
     from matplotlib.figure import Figure
     fig = Figure(figsize=size)
-    fig.subplots_adjust(left=0.1, right=right, bottom=0.09, top=0.9)
+    fig.subplots_adjust(left=0.1, right=right, bottom=bottom, top=0.9)
     return fig.subplots()
 
 
@@ -165,7 +165,7 @@ def plot_developed_loads(result, ax=None, lang="ru", which="journals"):
     their cycle means (thin lines of the same style)."""
     loads = getattr(result, "loads", result)
     t = _TXT[lang]
-    ax = _axes(ax, (10, 5.6))
+    ax = _axes(ax, (10, 6.4), bottom=0.27)
     df = loads.crankpins if which == "pins" else loads.journals
     stats = loads.pin_stats if which == "pins" else loads.journal_stats
     a = df["alpha_deg"].to_numpy()
@@ -182,7 +182,8 @@ def plot_developed_loads(result, ax=None, lang="ru", which="journals"):
     ax.set_xlabel(t["alpha"])
     ax.set_ylabel(t["R"])
     ax.grid(True, lw=0.4, alpha=0.6)
-    ax.legend(fontsize=8, loc="upper left")
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.11), ncol=2,
+              frameon=False)
     ax.set_title(t["dev"])
     return ax
 
@@ -240,7 +241,7 @@ def plot_journal_torques(result, ax=None, lang="ru"):
     """Torques carried by the main journals over the crank angle, one line style each."""
     loads = getattr(result, "loads", result)
     t = _TXT[lang]
-    ax = _axes(ax, (10, 5.6))
+    ax = _axes(ax, (10, 6.0), bottom=0.2)
     df = loads.journal_torques
     a = df["alpha_deg"].to_numpy()
     for j in range(1, len(df.columns)):
@@ -252,7 +253,8 @@ def plot_journal_torques(result, ax=None, lang="ru"):
     ax.set_xlabel(t["alpha"])
     ax.set_ylabel(t["M"])
     ax.grid(True, lw=0.4, alpha=0.6)
-    ax.legend(fontsize=8, loc="upper left", ncol=3)
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.11), ncol=5,
+              frameon=False)
     ax.set_title(t["tq"])
     return ax
 
@@ -362,8 +364,8 @@ def bearing_figures(analysis, lang="ru"):
     loads = analysis.loads
     npin, nj = len(loads.pin_stats), len(loads.journal_stats)
 
-    def fig(stem, func, *args, size=(8, 8), right=0.96, **kw):
-        ax = _axes(None, size, right)
+    def fig(stem, func, *args, size=(8, 8), right=0.96, bottom=0.09, **kw):
+        ax = _axes(None, size, right, bottom)
         func(*args, ax=ax, lang=lang, **kw)
         out[stem] = ax.figure
 
@@ -379,8 +381,9 @@ def bearing_figures(analysis, lang="ru"):
     grid("polar_journals", nj, (5.6, 5.6),
          lambda ax, k: plot_journal_polar(analysis, ax=ax, lang=lang, journal=k,
                                           short=True))
-    fig("developed_pins", plot_developed_loads, analysis, size=(10, 5.6), which="pins")
-    fig("developed_journals", plot_developed_loads, analysis, size=(10, 5.6))
+    fig("developed_pins", plot_developed_loads, analysis, size=(10, 6.4), bottom=0.27,
+        which="pins")
+    fig("developed_journals", plot_developed_loads, analysis, size=(10, 6.4), bottom=0.27)
     pins, jw = _wears(analysis.pin_wear), _wears(analysis.journal_wear)
     t = _TXT[lang]
     for stem, diagrams, kind in (("wear_pins", pins, "pin"), ("wear_journals", jw, "journal")):
@@ -389,7 +392,7 @@ def bearing_figures(analysis, lang="ru"):
         out[stem].text(0.5, 0.005, t["wear_note"].format(
             h=diagrams[0].half_angle_deg, zero=t["axis"][kind]).replace("\n", " "),
             ha="center", va="bottom", fontsize=8, color="0.3")
-    fig("journal_torques", plot_journal_torques, analysis, size=(10, 5.6))
+    fig("journal_torques", plot_journal_torques, analysis, size=(10, 6.0), bottom=0.2)
     fig("big_end", plot_big_end, analysis)
     if not analysis.rod_bearings["Pp_N"].isna().all():
         fig("piston_pin", plot_piston_pin, analysis, size=(10, 5.6))
