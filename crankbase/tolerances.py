@@ -41,3 +41,21 @@ DEGENERATE_QUADRATIC_ATOL = 1e-15
 #: knot of the indicator diagram [deg]: small against the 10–50° rounding zones, large
 #: enough that the difference of pressures keeps ~8 significant digits.
 POLYTROPE_SLOPE_STEP_DEG = 1e-4
+
+#: A free force (moment) of an engine below this fraction of its largest possible inertia
+#: force (times the crankshaft length) counts as balanced: an exact cancellation leaves
+#: round-off of ~1e-15 of it, while a real residue (e.g. λ³ harmonics) is >= 1e-4.
+BALANCED_RTOL = 1e-9
+
+#: A load's contact point this close to the end of a wear arc counts as inside it [deg]:
+#: the arc's ends belong to it, and contact angles from atan2 plus a shift of 180° carry
+#: ~1e-13° of round-off (engine.wear).
+WEAR_ARC_EDGE_DEG = 1e-9
+
+#: Wear values within this fraction of the profile's range of its minimum tie for the
+#: direction of least wear (equal sums of the same loads differ by round-off only).
+WEAR_TIE_RTOL = 1e-9
+
+#: A cylinder's phase must agree with its bank angle and throw, φ ≡ γ − τ (mod 360°),
+#: within this [deg]: the layout's angles are sums of degrees given to ~1e-12.
+PHASE_MATCH_DEG = 1e-6

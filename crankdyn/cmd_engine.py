@@ -11,7 +11,8 @@ are imported inside :func:`run` only, so ``crankdyn --help`` stays fast.
 from __future__ import annotations
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
-EXAMPLES = {"petrol": "petrol_vaz2106.toml", "diesel": "diesel_d240.toml"}
+EXAMPLES = {"petrol": "petrol_vaz2106.toml", "diesel": "diesel_d240.toml",
+            "six": "petrol_bmw_m54.toml", "v8": "diesel_kamaz740.toml"}
 
 
 def add_parser(subparsers):
@@ -71,8 +72,8 @@ def run(args) -> int:
     from dataclasses import replace
 
     import engine
-    from engine.plots import PLOT_NAMES, figures
-    from engine.report import build_workbook, save_workbook
+    from engine.plots import PLOT_NAMES, TRAIN_PLOT_NAMES, figures, train_figures
+    from engine.report import add_engine_sheets, build_workbook, save_workbook
 
     from crankbase.output import (check_not_input, ensure_finite, safe_name, save_figure,
                                   staged_output, write_csv)
@@ -86,33 +87,42 @@ def run(args) -> int:
         rows = spec.cycle_deg + len(settings.extra_angles_deg) * args.step
         step = step_argument(args.step, "--step", spec.cycle_deg, rows_span=rows)
         settings = replace(settings, step_deg=step)
-    result = engine.analyze(spec, settings)
+    whole = engine.analyze_engine(spec, study.train, settings)
+    result = whole.cylinder
     table = result.table
     ensure_finite(table, "force table")
     ensure_finite(result.curves, "force table (plot grid)")
     summary = result.summary
+    for df, what in ((whole.torque, "torque"), (whole.balance, "balance")):
+        ensure_finite(df, what)
     csv_path = out / "forces.csv"
+    csvs = {"cylinders.csv": whole.layout.cylinders, "torque.csv": whole.torque,
+            "balance.csv": whole.balance}
     xlsx_path = out / f"{safe_name(spec.name, 'engine')}.xlsx"
-    stems = [out / name for name in PLOT_NAMES]
+    stems = [out / name for name in PLOT_NAMES + TRAIN_PLOT_NAMES]
     from engine.bearing_spec import read_bearing_inputs
     inputs = read_bearing_inputs(spec_path, spec)
-    bearing = _bearings(spec, table, result.curves, inputs) \
+    bearing = _bearings(spec, table, result.curves, inputs, whole) \
         if args.bearings or inputs.asked else None
-    extra_csv = {} if bearing is None else bearing["csv"]
-    stems += [] if bearing is None else [out / name for name in bearing["figures"]]
-    outputs = [csv_path, xlsx_path] + [out / n for n in extra_csv] + [
+    if bearing is not None:
+        csvs.update(bearing["csv"])
+        stems += [out / name for name in bearing["figures"]]
+    outputs = [csv_path, xlsx_path] + [out / n for n in csvs] + [
         s.with_suffix(f".{e}") for s in stems for e in ("png", "svg")]
     check_not_input(outputs, [spec_path, spec.pressure_file])
-    wb = build_workbook(result, args.lang)
+    wb = add_engine_sheets(build_workbook(result, args.lang), whole, args.lang)
     figs = figures(result, args.lang)
+    figs.update(train_figures(whole, args.lang))
     if bearing is not None:
         from engine.bearing_plots import bearing_figures
+        from engine.bearing_report import add_bearing_sheets
         figs.update(bearing_figures(bearing["analysis"], args.lang))
+        add_bearing_sheets(wb, bearing["csv"], bearing["analysis"], args.lang)
 
     # 2. write: every file into a staging folder, moved into DIR only when all are done
     with staged_output(out, inputs=[spec_path, spec.pressure_file]) as stage:
         write_csv(table, stage / csv_path.name)
-        for name, df in extra_csv.items():
+        for name, df in csvs.items():
             write_csv(df, stage / name)
         save_workbook(wb, stage / xlsx_path.name)
         for stem in stems:
@@ -135,44 +145,94 @@ def run(args) -> int:
         f"  mean {summary.R_mean_N:.0f} N;  chi = "
         + (f"{summary.chi:.3f}" if summary.chi == summary.chi else "undefined "
            "(the mean load is 0)"),
-        f"wrote {csv_path} ({len(table)} rows), {xlsx_path}, "
-        f"{len(stems)} plots (PNG, SVG) in {out}" + (" [ru]" if ru else " [en]"),
     ]
+    ws = whole.summary
+    lay = whole.layout
+    lines += [
+        f"whole engine: {lay.n} cylinders {whole.train.arrangement}, firing order "
+        f"{'-'.join(map(str, lay.firing_order))}, throws "
+        f"{', '.join(f'{x:g}' for x in lay.throw_angles_deg)} deg ({lay.crankshaft})"
+        + ("" if lay.even_firing else ", uneven firing"),
+        f"  total torque       mean {ws.M_mean_Nm:.1f} N*m, max {ws.M_max_Nm:.1f} at "
+        f"{ws.alpha_M_max_deg:g} deg, min {ws.M_min_Nm:.1f} at {ws.alpha_M_min_deg:g} deg;"
+        f"  mu = {ws.mu:.3f}",
+        f"  indicated          Mi = {ws.Mi_Nm:.1f} N*m (mean differs by {ws.diff_pct:+.4f} %),"
+        f" Ni = {ws.Ni_kW:.2f} kW"
+        + ("" if ws.Me_Nm is None else f";  Me = {ws.Me_Nm:.1f} N*m, Ne = {ws.Ne_kW:.2f} kW"),
+        f"  excess work        L = {ws.L_excess_J:.1f} J"
+        + ("" if ws.flywheel is None else
+           f";  J0 = {ws.flywheel.J0_kgm2:.4f} kg*m^2 (delta = {ws.flywheel.delta:g}), "
+           f"flywheel m*D^2 = {ws.flywheel.mD2_kgm2:.4f} kg*m^2"),
+    ]
+    amp = whole.balance_amplitudes.set_index("part")
+    unbalanced = [p for p in ("1", "2", "r") if not (amp.loc[p, "F_balanced"]
+                                                    and amp.loc[p, "M_balanced"])]
+    lines.append(f"  balance            free force max {amp.loc['after', 'F_max_N']:.1f} N, "
+                 f"free moment max {amp.loc['after', 'M_max_Nm']:.1f} N*m with "
+                 f"{len(ws.counterweights)} counterweights; unbalanced before them: "
+                 + (", ".join({"1": "1st order", "2": "2nd order", "r": "rotating"}[p]
+                              for p in unbalanced) or "none"))
+    if ws.flywheel is not None and ws.flywheel.mass_kg is not None:
+        lines.append(f"  flywheel           J = {ws.flywheel.J_flywheel_kgm2:.4f} kg*m^2 "
+                     f"({ws.flywheel.share:g} of J0): rim D = "
+                     f"{ws.flywheel.diameter_m * 1e3:g} mm, m = {ws.flywheel.mass_kg:.2f} kg,"
+                     f" rim speed {ws.flywheel.rim_speed_m_s:.1f} m/s")
+    for cw in ws.counterweights:
+        lines.append(f"  counterweight      m*r = {cw.mr * 1e3:9.2f} kg*mm at "
+                     f"{cw.angle_deg:6.1f} deg from throw 1, z = {cw.z * 1e3:7.1f} mm")
     if bearing is not None:
-        lines[-1:-1] = bearing["lines"]
+        lines += bearing["lines"]
+    lines.append(f"wrote {csv_path} ({len(table)} rows), cylinders.csv, torque.csv, "
+                 f"balance.csv, {xlsx_path}, {len(stems)} plots (PNG, SVG) in {out}"
+                 + (" [ru]" if ru else " [en]"))
     print("\n".join(lines))
     return 0
 
 
-def _bearings(spec, table, fine, inputs):
-    """Bearing loads of the one-cylinder spec: CSVs at the table rows, plots, the wear
-    diagrams and the summary lines from the fine grid."""
+def _bearings(spec, table, fine, inputs, whole):
+    """Bearing loads: one cylinder by its spec ([bearings] journal positions and
+    counterweight), a whole engine by its layout and counterweights.  CSVs at the table
+    rows; plots, wear diagrams and the summary lines from the fine grid."""
     from crankbase.output import ensure_finite
     from engine.bearing_spec import bearing_analysis, wear_table
 
-    rows = bearing_analysis(spec, table, inputs)
-    res = bearing_analysis(spec, fine, inputs)
+    lay = whole.layout
+    if lay.n == 1:
+        rows = bearing_analysis(spec, table, inputs)
+        res = bearing_analysis(spec, fine, inputs)
+    else:
+        from engine.train_bearings import engine_bearings, layout_cylinders
+
+        cyl, tau, zt = layout_cylinders(lay)
+        cw = [(c.z, c.mr, c.angle_deg) for c in whole.summary.counterweights]
+
+        def run(theta):
+            return engine_bearings(spec, theta, cyl, tau, zt, counterweights=cw,
+                                   inputs=inputs)
+        rows, res = run(table["alpha_deg"].to_numpy()), run(fine["alpha_deg"].to_numpy())
     rb = rows.rod_bearings
     if rows.m_piston is None:                       # piston mass unknown: big end only
         rb = rb.drop(columns=["Pp_axial_N", "Pp_side_N", "Pp_N"])
+    pin_wear = res.pin_wear if isinstance(res.pin_wear, list) else [res.pin_wear]
     csv = {"crankpins.csv": rows.loads.crankpins, "journals.csv": rows.loads.journals,
            "journal_torques.csv": rows.loads.journal_torques, "rod_bearings.csv": rb,
-           "wear.csv": wear_table([res.pin_wear] + res.journal_wear)}
+           "wear.csv": wear_table(pin_wear + res.journal_wear)}
     if rows.rod_comparison is not None:
         csv["rod_model.csv"] = rows.rod_comparison.table
     for name, df in csv.items():
         ensure_finite(df, name)
-    ls, js = res.loads.pin_stats[0], res.loads.journal_stats
-    jm = res.loads.most_loaded_journal
+    L = res.loads
+    kp, jm, jt = L.most_loaded_pin, L.most_loaded_journal, L.most_twisted_journal
+    ps, js, ts = L.pin_stats[kp - 1], L.journal_stats[jm - 1], L.torque_stats[jt - 1]
     lines = [
-        f"  crank pin          max {ls.max_N:8.0f} N at alpha = {ls.alpha_max_deg:g} deg; "
-        f"mean {ls.mean_N:.0f} N; chi = {ls.chi:.3f}; oil hole at "
-        f"{res.pin_wear.oil_hole_deg:g} deg (crank frame)",
-        f"  main journals      most loaded: {jm} (max {js[jm - 1].max_N:.0f} N, mean "
-        f"{js[jm - 1].mean_N:.0f} N); oil holes at "
+        f"  crank pins         most loaded: {kp} (max {ps.max_N:.0f} N at alpha = "
+        f"{ps.alpha_max_deg:g} deg; mean {ps.mean_N:.0f} N; chi = {ps.chi:.3f}); oil holes "
+        "at " + ", ".join(f"{w.oil_hole_deg:g}" for w in pin_wear) + " deg (crank frame)",
+        f"  main journals      most loaded: {jm} (max {js.max_N:.0f} N, mean "
+        f"{js.mean_N:.0f} N, chi = {js.chi:.3f}); oil holes at "
         + ", ".join(f"{w.oil_hole_deg:g}" for w in res.journal_wear) + " deg",
-        f"  journal torque     last journal max {res.loads.torque_stats[-1]['max_Nm']:.1f}, "
-        f"min {res.loads.torque_stats[-1]['min_Nm']:.1f} N*m; wear arcs +/-"
+        f"  journal torques    largest swing: journal {jt} (max {ts['max_Nm']:.1f}, min "
+        f"{ts['min_Nm']:.1f} N*m); the last carries the total; wear arcs +/-"
         f"{res.options.wear_half_angle_deg:g} deg"]
     if res.rod_comparison is not None:
         ext = res.rod_comparison.extremes

@@ -7,17 +7,26 @@ K, T, Mкр, Kr.ш, Rшш, Ψ over the crank angle) through the Assur-group rout
 :mod:`linkage` and returns a typed :class:`EngineResult`; ``force_table`` and ``summarize``
 are its two steps.  Reports (:mod:`engine.report`, openpyxl) and plots
 (:mod:`engine.plots`, matplotlib) are imported only when used.
+
+The whole engine (:mod:`engine.train`): ``analyze_engine(spec, train, settings)`` places
+every cylinder of the :class:`CrankTrain` (inline, vee, boxer; firing order, throws) and
+gives the total torque, its uniformity, the flywheel and the free forces and moments with
+their balance, as an :class:`EngineTrainResult`.
 """
 from .forces import (COLUMNS, analyze, crank_pin_forces, fine_angles, force_table,
                      summarize, table_angles)
 from .indicator import CycleSpec, PressureTable, gas_pressure, indicated_mean_pressure
 from .kinematics import crank_slider
 from .result import EngineResult, EngineSummary, Extreme
-from .spec import (EngineSpec, EngineSpecError, EngineStudy, TableSettings, load, load_spec,
-                   read_pressure_csv)
+from .spec import (Counterweight, CrankTrain, EngineSpec, EngineSpecError, EngineStudy,
+                   TableSettings, load, load_spec, read_pressure_csv)
+from .train import (EngineTrainResult, EngineTrainSummary, FlywheelResult, Layout,
+                    analyze_engine, layout)
 
 __all__ = ["load", "load_spec", "analyze", "force_table", "summarize", "table_angles",
            "fine_angles", "COLUMNS", "EngineSpec", "TableSettings", "EngineStudy",
            "CycleSpec", "PressureTable", "EngineSpecError", "EngineResult", "EngineSummary",
            "Extreme", "gas_pressure", "indicated_mean_pressure", "crank_slider",
-           "crank_pin_forces", "read_pressure_csv"]
+           "crank_pin_forces", "read_pressure_csv", "CrankTrain", "Counterweight", "Layout",
+           "layout", "analyze_engine", "EngineTrainResult", "EngineTrainSummary",
+           "FlywheelResult"]

@@ -12,7 +12,8 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["plot_pin_polar", "plot_journal_polar", "plot_wear", "plot_journal_torques",
+__all__ = ["plot_pin_polar", "plot_journal_polar", "plot_developed_loads", "plot_wear",
+           "plot_journal_torques",
            "plot_rod_model", "plot_big_end", "plot_piston_pin", "bearing_figures",
            "BEARING_PLOT_NAMES"]
 
@@ -26,6 +27,8 @@ _TXT = {
                          "0° — {zero}, углы по направлению вращения (по часовой)",
                axis={"pin": "к оси вала O", "journal": "от кривошипа (кривошип — 180°)"},
                tq="Крутящие моменты, передаваемые коренными шейками",
+               dev="Развёрнутые диаграммы нагрузок", dev_pin="шатунная шейка",
+               dev_j="коренная шейка",
                Mj="Mк.ш {j}", M="Mк.ш, Н·м", alpha="α, ° п.к.в.",
                rod="Жёсткий шатун минус двухмассовая модель",
                dN="ΔT, ΔK, ΔRшш, Н", exact="обе модели с точной кинематикой",
@@ -45,6 +48,7 @@ _TXT = {
                axis={"pin": "towards the shaft axis O",
                      "journal": "away from the crank (the crank at 180°)"},
                tq="Torques carried by the main journals",
+               dev="Developed load diagrams", dev_pin="crank pin", dev_j="main journal",
                Mj="M journal {j}", M="M, N·m", alpha="α, crank deg",
                rod="Rigid rod minus the two-mass model",
                dN="ΔT, ΔK, ΔR, N", exact="both with exact kinematics",
@@ -63,12 +67,12 @@ _STYLES = [dict(ls="-", marker=None), dict(ls="--", marker=None), dict(ls="-.", 
                                                                markevery=60, ms=3)]
 
 
-def _axes(ax, size=(8, 8), right=0.96):
+def _axes(ax, size=(8, 8), right=0.96, bottom=0.09):
     if ax is not None:
         return ax
     from matplotlib.figure import Figure
     fig = Figure(figsize=size)
-    fig.subplots_adjust(left=0.1, right=right, bottom=0.09, top=0.9)
+    fig.subplots_adjust(left=0.1, right=right, bottom=bottom, top=0.9)
     return fig.subplots()
 
 
@@ -77,9 +81,13 @@ def _xy(phi_deg, r):
     return r * np.sin(p), -r * np.cos(p)
 
 
-def _polar(ax, a, T, K, title, lang, stats, cycle):
+def _polar(ax, a, T, K, title, lang, stats, cycle, Kr=0.0):
+    """The load locus (T, K) with its pole; with Kr ≠ 0 (a crank pin) the curve is the
+    rods' force ΣS with the pole O and the pole Oш = (0, −ΣKr.ш), from which the same
+    curve reads as the pin load R (as :func:`engine.plots.plot_polar`)."""
     t = _TXT[lang]
-    T, K = np.asarray(T) * 1e-3, np.asarray(K) * 1e-3
+    T, K = np.asarray(T) * 1e-3, (np.asarray(K) - Kr) * 1e-3
+    kr = Kr * 1e-3
     ax.plot(T, K, color="C0", lw=1.3)
     ax.set_aspect("equal", adjustable="datalim")
     ax.invert_yaxis()
@@ -91,15 +99,25 @@ def _polar(ax, a, T, K, title, lang, stats, cycle):
     for ang, x, y in zip(labels, lt, lk):
         ax.annotate(f"{ang:g}", (x, y), xytext=(3, 3), textcoords="offset points",
                     fontsize=7, color="0.25")
-    R = np.hypot(T, K)
+    R = np.hypot(T, K + kr)
     for idx, name, col in ((int(np.argmax(R)), "max", "C3"), (int(np.argmin(R)), "min",
                                                                "C2")):
-        ax.annotate("", xy=(T[idx], K[idx]), xytext=(0, 0),
+        ax.annotate("", xy=(T[idx], K[idx]), xytext=(0, -kr),
                     arrowprops=dict(arrowstyle="-|>", color=col, lw=1.2))
+        right = T[idx] > 0                    # keep the label inside the axes
         ax.annotate(f"R{name} = {R[idx]:.2f} {t['kN']} (α = {a[idx]:g}°)",
-                    (T[idx], K[idx]), xytext=(8, -12 if name == "max" else 8),
-                    textcoords="offset points", fontsize=8, color=col)
+                    (T[idx], K[idx]), xytext=(-8 if right else 8,
+                                              -12 if name == "max" else 8),
+                    textcoords="offset points", fontsize=8, color=col,
+                    ha="right" if right else "left",
+                    bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.8))
     ax.plot([0], [0], "ks", ms=4)
+    if kr != 0.0:
+        ax.annotate("O", (0, 0), xytext=(-12, -10), textcoords="offset points",
+                    fontsize=10, weight="bold")
+        ax.plot([0], [-kr], "o", color="C3", ms=5)
+        ax.annotate("Oш", (0, -kr), xytext=(-22, 6), textcoords="offset points",
+                    fontsize=10, weight="bold", color="C3")
     ax.set_xlabel(t["T"])
     ax.set_ylabel(t["K"])
     ax.grid(True, lw=0.4, alpha=0.6)
@@ -108,27 +126,31 @@ def _polar(ax, a, T, K, title, lang, stats, cycle):
     return ax
 
 
-def plot_pin_polar(result, ax=None, lang="ru", throw=1):
+def plot_pin_polar(result, ax=None, lang="ru", throw=1, short=False):
     """Polar diagram of a crank pin's load (rods incl. Kr.ш) in its crank frame, pole at
     the pin centre.  ``result``: :class:`engine.bearings.CrankshaftLoads` or a
-    :class:`engine.bearing_spec.BearingAnalysis`."""
+    :class:`engine.bearing_spec.BearingAnalysis`; ``short``: a short title (grids)."""
     loads = getattr(result, "loads", result)
     ax = _axes(ax)
     p = loads.crankpins
     cyc = _cycle(loads)
+    kr = 0.0 if loads.Kr_throw is None else float(loads.Kr_throw[throw - 1])
+    t = _TXT[lang]
+    title = f"{t['dev_pin']} {throw}" if short else t["pin"].format(k=throw)
     return _polar(ax, p["alpha_deg"].to_numpy(), p[f"T_{throw}_N"], p[f"K_{throw}_N"],
-                  _TXT[lang]["pin"].format(k=throw), lang, loads.pin_stats[throw - 1], cyc)
+                  title, lang, loads.pin_stats[throw - 1], cyc, kr)
 
 
-def plot_journal_polar(result, ax=None, lang="ru", journal=1):
+def plot_journal_polar(result, ax=None, lang="ru", journal=1, short=False):
     """Polar diagram of a main journal's load Q in the crank frame of its reference
-    throw."""
+    throw; ``short``: a short title (grids)."""
     loads = getattr(result, "loads", result)
     ax = _axes(ax)
     j = loads.journals
     k = loads.shaft.frame_throw()[journal - 1] + 1
     t = _TXT[lang]
-    title = t["journal"].format(k=journal) + " " + t["frame_j"].format(k=k)
+    title = (f"{t['dev_j']} {journal} " if short else t["journal"].format(k=journal) + " ") \
+        + t["frame_j"].format(k=k)
     return _polar(ax, j["alpha_deg"].to_numpy(), j[f"T_{journal}_N"], j[f"K_{journal}_N"],
                   title, lang, loads.journal_stats[journal - 1], _cycle(loads))
 
@@ -138,9 +160,38 @@ def _cycle(loads):
     return 720.0 if a[-1] - a[0] > 360.0 + 1e-9 else 360.0
 
 
-def plot_wear(diagram, ax=None, lang="ru"):
+def plot_developed_loads(result, ax=None, lang="ru", which="journals"):
+    """Developed diagrams R(α) of every crank pin (``which="pins"``) or main journal, with
+    their cycle means (thin lines of the same style)."""
+    loads = getattr(result, "loads", result)
+    t = _TXT[lang]
+    ax = _axes(ax, (10, 6.4), bottom=0.27)
+    df = loads.crankpins if which == "pins" else loads.journals
+    stats = loads.pin_stats if which == "pins" else loads.journal_stats
+    a = df["alpha_deg"].to_numpy()
+    label = t["dev_pin"] if which == "pins" else t["dev_j"]
+    for k, s in enumerate(stats, start=1):
+        st = _STYLES[(k - 1) % len(_STYLES)]
+        ax.plot(a, df[f"R_{k}_N"] * 1e-3, color="k", lw=1.1,
+                label=f"{label} {k}: max {s.max_N * 1e-3:.2f}, {t['mean']} "
+                      f"{s.mean_N * 1e-3:.2f} {t['kN']}, χ = {s.chi:.2f}", **st)
+        ax.axhline(s.mean_N * 1e-3, color="0.4", lw=0.7, ls=st["ls"])
+    ax.set_xlim(a[0], a[-1])
+    ax.set_xticks(np.arange(a[0], a[-1] + 1, 90))
+    ax.set_ylim(bottom=0)
+    ax.set_xlabel(t["alpha"])
+    ax.set_ylabel(t["R"])
+    ax.grid(True, lw=0.4, alpha=0.6)
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.11), ncol=2,
+              frameon=False)
+    ax.set_title(t["dev"])
+    return ax
+
+
+def plot_wear(diagram, ax=None, lang="ru", note=True):
     """Wear diagram on the journal's circle: the wear drawn inwards from the circle
-    (depth ∝ wear, the largest at 40 % of the radius), the oil-hole direction marked."""
+    (depth ∝ wear, the largest at 40 % of the radius), the oil-hole direction marked;
+    ``note``: the method and the frame written under it (a grid writes it once)."""
     t = _TXT[lang]
     ax = _axes(ax, (7, 7.4))
     phi = np.append(diagram.phi_deg, diagram.phi_deg[0] + 360.0)
@@ -163,6 +214,7 @@ def plot_wear(diagram, ax=None, lang="ru"):
     tx, ty = _xy(hole + 14.0, 1.36)
     ax.annotate(f"{t['hole']}\n{hole:g}°", xy=(hx, hy), xytext=(tx, ty),
                 ha="center", va="center", fontsize=9, color="C3",
+                bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.85),
                 arrowprops=dict(arrowstyle="-|>", color="C3", lw=1.4))
     ax.plot([0, 0.62 * hx], [0, 0.62 * hy], color="C3", lw=1.0, ls="--")
     ax.plot([0], [0], "ko", ms=3)
@@ -177,8 +229,10 @@ def plot_wear(diagram, ax=None, lang="ru"):
     ax.set_ylim(-1.65, 1.65)
     ax.axis("off")
     ax.set_title(t["wear"].format(name=f"{t['names'].get(kind, kind)} {num}"), fontsize=11)
-    note = t["wear_note"].format(h=diagram.half_angle_deg, zero=t["axis"].get(kind, ""))
-    ax.text(0.5, -0.02, note,
+    if not note:
+        return ax
+    text = t["wear_note"].format(h=diagram.half_angle_deg, zero=t["axis"].get(kind, ""))
+    ax.text(0.5, -0.02, text,
             transform=ax.transAxes, ha="center", va="top", fontsize=7.5, color="0.3")
     return ax
 
@@ -187,7 +241,7 @@ def plot_journal_torques(result, ax=None, lang="ru"):
     """Torques carried by the main journals over the crank angle, one line style each."""
     loads = getattr(result, "loads", result)
     t = _TXT[lang]
-    ax = _axes(ax, (10, 5.6))
+    ax = _axes(ax, (10, 6.0), bottom=0.2)
     df = loads.journal_torques
     a = df["alpha_deg"].to_numpy()
     for j in range(1, len(df.columns)):
@@ -199,7 +253,8 @@ def plot_journal_torques(result, ax=None, lang="ru"):
     ax.set_xlabel(t["alpha"])
     ax.set_ylabel(t["M"])
     ax.grid(True, lw=0.4, alpha=0.6)
-    ax.legend(fontsize=8, loc="upper left", ncol=3)
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.11), ncol=5,
+              frameon=False)
     ax.set_title(t["tq"])
     return ax
 
@@ -278,28 +333,70 @@ def plot_piston_pin(result, ax=None, lang="ru"):
 
 #: File stems of the one-cylinder bearing plots (rod_model only with the rigid rod,
 #: piston_pin only when the piston mass is known).
-BEARING_PLOT_NAMES = ("polar_pin", "polar_journal_1", "wear_pin", "wear_journal_1",
-                      "journal_torques", "big_end", "piston_pin", "rod_model")
+BEARING_PLOT_NAMES = ("polar_pins", "polar_journals", "developed_pins",
+                      "developed_journals", "wear_pins", "wear_journals", "journal_torques",
+                      "big_end", "piston_pin", "rod_model")
+
+
+def _wears(w):
+    return list(w) if isinstance(w, (list, tuple)) else [w]
+
+
+def _grid(n, cell, cols=3):
+    """A figure with n axes in a grid of cell-sized cells (fixed margins)."""
+    from matplotlib.figure import Figure
+    ncol = min(n, cols)
+    nrow = -(-n // ncol)
+    fig = Figure(figsize=(cell[0] * ncol, cell[1] * nrow))
+    fig.subplots_adjust(left=0.06 if ncol > 1 else 0.1, right=0.97, bottom=0.12 / nrow,
+                        top=1 - 0.09 / nrow, wspace=0.28, hspace=0.32)
+    axes = np.atleast_1d(fig.subplots(nrow, ncol)).ravel()
+    for ax in axes[n:]:
+        ax.set_visible(False)
+    return fig, axes[:n]
 
 
 def bearing_figures(analysis, lang="ru"):
-    """``{stem: Figure}`` of a :class:`engine.bearing_spec.BearingAnalysis`."""
+    """``{stem: Figure}`` of a :class:`engine.bearing_spec.BearingAnalysis` (one
+    cylinder) or an :class:`engine.train_bearings.EngineBearings` (a whole engine): the
+    polar and wear diagrams of every pin and journal in one grid each."""
     out = {}
+    loads = analysis.loads
+    npin, nj = len(loads.pin_stats), len(loads.journal_stats)
 
-    def fig(stem, func, *args, size=(8, 8), right=0.96):
-        ax = _axes(None, size, right)
-        func(*args, ax=ax, lang=lang)
+    def fig(stem, func, *args, size=(8, 8), right=0.96, bottom=0.09, **kw):
+        ax = _axes(None, size, right, bottom)
+        func(*args, ax=ax, lang=lang, **kw)
         out[stem] = ax.figure
 
-    fig("polar_pin", plot_pin_polar, analysis)
-    fig("polar_journal_1", plot_journal_polar, analysis)
-    fig("wear_pin", plot_wear, analysis.pin_wear, size=(7, 7.4))
-    fig("wear_journal_1", plot_wear, analysis.journal_wear[0], size=(7, 7.4))
-    fig("journal_torques", plot_journal_torques, analysis, size=(10, 5.6))
+    def grid(stem, n, cell, draw):
+        f, axes = _grid(n, cell)
+        for k, ax in enumerate(axes, start=1):
+            draw(ax, k)
+            ax.title.set_fontsize(9)
+        out[stem] = f
+
+    grid("polar_pins", npin, (5.6, 5.6),
+         lambda ax, k: plot_pin_polar(analysis, ax=ax, lang=lang, throw=k, short=True))
+    grid("polar_journals", nj, (5.6, 5.6),
+         lambda ax, k: plot_journal_polar(analysis, ax=ax, lang=lang, journal=k,
+                                          short=True))
+    fig("developed_pins", plot_developed_loads, analysis, size=(10, 6.4), bottom=0.27,
+        which="pins")
+    fig("developed_journals", plot_developed_loads, analysis, size=(10, 6.4), bottom=0.27)
+    pins, jw = _wears(analysis.pin_wear), _wears(analysis.journal_wear)
+    t = _TXT[lang]
+    for stem, diagrams, kind in (("wear_pins", pins, "pin"), ("wear_journals", jw, "journal")):
+        grid(stem, len(diagrams), (4.8, 5.0),
+             lambda ax, k, d=diagrams: plot_wear(d[k - 1], ax=ax, lang=lang, note=False))
+        out[stem].text(0.5, 0.005, t["wear_note"].format(
+            h=diagrams[0].half_angle_deg, zero=t["axis"][kind]).replace("\n", " "),
+            ha="center", va="bottom", fontsize=8, color="0.3")
+    fig("journal_torques", plot_journal_torques, analysis, size=(10, 6.0), bottom=0.2)
     fig("big_end", plot_big_end, analysis)
     if not analysis.rod_bearings["Pp_N"].isna().all():
         fig("piston_pin", plot_piston_pin, analysis, size=(10, 5.6))
-    if analysis.rod_comparison is not None:
+    if getattr(analysis, "rod_comparison", None) is not None:
         fig("rod_model", plot_rod_model, analysis.rod_comparison, size=(10, 5.6),
             right=0.9)
     return out

@@ -51,12 +51,13 @@ _DEFAULT_HALF_SPAN = 0.05
 @dataclass(frozen=True)
 class BearingOptions:
     """``[bearings]`` in SI: half-angle [deg], journal positions [m], counterweight
-    m·r [kg·m] and angle [deg]."""
+    m·r [kg·m] and angle [deg]; ``given``: the keys the spec gave."""
 
     wear_half_angle_deg: float = DEFAULT_HALF_ANGLE_DEG
     journal_positions: tuple = (-_DEFAULT_HALF_SPAN, _DEFAULT_HALF_SPAN)
     counterweight_mr: float = 0.0
     counterweight_angle_deg: float = 180.0
+    given: tuple = ()
 
 
 def bearing_options(table, checker=None):
@@ -87,7 +88,8 @@ def bearing_options(table, checker=None):
     return BearingOptions(
         h if h is not None else DEFAULT_HALF_ANGLE_DEG,
         tuple(x / 1e3 for x in zj) if zj else (-_DEFAULT_HALF_SPAN, _DEFAULT_HALF_SPAN),
-        (mr or 0.0) / 1e3, ang if ang is not None else 180.0)
+        (mr or 0.0) / 1e3, ang if ang is not None else 180.0,
+        tuple(k for k in t if k in BEARING_KEYS))
 
 
 def check_tables(c, data):
@@ -194,12 +196,13 @@ class BearingAnalysis:
     notes: list = field(default_factory=list)
 
 
-def rod_bearing_table(table, spec, m_piston):
-    """Big-end (rod frame) and piston-pin loads from a force table (DataFrame)."""
+def rod_bearing_table(table, spec, m_piston, phase_deg=0.0):
+    """Big-end (rod frame) and piston-pin loads from a force table (DataFrame) whose rows
+    are at the crankshaft angles θ of a cylinder with phase ``phase_deg`` (α = θ − φ)."""
     import pandas as pd
 
     a = table["alpha_deg"].to_numpy()
-    along, across = big_end_load(table["K_N"], table["T_N"], table["Kr_N"], a,
+    along, across = big_end_load(table["K_N"], table["T_N"], table["Kr_N"], a - phase_deg,
                                  table["beta_deg"])
     out = dict(alpha_deg=a, Rbe_along_N=along, Rbe_across_N=across,
                Rbe_N=np.hypot(along, across), Rbe_angle_deg=_psi(across, along))
@@ -243,7 +246,7 @@ def bearing_analysis(spec, table, inputs: BearingInputs | None = None, n_points=
     Kp, Tp = crank_pin_load(table["K_N"].to_numpy(), table["T_N"].to_numpy(),
                             spec.m_rod_rot, spec.R, spec.omega)
     loads = crankshaft_loads(a, _shaft(spec, opt), Kp[None, :], Tp[None, :], spec.R,
-                             spec.omega, spec.cycle_deg)
+                             spec.omega, spec.cycle_deg, pin_Kr=[spec.Kr])
     h = opt.wear_half_angle_deg
     pins = loads.crankpins
     pin_wear = wear_diagram("pin 1", a, pins["psi_1_deg"].to_numpy() + 180.0,

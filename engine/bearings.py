@@ -9,16 +9,18 @@ journals.
 
 Frames and signs
 ----------------
-*Engine frame* (x, y): the crank axis O at the origin, y up along the cylinder axis of a
-bank with bank angle 0, x to the right, looking at the front (free) end of the
-crankshaft; the shaft turns counter-clockwise (ω > 0), as in :mod:`engine.kinematics`.
-Forces are complex numbers ``x + iy``.
+*Engine frame* (x, y), as in :mod:`engine.kinematics`: the crank axis O at the origin, y
+up along the cylinder axis of a bank with bank angle 0, x to the right, seen from the
+flywheel end (z runs from the front to the flywheel); the shaft turns counter-clockwise
+in this view (ω > 0).  Forces are complex numbers ``x + iy``.
 
-*Crankshaft angle* θ [deg]: the angle of throw 1 from the vertical (+y), counted in the
-direction of rotation.  Throw k points at δk = θ + τk (τk its throw angle).  A cylinder
-whose axis is turned by its bank angle γ from +y (in the direction of rotation) sees the
-crank of its throw at its own crank angle α = δk − γ (mod 360°); its working cycle lags
-cylinder 1's by its phase, α = θ − phase (mod cycle), so ``phase = γ − τk`` (mod 360°).
+*Crankshaft angle* θ [deg] and throws: throw k points at δk = θ + τk from the vertical
+(+y), counted in the direction of rotation; τk is the throw's direction at θ = 0 (for an
+engine whose θ is cylinder 1's α, τk = γ1 + the throw's angle from throw 1, γ1 the bank
+angle of cylinder 1).  A cylinder whose axis is turned by its bank angle γ from +y (in
+the direction of rotation) sees the crank of its throw at its own crank angle
+α = δk − γ (mod 360°); its working cycle lags by its phase, α = θ − phase (mod cycle), so
+``phase ≡ γ − τk`` (mod 360°).
 
 *Crank frame* of a throw (the textbook's, as for Rшш in :mod:`engine.forces`): K along
 the crank towards the crank axis, T perpendicular to it in the direction of rotation; the
@@ -245,10 +247,8 @@ def big_end_load(K, T, Kr, alpha_deg, beta_deg):
     crank is e = exp(i(90° + α)) and the rod points from the crank pin to the piston pin
     along e₃ = exp(i(90° − β)).
     """
-    a = np.radians(np.asarray(alpha_deg, float))
-    b = np.radians(np.asarray(beta_deg, float))
-    e = np.exp(1j * (np.pi / 2 + a))
-    e3 = np.exp(1j * (np.pi / 2 - b))
+    e = crank_unit(alpha_deg)                        # the crank, cylinder frame
+    e3 = np.exp(1j * (np.pi / 2 - np.radians(np.asarray(beta_deg, float))))
     F = -(e * (-(np.asarray(K, float) + np.asarray(Kr, float)) + 1j * np.asarray(T, float)))
     return dot(F, e3), dot(F, 1j * e3)
 
@@ -326,9 +326,10 @@ class Crankshaft:
     Attributes
     ----------
     throw_angle_deg : tuple of float
-        τk, the angle of each throw from throw 1, in the direction of rotation. [deg]
+        τk, the direction of each throw from the vertical at θ = 0, in the direction of
+        rotation (module docstring). [deg]
     z_throw : tuple of float
-        Axial position of each throw (its crank-pin centre), from the free end. [m]
+        Axial position of each throw (its crank-pin centre), from the front. [m]
     z_journal : tuple of float
         Axial positions of the main journals, increasing. [m]
     m_crank_rot : tuple of float
@@ -404,6 +405,9 @@ class CrankshaftLoads:
         Centrifugal forces of the counterweights. [N]
     Q : complex ndarray (n_journals, n)
         Journal loads, engine frame. [N]
+    shaft : Crankshaft
+    Kr_throw : ndarray (n_throws,)
+        ΣKr.ш of each throw's rods, when given (the pole Oш of the polar diagram). [N]
     """
 
     alpha_deg: np.ndarray
@@ -421,10 +425,11 @@ class CrankshaftLoads:
     F_cw: np.ndarray = field(repr=False)
     Q: np.ndarray = field(repr=False)
     shaft: Crankshaft = field(repr=False, default=None)
+    Kr_throw: np.ndarray = field(repr=False, default=None)
 
 
 def crankshaft_loads(theta_deg, shaft: Crankshaft, pin_K, pin_T, R, omega, cycle_deg,
-                     rod_z=None):
+                     rod_z=None, pin_Kr=None):
     """Crank-pin and main-journal loads and the journal torques of a crankshaft.
 
     Parameters
@@ -443,6 +448,9 @@ def crankshaft_loads(theta_deg, shaft: Crankshaft, pin_K, pin_T, R, omega, cycle
         Per throw, a list of (K, T, z) of its rods when they sit at different axial
         positions on the pin (a vee with a bank offset): each rod's force then enters the
         lever rule at its own z.  By default the pin load acts at the throw's centre.
+    pin_Kr : array_like, shape (n_throws,), optional
+        ΣKr.ш of each throw's rods (included in ``pin_K``), kept for the polar diagram's
+        pole Oш. [N]
 
     Returns
     -------
@@ -467,7 +475,7 @@ def crankshaft_loads(theta_deg, shaft: Crankshaft, pin_K, pin_T, R, omega, cycle
     tau = np.asarray(shaft.throw_angle_deg, float)
     delta = th[None, :] + tau[:, None]                       # (nt, n)
     e = crank_unit(delta)
-    F_throw = e * (-pin_K + 1j * pin_T)
+    F_throw = to_engine_frame(pin_K, pin_T, delta)
     F_rot = np.asarray(shaft.m_crank_rot, float)[:, None] * R * omega ** 2 * e
     cw = shaft.counterweights
     if cw:
@@ -484,7 +492,7 @@ def crankshaft_loads(theta_deg, shaft: Crankshaft, pin_K, pin_T, R, omega, cycle
         Fr, zr = [], []
         for k, rods in enumerate(rod_z):
             for K_r, T_r, z_r in rods:
-                Fr.append(e[k] * (-np.asarray(K_r, float) + 1j * np.asarray(T_r, float)))
+                Fr.append(to_engine_frame(K_r, T_r, delta[k]))
                 zr.append(z_r)
         loads, zs = [np.array(Fr)], [np.array(zr, float)]
     loads += [F_rot, F_cw]
@@ -524,4 +532,5 @@ def crankshaft_loads(theta_deg, shaft: Crankshaft, pin_K, pin_T, R, omega, cycle
         most_loaded_pin=1 + int(np.argmax([s.max_N for s in pin_stats])),
         most_loaded_journal=1 + int(np.argmax([s.max_N for s in j_stats])),
         most_twisted_journal=1 + int(np.argmax([s["swing_Nm"] for s in t_stats])),
-        F_throw=F_throw, F_rot=F_rot, F_cw=F_cw, Q=Q, shaft=shaft)
+        F_throw=F_throw, F_rot=F_rot, F_cw=F_cw, Q=Q, shaft=shaft,
+        Kr_throw=np.zeros(nt) if pin_Kr is None else np.asarray(pin_Kr, float))

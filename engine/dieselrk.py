@@ -49,6 +49,7 @@ from pathlib import Path
 
 import numpy as np
 
+from crankbase.tolerances import SAME_ANGLE_DEG
 from crankbase.validation import Checker
 
 __all__ = ["read_ind", "DIESEL_RK_TDC_DEG", "BAR"]
@@ -173,7 +174,7 @@ def _parse(c, key, name, lines, cycle_deg, tdc):
                    "negative (Pc is absolute)")
         return None, None
     span = fi[-1] - fi[0]
-    tol = 1e-9 * cycle_deg
+    tol = SAME_ANGLE_DEG
     if span < cycle_deg - tol:
         c.add(key, f"{name} line {rows[-1]}: the data end at Fi = {fi[-1]:g}, "
                    f"{span:g}° after the first row (Fi = {fi[0]:g}); a whole cycle of "
@@ -205,7 +206,7 @@ def _origin_ok(c, key, name, fi, p, V, lines, cycle_deg, tdc):
     i = int(np.argmin(V))
     row = float(np.max(np.diff(fi)))
     off = abs(((fi[i] - tdc) + 180.0) % 360.0 - 180.0)
-    if off > row + 1e-9:
+    if off > row + SAME_ANGLE_DEG:
         c.add("pressure.firing_tdc_deg",
               f"{name}: the cylinder volume V is least at Fi = {fi[i]:g} (line {lines[i]}), "
               f"not at the firing TDC Fi = {tdc:g} or {tdc:g} ± 360; give the file's "

@@ -268,12 +268,11 @@ def force_table(spec, alpha_deg=None, *, settings=None, bank_deg=0.0, phase_deg=
     mech, P = f["mech"], f["P"]
     Kr = np.full_like(P, spec.Kr)
     Kt = f["K"] + Kr
-    cols = dict(alpha_deg=f["theta_deg"], p_gas_MPa=f["p"] / 1e6, dPg_N=f["dPg"],
-                Pj_N=f["Pj"], P_N=P, beta_deg=np.degrees(mech.beta), N_N=f["N"],
-                S_N=f["S"], K_N=f["K"], T_N=f["T"], M_Nm=f["M"], Kr_N=Kr,
-                R_N=np.hypot(f["T"], Kt), psi_deg=_psi(f["T"], Kt), x_mm=mech.x * 1e3,
-                v_m_s=mech.v, j_m_s2=mech.j)
-    return pd.DataFrame(cols, columns=list(COLUMNS))
+    cols = (f["theta_deg"], f["p"] / 1e6, f["dPg"], f["Pj"], P, np.degrees(mech.beta),
+            f["N"], f["S"], f["K"], f["T"], f["M"], Kr, np.hypot(f["T"], Kt),
+            _psi(f["T"], Kt), mech.x * 1e3, mech.v, mech.j)
+    # one float block (the columns of COLUMNS, in order): cheaper than a dict of arrays
+    return pd.DataFrame(np.column_stack(cols), columns=list(COLUMNS))
 
 
 def _cylinder_forces(spec, alpha_deg, settings, bank_deg, phase_deg):
@@ -304,9 +303,8 @@ def _psi(T, Kt):
     return np.where(psi <= -180.0 + SAME_ANGLE_DEG, psi + 360.0, psi)
 
 
-#: Quantities whose max and min the summary reports: (column, symbol).
-SUMMARY_QUANTITIES = (("P_N", "P"), ("S_N", "Sш"), ("N_N", "N"), ("K_N", "K"),
-                      ("T_N", "T"), ("M_Nm", "Mкр"), ("R_N", "Rшш"))
+#: Columns whose max and min the summary reports (P, Sш, N, K, T, Mкр, Rшш).
+SUMMARY_QUANTITIES = ("P_N", "S_N", "N_N", "K_N", "T_N", "M_Nm", "R_N")
 
 
 def _cycle_mean(alpha, y, cycle_deg):
@@ -339,7 +337,7 @@ def summarize(table, spec) -> EngineSummary:
     a = table["alpha_deg"].to_numpy()
     cyc = spec.cycle_deg
     ext = {}
-    for col, _ in SUMMARY_QUANTITIES:
+    for col in SUMMARY_QUANTITIES:
         y = table[col].to_numpy()
         i, k = int(np.argmax(y)), int(np.argmin(y))
         ext[col] = Extreme(float(y[i]), float(a[i]), float(y[k]), float(a[k]))
@@ -381,6 +379,8 @@ def analyze(spec, settings=None, *, fine_step_deg=PLOT_STEP_DEG) -> EngineResult
         raise EngineSpecError(Problem("settings", "must be a TableSettings, got "
                                                   f"{type(settings).__name__}"))
     table = force_table(spec, settings=settings)
-    curves = force_table(spec, fine_angles(spec, settings, fine_step_deg))
+    fine = fine_angles(spec, settings, fine_step_deg)
+    # a table at least as fine as the plot grid is its own fine curve
+    curves = table if fine.size == len(table) else force_table(spec, fine)
     return EngineResult(spec=spec, settings=settings, table=table, curves=curves,
                         summary=summarize(curves, spec))

@@ -13,7 +13,10 @@ import numpy as np
 from crankbase.errors import Problem
 
 __all__ = ["plot_indicator", "plot_pressure", "plot_piston_forces", "plot_nkt",
-           "plot_torque", "plot_polar", "plot_developed", "figures", "PLOT_NAMES", "LANGS"]
+           "plot_torque", "plot_polar", "plot_developed", "figures", "PLOT_NAMES", "LANGS",
+           "plot_total_torque", "plot_excess_work", "plot_force_locus", "plot_moment_locus",
+           "plot_free_forces", "plot_free_moments", "plot_crankshaft", "train_figures",
+           "TRAIN_PLOT_NAMES"]
 
 #: File stems of the report's figures, in order.
 PLOT_NAMES = ("indicator", "forces_P", "forces_NKT", "torque", "polar_Rshsh",
@@ -287,3 +290,268 @@ def figures(result, lang="ru"):
                                         plot_polar, plot_developed)):
         out[name] = f(result, None, lang).figure
     return out
+
+
+# ------------------------------------------------------------------ the whole engine
+
+#: File stems of the whole engine's figures, in order.
+TRAIN_PLOT_NAMES = ("torque_total", "excess_work", "free_force_locus", "free_moment_locus",
+                    "free_forces", "free_moments", "crankshaft")
+
+_TRAIN_TXT = {
+    "ru": dict(theta="θ, ° п.к.в. (угол поворота коленчатого вала, α цилиндра 1)",
+               M="Mкр, Н·м", Mtot="Mкр суммарный", cyl="цилиндры 1…{n} (по отдельности)",
+               mean="Mкр.ср = {v:.1f} Н·м", tq="Суммарный крутящий момент",
+               work="∫(Mкр − Mкр.ср)dθ, Дж", wt="Избыточная работа", L="Lизб = {v:.1f} Дж",
+               Fx="Fx, кН", Fy="Fy, кН", Mx="Mx, Н·м", My="My, Н·м",
+               Floc="Свободная сила (годограф за оборот)",
+               Mloc="Свободный момент (годограф за оборот)",
+               Fa="Свободная сила по углу", Ma="Свободный момент по углу",
+               before="без противовесов", after="с противовесами",
+               force="сила, кН", moment="момент, Н·м",
+               crank="Схема коленчатого вала (вид со стороны маховика)",
+               bank="ряд {b}", throw="колено {k}: цил. {c}", order="порядок работы: {o}",
+               rot="вращение", throws="углы колен от 1-го по вращению: {t}",
+               side="Схема вдоль вала (z от цилиндра 1, мм)", cw="противовес",
+               Mmax="max {v:.0f} Н·м ({a:g}°)", Mmin="min {v:.0f} Н·м ({a:g}°)"),
+    "en": dict(theta="θ, crank deg (crankshaft angle, α of cylinder 1)",
+               M="$M$, N·m", Mtot="total torque $M$", cyl="cylinders 1…{n} (each)",
+               mean="$M_{{mean}}$ = {v:.1f} N·m", tq="Total engine torque",
+               work="∫($M$ − $M_{mean}$)dθ, J", wt="Excess work",
+               L="$L_{{exc}}$ = {v:.1f} J",
+               Fx="$F_x$, kN", Fy="$F_y$, kN", Mx="$M_x$, N·m", My="$M_y$, N·m",
+               Floc="Free force (locus over one revolution)",
+               Mloc="Free moment (locus over one revolution)",
+               Fa="Free force over the crank angle", Ma="Free moment over the crank angle",
+               before="without counterweights", after="with counterweights",
+               force="force, kN", moment="moment, N·m",
+               crank="Crankshaft (seen from the flywheel end)",
+               bank="bank {b}", throw="throw {k}: cyl. {c}", order="firing order: {o}",
+               rot="rotation", throws="throw angles from throw 1, in rotation: {t}",
+               side="Along the crankshaft (z from cylinder 1, mm)", cw="counterweight",
+               Mmax="max {v:.0f} N·m ({a:g}°)", Mmin="min {v:.0f} N·m ({a:g}°)"),
+}
+
+
+def _ttexts(lang):
+    _texts(lang)
+    return _TRAIN_TXT[lang]
+
+
+def _theta_axis(ax, cycle, t):
+    ax.set_xlim(0, cycle)
+    ax.set_xticks(np.arange(0, cycle + 1, 90 if cycle > 360 else 45))
+    ax.set_xlabel(t["theta"])
+    ax.grid(True, lw=0.4, alpha=0.6)
+    ax.axhline(0, color="k", lw=0.7)
+
+
+def plot_total_torque(result, ax=None, lang="ru"):
+    """Total torque over the cycle: each cylinder's curve faint, the sum, its mean, max
+    and min. ``result``: :class:`engine.EngineTrainResult`. Returns the Axes."""
+    t = _ttexts(lang)
+    ax = _axes(ax, (10, 6), bottom=0.2, left=0.09)
+    c, s = result.curves, result.summary
+    th = c["alpha_deg"].to_numpy()
+    n = result.layout.n
+    for j in range(n):
+        ax.plot(th, c[f"M_{j + 1}_Nm"].to_numpy(), color="0.55", lw=0.6, ls=":",
+                label=t["cyl"].format(n=n) if j == 0 else None)
+    ax.plot(th, c["M_total_Nm"].to_numpy(), color="C0", lw=1.6, label=t["Mtot"])
+    ax.axhline(s.M_mean_Nm, color="C3", ls="--", lw=1.1, label=t["mean"].format(v=s.M_mean_Nm))
+    for v, a, key, off in ((s.M_max_Nm, s.alpha_M_max_deg, "Mmax", (6, 4)),
+                           (s.M_min_Nm, s.alpha_M_min_deg, "Mmin", (6, -12))):
+        ax.plot([a], [v], "o", color="C3", ms=4)
+        ax.annotate(t[key].format(v=v, a=a), (a, v), xytext=off, textcoords="offset points",
+                    fontsize=8, color="C3")
+    _theta_axis(ax, result.layout.cycle_deg, t)
+    ax.set_ylabel(t["M"])
+    # below the axes: the curves fill the whole plot, a legend inside would cover them
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.11), ncol=3, fontsize=8,
+              frameon=False)
+    ax.set_title(f"{t['tq']}: {result.cylinder.spec.name}, μ = {s.mu:.3f}")
+    return ax
+
+
+def plot_excess_work(result, ax=None, lang="ru"):
+    """The running excess work ∫(M − Mср)dθ over the cycle with Lизб marked. Returns the
+    Axes."""
+    t = _ttexts(lang)
+    ax = _axes(ax)
+    c = result.curves
+    th, w = c["alpha_deg"].to_numpy(), c["work_J"].to_numpy()
+    ax.plot(th, w, color="C0", lw=1.5)
+    i, k = int(np.argmax(w)), int(np.argmin(w))
+    for idx in (i, k):
+        ax.axhline(w[idx], color="0.4", lw=0.7, ls="--")
+    x = th[i] if abs(th[i] - th[k]) > 20 else th[i] + 20
+    ax.annotate("", xy=(x, w[i]), xytext=(x, w[k]),
+                arrowprops=dict(arrowstyle="<->", color="C3", lw=1.2))
+    right = x > 0.75 * result.layout.cycle_deg
+    ax.annotate(t["L"].format(v=result.summary.L_excess_J), (x, (w[i] + w[k]) / 2),
+                xytext=(-6 if right else 6, 0), textcoords="offset points", color="C3",
+                fontsize=9, ha="right" if right else "left", va="center")
+    _theta_axis(ax, result.layout.cycle_deg, t)
+    ax.set_ylabel(t["work"])
+    ax.set_title(f"{t['wt']}: {result.cylinder.spec.name}")
+    return ax
+
+
+def _min_extent(result, kind):
+    """Smallest half-range of a force (kN) or moment (N·m) axis: 2 % of the engine's
+    first-order inertia force (times its length), so that round-off of a balanced
+    engine (~1e-13) is drawn as the zero it is."""
+    spec, lay = result.cylinder.spec, result.layout
+    F = lay.n * spec.mj * spec.R * spec.omega ** 2
+    if kind == "F":
+        return 0.02 * F * 1e-3
+    return 0.02 * F * max(float(np.ptp(lay.z)), spec.bore)
+
+
+def _locus(ax, result, kind, t):
+    b = result.balance_curves
+    unit = "N" if kind == "F" else "Nm"
+    scale = 1e-3 if kind == "F" else 1.0
+    for key, label, style in (("after", t["after"], dict(color="C0", ls="-", lw=2.6,
+                                                         alpha=0.45)),
+                              ("before", t["before"], dict(color="C1", ls="--", lw=1.2))):
+        if key == "before":
+            x = b[f"{kind}j_x_{unit}"] + b[f"{kind}r_x_{unit}"]
+            y = b[f"{kind}j_y_{unit}"] + b[f"{kind}r_y_{unit}"]
+        else:
+            x, y = b[f"{kind}_x_{unit}"], b[f"{kind}_y_{unit}"]
+        x, y = x.to_numpy() * scale, y.to_numpy() * scale
+        ax.plot(x, y, label=label, **style)
+        ax.plot(x[:1], y[:1], "o" if key == "after" else "s", color=style["color"], ms=5)
+    ax.plot([0], [0], "k+", ms=10)
+    lim = _min_extent(result, kind)
+    ax.plot([-lim, lim], [-lim, lim], alpha=0)          # keeps at least this extent
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.grid(True, lw=0.4, alpha=0.6)
+    ax.legend(loc="upper right", fontsize=8)
+
+
+def plot_force_locus(result, ax=None, lang="ru"):
+    """Locus of the free force vector over one revolution, before and after the
+    counterweights (the marker is θ = 0). Returns the Axes."""
+    t = _ttexts(lang)
+    ax = _axes(ax, (7, 7), left=0.14, bottom=0.09)
+    _locus(ax, result, "F", t)
+    ax.set_xlabel(t["Fx"])
+    ax.set_ylabel(t["Fy"])
+    ax.set_title(f"{t['Floc']}: {result.cylinder.spec.name}", fontsize=10)
+    return ax
+
+
+def plot_moment_locus(result, ax=None, lang="ru"):
+    """Locus of the free moment vector over one revolution, before and after the
+    counterweights. Returns the Axes."""
+    t = _ttexts(lang)
+    ax = _axes(ax, (7, 7), left=0.14, bottom=0.09)
+    _locus(ax, result, "M", t)
+    ax.set_xlabel(t["Mx"])
+    ax.set_ylabel(t["My"])
+    ax.set_title(f"{t['Mloc']}: {result.cylinder.spec.name}", fontsize=10)
+    return ax
+
+
+def _over_alpha(ax, result, kind, t):
+    b = result.balance_curves
+    th = b["alpha_deg"].to_numpy()
+    unit = "N" if kind == "F" else "Nm"
+    scale = 1e-3 if kind == "F" else 1.0
+    sym = {"F": ("F_x", "F_y"), "M": ("M_x", "M_y")}[kind]
+    for key, lab, styles in (("after", t["after"], ("-", "-")),
+                             ("before", t["before"], ("--", "-."))):
+        for comp, name, ls, col in (("x", sym[0], styles[0], "C0"),
+                                    ("y", sym[1], styles[1], "C3")):
+            if key == "before":
+                v = b[f"{kind}j_{comp}_{unit}"] + b[f"{kind}r_{comp}_{unit}"]
+            else:
+                v = b[f"{kind}_{comp}_{unit}"]
+            after = key == "after"
+            ax.plot(th, v.to_numpy() * scale, ls=ls, color=col if after else
+                    ("C1" if comp == "x" else "C2"), lw=2.6 if after else 1.2,
+                    alpha=0.4 if after else 1.0, label=f"${name}$, {lab}")
+    lim = _min_extent(result, kind)
+    lo, hi = ax.get_ylim()
+    ax.set_ylim(min(lo, -lim), max(hi, lim))
+    _theta_axis(ax, 360.0, t)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.11), ncol=4, fontsize=8,
+              frameon=False)
+
+
+def plot_free_forces(result, ax=None, lang="ru"):
+    """Free force components over one revolution, before and after the counterweights.
+    Returns the Axes."""
+    t = _ttexts(lang)
+    ax = _axes(ax, (10, 6), bottom=0.2, left=0.1)
+    _over_alpha(ax, result, "F", t)
+    ax.set_ylabel(t["force"])
+    ax.set_title(f"{t['Fa']}: {result.cylinder.spec.name}")
+    return ax
+
+
+def plot_free_moments(result, ax=None, lang="ru"):
+    """Free moment components over one revolution, before and after the counterweights.
+    Returns the Axes."""
+    t = _ttexts(lang)
+    ax = _axes(ax, (10, 6), bottom=0.2, left=0.1)
+    _over_alpha(ax, result, "M", t)
+    ax.set_ylabel(t["moment"])
+    ax.set_title(f"{t['Ma']}: {result.cylinder.spec.name}")
+    return ax
+
+
+def plot_crankshaft(result, ax=None, lang="ru"):
+    """The crankshaft seen from the flywheel end at θ = 0: the bank axes, each throw with
+    its cylinders, the rotation and the firing order. Returns the Axes."""
+    t = _ttexts(lang)
+    ax = _axes(ax, (7.5, 8))
+    lay = result.layout
+    cyl = lay.cylinders
+    g1 = float(lay.bank_deg[0])
+    banks = sorted(set(zip(cyl["bank"], cyl["bank_angle_deg"])))
+    for b, gam in banks:
+        d = np.exp(1j * np.radians(90 + gam))
+        ax.plot([0, 1.55 * d.real], [0, 1.55 * d.imag], color="0.45", lw=1.0, ls="--")
+        ax.annotate(t["bank"].format(b=b), (1.72 * d.real, 1.72 * d.imag), ha="center",
+                    va="center", fontsize=9, color="0.3")
+    from matplotlib.patches import Circle
+
+    ax.add_patch(Circle((0, 0), 1.0, fill=False, color="0.8", lw=0.8))
+    groups = {}                                  # throws at the same angle: one label
+    for k, tau in enumerate(lay.throw_angles_deg):
+        groups.setdefault(round(tau % 360.0, 6), []).append(k)
+    for g, (tau, ks) in enumerate(sorted(groups.items())):
+        d = np.exp(1j * np.radians(90 + g1 + tau))
+        members = ", ".join(str(c) for k in ks
+                            for c in cyl["cylinder"][cyl["throw"] == k + 1])
+        ax.annotate("", xy=(d.real, d.imag), xytext=(0, 0),
+                    arrowprops=dict(arrowstyle="-|>", color=f"C{g % 10}", lw=2.2))
+        label = t["throw"].format(k=", ".join(str(k + 1) for k in ks), c=members)
+        ax.annotate(label, (1.2 * d.real, 1.2 * d.imag), ha="center", va="center",
+                    fontsize=8, color=f"C{g % 10}")
+    ax.annotate("", xy=(-0.35, 0.18), xytext=(0.35, 0.18),
+                arrowprops=dict(arrowstyle="-|>", connectionstyle="arc3,rad=0.5",
+                                color="k", lw=1.0))
+    ax.text(0, 0.36, t["rot"], ha="center", fontsize=8)
+    ax.plot([0], [0], "ko", ms=4)
+    ax.set_xlim(-1.9, 1.9)
+    ax.set_ylim(-1.9, 1.9)
+    ax.set_aspect("equal")
+    ax.set_xticks([])
+    ax.set_yticks([])
+    order = "-".join(str(c) for c in lay.firing_order)
+    throws = ", ".join(f"{x:g}°" for x in lay.throw_angles_deg)
+    ax.set_xlabel(t["order"].format(o=order) + "\n" + t["throws"].format(t=throws),
+                  fontsize=9)
+    ax.set_title(f"{t['crank']}: {result.cylinder.spec.name}", fontsize=10)
+    return ax
+
+
+def train_figures(result, lang="ru"):
+    """The whole engine's figures, ``{stem: Figure}`` in :data:`TRAIN_PLOT_NAMES` order."""
+    funcs = (plot_total_torque, plot_excess_work, plot_force_locus, plot_moment_locus,
+             plot_free_forces, plot_free_moments, plot_crankshaft)
+    return {name: f(result, None, lang).figure for name, f in zip(TRAIN_PLOT_NAMES, funcs)}

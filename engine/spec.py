@@ -31,7 +31,8 @@ from crankbase.validation import MAX_ROWS, Checker, read_toml, rows_problem
 from .indicator import JOIN_AFTER_PEAK_DEG, CycleSpec, PressureTable, sharp_cycle_pressure
 from .kinematics import piston_travel
 
-__all__ = ["EngineSpec", "TableSettings", "EngineStudy", "CycleSpec", "PressureTable",
+__all__ = ["EngineSpec", "TableSettings", "EngineStudy", "CrankTrain", "Counterweight",
+           "ARRANGEMENTS", "COUNTERWEIGHT_DESIGNS", "CycleSpec", "PressureTable",
            "EngineSpecError", "load", "load_spec", "PRESSURE_UNITS", "read_pressure_csv",
            "ROD_SMALL_END_FRACTION"]
 
@@ -341,19 +342,141 @@ class TableSettings:
             raise EngineSpecError(problems)
 
 
+#: Crank-train arrangements.
+ARRANGEMENTS = ("inline", "vee", "boxer")
+#: Automatic counterweight designs ([balance] counterweights).
+COUNTERWEIGHT_DESIGNS = ("none", "throws", "throws+first_order")
+
+
+@dataclass(frozen=True)
+class Counterweight:
+    """One counterweight: an unbalanced mass·radius on a crank web.
+
+    Attributes
+    ----------
+    z : float
+        Axial position, from cylinder 1's axis towards the flywheel. [m]
+    mr : float
+        Mass times the radius of its centre of mass. [kg·m]
+    angle_deg : float
+        Its direction from throw 1, in the direction of rotation. [deg]
+    """
+
+    z: float
+    mr: float
+    angle_deg: float
+
+
+@dataclass(frozen=True)
+class CrankTrain:
+    """The inputs of the crank train, the flywheel estimate and the balance (inputs only).
+
+    Attributes
+    ----------
+    arrangement : {"inline", "vee", "boxer"}
+    vee_angle_deg : float or None
+        Angle between the banks of a vee, in (0°, 180°). [deg]
+    firing_order : tuple of int or None
+        A permutation of 1…i (default: :data:`DEFAULT_FIRING_ORDERS`).
+    cylinder_spacing : float or None
+        Distance between neighbouring cylinder axes of one bank along the crankshaft
+        (None: 0, a planar engine without moments). [m]
+    bank_offset : float
+        Axial offset of the second bank's rods, + towards the flywheel. [m]
+    cylinder_positions : tuple of float or None
+        Axial position of each cylinder, instead of the spacing. [m]
+    throw_angles_deg : tuple of float or None
+        Angle of each throw from throw 1 in the direction of rotation (default: the
+        even-firing crankshaft of the firing order). [deg]
+    mechanical_efficiency : float or None
+        ηм, effective from indicated figures. [-]
+    delta : float or None
+        Coefficient of cyclic irregularity δ = (ωmax − ωmin)/ωср for the flywheel. [-]
+    flywheel_share : float
+        Share of J0 taken by the flywheel, Jм/J0 (Kolchin: 0.8…0.9). [-]
+    flywheel_diameter : float or None
+        Mean diameter of the flywheel rim Dср, to give its mass. [m]
+    counterweights : {"none", "throws", "throws+first_order"}
+        Automatic design: none; one per throw sized for its rotating masses (mш.к of its
+        rods + mк), opposite the throw; and also two end counterweights that cancel the
+        forward-rotating first-order force and moment (all of it when it is a constant
+        rotating vector, as in a 90° V8 cross-plane or a 90° V-twin).
+    counterweight_list : tuple of Counterweight
+        Counterweights given one by one (instead of a design).
+    """
+
+    arrangement: str = "inline"
+    vee_angle_deg: float | None = None
+    firing_order: tuple | None = None
+    cylinder_spacing: float | None = None
+    bank_offset: float = 0.0
+    cylinder_positions: tuple | None = None
+    throw_angles_deg: tuple | None = None
+    mechanical_efficiency: float | None = None
+    delta: float | None = None
+    flywheel_share: float = 0.85
+    flywheel_diameter: float | None = None
+    counterweights: str = "none"
+    counterweight_list: tuple = field(default=())
+
+    def __post_init__(self):
+        problems = []
+        if self.arrangement not in ARRANGEMENTS:
+            problems.append(Problem("arrangement", f"got {self.arrangement!r}; valid: "
+                                    + ", ".join(ARRANGEMENTS)))
+        if self.arrangement == "vee":
+            v = self.vee_angle_deg
+            if not (isinstance(v, (int, float)) and math.isfinite(v) and 0 < v < 180):
+                problems.append(Problem("vee_angle_deg", f"got {v!r}; a vee needs an angle "
+                                                         "between the banks in (0°, 180°)"))
+        elif self.vee_angle_deg is not None:
+            problems.append(Problem("vee_angle_deg", "only used with arrangement = 'vee'"))
+        if self.counterweights not in COUNTERWEIGHT_DESIGNS:
+            problems.append(Problem("counterweights", f"got {self.counterweights!r}; valid: "
+                                    + ", ".join(COUNTERWEIGHT_DESIGNS)))
+        if self.counterweight_list and self.counterweights != "none":
+            problems.append(Problem("counterweights", "give a design or a list of "
+                                                      "counterweights, not both"))
+        for key in ("mechanical_efficiency", "delta"):
+            v = getattr(self, key)
+            if v is not None and not (math.isfinite(v) and 0 < v <= 1):
+                problems.append(Problem(key, f"got {v!r}; must be > 0 and <= 1"))
+        if not (math.isfinite(self.flywheel_share) and 0 < self.flywheel_share <= 1):
+            problems.append(Problem("flywheel_share", f"got {self.flywheel_share!r}; must be "
+                                                      "> 0 and <= 1"))
+        if problems:
+            raise EngineSpecError(problems)
+
+    @property
+    def bank_angles_deg(self) -> tuple:
+        """Bank angles γ of the first and (vee, boxer) second bank. [deg]"""
+        if self.arrangement == "inline":
+            return (0.0,)
+        half = 90.0 if self.arrangement == "boxer" else self.vee_angle_deg / 2.0
+        return (-half, half)
+
+
+
 @dataclass(frozen=True)
 class EngineStudy:
-    """What an engine spec file holds: the physics and the report settings."""
+    """What an engine spec file holds: the one-cylinder physics, the report settings and
+    the crank train of the whole engine."""
 
     spec: EngineSpec
     settings: TableSettings
+    train: CrankTrain = field(default_factory=lambda: CrankTrain())
 
 
 # ----------------------------------------------------------------------------- loader
 
 _ENGINE_KEYS = ("name", "strokes", "cylinders", "bore_mm", "stroke_mm", "rod_ratio",
                 "rod_length_mm", "speed_rpm", "crankcase_MPa", "acceleration",
-                "compression_ratio", "pin_offset_mm")
+                "compression_ratio", "pin_offset_mm", "arrangement", "vee_angle_deg",
+                "firing_order", "cylinder_spacing_mm", "bank_offset_mm",
+                "cylinder_positions_mm", "throw_angles_deg", "mechanical_efficiency")
+_FLYWHEEL_KEYS = ("delta", "share", "mean_diameter_mm")
+_BALANCE_KEYS = ("counterweights", "counterweight")
+_COUNTERWEIGHT_KEYS = ("z_mm", "mr_kg_mm", "angle_deg")
 _MASS_DIRECT = ("reciprocating_kg", "rod_rotating_kg")
 _MASS_PARTS = ("piston_group_kg", "rod_kg")
 _MASS_AREA = ("piston_group_kg_m2", "rod_kg_m2")
@@ -429,7 +552,8 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
         base = Path(base_dir) if base_dir is not None else Path.cwd()
         source_path = None
     c = Checker()
-    c.unknown(data, ("engine", "masses", "pressure", "table", "rod", "bearings"))
+    c.unknown(data, ("engine", "masses", "pressure", "table", "flywheel", "balance", "rod",
+                     "bearings"))
 
     # ---- [engine]
     e = c.table(data, "engine")
@@ -559,6 +683,8 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
     mu = c.number(t, "force_scale_N_per_mm", "table", gt=0,
                   what="the force scale μP [N/mm]")
 
+    train = _crank_train(c, data, e, cylinders)
+
     if isinstance(pressure, CycleSpec) and pressure.rounding and not c.problems:
         _check_rounded_peak(c, pressure, lam if lam is not None else stroke / 2.0 / L_mm,
                             offset / (stroke / 2.0))
@@ -576,7 +702,84 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
         rod_small_end_fraction=frac, **masses)
     settings = TableSettings(step_deg=step, extra_angles_deg=tuple(sorted(set(extra or []))),
                              force_scale=mu)
-    return EngineStudy(spec, settings)
+    return EngineStudy(spec, settings, train)
+
+
+def _crank_train(c, data, e, cylinders):
+    """The crank train of ``[engine]``, ``[flywheel]`` and ``[balance]`` (None on a
+    problem, which is recorded in ``c``)."""
+    n0 = len(c.problems)
+    arr = c.choice(e, "arrangement", ARRANGEMENTS, "engine", required=False,
+                   default="inline")
+    vee = c.number(e, "vee_angle_deg", "engine", required=False, gt=0, lt=180,
+                   what="the angle between the banks")
+    if arr == "vee" and "vee_angle_deg" not in e:
+        c.add("engine.vee_angle_deg", "missing; a vee needs the angle between its banks, "
+                                      "in (0°, 180°)")
+    elif arr != "vee" and "vee_angle_deg" in e:
+        c.add("engine.vee_angle_deg", "only used with arrangement = \"vee\"")
+    order = c.numbers(e, "firing_order", "engine", required=False)
+    if order is not None:
+        if any(x != int(x) for x in order):
+            c.add("engine.firing_order", f"got {order}; cylinder numbers are whole numbers")
+            order = None
+        else:
+            order = tuple(int(x) for x in order)
+            n = cylinders or 0
+            if sorted(order) != list(range(1, n + 1)):
+                c.add("engine.firing_order", f"got {list(order)}; must be a permutation of "
+                                             f"the cylinders 1…{n}, each once")
+    spacing = c.number(e, "cylinder_spacing_mm", "engine", required=False, gt=0)
+    boff = c.number(e, "bank_offset_mm", "engine", required=False, default=0.0)
+    if "bank_offset_mm" in e and arr == "inline":
+        c.add("engine.bank_offset_mm", "only used with a vee or boxer (two banks)")
+    positions = c.numbers(e, "cylinder_positions_mm", "engine", required=False)
+    if positions is not None and spacing is not None:
+        c.add("engine.cylinder_positions_mm", "give cylinder_spacing_mm or "
+                                              "cylinder_positions_mm, not both")
+    throws = c.numbers(e, "throw_angles_deg", "engine", required=False)
+    eta = c.number(e, "mechanical_efficiency", "engine", required=False, gt=0, le=1)
+    fw = c.table(data, "flywheel", required=False)
+    c.unknown(fw, _FLYWHEEL_KEYS, "flywheel")
+    delta = c.number(fw, "delta", "flywheel", required=False, gt=0, le=1)
+    share = c.number(fw, "share", "flywheel", required=False, default=0.85, gt=0, le=1)
+    dia = c.number(fw, "mean_diameter_mm", "flywheel", required=False, gt=0)
+    bal = c.table(data, "balance", required=False)
+    c.unknown(bal, _BALANCE_KEYS, "balance")
+    design = c.choice(bal, "counterweights", COUNTERWEIGHT_DESIGNS, "balance",
+                      required=False, default="none")
+    cws = []
+    raw = bal.get("counterweight", []) if isinstance(bal, dict) else []
+    if not isinstance(raw, list):
+        c.add("balance.counterweight", "must be an array of tables [[balance.counterweight]]"
+                                       " with z_mm, mr_kg_mm, angle_deg")
+        raw = []
+    for i, cw in enumerate(raw):
+        where = f"balance.counterweight[{i}]"
+        if not isinstance(cw, dict):
+            c.add(where, f"must be a table with z_mm, mr_kg_mm, angle_deg; got {cw!r}")
+            continue
+        c.unknown(cw, _COUNTERWEIGHT_KEYS, where)
+        z = c.number(cw, "z_mm", where)
+        mr = c.number(cw, "mr_kg_mm", where, ge=0)
+        ang = c.number(cw, "angle_deg", where)
+        if None not in (z, mr, ang):
+            cws.append(Counterweight(z / 1000.0, mr / 1e3, ang))
+    if cws and "counterweights" in bal and design != "none":
+        c.add("balance.counterweights", "give a design or [[balance.counterweight]] "
+                                        "tables, not both")
+    if len(c.problems) > n0:
+        return None
+    return CrankTrain(
+        arrangement=arr, vee_angle_deg=vee, firing_order=order,
+        cylinder_spacing=None if spacing is None else spacing / 1000.0,
+        bank_offset=boff / 1000.0,
+        cylinder_positions=None if positions is None else tuple(x / 1000.0
+                                                                for x in positions),
+        throw_angles_deg=None if throws is None else tuple(throws),
+        mechanical_efficiency=eta, delta=delta, flywheel_share=share,
+        flywheel_diameter=None if dia is None else dia / 1000.0, counterweights=design,
+        counterweight_list=tuple(cws))
 
 
 def load_spec(path_or_dict, base_dir=None) -> EngineSpec:

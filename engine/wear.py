@@ -32,15 +32,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from crankbase.errors import Problem, SpecError
+from crankbase.tolerances import WEAR_ARC_EDGE_DEG, WEAR_TIE_RTOL
 
 __all__ = ["wear_profile", "least_wear_direction", "WearDiagram", "wear_diagram",
            "DEFAULT_HALF_ANGLE_DEG"]
 
 #: Half-angle of the arc each load wears, as in the textbooks [1]_. [deg]
 DEFAULT_HALF_ANGLE_DEG = 60.0
-#: A contact point this close to the end of an arc counts as inside it (the ends belong to
-#: the arc; angles computed through atan2 and a shift carry ~1e-13° of round-off). [deg]
-_EDGE_DEG = 1e-9
 
 
 def _weights(alpha_deg):
@@ -96,17 +94,18 @@ def wear_profile(contact_deg, magnitude, half_angle_deg=DEFAULT_HALF_ANGLE_DEG,
     order = np.argsort(c, kind="stable")
     ce = np.concatenate([c[order] - 360.0, c[order], c[order] + 360.0])
     cum = np.concatenate([[0.0], np.cumsum(np.tile(v[order], 3))])
-    lo = np.searchsorted(ce, phi - half_angle_deg - _EDGE_DEG, side="left")
-    hi = np.searchsorted(ce, phi + half_angle_deg + _EDGE_DEG, side="right")
+    lo = np.searchsorted(ce, phi - half_angle_deg - WEAR_ARC_EDGE_DEG, side="left")
+    hi = np.searchsorted(ce, phi + half_angle_deg + WEAR_ARC_EDGE_DEG, side="right")
     return phi, cum[hi] - cum[lo]
 
 
 def least_wear_direction(phi_deg, wear):
     """Direction of least wear (where the oil hole goes): the middle of the longest run
-    of points at the minimum (ties within 1e-9 of the range), wrapping around. [deg]"""
+    of points at the minimum (ties within ``WEAR_TIE_RTOL`` of the range), wrapping
+    around. [deg]"""
     phi = np.asarray(phi_deg, float)
     y = np.asarray(wear, float)
-    tol = 1e-9 * max(float(np.ptp(y)), float(np.max(np.abs(y))), 1e-300)
+    tol = WEAR_TIE_RTOL * max(float(np.ptp(y)), float(np.max(np.abs(y))), 1e-300)
     at_min = y <= y.min() + tol
     n = len(y)
     if at_min.all():

@@ -204,6 +204,37 @@ SUMMARY_NOTE = {
           "over the cycle. Mкр mean and Rшш mean are for one cylinder.",
 }
 
+#: The English template uses the English textbooks' symbols: no Cyrillic anywhere (the
+#: Russian subscripts are replaced, longest first, after the sheets are built).
+EN_SYMBOLS = [
+    ("Kr.ш = −mш.к·R·ω²", "Kr = −mr,rot·R·ω²"), ("mj = mп + mш.п", "mj = mp + mr,rec"),
+    ("χ = Rшш.max/Rшш.ср", "χ = Rcp,max/Rcp,mean"), ("Mкр.ср", "M mean"),
+    ("Rшш.ср", "Rcp,mean"), ("ΔPг", "ΔPg"), ("pг max", "pg max"), ("pг", "pg"),
+    ("vп.ср", "vp,mean"), ("Fп", "Ap"), ("Rшш", "Rcp"), ("Mкр", "M"), ("Kr.ш", "Kr"),
+    ("mш.к", "mr,rot"), ("mш.п", "mr,rec"), ("mш", "mr"), ("mп", "mp"), ("mк", "mc"),
+    ("Lш", "L"), ("Sш", "S"), ("pzд", "pz,real"), ("Oш", "Or"),
+]
+
+
+def english_symbols(text):
+    """An English template string with the Russian symbols replaced by English ones."""
+    for ru, en in EN_SYMBOLS:
+        text = text.replace(ru, en)
+    return text
+
+
+def _check_no_cyrillic(wb):
+    import re
+
+    cyrillic = re.compile("[\u0400-\u04ff]")
+    for ws in wb.worksheets:
+        for row in ws.iter_rows():
+            for c in row:
+                if isinstance(c.value, str) and cyrillic.search(c.value):
+                    raise ValueError(f"Cyrillic left in the English template: {ws.title}!"
+                                     f"{c.coordinate} {c.value!r}")
+
+
 THIN = Side(style="thin", color="000000")
 BORDER = Border(left=THIN, right=THIN, top=THIN, bottom=THIN)
 HEAD_FILL = PatternFill("solid", fgColor="DDE4EE")
@@ -387,6 +418,13 @@ def build(lang: str, path: Path) -> None:
     ws_ch["A1"].font = title
     _fit_width(ws_ch, "portrait")
 
+    if lang == "en":
+        for ws in wb.worksheets:
+            for row in ws.iter_rows():
+                for c in row:
+                    if isinstance(c.value, str):
+                        c.value = english_symbols(c.value)
+        _check_no_cyrillic(wb)
     wb.properties.title = TITLE[lang][1]
     wb.properties.creator = "crankdyn"
     wb.save(path)

@@ -95,6 +95,27 @@ def test_vee_pin_is_the_vector_sum_of_two_cylinders(vee, phase2):
     assert np.max(np.abs(T - T_ref)) < 1e-10 * scale
 
 
+@settings(max_examples=25, deadline=None)
+@given(st.floats(-170.0, 170.0), st.floats(0.0, 359.0), st.booleans(),
+       st.floats(-60.0, 60.0))
+def test_vee_pin_hypothesis(bank2, tau, late, bank1):
+    """Random banks γ1, γ2 and throw angle τ: the phases γ − τ (+ 360° for the second
+    cylinder when it fires in the other revolution); the pin load in the throw's crank
+    frame equals the engine-frame vector sum turned into it."""
+    spec = make()
+    theta = np.linspace(0.0, 720.0, 37)
+    cyl = [(bank1, (bank1 - tau) % 360.0), (bank2, (bank2 - tau) % 360.0 + 360.0 * late)]
+    tabs = [engine.force_table(spec, cylinder_alpha(theta, ph, 720.0)) for _, ph in cyl]
+    K, T = crank_pin_load(np.stack([t["K_N"] for t in tabs]),
+                          np.stack([t["T_N"] for t in tabs]),
+                          [spec.m_rod_rot] * 2, spec.R, spec.omega)
+    F = sum(_rod_force_engine_frame(t, g, spec) for t, (g, _) in zip(tabs, cyl))
+    e = np.exp(1j * np.radians(90.0 + theta + tau))
+    scale = np.max(np.abs(F))
+    assert np.max(np.abs(K - (F.real * -e.real + F.imag * -e.imag))) < 1e-10 * scale
+    assert np.max(np.abs(T - (F.real * -e.imag + F.imag * e.real))) < 1e-10 * scale
+
+
 # ------------------------------------------------------------------ crankshaft
 
 

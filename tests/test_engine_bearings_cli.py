@@ -13,7 +13,7 @@ import engine
 from crankdyn.cli import main
 from crankbase.resources import example_path
 from engine.bearing_plots import BEARING_PLOT_NAMES
-from engine.bearing_spec import bearing_analysis
+from engine.bearing_spec import bearing_analysis, read_bearing_inputs
 
 CSVS = ("crankpins.csv", "journals.csv", "journal_torques.csv", "rod_bearings.csv",
         "wear.csv")
@@ -47,11 +47,12 @@ def _toml(d):
 
 
 def test_bearings_flag_writes_tables_equal_to_the_library(tmp_path, capsys):
+    """The diesel example, an inline 4 (firing 1-3-4-2, counterweights per throw)."""
     out = tmp_path / "o"
     assert main(["engine", "--example", "diesel", "-o", str(out), "--bearings",
                  "--lang", "en"]) == 0
     text = capsys.readouterr().out
-    assert "crank pin          max    41618 N at alpha = 372 deg" in text
+    assert "crank pins         most loaded:" in text and "main journals      most" in text
     names = {p.name for p in out.iterdir()}
     assert set(CSVS) <= names and "rod_model.csv" not in names
     for stem in BEARING_PLOT_NAMES[:-1]:
@@ -60,18 +61,76 @@ def test_bearings_flag_writes_tables_equal_to_the_library(tmp_path, capsys):
     study = engine.load(example_path("diesel_d240.toml"))
     spec = study.spec
     t = engine.force_table(spec, settings=study.settings)
-    res = bearing_analysis(spec, t)
+    theta = t["alpha_deg"].to_numpy()
+    cyl = pd.read_csv(out / "cylinders.csv")
     pins = pd.read_csv(out / "crankpins.csv")
-    np.testing.assert_array_equal(pins.to_numpy(), res.loads.crankpins.to_numpy())
-    np.testing.assert_array_equal(pins["R_1_N"].to_numpy(), t["R_N"].to_numpy())
+    # inline: one rod per pin, so pin k's load is cylinder k's Rшш at its own phase
+    for k, phase in zip(cyl["throw"], cyl["phase_deg"]):
+        tk = engine.force_table(spec, theta, phase_deg=phase)
+        np.testing.assert_allclose(pins[f"R_{k}_N"], tk["R_N"], rtol=1e-12)
+        np.testing.assert_allclose(pins[f"psi_{k}_deg"], tk["psi_deg"], atol=1e-9)
+    # the last main journal carries the engine's total torque (torque.csv)
     tq = pd.read_csv(out / "journal_torques.csv")
-    np.testing.assert_allclose(tq["M_2_Nm"], t["M_Nm"], rtol=1e-15)
+    total = pd.read_csv(out / "torque.csv")
+    assert list(tq.columns) == ["alpha_deg"] + [f"M_{j}_Nm" for j in range(1, 6)]
+    both = tq.merge(total, on="alpha_deg")          # torque.csv has no extra angles
+    assert len(both) == len(total)
+    np.testing.assert_allclose(both["M_5_Nm"], both["M_total_Nm"], rtol=1e-10, atol=1e-6)
+    assert (tq["M_1_Nm"] == 0).all()
     wear = pd.read_csv(out / "wear.csv")
-    assert list(wear.columns) == ["phi_deg", "wear_pin_1_Ndeg", "wear_journal_1_Ndeg",
-                                  "wear_journal_2_Ndeg"]
+    assert list(wear.columns) == (["phi_deg"] + [f"wear_pin_{k}_Ndeg" for k in range(1, 5)]
+                                  + [f"wear_journal_{j}_Ndeg" for j in range(1, 6)])
     assert len(wear) == 360
     rb = pd.read_csv(out / "rod_bearings.csv")
     assert list(rb.columns)[-3:] == ["Pp_axial_N", "Pp_side_N", "Pp_N"]
+    # the workbook's bearing sheets hold the CSVs bit for bit, and the summary
+    from openpyxl import load_workbook
+    from engine.bearing_report import SHEET_NAMES
+    wb = load_workbook(out / "diesel-d240.xlsx")
+    for fname in CSVS:
+        rows = list(wb[SHEET_NAMES["en"][fname]].values)
+        df = pd.read_csv(out / fname)
+        assert list(rows[0]) == list(df.columns)
+        np.testing.assert_array_equal(np.array(rows[1:], float), df.to_numpy())
+    summ = {r[0]: r[1:] for r in wb[SHEET_NAMES["en"]["summary"]].values if r and r[0]}
+    assert set(summ) >= {f"Crank pin {k}, R, N" for k in range(1, 5)}
+    assert summ["Most loaded main journal"][0] in range(1, 6)
+    assert summ["Crank pin 1, R, N"][0] == pytest.approx(float(pins["R_1_N"].max()),
+                                                         rel=0.05)
+
+
+def test_one_cylinder_spec_with_bearing_tables(tmp_path, capsys):
+    """A one-cylinder spec: the [bearings] journal positions and the statistics as the
+    library gives them on the fine grid."""
+    d = tomllib.loads(example_path("diesel_d240.toml").read_text())
+    d["pressure"]["file"] = str(example_path("diesel_d240_indicator.csv"))
+    for k in ("cylinders", "firing_order", "cylinder_spacing_mm", "mechanical_efficiency"):
+        d["engine"].pop(k, None)
+    d.pop("flywheel", None)
+    d.pop("balance", None)
+    d["bearings"] = dict(journal_positions_mm=[-50.0, 70.0])
+    spec_path = tmp_path / "one.toml"
+    spec_path.write_text(_toml(d))
+    out = tmp_path / "o"
+    assert main(["engine", str(spec_path), "-o", str(out), "--lang", "en"]) == 0
+    text = capsys.readouterr().out
+    study = engine.load(spec_path)
+    spec = study.spec
+    fine = bearing_analysis(spec, engine.analyze(spec, study.settings).curves,
+                            read_bearing_inputs(spec_path, spec))
+    ps = fine.loads.pin_stats[0]
+    assert f"most loaded: 1 (max {ps.max_N:.0f} N at alpha = {ps.alpha_max_deg:g} deg" in text
+    assert (out / "wear_journals.png").exists()
+    pins = pd.read_csv(out / "crankpins.csv")
+    t = engine.force_table(spec, settings=study.settings)
+    np.testing.assert_array_equal(pins["R_1_N"].to_numpy(), t["R_N"].to_numpy())
+    from openpyxl import load_workbook
+    from engine.bearing_report import SHEET_NAMES
+    wb = load_workbook(out / "diesel-d240.xlsx")
+    summ = {r[0]: r[1:] for r in wb[SHEET_NAMES["en"]["summary"]].values if r and r[0]}
+    assert summ["Crank pin 1, R, N"][:6] == (ps.max_N, ps.alpha_max_deg, ps.min_N,
+                                             ps.alpha_min_deg, ps.mean_N, ps.chi)
+    assert summ["crank pin 1"][0] == fine.pin_wear.oil_hole_deg
 
 
 def test_rigid_rod_spec_writes_rod_model(tmp_path, capsys):
@@ -79,7 +138,7 @@ def test_rigid_rod_spec_writes_rod_model(tmp_path, capsys):
     d = copy.deepcopy(d)
     d["pressure"]["file"] = str(example_path("diesel_d240_indicator.csv"))
     d["rod"] = dict(model="rigid", inertia_kg_m2=0.030)
-    d["bearings"] = dict(wear_half_angle_deg=45.0, journal_positions_mm=[-50.0, 70.0])
+    d["bearings"] = dict(wear_half_angle_deg=45.0)
     spec_path = tmp_path / "r.toml"
     spec_path.write_text(_toml(d))
     out = tmp_path / "o"
@@ -89,10 +148,8 @@ def test_rigid_rod_spec_writes_rod_model(tmp_path, capsys):
     rm = pd.read_csv(out / "rod_model.csv")
     assert list(rm.columns[:4]) == ["alpha_deg", "K_2m_N", "K_rigid_N", "dK_N"]
     np.testing.assert_allclose(rm["dT_N"], rm["T_rigid_N"] - rm["T_2m_N"], rtol=1e-12)
-    assert (out / "rod_model.png").exists() and (out / "wear_pin.svg").exists()
-    jr = pd.read_csv(out / "journals.csv")
-    np.testing.assert_allclose(jr["R_1_N"] / (jr["R_1_N"] + jr["R_2_N"]), 70 / 120,
-                               rtol=1e-9)
+    assert (out / "rod_model.png").exists() and (out / "wear_pins.svg").exists()
+    assert (out / "wear_journals.png").exists()
 
 
 def test_bad_bearing_keys_exit_2_and_write_nothing(tmp_path, capsys):

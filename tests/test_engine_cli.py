@@ -15,11 +15,13 @@ import engine
 from crankbase.output import MANIFEST_NAME
 from crankdyn.cli import main
 from crankbase.resources import example_path
-from engine.plots import PLOT_NAMES
+from engine.plots import PLOT_NAMES, TRAIN_PLOT_NAMES
 from engine.report import TABLE2_FORCES
 
 EXAMPLES = {"petrol": ("petrol_vaz2106.toml", "petrol-vaz2106.xlsx"),
-            "diesel": ("diesel_d240.toml", "diesel-d240.xlsx")}
+            "diesel": ("diesel_d240.toml", "diesel-d240.xlsx"),
+            "six": ("petrol_bmw_m54.toml", "petrol-bmw-m54b30.xlsx"),
+            "v8": ("diesel_kamaz740.toml", "diesel-kamaz740.xlsx")}
 
 
 def run_cli(*argv):
@@ -27,7 +29,8 @@ def run_cli(*argv):
 
 
 @pytest.fixture(scope="module", params=[("petrol", "ru"), ("petrol", "en"),
-                                        ("diesel", "ru"), ("diesel", "en")],
+                                        ("diesel", "ru"), ("diesel", "en"), ("six", "en"),
+                                        ("v8", "ru"), ("v8", "en")],
                 ids=lambda p: "-".join(p))
 def run(request, tmp_path_factory):
     name, lang = request.param
@@ -39,8 +42,9 @@ def run(request, tmp_path_factory):
 def test_outputs_exist(run):
     name, lang, out = run
     files = {p.name for p in out.iterdir()}
-    expected = {"forces.csv", EXAMPLES[name][1], MANIFEST_NAME}
-    expected |= {f"{s}.{e}" for s in PLOT_NAMES for e in ("png", "svg")}
+    expected = {"forces.csv", "cylinders.csv", "torque.csv", "balance.csv", EXAMPLES[name][1],
+                MANIFEST_NAME}
+    expected |= {f"{s}.{e}" for s in PLOT_NAMES + TRAIN_PLOT_NAMES for e in ("png", "svg")}
     assert files == expected          # nothing else (no temporary files left)
 
 
@@ -60,8 +64,8 @@ def test_workbook_equals_csv(run):
     name, lang, out = run
     df = pd.read_csv(out / "forces.csv")
     wb = load_workbook(out / EXAMPLES[name][1])
-    assert len(wb.worksheets) == 5
-    ws_in, ws_t2, ws_sum, ws_data, ws_ch = wb.worksheets
+    assert len(wb.worksheets) == 9
+    ws_in, ws_t2, ws_sum, ws_data, ws_ch = wb.worksheets[:5]
     mu = engine.load(example_path(EXAMPLES[name][0])).settings.force_scale
     # Table 2: α, (mm, N) × 8 forces, Mкр, Ψ — numbers, not formulas
     assert ws_t2["C2"].value == mu
@@ -95,10 +99,11 @@ def test_table2_layout_like_the_textbook(run):
     head = [ws.cell(3, c).value for c in range(1, 20)]
     sub = [ws.cell(4, c).value for c in range(1, 20)]
     assert head[0] == "α, °"
-    assert [head[c] for c in range(1, 17, 2)] == ["ΔPг", "Pj", "P", "Sш", "N", "K", "T",
-                                                 "Rшш"]
+    symbols = (["ΔPг", "Pj", "P", "Sш", "N", "K", "T", "Rшш"] if lang == "ru" else
+               ["ΔPg", "Pj", "P", "S", "N", "K", "T", "Rcp"])   # English: no Cyrillic
+    assert [head[c] for c in range(1, 17, 2)] == symbols
     assert sub[1:17] == [mm, nn] * 8
-    assert head[17].startswith("Mкр") and head[18] == "Ψ, °"
+    assert head[17].startswith("Mкр" if lang == "ru" else "M,") and head[18] == "Ψ, °"
     merged = {str(r) for r in ws.merged_cells.ranges}
     assert {"A3:A4", "B3:C3", "P3:Q3", "R3:R4", "S3:S4"} <= merged
     title = ws["A1"].value
@@ -144,7 +149,7 @@ def test_plots_exist_and_are_not_empty(run):
     import matplotlib.image as mpimg
 
     _, _, out = run
-    for stem in PLOT_NAMES:
+    for stem in PLOT_NAMES + TRAIN_PLOT_NAMES:
         png = out / f"{stem}.png"
         img = mpimg.imread(png)
         assert img.shape[0] > 300 and img.shape[1] > 300
@@ -153,10 +158,76 @@ def test_plots_exist_and_are_not_empty(run):
         assert "<svg" in svg and svg.count("<path") > 10
 
 
+def _block(ws, first_row, first_col, n_cols):
+    rows = []
+    r = first_row
+    while ws.cell(r, first_col).value is not None:
+        rows.append([ws.cell(r, first_col + j).value for j in range(n_cols)])
+        r += 1
+    return rows
+
+
+def test_engine_csvs_equal_the_workbook_and_the_library(run):
+    """cylinders.csv, torque.csv and balance.csv read back equal the workbook's Layout,
+    Total torque and Balance sheets and the library's result, bit for bit."""
+    name, lang, out = run
+    study = engine.load(example_path(EXAMPLES[name][0]))
+    res = engine.analyze_engine(study.spec, study.train, study.settings)
+    cyl = pd.read_csv(out / "cylinders.csv")
+    tq = pd.read_csv(out / "torque.csv")
+    bal = pd.read_csv(out / "balance.csv")
+    assert list(cyl.columns) == ["cylinder", "bank", "throw", "axial_position_mm",
+                                 "bank_angle_deg", "throw_angle_deg", "phase_deg"]
+    n = study.spec.cylinders
+    assert list(tq.columns) == (["alpha_deg"] + [f"M_{j}_Nm" for j in range(1, n + 1)]
+                                + ["M_total_Nm"])
+    parts = ("1", "2", "j", "r", "cw", "")
+    assert list(bal.columns) == (["alpha_deg"] + [f"F{p}_{c}_N" for p in parts for c in "xy"]
+                                 + [f"M{p}_{c}_Nm" for p in parts for c in "xy"])
+    np.testing.assert_array_equal(cyl.to_numpy(), res.layout.cylinders.to_numpy())
+    np.testing.assert_array_equal(tq.to_numpy(), res.torque.to_numpy())
+    np.testing.assert_array_equal(bal.to_numpy(), res.balance.to_numpy())
+    assert tq["alpha_deg"].iloc[-1] == study.spec.cycle_deg and bal["alpha_deg"].iloc[-1] == 360
+    wb = load_workbook(out / EXAMPLES[name][1])
+    ws_lay, ws_tq, ws_bal, ws_fw = wb.worksheets[5:9]
+    np.testing.assert_array_equal(np.array(_block(ws_lay, 4, 1, 7), float), cyl.to_numpy())
+    np.testing.assert_array_equal(np.array(_block(ws_tq, 4, n + 4, n + 2), float),
+                                  tq.to_numpy())
+    head = [r for r in range(1, ws_bal.max_row + 1) if ws_bal.cell(r, 1).value == "alpha_deg"]
+    assert len(head) == 1
+    np.testing.assert_array_equal(np.array(_block(ws_bal, head[0] + 1, 1, len(bal.columns)),
+                                           float), bal.to_numpy())
+    # the counterweights, in kg·mm, under their header
+    cws = res.summary.counterweights
+    head = [r for r in range(1, ws_bal.max_row + 1)
+            if str(ws_bal.cell(r, 1).value).startswith("z ")]
+    if cws:
+        got = np.array(_block(ws_bal, head[0] + 1, 1, 3), float)
+        np.testing.assert_allclose(got, [(c.z * 1e3, c.mr * 1e3, c.angle_deg) for c in cws])
+        assert np.all(got[:, 1] < 1e4)          # kg·mm of a real counterweight
+    # the textbook total-torque table: one firing interval for an even-firing engine
+    table = np.array(_block(ws_tq, 4, 1, n + 2), float)
+    assert table[-1, 0] == pytest.approx(720.0 / n)
+    np.testing.assert_array_equal(table, res.torque_table.to_numpy())
+    assert len(ws_tq._charts) == 1
+    # flywheel sheet holds the summary's numbers
+    fw = res.summary.flywheel
+    values = [ws_fw.cell(r, 2).value for r in range(3, 13)]
+    assert values[0] == pytest.approx(fw.L_excess_J) and values[3] == pytest.approx(fw.J0_kgm2)
+    if lang == "en":
+        import re
+        cyr = re.compile("[\u0400-\u04ff]")
+        for ws in wb.worksheets:                  # every sheet, the template's included
+            for row in ws.iter_rows(values_only=True):
+                for v in row:
+                    assert not (isinstance(v, str) and cyr.search(v)), (ws.title, v)
+
+
 def test_terminal_summary(tmp_path, capsys):
     assert run_cli("--example", "-o", tmp_path) == 0
     text = capsys.readouterr().out
-    for word in ("peak gas pressure", "P max", "T max", "mean torque", "chi", "petrol"):
+    for word in ("peak gas pressure", "P max", "T max", "mean torque", "chi", "petrol",
+                 "firing order 1-3-4-2", "mu =", "excess work", "J0 =", "balance"):
         assert word in text
 
 
@@ -223,6 +294,22 @@ BAD = {
                                                                   "speed_rpm = -5"),
              ["engine.bore_mm", "engine.speed_rpm"]),
     "toml_syntax": ("[engine\n", ["spec.toml"]),
+    "v6_60_cannot_fire_evenly": (GOOD.replace("speed_rpm = 2000", "speed_rpm = 2000\n"
+                                              "cylinders = 6\narrangement = \"vee\"\n"
+                                              "vee_angle_deg = 60\n"
+                                              "firing_order = [1, 4, 2, 5, 3, 6]"),
+                                 ["engine.firing_order"]),
+    "firing_order_not_a_permutation": (GOOD.replace("speed_rpm = 2000", "speed_rpm = 2000\n"
+                                                    "cylinders = 4\n"
+                                                    "firing_order = [1, 2, 2, 4]"),
+                                       ["engine.firing_order"]),
+    "vee_angle_out_of_range": (GOOD.replace("speed_rpm = 2000", "speed_rpm = 2000\n"
+                                            "cylinders = 2\narrangement = \"vee\"\n"
+                                            "vee_angle_deg = 200"),
+                               ["engine.vee_angle_deg"]),
+    "throws_count": (GOOD.replace("speed_rpm = 2000", "speed_rpm = 2000\ncylinders = 4\n"
+                                  "throw_angles_deg = [0, 180]\nfiring_order = [1, 3, 4, 2]"),
+                     ["engine.throw_angles_deg"]),
 }
 
 

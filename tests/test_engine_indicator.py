@@ -119,7 +119,9 @@ def test_random_cycles(kind, eps, pa, pr, n1, n2, lam_z, rho, lam):
                                                  abs=0.06)
     # rounding changes the area only a little (it usually removes some: φп < 1)
     ratio = engine.indicated_mean_pressure(rounded) / engine.indicated_mean_pressure(sharp)
-    assert 0.8 < ratio < 1.02
+    # (up to ~+2.5 % for a short diesel isobar, e.g. ε = 18.5, λz = 2, ρ = 1.11: found by
+    # hypothesis; the same on the code before issue 9)
+    assert 0.8 < ratio < 1.05
 
 
 def test_rounded_peak_must_lie_inside_the_sharp_diagram():

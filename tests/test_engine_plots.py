@@ -69,3 +69,38 @@ def test_plots_never_use_pyplot():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout.split()
     assert out == ["False"]
+
+
+TRAIN_HELPERS = [plots.plot_total_torque, plots.plot_excess_work, plots.plot_force_locus,
+                 plots.plot_moment_locus, plots.plot_free_forces, plots.plot_free_moments,
+                 plots.plot_crankshaft]
+
+
+@pytest.fixture(scope="module")
+def whole():
+    study = engine.load(example_path("diesel_kamaz740.toml"))
+    return engine.analyze_engine(study.spec, study.train,
+                                 engine.TableSettings(step_deg=10.0), fine_step_deg=2.0)
+
+
+@pytest.mark.parametrize("helper", TRAIN_HELPERS, ids=lambda f: f.__name__)
+def test_train_helper_draws_on_the_given_axes(helper, whole):
+    fig = Figure()
+    ax = fig.subplots()
+    assert helper(whole, ax=ax, lang="en") is ax
+    assert ax.lines or ax.patches
+
+
+def test_train_figures_both_languages(whole):
+    en = plots.train_figures(whole, "en")
+    ru = plots.train_figures(whole, "ru")
+    assert list(en) == list(plots.TRAIN_PLOT_NAMES) == list(ru)
+    for name, fig in en.items():
+        bad = [t for t in _texts(fig) if CYRILLIC.search(t)]
+        assert not bad, (name, bad)
+    # the total torque shows every cylinder faintly, the sum and the mean
+    ax = en["torque_total"].axes[0]
+    assert len(ax.lines) >= whole.layout.n + 2
+    # the loci: before and after the counterweights
+    labels = [line.get_label() for line in en["free_moment_locus"].axes[0].lines]
+    assert "with counterweights" in labels and "without counterweights" in labels

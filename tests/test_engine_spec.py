@@ -501,3 +501,43 @@ def test_pin_offset_in_the_spec_file():
     assert s.pin_offset == -0.004 and s.k_offset == pytest.approx(-0.004 / 0.0625)
     one_problem(spec_with("engine.pin_offset_mm", 200.0), "engine.pin_offset_mm",
                 "Lш − R")
+
+
+def test_crank_train_keys():
+    d = spec_with("engine.cylinders", 2)
+    d["engine"].update(arrangement="vee", vee_angle_deg=90, firing_order=[2, 1],
+                       throw_angles_deg=[0], cylinder_spacing_mm=100, bank_offset_mm=20,
+                       mechanical_efficiency=0.85)
+    d["flywheel"] = dict(delta=0.02, share=0.9, mean_diameter_mm=300)
+    d["balance"] = {"counterweight": [dict(z_mm=10, mr_kg_mm=42.5, angle_deg=180)]}
+    tr = engine.load(d).train
+    assert tr.arrangement == "vee" and tr.vee_angle_deg == 90 and tr.firing_order == (2, 1)
+    assert tr.cylinder_spacing == 0.1 and tr.bank_offset == 0.02
+    assert tr.delta == 0.02 and tr.flywheel_share == 0.9 and tr.flywheel_diameter == 0.3
+    cw, = tr.counterweight_list
+    assert cw == engine.Counterweight(0.01, 0.0425, 180.0)      # kg·mm → kg·m
+
+
+@pytest.mark.parametrize("edit,key", [
+    (dict(arrangement="w"), "engine.arrangement"),
+    (dict(arrangement="vee"), "engine.vee_angle_deg"),
+    (dict(arrangement="vee", vee_angle_deg=180), "engine.vee_angle_deg"),
+    (dict(vee_angle_deg=60), "engine.vee_angle_deg"),
+    (dict(firing_order=[1, 1]), "engine.firing_order"),
+    (dict(firing_order=[1.5, 2]), "engine.firing_order"),
+    (dict(bank_offset_mm=5), "engine.bank_offset_mm"),
+    (dict(mechanical_efficiency=1.2), "engine.mechanical_efficiency"),
+    (dict(cylinder_spacing_mm=90, cylinder_positions_mm=[0, 90]), "engine.cylinder_positions_mm"),
+])
+def test_bad_crank_train_keys(edit, key):
+    d = spec_with("engine.cylinders", 2)
+    d["engine"].update(edit)
+    one_problem(d, key)
+
+
+def test_bad_flywheel_and_balance_keys():
+    d = copy.deepcopy(BASE)
+    d["flywheel"] = dict(delta=0.0, wheel=1)
+    d["balance"] = dict(counterweights="all")
+    keys = sorted(l.split(":")[0] for l in problems(d))
+    assert keys == ["balance.counterweights", "flywheel.delta", "flywheel.wheel"]

@@ -1,0 +1,163 @@
+"""Workbook sheets of the bearing loads (openpyxl, imported when used).
+
+:func:`add_bearing_sheets` appends to the force-table workbook of
+:func:`engine.report.build_workbook` a summary sheet (pin and journal loads: max, mean,
+min with their angles, χ; the most loaded pin and journal; the torques carried by the
+journals; the oil-hole directions; the rigid rod's differences; the conventions) and one
+sheet per bearing table, with the CSV column names as headers and every value at full
+precision (saved by :func:`engine.report.save_workbook`).  Nothing here computes physics.
+"""
+from __future__ import annotations
+
+from .bearings import load_stats
+
+__all__ = ["add_bearing_sheets", "SHEET_NAMES"]
+
+#: Sheet title of each bearing table (by CSV file name), per language.
+SHEET_NAMES = {
+    "ru": {"crankpins.csv": "Шатунные шейки", "journals.csv": "Коренные шейки",
+           "journal_torques.csv": "Моменты коренных шеек",
+           "rod_bearings.csv": "Шатун и палец", "wear.csv": "Износ",
+           "rod_model.csv": "Модель шатуна", "summary": "Подшипники"},
+    "en": {"crankpins.csv": "Crank pins", "journals.csv": "Main journals",
+           "journal_torques.csv": "Journal torques", "rod_bearings.csv": "Big end, pin",
+           "wear.csv": "Wear", "rod_model.csv": "Rod model", "summary": "Bearings"},
+}
+
+_T = {
+    "ru": dict(title="Нагрузки на подшипники коленчатого вала", what="Величина",
+               max="max", amax="α при max, °", min="min", amin="α при min, °",
+               mean="среднее", chi="χ = max/ср", pin="Шатунная шейка {k}, Rшш, Н",
+               jr="Коренная шейка {j}, Rк.ш, Н", tq="Момент через коренную шейку {j}, Н·м",
+               swing="размах", most_pin="Наиболее нагруженная шатунная шейка",
+               most_j="Наиболее нагруженная коренная шейка",
+               most_t="Наибольший размах момента: коренная шейка",
+               hole="Масляное отверстие (наименьший износ), °", hole_pin="шатунная шейка {k}",
+               hole_j="коренная шейка {j}", half="Дуга износа ±, °",
+               be="Подшипник нижней головки шатуна (цилиндр 1), Н",
+               pp="Поршневой палец (цилиндр 1), Н",
+               rod="Жёсткий шатун − двухмассовый (точная кинематика)",
+               conv=("Система координат кривошипа: K — к оси вала, T — по вращению; "
+                     "углы Ψ и направления износа от направления к оси вала по вращению.",
+                     "Коренные шейки нумеруются от носка вала; нагрузка Q — сила, которой "
+                     "вал давит на подшипник (правило рычага, разрезной вал).",
+                     "Шатунная шейка изнашивается против направления Rшш, коренная — по "
+                     "направлению Q; износ ∝ ∫R dα по дуге ±h.")),
+    "en": dict(title="Bearing loads of the crankshaft", what="Quantity", max="max",
+               amax="α at max, °", min="min", amin="α at min, °", mean="mean",
+               chi="χ = max/mean", pin="Crank pin {k}, R, N", jr="Main journal {j}, R, N",
+               tq="Torque through main journal {j}, N·m", swing="swing",
+               most_pin="Most loaded crank pin", most_j="Most loaded main journal",
+               most_t="Largest torque swing: main journal",
+               hole="Oil hole (least wear), °", hole_pin="crank pin {k}",
+               hole_j="main journal {j}", half="Wear arc ±, °",
+               be="Big-end bearing (cylinder 1), N", pp="Piston pin (cylinder 1), N",
+               rod="Rigid rod − two-mass rod (exact kinematics)",
+               conv=("Crank frame: K towards the shaft axis, T in the direction of "
+                     "rotation; angles Ψ and wear directions from the direction towards "
+                     "the shaft axis, in the direction of rotation.",
+                     "Main journals are numbered from the free end; their load Q is the "
+                     "force the shaft presses the bearing with (lever rule, split shaft).",
+                     "A crank pin wears opposite to its load R, a main journal along Q; "
+                     "wear ∝ ∫R dα over an arc of ±h.")),
+}
+
+
+def _put(ws, row, col, value):
+    cell = ws.cell(row, col)
+    cell.value = value
+    if isinstance(value, str):
+        cell.data_type = "s"
+    return cell
+
+
+def add_bearing_sheets(wb, tables, analysis, lang="ru"):
+    """Append the bearing sheets to a workbook.
+
+    Parameters
+    ----------
+    wb : openpyxl.Workbook
+    tables : dict of {str: pandas.DataFrame}
+        The bearing tables by CSV file name (as written beside the workbook).
+    analysis : engine.bearing_spec.BearingAnalysis
+        On the fine grid: the statistics, oil holes and the rod comparison.
+    lang : {"ru", "en"}
+
+    Returns
+    -------
+    openpyxl.Workbook
+        ``wb``, with the summary sheet and one sheet per table appended.
+    """
+    from openpyxl.styles import Font
+
+    t, names = _T[lang], SHEET_NAMES[lang]
+    loads = analysis.loads
+    ws = wb.create_sheet(names["summary"])
+    _put(ws, 1, 1, t["title"]).font = Font(bold=True, size=12)
+    head = (t["what"], t["max"], t["amax"], t["min"], t["amin"], t["mean"], t["chi"])
+    for c, h in enumerate(head, start=1):
+        _put(ws, 3, c, h).font = Font(bold=True)
+    row = 4
+    stats = [(t["pin"].format(k=k + 1), s) for k, s in enumerate(loads.pin_stats)]
+    stats += [(t["jr"].format(j=j + 1), s) for j, s in enumerate(loads.journal_stats)]
+    rb = analysis.rod_bearings
+    cyc = 720.0 if rb["alpha_deg"].iloc[-1] - rb["alpha_deg"].iloc[0] > 360.0 else 360.0
+    for col, label in (("Rbe_N", t["be"]), ("Pp_N", t["pp"])):
+        if not rb[col].isna().any():
+            stats.append((label, load_stats(rb["alpha_deg"], rb[col], cyc)))
+    for label, s in stats:
+        for c, v in enumerate((label, s.max_N, s.alpha_max_deg, s.min_N, s.alpha_min_deg,
+                               s.mean_N, s.chi), start=1):
+            _put(ws, row, c, v)
+        row += 1
+    for j, s in enumerate(loads.torque_stats):
+        for c, v in enumerate((t["tq"].format(j=j + 1), s["max_Nm"], None, s["min_Nm"],
+                               None, None, None), start=1):
+            _put(ws, row, c, v)
+        _put(ws, row, 8, t["swing"])
+        _put(ws, row, 9, s["swing_Nm"])
+        row += 1
+    row += 1
+    for label, v in ((t["most_pin"], loads.most_loaded_pin),
+                     (t["most_j"], loads.most_loaded_journal),
+                     (t["most_t"], loads.most_twisted_journal),
+                     (t["half"], analysis.options.wear_half_angle_deg)):
+        _put(ws, row, 1, label)
+        _put(ws, row, 2, v)
+        row += 1
+    _put(ws, row, 1, t["hole"]).font = Font(bold=True)
+    row += 1
+    pins = analysis.pin_wear if isinstance(analysis.pin_wear, list) else [analysis.pin_wear]
+    holes = [(t["hole_pin"].format(k=k + 1), w.oil_hole_deg) for k, w in enumerate(pins)]
+    holes += [(t["hole_j"].format(j=j + 1), w.oil_hole_deg)
+              for j, w in enumerate(analysis.journal_wear)]
+    for label, v in holes:
+        _put(ws, row, 1, label)
+        _put(ws, row, 2, v)
+        row += 1
+    if analysis.rod_comparison is not None:
+        row += 1
+        _put(ws, row, 1, t["rod"]).font = Font(bold=True)
+        row += 1
+        for col, (mx, amx, mn, amn) in analysis.rod_comparison.extremes.items():
+            for c, v in enumerate((col, mx, amx, mn, amn), start=1):
+                _put(ws, row, c, v)
+            row += 1
+    row += 1
+    for line in t["conv"]:
+        _put(ws, row, 1, line)
+        row += 1
+    ws.column_dimensions["A"].width = 46
+    for col in "BCDEFGHI":
+        ws.column_dimensions[col].width = 14
+
+    for fname, df in tables.items():
+        sh = wb.create_sheet(names[fname])
+        for c, name in enumerate(df.columns, start=1):
+            _put(sh, 1, c, name).font = Font(bold=True)
+        values = df.to_numpy()
+        for r in range(values.shape[0]):
+            for c in range(values.shape[1]):
+                sh.cell(r + 2, c + 1).value = float(values[r, c])
+        sh.freeze_panes = "B2"
+    return wb
