@@ -119,8 +119,12 @@ def run(args) -> int:
         figs.update(bearing_figures(bearing["analysis"], args.lang))
         add_bearing_sheets(wb, bearing["csv"], bearing["analysis"], args.lang)
 
-    # 2. write: every file into a staging folder, moved into DIR only when all are done
-    with staged_output(out, inputs=[spec_path, spec.pressure_file]) as stage:
+    # 2. write: every file into a staging folder, moved into DIR only when all are done;
+    #    SVG text stays text (searchable, and a third cheaper to write than glyph paths)
+    import matplotlib
+
+    with staged_output(out, inputs=[spec_path, spec.pressure_file]) as stage, \
+            matplotlib.rc_context({"svg.fonttype": "none"}):
         write_csv(table, stage / csv_path.name)
         for name, df in csvs.items():
             write_csv(df, stage / name)

@@ -56,12 +56,12 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from crankbase.errors import Problem
-from crankbase.tolerances import ROUNDOFF_RTOL, SAME_ANGLE_DEG
+from crankbase.tolerances import BALANCED_RTOL, ROUNDOFF_RTOL, SAME_ANGLE_DEG
 
-from .forces import force_table, two_term_acceleration
+from .forces import PLOT_STEP_DEG, analyze, force_table, two_term_acceleration
 from .kinematics import crank_slider
 from .spec import (ARRANGEMENTS, COUNTERWEIGHT_DESIGNS, Counterweight, CrankTrain, EngineSpec,
-                   EngineSpecError)
+                   EngineSpecError, TableSettings)
 
 if TYPE_CHECKING:                       # annotations only: no pandas import at run time
     import pandas as pd
@@ -703,11 +703,6 @@ def analyze_engine(spec, train, settings=None, *, fine_step_deg=None) -> EngineT
     EngineTrainResult
     """
     import pandas as pd
-
-    from crankbase.tolerances import BALANCED_RTOL
-
-    from .forces import PLOT_STEP_DEG, analyze
-    from .spec import TableSettings
 
     settings = TableSettings() if settings is None else settings
     if not isinstance(settings, TableSettings):
