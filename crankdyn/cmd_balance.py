@@ -1,0 +1,74 @@
+"""``crankdyn balance``: static or two-plane balancing of a rigid rotor.
+
+    crankdyn balance ROTOR.toml -o DIR [--lang ru|en]
+
+Writes ``DIR/rotor_balance.csv`` (``plane, z_mm, mr_gmm, angle_deg`` and ``r_mm, m_g``
+when the spec gives ``correction_radius_mm``), ``DIR/rotor_shares.csv`` (every unbalance
+resolved into the planes) and ``DIR/rotor_polygons.png``/``.svg`` (the m·r polygon of
+every plane), all at once through a staging folder; bad input writes nothing.
+"""
+from __future__ import annotations
+
+
+def add_parser(subparsers):
+    p = subparsers.add_parser(
+        "balance", help="rotor balancing (static or two-plane): corrections and m·r polygons",
+        description="Static (one plane) or dynamic (two planes) balancing of a rigid rotor "
+                    "given by its unbalances (m·r or m and r, angle, z): the correction m·r "
+                    "and angle per plane, the mass at a chosen radius, the residual force "
+                    "and moment, and the m·r polygons.")
+    p.add_argument("spec", metavar="ROTOR.toml", help="rotor spec (TOML, a [rotor] table)")
+    p.add_argument("-o", "--output", required=True, metavar="DIR",
+                   help="output folder (created if needed)")
+    p.add_argument("--lang", choices=("ru", "en"), default="ru",
+                   help="plot language (default ru)")
+    p.set_defaults(func=run)
+
+
+def run(args) -> int:
+    from pathlib import Path
+
+    from linkage.errors import SpecError
+
+    spec_path = Path(args.spec)
+    out = Path(args.output)
+    if out.exists() and not out.is_dir():
+        raise SpecError(f"-o: {out} exists and is not a folder")
+
+    from matplotlib.figure import Figure
+
+    from dynamics.rotor import plot_mr_polygon, rotor_balance
+
+    from .io import check_not_input, ensure_finite, staged_output, write_csv
+
+    res = rotor_balance(spec_path)
+    cols = ["plane", "z_mm", "mr_gmm", "angle_deg"]
+    if "m_g" in res.corrections:
+        cols += ["m_g", "r_mm"]
+    table = res.corrections[cols]
+    ensure_finite(table, "rotor corrections")
+    ensure_finite(res.shares, "rotor shares")
+    n = len(table)
+    fig = Figure(figsize=(5.2 * n, 5.2), layout="constrained")
+    for k in range(n):
+        plot_mr_polygon(res, k, fig.add_subplot(1, n, k + 1), lang=args.lang)
+    names = ["rotor_balance.csv", "rotor_shares.csv", "rotor_polygons.png",
+             "rotor_polygons.svg"]
+    check_not_input([out / nm for nm in names], [spec_path])
+    with staged_output(out, inputs=[spec_path]) as stage:
+        write_csv(table, stage / names[0])
+        write_csv(res.shares, stage / names[1])
+        fig.savefig(stage / names[2], dpi=110)
+        fig.savefig(stage / names[3])
+
+    print(f"{res.name}: {res.kind} balancing, {len(res.masses)} unbalance(s), "
+          f"{n} correction plane(s)")
+    for _, row in table.iterrows():
+        extra = f",  m = {row['m_g']:.4g} g at r = {row['r_mm']:g} mm" if "m_g" in row else ""
+        print(f"  plane {row['plane']:>2} (z = {row['z_mm']:g} mm): m*r = "
+              f"{row['mr_gmm']:.2f} g*mm at {row['angle_deg']:.2f} deg{extra}")
+    print(f"  residual force {res.residual_force_gmm:.3g} g*mm, residual moment "
+          f"{res.residual_moment_gmm2:.3g} g*mm^2 (before: {res.initial_force_gmm:.4g}, "
+          f"{res.initial_moment_gmm2:.4g})")
+    print(f"wrote {out / names[0]}, {out / names[1]}, {out / 'rotor_polygons'}.png/.svg")
+    return 0

@@ -1,0 +1,21 @@
+"""Machine dynamics and balancing (theory of machines, the machine-dynamics chapter).
+
+* :mod:`dynamics.rotor` – static and two-plane (dynamic) balancing of a rigid rotor;
+* :mod:`dynamics.reduced` – the reduced (equivalent) model at the crank: J_red(φ),
+  dJ_red/dφ, the reduced driving and resisting moments; from given reduced quantities, from
+  a linkage (``linkage.analyze`` velocity ratios) and from a chain of constant ratios;
+* :mod:`dynamics.motion` – the true motion ω(φ) of the steady cycle (energy form), the
+  flywheel (classic and exact), a motor characteristic M(ω) integrated in time to the
+  periodic state and the start-up; kinetostatics under the true motion;
+* :mod:`dynamics.shaking` – shaking force and moment of a mechanism on its frame and
+  their balancing by counterweights.
+
+Numpy arrays in, arrays out; SI inside (the rotor works in g·mm and mm, as the textbooks).
+This package uses :mod:`linkage` and :mod:`engine`; they never import it.  No matplotlib or
+openpyxl at import time (:mod:`dynamics.plots` imports them when called).
+"""
+from ._base import MotionError
+from .rotor import RotorBalance, balance_rotor, load_rotor_spec, rotor_balance
+
+__all__ = ["MotionError", "RotorBalance", "balance_rotor", "load_rotor_spec",
+           "rotor_balance"]

@@ -1,0 +1,13 @@
+"""The project's error and spec-validation layer, imported in this one place for the whole
+:mod:`dynamics` package (the base layer is moving to ``crankbase``; only these lines change
+at the merge)."""
+from linkage.errors import CrankdynError, Problem, SpecError  # noqa: F401
+from linkage.validation import Checker, read_toml  # noqa: F401
+
+__all__ = ["CrankdynError", "Problem", "SpecError", "Checker", "read_toml",
+           "MotionError"]
+
+
+class MotionError(SpecError):
+    """The machine cannot run the asked cycle: the drive cannot sustain it (ω reaches
+    zero), or a motor stalls.  A :class:`SpecError` so the CLI reports it like bad input."""
