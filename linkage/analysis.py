@@ -65,7 +65,8 @@ def _stroke_state(mech, spec, kin, ext):
     moving = np.abs(rate) > 1e-9 * scale
     state = np.where(moving, np.sign(rate * wsign), 0.0)
     # output coordinate at the two extreme positions (start of the working and idle strokes)
-    ek = mech.kinematics(np.array([ext.phi_start, ext.phi_end]), spec.omega, 0.0)
+    # positions only (ω may be an array over positions: dynamics under the true motion)
+    ek = mech.kinematics(np.array([ext.phi_start, ext.phi_end]), 1.0, 0.0)
     c_start = mech.output_coordinate(ek)
     start = np.where(state >= 0, c_start[0], c_start[1])
     if spec.kind == "crank-rocker":

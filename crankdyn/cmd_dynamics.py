@@ -1,0 +1,84 @@
+"""``crankdyn dynamics``: the true motion of a machine over its steady cycle, the flywheel,
+a motor drive with the start-up, the forces under the true motion.
+
+    crankdyn dynamics SPEC.toml -o DIR [--lang ru|en]
+
+SPEC is a machine given by its reduced quantities (``[machine]``) or a linkage spec, with a
+``[dynamics]`` section.  Writes ``DIR/motion.csv`` (``phi_deg, J_red_kgm2,
+dJ_red_dphi_kgm2, M_drive_Nm, M_resist_Nm, omega_rad_s, eps_rad_s2, t_s`` and ``phi_rad,
+W_J, E_J``), ``DIR/forces_true_motion.csv`` (linkage), ``DIR/startup.csv`` (motor),
+``DIR/<name>_dynamics.xlsx`` and the plots (PNG, SVG), all at once through a staging
+folder; bad input writes nothing.
+"""
+from __future__ import annotations
+
+MOTION_COLUMNS = ["phi_deg", "J_red_kgm2", "dJ_red_dphi_kgm2", "M_drive_Nm", "M_resist_Nm",
+                  "omega_rad_s", "eps_rad_s2", "t_s", "phi_rad", "W_J", "E_J"]
+
+
+def add_parser(subparsers):
+    p = subparsers.add_parser(
+        "dynamics", help="machine dynamics: true motion, flywheel, motor start-up",
+        description="The reduced model (J_red, M_d, M_c) of a machine or a linkage, its "
+                    "steady motion ω(φ), ε, t, δ, the flywheel for a required δ (classic "
+                    "and exact), a motor characteristic with the start-up, and the forces "
+                    "under the true motion beside the constant-speed ones.")
+    p.add_argument("spec", metavar="SPEC.toml", help="machine or linkage spec with [dynamics]")
+    p.add_argument("-o", "--output", required=True, metavar="DIR",
+                   help="output folder (created if needed)")
+    p.add_argument("--lang", choices=("ru", "en"), default="ru",
+                   help="report and plot language (default ru)")
+    p.set_defaults(func=run)
+
+
+def run(args) -> int:
+    import re
+    from pathlib import Path
+
+    from linkage.errors import SpecError
+
+    spec_path = Path(args.spec)
+    out = Path(args.output)
+    if out.exists() and not out.is_dir():
+        raise SpecError(f"-o: {out} exists and is not a folder")
+
+    from dynamics.plots import dynamics_figures
+    from dynamics.report import build_workbook, summary_rows
+    from dynamics.spec import load_dynamics_spec, run_job
+
+    from .io import check_not_input, ensure_finite, full_precision_xlsx, staged_output, write_csv
+
+    job = load_dynamics_spec(spec_path)
+    res = run_job(job)
+    motion = res["motion"].table[MOTION_COLUMNS]
+    ensure_finite(motion, "motion table")
+    tables = {"motion.csv": motion}
+    if res["forces"] is not None:
+        ensure_finite(res["forces"], "forces under the true motion")
+        tables["forces_true_motion.csv"] = res["forces"]
+    if res["startup"] is not None:
+        ensure_finite(res["startup"].table, "start-up")
+        tables["startup.csv"] = res["startup"].table
+    wb = build_workbook(res, args.lang)
+    figs = dynamics_figures(res, args.lang)
+    safe = re.sub(r"[^\w.-]+", "_", job.model.name).strip("._") or "machine"
+    xlsx = f"{safe}_dynamics.xlsx"
+    names = list(tables) + [xlsx] + [f"{n}.{e}" for n in figs for e in ("png", "svg")]
+    check_not_input([out / n for n in names], [spec_path])
+    with staged_output(out, inputs=[spec_path]) as stage:
+        for name, df in tables.items():
+            write_csv(df, stage / name)
+        with full_precision_xlsx():
+            wb.save(stage / xlsx)
+        for name, fig in figs.items():
+            fig.savefig(stage / f"{name}.png", dpi=110)
+            fig.savefig(stage / f"{name}.svg")
+
+    m = res["motion"]
+    print(f"{job.model.name}: {job.kind}, driving {job.settings.driving}, "
+          f"{len(motion)} grid points over {m.table['phi_rad'].iloc[-1] * 57.29577951308232:g} deg")
+    for label, value, unit in summary_rows(res, "en"):
+        print(f"  {label:<36} {value:14.6g} {unit}")
+    print(f"wrote {', '.join(tables)}, {xlsx}, {len(figs)} plots (PNG, SVG) in {out}"
+          + (" [ru]" if args.lang == "ru" else " [en]"))
+    return 0

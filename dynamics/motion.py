@@ -1,0 +1,543 @@
+"""The true motion of a machine over its steady cycle, the flywheel, a motor drive.
+
+Energy form (eq. 11-16 of the seed textbook)::
+
+    ½ J(φ) ω² − ½ J(0) ω0² = ∫0^φ (M_d − M_c) dφ = W(φ)
+
+gives ω(φ) = sqrt((J(0) ω0² + 2 W(φ)) / J(φ)) on the whole grid at once; the cycle is steady
+when W(period) = 0.  ω0 is found (``scipy.optimize.brentq``) so that the mean speed
+ω_m = (ω_max + ω_min)/2 (the textbooks' definition, Example 11-3) is the one asked.
+Then ε = dω/dt = (M_d − M_c − ½ ω² dJ/dφ)/J (the differential form, eq. 11-17, evaluated
+pointwise, exact for the solution above), δ = (ω_max − ω_min)/ω_m, and t(φ) = ∫dφ/ω
+(trapezoids).
+
+A motor characteristic M_d(ω) = M0 (1 − ω/ω0) (linear asynchronous motor) makes the
+equation depend on ω; its periodic steady state is found by shooting on the differential
+form in the angle, dω/dφ = (M_d(ω) − M_c − ½ ω² J')/(J ω), with ``scipy.integrate.solve_ivp``
+(LSODA: it switches to a stiff method by itself when the motor's slope makes the equation
+stiff) and ``brentq`` on ω(0) = ω(period); the start-up from rest integrates the same
+equation in time (φ and ω as states, since ω = 0 at the start).
+
+The flywheel for a required δ: the classic estimate J_F = ΔW_max/(δ ω_m²) − J_c with
+ΔW_max the swing of W(φ) and J_c the cycle mean of J_red (it treats the machine as a
+constant inertia), and the exact J_F that gives δ with the variable J_red (``brentq``
+on δ(J_F) of the energy-form solution).
+
+References
+----------
+.. [1] Seed 001: textbook chapter 11 "机械系统的动力分析与设计", §11.3.2 (eqs. 11-16,
+   11-17), Example 11-3, §11.4 (flywheel).
+.. [2] Khurmi R. S., Gupta J. K. Theory of Machines. S. Chand, 14th ed., 2005, ch. 16
+   "Turning moment diagrams and flywheel", eqs. 16.4–16.8.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ._base import MotionError, Problem, SpecError
+
+__all__ = ["MotionResult", "steady_motion", "FlywheelResult", "size_flywheel",
+           "motor_steady_motion", "motor_startup", "StartupResult", "check_delta",
+           "true_motion_forces"]
+
+
+def _cumtrapz(y, x):
+    return np.concatenate([[0.0], np.cumsum(0.5 * (y[1:] + y[:-1]) * np.diff(x))])
+
+
+@dataclass
+class MotionResult:
+    """The steady periodic motion of a reduced model.
+
+    Attributes
+    ----------
+    table : pandas.DataFrame
+        One row per grid point: ``phi_deg`` (absolute crank angle for a linkage),
+        ``phi_rad`` (angle turned from the start of the cycle), ``J_red_kgm2`` (with the
+        flywheel), ``dJ_red_dphi_kgm2``, ``M_drive_Nm``, ``M_resist_Nm``, ``W_J`` (work
+        of M_d − M_c from the start), ``E_J`` (kinetic energy ½Jω²), ``omega_rad_s``,
+        ``eps_rad_s2``, ``t_s``.
+    omega_max, omega_min, omega_mean : float
+        [rad/s]; ``omega_mean`` = (max + min)/2.
+    omega_time_mean : float
+        period / cycle time. [rad/s]
+    delta : float
+        (ω_max − ω_min)/ω_m. [-]
+    dW_max : float
+        Swing of W(φ) over the cycle. [J]
+    J_flywheel : float
+        The flywheel added to the model's J. [kg·m²]
+    M_drive_const : float or None
+        The constant driving moment that makes the cycle steady (``driving="constant"``).
+    cycle_time : float
+        [s]
+    phi_omega_max_deg, phi_omega_min_deg : float
+        Where ω is largest and smallest (same angle scale as ``phi_deg``).
+    """
+
+    name: str
+    table: object
+    omega_max: float
+    omega_min: float
+    omega_mean: float
+    omega_time_mean: float
+    delta: float
+    dW_max: float
+    J_flywheel: float
+    M_drive_const: float | None
+    cycle_time: float
+    phi_omega_max_deg: float
+    phi_omega_min_deg: float
+    driving: str = "constant"
+    extra: dict = field(default_factory=dict)
+
+
+def check_delta(delta, key="dynamics.delta"):
+    if delta is None or not (0.0 < delta < 1.0):
+        raise SpecError(Problem(key, f"got {delta!r}; the coefficient of speed fluctuation "
+                                     "must be in (0, 1)"))
+
+
+def _net_work_check(model, what):
+    W = model.W_net_J
+    scale = max(np.max(np.abs(model.W_drive_J)), np.max(np.abs(model.W_resist_J)), 1e-12)
+    if abs(W[-1]) > 1e-6 * scale:
+        kind = ("falls short of" if W[-1] < 0 else "exceeds")
+        raise MotionError(Problem(
+            what, f"the driving work per cycle {model.W_drive_J[-1]:.6g} J {kind} the "
+                  f"resisting work {model.W_resist_J[-1]:.6g} J: the motion cannot be "
+                  f"steady (net {W[-1]:.6g} J per cycle); use driving = \"constant\" or "
+                  "balance the diagrams"))
+
+
+def _omega_of(model, J, W, w0):
+    num = J[0] * w0 * w0 + 2.0 * W
+    return np.sqrt(np.maximum(num, 0.0) / J), num
+
+
+def steady_motion(model, omega_mean=None, *, J_flywheel=0.0, driving="constant"):
+    """Steady periodic motion of a reduced model by the energy equation.
+
+    Parameters
+    ----------
+    model : ReducedModel
+    omega_mean : float, optional
+        Mean speed ω_m = (ω_max + ω_min)/2 [rad/s] (> 0); default the model's nominal one.
+    J_flywheel : float
+        Flywheel added on the main shaft (≥ 0). [kg·m²]
+    driving : {"constant", "given"}
+        "constant": add the constant driving moment that makes the cycle steady;
+        "given": the model's driving moment as is (its cycle work must balance).
+
+    Returns
+    -------
+    MotionResult
+
+    Raises
+    ------
+    SpecError
+        ω_m ≤ 0, J ≤ 0 somewhere, J_flywheel < 0.
+    MotionError
+        The cycle's net work is not zero (``driving="given"``); or the kinetic-energy swing
+        is so large against ½Jω_m² that no motion with this ω_m keeps ω > 0 (the machine
+        would stop: a flywheel or a higher speed is needed).
+    """
+    import pandas as pd
+    from scipy.optimize import brentq
+
+    wm = model.omega_nominal if omega_mean is None else omega_mean
+    probs = []
+    if wm is None or not wm > 0:
+        probs.append(Problem("dynamics.omega_mean_rad_s",
+                             f"got {wm!r}; the mean speed must be > 0"))
+    if not J_flywheel >= 0:
+        probs.append(Problem("dynamics.flywheel_kgm2", f"got {J_flywheel!r}; must be >= 0"))
+    if np.any(model.J_kgm2 + J_flywheel <= 0):
+        probs.append(Problem("J_red_kgm2", f"min {np.min(model.J_kgm2):.6g}; the reduced "
+                                           "moment of inertia must be > 0"))
+    if probs:
+        raise SpecError(probs)
+    Mconst = None
+    if driving == "constant":
+        model, Mconst = model.with_constant_drive()
+    else:
+        _net_work_check(model, "dynamics.driving")
+    J = model.J_kgm2 + J_flywheel
+    W = model.W_net_J
+    # smallest ω0 that keeps J0 ω0² + 2W ≥ 0 everywhere
+    w_lo = math.sqrt(max(0.0, -2.0 * np.min(W)) / J[0])
+
+    def mean_minus(w0):
+        w, _ = _omega_of(model, J, W, w0)
+        return 0.5 * (w.max() + w.min()) - wm
+
+    if mean_minus(w_lo) >= 0:
+        w, _ = _omega_of(model, J, W, w_lo)
+        i = int(np.argmin(w))
+        need = np.ptp(W) / (0.5 * wm * wm) if wm > 0 else math.inf
+        raise MotionError(Problem(
+            "dynamics", f"the machine cannot keep ω_m = {wm:.6g} rad/s: the energy swing "
+                        f"ΔW_max = {np.ptp(W):.6g} J makes ω reach zero at φ = "
+                        f"{model.phi_deg[i]:.4g}°; raise the speed or add a flywheel "
+                        f"(J ≳ {need:.3g} kg·m²)"))
+    hi = max(2.0 * wm, w_lo * 2 + 1.0)
+    while mean_minus(hi) < 0:
+        hi *= 2.0
+    w0 = brentq(mean_minus, w_lo, hi, xtol=1e-14 * hi, rtol=4 * np.finfo(float).eps,
+                maxiter=200)
+    w, _ = _omega_of(model, J, W, w0)
+    Mnet = model.M_drive_Nm - model.M_resist_Nm
+    eps = (Mnet - 0.5 * w * w * model.dJ_dphi_kgm2) / J
+    with np.errstate(divide="ignore"):
+        t = _cumtrapz(1.0 / w, model.phi)
+    wmax, wmin = float(w.max()), float(w.min())
+    wmean = 0.5 * (wmax + wmin)
+    table = pd.DataFrame({
+        "phi_deg": model.phi_deg, "phi_rad": model.phi, "J_red_kgm2": J,
+        "dJ_red_dphi_kgm2": model.dJ_dphi_kgm2, "M_drive_Nm": model.M_drive_Nm,
+        "M_resist_Nm": model.M_resist_Nm, "W_J": W, "E_J": 0.5 * J * w * w,
+        "omega_rad_s": w, "eps_rad_s2": eps, "t_s": t})
+    return MotionResult(
+        name=model.name, table=table, omega_max=wmax, omega_min=wmin, omega_mean=wmean,
+        omega_time_mean=float(model.period / t[-1]), delta=(wmax - wmin) / wmean,
+        dW_max=float(np.ptp(W)), J_flywheel=float(J_flywheel), M_drive_const=Mconst,
+        cycle_time=float(t[-1]), phi_omega_max_deg=float(model.phi_deg[np.argmax(w)]),
+        phi_omega_min_deg=float(model.phi_deg[np.argmin(w)]), driving=driving)
+
+
+@dataclass
+class FlywheelResult:
+    """Flywheel for a required δ.
+
+    Attributes
+    ----------
+    delta : float
+        Asked δ.
+    dW_max : float
+        ΔW_max, swing of ∫(M_d − M_c)dφ. [J]
+    J_c : float
+        The constant inertia the classic estimate subtracts: the cycle mean of J_red.
+        [kg·m²]
+    J_classic : float
+        ΔW_max/(δ ω_m²) − J_c (may be ≤ 0: no flywheel needed by that estimate). [kg·m²]
+    J_exact : float
+        The flywheel that gives exactly δ with the variable J_red (0 when the machine is
+        already within δ without one). [kg·m²]
+    motion : MotionResult
+        The motion with ``J_exact``.
+    """
+
+    delta: float
+    dW_max: float
+    J_c: float
+    J_classic: float
+    J_exact: float
+    motion: MotionResult
+
+
+def size_flywheel(model, delta, omega_mean=None, *, driving="constant") -> FlywheelResult:
+    """Flywheel on the main shaft for the coefficient of speed fluctuation ``delta``.
+
+    Classic: J_F = ΔW_max/(δ ω_m²) − J_c (Khurmi eq. 16.8 with J_c the cycle mean of
+    J_red).  Exact: brentq on δ(J_F) − δ with the energy-form solution (δ decreases
+    monotonically with J_F).
+    """
+    from scipy.optimize import brentq
+
+    check_delta(delta)
+    wm = model.omega_nominal if omega_mean is None else omega_mean
+    m0 = steady_motion(model, wm, J_flywheel=0.0, driving=driving) \
+        if _feasible(model, wm, 0.0, driving) else None
+    base = model.with_constant_drive()[0] if driving == "constant" else model
+    dW = float(np.ptp(base.W_net_J))
+    Jc = float(np.mean(model.J_kgm2[:-1]))
+    J_classic = dW / (delta * wm * wm) - Jc
+    if m0 is not None and m0.delta <= delta:
+        return FlywheelResult(delta, dW, Jc, J_classic, 0.0, m0)
+
+    def f(JF):
+        return steady_motion(model, wm, J_flywheel=JF, driving=driving).delta - delta
+
+    hi = max(J_classic, dW / (delta * wm * wm), 1e-9)
+    while f(hi) > 0:
+        hi *= 2.0
+    lo = 0.0
+    if m0 is None:  # without a flywheel the machine cannot even run: bracket from above
+        a, b = 0.0, hi
+        for _ in range(200):
+            mid = 0.5 * (a + b)
+            if not _feasible(model, wm, mid, driving):
+                a = mid
+            elif f(mid) <= 0:
+                b = mid
+            else:
+                break
+        lo = mid
+    JF = brentq(f, lo, hi, xtol=1e-12 * hi, rtol=1e-12)
+    return FlywheelResult(delta, dW, Jc, J_classic, float(JF),
+                          steady_motion(model, wm, J_flywheel=JF, driving=driving))
+
+
+def _feasible(model, wm, JF, driving):
+    try:
+        steady_motion(model, wm, J_flywheel=JF, driving=driving)
+        return True
+    except MotionError:
+        return False
+
+
+# --------------------------------------------------------------------------- motor
+
+
+@dataclass
+class Motor:
+    """Linear motor characteristic M = M0 (1 − ω/ω0) [N·m] (asynchronous motor on the
+    stable branch, or a DC shunt motor)."""
+
+    M0: float
+    omega0: float
+
+    def __call__(self, w):
+        return self.M0 * (1.0 - w / self.omega0)
+
+
+def _interp_periodic(model):
+    x = model.phi
+    P = model.period
+
+    def f(arr):
+        return lambda p: np.interp(np.mod(p, P), x, arr)
+
+    return (f(model.J_kgm2), f(model.dJ_dphi_kgm2), f(model.M_resist_Nm),
+            f(model.M_drive_Nm))
+
+
+def _check_motor(model, motor, JF):
+    probs = []
+    if not motor.M0 > 0:
+        probs.append(Problem("dynamics.motor_start_torque_Nm", f"got {motor.M0!r}; must be > 0"))
+    if not motor.omega0 > 0:
+        probs.append(Problem("dynamics.motor_sync_speed_rad_s",
+                             f"got {motor.omega0!r}; must be > 0"))
+    if not JF >= 0:
+        probs.append(Problem("dynamics.flywheel_kgm2", f"got {JF!r}; must be >= 0"))
+    if probs:
+        raise SpecError(probs)
+    Mc_mean = (model.W_resist_J[-1] - model.W_drive_J[-1]) / model.period
+    if Mc_mean >= motor.M0:
+        raise MotionError(Problem(
+            "dynamics.motor_start_torque_Nm",
+            f"the motor stalls: the mean resisting moment {Mc_mean:.6g} N·m is not below the "
+            f"motor's torque at rest M0 = {motor.M0:.6g} N·m"))
+    return Mc_mean
+
+
+def motor_steady_motion(model, motor: Motor, *, J_flywheel=0.0, rtol=1e-9):
+    """Periodic steady state of a machine driven by a linear motor characteristic.
+
+    Shooting: ω(0) such that the differential form integrated over one period in the angle
+    returns to ω(0) (brentq), integrated by ``solve_ivp`` (LSODA, rtol 1e-9); then the
+    table on the model's grid as in :func:`steady_motion` (``driving="motor"``).
+
+    Raises
+    ------
+    MotionError
+        The motor stalls (mean resistance ≥ M0, or ω reaches zero within the cycle).
+    """
+    import pandas as pd
+    from scipy.integrate import solve_ivp
+    from scipy.optimize import brentq
+
+    Mc_mean = _check_motor(model, motor, J_flywheel)
+    Jf, dJf, Mcf, Mdf = _interp_periodic(model)
+    P = model.period
+
+    def rhs(p, y):
+        w = y[0]
+        M = motor(w) + Mdf(p) - Mcf(p)
+        return [(M - 0.5 * w * w * dJf(p)) / ((Jf(p) + J_flywheel) * w)]
+
+    def stop(p, y):
+        return y[0] - 1e-9 * motor.omega0
+    stop.terminal = True
+
+    def shoot(w0, dense=False):
+        sol = solve_ivp(rhs, (0.0, P), [w0], method="LSODA", rtol=rtol,
+                        atol=1e-12 * motor.omega0, events=stop, dense_output=dense)
+        if sol.status == 1:
+            return None
+        return sol
+
+    def g(w0):
+        sol = shoot(w0)
+        return -w0 if sol is None else sol.y[0, -1] - w0
+
+    w_ss = motor.omega0 * (1.0 - Mc_mean / motor.M0)   # the constant-J estimate
+    w0 = None
+    try:  # secant from the constant-J estimate: g is smooth, ~5 shots
+        from scipy.optimize import newton
+        w0 = float(newton(g, w_ss, x1=w_ss * (1.0 + 1e-3), tol=1e-8 * motor.omega0,
+                          maxiter=30))
+        if not (w0 > 0 and shoot(w0) is not None):
+            w0 = None
+    except (RuntimeError, OverflowError, ValueError):
+        w0 = None
+    if w0 is None:  # bracket and bisect
+        hi = motor.omega0 * 1.5
+        lo = w_ss
+        for _ in range(60):
+            if g(lo) > 0:
+                break
+            lo *= 0.8
+        else:
+            raise MotionError(Problem("dynamics.motor_start_torque_Nm",
+                                      "the motor stalls: no periodic motion with ω > 0"))
+        w0 = brentq(g, lo, hi, xtol=1e-9 * motor.omega0)
+    sol = shoot(w0, dense=True)
+    if sol is None:
+        raise MotionError(Problem("dynamics.motor_start_torque_Nm",
+                                  "the motor stalls within the cycle"))
+    w = sol.sol(model.phi)[0]
+    J = model.J_kgm2 + J_flywheel
+    Md = motor(w) + model.M_drive_Nm
+    eps = (Md - model.M_resist_Nm - 0.5 * w * w * model.dJ_dphi_kgm2) / J
+    t = _cumtrapz(1.0 / w, model.phi)
+    Wd = _cumtrapz(Md, model.phi)
+    Wnet = Wd - model.W_resist_J
+    wmax, wmin = float(w.max()), float(w.min())
+    table = pd.DataFrame({
+        "phi_deg": model.phi_deg, "phi_rad": model.phi, "J_red_kgm2": J,
+        "dJ_red_dphi_kgm2": model.dJ_dphi_kgm2, "M_drive_Nm": Md,
+        "M_resist_Nm": model.M_resist_Nm, "W_J": Wnet, "E_J": 0.5 * J * w * w,
+        "omega_rad_s": w, "eps_rad_s2": eps, "t_s": t})
+    wmean = 0.5 * (wmax + wmin)
+    return MotionResult(
+        name=model.name, table=table, omega_max=wmax, omega_min=wmin, omega_mean=wmean,
+        omega_time_mean=float(P / t[-1]), delta=(wmax - wmin) / wmean,
+        dW_max=float(np.ptp(Wnet)), J_flywheel=float(J_flywheel), M_drive_const=None,
+        cycle_time=float(t[-1]), phi_omega_max_deg=float(model.phi_deg[np.argmax(w)]),
+        phi_omega_min_deg=float(model.phi_deg[np.argmin(w)]), driving="motor",
+        extra={"motor_M0_Nm": motor.M0, "motor_omega0_rad_s": motor.omega0})
+
+
+@dataclass
+class StartupResult:
+    """Start-up from rest: ``table`` with ``t_s, phi_rad, omega_rad_s``; ``t_steady`` the
+    time after which the cycle-end speed stays within 1 % of the steady δ band."""
+
+    table: object
+    t_steady: float
+
+
+def motor_startup(model, motor: Motor, *, J_flywheel=0.0, steady: MotionResult | None = None,
+                  cycles=None, points=2000):
+    """Start-up from rest (φ = 0, ω = 0) under the motor characteristic, integrated in
+    time by ``solve_ivp`` (LSODA) on J(φ)ω' = M(ω) + M_d(φ) − M_c(φ) − ½ω² J'(φ),
+    φ' = ω, until the speed settles (a few motor time constants J/(M0/ω0) and at least
+    ten cycles of the steady motion).
+
+    Raises
+    ------
+    MotionError
+        The motor cannot start (M0 below the resistance at rest) or stalls.
+    """
+    import pandas as pd
+    from scipy.integrate import solve_ivp
+
+    Mc_mean = _check_motor(model, motor, J_flywheel)
+    Jf, dJf, Mcf, Mdf = _interp_periodic(model)
+    if motor.M0 + Mdf(0.0) <= Mcf(0.0):
+        raise MotionError(Problem(
+            "dynamics.motor_start_torque_Nm",
+            f"the motor cannot start: M0 = {motor.M0:.6g} N·m does not exceed the resisting "
+            f"moment at rest {Mcf(0.0) - Mdf(0.0):.6g} N·m"))
+    w_ss = steady.omega_time_mean if steady is not None else \
+        motor.omega0 * (1.0 - Mc_mean / motor.M0)
+    Jm = float(np.mean(model.J_kgm2)) + J_flywheel
+    tau = Jm * motor.omega0 / motor.M0
+    T = model.period / w_ss
+    t_end = max(6.0 * tau, (cycles or 10) * T)
+
+    def rhs(t, y):
+        p, w = y
+        M = motor(w) + Mdf(p) - Mcf(p)
+        return [w, (M - 0.5 * w * w * dJf(p)) / (Jf(p) + J_flywheel)]
+
+    sol = solve_ivp(rhs, (0.0, t_end), [0.0, 0.0], method="LSODA", rtol=1e-8,
+                    atol=[1e-10, 1e-10 * motor.omega0], max_step=T / 40, dense_output=True)
+    t = np.linspace(0.0, t_end, points)
+    p, w = sol.sol(t)
+    if np.any(w[t > T] <= 0):
+        raise MotionError(Problem("dynamics.motor_start_torque_Nm",
+                                  "the motor stalls during the start-up"))
+    band = (steady.omega_min, steady.omega_max) if steady is not None else (w_ss, w_ss)
+    tol = 0.01 * max(band[1] - band[0], 0.01 * w_ss)
+    out = (w < band[0] - tol) | (w > band[1] + tol)
+    t_steady = float(t[np.flatnonzero(out)[-1]]) if out.any() else 0.0
+    table = pd.DataFrame({"t_s": t, "phi_rad": p, "omega_rad_s": w})
+    return StartupResult(table, t_steady)
+
+
+# --------------------------------------------------------------------------- kinetostatics
+
+
+def true_motion_forces(model, motion: MotionResult):
+    """The core's force analysis re-run under the true motion ω(φ), ε(φ) of the crank,
+    beside the constant-speed one (at ω_m, ε = 0).
+
+    Parameters
+    ----------
+    model : ReducedModel
+        From :func:`dynamics.reduced.linkage_model` (``model.source`` is the linkage spec).
+    motion : MotionResult
+        Its steady motion.
+
+    Returns
+    -------
+    pandas.DataFrame
+        ``phi_deg``, ``omega_rad_s``, ``eps_rad_s2`` and, for every force column of the
+        core (``R12_x_N`` … ``M_drive_Nm``), the value under the true motion and the
+        constant-speed value with the suffix ``_const``.  ``M_drive_Nm`` is the moment on
+        the crank shaft without the flywheel (the flywheel takes J_F·ε of the drive).
+
+    Notes
+    -----
+    ``linkage.analysis.solve_columns`` with the spec's ω and ε replaced by the arrays
+    ω(φ), ε(φ) (the group routines take the driver's ω and ε per position).
+    """
+    import dataclasses
+
+    import pandas as pd
+    from linkage.analysis import build_mechanism, solve_columns
+    from linkage.columns import force_columns
+
+    spec = model.source
+    mech = build_mechanism(spec)
+    from .reduced import stroke_extremes
+
+    ext = stroke_extremes(spec, mech)
+    s = model.rotation
+    phi = np.radians(motion.table["phi_deg"].to_numpy())
+    w = motion.table["omega_rad_s"].to_numpy()
+    e = motion.table["eps_rad_s2"].to_numpy()
+    cols = [c for c in force_columns(spec, course_tables=False) if c != "position"]
+
+    def run(omega, eps):
+        sp = dataclasses.replace(spec, omega=omega, epsilon=eps)
+        out = {c: np.empty(len(phi)) for c in cols}
+        _, f = solve_columns(sp, phi, mech, ext, out_force=out)
+        return f
+
+    true = run(s * w, s * e)
+    const = run(float(s * motion.omega_mean), 0.0)
+    df = pd.DataFrame({"phi_deg": motion.table["phi_deg"].to_numpy(),
+                       "omega_rad_s": w, "eps_rad_s2": e})
+    for c in cols:
+        if c == "phi_deg":
+            continue
+        df[c] = true[c]
+        df[f"{c}_const"] = const[c]
+    return df

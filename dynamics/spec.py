@@ -1,0 +1,254 @@
+"""Specs of ``crankdyn dynamics``: a machine given by its reduced quantities, or a linkage
+spec, each with a ``[dynamics]`` section (see the README for every key).
+
+    [dynamics]
+    driving = "constant"          # "constant" (steady), "table" (phi_deg + M_Nm) or "motor"
+    # phi_deg = [...]; M_Nm = [...]            # driving = "table": piecewise linear, periodic
+    # motor_start_torque_Nm = 900; motor_sync_speed_rad_s = 157   # "motor": M0 (1 − ω/ω0)
+    delta = 0.05                  # required δ → the flywheel; or
+    # flywheel_kgm2 = 1.2         # a given flywheel → the motion it gives
+    # omega_mean_rad_s = 10.5     # default: the spec's crank speed
+    # steps = 720                 # grid intervals over the period
+
+    [machine]                     # instead of a mechanism
+    name = "flywheel-example"
+    J_red_kgm2 = 0.22
+    omega_mean_rad_s = 157.08
+    period_deg = 360
+    [[machine.moment]]            # role "drive" or "resist"; piecewise linear over phi_deg,
+    role = "resist"               # a repeated angle is a step; periodic over period_deg
+    phi_deg = [0, 120, 120, 360]
+    M_Nm = [600, 600, 200, 200]
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ._base import Checker, Problem, SpecError, read_toml
+
+__all__ = ["DynamicsSettings", "DynamicsJob", "load_dynamics_spec"]
+
+_DYN_KEYS = ("driving", "phi_deg", "M_Nm", "motor_start_torque_Nm", "motor_sync_speed_rad_s",
+             "delta", "flywheel_kgm2", "omega_mean_rad_s", "steps")
+_MACHINE_KEYS = ("name", "J_red_kgm2", "omega_mean_rad_s", "period_deg", "moment")
+_MOMENT_KEYS = ("role", "phi_deg", "M_Nm")
+
+
+@dataclass(frozen=True)
+class DynamicsSettings:
+    """The ``[dynamics]`` section, validated."""
+
+    driving: str = "constant"
+    table_phi_deg: tuple | None = None
+    table_M_Nm: tuple | None = None
+    motor_M0: float | None = None
+    motor_omega0: float | None = None
+    delta: float | None = None
+    flywheel: float | None = None
+    omega_mean: float | None = None
+    steps: int | None = None
+
+
+@dataclass
+class DynamicsJob:
+    """What ``crankdyn dynamics`` runs: the reduced model and the settings."""
+
+    kind: str            # "machine" or "linkage"
+    model: object        # ReducedModel (without the table drive)
+    settings: DynamicsSettings
+    source: str | None
+
+
+def _settings(ck, dyn, period_deg):
+    ck.unknown(dyn, _DYN_KEYS, "dynamics")
+    driving = ck.choice(dyn, "driving", ("constant", "table", "motor"), "dynamics",
+                        required=False, default="constant")
+    phi = M = M0 = w0 = None
+    if driving == "table":
+        phi = ck.numbers(dyn, "phi_deg", "dynamics", min_length=1)
+        M = ck.numbers(dyn, "M_Nm", "dynamics", min_length=1)
+    else:
+        for k in ("phi_deg", "M_Nm"):
+            if k in dyn:
+                ck.add(f"dynamics.{k}", 'only with driving = "table"')
+    if driving == "motor":
+        M0 = ck.number(dyn, "motor_start_torque_Nm", "dynamics", gt=0)
+        w0 = ck.number(dyn, "motor_sync_speed_rad_s", "dynamics", gt=0)
+        if "omega_mean_rad_s" in dyn:
+            ck.add("dynamics.omega_mean_rad_s", "the motor's characteristic sets the speed; "
+                                                "remove it with driving = \"motor\"")
+    else:
+        for k in ("motor_start_torque_Nm", "motor_sync_speed_rad_s"):
+            if k in dyn:
+                ck.add(f"dynamics.{k}", 'only with driving = "motor"')
+    delta = ck.number(dyn, "delta", "dynamics", required=False, gt=0, lt=1)
+    fly = ck.number(dyn, "flywheel_kgm2", "dynamics", required=False, ge=0)
+    if "delta" in dyn and "flywheel_kgm2" in dyn:
+        ck.add("dynamics", "give either delta (the flywheel is sized) or flywheel_kgm2 (its "
+                           "motion is found), not both")
+    wm = ck.number(dyn, "omega_mean_rad_s", "dynamics", required=False, gt=0)
+    steps = ck.number(dyn, "steps", "dynamics", required=False, integer=True, ge=36,
+                      le=200000)
+    return DynamicsSettings(driving, tuple(phi) if phi else None, tuple(M) if M else None,
+                            M0, w0, delta, fly, wm, steps)
+
+
+def load_dynamics_spec(path_or_dict) -> DynamicsJob:
+    """Read a dynamics spec: ``[machine]`` + ``[dynamics]``, or a linkage spec + ``[dynamics]``.
+
+    Raises
+    ------
+    SpecError
+        Every problem at once, each with its key path.
+    """
+    import math
+
+    from .reduced import PiecewiseLinear, linkage_model, machine_model
+
+    data, _ = read_toml(path_or_dict)
+    src = None if isinstance(path_or_dict, dict) else str(path_or_dict)
+    ck = Checker()
+    dyn = ck.table(data, "dynamics", required=False)
+    if "engine" in data:
+        raise SpecError(Problem("engine", "engine specs are not supported by crankdyn "
+                                          "dynamics yet; give a [machine] (reduced "
+                                          "quantities) or a linkage spec"))
+    if "machine" in data:
+        ck.unknown(data, ["machine", "dynamics"])
+        mach = ck.table(data, "machine")
+        ck.unknown(mach, _MACHINE_KEYS, "machine")
+        name = ck.string(mach, "name", "machine", required=False, default="machine")
+        J = ck.number(mach, "J_red_kgm2", "machine", gt=0)
+        wm = ck.number(mach, "omega_mean_rad_s", "machine", required=False, gt=0)
+        period = ck.number(mach, "period_deg", "machine", required=False, default=360.0,
+                           gt=0)
+        moments = mach.get("moment", [])
+        if not isinstance(moments, list) or not moments:
+            ck.add("machine.moment", "missing; give at least one [[machine.moment]] with "
+                                     "role, phi_deg and M_Nm")
+            moments = []
+        parsed = []
+        for i, mt in enumerate(moments):
+            path = f"machine.moment[{i}]"
+            if not isinstance(mt, dict):
+                ck.add(path, f"must be a table, got {mt!r}")
+                continue
+            ck.unknown(mt, _MOMENT_KEYS, path)
+            role = ck.choice(mt, "role", ("drive", "resist"), path)
+            phi = ck.numbers(mt, "phi_deg", path, min_length=1)
+            M = ck.numbers(mt, "M_Nm", path, min_length=1)
+            if role and phi is not None and M is not None and period:
+                try:
+                    parsed.append((role, PiecewiseLinear(phi, M, period, key=path)))
+                except SpecError as exc:
+                    ck.problems.extend(exc.problems)
+        settings = _settings(ck, dyn, period)
+        ck.raise_if_any()
+        if settings.omega_mean is not None:
+            wm = settings.omega_mean
+        model = machine_model(J, parsed, period, name=name, steps=settings.steps or 1440,
+                              omega_nominal=wm)
+        kind = "machine"
+    elif "mechanism" in data:
+        from linkage import load_spec
+
+        rest = {k: v for k, v in data.items() if k != "dynamics"}
+        settings = _settings(ck, dyn, 360.0)
+        problems = list(ck.problems)
+        try:
+            lspec = load_spec(rest)
+        except SpecError as exc:
+            raise SpecError(problems + exc.problems) from None
+        if problems:
+            raise SpecError(problems)
+        if lspec.omega == 0:
+            raise SpecError(Problem("mechanism.omega_rad_s", "got 0; machine dynamics needs "
+                                    "the crank's speed and direction (nonzero)"))
+        model = linkage_model(lspec, steps=settings.steps or 720)
+        if settings.omega_mean is not None:
+            model.omega_nominal = settings.omega_mean
+        kind = "linkage"
+        period = 360.0
+    else:
+        raise SpecError(Problem("", "neither [machine] nor [mechanism]: give a machine by "
+                                    "its reduced quantities or a linkage spec, with "
+                                    "[dynamics]"))
+    if settings.driving == "table":
+        try:
+            pl = PiecewiseLinear(settings.table_phi_deg, settings.table_M_Nm, period,
+                                 key="dynamics")
+        except SpecError:
+            raise
+        # the table's angles are the angle turned from the start of the cycle
+        model = model.with_drive(model.M_drive_Nm + pl(model.phi),
+                                 model.W_drive_J + pl.integral(0.0, model.phi))
+    return DynamicsJob(kind, model, settings, src)
+
+
+def run_job(job: DynamicsJob):
+    """Compute everything a dynamics job asks: the motion (and the flywheel), for a motor
+    the start-up, for a linkage the forces under the true motion.
+
+    Returns
+    -------
+    dict
+        ``motion`` (MotionResult), ``flywheel`` (FlywheelResult or None), ``startup``
+        (StartupResult or None), ``forces`` (DataFrame or None), ``model``.
+    """
+    from .motion import (Motor, motor_startup, motor_steady_motion, size_flywheel,
+                         steady_motion, true_motion_forces)
+
+    s, model = job.settings, job.model
+    fly = startup = None
+    if s.driving == "motor":
+        motor = Motor(s.motor_M0, s.motor_omega0)
+        JF = s.flywheel or 0.0
+        if s.delta is not None:
+            fly = _motor_flywheel(model, motor, s.delta)
+            JF = fly.J_exact
+            motion = fly.motion
+        else:
+            motion = motor_steady_motion(model, motor, J_flywheel=JF)
+        startup = motor_startup(model, motor, J_flywheel=JF, steady=motion)
+    else:
+        driving = "constant" if s.driving == "constant" else "given"
+        if model.omega_nominal is None:
+            raise SpecError(Problem("dynamics.omega_mean_rad_s",
+                                    "missing; give the mean speed (or machine."
+                                    "omega_mean_rad_s)"))
+        if s.delta is not None:
+            fly = size_flywheel(model, s.delta, driving=driving)
+            motion = fly.motion
+        else:
+            motion = steady_motion(model, J_flywheel=s.flywheel or 0.0, driving=driving)
+    forces = true_motion_forces(model, motion) if job.kind == "linkage" else None
+    return {"model": model, "motion": motion, "flywheel": fly, "startup": startup,
+            "forces": forces}
+
+
+def _motor_flywheel(model, motor, delta):
+    """Flywheel for δ under a motor characteristic: classic estimate from the constant-speed
+    energy swing at the motor's steady speed, exact by brentq on the periodic solution."""
+    import numpy as np
+    from scipy.optimize import brentq
+
+    from .motion import FlywheelResult, motor_steady_motion
+
+    m0 = motor_steady_motion(model, motor)
+    Jc = float(np.mean(model.J_kgm2[:-1]))
+    wm = m0.omega_mean
+    const, _ = model.with_constant_drive()
+    dW = float(np.ptp(const.W_net_J))
+    J_classic = dW / (delta * wm * wm) - Jc
+    if m0.delta <= delta:
+        return FlywheelResult(delta, dW, Jc, J_classic, 0.0, m0)
+
+    def f(JF):
+        return motor_steady_motion(model, motor, J_flywheel=JF).delta - delta
+
+    hi = max(J_classic, 1e-9)
+    while f(hi) > 0:
+        hi *= 2.0
+    JF = brentq(f, 0.0, hi, xtol=1e-7 * hi, rtol=1e-7)
+    return FlywheelResult(delta, dW, Jc, J_classic, float(JF),
+                          motor_steady_motion(model, motor, J_flywheel=JF))
