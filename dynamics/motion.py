@@ -71,7 +71,9 @@ class MotionResult:
     J_flywheel : float
         The flywheel added to the model's J. [kg·m²]
     M_drive_const : float or None
-        The constant driving moment that makes the cycle steady (``driving="constant"``).
+        The constant driving moment that makes the cycle steady (``driving="constant"``);
+        negative for a machine given by its driving moments only, which gets the constant
+        resisting moment −M_drive_const instead (see ``ReducedModel.with_constant_drive``).
     cycle_time : float
         [s]
     phi_omega_max_deg, phi_omega_min_deg : float
@@ -360,20 +362,28 @@ def motor_steady_motion(model, motor: Motor, *, J_flywheel=0.0, rtol=1e-9):
         M = motor(w) + Mdf(p) - Mcf(p)
         return [(M - 0.5 * w * w * dJf(p)) / ((Jf(p) + J_flywheel) * w)]
 
+    w_floor = 1e-4 * motor.omega0   # below this the machine is taken as stopped
+
     def stop(p, y):
-        return y[0] - 1e-9 * motor.omega0
+        return y[0] - w_floor
     stop.terminal = True
 
     def shoot(w0, dense=False):
-        sol = solve_ivp(rhs, (0.0, P), [w0], method="LSODA", rtol=rtol,
-                        atol=1e-12 * motor.omega0, events=stop, dense_output=dense)
-        if sol.status == 1:
+        if not w0 > 2 * w_floor:
+            return None
+        try:
+            sol = solve_ivp(rhs, (0.0, P), [w0], method="LSODA", rtol=rtol,
+                            atol=1e-12 * motor.omega0, events=stop, dense_output=dense)
+        except ValueError:  # the event's root lost in the 1/ω singularity: a stall
+            return None
+        if sol.status != 0 or not np.isfinite(sol.y[0, -1]):
             return None
         return sol
 
     def g(w0):
         sol = shoot(w0)
-        return -w0 if sol is None else sol.y[0, -1] - w0
+        # a stall (or a start at ω ≤ 0) counts as losing all the speed
+        return -(abs(w0) + 1e-9 * motor.omega0) if sol is None else sol.y[0, -1] - w0
 
     w_ss = motor.omega0 * (1.0 - Mc_mean / motor.M0)   # the constant-J estimate
     w0 = None
@@ -393,8 +403,13 @@ def motor_steady_motion(model, motor: Motor, *, J_flywheel=0.0, rtol=1e-9):
                 break
             lo *= 0.8
         else:
-            raise MotionError(Problem("dynamics.motor_start_torque_Nm",
-                                      "the motor stalls: no periodic motion with ω > 0"))
+            lo = None
+        if lo is None or g(hi) >= 0:
+            raise MotionError(Problem(
+                "dynamics.motor_start_torque_Nm",
+                f"the motor stalls: with M0 = {motor.M0:.6g} N·m, ω0 = {motor.omega0:.6g} "
+                "rad/s there is no periodic motion with ω > 0 (the machine stops within "
+                "the cycle); a stronger motor or a flywheel is needed"))
         w0 = brentq(g, lo, hi, xtol=1e-9 * motor.omega0)
     sol = shoot(w0, dense=True)
     if sol is None:

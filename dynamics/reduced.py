@@ -178,9 +178,17 @@ class ReducedModel:
                        W_drive_J=np.asarray(W_drive_J, float) + 0 * self.phi)
 
     def with_constant_drive(self):
-        """The same machine driven by the constant moment that makes the cycle steady:
-        M_d = (∫M_c dφ − ∫M_d,given dφ)/period added to the given driving moments."""
+        """The same machine with the constant moment that makes the cycle steady.
+
+        Returns ``(model, M_const)``.  Normally a constant driving moment
+        M_d = (∫M_c dφ − ∫M_d,given dφ)/period is added to the given driving moments; a
+        machine given by its driving moments only (an engine's turning-moment diagram)
+        gets a constant *resisting* moment ∫M_d dφ/period instead (``M_const`` is then
+        returned negative: it is the drive's deficit)."""
         extra = (self.W_resist_J[-1] - self.W_drive_J[-1]) / self.period
+        if not np.any(self.M_resist_Nm) and not np.any(self.W_resist_J) and extra < 0:
+            return replace(self, M_resist_Nm=self.M_resist_Nm - extra,
+                           W_resist_J=self.W_resist_J - extra * self.phi), float(extra)
         return self.with_drive(self.M_drive_Nm + extra, self.W_drive_J + extra * self.phi), \
             float(extra)
 
