@@ -515,8 +515,9 @@ def true_motion_forces(model, motion: MotionResult):
     pandas.DataFrame
         ``phi_deg``, ``omega_rad_s``, ``eps_rad_s2`` and, for every force column of the
         core (``R12_x_N`` … ``M_drive_Nm``), the value under the true motion and the
-        constant-speed value with the suffix ``_const``.  ``M_drive_Nm`` is the moment on
-        the crank shaft without the flywheel (the flywheel takes J_F·ε of the drive).
+        constant-speed value with the suffix ``_const``.  ``M_drive_Nm`` is the core's balancing
+        moment on the crank (+ counter-clockwise, as in :mod:`linkage`) without the
+        flywheel: under the true motion it equals ``rotation·(M_d − J_F·ε)``.
 
     Notes
     -----
