@@ -1,11 +1,20 @@
-"""``crankdyn balance``: static or two-plane balancing of a rigid rotor.
+"""``crankdyn balance``: balancing of a rigid rotor or of a linkage's mechanism.
 
     crankdyn balance ROTOR.toml -o DIR [--lang ru|en]
+    crankdyn balance LINKAGE.toml -o DIR [--lang ru|en]     # optional [balance] section
 
-Writes ``DIR/rotor_balance.csv`` (``plane, z_mm, mr_gmm, angle_deg`` and ``r_mm, m_g``
-when the spec gives ``correction_radius_mm``), ``DIR/rotor_shares.csv`` (every unbalance
-resolved into the planes) and ``DIR/rotor_polygons.png``/``.svg`` (the m·r polygon of
-every plane), all at once through a staging folder; bad input writes nothing.
+Rotor (a ``[rotor]`` table): ``DIR/rotor_balance.csv`` (``plane, z_mm, mr_gmm,
+angle_deg`` and ``m_g, r_mm`` when the spec gives ``correction_radius_mm``),
+``DIR/rotor_shares.csv`` (every unbalance resolved into the planes) and
+``DIR/rotor_polygons.png``/``.svg`` (the m·r polygon of every plane).
+
+Linkage (a ``[mechanism]`` table): full shaking-force balance of a crank-rocker or partial
+balance of a crank-slider: ``DIR/counterweights.csv`` (``link, mr_kgm, angle_deg,
+radius_m, mass_kg``), ``DIR/shaking.csv`` (``phi_deg`` and the shaking force and moment
+before and after: ``F_x_N, F_y_N, F_N, M_O_Nm`` and ``*_after``) and the plots
+``shaking_force`` and ``shaking_locus``.
+
+Everything is written at once through a staging folder; bad input writes nothing.
 """
 from __future__ import annotations
 
@@ -34,6 +43,12 @@ def run(args) -> int:
     out = Path(args.output)
     if out.exists() and not out.is_dir():
         raise SpecError(f"-o: {out} exists and is not a folder")
+
+    from linkage.validation import read_toml
+
+    data, _ = read_toml(spec_path)
+    if "mechanism" in data and "rotor" not in data:
+        return _run_linkage(args, spec_path, out)
 
     from matplotlib.figure import Figure
 
@@ -71,4 +86,42 @@ def run(args) -> int:
           f"{res.residual_moment_gmm2:.3g} g*mm^2 (before: {res.initial_force_gmm:.4g}, "
           f"{res.initial_moment_gmm2:.4g})")
     print(f"wrote {out / names[0]}, {out / names[1]}, {out / 'rotor_polygons'}.png/.svg")
+    return 0
+
+
+def _run_linkage(args, spec_path, out):
+    import pandas as pd
+    from matplotlib.figure import Figure
+
+    from dynamics.shaking import mechanism_balance, plot_shaking_force, plot_shaking_locus
+
+    from .io import check_not_input, ensure_finite, staged_output, write_csv
+
+    res = mechanism_balance(spec_path)
+    b, a = res.before.table, res.after.table
+    table = pd.concat([b, a.drop(columns="phi_deg").add_suffix("_after")], axis=1)
+    ensure_finite(table, "shaking force")
+    ensure_finite(res.counterweights.drop(columns="link"), "counterweights")
+    figs = {}
+    for name, fn, size in (("shaking_force", plot_shaking_force, (7.5, 4.2)),
+                           ("shaking_locus", plot_shaking_locus, (6, 6))):
+        fig = Figure(figsize=size, layout="constrained")
+        fn(res, fig.add_subplot(), lang=args.lang)
+        figs[name] = fig
+    names = ["counterweights.csv", "shaking.csv"] + [f"{n}.{e}" for n in figs
+                                                      for e in ("png", "svg")]
+    check_not_input([out / n for n in names], [spec_path])
+    with staged_output(out, inputs=[spec_path]) as stage:
+        write_csv(res.counterweights, stage / names[0])
+        write_csv(table, stage / names[1])
+        for n, fig in figs.items():
+            fig.savefig(stage / f"{n}.png", dpi=110)
+            fig.savefig(stage / f"{n}.svg")
+    spec = res.balanced_spec
+    print(f"{spec.name}: {spec.kind}, shaking-force balance by counterweights")
+    for _, r in res.counterweights.iterrows():
+        print(f"  {r['link']:<7} m*r = {r['mr_kgm']:.6g} kg*m at {r['angle_deg']:.2f} deg "
+              f"(link frame), m = {r['mass_kg']:.6g} kg at r = {r['radius_m']:.6g} m")
+    print(f"  max shaking force {res.before.F_max:.6g} N before, {res.after.F_max:.6g} N after")
+    print(f"wrote {out / names[0]}, {out / names[1]}, {len(figs)} plots (PNG, SVG) in {out}")
     return 0

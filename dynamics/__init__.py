@@ -15,7 +15,17 @@ This package uses :mod:`linkage` and :mod:`engine`; they never import it.  No ma
 openpyxl at import time (:mod:`dynamics.plots` imports them when called).
 """
 from ._base import MotionError
+from .motion import (MotionResult, FlywheelResult, Motor, motor_startup,
+                     motor_steady_motion, size_flywheel, steady_motion, true_motion_forces)
+from .reduced import PiecewiseLinear, ReducedModel, chain_reduce, linkage_model, machine_model
 from .rotor import RotorBalance, balance_rotor, load_rotor_spec, rotor_balance
+from .shaking import (BalanceResult, balance_crank_slider, balance_fourbar, mechanism_balance,
+                      shaking)
+from .spec import load_dynamics_spec, run_job
 
 __all__ = ["MotionError", "RotorBalance", "balance_rotor", "load_rotor_spec",
-           "rotor_balance"]
+           "rotor_balance", "ReducedModel", "PiecewiseLinear", "machine_model",
+           "linkage_model", "chain_reduce", "MotionResult", "FlywheelResult", "Motor",
+           "steady_motion", "size_flywheel", "motor_steady_motion", "motor_startup",
+           "true_motion_forces", "BalanceResult", "shaking", "balance_fourbar",
+           "balance_crank_slider", "mechanism_balance", "load_dynamics_spec", "run_job"]
