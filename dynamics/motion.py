@@ -73,7 +73,8 @@ class MotionResult:
     M_drive_const : float or None
         The constant driving moment that makes the cycle steady (``driving="constant"``);
         negative for a machine given by its driving moments only, which gets the constant
-        resisting moment −M_drive_const instead (see ``ReducedModel.with_constant_drive``).
+        resisting moment −M_drive_const instead (see ``ReducedModel.with_constant_drive``);
+        ``constant_role`` says which ("drive" or "resist").
     cycle_time : float
         [s]
     phi_omega_max_deg, phi_omega_min_deg : float
@@ -94,6 +95,7 @@ class MotionResult:
     phi_omega_max_deg: float
     phi_omega_min_deg: float
     driving: str = "constant"
+    constant_role: str | None = None
     extra: dict = field(default_factory=dict)
 
 
@@ -163,8 +165,11 @@ def steady_motion(model, omega_mean=None, *, J_flywheel=0.0, driving="constant")
     if probs:
         raise SpecError(probs)
     Mconst = None
+    role = None
     if driving == "constant":
+        resist_free = not np.any(model.M_resist_Nm) and not np.any(model.W_resist_J)
         model, Mconst = model.with_constant_drive()
+        role = "resist" if resist_free and Mconst < 0 else "drive"
     else:
         _net_work_check(model, "dynamics.driving")
     J = model.J_kgm2 + J_flywheel
@@ -207,7 +212,8 @@ def steady_motion(model, omega_mean=None, *, J_flywheel=0.0, driving="constant")
         omega_time_mean=float(model.period / t[-1]), delta=(wmax - wmin) / wmean,
         dW_max=float(np.ptp(W)), J_flywheel=float(J_flywheel), M_drive_const=Mconst,
         cycle_time=float(t[-1]), phi_omega_max_deg=float(model.phi_deg[np.argmax(w)]),
-        phi_omega_min_deg=float(model.phi_deg[np.argmin(w)]), driving=driving)
+        phi_omega_min_deg=float(model.phi_deg[np.argmin(w)]), driving=driving,
+        constant_role=role)
 
 
 @dataclass

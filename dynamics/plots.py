@@ -116,7 +116,8 @@ def plot_omega(motion, ax=None, lang="en"):
     ax.set_xlabel(L["phi"])
     ax.set_ylabel(L["w"])
     ax.set_title(f"{L['t_w']}: δ = {motion.delta:.4g}")
-    ax.legend(loc="best", fontsize=8)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=4, fontsize=8,
+              frameon=False)
     ax.grid(True, lw=0.3)
     return ax
 

@@ -38,7 +38,7 @@ import numpy as np
 from ._base import Problem, SpecError
 
 __all__ = ["ReducedModel", "PiecewiseLinear", "machine_model", "linkage_model",
-           "chain_reduce", "ChainReduction"]
+           "engine_model", "chain_reduce", "ChainReduction"]
 
 
 class PiecewiseLinear:
@@ -349,6 +349,57 @@ def linkage_model(spec, *, steps=720, phi0_deg=None, drive_power=False) -> Reduc
     return ReducedModel(spec.name, phi, J, dJ, zero.copy(), Mc, zero.copy(), Wc,
                         2 * math.pi, omega_nominal=abs(spec.omega) or None,
                         phi0_deg=float(phi0_deg), rotation=s, source=spec)
+
+
+# --------------------------------------------------------------------------- engine
+
+
+def engine_model(spec, *, steps=1440, J_extra_kgm2=0.0) -> ReducedModel:
+    """The reduced model of a (multi-cylinder) engine of :mod:`engine`.
+
+    Parameters
+    ----------
+    spec : EngineSpec
+        From :func:`engine.load_spec` (its ``cylinders`` fire evenly: every
+        cycle/cylinders degrees, cylinder k at α − k·cycle/i).
+    steps : int
+        Grid intervals over the cycle (720° four-stroke, 360° two-stroke).
+    J_extra_kgm2 : float
+        Crankshaft and other rotating parts not in the spec's masses. [kg·m²]
+
+    Returns
+    -------
+    ReducedModel
+        ``J_kgm2`` = Σ_k [m_j (v_k/ω)² + (m_ш.к + m_кр) R²] + J_extra (the two-mass model
+        of the engine's rod, as in the force table); ``dJ_dphi_kgm2`` = Σ 2 m_j (v/ω)(j/ω²)
+        (exact kinematics at constant ω); ``M_drive_Nm`` the gas torque Σ Mкр(ΔPг) from the
+        engine's own crank-pin force routine with the gas force alone (the piston's inertia
+        torque is the −½ω² dJ/dφ term of the equation of motion); no resisting moment (a
+        constant one is added by :func:`dynamics.motion.steady_motion`).
+    """
+    import engine
+    from engine.forces import crank_pin_forces
+    from engine.kinematics import crank_slider
+
+    cyc = 720.0 if spec.strokes == 4 else 360.0
+    i = int(spec.cylinders)
+    phi = _grid(math.radians(cyc), steps)
+    a_deg = np.mod(np.degrees(phi)[None, :] - (cyc / i) * np.arange(i)[:, None], cyc)
+    flat = a_deg.ravel()
+    tab = engine.force_table(spec, flat)
+    mech = crank_slider(np.radians(flat), spec.R, spec.L, spec.omega)
+    Mgas = crank_pin_forces(mech, tab["dPg_N"].to_numpy(), spec.L)["M"].reshape(a_deg.shape)
+    vr = (tab["v_m_s"].to_numpy() / spec.omega).reshape(a_deg.shape)      # dx/dφ [m]
+    ar = (tab["j_m_s2"].to_numpy() / spec.omega ** 2).reshape(a_deg.shape)  # d²x/dφ² [m]
+    m_rot = spec.m_rod_rot + (spec.m_crank_rot or 0.0)
+    J = np.sum(spec.mj * vr * vr + m_rot * spec.R ** 2, axis=0) + J_extra_kgm2
+    dJ = np.sum(2.0 * spec.mj * vr * ar, axis=0)
+    Md = np.sum(Mgas, axis=0)
+    Wd = np.concatenate([[0.0], np.cumsum(0.5 * (Md[1:] + Md[:-1]) * np.diff(phi))])
+    zero = np.zeros_like(phi)
+    return ReducedModel(spec.name, phi, J, dJ, Md, zero.copy(), Wd, zero.copy(),
+                        math.radians(cyc), omega_nominal=spec.omega, source=spec,
+                        extra={"cylinders": i, "cycle_deg": cyc})
 
 
 # --------------------------------------------------------------------------- chains

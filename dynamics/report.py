@@ -24,8 +24,12 @@ def summary_rows(result: dict, lang="en"):
         ("Время цикла" if ru else "cycle time", m.cycle_time, "с" if ru else "s"),
     ]
     if m.M_drive_const is not None:
-        rows.append(("Mд = const" if ru else "M_d (constant)", m.M_drive_const,
-                     "Н·м" if ru else "N·m"))
+        if m.constant_role == "resist":
+            rows.append(("Mс = const" if ru else "M_c (constant)", -m.M_drive_const,
+                         "Н·м" if ru else "N·m"))
+        else:
+            rows.append(("Mд = const" if ru else "M_d (constant)", m.M_drive_const,
+                         "Н·м" if ru else "N·m"))
     if fly is not None:
         rows += [
             ("δ заданный" if ru else "delta asked", fly.delta, "-"),

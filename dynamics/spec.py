@@ -29,7 +29,7 @@ from ._base import Checker, Problem, SpecError, read_toml
 __all__ = ["DynamicsSettings", "DynamicsJob", "load_dynamics_spec"]
 
 _DYN_KEYS = ("driving", "phi_deg", "M_Nm", "motor_start_torque_Nm", "motor_sync_speed_rad_s",
-             "delta", "flywheel_kgm2", "omega_mean_rad_s", "steps")
+             "delta", "flywheel_kgm2", "omega_mean_rad_s", "steps", "J_engine_extra_kgm2")
 _MACHINE_KEYS = ("name", "J_red_kgm2", "omega_mean_rad_s", "period_deg", "moment")
 _MOMENT_KEYS = ("role", "phi_deg", "M_Nm")
 
@@ -59,8 +59,10 @@ class DynamicsJob:
     source: str | None
 
 
-def _settings(ck, dyn, period_deg):
+def _settings(ck, dyn, period_deg, engine=False):
     ck.unknown(dyn, _DYN_KEYS, "dynamics")
+    if not engine and "J_engine_extra_kgm2" in dyn:
+        ck.add("dynamics.J_engine_extra_kgm2", "only for an engine spec ([engine])")
     driving = ck.choice(dyn, "driving", ("constant", "table", "motor"), "dynamics",
                         required=False, default="constant")
     phi = M = M0 = w0 = None
@@ -105,15 +107,36 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
 
     from .reduced import PiecewiseLinear, linkage_model, machine_model
 
-    data, _ = read_toml(path_or_dict)
+    data, base_dir = read_toml(path_or_dict)
     src = None if isinstance(path_or_dict, dict) else str(path_or_dict)
     ck = Checker()
     dyn = ck.table(data, "dynamics", required=False)
     if "engine" in data:
-        raise SpecError(Problem("engine", "engine specs are not supported by crankdyn "
-                                          "dynamics yet; give a [machine] (reduced "
-                                          "quantities) or a linkage spec"))
-    if "machine" in data:
+        import engine
+
+        from .reduced import engine_model
+
+        rest = {k: v for k, v in data.items() if k != "dynamics"}
+        settings = _settings(ck, dyn, 720.0, engine=True)
+        J_extra = ck.number(dyn, "J_engine_extra_kgm2", "dynamics", required=False,
+                            default=0.0, ge=0)
+        problems = list(ck.problems)
+        try:
+            espec = engine.load_spec(rest, base_dir=base_dir)
+        except SpecError as exc:
+            raise SpecError(problems + exc.problems) from None
+        if problems:
+            raise SpecError(problems)
+        if settings.driving != "constant":
+            raise SpecError(Problem("dynamics.driving", f"got {settings.driving!r}; an "
+                                    "engine drives itself: the resisting moment is the "
+                                    "constant one (driving = \"constant\")"))
+        model = engine_model(espec, steps=settings.steps or 1440, J_extra_kgm2=J_extra)
+        if settings.omega_mean is not None:
+            model.omega_nominal = settings.omega_mean
+        kind = "engine"
+        period = 720.0 if espec.strokes == 4 else 360.0
+    elif "machine" in data:
         ck.unknown(data, ["machine", "dynamics"])
         mach = ck.table(data, "machine")
         ck.unknown(mach, _MACHINE_KEYS, "machine")

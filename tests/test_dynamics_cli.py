@@ -69,3 +69,13 @@ def test_bad_input(tmp_path, capsys, body, keys):
     assert not out.exists()
     for k in keys:
         assert any(f"error: {k}:" in line for line in err), (k, err)
+
+
+def test_engine_example(tmp_path):
+    out = tmp_path / "o"
+    assert main(["dynamics", str(example_path("petrol_dynamics.toml")), "-o", str(out),
+                 "--lang", "ru"]) == 0
+    m = pd.read_csv(out / "motion.csv")
+    w = m["omega_rad_s"]
+    assert (w.max() - w.min()) / (0.5 * (w.max() + w.min())) == pytest.approx(0.01, rel=1e-6)
+    assert m["phi_deg"].iloc[-1] == pytest.approx(720.0)
