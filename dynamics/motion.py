@@ -521,7 +521,8 @@ def true_motion_forces(model, motion: MotionResult):
     pandas.DataFrame
         ``phi_deg``, ``omega_rad_s``, ``eps_rad_s2`` and, for every force column of the
         core (``R12_x_N`` … ``M_drive_Nm``), the value under the true motion and the
-        constant-speed value with the suffix ``_const``.  ``M_drive_Nm`` is the core's balancing
+        constant-speed value with the suffix ``_const``; also ``R12_N`` (and
+        ``R12_N_const``), the magnitude of the crank bearing's reaction.  ``M_drive_Nm`` is the core's balancing
         moment on the crank (+ counter-clockwise, as in :mod:`linkage`) without the
         flywheel: under the true motion it equals ``rotation·(M_d − J_F·ε)``.
 
@@ -562,4 +563,6 @@ def true_motion_forces(model, motion: MotionResult):
             continue
         df[c] = true[c]
         df[f"{c}_const"] = const[c]
+    for name, f in (("", true), ("_const", const)):   # the crank bearing's load
+        df[f"R12_N{name}"] = np.hypot(f["R12_x_N"], f["R12_y_N"])
     return df

@@ -17,14 +17,16 @@ _T = {
            "t_W": "Диаграмма энергомасс (Виттенбауэр)", "t_w": "Угловая скорость звена "
            "приведения", "t_s": "Разгон из состояния покоя", "wmax": "ωmax", "wmin": "ωmin",
            "wm": "ωср", "true": "при истинном движении", "const": "при ω = const",
-           "t_F": "Уравновешивающий момент Mур", "Mur": "Mур, Н·м", "steady": "уст. режим"},
+           "t_F": "Уравновешивающий момент Mур", "Mur": "Mур, Н·м", "steady": "уст. режим",
+           "R12": "R12, Н", "t_R": "Реакция в опоре кривошипа R12"},
     "en": {"phi": "φ [deg]", "J": "J_red [kg·m²]", "dJ": "dJ_red/dφ [kg·m²]", "Md": "M_d",
            "Mc": "M_c", "M": "M [N·m]", "dE": "ΔE [J]", "w": "ω [rad/s]", "t": "t [s]",
            "t_J": "Reduced moment of inertia", "t_M": "Reduced moments",
            "t_W": "Energy–inertia (Wittenbauer) diagram", "t_w": "Speed of the crank",
            "t_s": "Start-up from rest", "wmax": "ω_max", "wmin": "ω_min", "wm": "ω_m",
            "true": "true motion", "const": "ω = const", "t_F": "Balancing (driving) moment",
-           "Mur": "M_b [N·m]", "steady": "steady band"},
+           "Mur": "M_b [N·m]", "steady": "steady band", "R12": "R12 [N]",
+           "t_R": "Crank bearing reaction R12"},
 }
 
 
@@ -149,8 +151,10 @@ def plot_true_forces(forces, column="M_drive_Nm", ax=None, lang="en"):
     ax.plot(xx, forces[f"{column}_const"].to_numpy()[order], color="0.4", ls=(0, (5, 2)),
             lw=1.3, label=L["const"])
     ax.set_xlabel(L["phi"])
-    ax.set_ylabel(L["Mur"] if column == "M_drive_Nm" else column)
-    ax.set_title(L["t_F"] if column == "M_drive_Nm" else column)
+    labels = {"M_drive_Nm": (L["Mur"], L["t_F"]), "R12_N": (L["R12"], L["t_R"])}
+    ylab, title = labels.get(column, (column, column))
+    ax.set_ylabel(ylab)
+    ax.set_title(title)
     ax.legend(loc="best", fontsize=8)
     ax.grid(True, lw=0.3)
     return ax
@@ -174,7 +178,10 @@ def dynamics_figures(result: dict, lang="en"):
         plot_startup(result["startup"], m, fig.add_subplot(), lang=lang)
         figs["startup"] = fig
     if result.get("forces") is not None:
-        fig = Figure(figsize=(7.5, 4.2), layout="constrained")
-        plot_true_forces(result["forces"], "M_drive_Nm", fig.add_subplot(), lang=lang)
+        fig = Figure(figsize=(7.5, 7.4), layout="constrained")
+        ax1, ax2 = fig.subplots(2, 1, sharex=True)
+        plot_true_forces(result["forces"], "M_drive_Nm", ax1, lang=lang)
+        plot_true_forces(result["forces"], "R12_N", ax2, lang=lang)
+        ax1.set_xlabel("")
         figs["forces"] = fig
     return figs

@@ -12,7 +12,10 @@ spec, each with a ``[dynamics]`` section (see the README for every key).
 
     [machine]                     # instead of a mechanism
     name = "flywheel-example"
-    J_red_kgm2 = 0.22
+    J_red_kgm2 = 0.22             # and/or elements with constant speed ratios:
+    # [[machine.element]]         # J_kgm2 + speed_ratio (ω_k/ω), m_kg + velocity_ratio_m
+    # J_kgm2 = 2.5                # (v/ω [m]); J_red = J_red_kgm2 + Σ J ratio² + Σ m ratio²
+    # speed_ratio = 0.25
     omega_mean_rad_s = 157.08
     period_deg = 360
     [[machine.moment]]            # role "drive" or "resist"; piecewise linear over phi_deg,
@@ -30,7 +33,8 @@ __all__ = ["DynamicsSettings", "DynamicsJob", "load_dynamics_spec"]
 
 _DYN_KEYS = ("driving", "phi_deg", "M_Nm", "motor_start_torque_Nm", "motor_sync_speed_rad_s",
              "delta", "flywheel_kgm2", "omega_mean_rad_s", "steps", "J_engine_extra_kgm2")
-_MACHINE_KEYS = ("name", "J_red_kgm2", "omega_mean_rad_s", "period_deg", "moment")
+_MACHINE_KEYS = ("name", "J_red_kgm2", "omega_mean_rad_s", "period_deg", "moment", "element")
+_ELEMENT_KEYS = ("J_kgm2", "speed_ratio", "m_kg", "velocity_ratio_m")
 _MOMENT_KEYS = ("role", "phi_deg", "M_Nm")
 
 
@@ -141,7 +145,42 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
         mach = ck.table(data, "machine")
         ck.unknown(mach, _MACHINE_KEYS, "machine")
         name = ck.string(mach, "name", "machine", required=False, default="machine")
-        J = ck.number(mach, "J_red_kgm2", "machine", gt=0)
+        elements = mach.get("element", [])
+        J = ck.number(mach, "J_red_kgm2", "machine", gt=0, required=not elements,
+                      default=0.0)
+        if not isinstance(elements, list):
+            ck.add("machine.element", "must be a list of tables ([[machine.element]])")
+            elements = []
+        rot, trans = ([], []), ([], [])
+        for i, el in enumerate(elements):
+            path = f"machine.element[{i}]"
+            if not isinstance(el, dict):
+                ck.add(path, f"must be a table, got {el!r}")
+                continue
+            ck.unknown(el, _ELEMENT_KEYS, path)
+            if "J_kgm2" in el or "speed_ratio" in el:
+                Jk = ck.number(el, "J_kgm2", path, ge=0)
+                rk = ck.number(el, "speed_ratio", path)
+                if Jk is not None and rk is not None:
+                    rot[0].append(Jk)
+                    rot[1].append(rk)
+            if "m_kg" in el or "velocity_ratio_m" in el:
+                mk = ck.number(el, "m_kg", path, ge=0)
+                vk = ck.number(el, "velocity_ratio_m", path)
+                if mk is not None and vk is not None:
+                    trans[0].append(mk)
+                    trans[1].append(vk)
+            if not any(k in el for k in _ELEMENT_KEYS):
+                ck.add(path, "give J_kgm2 with speed_ratio (a rotating element) and/or m_kg "
+                             "with velocity_ratio_m (a translating one, v/ω in m)")
+        if elements and J is not None:
+            from .reduced import chain_reduce
+
+            try:
+                J = J + chain_reduce(rot[0], rot[1], trans[0], trans[1]).J_red_kgm2
+            except SpecError as exc:
+                ck.problems.extend(Problem("machine.element", p.message)
+                                   for p in exc.problems)
         wm = ck.number(mach, "omega_mean_rad_s", "machine", required=False, gt=0)
         period = ck.number(mach, "period_deg", "machine", required=False, default=360.0,
                            gt=0)

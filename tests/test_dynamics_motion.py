@@ -216,3 +216,33 @@ def test_bad_inputs():
         motor_steady_motion(m2, Motor(300.0, 100.0))
     with pytest.raises(SpecError, match="must not\\s+decrease"):
         PiecewiseLinear([0, 90, 45], [1, 2, 3], 360)
+
+
+def test_machine_elements_spec():
+    """[[machine.element]]: J_red = Σ J (ω_k/ω)² + Σ m (v/ω)² (eq. 11-10), the hoist's
+    J_e = J1 + J2 (z1/z2)² + (G/g)(D z1/(2 z2))² of Example 11-2."""
+    from crankdyn.resources import example_path
+    from dynamics.spec import load_dynamics_spec
+
+    job = load_dynamics_spec(example_path("hoist_machine.toml"))
+    J = 0.8 + 2.5 * (20 / 80) ** 2 + (10_000 / 9.81) * (0.5 * 20 / (2 * 80)) ** 2
+    assert np.allclose(job.model.J_kgm2, J, rtol=1e-7)
+    bad = {"machine": {"omega_mean_rad_s": 1.0, "element": [{"J_kgm2": -1, "speed_ratio": 1},
+                                                            {"bogus": 2}],
+                       "moment": [{"role": "resist", "phi_deg": [0], "M_Nm": [1]}]}}
+    with pytest.raises(SpecError) as e:
+        load_dynamics_spec(bad)
+    text = str(e.value)
+    assert "machine.element[0].J_kgm2" in text and "machine.element[1].bogus" in text
+
+
+def test_import_is_light():
+    """Importing the package pulls in neither matplotlib, openpyxl nor scipy."""
+    import subprocess
+    import sys
+
+    code = ("import sys, dynamics, dynamics.motion, dynamics.spec, dynamics.plots, "
+            "dynamics.report, dynamics.shaking; "
+            "print(sorted(m for m in ('matplotlib', 'openpyxl', 'scipy') if m in sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "[]"
