@@ -38,7 +38,7 @@ import numpy as np
 from ._base import Problem, SpecError
 
 __all__ = ["ReducedModel", "PiecewiseLinear", "machine_model", "linkage_model",
-           "engine_model", "chain_reduce", "ChainReduction"]
+           "engine_model", "chain_reduce", "ChainReduction", "braking_moment"]
 
 
 class PiecewiseLinear:
@@ -453,3 +453,36 @@ def chain_reduce(inertias_kgm2=(), ratios=(), masses_kg=(), velocity_ratios_m=()
     if not J > 0:
         raise SpecError(Problem("chain", f"reduced moment of inertia {J!r}; must be > 0"))
     return ChainReduction(float(J), float(M))
+
+
+def braking_moment(J_red_kgm2, omega0_rad_s, t_stop_s, M_other_Nm=0.0):
+    """Constant brake moment that stops a machine of constant reduced quantities from ω0 in
+    ``t_stop_s`` (differential form with J constant: J dω/dt = M_other − M_brake).
+
+    Parameters
+    ----------
+    J_red_kgm2 : float
+        Reduced moment of inertia at the braked shaft. [kg·m²]
+    omega0_rad_s : float
+        Initial speed of that shaft (> 0). [rad/s]
+    t_stop_s : float
+        Stopping time (> 0). [s]
+    M_other_Nm : float
+        Reduced moment of the other loads, + in the direction of motion (a lowered weight
+        helps the motion, a lifted one opposes it). [N·m]
+
+    Returns
+    -------
+    float
+        M_brake = J ω0 / t + M_other [N·m] (seed 001, Example 11-2, eq. 11-17).
+    """
+    probs = []
+    if not J_red_kgm2 > 0:
+        probs.append(Problem("J_red_kgm2", f"got {J_red_kgm2!r}; must be > 0"))
+    if not omega0_rad_s > 0:
+        probs.append(Problem("omega0_rad_s", f"got {omega0_rad_s!r}; must be > 0"))
+    if not t_stop_s > 0:
+        probs.append(Problem("t_stop_s", f"got {t_stop_s!r}; must be > 0"))
+    if probs:
+        raise SpecError(probs)
+    return J_red_kgm2 * omega0_rad_s / t_stop_s + M_other_Nm

@@ -7,7 +7,7 @@ import pytest
 
 from dynamics import MotionError
 from dynamics.motion import Motor, motor_startup, motor_steady_motion, size_flywheel, steady_motion
-from dynamics.reduced import PiecewiseLinear, chain_reduce, machine_model
+from dynamics.reduced import PiecewiseLinear, braking_moment, chain_reduce, machine_model
 from linkage.errors import SpecError
 
 RPM = math.pi / 30.0
@@ -162,7 +162,7 @@ def test_hoist_example_11_2():
         Mg = chain_reduce([J1], [1.0], forces_N=[-G if lifting else G], force_ratios_m=[iv]).M_red_Nm
         book = Je * 2 * V * z2 / (3 * D * z1) + (-1 if lifting else 1) * G * D * z1 / (2 * z2)
         # stop in exactly 3 s with constant deceleration: M_brake = Mg − Je·dω/dt
-        M_brake = Mg + Je * w1 / 3.0
+        M_brake = braking_moment(red.J_red_kgm2, w1, 3.0, Mg)
         assert M_brake == pytest.approx(book)
         t = np.linspace(0, 3, 301)
         w = w1 + (Mg - M_brake) / Je * t
