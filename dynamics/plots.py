@@ -88,17 +88,20 @@ def plot_wittenbauer(motion, ax=None, lang="en"):
     ax.plot(J, W, "k-", lw=1.4)
     # E0 + W = ½Jω²: the points of equal ω lie on the ray W = ½ω²J − E0 from the pole
     # (0, −E0); the rays of ω_max and ω_min touch the curve (drawn through those points)
-    jj = np.linspace(J.min() - 0.05 * np.ptp(J) - 1e-12, J.max() + 0.05 * np.ptp(J) + 1e-12, 2)
+    if np.ptp(J) < 1e-9 * max(J.max(), 1e-12):   # constant J: a vertical segment
+        lo, hi = J[0] * 0.98, J[0] * 1.02
+    else:
+        lo, hi = J.min() - 0.05 * np.ptp(J), J.max() + 0.05 * np.ptp(J)
+    jj = np.array([lo, hi])
     for w, ls, lab in ((motion.omega_max, (0, (5, 2)), L["wmax"]),
                        (motion.omega_min, (0, (1, 1.5)), L["wmin"])):
         i = int(np.argmin(np.abs(motion.table["omega_rad_s"].to_numpy() - w)))
         ax.plot(jj, W[i] + 0.5 * w * w * (jj - J[i]), color="0.4", ls=ls, lw=1.0, label=lab)
+    ax.set_xlim(lo, hi)
     ax.set_xlabel(L["J"])
     ax.set_ylabel(L["dE"])
     pad = 0.1 * max(np.ptp(W), 1e-9)
     ax.set_ylim(W.min() - pad, W.max() + pad)
-    if np.ptp(J) < 1e-9 * max(J.max(), 1e-12):
-        ax.set_xlim(J[0] * 0.98, J[0] * 1.02)
     ax.legend(loc="best", fontsize=8)
     ax.set_title(L["t_W"])
     ax.grid(True, lw=0.3)

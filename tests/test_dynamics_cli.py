@@ -32,6 +32,10 @@ def test_machine_example(tmp_path, lang, capsys):
         assert (out / f"{name}.png").stat().st_size > 5000
     text = capsys.readouterr().out
     assert "168.44" in text
+    strings = [c.value for w in wb.worksheets for row in w.iter_rows() for c in row
+               if isinstance(c.value, str)]
+    has_cyr = any(any("\u0400" <= ch <= "\u04ff" for ch in v) for v in strings)
+    assert has_cyr == (lang == "ru")
 
 
 def test_linkage_motor_example(tmp_path):
