@@ -246,3 +246,45 @@ def test_import_is_light():
             "print(sorted(m for m in ('matplotlib', 'openpyxl', 'scipy') if m in sys.modules))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "[]"
+
+
+from hypothesis import given, settings, strategies as st  # noqa: E402
+
+
+@st.composite
+def machines(draw):
+    """A random machine: variable J(φ) = J0 (1 + a sin²(kφ/2)) (exact dJ/dφ) and a random
+    stepped/linear resisting diagram."""
+    from dynamics.reduced import ReducedModel
+
+    n = draw(st.integers(2, 6))
+    cuts = sorted(draw(st.lists(st.floats(1.0, 359.0), min_size=n, max_size=n)))
+    xs = [0.0] + cuts + [360.0]
+    ys = draw(st.lists(st.floats(0.0, 2000.0), min_size=len(xs), max_size=len(xs)))
+    pl = PiecewiseLinear(xs, ys, 360.0)
+    J0 = draw(st.floats(0.05, 20.0))
+    a = draw(st.floats(0.0, 0.8))
+    k = draw(st.integers(1, 3))
+    phi = np.linspace(0, 2 * np.pi, 2881)
+    J = J0 * (1 + a * np.sin(k * phi / 2) ** 2)
+    dJ = J0 * a * k * np.sin(k * phi / 2) * np.cos(k * phi / 2)
+    z = 0 * phi
+    wm = draw(st.floats(5.0, 300.0))
+    return ReducedModel("m", phi, J, dJ, z, pl(phi), z, pl.integral(0.0, phi), 2 * np.pi,
+                        omega_nominal=wm)
+
+
+@settings(max_examples=40, deadline=None)
+@given(machines(), st.floats(0.005, 0.3))
+def test_random_machines(model, delta):
+    """Over random machines: the exact flywheel reaches δ; the energy equation holds at every
+    point (½Jω² − ½J0ω0² = W); ω_m is the asked one; a larger flywheel gives a smaller δ."""
+    f = size_flywheel(model, delta)
+    r = f.motion
+    assert r.delta == pytest.approx(delta, rel=1e-6) or (f.J_exact == 0 and r.delta <= delta)
+    t = r.table
+    E = t["E_J"].to_numpy()
+    assert np.allclose(E - E[0], t["W_J"], atol=1e-9 * max(E.max(), 1.0))
+    assert r.omega_mean == pytest.approx(model.omega_nominal, rel=1e-9)
+    r2 = steady_motion(model, J_flywheel=2 * f.J_exact + 1.0)
+    assert r2.delta < r.delta or r.delta == 0
