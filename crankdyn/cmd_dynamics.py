@@ -55,7 +55,7 @@ def run(args) -> int:
     tables = {"motion.csv": motion}
     if res["forces"] is not None:
         ensure_finite(res["forces"], "forces under the true motion")
-        tables["forces_true_motion.csv"] = res["forces"]
+        tables["forces_true_motion.csv"] = res["forces"]   # linkage or engine cylinder 1
     if res["startup"] is not None:
         ensure_finite(res["startup"].table, "start-up")
         tables["startup.csv"] = res["startup"].table

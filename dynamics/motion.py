@@ -41,7 +41,7 @@ from ._base import MotionError, Problem, SpecError
 
 __all__ = ["MotionResult", "steady_motion", "FlywheelResult", "size_flywheel",
            "motor_steady_motion", "motor_startup", "StartupResult", "check_delta",
-           "true_motion_forces"]
+           "true_motion_forces", "engine_true_motion_forces"]
 
 
 def _cumtrapz(y, x):
@@ -565,4 +565,56 @@ def true_motion_forces(model, motion: MotionResult):
         df[f"{c}_const"] = const[c]
     for name, f in (("", true), ("_const", const)):   # the crank bearing's load
         df[f"R12_N{name}"] = np.hypot(f["R12_x_N"], f["R12_y_N"])
+    return df
+
+
+def engine_true_motion_forces(model, motion: MotionResult):
+    """The engine's crank-pin forces of cylinder 1 under the true motion ω(α), ε(α),
+    beside those at the constant speed ω_m.
+
+    The engine's own routines: piston kinematics ``engine.kinematics.crank_slider`` at the
+    array ω(α) (exact j at that ω), plus the angular-acceleration term of the piston
+    acceleration, j = x''(α)·ω² + x'(α)·ε with x' = v/ω; ``inertia_force``,
+    ``crank_pin_forces`` (T, K, Mкр) and Kr.ш of the spec at ω(α); the gas force of the
+    force table.  The constant-speed columns (suffix ``_const``) go through the same code
+    with ω = ω_m, ε = 0, so the difference is the speed fluctuation alone (exact piston
+    acceleration in both, whatever the spec's ``acceleration``).
+
+    Returns
+    -------
+    pandas.DataFrame
+        ``alpha_deg, omega_rad_s, eps_rad_s2, j_m_s2, Pj_N, P_N, T_N, K_N, M_Nm, R_N``
+        and the same with ``_const``.
+    """
+    import dataclasses
+
+    import engine
+    import pandas as pd
+    from engine.forces import crank_pin_forces, inertia_force
+    from engine.kinematics import crank_slider
+
+    spec = model.source
+    a_deg = motion.table["phi_deg"].to_numpy()
+    alpha = np.radians(a_deg)
+    dPg = engine.force_table(spec, np.mod(a_deg, model.extra.get("cycle_deg", 720.0)))[
+        "dPg_N"].to_numpy()
+    w = motion.table["omega_rad_s"].to_numpy()
+    e = motion.table["eps_rad_s2"].to_numpy()
+
+    def run(omega, eps):
+        sp = dataclasses.replace(spec, omega=omega)
+        mech = crank_slider(alpha, spec.R, spec.L, omega)
+        j = mech.j + mech.v / omega * eps
+        Pj = inertia_force(spec.mj, j)
+        P = dPg + Pj
+        f = crank_pin_forces(mech, P, spec.L)
+        return {"j_m_s2": j, "Pj_N": Pj, "P_N": P, "T_N": f["T"], "K_N": f["K"],
+                "M_Nm": f["M"], "R_N": np.hypot(f["T"], f["K"] + sp.Kr)}
+
+    true = run(w, e)
+    const = run(np.full_like(w, motion.omega_mean), np.zeros_like(w))
+    df = pd.DataFrame({"alpha_deg": a_deg, "omega_rad_s": w, "eps_rad_s2": e})
+    for c in true:
+        df[c] = true[c]
+        df[f"{c}_const"] = const[c]
     return df

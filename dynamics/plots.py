@@ -18,7 +18,9 @@ _T = {
            "приведения", "t_s": "Разгон из состояния покоя", "wmax": "ωmax", "wmin": "ωmin",
            "wm": "ωср", "true": "при истинном движении", "const": "при ω = const",
            "t_F": "Уравновешивающий момент Mур", "Mur": "Mур, Н·м", "steady": "уст. режим",
-           "R12": "R12, Н", "t_R": "Реакция в опоре кривошипа R12"},
+           "R12": "R12, Н", "t_R": "Реакция в опоре кривошипа R12",
+           "Mkr": "Mкр, Н·м", "t_Mkr": "Крутящий момент цилиндра Mкр",
+           "Rpin": "Rшш, Н", "t_Rpin": "Нагрузка на шатунную шейку Rшш"},
     "en": {"phi": "φ [deg]", "J": "J_red [kg·m²]", "dJ": "dJ_red/dφ [kg·m²]", "Md": "M_d",
            "Mc": "M_c", "M": "M [N·m]", "dE": "ΔE [J]", "w": "ω [rad/s]", "t": "t [s]",
            "t_J": "Reduced moment of inertia", "t_M": "Reduced moments",
@@ -26,7 +28,9 @@ _T = {
            "t_s": "Start-up from rest", "wmax": "ω_max", "wmin": "ω_min", "wm": "ω_m",
            "true": "true motion", "const": "ω = const", "t_F": "Balancing (driving) moment",
            "Mur": "M_b [N·m]", "steady": "steady band", "R12": "R12 [N]",
-           "t_R": "Crank bearing reaction R12"},
+           "t_R": "Crank bearing reaction R12", "Mkr": "M [N·m]",
+           "t_Mkr": "Torque of cylinder 1", "Rpin": "R_pin [N]",
+           "t_Rpin": "Crank-pin load of cylinder 1"},
 }
 
 
@@ -147,14 +151,15 @@ def plot_true_forces(forces, column="M_drive_Nm", ax=None, lang="en"):
     """A force column of the core under the true motion against constant speed."""
     L = _T[lang]
     ax = _ax(ax)
-    x = forces["phi_deg"].to_numpy()
-    order = np.argsort(np.mod(x, 360.0))
-    xx = np.mod(x, 360.0)[order]
+    x = forces["phi_deg" if "phi_deg" in forces else "alpha_deg"].to_numpy()
+    order = np.argsort(np.mod(x, 360.0)) if "phi_deg" in forces else np.arange(len(x))
+    xx = (np.mod(x, 360.0) if "phi_deg" in forces else x)[order]
     ax.plot(xx, forces[column].to_numpy()[order], "k-", lw=1.5, label=L["true"])
     ax.plot(xx, forces[f"{column}_const"].to_numpy()[order], color="0.4", ls=(0, (5, 2)),
             lw=1.3, label=L["const"])
     ax.set_xlabel(L["phi"])
-    labels = {"M_drive_Nm": (L["Mur"], L["t_F"]), "R12_N": (L["R12"], L["t_R"])}
+    labels = {"M_drive_Nm": (L["Mur"], L["t_F"]), "R12_N": (L["R12"], L["t_R"]),
+              "M_Nm": (L["Mkr"], L["t_Mkr"]), "R_N": (L["Rpin"], L["t_Rpin"])}
     ylab, title = labels.get(column, (column, column))
     ax.set_ylabel(ylab)
     ax.set_title(title)
@@ -183,8 +188,9 @@ def dynamics_figures(result: dict, lang="en"):
     if result.get("forces") is not None:
         fig = Figure(figsize=(7.5, 7.4), layout="constrained")
         ax1, ax2 = fig.subplots(2, 1, sharex=True)
-        plot_true_forces(result["forces"], "M_drive_Nm", ax1, lang=lang)
-        plot_true_forces(result["forces"], "R12_N", ax2, lang=lang)
+        eng = "alpha_deg" in result["forces"]
+        plot_true_forces(result["forces"], "M_Nm" if eng else "M_drive_Nm", ax1, lang=lang)
+        plot_true_forces(result["forces"], "R_N" if eng else "R12_N", ax2, lang=lang)
         ax1.set_xlabel("")
         figs["forces"] = fig
     return figs

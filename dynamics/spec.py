@@ -257,8 +257,9 @@ def run_job(job: DynamicsJob):
         ``motion`` (MotionResult), ``flywheel`` (FlywheelResult or None), ``startup``
         (StartupResult or None), ``forces`` (DataFrame or None), ``model``.
     """
-    from .motion import (Motor, motor_startup, motor_steady_motion, size_flywheel,
-                         steady_motion, true_motion_forces)
+    from .motion import (Motor, engine_true_motion_forces, motor_startup,
+                         motor_steady_motion, size_flywheel, steady_motion,
+                         true_motion_forces)
 
     s, model = job.settings, job.model
     fly = startup = None
@@ -283,7 +284,11 @@ def run_job(job: DynamicsJob):
             motion = fly.motion
         else:
             motion = steady_motion(model, J_flywheel=s.flywheel or 0.0, driving=driving)
-    forces = true_motion_forces(model, motion) if job.kind == "linkage" else None
+    forces = None
+    if job.kind == "linkage":
+        forces = true_motion_forces(model, motion)
+    elif job.kind == "engine":
+        forces = engine_true_motion_forces(model, motion)
     return {"model": model, "motion": motion, "flywheel": fly, "startup": startup,
             "forces": forces}
 

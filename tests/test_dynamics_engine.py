@@ -45,3 +45,24 @@ def test_mean_torque_and_constant_resistance():
     assert m.J_kgm2[-1] - m.J_kgm2[0] == pytest.approx(0.0, abs=1e-12)
     assert np.sum(0.5 * (m.dJ_dphi_kgm2[1:] + m.dJ_dphi_kgm2[:-1]) * np.diff(m.phi)) == \
         pytest.approx(0.0, abs=1e-9)
+
+
+def test_true_motion_torque_virtual_power():
+    """One cylinder under the true motion: the engine's crank torque (gas + piston inertia
+    with the ε term) equals M_gas − (J_rec ε + ½ ω² dJ/dφ), J_rec = m_j (dx/dφ)² the part of
+    J_red the piston carries: the virtual-power balance with variable ω.  A huge flywheel
+    gives the constant-speed forces."""
+    from dynamics.motion import engine_true_motion_forces
+
+    spec = _spec("exact", 1)
+    m = engine_model(spec, steps=1440)
+    r = steady_motion(m, J_flywheel=0.05)
+    f = engine_true_motion_forces(m, r)
+    w, eps = r.table["omega_rad_s"].to_numpy(), r.table["eps_rad_s2"].to_numpy()
+    J_rec = m.J_kgm2 - (spec.m_rod_rot + (spec.m_crank_rot or 0.0)) * spec.R ** 2
+    expect = m.M_drive_Nm - (J_rec * eps + 0.5 * w * w * m.dJ_dphi_kgm2)
+    assert np.max(np.abs(f["M_Nm"] - expect)) < 1e-9 * np.max(np.abs(expect))
+    assert r.delta > 0.01   # a real fluctuation, so the test is not the trivial one
+    big = engine_true_motion_forces(m, steady_motion(m, J_flywheel=1e8))
+    for c in ("T_N", "K_N", "R_N"):
+        assert np.max(np.abs(big[c] - big[f"{c}_const"])) < 1e-5 * np.max(np.abs(big[c]))
