@@ -37,7 +37,7 @@ def wall(cmd, repeat=3):
 
 def main():
     import linkage
-    from crankdyn.resources import example_path
+    from crankbase.resources import example_path
     from dynamics import (Motor, balance_rotor, linkage_model, motor_steady_motion,
                           size_flywheel, steady_motion)
 

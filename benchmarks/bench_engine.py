@@ -37,12 +37,13 @@ def wall(cmd, repeat=5):
 
 def main():
     import engine
-    from crankdyn.resources import example_path
+    from crankbase.resources import example_path
 
+    fine = engine.TableSettings(step_deg=0.1)
     for name in ("petrol_vaz2106.toml", "diesel_d240.toml"):
-        spec = engine.load_spec(example_path(name)).with_step(0.1)
-        rows = len(engine.force_table(spec))
-        best, med = best_of(lambda: engine.force_table(spec))
+        spec = engine.load_spec(example_path(name))
+        rows = len(engine.force_table(spec, settings=fine))
+        best, med = best_of(lambda: engine.force_table(spec, settings=fine))
         print(f"force_table {name:22s} 0.1° step, {rows} rows: best {best * 1e3:6.2f} ms, "
               f"median {med * 1e3:6.2f} ms  (target < 10 ms)")
 

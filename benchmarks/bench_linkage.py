@@ -5,18 +5,16 @@ positions, on one core, beside pylinkage.
 
 Times (best of several repeats, ``time.perf_counter``, BLAS/OpenMP pinned to one thread):
 
-* kernel: the vectorised kernel ``analyze`` runs (:class:`linkage.kernel.Kernel`, in
-  cache-sized chunks of ``linkage.analysis.CHUNK`` positions) into preallocated column
-  blocks: every kinematics and force column of the ratchet example (crank-rocker with
-  masses, inertias, an extra point and a stroke-limited resistance) -- the issue's
-  "kinematics plus forces" (``course_tables=False``), and again with the course tables'
-  magnitudes and inertia loads (:mod:`linkage.derived`, the default of ``analyze``);
-* reference: all columns through ``solve_columns`` (the group routines of
-  :mod:`linkage.groups`, complex arrays), for comparison;
-* analyze: the public ``linkage.analyze(spec, crank_angles_deg=...)``, including the
-  extremes, the summary and the two pandas DataFrames (fresh memory every call), with
-  ``course_tables=False`` and with the default;
-* the same kernel and ``analyze`` for the bundled crank-slider (the press example);
+* analyze: the public ``linkage.analyze(spec, crank_angles_deg=...)`` on the ratchet
+  example (crank-rocker with masses, inertias, an extra point and a stroke- and
+  span-limited resistance), including the extremes, the summary and the two pandas
+  DataFrames (fresh memory every call): with ``course_tables=False`` (every kinematics
+  and force column: the issue's "kinematics plus forces") and with the default (plus
+  the course tables' magnitudes and inertia loads of :mod:`linkage.derived`);
+* blocks: the same group routines of :mod:`linkage.groups` evaluated in chunks of
+  ``linkage.analysis.CHUNK`` positions into preallocated column blocks (what ``analyze``
+  runs, without the DataFrames and the extremes);
+* the same for the bundled crank-slider (the press example);
 * pylinkage (optional: ``pip install pylinkage``, the ``bench`` extra; skipped when it is
   not installed): the same four-bar and the same crank positions.  pylinkage computes
   kinematics only -- positions, velocities and accelerations of the joints A and B, by its
@@ -62,11 +60,11 @@ def crank_angles(n, phi0=0.3):
 
 
 def core_timings(example, n, repeat):
-    """Kernel, reference and analyze on one bundled example; returns {label: seconds}."""
+    """The group routines into column blocks, and ``analyze``, on one bundled example;
+    returns (spec, phi, analyze result, {label: (positions, seconds)})."""
     import linkage
     from linkage import analysis as an
-    from linkage import kernel as kernel_mod
-    from crankdyn.resources import example_path
+    from crankbase.resources import example_path
 
     spec = linkage.load_spec(example_path(example))
     mech = an.build_mechanism(spec)
@@ -74,46 +72,21 @@ def core_timings(example, n, repeat):
     ext = mech.extremes(rot, spec.working_stroke)
     phi = crank_angles(n)
     deg = np.degrees(phi)
-    def kernel_runner(course_tables):
-        nk = len(an.kinematics_columns(spec, course_tables)) - 1
-        nf = len(an.force_columns(spec, course_tables)) - 1
-        kb, fb = np.empty((nk, n)), np.empty((nf, n))
-        kernel = kernel_mod.Kernel(spec, mech, ext, min(n, an.CHUNK), course_tables)
-        return kb, fb, lambda: kernel_mod.fill_blocks(kernel, phi, kb, fb)
 
-    kb_lean, fb_lean, run_kernel_lean = kernel_runner(False)
-    del kb_lean, fb_lean
-    kblock, fblock, run_kernel = kernel_runner(True)
-
-    n_ref = min(n, 200_000)
-    kref = {c: np.empty(n_ref) for c in an.kinematics_columns(spec) if c != "position"}
-    fref = {c: np.empty(n_ref) for c in an.force_columns(spec) if c != "position"}
-
-    def run_reference():
-        with np.errstate(divide="ignore", invalid="ignore"):
-            for a in range(0, n_ref, an.CHUNK):
-                rows = slice(a, min(n_ref, a + an.CHUNK))
-                an.solve_columns(spec, phi[rows], mech, ext, kref, fref, rows)
+    def blocks_runner(course_tables):
+        tables = an._Tables(spec, mech, ext, course_tables, min(n, an.CHUNK))
+        kb, fb = np.empty((len(tables.kcols), n)), np.empty((len(tables.fcols), n))
+        return lambda: tables.fill(phi, kb, fb)
 
     def run_analyze(course_tables=True):
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             return linkage.analyze(spec, crank_angles_deg=deg, course_tables=course_tables)
 
-    out = {"kernel-lean": (n, best_of(run_kernel_lean, repeat)),
-           "kernel": (n, best_of(run_kernel, repeat)),
-           "reference": (n_ref, best_of(run_reference, max(2, repeat // 2))),
+    out = {"blocks-lean": (n, best_of(blocks_runner(False), repeat)),
+           "blocks": (n, best_of(blocks_runner(True), repeat)),
            "analyze-lean": (n, best_of(lambda: run_analyze(False), repeat)),
            "analyze": (n, best_of(run_analyze, repeat))}
-    # the kernel computes what the group routines compute: largest deviation over the
-    # reference's positions, relative to the largest value of the same column
-    dev = 0.0
-    for block, ref in ((kblock, kref), (fblock, fref)):
-        for row, v in zip(block, ref.values()):
-            dev = max(dev, float(np.max(np.abs(row[:n_ref] - v)) / max(np.max(np.abs(v)),
-                                                                       1e-300)))
-    print(f"{example}: kernel vs reference (group routines), {n_ref:,d} positions: "
-          f"max deviation {dev:.1e} of the column's largest value")
     res = run_analyze()
     return spec, phi, res, out
 
@@ -203,18 +176,16 @@ def main(argv=None):
     n = args.positions
 
     from linkage import analysis as an
-    from linkage import kernel as kernel_mod
     print(f"Python {platform.python_version()}, numpy {np.__version__}, "
           f"{os.cpu_count()} CPU(s) available, one thread used; CHUNK = {an.CHUNK}")
     rows = []
     spec, phi, res, rocker = core_timings("ratchet.toml", n, args.repeat)
     _, _, _, slider = core_timings("press.toml", n, args.repeat)
     for mech, timings in (("crank-rocker (ratchet)", rocker), ("crank-slider (press)", slider)):
-        for key, what in (("kernel-lean", "kernel, kinematics + forces"),
-                          ("kernel", "kernel, + course-table columns"),
-                          ("reference", "reference (group routines), + course tables"),
-                          ("analyze-lean", "analyze(course_tables=False), DataFrames"),
-                          ("analyze", "analyze (default), DataFrames")):
+        for key, what in (("analyze-lean", "analyze(course_tables=False), DataFrames"),
+                          ("analyze", "analyze (default), DataFrames"),
+                          ("blocks-lean", "group routines into blocks, kin. + forces"),
+                          ("blocks", "group routines into blocks, + course tables")):
             npos, t = timings[key]
             rows.append((mech, what, npos, t))
 
@@ -243,8 +214,8 @@ def main(argv=None):
         if pl is not None and mech.startswith("crank-rocker"):
             line += f" {(npos / t) * t_pl:12.0f}"
         print(line)
-    print("\ntargets (issue 2, kinematics + forces): kernel ≥ 5 M/s, analyze ≥ 2 M/s, "
-          "kernel ≥ 100 × pylinkage")
+    print("\ntargets (issue 9, kinematics + forces, one core, 1,000,000 positions): "
+          "analyze(course_tables=False) ≥ 5 M/s, analyze ≥ 2 M/s, ≥ 100 × pylinkage")
 
 
 if __name__ == "__main__":

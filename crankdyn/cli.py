@@ -5,8 +5,9 @@ Each subcommand lives in its own module (``crankdyn.cmd_<name>``) exposing
 the job and returns an exit status.  Heavy libraries (numpy, pandas, matplotlib,
 openpyxl) are imported inside ``func`` only, so ``crankdyn --help`` stays fast.
 
-Bad input is reported one problem per line on stderr, without a traceback, with exit
-status 2; no output file is written in that case.
+Bad input (a :class:`crankbase.errors.CrankdynError`) is reported one problem per line on
+stderr, without a traceback, with exit status 2; no output file is written in that case.
+Any other exception is a bug and shows with its traceback.
 """
 from __future__ import annotations
 
@@ -45,11 +46,12 @@ def main(argv=None) -> int:
     if not getattr(args, "func", None):
         parser.print_help()
         return 2
+    from crankbase.errors import CrankdynError
+
     try:
         return int(args.func(args) or 0)
-    except ValueError as exc:  # every crankdyn input error is a ValueError subclass
-        lines = exc.lines() if hasattr(exc, "lines") else str(exc).splitlines() or [repr(exc)]
-        for line in lines:
+    except CrankdynError as exc:  # the project's own errors only: anything else is a bug
+        for line in exc.lines() or [repr(exc)]:
             print(f"crankdyn {args.command}: error: {line}", file=sys.stderr)
         return 2
     except BrokenPipeError:  # e.g. `crankdyn ... | head`

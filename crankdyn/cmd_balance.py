@@ -37,14 +37,14 @@ def add_parser(subparsers):
 def run(args) -> int:
     from pathlib import Path
 
-    from linkage.errors import SpecError
+    from crankbase.errors import SpecError
 
     spec_path = Path(args.spec)
     out = Path(args.output)
     if out.exists() and not out.is_dir():
         raise SpecError(f"-o: {out} exists and is not a folder")
 
-    from linkage.validation import read_toml
+    from crankbase.validation import read_toml
 
     data, _ = read_toml(spec_path)
     if "mechanism" in data and "rotor" not in data:
@@ -54,7 +54,7 @@ def run(args) -> int:
 
     from dynamics.rotor import plot_mr_polygon, rotor_balance
 
-    from .io import check_not_input, ensure_finite, staged_output, write_csv
+    from crankbase.output import check_not_input, ensure_finite, staged_output, write_csv
 
     res = rotor_balance(spec_path)
     cols = ["plane", "z_mm", "mr_gmm", "angle_deg"]
@@ -95,7 +95,7 @@ def _run_linkage(args, spec_path, out):
 
     from dynamics.shaking import mechanism_balance, plot_shaking_force, plot_shaking_locus
 
-    from .io import check_not_input, ensure_finite, staged_output, write_csv
+    from crankbase.output import check_not_input, ensure_finite, staged_output, write_csv
 
     res = mechanism_balance(spec_path)
     b, a = res.before.table, res.after.table

@@ -35,7 +35,7 @@ def run(args) -> int:
     import re
     from pathlib import Path
 
-    from linkage.errors import SpecError
+    from crankbase.errors import SpecError
 
     spec_path = Path(args.spec)
     out = Path(args.output)
@@ -46,7 +46,8 @@ def run(args) -> int:
     from dynamics.report import build_workbook, summary_rows
     from dynamics.spec import load_dynamics_spec, run_job
 
-    from .io import check_not_input, ensure_finite, full_precision_xlsx, staged_output, write_csv
+    from crankbase.output import (check_not_input, ensure_finite, full_precision_xlsx,
+                                  staged_output, write_csv)
 
     job = load_dynamics_spec(spec_path)
     res = run_job(job)

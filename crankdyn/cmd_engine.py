@@ -35,9 +35,9 @@ def add_parser(subparsers):
 
 
 def _example_path(name):
-    from linkage.errors import SpecError
+    from crankbase.errors import SpecError
 
-    from .resources import example_path
+    from crankbase.resources import example_path
 
     stems = {f[:-5]: f for f in EXAMPLES.values()}
     stem = name[:-5] if name.endswith(".toml") else name
@@ -48,17 +48,10 @@ def _example_path(name):
     return example_path(fname)
 
 
-def _safe_name(name):
-    import re
-
-    safe = re.sub(r"[^\w.-]+", "_", name).strip("._")
-    return safe or "engine"
-
-
 def run(args) -> int:
     from pathlib import Path
 
-    from linkage.errors import SpecError
+    from crankbase.errors import SpecError
 
     if args.spec and args.example:
         raise SpecError("give either SPEC.toml or --example, not both")
@@ -69,29 +62,38 @@ def run(args) -> int:
     if out.exists() and not out.is_dir():
         raise SpecError(f"-o: {out} exists and is not a folder")
 
+    import math
+    from dataclasses import replace
+
     import engine
-    from engine.plots import PLOT_NAMES, all_figures, save_figure
+    from engine.plots import PLOT_NAMES, figures
     from engine.report import build_workbook, save_workbook
 
-    from .io import check_not_input, ensure_finite, staged_output, write_csv
+    from crankbase.errors import Problem
+    from crankbase.output import (check_not_input, ensure_finite, safe_name, save_figure,
+                                  staged_output, write_csv)
 
     # 1. validate and compute everything
-    spec = engine.load_spec(spec_path)
+    study = engine.load(spec_path)
+    spec, settings = study.spec, study.settings
     if args.step is not None:
-        spec = spec.with_step(args.step)
-    table = engine.force_table(spec)
-    fine = engine.force_table(spec, engine.fine_angles(spec))
+        if not (math.isfinite(args.step) and 0 < args.step <= spec.cycle_deg):
+            raise SpecError(Problem("--step", f"got {args.step!r}; must be > 0 and "
+                                              f"<= {spec.cycle_deg:g}"))
+        settings = replace(settings, step_deg=float(args.step))
+    result = engine.analyze(spec, settings)
+    table = result.table
     ensure_finite(table, "force table")
-    ensure_finite(fine, "force table (plot grid)")
-    summary = engine.summarize(fine, spec)
+    ensure_finite(result.curves, "force table (plot grid)")
+    summary = result.summary
     csv_path = out / "forces.csv"
-    xlsx_path = out / f"{_safe_name(spec.name)}.xlsx"
+    xlsx_path = out / f"{safe_name(spec.name, 'engine')}.xlsx"
     stems = [out / name for name in PLOT_NAMES]
     outputs = [csv_path, xlsx_path] + [s.with_suffix(f".{e}") for s in stems
                                        for e in ("png", "svg")]
     check_not_input(outputs, [spec_path, spec.pressure_file])
-    wb = build_workbook(table, summary, spec, args.lang)
-    figs = all_figures(fine, spec, summary, args.lang)
+    wb = build_workbook(result, args.lang)
+    figs = figures(result, args.lang)
 
     # 2. write: every file into a staging folder, moved into DIR only when all are done
     with staged_output(out, inputs=[spec_path, spec.pressure_file]) as stage:
@@ -101,20 +103,20 @@ def run(args) -> int:
             save_figure(figs[stem.name], stage / stem.name)
 
     # 3. terminal summary
-    ext = summary["extremes"]
     ru = args.lang == "ru"
-    pmax, apmax = summary["p_max_MPa"], summary["alpha_p_max_deg"]
+    P, T, R = summary.P_N, summary.T_N, summary.R_N
     lines = [
         f"{spec.name}: {spec.strokes}-stroke, D x S = {spec.bore * 1e3:g} x "
         f"{spec.stroke * 1e3:g} mm, lambda = {spec.lam:.4f}, n = {spec.speed_rpm:g} rpm, "
         f"acceleration {spec.acceleration}",
-        f"  peak gas pressure  {pmax:10.3f} MPa  at alpha = {apmax:g} deg;  "
-        f"indicated mean pressure pi = {summary['pi_MPa']:.4f} MPa",
-        f"  P max              {ext['P_N'][0]:10.0f} N    at alpha = {ext['P_N'][1]:g} deg",
-        f"  T max              {ext['T_N'][0]:10.0f} N    at alpha = {ext['T_N'][1]:g} deg",
-        f"  mean torque        {summary['M_mean_Nm']:10.2f} N*m  (one cylinder)",
-        f"  R_crank-pin max    {ext['R_N'][0]:10.0f} N    at alpha = {ext['R_N'][1]:g} deg;"
-        f"  mean {summary['R_mean_N']:.0f} N;  chi = {summary['chi']:.3f}",
+        f"  peak gas pressure  {summary.p_max_MPa:10.3f} MPa  at alpha = "
+        f"{summary.alpha_p_max_deg:g} deg;  indicated mean pressure pi = "
+        f"{summary.pi_MPa:.4f} MPa",
+        f"  P max              {P.max:10.0f} N    at alpha = {P.alpha_max_deg:g} deg",
+        f"  T max              {T.max:10.0f} N    at alpha = {T.alpha_max_deg:g} deg",
+        f"  mean torque        {summary.M_mean_Nm:10.2f} N*m  (one cylinder)",
+        f"  R_crank-pin max    {R.max:10.0f} N    at alpha = {R.alpha_max_deg:g} deg;"
+        f"  mean {summary.R_mean_N:.0f} N;  chi = {summary.chi:.3f}",
         f"wrote {csv_path} ({len(table)} rows), {xlsx_path}, "
         f"{len(stems)} plots (PNG, SVG) in {out}" + (" [ru]" if ru else " [en]"),
     ]

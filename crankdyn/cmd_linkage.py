@@ -7,7 +7,6 @@ into place only when every one of them is complete.
 """
 from __future__ import annotations
 
-import re
 import sys
 
 EXAMPLE = "ratchet.toml"
@@ -30,22 +29,18 @@ def add_parser(sub):
     return p
 
 
-def _safe_name(name: str) -> str:
-    return re.sub(r"[^A-Za-z0-9_.-]+", "_", name).strip("._") or "linkage"
-
-
 def run(args) -> int:
     import warnings
 
     import linkage
-    from crankdyn.io import staged_output
+    from crankbase.output import safe_name, save_figure, staged_output
     from linkage.analysis import SingularPositionWarning
-    from linkage.errors import SpecError
+    from crankbase.errors import SpecError
     from linkage.report import summary_lines, write_csvs, write_workbook
     from pandas import isna as pd_isna
 
     if args.example:
-        from crankdyn.resources import example_path
+        from crankbase.resources import example_path
         spec_path = example_path(args.example if args.example.endswith(".toml")
                                  else args.example + ".toml")
     else:
@@ -63,9 +58,9 @@ def run(args) -> int:
         figures = all_figures(result, full)
     with staged_output(args.output, inputs=[spec_path]) as stage:
         write_csvs(result, stage)
-        write_workbook(result, stage / f"{_safe_name(spec.name)}.xlsx")
+        write_workbook(result, stage / f"{safe_name(spec.name, 'linkage')}.xlsx")
         for stem, fig in figures.items():
-            fig.savefig(stage / f"{stem}.png")
+            save_figure(fig, stage / stem, formats=("png",), dpi=120)
     for w in caught:
         print(f"crankdyn linkage: warning: {w.message}", file=sys.stderr)
     statics = "; statics, ω = 0" if spec.omega == 0 else ""

@@ -13,7 +13,6 @@ numpy, pandas, matplotlib and openpyxl are imported inside :func:`run` only.
 from __future__ import annotations
 
 import math
-import re
 
 MODES = {
     frozenset(): "region",
@@ -119,7 +118,7 @@ ARG_OPTION = {"l1": "--l1", "l2": "--l2", "l3": "--l3", "mu_min_deg": "--mu-min"
 
 def _as_options(exc):
     """The same error with each problem's key path written as the CLI options."""
-    from linkage.errors import Problem, SpecError
+    from crankbase.errors import Problem, SpecError
 
     problems = []
     for p in getattr(exc, "problems", []):
@@ -128,18 +127,14 @@ def _as_options(exc):
     return SpecError(problems) if problems else exc
 
 
-def _safe_name(name: str) -> str:
-    return re.sub(r"[^A-Za-z0-9_.-]+", "_", name).strip("._") or "kkm"
-
-
 def run(args) -> int:
     import numpy as np
     import pandas as pd
 
-    from crankdyn.io import ensure_finite, staged_output, write_csv
+    from crankbase.output import ensure_finite, safe_name, save_figure, staged_output, write_csv
     from linkage import synthesis as syn
     from linkage import synthesis_report as rep
-    from linkage.errors import SpecError
+    from crankbase.errors import SpecError
 
     v, mode, problems = _validate(args)
     if problems:
@@ -203,7 +198,7 @@ def run(args) -> int:
             write_csv(mu_turn, stage / "transmission_angle.csv")
             written += ["mechanism.csv", "transmission_angle.csv"]
         if spec is not None:
-            fname = f"{_safe_name(spec_name)}.toml"
+            fname = f"{safe_name(spec_name, 'kkm')}.toml"
             header = (f"ККМ-{phi0:g}°: crank-rocker with μ = 90° at φ = {phi0:g}° from the "
                       f"line of centres (ground along +x)\n"
                       f"written by crankdyn synth; λ1 = {design.l1!r}, λ2 = {design.l2!r}, "
@@ -211,11 +206,9 @@ def run(args) -> int:
                       f"massless links, no loads: add [links.*] and [[load]] for forces")
             rep.write_toml(spec, stage / fname, header)
             written.append(fname)
-        from linkage.synthesis_plots import save_figure
         for stem, fig in figures.items():
-            for ext in ("png", "svg"):
-                save_figure(fig, stage / f"{stem}.{ext}")
-                written.append(f"{stem}.{ext}")
+            save_figure(fig, stage / stem, dpi=150, tight=True)
+            written.extend(f"{stem}.{ext}" for ext in ("png", "svg"))
 
     reg = region
     print(f"ККМ-{phi0:g}°: region of existence 0 < λ1 ≤ {reg.l1_max:.4f}, point d = "

@@ -1,8 +1,7 @@
-"""The project's error and spec-validation layer, imported in this one place for the whole
-:mod:`dynamics` package (the base layer is moving to ``crankbase``; only these lines change
-at the merge)."""
-from linkage.errors import CrankdynError, Problem, SpecError  # noqa: F401
-from linkage.validation import Checker, read_toml  # noqa: F401
+"""The project's error and spec-validation layer (:mod:`crankbase`), imported in this one
+place for the whole :mod:`dynamics` package."""
+from crankbase.errors import CrankdynError, Problem, SpecError  # noqa: F401
+from crankbase.validation import Checker, read_toml  # noqa: F401
 
 __all__ = ["CrankdynError", "Problem", "SpecError", "Checker", "read_toml",
            "MotionError"]

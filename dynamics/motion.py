@@ -41,7 +41,7 @@ from ._base import MotionError, Problem, SpecError
 
 __all__ = ["MotionResult", "steady_motion", "FlywheelResult", "size_flywheel",
            "motor_steady_motion", "motor_startup", "StartupResult", "check_delta",
-           "true_motion_forces", "engine_true_motion_forces"]
+           "linkage_forces", "true_motion_forces", "engine_true_motion_forces"]
 
 
 def _cumtrapz(y, x):
@@ -505,6 +505,46 @@ def motor_startup(model, motor: Motor, *, J_flywheel=0.0, steady: MotionResult |
 # --------------------------------------------------------------------------- kinetostatics
 
 
+def linkage_forces(spec, phi, omega, eps, mech=None, ext=None):
+    """The core's kinetostatics at crank angles ``phi`` [rad] with the crank's ω and ε given
+    per position (arrays or scalars, signed, + ccw).
+
+    The same steps as the core's table (``linkage.analysis``): kinematics driver → dyad
+    (``mech.kinematics``), the external loads by the core's rule
+    (:func:`linkage.loads.external_loads`, its stroke cycle from the spec's constant ω),
+    each link's wrench with weight and d'Alembert inertia (:func:`linkage.groups.link_wrench`),
+    then dyad → driver (``mech.reactions``).
+
+    Returns
+    -------
+    dict of ndarray
+        ``R12_x_N, R12_y_N, R23_x_N, R23_y_N, R43_x_N, R43_y_N, R14_x_N, R14_y_N,
+        M_drive_Nm`` (+ ``M14_Nm`` for a slider), as the core's columns of the same names.
+    """
+    from linkage import groups as g
+    from linkage.analysis import build_mechanism
+    from linkage.loads import external_loads, stroke_cycle
+
+    mech = mech or build_mechanism(spec)
+    kin = mech.kinematics(phi, omega, eps)
+    forces, moments, _ = external_loads(spec, mech, kin, stroke_cycle(mech, spec, ext))
+    W = {}
+    for lname in spec.link_names:
+        ls = spec.links[lname]
+        W[lname] = g.link_wrench(kin["links"][lname], ls.mass, ls.inertia, ls.cg,
+                                 spec.gravity, forces[lname], moments[lname])
+    r, drv = mech.reactions(kin, W)
+    R14 = r.RC if spec.kind == "crank-rocker" else r.RG
+    out = {}
+    for name, v in (("R12", drv.R12), ("R23", r.RA), ("R43", r.RB), ("R14", R14)):
+        out[f"{name}_x_N"] = np.broadcast_to(v.real, np.shape(phi)).astype(float)
+        out[f"{name}_y_N"] = np.broadcast_to(v.imag, np.shape(phi)).astype(float)
+    out["M_drive_Nm"] = np.broadcast_to(drv.M_drive, np.shape(phi)).astype(float)
+    if spec.kind != "crank-rocker":
+        out["M14_Nm"] = np.broadcast_to(r.MG, np.shape(phi)).astype(float)
+    return out
+
+
 def true_motion_forces(model, motion: MotionResult):
     """The core's force analysis re-run under the true motion ω(φ), ε(φ) of the crank,
     beside the constant-speed one (at ω_m, ε = 0).
@@ -519,48 +559,40 @@ def true_motion_forces(model, motion: MotionResult):
     Returns
     -------
     pandas.DataFrame
-        ``phi_deg``, ``omega_rad_s``, ``eps_rad_s2`` and, for every force column of the
-        core (``R12_x_N`` … ``M_drive_Nm``), the value under the true motion and the
-        constant-speed value with the suffix ``_const``; also ``R12_N`` (and
-        ``R12_N_const``), the magnitude of the crank bearing's reaction.  ``M_drive_Nm`` is the core's balancing
-        moment on the crank (+ counter-clockwise, as in :mod:`linkage`) without the
-        flywheel: under the true motion it equals ``rotation·(M_d − J_F·ε)``.
+        ``phi_deg``, ``omega_rad_s``, ``eps_rad_s2`` and, for every reaction of the core
+        (``R12_x_N`` … ``R14_y_N``, ``M_drive_Nm``), the value under the true motion and
+        the constant-speed value with the suffix ``_const``; also ``R12_N`` (and
+        ``R12_N_const``), the magnitude of the crank bearing's reaction.  ``M_drive_Nm``
+        is the core's balancing moment on the crank (+ counter-clockwise, as in
+        :mod:`linkage`) without the flywheel: under the true motion it equals
+        ``rotation·(M_d − J_F·ε)``.
 
     Notes
     -----
-    ``linkage.analysis.solve_columns`` with the spec's ω and ε replaced by the arrays
-    ω(φ), ε(φ) (the group routines take the driver's ω and ε per position).
+    :func:`linkage_forces` (the core's routines) with the crank's ω and ε as the arrays
+    ω(φ), ε(φ): the group routines take the driver's ω and ε per position.
     """
     import dataclasses
 
     import pandas as pd
-    from linkage.analysis import build_mechanism, solve_columns
-    from linkage.columns import force_columns
+    from linkage.analysis import build_mechanism
 
-    spec = model.source
-    mech = build_mechanism(spec)
     from .reduced import stroke_extremes
 
-    ext = stroke_extremes(spec, mech)
+    spec = model.source
     s = model.rotation
+    # the resistance rule's cycle (at-rest threshold) at the mean speed
+    spec_m = dataclasses.replace(spec, omega=float(s * motion.omega_mean), epsilon=0.0)
+    mech = build_mechanism(spec_m)
+    ext = stroke_extremes(spec_m, mech)
     phi = np.radians(motion.table["phi_deg"].to_numpy())
     w = motion.table["omega_rad_s"].to_numpy()
     e = motion.table["eps_rad_s2"].to_numpy()
-    cols = [c for c in force_columns(spec, course_tables=False) if c != "position"]
-
-    def run(omega, eps):
-        sp = dataclasses.replace(spec, omega=omega, epsilon=eps)
-        out = {c: np.empty(len(phi)) for c in cols}
-        _, f = solve_columns(sp, phi, mech, ext, out_force=out)
-        return f
-
-    true = run(s * w, s * e)
-    const = run(float(s * motion.omega_mean), 0.0)
+    true = linkage_forces(spec_m, phi, s * w, s * e, mech, ext)
+    const = linkage_forces(spec_m, phi, spec_m.omega, 0.0, mech, ext)
     df = pd.DataFrame({"phi_deg": motion.table["phi_deg"].to_numpy(),
                        "omega_rad_s": w, "eps_rad_s2": e})
-    for c in cols:
-        if c == "phi_deg":
-            continue
+    for c in true:
         df[c] = true[c]
         df[f"{c}_const"] = const[c]
     for name, f in (("", true), ("_const", const)):   # the crank bearing's load
@@ -575,7 +607,7 @@ def engine_true_motion_forces(model, motion: MotionResult):
     The engine's own routines: piston kinematics ``engine.kinematics.crank_slider`` at the
     array ω(α) (exact j at that ω), plus the angular-acceleration term of the piston
     acceleration, j = x''(α)·ω² + x'(α)·ε with x' = v/ω; ``inertia_force``,
-    ``crank_pin_forces`` (T, K, Mкр) and Kr.ш of the spec at ω(α); the gas force of the
+    ``crank_pin_forces`` (T, K, Mкр) and Kr.ш of the spec scaled to ω(α)²; the gas force of the
     force table.  The constant-speed columns (suffix ``_const``) go through the same code
     with ω = ω_m, ε = 0, so the difference is the speed fluctuation alone (exact piston
     acceleration in both, whatever the spec's ``acceleration``).
@@ -586,30 +618,26 @@ def engine_true_motion_forces(model, motion: MotionResult):
         ``alpha_deg, omega_rad_s, eps_rad_s2, j_m_s2, Pj_N, P_N, T_N, K_N, M_Nm, R_N``
         and the same with ``_const``.
     """
-    import dataclasses
-
     import engine
     import pandas as pd
-    from engine.forces import crank_pin_forces, inertia_force
-    from engine.kinematics import crank_slider
+    from engine.forces import inertia_force
 
     spec = model.source
     a_deg = motion.table["phi_deg"].to_numpy()
     alpha = np.radians(a_deg)
-    dPg = engine.force_table(spec, np.mod(a_deg, model.extra.get("cycle_deg", 720.0)))[
-        "dPg_N"].to_numpy()
+    dPg = engine.force_table(spec, a_deg)["dPg_N"].to_numpy()
     w = motion.table["omega_rad_s"].to_numpy()
     e = motion.table["eps_rad_s2"].to_numpy()
 
     def run(omega, eps):
-        sp = dataclasses.replace(spec, omega=omega)
-        mech = crank_slider(alpha, spec.R, spec.L, omega)
+        mech = engine.crank_slider(alpha, spec.R, spec.L, omega, offset=spec.pin_offset)
         j = mech.j + mech.v / omega * eps
         Pj = inertia_force(spec.mj, j)
         P = dPg + Pj
-        f = crank_pin_forces(mech, P, spec.L)
+        f = engine.crank_pin_forces(mech, P, spec.L)
+        Kr = spec.Kr * (omega / spec.omega) ** 2        # Kr.ш ∝ ω²
         return {"j_m_s2": j, "Pj_N": Pj, "P_N": P, "T_N": f["T"], "K_N": f["K"],
-                "M_Nm": f["M"], "R_N": np.hypot(f["T"], f["K"] + sp.Kr)}
+                "M_Nm": f["M"], "R_N": np.hypot(f["T"], f["K"] + Kr)}
 
     true = run(w, e)
     const = run(np.full_like(w, motion.omega_mean), np.zeros_like(w))

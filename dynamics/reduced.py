@@ -256,37 +256,39 @@ def reduced_inertia(spec, kin):
     """
     from linkage.groups import dot
 
-    J = 0.0
-    dJ = 0.0
+    zero = 0.0 * np.asarray(kin["A"].z.real, float)
+    J = zero
+    dJ = zero
     for lname in spec.link_names:
         ls = spec.links[lname]
         link = kin["links"][lname]
         S = link.point(ls.cg)
         J = J + ls.mass * dot(S.v, S.v) + ls.inertia * link.omega ** 2
         dJ = dJ + 2 * ls.mass * dot(S.v, S.a) + 2 * ls.inertia * link.omega * link.eps
-    return J + 0 * kin["A"].z.real, dJ + 0 * kin["A"].z.real
+    return J, dJ
 
 
 def external_power(spec, mech, kin, ext):
-    """Power [W] of the linkage's external loads (the core's own load model: forces,
-    moments, useful resistance by stroke and span) and of the weights, at the kinematics
-    ``kin`` (unit crank speed: then it is the reduced moment of those loads, + helping)."""
-    from linkage.analysis import _external_loads
+    """Power [W] of the linkage's external loads (the core's own load model,
+    :func:`linkage.loads.external_loads`: forces, moments, useful resistance by stroke and
+    span) and of the weights, at the kinematics ``kin`` (unit crank speed: then it is the
+    reduced moment of those loads, + helping the motion)."""
     from linkage.groups import dot
+    from linkage.loads import external_loads, stroke_cycle
 
-    forces, moments, _ = _external_loads(mech, spec, kin, ext)
-    P = 0.0 * kin["A"].z.real
+    forces, moments, _ = external_loads(spec, mech, kin, stroke_cycle(mech, spec, ext))
+    P = 0.0 * np.asarray(kin["A"].z.real, float)
     for lname in spec.link_names:
         link = kin["links"][lname]
         o = link.origin
         for f, at in forces[lname]:
-            v = o.v + 1j * link.omega * (at - o.z)
+            v = o.v + (at - o.z).perp() * link.omega      # v = v_O + iω (r − r_O)
             P = P + dot(f, v)
         for m in moments[lname]:
             P = P + m * link.omega
         ls = spec.links[lname]
-        if ls.mass and spec.gravity:
-            P = P + dot(-1j * ls.mass * spec.gravity + 0 * o.z, link.point(ls.cg).v)
+        if ls.mass and spec.gravity:                       # weight −m g j at S
+            P = P - ls.mass * spec.gravity * link.point(ls.cg).v.imag
     return P
 
 
@@ -322,8 +324,8 @@ def linkage_model(spec, *, steps=720, phi0_deg=None, drive_power=False) -> Reduc
     -----
     Velocity ratios from the core's kinematics at ω = ±1 rad/s, ε = 0
     (:func:`linkage_kinematics_unit`); eq. (11-10)/(11-13) of [1]_.  The loads are the
-    core's (``linkage.analysis._external_loads``): one load model for the force analysis
-    and for the reduction.
+    core's (:func:`linkage.loads.external_loads`): one load model for the force analysis
+    and for the reduction.  The spec's ε is not used (the true motion sets it).
     """
     from linkage import load_spec
 
@@ -378,19 +380,21 @@ def engine_model(spec, *, steps=1440, J_extra_kgm2=0.0) -> ReducedModel:
         constant one is added by :func:`dynamics.motion.steady_motion`).
     """
     import engine
-    from engine.forces import crank_pin_forces
-    from engine.kinematics import crank_slider
 
-    cyc = 720.0 if spec.strokes == 4 else 360.0
+    cyc = spec.cycle_deg
     i = int(spec.cylinders)
     phi = _grid(math.radians(cyc), steps)
-    a_deg = np.mod(np.degrees(phi)[None, :] - (cyc / i) * np.arange(i)[:, None], cyc)
-    flat = a_deg.ravel()
-    tab = engine.force_table(spec, flat)
-    mech = crank_slider(np.radians(flat), spec.R, spec.L, spec.omega)
-    Mgas = crank_pin_forces(mech, tab["dPg_N"].to_numpy(), spec.L)["M"].reshape(a_deg.shape)
-    vr = (tab["v_m_s"].to_numpy() / spec.omega).reshape(a_deg.shape)      # dx/dφ [m]
-    ar = (tab["j_m_s2"].to_numpy() / spec.omega ** 2).reshape(a_deg.shape)  # d²x/dφ² [m]
+    theta = np.degrees(phi)
+    Mgas, vr, ar = [], [], []
+    for k in range(i):       # cylinder k lags k·cycle/i behind cylinder 1 (even firing)
+        phase = k * cyc / i
+        tab = engine.force_table(spec, theta, phase_deg=phase)
+        mech = engine.crank_slider(phi, spec.R, spec.L, spec.omega,
+                                   offset=spec.pin_offset, phase=math.radians(phase))
+        Mgas.append(engine.crank_pin_forces(mech, tab["dPg_N"].to_numpy(), spec.L)["M"])
+        vr.append(tab["v_m_s"].to_numpy() / spec.omega)            # dx/dφ [m]
+        ar.append(tab["j_m_s2"].to_numpy() / spec.omega ** 2)       # d²x/dφ² [m]
+    Mgas, vr, ar = np.array(Mgas), np.array(vr), np.array(ar)
     m_rot = spec.m_rod_rot + (spec.m_crank_rot or 0.0)
     J = np.sum(spec.mj * vr * vr + m_rot * spec.R ** 2, axis=0) + J_extra_kgm2
     dJ = np.sum(2.0 * spec.mj * vr * ar, axis=0)

@@ -22,47 +22,102 @@ Sign conventions (the textbook's):
 References
 ----------
 .. [1] Колчин А. И., Демидов В. П. Расчёт автомобильных и тракторных двигателей, 2008,
-   § "Силы, действующие в КШМ"; and the course manual page (seed 003 of this project),
-   eqs. (1.10)–(1.15) and its Table 2.
+   4-е изд., гл. "Динамика кривошипно-шатунного механизма" (силы, действующие в КШМ:
+   N = P tg β, Sш = P/cos β, K = P cos(α + β)/cos β, T = P sin(α + β)/cos β,
+   Mкр = T·R, Kr.ш = −mш.к·R·ω², Rшш, Ψ); the same formulas, numbered (1.10)–(1.15),
+   and the layout of "Таблица 2" in the Russian course-project manuals built on it.
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
+from crankbase.errors import Problem
+from crankbase.tolerances import ROUNDOFF_RTOL, SAME_ANGLE_DEG
 from linkage.groups import Wrench, dot, driver_reactions, link_wrench, rrp_reactions
 
-from .indicator import gas_pressure, indicated_mean_pressure
-from .kinematics import GUIDE_ANGLE, PistonKinematics, crank_slider
+from .indicator import gas_pressure, indicated_mean_pressure, theoretical_mean_pressure
+from .kinematics import PistonKinematics, crank_slider
+from .result import EngineResult, EngineSummary, Extreme
+from .spec import EngineSpec, EngineSpecError, TableSettings
 
 __all__ = ["COLUMNS", "table_angles", "fine_angles", "gas_force", "two_term_acceleration",
-           "inertia_force", "crank_pin_forces", "force_table", "summarize",
-           "SUMMARY_QUANTITIES"]
+           "inertia_force", "crank_pin_forces", "force_table", "summarize", "analyze",
+           "SUMMARY_QUANTITIES", "PLOT_STEP_DEG"]
 
 #: Columns of the force table, in order (units in the names).
 COLUMNS = ("alpha_deg", "p_gas_MPa", "dPg_N", "Pj_N", "P_N", "beta_deg", "N_N", "S_N",
            "K_N", "T_N", "M_Nm", "Kr_N", "R_N", "psi_deg", "x_mm", "v_m_s", "j_m_s2")
 
+#: Step of the fine grid on which plots and the summary's extremes are taken. [deg]
+PLOT_STEP_DEG = 0.5
 
-def table_angles(spec, step_deg=None) -> np.ndarray:
-    """Crank angles of the table rows: every ``step_deg`` from 0 to the cycle end (which
-    is always included), plus the spec's extra angles, sorted, without repeats. [deg]"""
-    step = spec.step_deg if step_deg is None else step_deg
-    cyc = spec.cycle_deg
-    n = int(np.floor(cyc / step + 1e-9))
-    a = step * np.arange(n + 1)
-    if cyc - a[-1] > 1e-9 * cyc:
-        a = np.append(a, cyc)
-    else:
-        a[-1] = min(a[-1], cyc)
-    if spec.extra_angles_deg:
-        a = np.union1d(a, np.asarray(spec.extra_angles_deg, float))
+
+def _check_spec(spec):
+    if not isinstance(spec, EngineSpec):
+        raise EngineSpecError(Problem("spec", f"must be an EngineSpec (engine.load_spec), "
+                                              f"got {type(spec).__name__}"))
+
+
+def _check_angle(value, key):
+    if not (isinstance(value, (int, float)) and not isinstance(value, bool)
+            and math.isfinite(value)):
+        raise EngineSpecError(Problem(key, f"got {value!r}; must be a finite number [deg]"))
+    return float(value)
+
+
+def _check_angles(alpha_deg, key="alpha_deg"):
+    try:
+        a = np.asarray(alpha_deg, dtype=float)
+    except (TypeError, ValueError):
+        raise EngineSpecError(Problem(key, f"must be numbers [deg], got {alpha_deg!r}")) \
+            from None
+    if a.ndim != 1 or a.size == 0:
+        raise EngineSpecError(Problem(key, f"must be a non-empty 1-D sequence of angles "
+                                           f"[deg], got shape {a.shape}"))
+    bad = ~np.isfinite(a)
+    if bad.any():
+        i = int(np.flatnonzero(bad)[0])
+        raise EngineSpecError(Problem(f"{key}[{i}]", f"got {a[i]!r}; angles must be "
+                                                     "finite [deg]"))
     return a
 
 
-def fine_angles(spec, step_deg=0.5) -> np.ndarray:
+def table_angles(spec, settings=None) -> np.ndarray:
+    """Crank angles of the table rows: every ``settings.step_deg`` from 0 to the cycle end
+    (which is always included), plus the extra angles, sorted, without repeats. [deg]
+
+    Parameters
+    ----------
+    spec : EngineSpec
+        Gives the cycle length (720° four-stroke, 360° two-stroke).
+    settings : TableSettings, optional
+        Default :class:`TableSettings` () (every 30°).
+    """
+    _check_spec(spec)
+    settings = TableSettings() if settings is None else settings
+    step, cyc = settings.step_deg, spec.cycle_deg
+    if step > cyc:
+        raise EngineSpecError(Problem("step_deg", f"got {step:g}; must be <= the cycle "
+                                                  f"{cyc:g}°"))
+    n = int(np.floor(cyc / step * (1 + ROUNDOFF_RTOL)))
+    a = step * np.arange(n + 1)
+    if cyc - a[-1] > SAME_ANGLE_DEG:
+        a = np.append(a, cyc)
+    else:
+        a[-1] = min(a[-1], cyc)
+    if settings.extra_angles_deg:
+        a = np.union1d(a, np.asarray(settings.extra_angles_deg, float))
+    return a
+
+
+def fine_angles(spec, settings=None, step_deg=PLOT_STEP_DEG) -> np.ndarray:
     """Angles for plots and the summary: a fine grid (default 0.5°) united with the
     table's own rows, so every table row and every extra angle is on it. [deg]"""
-    return np.union1d(table_angles(spec, step_deg), table_angles(spec))
+    settings = TableSettings() if settings is None else settings
+    fine = TableSettings(step_deg=_check_angle(step_deg, "step_deg"))
+    return np.union1d(table_angles(spec, fine), table_angles(spec, settings))
 
 
 def gas_force(p, p0, area):
@@ -85,9 +140,9 @@ def gas_force(p, p0, area):
     return (np.asarray(p, float) - p0) * area
 
 
-def two_term_acceleration(alpha, R, lam, omega):
-    """Textbook two-term piston acceleration j = Rω²(cos α + λ cos 2α), + towards the
-    crank axis.
+def two_term_acceleration(alpha, R, lam, omega, k=0.0):
+    """Textbook two-term piston acceleration j = Rω²(cos α + λ cos 2α + kλ sin α), + towards
+    the crank axis.
 
     Parameters
     ----------
@@ -99,14 +154,21 @@ def two_term_acceleration(alpha, R, lam, omega):
         λ = R/Lш. [-]
     omega : float
         Crank angular velocity. [rad/s]
+    k : float
+        Relative piston-pin offset e/R (sign in :mod:`engine.kinematics`); 0 for the
+        central mechanism. [-]
 
     Returns
     -------
     ndarray
-        j. [m/s²]  ([1]_: the first two terms of the Fourier series of the exact j.)
+        j. [m/s²]  ([1]_: the terms of the exact j up to the first order in λ; the offset
+        term kλ sin α follows from √(L² − (R sin α − e)²) ≈ L − (R sin α − e)²/(2L).)
     """
     alpha = np.asarray(alpha, float)
-    return R * omega ** 2 * (np.cos(alpha) + lam * np.cos(2.0 * alpha))
+    j = np.cos(alpha) + lam * np.cos(2.0 * alpha)
+    if k:
+        j = j + k * lam * np.sin(alpha)
+    return R * omega ** 2 * j
 
 
 def inertia_force(mj, j):
@@ -153,14 +215,14 @@ def crank_pin_forces(mech: PistonKinematics, P, L):
     Notes
     -----
     Forces dyad first, then the driver (domain brief § 1): ``rrp_reactions`` with a
-    massless rod (W3 = 0) and the piston loaded by −P·u (u: from the crank axis
-    towards TDC) gives R23 at A and the guide's normal force R14 = R14n·iu.  Then
+    massless rod (W3 = 0) and the piston loaded by −P·u (u, the dyad's guide direction:
+    the cylinder axis from the crank axis towards TDC) gives R23 at A and the guide's normal force R14 = R14n·iu.  Then
     S = R32 = −R23; in the crank frame (e₂ from O to A) K = S·(−e₂), T = S·(ie₂);
     Sш = S·(A − B)/|AB|; N = R41·(−iu) = R14n; and ``driver_reactions`` with a massless
     crank gives Mкр = −Mур = (OA × S).
     """
     sol = mech.dyad
-    u = np.exp(1j * GUIDE_ANGLE)
+    u = sol.link4.e                                # the dyad's own guide: the cylinder axis
     zB = sol.B.z
     zero = np.zeros(zB.shape)
     W3 = Wrench(zero + 0j, zero, zB)               # massless rod without loads
@@ -175,7 +237,7 @@ def crank_pin_forces(mech: PistonKinematics, P, L):
                 N=reac.RG_n, M=-drv.M_drive, reactions=reac)
 
 
-def force_table(spec, alpha_deg=None):
+def force_table(spec, alpha_deg=None, *, settings=None, bank_deg=0.0, phase_deg=0.0):
     """The engine force table ("Table 2") of one cylinder.
 
     Parameters
@@ -183,54 +245,81 @@ def force_table(spec, alpha_deg=None):
     spec : EngineSpec
         From :func:`engine.load_spec`.
     alpha_deg : array_like, optional
-        Crank angles of the rows [deg]; default :func:`table_angles` (every
-        ``table.step_deg`` over the cycle, plus ``table.extra_angles_deg``).
+        Crankshaft angles θ of the rows [deg]; default :func:`table_angles` of
+        ``settings``.  The cylinder's own crank angle is α = θ − ``phase_deg``.
+    settings : TableSettings, optional
+        Table rows when ``alpha_deg`` is not given (default every 30°).
+    bank_deg : float
+        Cylinder axis angle from the engine's vertical, + in the direction of
+        rotation (:mod:`engine.kinematics`); the table's forces are in the cylinder's
+        and the crank's own frames, so they do not depend on it. [deg]
+    phase_deg : float
+        Lag of the cylinder's working cycle behind θ. [deg]
 
     Returns
     -------
     pandas.DataFrame
-        Columns :data:`COLUMNS`: ``alpha_deg`` [deg], ``p_gas_MPa`` absolute gas pressure,
-        ``dPg_N`` ΔPг, ``Pj_N`` Pj, ``P_N`` P, ``beta_deg`` β, ``N_N`` N, ``S_N`` Sш,
-        ``K_N`` K, ``T_N`` T, ``M_Nm`` Mкр, ``Kr_N`` Kr.ш, ``R_N`` Rшш, ``psi_deg`` Ψ,
-        ``x_mm`` piston displacement from TDC, ``v_m_s`` piston velocity and ``j_m_s2``
-        its exact acceleration (both + towards the crank axis).  Signs: module docstring.
+        Columns :data:`COLUMNS`: ``alpha_deg`` the row's angle θ [deg], ``p_gas_MPa``
+        absolute gas pressure, ``dPg_N`` ΔPг, ``Pj_N`` Pj, ``P_N`` P, ``beta_deg`` β,
+        ``N_N`` N, ``S_N`` Sш, ``K_N`` K, ``T_N`` T, ``M_Nm`` Mкр, ``Kr_N`` Kr.ш, ``R_N``
+        Rшш, ``psi_deg`` Ψ, ``x_mm`` piston displacement from TDC, ``v_m_s`` piston
+        velocity and ``j_m_s2`` its exact acceleration (both + towards the crank axis).
+        Signs: module docstring.
+
+    Raises
+    ------
+    EngineSpecError
+        A non-finite angle or a wrong argument type, naming the argument.
 
     Notes
     -----
-    ``acceleration = "two-term"``: Pj = −mj·Rω²(cos α + λ cos 2α) [1]_.  ``"exact"``:
-    Pj = −mj·j with j the exact piston acceleration of the RRP dyad.  In both modes Pj
-    enters the dyad as an external force on a massless piston (the same loads as a
-    piston of mass mj in exact mode); the rod is massless, its mass being split into mj
-    and mш.к.  Kr.ш = −mш.к·R·ω²; Rшш = √(T² + (K + Kr.ш)²); Ψ = atan2(T, K + Kr.ш).
+    ``acceleration = "two-term"``: Pj = −mj·Rω²(cos α + λ cos 2α) [1]_ (+ kλ sin α with a
+    pin offset).  ``"exact"``: Pj = −mj·j with j the exact piston acceleration of the RRP
+    dyad.  In both modes Pj enters the dyad as an external force on a massless piston
+    (the same loads as a piston of mass mj in exact mode); the rod is massless, its mass
+    being split into mj and mш.к.  Kr.ш = −mш.к·R·ω²; Rшш = √(T² + (K + Kr.ш)²);
+    Ψ = atan2(T, K + Kr.ш).
     """
     import pandas as pd
 
-    a_deg = table_angles(spec) if alpha_deg is None else np.asarray(alpha_deg, float)
-    alpha = np.radians(a_deg)
-    mech = crank_slider(alpha, spec.R, spec.L, spec.omega)
+    f = _cylinder_forces(spec, alpha_deg, settings, bank_deg, phase_deg)
+    mech, P = f["mech"], f["P"]
+    Kr = np.full_like(P, spec.Kr)
+    Kt = f["K"] + Kr
+    cols = dict(alpha_deg=f["theta_deg"], p_gas_MPa=f["p"] / 1e6, dPg_N=f["dPg"],
+                Pj_N=f["Pj"], P_N=P, beta_deg=np.degrees(mech.beta), N_N=f["N"],
+                S_N=f["S"], K_N=f["K"], T_N=f["T"], M_Nm=f["M"], Kr_N=Kr,
+                R_N=np.hypot(f["T"], Kt), psi_deg=_psi(f["T"], Kt), x_mm=mech.x * 1e3,
+                v_m_s=mech.v, j_m_s2=mech.j)
+    return pd.DataFrame(cols, columns=list(COLUMNS))
+
+
+def _cylinder_forces(spec, alpha_deg, settings, bank_deg, phase_deg):
+    """Kinematics, piston forces and crank-pin forces of one cylinder (validated args)."""
+    _check_spec(spec)
+    bank = math.radians(_check_angle(bank_deg, "bank_deg"))
+    phase = _check_angle(phase_deg, "phase_deg")
+    theta = table_angles(spec, settings) if alpha_deg is None else _check_angles(alpha_deg)
+    a_deg = theta - phase
+    mech = crank_slider(np.radians(theta), spec.R, spec.L, spec.omega, bank=bank,
+                        offset=spec.pin_offset, phase=math.radians(phase))
     p = gas_pressure(spec, a_deg, mech.x)
     dPg = gas_force(p, spec.p0, spec.area)
     if spec.acceleration == "exact":
         Pj = inertia_force(spec.mj, mech.j)
     else:
-        Pj = inertia_force(spec.mj, two_term_acceleration(alpha, spec.R, spec.lam,
-                                                          spec.omega))
+        Pj = inertia_force(spec.mj, two_term_acceleration(mech.alpha, spec.R, spec.lam,
+                                                          spec.omega, spec.k_offset))
     P = dPg + Pj
     f = crank_pin_forces(mech, P, spec.L)
-    Kr = np.full_like(P, spec.Kr)
-    Kt = f["K"] + Kr
-    cols = dict(alpha_deg=a_deg, p_gas_MPa=p / 1e6, dPg_N=dPg, Pj_N=Pj, P_N=P,
-                beta_deg=np.degrees(mech.beta), N_N=f["N"], S_N=f["S"], K_N=f["K"],
-                T_N=f["T"], M_Nm=f["M"], Kr_N=Kr, R_N=np.hypot(f["T"], Kt),
-                psi_deg=_psi(f["T"], Kt), x_mm=mech.x * 1e3,
-                v_m_s=mech.v, j_m_s2=mech.j)
-    return pd.DataFrame(cols, columns=list(COLUMNS))
+    f.update(theta_deg=theta, mech=mech, p=p, dPg=dPg, Pj=Pj, P=P)
+    return f
 
 
 def _psi(T, Kt):
     """Ψ = atan2(T, K + Kr.ш) in degrees, in (−180°, 180°] (−180° from rounding → 180°)."""
     psi = np.degrees(np.arctan2(T, Kt))
-    return np.where(psi <= -180.0 + 1e-9, psi + 360.0, psi)
+    return np.where(psi <= -180.0 + SAME_ANGLE_DEG, psi + 360.0, psi)
 
 
 #: Quantities whose max and min the summary reports: (column, symbol).
@@ -242,7 +331,7 @@ def _cycle_mean(alpha, y, cycle_deg):
     return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(alpha)) / cycle_deg)
 
 
-def summarize(table, spec):
+def summarize(table, spec) -> EngineSummary:
     """Extremes and cycle means of a force table.
 
     Parameters
@@ -253,32 +342,63 @@ def summarize(table, spec):
 
     Returns
     -------
-    dict
-        ``extremes``: {column: (max, α at max, min, α at min)} for :data:`SUMMARY_QUANTITIES`
-        [N, N·m, deg]; ``p_max_MPa`` and ``alpha_p_max_deg``; ``M_mean_Nm`` and
-        ``R_mean_N`` (trapezoid rule over α / cycle); ``chi`` = Rшш,max/Rшш,mean;
-        ``pi_MPa`` the indicated mean pressure of the diagram (∮p dV/Vh, pumping loop
-        included); ``power_i_kW`` = pi·Vh·n/(30·τ) of one cylinder (τ = strokes);
-        ``pi_theory_MPa`` p′i of the unrounded diagram (computed diagrams only).
+    EngineSummary
+        Max and min with their angles of P, Sш, N, K, T, Mкр, Rшш [N, N·m, deg]; the peak
+        gas pressure and its angle; Mкр.ср and Rшш.ср (trapezoid rule over α / cycle);
+        χ = Rшш,max/Rшш,ср; the indicated mean pressure pi of the diagram (∮p dV/Vh,
+        pumping loop included) and the indicated power of one cylinder
+        Ni = pi·Vh·n/(30·τ) [1]_; p′i of the unrounded diagram (computed diagrams only).
     """
+    _check_spec(spec)
+    missing = [c for c in COLUMNS if c not in getattr(table, "columns", ())]
+    if missing:
+        raise EngineSpecError(Problem("table", "must be a force table (engine.force_table);"
+                                               f" missing columns {', '.join(missing)}"))
     a = table["alpha_deg"].to_numpy()
     cyc = spec.cycle_deg
-    out = {"extremes": {}}
+    ext = {}
     for col, _ in SUMMARY_QUANTITIES:
         y = table[col].to_numpy()
         i, k = int(np.argmax(y)), int(np.argmin(y))
-        out["extremes"][col] = (float(y[i]), float(a[i]), float(y[k]), float(a[k]))
+        ext[col] = Extreme(float(y[i]), float(a[i]), float(y[k]), float(a[k]))
     p = table["p_gas_MPa"].to_numpy()
-    out["p_max_MPa"] = float(p.max())
-    out["alpha_p_max_deg"] = float(a[int(np.argmax(p))])
-    out["M_mean_Nm"] = _cycle_mean(a, table["M_Nm"].to_numpy(), cyc)
-    out["R_mean_N"] = _cycle_mean(a, table["R_N"].to_numpy(), cyc)
-    rmax = out["extremes"]["R_N"][0]
-    out["chi"] = rmax / out["R_mean_N"] if out["R_mean_N"] > 0 else float("nan")
+    R_mean = _cycle_mean(a, table["R_N"].to_numpy(), cyc)
     pi = indicated_mean_pressure(spec)
-    out["pi_MPa"] = pi / 1e6
-    out["power_i_kW"] = pi * spec.Vh * spec.speed_rpm / (30.0 * spec.strokes) * 1e-3
-    if spec.cycle is not None:
-        from .indicator import theoretical_mean_pressure
-        out["pi_theory_MPa"] = theoretical_mean_pressure(spec.cycle) / 1e6
-    return out
+    return EngineSummary(
+        P_N=ext["P_N"], S_N=ext["S_N"], N_N=ext["N_N"], K_N=ext["K_N"], T_N=ext["T_N"],
+        M_Nm=ext["M_Nm"], R_N=ext["R_N"],
+        p_max_MPa=float(p.max()), alpha_p_max_deg=float(a[int(np.argmax(p))]),
+        M_mean_Nm=_cycle_mean(a, table["M_Nm"].to_numpy(), cyc), R_mean_N=R_mean,
+        chi=ext["R_N"].max / R_mean if R_mean > 0 else float("nan"),
+        pi_MPa=pi / 1e6,
+        power_i_kW=pi * spec.Vh * spec.speed_rpm / (30.0 * spec.strokes) * 1e-3,
+        pi_theory_MPa=(theoretical_mean_pressure(spec.cycle) / 1e6
+                       if spec.cycle is not None else None))
+
+
+def analyze(spec, settings=None, *, fine_step_deg=PLOT_STEP_DEG) -> EngineResult:
+    """The force table of one cylinder with its fine curves and summary.
+
+    Parameters
+    ----------
+    spec : EngineSpec
+    settings : TableSettings, optional
+        The table rows (default every 30°) and the force scale of the report.
+    fine_step_deg : float
+        Step of the fine grid for the plots and the extremes (the table rows are added
+        to it). [deg]
+
+    Returns
+    -------
+    EngineResult
+        ``table`` at the settings' rows, ``curves`` on the fine grid, ``summary`` taken on
+        the fine grid (so peaks between rows are caught).
+    """
+    settings = TableSettings() if settings is None else settings
+    if not isinstance(settings, TableSettings):
+        raise EngineSpecError(Problem("settings", "must be a TableSettings, got "
+                                                  f"{type(settings).__name__}"))
+    table = force_table(spec, settings=settings)
+    curves = force_table(spec, fine_angles(spec, settings, fine_step_deg))
+    return EngineResult(spec=spec, settings=settings, table=table, curves=curves,
+                        summary=summarize(curves, spec))

@@ -47,14 +47,100 @@ References
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
+from pathlib import Path
+
 import numpy as np
 
-from .kinematics import crank_slider
-from .spec import JOIN_AFTER_PEAK_DEG
+from crankbase.tolerances import POLYTROPE_SLOPE_STEP_DEG
 
-__all__ = ["interpolate_periodic", "volume_ratio", "sharp_cycle_pressure",
-           "cycle_pressure", "gas_pressure", "indicated_mean_pressure",
-           "theoretical_mean_pressure"]
+from .kinematics import crank_slider
+
+__all__ = ["CycleSpec", "PressureTable", "JOIN_AFTER_PEAK_DEG", "interpolate_periodic",
+           "volume_ratio", "sharp_cycle_pressure", "cycle_pressure", "gas_pressure",
+           "indicated_mean_pressure", "theoretical_mean_pressure"]
+
+#: The rounded combustion curve meets the expansion polytrope this far after the peak [1]_.
+#: [deg]
+JOIN_AFTER_PEAK_DEG = 20.0
+
+
+#: Default ignition (otto) and injection (diesel) advance before TDC for the rounding [1]_.
+#: [deg]
+ADVANCE_DEFAULT_DEG = {"otto": 30.0, "diesel": 20.0}
+
+
+@dataclass(frozen=True)
+class PressureTable:
+    """A tabulated indicator diagram (inline in the spec or read from a CSV file).
+
+    Attributes
+    ----------
+    angle_deg : tuple of float
+        Crank angles from the TDC that starts intake, sorted, in [0, cycle). [deg]
+    p : tuple of float
+        Absolute gas pressure at those angles. [Pa]
+    file : Path or None
+        The CSV file the table was read from (None: inline in the spec).
+    """
+
+    angle_deg: tuple
+    p: tuple
+    file: Path | None = None
+
+
+@dataclass(frozen=True)
+class CycleSpec:
+    """Thermal-calculation data for a computed indicator diagram (``[pressure.cycle]``).
+
+    Inputs only, pressures in Pa and angles in degrees; the pressure at the end of
+    compression pc, the peak pz (when λz = pz/pc is given) and λz are computed
+    (:attr:`pc`, :attr:`pz`, :attr:`lambda_z`).  Exactly one of ``pz_input`` and
+    ``lambda_z_input`` is set.  See the module docstring for the model.
+    """
+
+    kind: str                      # "otto" or "diesel"
+    compression_ratio: float       # ε [-]
+    pa: float                      # pressure at the end of intake [Pa]
+    pr: float                      # residual-gas (exhaust) pressure [Pa]
+    n1: float                      # compression polytropic index [-]
+    n2: float                      # expansion polytropic index [-]
+    pz_input: float | None         # maximum pressure of the thermal calculation [Pa]
+    lambda_z_input: float | None   # or the pressure-rise ratio λz = pz/pc [-]
+    rho: float                     # pre-expansion ratio ρ (1 for otto) [-]
+    rounding: bool                 # round the diagram by the textbook rules
+    advance_deg: float | None      # ignition (otto) / injection (diesel) advance [deg]
+    pc_factor: float               # pc'' = pc_factor · pc at TDC [-]
+    peak_factor: float             # real peak pzд = peak_factor · pz [-]
+    peak_after_tdc_deg: float      # angle of the real peak after TDC [deg]
+    exhaust_opening_deg: float     # exhaust valve opening before BDC [deg]
+    intake_opening_deg: float      # intake valve opening before TDC [deg]
+    exhaust_closing_deg: float     # exhaust valve closing after TDC [deg]
+
+    @property
+    def advance(self) -> float:
+        """Ignition or injection advance before TDC: given, else the textbook default
+        for the kind (:data:`ADVANCE_DEFAULT_DEG`). [deg]"""
+        if self.advance_deg is not None:
+            return self.advance_deg
+        return ADVANCE_DEFAULT_DEG[self.kind]
+
+    @property
+    def pc(self) -> float:
+        """Pressure at the end of compression pc = pa·ε^n1 [1]_. [Pa]"""
+        return self.pa * self.compression_ratio ** self.n1
+
+    @property
+    def pz(self) -> float:
+        """Maximum pressure of the thermal calculation: given, or λz·pc. [Pa]"""
+        if self.pz_input is not None:
+            return self.pz_input
+        return self.lambda_z_input * self.pc
+
+    @property
+    def lambda_z(self) -> float:
+        """Pressure-rise ratio λz = pz/pc. [-]"""
+        return self.pz / self.pc
 
 
 def interpolate_periodic(alpha_deg, angle_deg, p, cycle_deg):
@@ -81,25 +167,29 @@ def interpolate_periodic(alpha_deg, angle_deg, p, cycle_deg):
     return np.interp(a, angle_deg, p, period=cycle_deg)
 
 
-def volume_ratio(alpha_deg, lam, eps):
-    """Cylinder volume over the clearance volume, V/Vc = 1 + (ε − 1)·x/S.
+def volume_ratio(alpha_deg, lam, eps, k=0.0):
+    """Cylinder volume over the clearance volume, V/Vc = 1 + (ε − 1)·x/Sп.
 
     Parameters
     ----------
     alpha_deg : array_like
-        Crank angle from TDC. [deg]
+        Crank angle from the cylinder axis (TDC of the central mechanism). [deg]
     lam : float
         λ = R/Lш. [-]
     eps : float
         Compression ratio ε. [-]
+    k : float
+        Relative piston-pin offset e/R (désaxé; sign in :mod:`engine.kinematics`). [-]
 
     Returns
     -------
     ndarray
-        V/Vc, with the exact piston displacement x(α) of the crank-slider dyad. [-]
+        V/Vc, with the exact piston displacement x(α) from the real TDC of the
+        crank-slider dyad and the piston's travel Sп between the dead centres (2R for a
+        central mechanism), so that V = Vc at TDC and V = ε·Vc at BDC. [-]
     """
-    x = crank_slider(np.radians(alpha_deg), 1.0, 1.0 / lam, 1.0).x
-    return 1.0 + (eps - 1.0) * x / 2.0
+    m = crank_slider(np.radians(alpha_deg), 1.0, 1.0 / lam, 1.0, offset=k)
+    return 1.0 + (eps - 1.0) * m.x / m.travel
 
 
 def _compression(vr, cyc):
@@ -110,7 +200,7 @@ def _expansion(vr, cyc):
     return cyc.pz * np.minimum(1.0, (cyc.rho / vr)) ** cyc.n2
 
 
-def sharp_cycle_pressure(alpha_deg, cyc, lam, vr=None):
+def sharp_cycle_pressure(alpha_deg, cyc, lam, vr=None, k=0.0):
     """Unrounded (theoretical) indicator diagram of a four-stroke engine.
 
     Parameters
@@ -123,6 +213,8 @@ def sharp_cycle_pressure(alpha_deg, cyc, lam, vr=None):
         λ = R/Lш. [-]
     vr : ndarray, optional
         V/Vc at ``alpha_deg`` when already known (from :func:`volume_ratio`). [-]
+    k : float
+        Relative piston-pin offset e/R. [-]
 
     Returns
     -------
@@ -131,7 +223,7 @@ def sharp_cycle_pressure(alpha_deg, cyc, lam, vr=None):
     """
     a = np.mod(np.atleast_1d(np.asarray(alpha_deg, float)), 720.0)
     if vr is None:
-        vr = volume_ratio(a, lam, cyc.compression_ratio)
+        vr = volume_ratio(a, lam, cyc.compression_ratio, k)
     p = np.where(a < 180.0, cyc.pa, cyc.pr)
     comp = (a >= 180.0) & (a < 360.0)
     p[comp] = _compression(vr[comp], cyc)
@@ -179,7 +271,7 @@ def _limited_slopes(xk, yk, m_ends):
     return m
 
 
-def cycle_pressure(alpha_deg, cyc, lam, vr=None):
+def cycle_pressure(alpha_deg, cyc, lam, vr=None, k=0.0):
     """Indicator diagram from the thermal calculation, rounded when ``cyc.rounding``.
 
     Parameters
@@ -191,6 +283,8 @@ def cycle_pressure(alpha_deg, cyc, lam, vr=None):
         λ = R/Lш. [-]
     vr : ndarray, optional
         V/Vc at ``alpha_deg`` when already known (from :func:`volume_ratio`). [-]
+    k : float
+        Relative piston-pin offset e/R. [-]
 
     Returns
     -------
@@ -198,19 +292,19 @@ def cycle_pressure(alpha_deg, cyc, lam, vr=None):
         Absolute gas pressure. [Pa]  (Rounding rules in the module docstring, [1]_.)
     """
     a = np.mod(np.atleast_1d(np.asarray(alpha_deg, float)), 720.0)
-    p = sharp_cycle_pressure(a, cyc, lam, vr)
+    p = sharp_cycle_pressure(a, cyc, lam, vr, k)
     if not cyc.rounding:
         return p
     eps = cyc.compression_ratio
-    a0 = 360.0 - cyc.advance_deg                  # c': ignition / injection
+    a0 = 360.0 - cyc.advance                  # c': ignition / injection
     a2 = 360.0 + cyc.peak_after_tdc_deg           # z_d: the real peak
     a3 = a2 + JOIN_AFTER_PEAK_DEG                 # back on the expansion line
     b0 = 540.0 - cyc.exhaust_opening_deg          # b': exhaust valve opens
     b2 = 540.0 + cyc.exhaust_opening_deg / 2.0    # on the exhaust line pr
-    h = 1e-4
+    h = POLYTROPE_SLOPE_STEP_DEG
     # V/Vc at every knot (and ±h for the slopes) in one kinematics pass
     knots = np.array([a0 - h, a0, a0 + h, a3 - h, a3, a3 + h, b0 - h, b0, b0 + h, 540.0])
-    vk = volume_ratio(knots, lam, eps)
+    vk = volume_ratio(knots, lam, eps, k)
     pc_k = _compression(vk[:3], cyc)
     pe_k = _expansion(vk[3:], cyc)
     slope_c0 = (pc_k[2] - pc_k[0]) / (2 * h)
@@ -246,7 +340,8 @@ def gas_pressure(spec, alpha_deg, x=None):
     ----------
     spec : EngineSpec
     alpha_deg : array_like
-        Crank angle from TDC (the TDC that starts intake for a four-stroke). [deg]
+        Crank angle of the cylinder's working cycle (from the TDC that starts intake for
+        a four-stroke). [deg]
     x : ndarray, optional
         Piston displacement from TDC at ``alpha_deg`` when already known (saves a
         kinematics pass for a computed diagram). [m]
@@ -256,12 +351,15 @@ def gas_pressure(spec, alpha_deg, x=None):
     ndarray
         pг. [Pa]
     """
-    if spec.cycle is not None:
+    cyc = spec.cycle
+    if cyc is not None:
         vr = None
         if x is not None:
-            vr = 1.0 + (spec.cycle.compression_ratio - 1.0) * np.asarray(x) / spec.stroke
-        return cycle_pressure(alpha_deg, spec.cycle, spec.lam, vr)
-    return interpolate_periodic(alpha_deg, spec.angle_deg, spec.p, spec.cycle_deg)
+            vr = 1.0 + (cyc.compression_ratio - 1.0) * np.asarray(x) / spec.piston_travel
+        return cycle_pressure(alpha_deg, cyc, spec.lam, vr, spec.k_offset)
+    table = spec.pressure
+    return interpolate_periodic(alpha_deg, np.asarray(table.angle_deg, float),
+                                np.asarray(table.p, float), spec.cycle_deg)
 
 
 def indicated_mean_pressure(spec, step_deg=0.05):
@@ -281,13 +379,15 @@ def indicated_mean_pressure(spec, step_deg=0.05):
 
     Notes
     -----
-    dV = Fп·dx, so pi = ∮ p d(x/S) needs no clearance volume; x(α) is the exact piston
-    displacement of the crank-slider dyad.
+    dV = Fп·dx and Vh = Fп·Sп, so pi = ∮ p d(x/Sп) needs no clearance volume; x(α) is the
+    exact piston displacement of the crank-slider dyad and Sп its travel between the dead
+    centres.
     """
     n = int(round(spec.cycle_deg / step_deg))
     alpha = np.linspace(0.0, spec.cycle_deg, n + 1)
-    p = gas_pressure(spec, alpha)
-    x = crank_slider(np.radians(alpha), spec.R, spec.L, spec.omega).x / spec.stroke
+    m = crank_slider(np.radians(alpha), spec.R, spec.L, spec.omega, offset=spec.pin_offset)
+    p = gas_pressure(spec, alpha, m.x)
+    x = m.x / m.travel
     return float(np.sum(0.5 * (p[1:] + p[:-1]) * np.diff(x)))
 
 

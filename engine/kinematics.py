@@ -1,15 +1,32 @@
-"""Piston, rod and crank kinematics of the central crank-slider, built from the Assur
+"""Piston, rod and crank kinematics of one cylinder's crank-slider, built from the Assur
 groups of :mod:`linkage.groups` (the driver ``crank`` and the ``rrp`` dyad).
 
-The engine frame: the crank axis O at the origin, the cylinder axis along +y (the guide
-direction u points from O towards TDC), the crank turning counter-clockwise (ω > 0).  The
-crank angle α is counted from TDC in the direction of rotation, so the crank's angle in the
-linkage frame is φ = 90° + α.
+The engine frame: the crankshaft axis O at the origin, +y the engine's vertical (the axis
+of a cylinder with bank angle 0, pointing from O towards its TDC), the crank turning
+counter-clockwise (ω > 0) as seen in this frame.  One cylinder is placed by three
+parameters:
+
+- ``bank`` γ: the angle of its axis from +y, + in the direction of rotation; its guide
+  direction is u = exp(i(90° + γ)) (from O towards TDC);
+- ``offset`` e (désaxé): the distance of the piston-pin axis (the line the piston pin B
+  moves on) from O, + towards the side to which the crank pin moves just after TDC (the
+  direction of rotation at TDC, i.e. i·u).  With this sign the rod angle is
+  sin β = λ(sin α − k), k = e/R, and a positive offset lowers the side force during the
+  expansion stroke (the usual design);
+- ``phase`` φ: the angle by which the cylinder's working cycle lags the crankshaft angle
+  θ: its crank angle is α = θ − φ.
+
+α is counted from the cylinder axis direction u in the direction of rotation (so the
+crank throw points along u at α = 0; with an offset the real TDC lies at α = asin(k·λ/(1 + λ)),
+slightly after).  In the linkage frame the crank's angle is 90° + γ + α.
 
 References
 ----------
-.. [1] Колчин А. И., Демидов В. П. Расчёт автомобильных и тракторных двигателей, 2008,
-   § "Кинематика кривошипно-шатунного механизма": x, v, j, β of the central mechanism.
+.. [1] Колчин А. И., Демидов В. П. Расчёт автомобильных и тракторных двигателей. 4-е изд.
+   М.: Высшая школа, 2008, гл. "Кинематика кривошипно-шатунного механизма": x, v, j, β of
+   the central and the offset (дезаксиальный) mechanism.
+.. [2] Artobolevsky, I. I. Теория механизмов и машин. Moscow: Nauka, 1988, ch. 4: the
+   kinematics of the RRP (class II, second kind) group.
 """
 from __future__ import annotations
 
@@ -19,24 +36,61 @@ import numpy as np
 
 from linkage.groups import LinkMotion, RRPSolution, crank, rrp
 
-__all__ = ["PistonKinematics", "crank_slider", "GUIDE_ANGLE"]
+__all__ = ["PistonKinematics", "crank_slider", "guide_direction", "piston_travel"]
 
-#: Direction of the cylinder axis (guide) in the linkage frame: +y, towards TDC. [rad]
-GUIDE_ANGLE = np.pi / 2
+
+def guide_direction(bank=0.0):
+    """Unit vector u of a cylinder axis (from the crankshaft axis towards TDC) in the
+    linkage frame, as a complex number.
+
+    Parameters
+    ----------
+    bank : float
+        Cylinder axis angle from the engine's vertical +y, + in the direction of
+        rotation. [rad]
+
+    Returns
+    -------
+    complex
+        u = exp(i(π/2 + γ)). [-]
+    """
+    return complex(np.exp(1j * (np.pi / 2 + bank)))
+
+
+def piston_travel(R, L, offset=0.0):
+    """Distance between the piston pin's dead-centre positions (the piston's travel).
+
+    Parameters
+    ----------
+    R, L : float
+        Crank radius and rod length. [m]
+    offset : float
+        Piston-pin offset e. [m]
+
+    Returns
+    -------
+    float
+        Sп = √((L + R)² − e²) − √((L − R)² − e²); exactly 2R when e = 0 [1]_. [m]
+    """
+    if offset == 0:
+        return 2.0 * R
+    return float(np.sqrt((L + R) ** 2 - offset ** 2) - np.sqrt((L - R) ** 2 - offset ** 2))
 
 
 @dataclass
 class PistonKinematics:
-    """Kinematics of the engine crank-slider (piston, rod, crank) over an array of crank angles.
+    """Kinematics of one cylinder's crank-slider over an array of crank angles.
 
     Attributes
     ----------
     alpha : ndarray
-        Crank angle from TDC, in the direction of rotation. [rad]
+        The cylinder's crank angle α = θ − phase, from its axis in the direction of
+        rotation. [rad]
     crank : LinkMotion
-        The crank (driver I(1,2)), origin at the crank axis O.
+        The crank (driver I(1,2)), origin at the crankshaft axis O.
     dyad : RRPSolution
-        The RRP dyad (rod 3 = AB, piston 4) of :func:`linkage.groups.rrp`.
+        The RRP dyad (rod 3 = AB, piston 4) of :func:`linkage.groups.rrp`; its guide
+        direction ``dyad.link4.e`` is the cylinder axis u.
     x : ndarray
         Piston displacement from TDC, + towards the crank axis. [m]
     v : ndarray
@@ -44,8 +98,10 @@ class PistonKinematics:
     j : ndarray
         Piston acceleration, + towards the crank axis; the exact value from the dyad. [m/s²]
     beta : ndarray
-        Rod angle from the cylinder axis, + for 0 < α < 180° (textbook β = arcsin(λ sin α)).
-        [rad]
+        Rod angle from the cylinder axis, + for 0 < α < 180° of a central mechanism
+        (textbook β = arcsin(λ sin α); with an offset arcsin(λ(sin α − k))). [rad]
+    travel : float
+        The piston's travel between the dead centres Sп (2R for a central mechanism). [m]
     """
 
     alpha: np.ndarray
@@ -55,21 +111,29 @@ class PistonKinematics:
     v: np.ndarray
     j: np.ndarray
     beta: np.ndarray
+    travel: float
 
 
-def crank_slider(alpha, R, L, omega) -> PistonKinematics:
-    """Kinematics of the central crank-slider by the Assur groups I(1,2) → II(3,4).
+def crank_slider(alpha, R, L, omega, *, bank=0.0, offset=0.0, phase=0.0) -> PistonKinematics:
+    """Kinematics of one cylinder's crank-slider by the Assur groups I(1,2) → II(3,4).
 
     Parameters
     ----------
     alpha : array_like
-        Crank angle from TDC in the direction of rotation. [rad]
+        Crankshaft angle θ (the cylinder's α when ``phase`` = 0). [rad]
     R : float
         Crank radius. [m]
     L : float
-        Connecting-rod length Lш (> R). [m]
+        Connecting-rod length Lш (> R + |offset|). [m]
     omega : float
         Crank angular velocity (constant), > 0. [rad/s]
+    bank : float
+        Cylinder axis angle from the engine's vertical, + in the direction of
+        rotation. [rad]
+    offset : float
+        Piston-pin offset e (désaxé), + towards the direction of rotation at TDC. [m]
+    phase : float
+        Lag of the cylinder's working cycle behind θ: α = θ − phase. [rad]
 
     Returns
     -------
@@ -77,18 +141,21 @@ def crank_slider(alpha, R, L, omega) -> PistonKinematics:
 
     Notes
     -----
-    The crank pin A = ``crank(φ = π/2 + α).point(R)``; the dyad ``rrp(A, L, O, π/2)``
-    gives the piston pin B at s = OB along the cylinder axis, with the slider's exact
-    velocity and acceleration (2×2 solves, no finite differences).  The textbook
-    quantities follow by sign changes only: x = R + L − s, v = −ṡ, j = −s̈, and
+    The crank pin A = ``crank(φ = π/2 + γ + α).point(R)``; the dyad
+    ``rrp(A, L, O, π/2 + γ, e)`` gives the piston pin B at s = OB along the cylinder
+    axis, with the slider's exact velocity and acceleration (2×2 solves, no finite
+    differences).  The textbook quantities follow by sign changes only:
+    x = s_TDC − s with s_TDC = √((L + R)² − e²), v = −ṡ, j = −s̈, and
     β = −arg(e₃·ū) with e₃ the rod direction A→B [1]_.  Closed forms for the same
-    quantities (x = R[(1 − cos α) + (1/λ)(1 − √(1 − λ² sin² α))], β = arcsin(λ sin α))
-    are used only in the tests, as the independent check.
+    quantities are used only in the tests, as the independent check.
     """
-    alpha = np.asarray(alpha, dtype=float)
-    link2 = crank(GUIDE_ANGLE + alpha, omega, 0.0, R)
+    alpha = np.asarray(alpha, dtype=float) - phase
+    guide = np.pi / 2 + bank
+    link2 = crank(guide + alpha, omega, 0.0, R)
     A = link2.point(R)
-    sol = rrp(A, L, 0j, GUIDE_ANGLE, 0.0, +1)
-    u = np.exp(1j * GUIDE_ANGLE)
+    sol = rrp(A, L, 0j, guide, offset, +1)
+    u = sol.link4.e
     beta = -np.angle(sol.link3.e * np.conj(u))
-    return PistonKinematics(alpha, link2, sol, R + L - sol.s, -sol.v, -sol.a, beta)
+    s_tdc = R + L if offset == 0 else np.sqrt((L + R) ** 2 - offset ** 2)
+    return PistonKinematics(alpha, link2, sol, s_tdc - sol.s, -sol.v, -sol.a, beta,
+                            piston_travel(R, L, offset))

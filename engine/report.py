@@ -4,8 +4,8 @@ The template (``templates/engine_<lang>.xlsx``, built by
 ``templates/build_engine_templates.py``) owns the look and the text; this module only
 writes numbers (never formulas) at full precision into it, matched by the keys in the
 hidden column A of the Inputs and Summary sheets, copies the prototype row's style to every
-table row, and adds native Excel charts.  It consumes the computed table and summary; it
-computes no physics.
+table row, and adds native Excel charts.  It consumes a computed
+:class:`engine.EngineResult`; it computes no physics.
 
 Sheets, by position: 0 Inputs, 1 Table 2, 2 Summary, 3 Data (the CSV columns), 4 Charts.
 """
@@ -16,7 +16,10 @@ import math
 
 import numpy as np
 
-from .forces import COLUMNS
+from crankbase.errors import OutputError, Problem
+
+from .forces import COLUMNS, SUMMARY_QUANTITIES
+from .spec import EngineSpecError
 
 __all__ = ["build_workbook", "save_workbook", "input_values", "TABLE2_FORCES", "LANGS"]
 
@@ -33,8 +36,9 @@ def _text(value):
     return "—" if value is None else value
 
 
-def input_values(spec, summary, lang="ru"):
+def input_values(result, lang="ru"):
     """The values of the Inputs sheet, by key (numbers in the report's units)."""
+    spec, settings, summary = result.spec, result.settings, result.summary
     cyc = spec.cycle
     yes, no = ("да", "нет") if lang == "ru" else ("yes", "no")
     if spec.pressure_source == "cycle":
@@ -44,8 +48,9 @@ def input_values(spec, summary, lang="ru"):
         src = (f"таблица давлений {spec.pressure_file.name}" if lang == "ru"
                else f"pressure table {spec.pressure_file.name}")
     else:
-        src = (f"таблица давлений в спецификации ({len(spec.angle_deg)} точек)"
-               if lang == "ru" else f"inline pressure table ({len(spec.angle_deg)} points)")
+        n = len(spec.pressure.angle_deg)
+        src = (f"таблица давлений в спецификации ({n} точек)"
+               if lang == "ru" else f"inline pressure table ({n} points)")
     accel = {"two-term": ("двучленная: j = Rω²(cos α + λ cos 2α)" if lang == "ru"
                           else "two-term: j = Rω²(cos α + λ cos 2α)"),
              "exact": ("точная (группа Ассура RRP)" if lang == "ru"
@@ -57,22 +62,23 @@ def input_values(spec, summary, lang="ru"):
         "L_mm": spec.L * 1e3, "lam": spec.lam, "speed_rpm": spec.speed_rpm,
         "omega": spec.omega, "v_mean": spec.piston_speed_mean, "p0_MPa": spec.p0 / 1e6,
         "area_cm2": spec.area * 1e4, "Vh_l": spec.Vh * 1e3,
-        "compression_ratio": spec.compression_ratio, "acceleration": accel,
+        "compression_ratio": spec.epsilon, "acceleration": accel,
         "mass_input": mass_input, "mj": spec.mj, "m_rod_rot": spec.m_rod_rot,
-        "m_crank_rot": spec.m_crank_rot, "Kr": spec.Kr, "mu_P": spec.force_scale,
-        "step_deg": spec.step_deg,
-        "extra_angles": ", ".join(f"{a:g}" for a in spec.extra_angles_deg) or None,
-        "pressure_source": src, "pi": summary["pi_MPa"], "power_i": summary["power_i_kW"],
+        "m_crank_rot": spec.m_crank_rot, "Kr": spec.Kr, "mu_P": settings.force_scale,
+        "step_deg": settings.step_deg,
+        "extra_angles": ", ".join(f"{a:g}" for a in settings.extra_angles_deg) or None,
+        "pressure_source": src, "pi": summary.pi_MPa, "power_i": summary.power_i_kW,
     }
     if cyc is not None:
         v.update(cycle_kind=cyc.kind, pa=cyc.pa / 1e6, pr=cyc.pr / 1e6, n1=cyc.n1,
                  n2=cyc.n2, pc=cyc.pc / 1e6, pz=cyc.pz / 1e6, lambda_z=cyc.lambda_z,
                  rho=cyc.rho if cyc.kind == "diesel" else None,
                  rounding=(yes if cyc.rounding else no),
-                 pi_theory=summary.get("pi_theory_MPa"))
+                 pi_theory=summary.pi_theory_MPa)
         if cyc.rounding:
+            v["advance_deg"] = cyc.advance
             v.update({k: getattr(cyc, k) for k in (
-                "advance_deg", "pc_factor", "peak_factor", "peak_after_tdc_deg",
+                "pc_factor", "peak_factor", "peak_after_tdc_deg",
                 "exhaust_opening_deg", "intake_opening_deg", "exhaust_closing_deg")})
     return v
 
@@ -80,7 +86,7 @@ def input_values(spec, summary, lang="ru"):
 def _put(cell, value):
     """Store ``value`` in ``cell``; a string always as text, never as a formula (a name
     may start with "=").  Floats keep every bit when the workbook is saved by
-    :func:`save_workbook` (:func:`crankdyn.io.full_precision_xlsx`)."""
+    :func:`save_workbook` (:func:`crankbase.output.full_precision_xlsx`)."""
     cell.value = value
     if isinstance(value, str):
         cell.data_type = "s"
@@ -93,19 +99,17 @@ def _copy_style(src, dst):
 def _check_finite(values, where):
     for key, val in values.items():
         if isinstance(val, float) and not math.isfinite(val):
-            raise ValueError(f"{where}: {key} is not finite ({val!r})")
+            raise OutputError(f"{where}: {key} is not finite ({val!r})")
 
 
-def build_workbook(table, summary, spec, lang="ru"):
+def build_workbook(result, lang="ru"):
     """Fill the report template with a computed force table.
 
     Parameters
     ----------
-    table : pandas.DataFrame
-        From :func:`engine.force_table` (every value finite).
-    summary : dict
-        From :func:`engine.summarize`.
-    spec : EngineSpec
+    result : EngineResult
+        From :func:`engine.analyze` (its table must be finite; its settings must give
+        the force scale μP).
     lang : {"ru", "en"}
         Template language (headers, labels, conventions).
 
@@ -117,17 +121,22 @@ def build_workbook(table, summary, spec, lang="ru"):
     from openpyxl import load_workbook
     from openpyxl.chart import Reference, ScatterChart, Series
 
-    from crankdyn.io import ensure_finite
-    from crankdyn.resources import template_path
+    from crankbase.output import ensure_finite
+    from crankbase.resources import template_path
 
     if lang not in LANGS:
-        raise ValueError(f"--lang: got {lang!r}; valid: {', '.join(LANGS)}")
+        raise EngineSpecError(Problem("lang", f"got {lang!r}; valid: {', '.join(LANGS)}"))
+    spec, table, summary = result.spec, result.table, result.summary
+    mu = result.settings.force_scale
+    if mu is None:
+        raise EngineSpecError(Problem("force_scale", "the report needs the force scale μP "
+                                                     "(TableSettings.force_scale)"))
     ensure_finite(table, "force table")
     wb = load_workbook(template_path(f"engine_{lang}.xlsx"))
     ws_in, ws_t2, ws_sum, ws_data, ws_ch = wb.worksheets[:5]
 
     # Inputs: fill column D by the key in column A
-    values = input_values(spec, summary, lang)
+    values = input_values(result, lang)
     _check_finite(values, "inputs")
     for row in ws_in.iter_rows(min_row=4, max_col=4):
         key = row[0].value
@@ -142,7 +151,6 @@ def build_workbook(table, summary, spec, lang="ru"):
                 ws_in.row_dimensions[row[3].row].height = 15 * lines
 
     # Table 2
-    mu = spec.force_scale
     _put(ws_t2["C2"], float(mu))
     proto = [ws_t2.cell(_T2_FIRST_ROW, c) for c in range(1, 2 * len(TABLE2_FORCES) + 4)]
     cols = [table["alpha_deg"].to_numpy()]
@@ -161,14 +169,16 @@ def build_workbook(table, summary, spec, lang="ru"):
     last = _T2_FIRST_ROW + len(data) - 1
 
     # Summary
-    ext = summary["extremes"]
+    extremes = {col for col, _ in SUMMARY_QUANTITIES}
     for row in ws_sum.iter_rows(min_row=4, max_col=7):
         key = row[0].value
-        if key in ext:
-            for cell, val in zip(row[3:7], ext[key]):
+        if key in extremes:
+            e = summary.extreme(key)
+            for cell, val in zip(row[3:7], (e.max, e.alpha_max_deg, e.min,
+                                            e.alpha_min_deg)):
                 _put(cell, float(val))
-        elif key in summary:
-            _put(row[3], float(summary[key]))
+        elif key is not None and getattr(summary, key, None) is not None:
+            _put(row[3], float(getattr(summary, key)))
 
     # Data: the CSV columns at full precision
     proto = [ws_data.cell(_DATA_FIRST_ROW, c) for c in range(1, len(COLUMNS) + 1)]
@@ -223,7 +233,7 @@ def build_workbook(table, summary, spec, lang="ru"):
 
 def save_workbook(wb, path):
     """Save a workbook atomically (temporary file in the target folder, then rename)."""
-    from crankdyn.io import atomic_path, full_precision_xlsx
+    from crankbase.output import atomic_path, full_precision_xlsx
 
     with atomic_path(path) as tmp, full_precision_xlsx():
         wb.save(tmp)

@@ -1,15 +1,20 @@
-"""The engine spec: read, validate (every problem at once) and derive SI quantities.
+"""The engine spec: read and validate (every problem at once), inputs only.
 
 A spec is a TOML file (or an equivalent dict) with the tables ``[engine]``, ``[masses]``,
 ``[pressure]`` (exactly one source of the indicator diagram) and ``[table]``.  Every key is
-documented in :func:`load_spec`; unknown keys are errors.  Inside, everything is SI
-(m, kg, s, Pa, rad); degrees, mm, MPa and rpm appear only in the spec.
+documented in :func:`load`; unknown keys are errors.
+
+:class:`EngineSpec` holds the physical inputs only (SI inside: m, kg, Pa; the speed in rpm as
+given); everything derived — R, L or λ, ω, Fп, Vh, mj, mш.к, Kr.ш — is a property computed
+from them, so ``dataclasses.replace(spec, speed_rpm=3000)`` gives the right table.  The
+presentation settings of the report (table step, extra rows, force scale μP) are a
+separate :class:`TableSettings`; the report language is an argument of the report itself.
 
 References
 ----------
-.. [1] Колчин А. И., Демидов В. П. Расчёт автомобильных и тракторных двигателей.
-   М.: Высшая школа, 2008 (§ "Кинематика", "Динамика": the dynamic model with mj and
-   mш.к, mш.п ≈ 0.275 mш, masses per unit piston area).
+.. [1] Колчин А. И., Демидов В. П. Расчёт автомобильных и тракторных двигателей. 4-е изд.
+   М.: Высшая школа, 2008, гл. "Динамика кривошипно-шатунного механизма": the dynamic model
+   with mj = mп + mш.п and mш.к, mш.п ≈ 0.275·mш, masses per unit piston area; Kr.ш.
 """
 from __future__ import annotations
 
@@ -20,124 +25,186 @@ from pathlib import Path
 
 import numpy as np
 
-from linkage.errors import Problem, SpecError
-from linkage.validation import Checker, read_toml
+from crankbase.errors import Problem, SpecError
+from crankbase.validation import Checker, read_toml
 
-__all__ = ["EngineSpec", "CycleSpec", "EngineSpecError", "load_spec",
-           "PRESSURE_UNITS", "read_pressure_csv"]
+from .indicator import JOIN_AFTER_PEAK_DEG, CycleSpec, PressureTable, sharp_cycle_pressure
+from .kinematics import piston_travel
+
+__all__ = ["EngineSpec", "TableSettings", "EngineStudy", "CycleSpec", "PressureTable",
+           "EngineSpecError", "load", "load_spec", "PRESSURE_UNITS", "read_pressure_csv",
+           "ROD_SMALL_END_FRACTION"]
 
 #: Pressure column names accepted in a CSV (and inline) and their factor to Pa.
 PRESSURE_UNITS = {"p_MPa": 1e6, "p_bar": 1e5, "p_kPa": 1e3, "p_Pa": 1.0}
 
-#: Default share of the rod mass taken as reciprocating (small end), mш.п / mш [1].
+#: Default share of the rod mass taken as reciprocating (small end), mш.п / mш [1]_.
 ROD_SMALL_END_FRACTION = 0.275
+
+#: The mass inputs, by the way they are given (exactly one way per spec).
+MASS_WAYS = {
+    "direct": ("reciprocating_kg", "rod_rotating_kg"),
+    "parts": ("piston_group_kg", "rod_kg"),
+    "per_area": ("piston_group_kg_m2", "rod_kg_m2"),
+}
 
 
 class EngineSpecError(SpecError):
-    """An engine spec is invalid (a :class:`linkage.errors.SpecError`, so a ValueError)."""
+    """An engine spec or an argument of an engine function is invalid (a
+    :class:`crankbase.errors.SpecError`, so a ValueError); each problem names its key."""
 
 
-@dataclass(frozen=True)
-class CycleSpec:
-    """Thermal-calculation data for a computed indicator diagram (``[pressure.cycle]``).
-
-    Pressures in Pa, angles in degrees.  See :mod:`engine.indicator` for the model.
-    """
-
-    kind: str                      # "otto" or "diesel"
-    compression_ratio: float       # ε [-]
-    pa: float                      # pressure at the end of intake [Pa]
-    pr: float                      # residual-gas (exhaust) pressure [Pa]
-    n1: float                      # compression polytropic index [-]
-    n2: float                      # expansion polytropic index [-]
-    pz: float                      # maximum pressure of the thermal calculation [Pa]
-    rho: float                     # pre-expansion ratio ρ (1 for otto) [-]
-    rounding: bool                 # round the diagram by the textbook rules
-    advance_deg: float             # ignition (otto) or injection (diesel) advance [deg]
-    pc_factor: float               # pc'' = pc_factor · pc at TDC [-]
-    peak_factor: float             # real peak pzд = peak_factor · pz [-]
-    peak_after_tdc_deg: float      # angle of the real peak after TDC [deg]
-    exhaust_opening_deg: float     # exhaust valve opening before BDC [deg]
-    intake_opening_deg: float      # intake valve opening before TDC [deg]
-    exhaust_closing_deg: float     # exhaust valve closing after TDC [deg]
-
-    @property
-    def pc(self) -> float:
-        """Pressure at the end of compression pc = pa·ε^n1. [Pa]"""
-        return self.pa * self.compression_ratio ** self.n1
-
-    @property
-    def lambda_z(self) -> float:
-        """Pressure-rise ratio λ = pz/pc. [-]"""
-        return self.pz / self.pc
+def _finite(value) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool) \
+        and math.isfinite(value)
 
 
 @dataclass(frozen=True)
 class EngineSpec:
-    """A validated engine spec with its derived quantities, SI inside.
+    """The physical inputs of one cylinder's crank mechanism (SI; inputs only).
 
     Attributes
     ----------
     name : str
     strokes : int
         4 (cycle 0…720°, α = 0 at the TDC that starts intake) or 2 (0…360°).
+    cylinders : int
+        Number of cylinders.
     bore, stroke : float
-        Cylinder bore D and piston stroke S. [m]
-    R, L, lam : float
-        Crank radius R = S/2 [m], rod length Lш [m], λ = R/Lш [-].
-    speed_rpm, omega : float
-        Crankshaft speed n [rpm] and ω = πn/30 [rad/s].
+        Cylinder bore D and stroke S = 2R (twice the crank radius). [m]
+    rod_ratio, rod_length : float or None
+        Exactly one is given: λ = R/Lш [-] or Lш [m].
+    speed_rpm : float
+        Crankshaft speed n. [rpm]
     p0 : float
         Crankcase pressure. [Pa]
     acceleration : str
         "two-term" (j = Rω²(cos α + λ cos 2α)) or "exact" (from the RRP dyad).
-    mj, m_rod_rot, m_crank_rot : float
-        Reciprocating mass, rotating part of the rod mш.к, crank rotating mass mк
-        (None when not given). [kg]
-    mass_source : dict
-        The masses as given (key → value), for the report.
-    pressure_source : str
-        "inline", "file" or "cycle".
-    pressure_file : Path or None
-    angle_deg, p : ndarray or None
-        Tabulated indicator diagram (inline or CSV): crank angle [deg], absolute
-        pressure [Pa].
-    cycle : CycleSpec or None
-    step_deg, extra_angles_deg, force_scale : float, tuple, float
-        Table rows every ``step_deg``, extra rows, μP [N/mm].
+    pressure : PressureTable or CycleSpec
+        The indicator diagram: tabulated (inline or from a CSV file) or computed from the
+        thermal calculation.
     compression_ratio : float or None
-        ε, when known (from ``[engine]`` or ``[pressure.cycle]``).
-    cylinders : int
-        Number of cylinders (informative; the table is for one cylinder).
+        ε as given in ``[engine]`` (a computed diagram has its own; see :attr:`epsilon`).
+    pin_offset : float
+        Piston-pin offset e (désaxé), + towards the direction of rotation at TDC
+        (:mod:`engine.kinematics`). [m]
+    reciprocating_kg, rod_rotating_kg : float or None
+        mj and mш.к given directly. [kg]
+    piston_group_kg, rod_kg : float or None
+        mп and mш (the rod is split by ``rod_small_end_fraction``). [kg]
+    piston_group_kg_m2, rod_kg_m2 : float or None
+        The same per unit piston area. [kg/m²]
+    rod_small_end_fraction : float
+        mш.п/mш (default 0.275 [1]_). [-]
+    crank_rotating_kg : float or None
+        Unbalanced rotating mass of one crank throw mк, reduced to the crank radius. [kg]
+    source_path : Path or None
+        The spec file (provenance only; not compared).
     """
 
-    name: str
-    strokes: int
     bore: float
     stroke: float
-    R: float
-    L: float
-    lam: float
     speed_rpm: float
-    omega: float
-    p0: float
-    acceleration: str
-    mj: float
-    m_rod_rot: float
-    m_crank_rot: float | None
-    mass_source: dict
-    pressure_source: str
-    pressure_file: Path | None
-    angle_deg: np.ndarray | None
-    p: np.ndarray | None
-    cycle: CycleSpec | None
-    step_deg: float
-    extra_angles_deg: tuple
-    force_scale: float
-    compression_ratio: float | None = None
+    pressure: PressureTable | CycleSpec
+    rod_ratio: float | None = None
+    rod_length: float | None = None
+    name: str = "engine"
+    strokes: int = 4
     cylinders: int = 1
-    source_path: Path | None = None
-    raw: dict = field(default_factory=dict, repr=False)
+    p0: float = 1e5
+    acceleration: str = "two-term"
+    compression_ratio: float | None = None
+    pin_offset: float = 0.0
+    reciprocating_kg: float | None = None
+    rod_rotating_kg: float | None = None
+    piston_group_kg: float | None = None
+    rod_kg: float | None = None
+    piston_group_kg_m2: float | None = None
+    rod_kg_m2: float | None = None
+    rod_small_end_fraction: float = ROD_SMALL_END_FRACTION
+    crank_rotating_kg: float | None = None
+    source_path: Path | None = field(default=None, compare=False)
+
+    def __post_init__(self):
+        problems = []
+
+        def bad(key, msg):
+            problems.append(Problem(key, msg))
+
+        for key in ("bore", "stroke", "speed_rpm"):
+            v = getattr(self, key)
+            if not (_finite(v) and v > 0):
+                bad(key, f"got {v!r}; must be a finite number > 0")
+        if self.strokes not in (2, 4):
+            bad("strokes", f"got {self.strokes!r}; valid: 4, 2")
+        if self.acceleration not in ("two-term", "exact"):
+            bad("acceleration", f"got {self.acceleration!r}; valid: 'two-term', 'exact'")
+        if not (_finite(self.p0) and self.p0 >= 0):
+            bad("p0", f"got {self.p0!r}; must be a finite number >= 0")
+        if (self.rod_ratio is None) == (self.rod_length is None):
+            bad("rod_ratio", "give exactly one of rod_ratio and rod_length")
+        elif self.rod_ratio is not None and not (_finite(self.rod_ratio)
+                                                 and 0 < self.rod_ratio < 1):
+            bad("rod_ratio", f"got {self.rod_ratio!r}; must be > 0 and < 1")
+        elif self.rod_length is not None and not (
+                _finite(self.rod_length) and _finite(self.stroke)
+                and self.rod_length > self.stroke / 2):
+            bad("rod_length", f"got {self.rod_length!r}; must be > the crank radius")
+        if not _finite(self.pin_offset):
+            bad("pin_offset", f"got {self.pin_offset!r}; must be a finite number")
+        elif not problems and not abs(self.pin_offset) < self.L - self.R:
+            bad("pin_offset", f"got {self.pin_offset!r} m; |e| must be < Lш − R = "
+                              f"{self.L - self.R:.6g} m for the crank to turn fully")
+        given = [w for w, keys in MASS_WAYS.items()
+                 if any(getattr(self, k) is not None for k in keys)]
+        if len(given) != 1:
+            bad("masses", "give the masses exactly one way: "
+                + " / ".join(" + ".join(k) for k in MASS_WAYS.values()))
+        else:
+            for k in MASS_WAYS[given[0]]:
+                v = getattr(self, k)
+                if not (_finite(v) and v >= 0):
+                    bad(k, f"got {v!r}; must be a finite number >= 0")
+        if not (_finite(self.rod_small_end_fraction)
+                and 0 <= self.rod_small_end_fraction <= 1):
+            bad("rod_small_end_fraction", f"got {self.rod_small_end_fraction!r}; must be "
+                                          ">= 0 and <= 1")
+        if not isinstance(self.pressure, (PressureTable, CycleSpec)):
+            bad("pressure", f"must be a PressureTable or a CycleSpec, got "
+                            f"{type(self.pressure).__name__}")
+        if problems:
+            raise EngineSpecError(problems)
+
+    # ---- geometry and speed
+    @property
+    def R(self) -> float:
+        """Crank radius R = S/2. [m]"""
+        return self.stroke / 2.0
+
+    @property
+    def L(self) -> float:
+        """Connecting-rod length Lш (given, or R/λ). [m]"""
+        return self.rod_length if self.rod_length is not None else self.R / self.rod_ratio
+
+    @property
+    def lam(self) -> float:
+        """λ = R/Lш (given, or from Lш). [-]"""
+        return self.rod_ratio if self.rod_ratio is not None else self.R / self.rod_length
+
+    @property
+    def k_offset(self) -> float:
+        """Relative piston-pin offset k = e/R. [-]"""
+        return self.pin_offset / self.R
+
+    @property
+    def piston_travel(self) -> float:
+        """The piston's travel between the dead centres (2R for a central mechanism). [m]"""
+        return piston_travel(self.R, self.L, self.pin_offset)
+
+    @property
+    def omega(self) -> float:
+        """Crankshaft angular velocity ω = πn/30. [rad/s]"""
+        return math.pi * self.speed_rpm / 30.0
 
     @property
     def cycle_deg(self) -> float:
@@ -151,41 +218,142 @@ class EngineSpec:
 
     @property
     def Vh(self) -> float:
-        """Displacement of one cylinder Vh = Fп·S. [m³]"""
-        return self.area * self.stroke
+        """Displacement of one cylinder Vh = Fп·Sп (Sп = S for a central mechanism). [m³]"""
+        return self.area * self.piston_travel
+
+    @property
+    def epsilon(self) -> float | None:
+        """Compression ratio ε: the computed diagram's, else ``[engine]``'s, else None. [-]"""
+        return self.cycle.compression_ratio if self.cycle is not None \
+            else self.compression_ratio
 
     @property
     def Vc(self) -> float | None:
         """Clearance volume Vc = Vh/(ε − 1), when ε is known. [m³]"""
-        if self.compression_ratio is None:
-            return None
-        return self.Vh / (self.compression_ratio - 1.0)
-
-    @property
-    def Kr(self) -> float:
-        """Centrifugal force of the rod's rotating part Kr.ш = −mш.к·R·ω². [N]"""
-        return -self.m_rod_rot * self.R * self.omega ** 2
+        eps = self.epsilon
+        return None if eps is None else self.Vh / (eps - 1.0)
 
     @property
     def piston_speed_mean(self) -> float:
         """Mean piston speed vп.ср = S·n/30. [m/s]"""
         return self.stroke * self.speed_rpm / 30.0
 
-    def with_step(self, step_deg: float) -> "EngineSpec":
-        """A copy with another table step (the CLI's ``--step``); validated."""
-        if not (isinstance(step_deg, (int, float)) and math.isfinite(step_deg)
-                and 0 < step_deg <= self.cycle_deg):
-            raise EngineSpecError(Problem(
-                "--step", f"got {step_deg!r}; must be > 0 and <= {self.cycle_deg:g}"))
-        from dataclasses import replace
-        return replace(self, step_deg=float(step_deg))
+    # ---- the dynamic model's masses [1]_
+    @property
+    def mass_way(self) -> str:
+        """How the masses are given: "direct", "parts" or "per_area"."""
+        return next(w for w, keys in MASS_WAYS.items()
+                    if any(getattr(self, k) is not None for k in keys))
+
+    @property
+    def mass_source(self) -> dict:
+        """The mass inputs as given (key → value), for the report."""
+        keys = MASS_WAYS[self.mass_way]
+        if self.mass_way != "direct":
+            keys += ("rod_small_end_fraction",)
+        if self.crank_rotating_kg is not None:
+            keys += ("crank_rotating_kg",)
+        return {k: getattr(self, k) for k in keys}
+
+    def _rod_split(self):
+        """(mj, mш.к): mj = mп + f·mш, mш.к = (1 − f)·mш [1]_, per area × Fп. [kg]"""
+        way = self.mass_way
+        if way == "direct":
+            return self.reciprocating_kg, self.rod_rotating_kg
+        f = self.rod_small_end_fraction
+        if way == "parts":
+            mp, mr, scale = self.piston_group_kg, self.rod_kg, 1.0
+        else:
+            mp, mr, scale = self.piston_group_kg_m2, self.rod_kg_m2, self.area
+        return (mp + f * mr) * scale, (1.0 - f) * mr * scale
+
+    @property
+    def mj(self) -> float:
+        """Reciprocating mass mj = mп + mш.п. [kg]"""
+        return self._rod_split()[0]
+
+    @property
+    def m_rod_rot(self) -> float:
+        """Rotating part of the rod mass mш.к = mш − mш.п. [kg]"""
+        return self._rod_split()[1]
+
+    @property
+    def m_crank_rot(self) -> float | None:
+        """Unbalanced rotating mass of the crank throw mк (None if not given). [kg]"""
+        return self.crank_rotating_kg
+
+    @property
+    def Kr(self) -> float:
+        """Centrifugal force of the rod's rotating part Kr.ш = −mш.к·R·ω² [1]_. [N]"""
+        return -self.m_rod_rot * self.R * self.omega ** 2
+
+    # ---- the indicator diagram
+    @property
+    def cycle(self) -> CycleSpec | None:
+        """The thermal-calculation data of a computed diagram (None for a table)."""
+        return self.pressure if isinstance(self.pressure, CycleSpec) else None
+
+    @property
+    def pressure_source(self) -> str:
+        """"cycle", "file" or "inline"."""
+        if self.cycle is not None:
+            return "cycle"
+        return "file" if self.pressure.file is not None else "inline"
+
+    @property
+    def pressure_file(self) -> Path | None:
+        """The CSV file of a tabulated diagram (None otherwise)."""
+        return None if self.cycle is not None else self.pressure.file
+
+
+@dataclass(frozen=True)
+class TableSettings:
+    """Presentation settings of the force table and its report (not physics).
+
+    Attributes
+    ----------
+    step_deg : float
+        Table rows every ``step_deg`` over the cycle. [deg]
+    extra_angles_deg : tuple of float
+        Extra rows (sorted, without repeats). [deg]
+    force_scale : float or None
+        μP, the force scale of the drawing: the mm columns are force ÷ μP. [N/mm]
+    """
+
+    step_deg: float = 30.0
+    extra_angles_deg: tuple = ()
+    force_scale: float | None = None
+
+    def __post_init__(self):
+        problems = []
+        if not (_finite(self.step_deg) and self.step_deg > 0):
+            problems.append(Problem("step_deg", f"got {self.step_deg!r}; must be a finite "
+                                                "number > 0"))
+        for i, a in enumerate(self.extra_angles_deg):
+            if not (_finite(a) and a >= 0):
+                problems.append(Problem(f"extra_angles_deg[{i}]",
+                                        f"got {a!r}; must be a finite number >= 0"))
+        if self.force_scale is not None and not (_finite(self.force_scale)
+                                                 and self.force_scale > 0):
+            problems.append(Problem("force_scale", f"got {self.force_scale!r}; must be a "
+                                                   "finite number > 0"))
+        if problems:
+            raise EngineSpecError(problems)
+
+
+@dataclass(frozen=True)
+class EngineStudy:
+    """What an engine spec file holds: the physics and the report settings."""
+
+    spec: EngineSpec
+    settings: TableSettings
 
 
 # ----------------------------------------------------------------------------- loader
 
 _ENGINE_KEYS = ("name", "strokes", "cylinders", "bore_mm", "stroke_mm", "rod_ratio",
                 "rod_length_mm", "speed_rpm", "crankcase_MPa", "acceleration",
-                "compression_ratio")
+                "compression_ratio", "pin_offset_mm")
 _MASS_DIRECT = ("reciprocating_kg", "rod_rotating_kg")
 _MASS_PARTS = ("piston_group_kg", "rod_kg")
 _MASS_AREA = ("piston_group_kg_m2", "rod_kg_m2")
@@ -198,22 +366,15 @@ _CYCLE_KEYS = ("kind", "compression_ratio", "pa_MPa", "pr_MPa", "n1", "n2", "pz_
                "exhaust_closing_deg")
 _TABLE_KEYS = ("step_deg", "extra_angles_deg", "force_scale_N_per_mm")
 
-#: The rounded combustion curve meets the expansion polytrope this far after the peak. [deg]
-JOIN_AFTER_PEAK_DEG = 20.0
-
-#: Rounding defaults (Kolchin & Demidov, "Скругление индикаторной диаграммы").
-CYCLE_DEFAULTS = {
-    "otto": dict(advance_deg=30.0, pc_factor=1.2, peak_factor=0.85, peak_after_tdc_deg=12.0,
-                 exhaust_opening_deg=50.0, intake_opening_deg=20.0,
-                 exhaust_closing_deg=20.0),
-    "diesel": dict(advance_deg=20.0, pc_factor=1.2, peak_factor=0.85,
-                   peak_after_tdc_deg=12.0, exhaust_opening_deg=50.0,
-                   intake_opening_deg=20.0, exhaust_closing_deg=20.0),
-}
+#: Rounding defaults (Kolchin & Demidov, "Скругление индикаторной диаграммы"); the
+#: advance depends on the kind and is resolved by :attr:`CycleSpec.advance`.
+ROUNDING_DEFAULTS = dict(pc_factor=1.2, peak_factor=0.85, peak_after_tdc_deg=12.0,
+                         exhaust_opening_deg=50.0, intake_opening_deg=20.0,
+                         exhaust_closing_deg=20.0)
 
 
-def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
-    """Read and validate an engine spec; return an :class:`EngineSpec` (SI inside).
+def load(path_or_dict, base_dir=None) -> EngineStudy:
+    """Read and validate an engine spec file; return its physics and its report settings.
 
     Parameters
     ----------
@@ -225,7 +386,8 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
 
     Returns
     -------
-    EngineSpec
+    EngineStudy
+        ``spec`` (:class:`EngineSpec`) and ``settings`` (:class:`TableSettings`).
 
     Raises
     ------
@@ -234,11 +396,12 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
 
     Notes
     -----
-    ``[engine]``: ``name`` (str), ``strokes`` (4 or 2, default 4), ``cylinders`` (default 1,
-    informative), ``bore_mm`` > 0, ``stroke_mm`` > 0, exactly one of ``rod_ratio``
+    ``[engine]``: ``name`` (str), ``strokes`` (4 or 2, default 4), ``cylinders`` (default 1),
+    ``bore_mm`` > 0, ``stroke_mm`` > 0 (S = 2R), exactly one of ``rod_ratio``
     (0 < λ < 1) and ``rod_length_mm`` (> stroke/2), ``speed_rpm`` > 0, ``crankcase_MPa``
     (p0 ≥ 0, default 0.1), ``acceleration`` ("two-term", default, or "exact"),
-    ``compression_ratio`` (ε > 1, optional: sets Vc for the p–V plot).
+    ``compression_ratio`` (ε > 1, optional: sets Vc for the p–V plot), ``pin_offset_mm``
+    (désaxé e, default 0, + towards the direction of rotation at TDC, |e| < Lш − R).
 
     ``[masses]``, exactly one way: ``reciprocating_kg`` and ``rod_rotating_kg`` (mj,
     mш.к); or ``piston_group_kg`` and ``rod_kg``; or per unit piston area
@@ -279,6 +442,7 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
     accel = c.choice(e, "acceleration", ("two-term", "exact"), "engine", required=False,
                      default="two-term")
     eps_engine = c.number(e, "compression_ratio", "engine", required=False, gt=1)
+    offset = c.number(e, "pin_offset_mm", "engine", required=False, default=0.0)
     has_ratio, has_len = "rod_ratio" in e, "rod_length_mm" in e
     lam = L_mm = None
     if has_ratio and has_len:
@@ -294,11 +458,16 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
             c.add("engine.rod_length_mm",
                   f"got {L_mm:g}; must be > the crank radius stroke_mm/2 = {stroke / 2:g}")
             L_mm = None
+    if offset and stroke is not None and (lam is not None or L_mm is not None):
+        span = (L_mm if L_mm is not None else stroke / 2 / lam) - stroke / 2
+        if not abs(offset) < span:
+            c.add("engine.pin_offset_mm", f"got {offset:g}; |e| must be < Lш − R = "
+                                          f"{span:.6g} mm for the crank to turn fully")
 
     # ---- [masses]
     m = c.table(data, "masses")
     c.unknown(m, _MASS_KEYS, "masses")
-    mj = m_rot = None
+    masses = {}
     groups = [g for g in (_MASS_DIRECT, _MASS_PARTS, _MASS_AREA) if any(k in m for k in g)]
     if "masses" in data and isinstance(m, dict):
         if not groups:
@@ -310,22 +479,15 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
                   + " / ".join(" + ".join(g) for g in groups) + " were all given")
     frac = c.number(m, "rod_small_end_fraction", "masses", required=False,
                     default=ROD_SMALL_END_FRACTION, ge=0, le=1)
-    m_crank = c.number(m, "crank_rotating_kg", "masses", required=False, ge=0)
-    area = math.pi * (bore / 1000.0) ** 2 / 4.0 if bore else None
+    masses["crank_rotating_kg"] = c.number(m, "crank_rotating_kg", "masses",
+                                           required=False, ge=0)
     if len(groups) == 1:
         g = groups[0]
-        a = c.number(m, g[0], "masses", ge=0)
-        b = c.number(m, g[1], "masses", ge=0)
-        if g is _MASS_DIRECT:
-            if "rod_small_end_fraction" in m:
-                c.add("masses.rod_small_end_fraction",
-                      "only used with piston_group_kg/rod_kg or the per-area masses")
-            mj, m_rot = a, b
-        elif a is not None and b is not None and frac is not None:
-            scale = 1.0 if g is _MASS_PARTS else area
-            if scale is not None:
-                mj = (a + frac * b) * scale
-                m_rot = (1.0 - frac) * b * scale
+        for k in g:
+            masses[k] = c.number(m, k, "masses", ge=0)
+        if g is _MASS_DIRECT and "rod_small_end_fraction" in m:
+            c.add("masses.rod_small_end_fraction",
+                  "only used with piston_group_kg/rod_kg or the per-area masses")
 
     # ---- [pressure]
     pr = c.table(data, "pressure")
@@ -338,7 +500,7 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
     if "cycle" in pr:
         sources.append("cycle")
     cycle_deg = 720.0 if strokes == 4 else 360.0
-    angle = p = cycle = pfile = None
+    pressure = None
     if "pressure" in data and isinstance(pr, dict):
         if not sources:
             c.add("pressure", "no pressure source; give angle_deg with p_MPa (inline), "
@@ -348,6 +510,8 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
                   + " and ".join(sources))
     if sources == ["inline"]:
         angle, p = _inline_pressure(c, pr, cycle_deg)
+        if angle is not None:
+            pressure = PressureTable(tuple(angle.tolist()), tuple(p.tolist()))
     elif sources == ["file"]:
         fname = c.string(pr, "file", "pressure")
         if fname is not None:
@@ -355,17 +519,15 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
             if not pfile.is_file():
                 c.add("pressure.file", f"file {str(pfile)!r} does not exist")
             else:
-                angle, p = read_pressure_csv(pfile, cycle_deg, c)
+                pressure = read_pressure_csv(pfile, cycle_deg, c)
     elif sources == ["cycle"]:
-        cycle = _cycle(c, c.table(pr, "cycle", "pressure"), strokes)
+        pressure = _cycle(c, c.table(pr, "cycle", "pressure"), strokes)
 
-    eps = eps_engine
-    if cycle is not None:
-        if eps_engine is not None and eps_engine != cycle.compression_ratio:
-            c.add("engine.compression_ratio",
-                  f"got {eps_engine:g} but pressure.cycle.compression_ratio is "
-                  f"{cycle.compression_ratio:g}; give it once")
-        eps = cycle.compression_ratio
+    if isinstance(pressure, CycleSpec) and eps_engine is not None \
+            and eps_engine != pressure.compression_ratio:
+        c.add("engine.compression_ratio",
+              f"got {eps_engine:g} but pressure.cycle.compression_ratio is "
+              f"{pressure.compression_ratio:g}; give it once")
 
     # ---- [table]
     t = c.table(data, "table")
@@ -379,27 +541,31 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
     mu = c.number(t, "force_scale_N_per_mm", "table", gt=0,
                   what="the force scale μP [N/mm]")
 
-    if cycle is not None and cycle.rounding and not c.problems:
-        _check_rounded_peak(c, cycle, lam if lam is not None else stroke / 2.0 / L_mm)
+    if isinstance(pressure, CycleSpec) and pressure.rounding and not c.problems:
+        _check_rounded_peak(c, pressure, lam if lam is not None else stroke / 2.0 / L_mm,
+                            offset / (stroke / 2.0))
     if c.problems:
         raise EngineSpecError(c.problems)
 
-    R = stroke / 2000.0
-    if lam is not None:
-        L = R / lam
-    else:
-        L = L_mm / 1000.0
-        lam = R / L
-    return EngineSpec(
-        name=name.strip(), strokes=int(strokes), bore=bore / 1000.0, stroke=stroke / 1000.0,
-        R=R, L=L, lam=lam, speed_rpm=speed, omega=math.pi * speed / 30.0, p0=p0 * 1e6,
-        acceleration=accel, mj=float(mj), m_rod_rot=float(m_rot), m_crank_rot=m_crank,
-        mass_source={k: m[k] for k in m}, pressure_source=sources[0],
-        pressure_file=pfile.resolve() if pfile is not None else None,
-        angle_deg=angle, p=p, cycle=cycle, step_deg=step,
-        extra_angles_deg=tuple(sorted(set(extra or []))), force_scale=mu,
-        compression_ratio=eps, cylinders=int(cylinders), source_path=source_path,
-        raw=data)
+    spec = EngineSpec(
+        name=name.strip(), strokes=int(strokes), cylinders=int(cylinders),
+        bore=bore / 1000.0, stroke=stroke / 1000.0, rod_ratio=lam,
+        rod_length=None if L_mm is None else L_mm / 1000.0, speed_rpm=speed, p0=p0 * 1e6,
+        acceleration=accel, compression_ratio=eps_engine, pin_offset=offset / 1000.0,
+        pressure=pressure, source_path=source_path,
+        rod_small_end_fraction=frac, **masses)
+    settings = TableSettings(step_deg=step, extra_angles_deg=tuple(sorted(set(extra or []))),
+                             force_scale=mu)
+    return EngineStudy(spec, settings)
+
+
+def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
+    """Read and validate an engine spec; return its :class:`EngineSpec` (the physics).
+
+    The whole file is validated (see :func:`load`, which also returns the report
+    settings).
+    """
+    return load(path_or_dict, base_dir).spec
 
 
 def _check_pressure_points(c, angle, p, cycle_deg, where):
@@ -476,8 +642,8 @@ def read_pressure_csv(path, cycle_deg, checker=None):
 
     Returns
     -------
-    angle_deg, p : ndarray
-        Crank angle [deg] and absolute pressure [Pa] (None, None on a problem).
+    PressureTable or None
+        Crank angle [deg] and absolute pressure [Pa], with the file (None on a problem).
     """
     c = checker if checker is not None else Checker()
     path = Path(path)
@@ -524,19 +690,19 @@ def read_pressure_csv(path, cycle_deg, checker=None):
                             return f"pressure.file {name}"
                         return f"pressure.file {name} line {lines[i]}"
                     angle, p = _check_pressure_points(c, a_list, p_list, cycle_deg, where)
-    if checker is None:
-        c.raise_if_any()
-    return angle, p
+    if checker is None and c.problems:
+        raise EngineSpecError(c.problems)
+    if angle is None:
+        return None
+    return PressureTable(tuple(angle.tolist()), tuple(p.tolist()), path.resolve())
 
 
-def _check_rounded_peak(c, cyc, lam):
+def _check_rounded_peak(c, cyc, lam, k):
     """The real (rounded) diagram lies inside the theoretical one: its peak
     peak_factor·pz must not rise above the expansion line at the peak angle, and must be
     the maximum (the line where the rounding rejoins it must be lower)."""
-    from .indicator import sharp_cycle_pressure
-
     a = 360.0 + cyc.peak_after_tdc_deg
-    line = float(sharp_cycle_pressure([a], cyc, lam)[0])
+    line = float(sharp_cycle_pressure([a], cyc, lam, k=k)[0])
     peak = cyc.peak_factor * cyc.pz
     if peak > line:
         c.add("pressure.cycle.peak_factor",
@@ -545,7 +711,7 @@ def _check_rounded_peak(c, cyc, lam):
               f"peak_after_tdc_deg")
         return
     join = a + JOIN_AFTER_PEAK_DEG
-    after = float(sharp_cycle_pressure([join], cyc, lam)[0])
+    after = float(sharp_cycle_pressure([join], cyc, lam, k=k)[0])
     if after >= peak:
         c.add("pressure.cycle.peak_factor",
               f"the expansion line at {join:g}° ({after / 1e6:.4g} MPa), where the rounded "
@@ -582,22 +748,23 @@ def _cycle(c, cy, strokes):
             c.add(f"{path}.rho", "only used with kind = \"diesel\"")
         rho = 1.0
     rounding = c.choice(cy, "rounding", (True, False), path, required=False, default=True)
-    d = CYCLE_DEFAULTS.get(kind or "otto")
+    d = ROUNDING_DEFAULTS
     opts = {k: c.number(cy, k, path, required=False, default=v, gt=0, lt=90)
             for k, v in d.items() if k not in ("pc_factor", "peak_factor")}
     opts["pc_factor"] = c.number(cy, "pc_factor", path, required=False,
                                  default=d["pc_factor"], ge=1, le=2)
     opts["peak_factor"] = c.number(cy, "peak_factor", path, required=False,
                                    default=d["peak_factor"], gt=0, le=1)
+    opts["advance_deg"] = c.number(cy, "advance_deg", path, required=False, gt=0, lt=90)
     if None in (kind, eps, pa, pr, n1, n2, rho) or (pz is None and lz is None) \
-            or None in opts.values():
+            or None in (v for k, v in opts.items() if k != "advance_deg"):
         return None
-    pc = pa * eps ** n1
-    if pz is None:
-        pz = lz * pc
-    elif pz < pc:
+    cyc = CycleSpec(kind=kind, compression_ratio=eps, pa=pa * 1e6, pr=pr * 1e6, n1=n1,
+                    n2=n2, pz_input=None if pz is None else pz * 1e6, lambda_z_input=lz,
+                    rho=rho, rounding=rounding, **opts)
+    if pz is not None and cyc.pz < cyc.pc:
         c.add(f"{path}.pz_MPa", f"got {pz:g}; must be >= the compression pressure "
-                                f"pc = pa·ε^n1 = {pc:.4g} MPa")
+                                f"pc = pa·ε^n1 = {cyc.pc / 1e6:.4g} MPa")
         return None
     if kind == "diesel" and rho >= eps:
         c.add(f"{path}.rho", f"got {rho:g}; must be < compression_ratio {eps:g}")
@@ -607,9 +774,8 @@ def _cycle(c, cy, strokes):
         c.add(f"{path}.exhaust_opening_deg", "the combustion rounding (peak_after_tdc_deg "
               f"+ {JOIN_AFTER_PEAK_DEG:g}°) and the exhaust rounding overlap; reduce them")
         return None
-    if opts["peak_factor"] * pz < opts["pc_factor"] * pc and rounding:
+    if rounding and opts["peak_factor"] * cyc.pz < opts["pc_factor"] * cyc.pc:
         c.add(f"{path}.peak_factor", "the rounded peak peak_factor·pz must not be below "
                                      "pc_factor·pc")
         return None
-    return CycleSpec(kind=kind, compression_ratio=eps, pa=pa * 1e6, pr=pr * 1e6, n1=n1,
-                     n2=n2, pz=pz * 1e6, rho=rho, rounding=rounding, **opts)
+    return cyc

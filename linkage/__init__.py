@@ -10,7 +10,7 @@ The group routines (driver, RRR and RRP dyads, their kinetostatics) are in
 imports matplotlib or openpyxl (reports and plots import them when called).
 """
 from .analysis import AnalysisResult, SingularPositionWarning, analyze, full_turn
-from .errors import AssemblyError, CrankdynError, Problem, SpecError
+from crankbase.errors import AssemblyError, CrankdynError, Problem, SpecError
 from .mechanisms import CrankRocker, CrankSlider
 from .spec import MechanismSpec, load_spec
 

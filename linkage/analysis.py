@@ -18,24 +18,34 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
+from crankbase.errors import SpecError
+from crankbase.tolerances import SAME_ANGLE_RAD
+
 from . import groups as g
-from .errors import SpecError
-from .mechanisms import CrankRocker, CrankSlider
 from .columns import derived_kinematics_columns, force_columns, kinematics_columns, point_names
 from .derived import fill_derived
-from .kernel import Kernel, fill_blocks
+from .fourbar import GrashofType, SliderCrankType
+from .loads import external_loads, stroke_cycle
+from .mechanisms import CrankRocker, CrankSlider
 from .spec import MechanismSpec, load_spec
 
-__all__ = ["build_mechanism", "analyze", "AnalysisResult", "solve_columns",
-           "kinematics_columns", "force_columns", "plan_angles", "SingularPositionWarning"]
+if TYPE_CHECKING:  # pandas is imported when a table is built
+    import pandas as pd
+
+__all__ = ["build_mechanism", "analyze", "full_turn", "AnalysisResult", "AnalysisSummary",
+           "solve_columns", "kinematics_columns", "force_columns", "plan_angles",
+           "SingularPositionWarning", "CHUNK"]
+
+_DEG = 180.0 / math.pi
 
 #: Crank positions per chunk.  Each numpy call costs ~0.4 µs however short its arrays,
-#: and the kernel makes ~300 per chunk; past ~16k positions the ~110 arrays of a chunk
-#: (128 KB each) no longer stay in cache.  Measured (benchmarks/bench_linkage.py):
-#: 4096 → 7.9, 16384 → 9.3, 32768 → 9.2 M positions/s; whole arrays are memory-bound.
+#: and the group routines make a few hundred per chunk; past ~16k positions the
+#: intermediate arrays of a chunk (128 KB each) no longer stay in cache, and whole arrays
+#: of a million positions are memory-bound (benchmarks/bench_linkage.py).
 CHUNK = 16384
 
 
@@ -53,140 +63,114 @@ def build_mechanism(spec: MechanismSpec):
                        spec.assembly)
 
 
-def _stroke_state(mech, spec, kin, ext):
-    """Per position: +1 in the working stroke, −1 in the idle stroke, 0 at rest; and the
-    swing (rad) or travel (m) from the start of the current stroke."""
-    rate = mech._output_rate(kin)
-    coord = mech.output_coordinate(kin)
-    if spec.working_stroke is None or ext is None:
-        return None, None, rate
-    wsign = mech._working_sign(spec.working_stroke)
-    scale = abs(spec.omega) * (1.0 if spec.kind == "crank-rocker" else spec.crank)
-    moving = np.abs(rate) > 1e-9 * scale
-    state = np.where(moving, np.sign(rate * wsign), 0.0)
-    # output coordinate at the two extreme positions (start of the working and idle strokes)
-    # positions only (ω may be an array over positions: dynamics under the true motion)
-    ek = mech.kinematics(np.array([ext.phi_start, ext.phi_end]), 1.0, 0.0)
-    c_start = mech.output_coordinate(ek)
-    start = np.where(state >= 0, c_start[0], c_start[1])
-    if spec.kind == "crank-rocker":
-        travel = np.abs(np.angle(np.exp(1j * (coord - start))))
-    else:
-        travel = np.abs(coord - start)
-    return state, travel, rate
+class _Tables:
+    """Everything a table needs that does not depend on the crank angle: the spec, the
+    mechanism, the cycle of the resistance rule, the column names, a scratch row."""
 
+    def __init__(self, spec, mech, ext, course_tables, size):
+        self.spec, self.mech, self.course_tables = spec, mech, course_tables
+        self.cycle = stroke_cycle(mech, spec, ext)
+        self.kcols = [c for c in kinematics_columns(spec, course_tables) if c != "position"]
+        self.fcols = [c for c in force_columns(spec, course_tables) if c != "position"]
+        self.points = [(p, lname, local, tuple(f"{p}_{q}" for q in _POINT_COLUMNS))
+                       for p, (lname, local) in point_names(spec).items()]
+        self.scratch = np.empty(size)
 
-def _external_loads(mech, spec, kin, ext):
-    """External forces and moments per link (global forces at global points)."""
-    forces = {n: [] for n in spec.link_names}
-    moments = {n: [] for n in spec.link_names}
-    res_value = np.zeros(kin["A"].z.shape)
-    state = travel = rate = None
-    for ld in spec.loads:
-        link = kin["links"][ld.link]
-        if ld.kind == "force":
-            forces[ld.link].append((ld.force, link.point(ld.at).z))
-        elif ld.kind == "moment":
-            moments[ld.link].append(ld.moment)
+    def solve(self, phi, K, F):
+        """Kinematics and forces at the crank angles ``phi`` [rad] into the column rows
+        ``K`` and ``F`` (dicts column → array of ``len(phi)``): driver → dyad, loads, then
+        dyad → driver (:mod:`linkage.groups`)."""
+        spec, mech = self.spec, self.mech
+        kin = mech.kinematics(phi, spec.omega, spec.epsilon)
+        d = kin["dyad"]
+        np.multiply(phi, _DEG, out=K["phi_deg"])
+        np.multiply(d.link3.theta, _DEG, out=K["theta3_deg"])
+        K["omega3_rad_s"][:] = d.link3.omega
+        K["eps3_rad_s2"][:] = d.link3.eps
+        if mech.kind == "crank-rocker":
+            np.multiply(d.link4.theta, _DEG, out=K["theta4_deg"])
+            K["omega4_rad_s"][:] = d.link4.omega
+            K["eps4_rad_s2"][:] = d.link4.eps
         else:
-            if state is None:
-                state, travel, rate = _stroke_state(mech, spec, kin, ext)
-            if state is None:  # stroke "both", no working stroke given
-                scale = abs(spec.omega) * (1.0 if spec.kind == "crank-rocker" else spec.crank)
-                state_b = np.where(np.abs(rate) > 1e-9 * scale, 1.0, 0.0)
-                active = state_b != 0
-            else:
-                want = {"working": state > 0, "idle": state < 0, "both": state != 0}
-                active = want[ld.stroke].copy()
-                if ld.span is not None:
-                    active &= travel <= ld.span * (1 + 1e-12)
-            value = np.where(active, -np.sign(rate) * ld.resistance, 0.0)
-            res_value = res_value + value
-            if spec.kind == "crank-rocker":
-                moments[ld.link].append(value)
-            else:
-                forces[ld.link].append((value * mech.u, kin["dyad"].B.z))
-    return forces, moments, res_value
+            K["s4_m"][:] = d.s
+            K["v4_m_s"][:] = d.v
+            K["a4_m_s2"][:] = d.a
+        links = kin["links"]
+        for pname, lname, local, cols in self.points:
+            P = d.B if pname == "B" else links[lname].point(local)
+            for col, value in zip(cols, (P.z.x, P.z.y, P.v.x, P.v.y, P.a.x, P.a.y)):
+                K[col][:] = value
+        np.multiply(mech.transmission_angle(kin), _DEG, out=K["mu_deg"])
+
+        forces, moments, res = external_loads(spec, mech, kin, self.cycle)
+        W = {}
+        for lname in spec.link_names:
+            ls = spec.links[lname]
+            W[lname] = g.link_wrench(links[lname], ls.mass, ls.inertia, ls.cg, spec.gravity,
+                                     forces[lname], moments[lname])
+        r, drv = mech.reactions(kin, W)
+        F["phi_deg"][:] = K["phi_deg"]
+        for name, v in (("R12", drv.R12), ("R23", r.RA), ("R43", r.RB)):
+            F[f"{name}_x_N"][:] = v.x
+            F[f"{name}_y_N"][:] = v.y
+        F["M_drive_Nm"][:] = drv.M_drive
+        F["R23_n_N"][:] = r.RA_n
+        F["R23_t_N"][:] = r.RA_t
+        if mech.kind == "crank-rocker":
+            F["R14_x_N"][:] = r.RC.x
+            F["R14_y_N"][:] = r.RC.y
+            F["R14_n_N"][:] = r.RC_n
+            F["R14_t_N"][:] = r.RC_t
+            F["M_res_Nm"][:] = res
+        else:
+            F["R14_x_N"][:] = r.RG.x
+            F["R14_y_N"][:] = r.RG.y
+            F["N14_N"][:] = r.RG_n
+            F["M14_Nm"][:] = r.MG
+            F["F_res_N"][:] = res
+        if self.course_tables:
+            fill_derived(spec, K, F, self.scratch[:len(phi)])
+
+    def fill(self, phi, kblock, fblock):
+        """Solve at ``phi`` [rad] chunk by chunk (:data:`CHUNK`) into the rows of
+        ``kblock`` (kinematics columns × positions) and ``fblock`` (force columns ×
+        positions)."""
+        n = len(phi)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            for a in range(0, n, CHUNK):
+                b = min(n, a + CHUNK)
+                self.solve(phi[a:b], dict(zip(self.kcols, kblock[:, a:b])),
+                           dict(zip(self.fcols, fblock[:, a:b])))
 
 
-def solve_columns(spec: MechanismSpec, phi, mech=None, ext=None, out_kin=None,
-                  out_force=None, rows=slice(None)):
-    """Kinematics and forces at crank angles ``phi`` [rad], written into column dicts.
+def solve_columns(spec, phi, mech=None, ext=None, *, course_tables=True):
+    """Kinematics and forces at crank angles ``phi`` [rad] as column arrays.
 
-    ``out_kin``/``out_force`` map column name → preallocated array; values go to
-    ``[rows]``.  Returns the two dicts (allocated here when not given).
+    Parameters
+    ----------
+    spec : MechanismSpec
+    phi : array_like
+        Absolute crank angles, ccw from +x. [rad]
+    mech : CrankRocker or CrankSlider, optional
+        Built from the spec when not given.
+    ext : Extremes, optional
+        The extreme positions, needed by a resistance limited to a stroke.
+    course_tables : bool, default True
+        Also the course tables' columns (:mod:`linkage.derived`).
 
-    This is the readable reference: the mechanism assembled from the group routines of
-    :mod:`linkage.groups` (driver → dyad, then dyad → driver for the forces).
-    :func:`analyze` evaluates the same equations with the fused kernel :class:`linkage.kernel.Kernel`
-    (about 3× faster); the two agree to a few ulps.
+    Returns
+    -------
+    kinematics, forces : dict of str → ndarray
+        The columns of :func:`kinematics_columns` and :func:`force_columns` (without
+        ``position``).
     """
+    spec = load_spec(spec)
     mech = mech or build_mechanism(spec)
-    n = len(phi)
-    if out_kin is None:
-        out_kin = {c: np.empty(n) for c in kinematics_columns(spec) if c != "position"}
-    if out_force is None:
-        out_force = {c: np.empty(n) for c in force_columns(spec) if c != "position"}
-    kin = mech.kinematics(phi, spec.omega, spec.epsilon)
-    d = kin["dyad"]
-    K = out_kin
-    deg = 180.0 / math.pi
-    K["phi_deg"][rows] = phi * deg
-    K["theta3_deg"][rows] = np.angle(d.link3.e) * deg
-    K["omega3_rad_s"][rows] = d.link3.omega
-    K["eps3_rad_s2"][rows] = d.link3.eps
-    if spec.kind == "crank-rocker":
-        K["theta4_deg"][rows] = np.angle(d.link4.e) * deg
-        K["omega4_rad_s"][rows] = d.link4.omega
-        K["eps4_rad_s2"][rows] = d.link4.eps
-    else:
-        K["s4_m"][rows] = d.s
-        K["v4_m_s"][rows] = d.v
-        K["a4_m_s2"][rows] = d.a
-    for pname, (lname, local) in point_names(spec).items():
-        P = d.B if pname == "B" else kin["links"][lname].point(local)
-        K[f"{pname}_x_m"][rows] = P.z.real
-        K[f"{pname}_y_m"][rows] = P.z.imag
-        K[f"{pname}_vx_m_s"][rows] = P.v.real
-        K[f"{pname}_vy_m_s"][rows] = P.v.imag
-        K[f"{pname}_ax_m_s2"][rows] = P.a.real
-        K[f"{pname}_ay_m_s2"][rows] = P.a.imag
-    K["mu_deg"][rows] = mech.transmission_angle(kin) * deg
-
-    forces, moments, res = _external_loads(mech, spec, kin, ext)
-    W = {}
-    for lname in spec.link_names:
-        ls = spec.links[lname]
-        W[lname] = g.link_wrench(kin["links"][lname], ls.mass, ls.inertia, ls.cg,
-                                 spec.gravity, forces[lname], moments[lname])
-    r, drv = mech.reactions(kin, W)
-    F = out_force
-    F["phi_deg"][rows] = phi * deg
-    F["R12_x_N"][rows] = drv.R12.real
-    F["R12_y_N"][rows] = drv.R12.imag
-    F["R23_x_N"][rows] = r.RA.real
-    F["R23_y_N"][rows] = r.RA.imag
-    F["R43_x_N"][rows] = r.RB.real
-    F["R43_y_N"][rows] = r.RB.imag
-    F["M_drive_Nm"][rows] = drv.M_drive
-    F["R23_n_N"][rows] = r.RA_n
-    F["R23_t_N"][rows] = r.RA_t
-    if spec.kind == "crank-rocker":
-        F["R14_x_N"][rows] = r.RC.real
-        F["R14_y_N"][rows] = r.RC.imag
-        F["R14_n_N"][rows] = r.RC_n
-        F["R14_t_N"][rows] = r.RC_t
-        F["M_res_Nm"][rows] = res
-    else:
-        F["R14_x_N"][rows] = r.RG.real
-        F["R14_y_N"][rows] = r.RG.imag
-        F["N14_N"][rows] = r.RG_n
-        F["M14_Nm"][rows] = r.MG
-        F["F_res_N"][rows] = res
-    if "R12_N" in F:  # the course tables' columns were asked for
-        fill_derived(spec, {c: a[rows] for c, a in K.items()},
-                     {c: a[rows] for c, a in F.items()})
-    return out_kin, out_force
+    phi = np.asarray(phi, dtype=float)
+    t = _Tables(spec, mech, ext, course_tables, min(len(phi), CHUNK))
+    kblock, fblock = np.empty((len(t.kcols), len(phi))), np.empty((len(t.fcols), len(phi)))
+    t.fill(phi, kblock, fblock)
+    return dict(zip(t.kcols, kblock)), dict(zip(t.fcols, fblock))
 
 
 def plan_angles(ext, rotation_sign, n):
@@ -194,6 +178,65 @@ def plan_angles(ext, rotation_sign, n):
     the working stroke, position k (k−1)·360°/n further in the direction of rotation."""
     k = np.arange(n)
     return np.mod(ext.phi_start + rotation_sign * k * (2 * math.pi / n), 2 * math.pi)
+
+
+_POINT_COLUMNS = ("x_m", "y_m", "vx_m_s", "vy_m_s", "ax_m_s2", "ay_m_s2")
+
+
+@dataclass
+class AnalysisSummary:
+    """Geometry of the cycle of an analysed mechanism.
+
+    Attributes
+    ----------
+    kind, name : str
+        ``"crank-rocker"`` or ``"crank-slider"``; the spec's name.
+    grashof : GrashofType or SliderCrankType
+        Grashof type (compares equal to its text, e.g. ``"crank-rocker"``,
+        ``"change-point"``; a crank-slider: ``"rotatable"``).
+    rotation : str
+        ``"ccw"``, ``"cw"`` or ``"none (statics)"``.
+    mu_min_deg, mu_min_phi_deg : float
+        Minimum transmission angle over a full turn (closed form, :mod:`linkage.fourbar`)
+        and the absolute crank angle where it occurs, in [0°, 360°). [deg]
+    singular_phi_deg : list of float
+        Singular crank angles of a change-point mechanism (empty otherwise). [deg]
+    phi_working_start_deg, phi_working_end_deg : float or None
+        Crank angles of the extreme positions where the working stroke starts and ends;
+        None (like every field below) in statics or for an output that turns fully. [deg]
+    working_crank_angle_deg, idle_crank_angle_deg : float or None
+        Crank rotation in the working and in the idle stroke. [deg]
+    time_ratio : float or None
+        Time-ratio coefficient K = φwork/φidle. [-]
+    theta4_working_start_deg, theta4_working_end_deg, swing_deg : float or None
+        Crank-rocker: rocker angle at the two extremes, and the swing. [deg]
+    s4_working_start_m, s4_working_end_m, stroke_m : float or None
+        Crank-slider: slider position at the two extremes, and the stroke. [m]
+    """
+
+    kind: str
+    name: str
+    grashof: GrashofType | SliderCrankType
+    rotation: str
+    mu_min_deg: float
+    mu_min_phi_deg: float
+    singular_phi_deg: list = field(default_factory=list)
+    phi_working_start_deg: float | None = None
+    phi_working_end_deg: float | None = None
+    working_crank_angle_deg: float | None = None
+    idle_crank_angle_deg: float | None = None
+    time_ratio: float | None = None
+    theta4_working_start_deg: float | None = None
+    theta4_working_end_deg: float | None = None
+    swing_deg: float | None = None
+    s4_working_start_m: float | None = None
+    s4_working_end_m: float | None = None
+    stroke_m: float | None = None
+
+    @property
+    def has_extremes(self) -> bool:
+        """True when the output link has extreme positions (a rocking output, ω ≠ 0)."""
+        return self.phi_working_start_deg is not None
 
 
 @dataclass
@@ -207,41 +250,39 @@ class AnalysisResult:
         One row per position (see the README for every column).
     extremes : pandas.DataFrame or None
         The two extreme positions of the output link (``label`` "working start" and
-        "working end"), kinematics and force columns.  None for a double crank.
-    summary : dict
-        Geometry of the cycle: Grashof type, swing or stroke, time-ratio coefficient,
-        extreme crank angles, the minimum transmission angle over a full turn and where.
+        "working end"), kinematics and force columns.  None in statics or for a double
+        crank.
+    summary : AnalysisSummary
+        Geometry of the cycle.
     warnings : list of str
         For example the singular positions of a change-point mechanism.
     """
 
     spec: MechanismSpec
-    kinematics: object
-    forces: object
-    extremes: object
-    summary: dict
-    warnings: list = field(default_factory=list)
+    kinematics: pd.DataFrame
+    forces: pd.DataFrame
+    extremes: pd.DataFrame | None
+    summary: AnalysisSummary
+    warnings: list[str] = field(default_factory=list)
 
 
 def _table(spec, phi, mech, ext, positions, course_tables=True):
-    """The kinematics and force DataFrames at crank angles ``phi`` [rad]: :class:`Kernel`
-    run chunk by chunk into two preallocated column blocks, which become the frames'
-    storage without a copy."""
+    """The kinematics and force DataFrames at crank angles ``phi`` [rad]: the group
+    routines run chunk by chunk into two preallocated column blocks, which become the
+    frames' storage without a copy."""
     import pandas as pd
 
     n = len(phi)
-    kcols = [c for c in kinematics_columns(spec, course_tables) if c != "position"]
-    fcols = [c for c in force_columns(spec, course_tables) if c != "position"]
-    kblock = np.empty((len(kcols), n))
-    fblock = np.empty((len(fcols), n))
-    fill_blocks(Kernel(spec, mech, ext, max(1, min(n, CHUNK)), course_tables), phi, kblock,
-                fblock)
+    t = _Tables(spec, mech, ext, course_tables, max(1, min(n, CHUNK)))
+    kblock = np.empty((len(t.kcols), n))
+    fblock = np.empty((len(t.fcols), n))
+    t.fill(phi, kblock, fblock)
     if positions is None:  # all missing (pd.array([None] * n) is slow for large n)
         pos = pd.arrays.IntegerArray(np.zeros(n, np.int64), np.ones(n, bool))
     else:
         pos = pd.array(positions, dtype="Int64")
-    kin = pd.DataFrame(kblock.T, columns=kcols, copy=False)
-    frc = pd.DataFrame(fblock.T, columns=fcols, copy=False)
+    kin = pd.DataFrame(kblock.T, columns=t.kcols, copy=False)
+    frc = pd.DataFrame(fblock.T, columns=t.fcols, copy=False)
     kin.insert(0, "position", pos)
     frc.insert(0, "position", pos.copy())
     return kin, frc
@@ -249,44 +290,26 @@ def _table(spec, phi, mech, ext, positions, course_tables=True):
 
 def _summary(spec, mech, ext):
     """Cycle geometry: Grashof type, extremes, swing/stroke, K, μmin over a full turn."""
-    s = {"kind": spec.kind, "name": spec.name,
-         "grashof": str(mech.grashof())}
+    mu_min, mu_at = mech.min_transmission_angle()
+    rotation = "ccw" if spec.omega > 0 else "cw" if spec.omega < 0 else "none (statics)"
+    s = AnalysisSummary(spec.kind, spec.name, mech.grashof(), rotation, mu_min, mu_at,
+                        [math.degrees(a) for a in mech.singular_angles()])
     if ext is not None:
         ek = mech.kinematics(np.array([ext.phi_start, ext.phi_end]), spec.omega, 0.0)
         c = mech.output_coordinate(ek)
-        s["phi_working_start_deg"] = math.degrees(ext.phi_start)
-        s["phi_working_end_deg"] = math.degrees(ext.phi_end)
-        s["working_crank_angle_deg"] = math.degrees(ext.working_crank_angle)
-        s["idle_crank_angle_deg"] = math.degrees(ext.idle_crank_angle)
-        s["time_ratio"] = ext.time_ratio
+        s.phi_working_start_deg = math.degrees(ext.phi_start)
+        s.phi_working_end_deg = math.degrees(ext.phi_end)
+        s.working_crank_angle_deg = math.degrees(ext.working_crank_angle)
+        s.idle_crank_angle_deg = math.degrees(ext.idle_crank_angle)
+        s.time_ratio = ext.time_ratio
         if spec.kind == "crank-rocker":
-            s["theta4_working_start_deg"] = math.degrees(c[0])
-            s["theta4_working_end_deg"] = math.degrees(c[1])
-            s["swing_deg"] = abs(math.degrees(np.angle(np.exp(1j * (c[1] - c[0])))))
+            s.theta4_working_start_deg = math.degrees(c[0])
+            s.theta4_working_end_deg = math.degrees(c[1])
+            s.swing_deg = abs(math.degrees(np.angle(np.exp(1j * (c[1] - c[0])))))
         else:
-            s["s4_working_start_m"] = float(c[0])
-            s["s4_working_end_m"] = float(c[1])
-            s["stroke_m"] = abs(float(c[1] - c[0]))
-    # minimum transmission angle over a full turn: grid, then refined by golden section
-    # on the closed-form μ(φ) (vectorised bracket refinement, no per-angle loop).
-    grid = np.linspace(0.0, 2 * math.pi, 3601)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        mu = mech.transmission_angle(mech.kinematics(grid, 1.0, 0.0))
-    i = int(np.nanargmin(mu))
-    lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
-    for _ in range(60):
-        pts = np.linspace(lo, hi, 5)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            m5 = mech.transmission_angle(mech.kinematics(pts, 1.0, 0.0))
-        j = int(np.nanargmin(m5))
-        lo, hi = pts[max(j - 1, 0)], pts[min(j + 1, 4)]
-    phi_min = 0.5 * (lo + hi)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        mu_min = float(mech.transmission_angle(mech.kinematics(np.array([phi_min]), 1.0, 0.0))[0])
-    s["mu_min_deg"] = math.degrees(mu_min)
-    phi_min_deg = math.degrees(phi_min) % 360.0
-    s["mu_min_phi_deg"] = 0.0 if phi_min_deg > 360.0 - 1e-6 else phi_min_deg
-    s["rotation"] = "ccw" if spec.omega > 0 else "cw" if spec.omega < 0 else "none (statics)"
+            s.s4_working_start_m = float(c[0])
+            s.s4_working_end_m = float(c[1])
+            s.stroke_m = abs(float(c[1] - c[0]))
     return s
 
 
@@ -366,7 +389,7 @@ def analyze(spec, crank_angles_deg=None, *, course_tables=True) -> AnalysisResul
         where = ", ".join(f"{math.degrees(a):.6g}°" for a in sing)
         msgs.append(f"change-point mechanism: singular position(s) at crank angle {where} "
                     "(links collinear; the output's motion is indeterminate there)")
-        hit = [a for a in sing if np.any(np.abs(np.angle(np.exp(1j * (phi - a)))) < 1e-9)]
+        hit = [a for a in sing if np.any(_angle_apart(phi, a) < SAME_ANGLE_RAD)]
         if hit:
             msgs.append("requested crank angles include a singular position; its "
                         "velocities, accelerations and forces are not finite")
@@ -374,7 +397,7 @@ def analyze(spec, crank_angles_deg=None, *, course_tables=True) -> AnalysisResul
             # perpendicular to the guide): report them as NaN, keep the positions
             near = np.zeros(len(phi), bool)
             for a in hit:
-                near |= np.abs(np.angle(np.exp(1j * (phi - a)))) < 1e-9
+                near |= _angle_apart(phi, a) < SAME_ANGLE_RAD
             rates = [c for c in ("omega3_rad_s", "eps3_rad_s2", "omega4_rad_s",
                                  "eps4_rad_s2", "v4_m_s", "a4_m_s2") if c in kin.columns]
             rates += [f"{p}_{q}" for p, (ln, _) in point_names(spec).items() if ln != "crank"
@@ -386,8 +409,12 @@ def analyze(spec, crank_angles_deg=None, *, course_tables=True) -> AnalysisResul
             frc.loc[near, fcols] = np.nan
         for m in msgs:
             warnings.warn(m, SingularPositionWarning, stacklevel=2)
-    summary["singular_phi_deg"] = [math.degrees(a) for a in sing]
     return AnalysisResult(spec, kin, frc, ext_df, summary, msgs)
+
+
+def _angle_apart(phi, a):
+    """|φ − a| wrapped to [0, π]. [rad]"""
+    return np.abs((phi - a + math.pi) % (2.0 * math.pi) - math.pi)
 
 
 def _join_extremes(ek, ef):
@@ -406,10 +433,10 @@ def full_turn(spec, step_deg=1.0):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", SingularPositionWarning)
         res = analyze(spec, crank_angles_deg=phi)
-    sing = res.summary.get("singular_phi_deg", [])
+    sing = res.summary.singular_phi_deg
     if sing:
         near = np.zeros(len(phi), bool)
-        for a in sing:
+        for a in sing:   # the grid rows within one step (1 % slack for the grid's rounding)
             near |= np.abs((phi - a + 180.0) % 360.0 - 180.0) <= step_deg * 1.01
         for df in (res.kinematics, res.forces):
             cols = [c for c in df.columns if c not in ("position", "phi_deg")]

@@ -1,13 +1,18 @@
 """Assur-group routines: the driver (crank), the RRR and the RRP dyad.
 
 Kinematics and kinetostatics of each basic group, closed form and vectorised over arrays
-of crank positions.  Planar vectors are complex numbers ``z = x + iy``; a link direction
-is the unit complex ``e = exp(iθ)``.  Everything is SI (m, s, rad, kg, N, N·m).
+of crank positions.  Everything is SI (m, s, rad, kg, N, N·m).  These are the only
+implementation of the groups: :func:`linkage.analyze` evaluates them over cache-sized
+chunks of crank positions, and :mod:`engine` builds its crank-slider from them.
 
-A point ``r`` (local coordinates, complex) fixed on a link whose reference point moves
-with ``z0, v0, a0`` and which turns with ``θ, ω, ε`` has
+Planar vectors are :class:`Vec`: two float arrays ``x, y`` with the arithmetic of the
+complex number ``z = x + iy`` (``v.perp()`` is ``i·v``, a product of two vectors is the
+complex product, i.e. a rotation).  The formulas read as in the textbooks' complex form,
+and run in real arithmetic, about twice as fast as numpy's complex arrays.  A link
+direction is the unit vector ``e = (cos θ, sin θ)``.  A point ``r`` (local coordinates)
+fixed on a link whose origin moves with ``z0, v0, a0`` and which turns with ``ω, ε`` has
 
-    z = z0 + r·e,   v = v0 + iω·r·e,   a = a0 + (iε − ω²)·r·e.
+    z = z0 + r·e,   v = v0 + iω·(r·e),   a = a0 + (iε − ω²)·(r·e).
 
 Mechanisms are assembled from these routines in the order of their structure formula
 ``I(1,2) → II(3,4)``: kinematics driver first, then the dyad; forces dyad first (it is
@@ -16,19 +21,19 @@ statically determinate on its own), then the driver, which yields the balancing
 
 References
 ----------
-.. [1] Artobolevsky, I. I. Теория механизмов и машин. Moscow: Nauka, 1988, ch. 4 (the
-   kinematics of class-II groups) and ch. 13 (kinetostatics by Assur groups).
-.. [2] 孙桓 等. 机械原理 (Theory of machines), ch. 11: kinetostatics by basic link groups,
-   one subroutine per group type (seed 001 of this project).
+.. [1] Артоболевский И. И. Теория механизмов и машин. 4-е изд. М.: Наука, 1988, гл. 4
+   (kinematics of the class-II groups) and гл. 13 (kinetostatics by Assur groups).
+.. [2] 孙桓, 陈作模, 葛文杰. 机械原理, 第 8 版. 北京: 高等教育出版社, 2013, 第 4 章:
+   kinetostatics by basic link groups, one subroutine per group type (seed 001).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
 __all__ = [
-    "PointMotion", "LinkMotion", "Wrench",
+    "Vec", "PointMotion", "LinkMotion", "Wrench",
     "cross", "dot",
     "crank", "rrr", "rrp", "RRRSolution", "RRPSolution",
     "inertia_load", "link_wrench", "rrr_reactions", "rrp_reactions", "driver_reactions",
@@ -36,23 +41,179 @@ __all__ = [
 ]
 
 
+def _nil(c):
+    """True for a component that is the float constant 0.0 (not an array of zeros)."""
+    return type(c) is float and c == 0.0
+
+
+def _is_zero(v):
+    """True for a vector that is the exact constant zero (``Vec(0.0, 0.0)`` of floats)."""
+    return _nil(v.x) and _nil(v.y)
+
+
+def _plus(a, b):
+    """a + b, skipping a float-constant zero."""
+    return a if _nil(b) else b if _nil(a) else a + b
+
+
+class Vec:
+    """Planar vectors: x and y components as float arrays (or floats).
+
+    The arithmetic of complex numbers ``x + iy`` in real arithmetic: ``+``, ``−``, a
+    product with a real number or array scales, a product with a complex number or
+    another :class:`Vec` is the complex product (a rotation and a scaling), ``/`` by a
+    real number or array divides both components.  :meth:`perp` is ``i·v`` (the vector
+    turned 90° counter-clockwise).  ``.real`` and ``.imag`` are ``x`` and ``y``, so
+    :func:`cross` and :func:`dot` take vectors and complex arrays alike; numpy sees a
+    ``Vec`` as the complex array ``x + iy`` (``np.angle(v)``, ``np.abs(v)``).
+
+    A vector whose components are the float constants 0.0 (the velocity of a fixed pivot)
+    is skipped in sums, so the routines pay nothing for a fixed pivot.
+    """
+
+    __slots__ = ("x", "y")
+
+    def __init__(self, x, y):
+        self.x = x
+        self.y = y
+
+    @staticmethod
+    def of(z) -> "Vec":
+        """``z`` as a :class:`Vec`: a Vec itself, a complex (or real) number or array."""
+        if type(z) is Vec:
+            return z
+        if isinstance(z, (int, float, complex)):
+            z = complex(z)
+            return Vec(z.real, z.imag)
+        z = np.asarray(z)
+        if z.dtype.kind == "c":
+            return Vec(np.ascontiguousarray(z.real), np.ascontiguousarray(z.imag))
+        return Vec(np.asarray(z, float), np.zeros(z.shape))
+
+    # -- complex-number view
+    @property
+    def real(self):
+        return self.x
+
+    @property
+    def imag(self):
+        return self.y
+
+    @property
+    def shape(self):
+        return np.broadcast_shapes(np.shape(self.x), np.shape(self.y))
+
+    def __array__(self, dtype=None, copy=None):
+        z = np.asarray(self.x) + 1j * np.asarray(self.y)
+        return z if dtype is None else z.astype(dtype)
+
+    def __array_ufunc__(self, ufunc, method, *inputs, **kwargs):
+        # numpy on the left of an operator: keep vector arithmetic; any other ufunc
+        # sees the complex array x + iy.
+        if method == "__call__" and not kwargs and len(inputs) == 2:
+            a, b = inputs
+            if ufunc is np.multiply:
+                return a * b if type(a) is Vec else b * a
+            if ufunc is np.add:
+                return a + b if type(a) is Vec else b + a
+            if ufunc is np.subtract:
+                return a - b if type(a) is Vec else (-b) + a
+        args = [np.asarray(v) if type(v) is Vec else v for v in inputs]
+        return getattr(ufunc, method)(*args, **kwargs)
+
+    def __getitem__(self, index):
+        return Vec(np.asarray(self.x)[index], np.asarray(self.y)[index])
+
+    def __len__(self):
+        return len(self.x) if np.ndim(self.x) else len(self.y)
+
+    def __repr__(self):
+        return f"Vec(x={self.x!r}, y={self.y!r})"
+
+    # -- arithmetic (a component that is the float constant 0.0 costs no array operation)
+    def __add__(self, o):
+        o = o if type(o) is Vec else Vec.of(o)
+        return Vec(_plus(self.x, o.x), _plus(self.y, o.y))
+
+    __radd__ = __add__
+
+    def __sub__(self, o):
+        o = o if type(o) is Vec else Vec.of(o)
+        if _is_zero(self):
+            return -o
+        return Vec(self.x if _nil(o.x) else self.x - o.x, self.y if _nil(o.y) else self.y - o.y)
+
+    def __rsub__(self, o):
+        return Vec.of(o) - self
+
+    def __neg__(self):
+        return Vec(-self.x, -self.y)
+
+    def __mul__(self, k):
+        if type(k) is not Vec:
+            if isinstance(k, complex) or (isinstance(k, np.ndarray) and k.dtype.kind == "c") \
+                    or isinstance(k, np.complexfloating):
+                k = Vec.of(k)
+            else:                                  # a real factor: scale
+                if type(k) is float and k == 0.0 or _is_zero(self):
+                    return _ZERO
+                return Vec(self.x * k, self.y * k)
+        # complex product (x1 + iy1)(x2 + iy2)
+        return Vec(self.x * k.x - self.y * k.y, self.x * k.y + self.y * k.x)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, k):
+        if type(k) is Vec or isinstance(k, complex) or np.iscomplexobj(k):
+            k = Vec.of(k)
+            n = k.x * k.x + k.y * k.y
+            return self * Vec(k.x / n, -k.y / n)
+        return Vec(self.x / k, self.y / k)
+
+    def __abs__(self):
+        return np.sqrt(self.x * self.x + self.y * self.y)
+
+    def perp(self) -> "Vec":
+        """``i·v``: the vector turned 90° counter-clockwise, ``(−y, x)``."""
+        return Vec(-self.y, self.x)
+
+    def conj(self) -> "Vec":
+        """The mirror image in the x axis, ``(x, −y)``."""
+        return Vec(self.x, -self.y)
+
+    @property
+    def angle(self):
+        """Direction, ccw from +x, in (−π, π]. [rad]"""
+        return np.arctan2(self.y, self.x)
+
+
+#: The constant zero vector (a fixed point's velocity and acceleration).
+_ZERO = Vec(0.0, 0.0)
+
+
 def cross(a, b):
-    """z-component of the planar cross product a × b of complex vectors: Im(conj(a)·b)."""
+    """z-component of the planar cross product a × b: ``a_x·b_y − a_y·b_x``
+    (``Im(conj(a)·b)`` of complex vectors)."""
     return a.real * b.imag - a.imag * b.real
 
 
 def dot(a, b):
-    """Planar dot product of complex vectors: Re(conj(a)·b)."""
+    """Planar dot product: ``a_x·b_x + a_y·b_y`` (``Re(conj(a)·b)``)."""
     return a.real * b.real + a.imag * b.imag
 
 
 @dataclass
 class PointMotion:
-    """Position, velocity and acceleration of a point, complex arrays. [m, m/s, m/s²]"""
+    """Position, velocity and acceleration of a point. [m, m/s, m/s²]
 
-    z: np.ndarray
-    v: np.ndarray
-    a: np.ndarray
+    Each is a :class:`Vec` (complex numbers or arrays are converted)."""
+
+    z: Vec
+    v: Vec
+    a: Vec
+
+    def __post_init__(self):
+        self.z, self.v, self.a = Vec.of(self.z), Vec.of(self.v), Vec.of(self.a)
 
 
 @dataclass
@@ -63,31 +224,46 @@ class LinkMotion:
     ----------
     origin : PointMotion
         The link's first joint (the origin of its local frame). [m, m/s, m/s²]
-    e : complex ndarray
-        Unit vector of the local x axis, ``exp(iθ)``. [-]
-    omega, eps : ndarray
+    e : Vec
+        Unit vector of the local x axis, ``(cos θ, sin θ)``. [-]
+    omega, eps : float or ndarray
         Angular velocity and acceleration, + counter-clockwise. [rad/s, rad/s²]
     """
 
     origin: PointMotion
-    e: np.ndarray
-    omega: np.ndarray
-    eps: np.ndarray
+    e: Vec
+    omega: object
+    eps: object
+    _points: dict = field(default_factory=dict, init=False, repr=False, compare=False)
+
+    def __post_init__(self):
+        self.e = Vec.of(self.e)
 
     @property
     def theta(self):
-        """Angle of the local x axis, ccw from +x. [rad]"""
-        return np.angle(self.e)
+        """Angle of the local x axis, ccw from +x, in (−π, π]. [rad]"""
+        return self.e.angle
 
     def point(self, local) -> PointMotion:
-        """Motion of the point with local coordinates ``local`` (complex, m)."""
-        r = local * self.e
+        """Motion of the point with local coordinates ``local`` (complex or real, m).
+
+        The result is kept: the tables and the link's wrench ask for the same centre of
+        mass."""
+        local = complex(local)
+        got = self._points.get(local)
+        if got is None:
+            got = self._points[local] = self._point(local)
+        return got
+
+    def _point(self, local: complex) -> PointMotion:
         o = self.origin
-        if np.all(local == 0):
-            return PointMotion(o.z + 0 * r, o.v + 0 * r, o.a + 0 * r)
-        iwr = 1j * r
-        return PointMotion(o.z + r, o.v + self.omega * iwr,
-                           o.a + self.eps * iwr - self.omega * self.omega * r)
+        if local == 0:
+            return o
+        r = self.e * local if local.imag else self.e * local.real     # r·e
+        ir = r.perp()                                                  # i·r·e
+        v = o.v + ir * self.omega
+        a = o.a + ir * self.eps + r * (-(self.omega * self.omega))    # (iε − ω²)·r·e
+        return PointMotion(o.z + r, v, a)
 
 
 @dataclass
@@ -96,27 +272,30 @@ class Wrench:
 
     Attributes
     ----------
-    force : complex ndarray
-        Resultant force. [N]
-    moment : ndarray
+    force : Vec
+        Resultant force (complex arrays are converted). [N]
+    moment : float or ndarray
         Resultant moment about ``point``, + counter-clockwise. [N·m]
-    point : complex ndarray
+    point : Vec
         Reduction point. [m]
     """
 
-    force: np.ndarray
-    moment: np.ndarray
-    point: np.ndarray
+    force: Vec
+    moment: object
+    point: Vec
+
+    def __post_init__(self):
+        self.force, self.point = Vec.of(self.force), Vec.of(self.point)
 
     def moment_about(self, q):
-        """Resultant moment about the point ``q``. [N·m]"""
+        """Resultant moment about the point ``q``: ``M + (P − q) × F``. [N·m]"""
         return self.moment + cross(self.point - q, self.force)
 
 
 # --------------------------------------------------------------------------- kinematics
 
 
-def crank(phi, omega, eps, length, pivot=0j) -> LinkMotion:
+def crank(phi, omega, eps, length=None, pivot=0j) -> LinkMotion:
     """Driver I(1,2): a crank turning about a fixed pivot.
 
     Parameters
@@ -125,23 +304,20 @@ def crank(phi, omega, eps, length, pivot=0j) -> LinkMotion:
         Crank angle, ccw from +x. [rad]
     omega, eps : float or array_like
         Crank angular velocity and acceleration, + ccw. [rad/s, rad/s²]
-    length : float
-        Crank length |OA| (kept for the caller; the frame needs only the angle). [m]
-    pivot : complex
+    length : float, optional
+        Crank length |OA|; not needed for the link's motion (the crank pin A is
+        ``link.point(length)``), accepted for readability of the caller. [m]
+    pivot : complex or Vec
         Position of the fixed pivot O. [m]
 
     Returns
     -------
     LinkMotion
-        Origin O (at rest), x axis towards the crank pin A. Point A is
-        ``link.point(length)``.
+        Origin O (at rest), x axis towards the crank pin A.
     """
     phi = np.asarray(phi, dtype=float)
-    e = np.exp(1j * phi)
-    zero = np.zeros_like(e)
-    o = PointMotion(pivot + zero, zero, zero)
-    return LinkMotion(o, e, np.broadcast_to(np.asarray(omega, float), phi.shape),
-                      np.broadcast_to(np.asarray(eps, float), phi.shape))
+    e = Vec(np.cos(phi), np.sin(phi))
+    return LinkMotion(PointMotion(Vec.of(pivot), _ZERO, _ZERO), e, omega, eps)
 
 
 @dataclass
@@ -162,8 +338,7 @@ class RRRSolution:
     det: np.ndarray
 
 
-def rrr(A: PointMotion, C: PointMotion, l3: float, l4: float, assembly: int,
-        omega_C=0.0, eps_C=0.0) -> RRRSolution:
+def rrr(A: PointMotion, C: PointMotion, l3: float, l4: float, assembly: int) -> RRRSolution:
     """Kinematics of the RRR dyad (class II, first kind): links 3 = AB and 4 = CB.
 
     Position by circle–circle intersection, velocity and acceleration by 2×2 linear
@@ -178,8 +353,6 @@ def rrr(A: PointMotion, C: PointMotion, l3: float, l4: float, assembly: int,
     assembly : {+1, -1}
         +1 puts B to the left of the directed line A→C, −1 to the right.  It is fixed
         for all positions, so the branch never switches.
-    omega_C, eps_C : float or array
-        Unused for the joint itself (C's motion is in ``C``); kept for symmetry. [rad/s]
 
     Returns
     -------
@@ -190,30 +363,31 @@ def rrr(A: PointMotion, C: PointMotion, l3: float, l4: float, assembly: int,
     With ``d = C − A``, ``D = |d|``, ``p = (l3² − l4² + D²)/(2D)``, ``h² = l3² − p²``:
     ``B = A + (p + i·assembly·h)·d/D``.  Velocity: ``iω3(B − A) − iω4(B − C) = vC − vA``
     gives ``ω3 = (B−C)·Δv / det``, ``ω4 = (B−A)·Δv / det`` with ``det = (B−A)×(B−C)``;
-    acceleration likewise with ``Δa = aC − aA + ω3²(B−A) − ω4²(B−C)``.
+    acceleration likewise with ``Δa = aC − aA + ω3²(B−A) − ω4²(B−C)`` [1]_.
     """
     d = C.z - A.z
-    D2 = d.real * d.real + d.imag * d.imag
+    D2 = dot(d, d)
     D = np.sqrt(D2)
     p = (l3 * l3 - l4 * l4 + D2) / (2.0 * D)
     h2 = l3 * l3 - p * p
     h = np.sqrt(np.maximum(h2, 0.0))
     ed = d / D
-    zB = A.z + (p + (1j * assembly) * h) * ed
+    zB = A.z + ed * p + ed.perp() * (h if assembly > 0 else -h)
     r3 = zB - A.z
     r4 = zB - C.z
     det = cross(r3, r4)
     dv = C.v - A.v
     w3 = dot(r4, dv) / det
     w4 = dot(r3, dv) / det
-    da = C.a - A.a + w3 * w3 * r3 - w4 * w4 * r4
+    r3w3sq, r4w4sq = r3 * (w3 * w3), r4 * (w4 * w4)
+    da = C.a - A.a + r3w3sq - r4w4sq
     e3 = dot(r4, da) / det
     e4 = dot(r3, da) / det
-    vB = A.v + 1j * w3 * r3
-    aB = A.a + (1j * e3 - w3 * w3) * r3
-    B = PointMotion(zB, vB, aB)
-    link3 = LinkMotion(A, r3 / l3, w3, e3)
-    link4 = LinkMotion(C, r4 / l4, w4, e4)
+    ir3 = r3.perp()
+    B = PointMotion(zB, A.v + ir3 * w3, A.a + ir3 * e3 - r3w3sq)
+    link3 = LinkMotion(A, r3 * (1.0 / l3), w3, e3)
+    link4 = LinkMotion(C, r4 * (1.0 / l4), w4, e4)
+    link3._points[complex(l3)] = link4._points[complex(l4)] = B
     return RRRSolution(link3, link4, B, h2, det)
 
 
@@ -248,7 +422,7 @@ def rrp(A: PointMotion, L: float, guide_point=0j, guide_angle=0.0, offset=0.0,
         The rod's outer joint (the crank pin).
     L : float
         Rod length |AB|. [m]
-    guide_point : complex
+    guide_point : complex or Vec
         The point the guide is referred to (for a crank-slider, the crank pivot O). [m]
     guide_angle : float
         Direction of the guide, ccw from +x. [rad]
@@ -268,27 +442,28 @@ def rrp(A: PointMotion, L: float, guide_point=0j, guide_angle=0.0, offset=0.0,
     B = (s, offset) with ``s = xA + assembly·√(L² − (offset − yA)²)``.  Velocity:
     ``v·u − iω3(B − A) = vA`` with ``u`` the guide direction gives
     ``ω3 = −(u × vA)/(u·(B − A))`` and ``v = u·(vA + iω3(B − A))``; acceleration likewise
-    with the right-hand side ``aA − ω3²(B − A)``.
+    with the right-hand side ``aA − ω3²(B − A)`` [1]_.
     """
-    u = complex(np.cos(guide_angle), np.sin(guide_angle))
-    rel = (A.z - guide_point) * u.conjugate()
-    dy = offset - rel.imag
+    u = Vec(float(np.cos(guide_angle)), float(np.sin(guide_angle)))
+    O = Vec.of(guide_point)
+    rel = (A.z - O) * u.conj()                         # A in guide coordinates
+    dy = offset - rel.y
     h2 = L * L - dy * dy
-    s = rel.real + assembly * np.sqrt(np.maximum(h2, 0.0))
-    zB = guide_point + (s + 1j * offset) * u
+    h = np.sqrt(np.maximum(h2, 0.0))
+    s = rel.x + h if assembly > 0 else rel.x - h
+    zB = O + Vec(s, offset) * u
     r3 = zB - A.z
     den = dot(u, r3)
     w3 = -cross(u, A.v) / den
-    vB_vec = A.v + 1j * w3 * r3
-    v = dot(u, vB_vec)
-    rhs = A.a - w3 * w3 * r3
+    ir3 = r3.perp()
+    v = dot(u, A.v + ir3 * w3)
+    rhs = A.a - r3 * (w3 * w3)
     e3 = -cross(u, rhs) / den
-    aB_vec = rhs + 1j * e3 * r3
-    a = dot(u, aB_vec)
-    B = PointMotion(zB, v * u, a * u)
-    zero = np.zeros_like(s)
-    link3 = LinkMotion(A, r3 / L, w3, e3)
-    link4 = LinkMotion(B, u + 0 * r3, zero, zero)
+    a = dot(u, rhs + ir3 * e3)
+    B = PointMotion(zB, u * v, u * a)
+    link3 = LinkMotion(A, r3 * (1.0 / L), w3, e3)
+    link4 = LinkMotion(B, u, 0.0, 0.0)
+    link3._points[complex(L)] = B
     return RRPSolution(link3, link4, B, s, v, a, h2)
 
 
@@ -297,14 +472,14 @@ def rrp(A: PointMotion, L: float, guide_point=0j, guide_angle=0.0, offset=0.0,
 
 def inertia_load(a_S, eps, mass=0.0, inertia=0.0):
     """d'Alembert inertia load of a link: force ``Fu = −m·a_S`` at its centre of mass and
-    moment ``Mu = −J_S·ε`` (the course project's
-    Fui = −mi·aSi, Mui = −JSi·εi of its table of force inputs).
+    moment ``Mu = −J_S·ε`` (the course project's Fui = −mi·aSi, Mui = −JSi·εi of its
+    table of force inputs) [1]_.
 
     Parameters
     ----------
-    a_S : complex array_like
-        Acceleration of the centre of mass. [m/s²]
-    eps : array_like
+    a_S : Vec, complex or real array_like
+        Acceleration of the centre of mass (or one of its components). [m/s²]
+    eps : float or array_like
         Angular acceleration of the link, + ccw. [rad/s²]
     mass : float
         m. [kg]
@@ -313,12 +488,14 @@ def inertia_load(a_S, eps, mass=0.0, inertia=0.0):
 
     Returns
     -------
-    Fu : complex ndarray
+    Fu : same kind as ``a_S``
         Inertia force. [N]
-    Mu : ndarray
+    Mu : float or ndarray
         Inertia moment, + ccw. [N·m]
     """
-    return -mass * np.asarray(a_S), -inertia * np.asarray(eps)
+    if type(a_S) is not Vec:
+        a_S = np.asarray(a_S)
+    return a_S * (-mass), np.asarray(eps) * (-inertia) if np.ndim(eps) else -inertia * eps
 
 
 def link_wrench(link: LinkMotion, mass=0.0, inertia=0.0, cg=0j, gravity=0.0,
@@ -338,8 +515,8 @@ def link_wrench(link: LinkMotion, mass=0.0, inertia=0.0, cg=0j, gravity=0.0,
     gravity : float
         Acceleration of gravity g, acting along −y. [m/s²]
     forces : iterable of (force, point)
-        External forces (complex, global components) [N] applied at points given as
-        complex *global* positions [m] (arrays over positions or scalars).
+        External forces (Vec or complex, global components) [N] applied at points given
+        as *global* positions (Vec or complex) [m] (arrays over positions or scalars).
     moments : iterable of array_like
         External moments (couples), + ccw. [N·m]
 
@@ -349,12 +526,13 @@ def link_wrench(link: LinkMotion, mass=0.0, inertia=0.0, cg=0j, gravity=0.0,
         Force ``ΣF + m·g·(−j) − m·a_S`` and moment about S ``Σ(r × F) + ΣM − J_S·ε``.
     """
     S = link.point(cg)
-    Fu, Mu = inertia_load(S.a, link.eps, mass, inertia)
-    F = Fu - 1j * (mass * gravity) + 0 * S.z
-    M = Mu + 0.0 * S.z.real
+    F, M = inertia_load(S.a, link.eps, mass, inertia)
+    if mass * gravity != 0.0:
+        F = F + Vec(0.0, -mass * gravity)
     for f, at in forces:
+        f = Vec.of(f)
         F = F + f
-        M = M + cross(at - S.z, f)
+        M = M + cross(Vec.of(at) - S.z, f)
     for m in moments:
         M = M + m
     return Wrench(F, M, S.z)
@@ -376,9 +554,9 @@ class RRRReactions:
     from it (the textbook's R23n, R23t, R14n, R14t).
     """
 
-    RA: np.ndarray
-    RB: np.ndarray
-    RC: np.ndarray
+    RA: Vec
+    RB: Vec
+    RC: Vec
     RA_n: np.ndarray
     RA_t: np.ndarray
     RC_n: np.ndarray
@@ -414,11 +592,10 @@ def rrr_reactions(sol: RRRSolution, l3: float, l4: float, W3: Wrench, W4: Wrench
     e3, e4 = sol.link3.e, sol.link4.e
     t3 = W3.moment_about(zB) / l3
     t4 = W4.moment_about(zB) / l4
-    ie3, ie4 = 1j * e3, 1j * e4
-    W = -(W3.force + W4.force + t3 * ie3 + t4 * ie4)
-    n3, n4 = _split(W, e3, e4)
-    RA = n3 * e3 + t3 * ie3
-    RC = n4 * e4 + t4 * ie4
+    T3, T4 = e3.perp() * t3, e4.perp() * t4
+    n3, n4 = _split(-(W3.force + W4.force + T3 + T4), e3, e4)
+    RA = e3 * n3 + T3
+    RC = e4 * n4 + T4
     RB = -(RA + W3.force)
     return RRRReactions(RA, RB, RC, n3, t3, n4, t4)
 
@@ -434,11 +611,11 @@ class RRPReactions:
     direction); ``MG``: the guide's moment on the slider about B (M14).
     """
 
-    RA: np.ndarray
+    RA: Vec
     RA_n: np.ndarray
     RA_t: np.ndarray
-    RB: np.ndarray
-    RG: np.ndarray
+    RB: Vec
+    RG: Vec
     RG_n: np.ndarray
     MG: np.ndarray
 
@@ -464,20 +641,18 @@ def rrp_reactions(sol: RRPSolution, L: float, W3: Wrench, W4: Wrench) -> RRPReac
     Moments about B of the rod give ``R23t = M3(B)/L``; the force polygon of the dyad,
     ``R23n·e3 + R14·iu = −(F3 + F4 + R23t·ie3)``, gives ``R23n`` and the normal force
     ``R14``; the slider's moments about B give ``M14 = −M4(B)``; the rod's equilibrium
-    gives ``R43 = −(R23 + F3)``.
+    gives ``R43 = −(R23 + F3)`` [1]_.
     """
     zB = sol.B.z
     e3 = sol.link3.e
-    iu = 1j * sol.link4.e
+    iu = sol.link4.e.perp()
     t3 = W3.moment_about(zB) / L
-    ie3 = 1j * e3
-    W = -(W3.force + W4.force + t3 * ie3)
-    n3, nG = _split(W, e3, iu)
-    RA = n3 * e3 + t3 * ie3
-    RG = nG * iu
+    T3 = e3.perp() * t3
+    n3, nG = _split(-(W3.force + W4.force + T3), e3, iu)
+    RA = e3 * n3 + T3
     RB = -(RA + W3.force)
     MG = -W4.moment_about(zB)
-    return RRPReactions(RA, n3, t3, RB, RG, nG, MG)
+    return RRPReactions(RA, n3, t3, RB, iu * nG, nG, MG)
 
 
 @dataclass
@@ -485,7 +660,7 @@ class DriverReactions:
     """Reactions of the driver I(1,2). ``R12``: force of the ground on the crank at O [N];
     ``M_drive``: the driving (balancing) moment applied to the crank, + ccw [N·m]."""
 
-    R12: np.ndarray
+    R12: Vec
     M_drive: np.ndarray
 
 
@@ -496,9 +671,9 @@ def driver_reactions(crank_link: LinkMotion, zA, R32, W2: Wrench) -> DriverReact
     ----------
     crank_link : LinkMotion
         The crank (origin at the fixed pivot O).
-    zA : complex ndarray
+    zA : Vec or complex ndarray
         Position of the crank pin A. [m]
-    R32 : complex ndarray
+    R32 : Vec or complex ndarray
         Force of the dyad's first link on the crank at A (= −R23). [N]
     W2 : Wrench
         Resultant loads on the crank (inertia and weight included).
@@ -506,9 +681,10 @@ def driver_reactions(crank_link: LinkMotion, zA, R32, W2: Wrench) -> DriverReact
     Returns
     -------
     DriverReactions
-        ``R12 = −(R32 + F2)``; ``M_drive = −(OA × R32) − M2(O)``.
+        ``R12 = −(R32 + F2)``; ``M_drive = −(OA × R32) − M2(O)`` [1]_.
     """
     zO = crank_link.origin.z
+    R32 = Vec.of(R32)
     R12 = -(R32 + W2.force)
-    M = -cross(zA - zO, R32) - W2.moment_about(zO)
+    M = -cross(Vec.of(zA) - zO, R32) - W2.moment_about(zO)
     return DriverReactions(R12, M)

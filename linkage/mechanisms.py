@@ -7,7 +7,7 @@ dyad → driver (:mod:`linkage.groups`).
 Also here: the geometry of the cycle: rotatability (an :class:`AssemblyError` naming the
 crank angles where the dyad cannot be assembled), singular (change-point) positions, the
 two extreme positions of the output link, swing or stroke, time-ratio coefficient, and
-the transmission angle.
+the transmission angle (by :mod:`linkage.fourbar`).
 """
 from __future__ import annotations
 
@@ -16,18 +16,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import groups as g
-from .errors import AssemblyError
+from crankbase.errors import AssemblyError
+from crankbase.tolerances import ASSEMBLY_CHECK_RTOL, ROTATABILITY_RTOL, ROUNDOFF_RTOL
 
-__all__ = ["CrankRocker", "CrankSlider", "Extremes", "grashof_type"]
+from . import fourbar
+from . import groups as g
+
+__all__ = ["CrankRocker", "CrankSlider", "Extremes"]
 
 TWO_PI = 2.0 * math.pi
-
-
-def grashof_type(crank, coupler, rocker, ground):
-    """Grashof type of a four-bar by :func:`linkage.synthesis.grashof` (lengths in m)."""
-    from .synthesis import grashof
-    return grashof(crank, coupler, rocker, ground)
 
 
 def _wrap(x):
@@ -35,9 +32,15 @@ def _wrap(x):
     return np.mod(x, TWO_PI)
 
 
+def _deg360(a):
+    """An angle in degrees wrapped to [0, 360) (a wrap that rounds to 360 gives 0)."""
+    a = a % 360.0
+    return 0.0 if a >= 360.0 - ROUNDOFF_RTOL * 360.0 else a
+
+
 def _intervals_deg(lo, hi):
     """Format a crank-angle interval (radians, lo < hi) in degrees wrapped to [0, 360)."""
-    if hi - lo >= TWO_PI * (1.0 - 1e-12):
+    if hi - lo >= TWO_PI * (1.0 - ROUNDOFF_RTOL):
         return "0°…360° (every crank angle)"
     a, b = math.degrees(lo) % 360.0, math.degrees(hi) % 360.0
     return f"{a:.4g}°…{b:.4g}°"
@@ -160,7 +163,8 @@ class _CrankMechanism:
         """Keep the candidate crank angles whose assembled B equals the target B."""
         phis = np.asarray(phis, float)
         kin = self.kinematics(phis, 1.0, 0.0)
-        ok = np.abs(kin["dyad"].B.z - np.asarray(targets)) <= 1e-7 * (self.l1 + self.l2)
+        ok = abs(kin["dyad"].B.z - np.asarray(targets)) <= \
+            ASSEMBLY_CHECK_RTOL * (self.l1 + self.l2)
         return [float(p) for p in phis[ok]]
 
 
@@ -195,8 +199,7 @@ class CrankRocker(_CrankMechanism):
         return {"crank": self.l1, "coupler": self.l2, "rocker": self.l3, "ground": self.l0}
 
     def _dyad(self, A):
-        zero = np.zeros_like(A.z)
-        C = g.PointMotion(self.zC + zero, zero, zero)
+        C = g.PointMotion(self.zC, 0j, 0j)        # the rocker pivot, at rest
         return g.rrr(A, C, self.l2, self.l3, self.assembly)
 
     def reactions(self, kin, wrenches):
@@ -206,8 +209,15 @@ class CrankRocker(_CrankMechanism):
         d = g.driver_reactions(kin["crank"], kin["A"].z, -r.RA, wrenches["crank"])
         return r, d
 
-    def grashof(self):
-        return grashof_type(self.l1, self.l2, self.l3, self.l0)
+    def grashof(self) -> fourbar.GrashofType:
+        """Grashof type (:func:`linkage.fourbar.grashof`)."""
+        return fourbar.grashof(self.l1, self.l2, self.l3, self.l0)
+
+    def min_transmission_angle(self):
+        """(μmin [deg], absolute crank angle of μmin [deg] in [0, 360)) over a full turn,
+        closed form on the line of centres (:mod:`linkage.fourbar`)."""
+        mu, at = fourbar._mu_min_on_line_of_centres(self.l1, self.l2, self.l3, self.l0)
+        return float(mu), _deg360(float(at) + math.degrees(self.ground_angle))
 
     def _cos_limits(self):
         """cos(φ − γ) thresholds: D² = l0² + l1² − 2·l0·l1·cos(φ−γ) with D = |AC|."""
@@ -216,7 +226,7 @@ class CrankRocker(_CrankMechanism):
         c_far = (l0 * l0 + l1 * l1 - (l2 + l3) ** 2) / (2 * l0 * l1)   # D = l2 + l3
         return c_near, c_far
 
-    def check_rotatable(self, tol=1e-9):
+    def check_rotatable(self, tol=ROTATABILITY_RTOL):
         """Raise :class:`AssemblyError` unless the crank can turn fully.
 
         The dyad assembles where ``|l2 − l3| ≤ |AC| ≤ l2 + l3``; the crank angles where it
@@ -241,7 +251,7 @@ class CrankRocker(_CrankMechanism):
                 "the crank cannot turn fully (the dyad AB–CB cannot be assembled: "
                 + "; ".join(bad) + f"); Grashof type: {self.grashof()}", ends)
 
-    def singular_angles(self, tol=1e-9):
+    def singular_angles(self, tol=ROTATABILITY_RTOL):
         """Crank angles [rad] where all four joints are collinear (change point)."""
         c_near, c_far = self._cos_limits()
         out = []
@@ -274,13 +284,12 @@ class CrankRocker(_CrankMechanism):
 
     def output_coordinate(self, kin):
         """Rocker angle θ4 [rad]."""
-        return np.angle(kin["dyad"].link4.e)
+        return kin["dyad"].link4.theta
 
     def transmission_angle(self, kin):
         """Acute angle between coupler and rocker at B. [rad]"""
         d = kin["dyad"]
-        e3, e4 = d.link3.e, d.link4.e
-        return np.arctan2(np.abs(g.cross(e3, e4)), np.abs(g.dot(e3, e4)))
+        return fourbar.transmission_angle(d.link4.e, d.link3.e)
 
 
 class CrankSlider(_CrankMechanism):
@@ -322,15 +331,17 @@ class CrankSlider(_CrankMechanism):
         d = g.driver_reactions(kin["crank"], kin["A"].z, -r.RA, wrenches["crank"])
         return r, d
 
-    def grashof(self):
-        """``"rotatable"``, ``"change-point"`` or ``"non-rotatable"`` (rod vs crank+|e|)."""
-        margin = self.l2 - (self.l1 + abs(self.offset))
-        scale = self.l1 + self.l2 + abs(self.offset)
-        if abs(margin) <= 1e-12 * scale:
-            return "change-point"
-        return "rotatable" if margin > 0 else "non-rotatable"
+    def grashof(self) -> fourbar.SliderCrankType:
+        """Rotatability type (:func:`linkage.fourbar.slider_crank_type`)."""
+        return fourbar.slider_crank_type(self.l1, self.l2, self.offset)
 
-    def check_rotatable(self, tol=1e-9):
+    def min_transmission_angle(self):
+        """(μmin [deg], absolute crank angle of μmin [deg] in [0, 360)) over a full turn,
+        closed form (:func:`linkage.fourbar.min_transmission_angle_slider_deg`)."""
+        mu, at = fourbar.min_transmission_angle_slider_deg(self.l1, self.l2, self.offset)
+        return mu, _deg360(at + math.degrees(self.guide_angle))
+
+    def check_rotatable(self, tol=ROTATABILITY_RTOL):
         """Raise :class:`AssemblyError` unless the crank can turn fully
         (|offset − y_A| ≤ L in guide coordinates for every crank angle)."""
         l1, L, e = self.l1, self.l2, self.offset
@@ -352,7 +363,7 @@ class CrankSlider(_CrankMechanism):
                 "the crank cannot turn fully (rod |AB| < |OA| + |offset|: "
                 + "; ".join(bad) + ")", ends)
 
-    def singular_angles(self, tol=1e-9):
+    def singular_angles(self, tol=ROTATABILITY_RTOL):
         """Crank angles [rad] where the rod stands perpendicular to the guide."""
         l1, L, e = self.l1, self.l2, self.offset
         out = []
@@ -366,7 +377,7 @@ class CrankSlider(_CrankMechanism):
         """Crank angles where crank and rod are collinear (slider at rest)."""
         out = []
         for d, folded in ((self.l1 + self.l2, False), (self.l2 - self.l1, True)):
-            if d < abs(self.offset) * (1.0 - 1e-12):
+            if d < abs(self.offset) * (1.0 - ROUNDOFF_RTOL):
                 continue  # (d = |offset|: a change point, the extreme is the dead position)
             x = math.sqrt(max(d * d - self.offset ** 2, 0.0))
             cands = [self.pivot + (s * x + 1j * self.offset) * self.u for s in (1, -1)]
@@ -382,7 +393,6 @@ class CrankSlider(_CrankMechanism):
         return kin["dyad"].s
 
     def transmission_angle(self, kin):
-        """90° minus the acute angle between rod and guide. [rad]"""
-        e3 = kin["dyad"].link3.e
-        u = self.u
-        return np.arctan2(np.abs(g.dot(e3, u)), np.abs(g.cross(e3, u)))
+        """90° minus the acute angle between rod and guide: the acute angle between the
+        rod and the guide's normal. [rad]"""
+        return fourbar.transmission_angle(kin["dyad"].link4.e.perp(), kin["dyad"].link3.e)

@@ -31,13 +31,13 @@ def _cycle_axis(result, full):
     phi = full.kinematics["phi_deg"].to_numpy()
     s = result.summary
     rot = 1 if result.spec.omega > 0 else -1
-    if "phi_working_start_deg" not in s:
+    if not s.has_extremes:
         order = np.argsort(phi)
         return phi, order, "crank angle φ [°]", None
-    x = np.mod((phi - s["phi_working_start_deg"]) * rot, 360.0)
+    x = np.mod((phi - s.phi_working_start_deg) * rot, 360.0)
     x[-1] = 360.0 if abs(x[-1]) < 1e-9 and len(x) > 1 else x[-1]
     order = np.argsort(x, kind="stable")
-    work = s["working_crank_angle_deg"]
+    work = s.working_crank_angle_deg
     pos = result.kinematics["position"]
     n = int(pos.max()) if pos.notna().all() and len(pos) else 0
 
@@ -130,10 +130,10 @@ def moment_figure(result, full):
 
 def _plan_x(result):
     s = result.summary
-    if "phi_working_start_deg" not in s or result.kinematics["position"].isna().any():
+    if not s.has_extremes or result.kinematics["position"].isna().any():
         return None
     rot = 1 if result.spec.omega > 0 else -1
-    return np.mod((result.kinematics["phi_deg"].to_numpy() - s["phi_working_start_deg"]) * rot,
+    return np.mod((result.kinematics["phi_deg"].to_numpy() - s.phi_working_start_deg) * rot,
                   360.0)
 
 
@@ -143,8 +143,8 @@ def transmission_figure(result, full):
                   f"{result.spec.name}: transmission angle")
     ax = fig.axes[0]
     s = result.summary
-    ax.axhline(s["mu_min_deg"], color="C3", lw=0.8, ls="--",
-               label=f"μmin = {s['mu_min_deg']:.2f}°")
+    ax.axhline(s.mu_min_deg, color="C3", lw=0.8, ls="--",
+               label=f"μmin = {s.mu_min_deg:.2f}°")
     ax.set_ylim(0, 95)
     ax.legend(loc="best", fontsize=8)
     return fig
@@ -197,8 +197,7 @@ def plan_figure(result, full):
         e = result.extremes
         _draw_links(ax, e, 1, zO, zC, 2.0, "C3", ls="--")
         ax.plot([], [], color="C3", ls="--", lw=2.0, label="other extreme position")
-    numbered = k["position"].notna().all() and len(k) and "phi_working_start_deg" in \
-        result.summary
+    numbered = k["position"].notna().all() and len(k) and result.summary.has_extremes
     ax.plot([], [], color="C0", lw=2.2,
             label="position 1 (working-stroke start)" if numbered
             else f"first crank angle given, φ = {k['phi_deg'].iat[0]:.4g}°")

@@ -105,7 +105,7 @@ def force_sheet_columns(force_cols):
 
 def write_csvs(result, folder):
     """Write ``kinematics.csv`` and ``forces.csv`` (comma, '.', header, full precision)."""
-    from crankdyn.io import write_csv
+    from crankbase.output import write_csv
 
     write_csv(result.kinematics, folder / "kinematics.csv")
     write_csv(result.forces, folder / "forces.csv")
@@ -114,26 +114,26 @@ def write_csvs(result, folder):
 def summary_lines(result):
     """The cycle geometry as (label, value, unit) rows for the inputs sheet and terminal."""
     s = result.summary
-    rows = [("Grashof type", s["grashof"], "")]
-    if "time_ratio" in s:
-        rows += [("crank angle, working-stroke start (position 1)", s["phi_working_start_deg"], "°"),
-                 ("crank angle, working-stroke end", s["phi_working_end_deg"], "°"),
-                 ("crank rotation in the working stroke", s["working_crank_angle_deg"], "°"),
-                 ("crank rotation in the idle stroke", s["idle_crank_angle_deg"], "°"),
-                 ("time-ratio coefficient K = φwork/φidle", s["time_ratio"], "")]
-        if "swing_deg" in s:
-            rows += [("rocker angle at working-stroke start", s["theta4_working_start_deg"], "°"),
-                     ("rocker angle at working-stroke end", s["theta4_working_end_deg"], "°"),
-                     ("rocker swing", s["swing_deg"], "°")]
+    rows = [("Grashof type", str(s.grashof), "")]
+    if s.has_extremes:
+        rows += [("crank angle, working-stroke start (position 1)", s.phi_working_start_deg, "°"),
+                 ("crank angle, working-stroke end", s.phi_working_end_deg, "°"),
+                 ("crank rotation in the working stroke", s.working_crank_angle_deg, "°"),
+                 ("crank rotation in the idle stroke", s.idle_crank_angle_deg, "°"),
+                 ("time-ratio coefficient K = φwork/φidle", s.time_ratio, "")]
+        if s.swing_deg is not None:
+            rows += [("rocker angle at working-stroke start", s.theta4_working_start_deg, "°"),
+                     ("rocker angle at working-stroke end", s.theta4_working_end_deg, "°"),
+                     ("rocker swing", s.swing_deg, "°")]
         else:
-            rows += [("slider position at working-stroke start", s["s4_working_start_m"], "m"),
-                     ("slider position at working-stroke end", s["s4_working_end_m"], "m"),
-                     ("slider stroke", s["stroke_m"], "m")]
-    rows += [("minimum transmission angle μmin", s["mu_min_deg"], "°"),
-             ("crank angle of μmin", s["mu_min_phi_deg"], "°")]
-    if s.get("singular_phi_deg"):
+            rows += [("slider position at working-stroke start", s.s4_working_start_m, "m"),
+                     ("slider position at working-stroke end", s.s4_working_end_m, "m"),
+                     ("slider stroke", s.stroke_m, "m")]
+    rows += [("minimum transmission angle μmin", s.mu_min_deg, "°"),
+             ("crank angle of μmin", s.mu_min_phi_deg, "°")]
+    if s.singular_phi_deg:
         rows.append(("singular crank angles (change point)",
-                     ", ".join(f"{a:.6g}" for a in s["singular_phi_deg"]), "°"))
+                     ", ".join(f"{a:.6g}" for a in s.singular_phi_deg), "°"))
     return rows
 
 
@@ -157,7 +157,7 @@ def _spec_rows(raw, prefix=""):
 def write_workbook(result, path):
     """Write the Excel workbook of a linkage analysis (atomically).
 
-    Raises :class:`crankdyn.io.OutputError` if a table holds a non-finite number outside
+    Raises :class:`crankbase.output.OutputError` if a table holds a non-finite number outside
     the rows of singular positions of a change-point mechanism (those are left empty
     and flagged).
     """
@@ -165,7 +165,7 @@ def write_workbook(result, path):
     from openpyxl.styles import Alignment, Border, Font, PatternFill, Side
     from openpyxl.utils import get_column_letter
 
-    from crankdyn.io import atomic_path, full_precision_xlsx
+    from crankbase.output import atomic_path, full_precision_xlsx
 
     wb = Workbook()
     bold = Font(bold=True)
@@ -290,9 +290,9 @@ def _cell_values(series):
 
 def _check_finite_tables(result):
     """Refuse to write non-finite values except on flagged singular positions."""
-    from crankdyn.io import OutputError
+    from crankbase.output import OutputError
 
-    sing = result.summary.get("singular_phi_deg") or []
+    sing = result.summary.singular_phi_deg
     for name, df in (("kinematics", result.kinematics), ("forces", result.forces)):
         num = df.drop(columns=["position"]).to_numpy(dtype=float)
         bad_rows = np.flatnonzero(~np.isfinite(num).all(axis=1))

@@ -2,7 +2,7 @@
 
 :func:`load_spec` reads TOML (or a dict of the same shape), checks every key and returns
 a frozen :class:`MechanismSpec`.  SI units, angles in degrees at the edge.  All problems
-are reported at once in one :class:`~linkage.errors.SpecError`.
+are reported at once in one :class:`~crankbase.errors.SpecError`.
 """
 from __future__ import annotations
 
@@ -11,8 +11,8 @@ import re
 from dataclasses import dataclass, field
 from types import MappingProxyType
 
-from .errors import SpecError
-from .validation import Checker, read_toml
+from crankbase.errors import SpecError
+from crankbase.validation import Checker, read_toml
 
 __all__ = ["LinkSpec", "LoadSpec", "MechanismSpec", "load_spec", "LINK_NAMES", "KINDS"]
 
@@ -320,5 +320,5 @@ def load_spec(path_or_dict) -> MechanismSpec:
 
 def spec_error(key: str, message: str) -> SpecError:
     """One-problem :class:`SpecError` (for checks made after loading)."""
-    from .errors import Problem
+    from crankbase.errors import Problem
     return SpecError(Problem(key, message))

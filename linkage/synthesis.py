@@ -43,13 +43,16 @@ References
 """
 from __future__ import annotations
 
-import enum
 import math
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from .errors import Problem, SpecError
+from crankbase.errors import Problem
+from crankbase.tolerances import ROTATABILITY_RTOL
+
+from .fourbar import (GeometryError, GrashofType, _as_float, _fmt, _lengths, grashof,
+                      min_transmission_angle_deg, transmission_angle_deg)
 
 __all__ = [
     "TOL", "SynthesisError", "GrashofType", "grashof",
@@ -62,72 +65,20 @@ __all__ = [
 ]
 
 #: Points within this distance of the boundary of the region of existence (measured on
-#: the residuals of Kolchin's inequalities, lengths relative to the ground) are inside.
-TOL = 1e-9
-
-#: Relative tolerance of the Grashof equality s + l = p + q (change point).
-GRASHOF_RTOL = 1e-12
+#: the residuals of Kolchin's inequalities, lengths relative to the ground) are inside:
+#: the project's rotatability margin (:data:`crankbase.tolerances.ROTATABILITY_RTOL`).
+TOL = ROTATABILITY_RTOL
 
 
-class SynthesisError(SpecError):
+class SynthesisError(GeometryError):
     """A synthesis argument is invalid or asks for a mechanism that does not exist.
 
-    A :class:`ValueError` (through :class:`~linkage.errors.SpecError`): each problem names
+    A :class:`ValueError` (through :class:`~crankbase.errors.SpecError`): each problem names
     the argument, the bad value and what would be valid; the CLI prints one per line.
     """
 
 
-class GrashofType(enum.Enum):
-    """Grashof type of a four-bar (s shortest, l longest, p, q the others)."""
-
-    #: s + l < p + q and the crank (λ1) is the shortest link.
-    CRANK_ROCKER = "crank-rocker"
-    #: s + l < p + q and the ground is the shortest link (drag link).
-    DOUBLE_CRANK = "double-crank"
-    #: s + l < p + q and the coupler or the rocker is the shortest link.
-    DOUBLE_ROCKER = "double-rocker"
-    #: s + l = p + q (within 1e-12 relative): the links can become collinear.
-    CHANGE_POINT = "change-point"
-    #: s + l > p + q: no link turns fully (triple rocker).
-    NON_GRASHOF = "non-Grashof"
-
-    def __str__(self) -> str:
-        return self.value
-
-
 # --------------------------------------------------------------------------- validation
-def _fmt(value) -> str:
-    a = np.asarray(value)
-    if a.ndim == 0:
-        return repr(float(a)) if a.dtype.kind in "fiub" else repr(value)
-    bad = a.ravel()
-    return f"an array ({a.size} values)" if bad.size > 4 else repr(bad.tolist())
-
-
-def _as_float(name, value, problems):
-    try:
-        a = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        problems.append(Problem(name, f"must be a number, got {value!r}"))
-        return None
-    return a
-
-
-def _lengths(problems, **named):
-    """Convert lengths to float arrays; record every non-finite or non-positive one."""
-    out = {}
-    for name, value in named.items():
-        a = _as_float(name, value, problems)
-        if a is None:
-            continue
-        bad = ~np.isfinite(a) | (a <= 0)
-        if np.any(bad):
-            shown = value if a.ndim == 0 else a[bad].ravel()[:4].tolist()
-            problems.append(Problem(name, f"must be a positive finite length, got {shown!r}"))
-        out[name] = a
-    return out
-
-
 def _phi0(problems, phi0_deg, name="phi0_deg"):
     a = _as_float(name, phi0_deg, problems)
     if a is None:
@@ -154,54 +105,6 @@ def _scalar(name, value, problems):
     return float(a)
 
 
-# --------------------------------------------------------------------------- Grashof
-def grashof(l1, l2, l3, l0=1.0) -> GrashofType:
-    """Grashof type of the four-bar with crank ``l1``, coupler ``l2``, rocker ``l3``,
-    ground ``l0``.
-
-    Parameters
-    ----------
-    l1, l2, l3, l0 : float
-        Crank, coupler, rocker and ground lengths, all in the same unit (relative to the
-        ground, or absolute). [-] or [m]
-
-    Returns
-    -------
-    GrashofType
-        With s the shortest, l the longest and p, q the other two links:
-        ``NON_GRASHOF`` if s + l > p + q; ``CHANGE_POINT`` if s + l = p + q within
-        1e-12 relative; otherwise ``CRANK_ROCKER`` (crank shortest), ``DOUBLE_CRANK``
-        (ground shortest) or ``DOUBLE_ROCKER`` (coupler or rocker shortest).
-
-    Raises
-    ------
-    SynthesisError
-        A length is not a positive finite number.
-
-    References
-    ----------
-    .. [1] Grashof's criterion s + l ≤ p + q; with λ0 = 1 and the crank shortest it is
-       equivalent to Kolchin's three inequalities, eq. (1)–(3) of seed 004.
-    """
-    problems = []
-    named = _lengths(problems, l1=l1, l2=l2, l3=l3, l0=l0)
-    for name, a in named.items():
-        if a.ndim != 0:
-            problems.append(Problem(name, f"must be a single number, got {_fmt(a)}"))
-    _raise(problems)
-    links = [float(named[k]) for k in ("l0", "l1", "l2", "l3")]
-    order = sorted(links)
-    s, p, q, l = order
-    lhs, rhs = s + l, p + q
-    if abs(lhs - rhs) <= GRASHOF_RTOL * max(lhs, rhs):
-        return GrashofType.CHANGE_POINT
-    if lhs > rhs:
-        return GrashofType.NON_GRASHOF
-    shortest = links.index(s)  # unique: equal shortest links cannot be strictly Grashof
-    return (GrashofType.DOUBLE_CRANK, GrashofType.CRANK_ROCKER,
-            GrashofType.DOUBLE_ROCKER, GrashofType.DOUBLE_ROCKER)[shortest]
-
-
 def _kolchin_residuals(l1, l2, l3):
     """Residuals of Kolchin's inequalities, eq. (3), (1), (2): all ≥ 0 inside."""
     return (l2 + l3 - 1.0 - l1, 1.0 - l1 - (l2 - l3), 1.0 - l1 - (l3 - l2))
@@ -221,116 +124,6 @@ def _type_with_tol(l1, l2, l3) -> GrashofType:
     if t is GrashofType.NON_GRASHOF and float(_kolchin_margin(l1, l2, l3)) >= -TOL:
         return GrashofType.CHANGE_POINT
     return t
-
-
-# --------------------------------------------------------------------------- analysis
-def _cos_mu(phi_deg, l1, l2, l3, l0=1.0):
-    phi = np.radians(phi_deg)
-    return (l2 ** 2 + l3 ** 2 - l1 ** 2 - l0 ** 2 + 2.0 * l1 * l0 * np.cos(phi)) / (2.0 * l2 * l3)
-
-
-def _acute_deg(cos_mu, ok=True):
-    """Acute angle of arccos(cos μ) in degrees, cos μ clipped to [−1, 1]; NaN where not
-    ``ok``."""
-    x = np.minimum(np.abs(cos_mu), 1.0)
-    return np.where(ok, np.degrees(np.arccos(x)), np.nan)
-
-
-def _assembles(phi_deg, l1, l2, l3, l0=1.0):
-    """True where the dyad closes: |λ2 − λ3| ≤ |AC| ≤ λ2 + λ3 within √2·TOL·λ0, |AC| the
-    diagonal from the crank pin to the rocker pivot.  (The residual of λ2 + λ3 ≥ |AC| over
-    √2 is the distance to that line in the (λ2, λ3) plane: the region's tolerance.)"""
-    phi = np.radians(phi_deg)
-    ac = np.sqrt(np.maximum(l0 ** 2 + l1 ** 2 - 2.0 * l0 * l1 * np.cos(phi), 0.0))
-    tol = math.sqrt(2.0) * TOL * l0
-    return (ac >= np.abs(l2 - l3) - tol) & (ac <= l2 + l3 + tol)
-
-
-def transmission_angle_deg(phi_deg, l1, l2, l3, l0=1.0):
-    """Acute transmission angle of a four-bar at crank angle φ, vectorised.
-
-    Parameters
-    ----------
-    phi_deg : array_like
-        Crank angle, counter-clockwise from the line of centres O→C. [deg]
-    l1, l2, l3 : array_like
-        Crank, coupler and rocker lengths (relative to the ground when ``l0 = 1``). [-]
-    l0 : array_like, optional
-        Ground length, in the unit of the others. [-]
-
-    Returns
-    -------
-    ndarray
-        μ folded into 0…90° (broadcast shape of the arguments); NaN where the linkage
-        cannot be assembled at that crank angle (|AC| outside |λ2 − λ3| … λ2 + λ3 by more
-        than √2·:data:`TOL`·λ0). [deg]
-
-    Notes
-    -----
-    cos μ = (λ2² + λ3² − λ1² − λ0² + 2 λ1 λ0 cos φ) / (2 λ2 λ3); the cosine theorem in the
-    triangles OAC and ABC.  Assembly branch does not matter: both give the same μ.
-
-    References
-    ----------
-    .. [1] seed 004, eq. (4)–(5) and (12); domain.md §2.
-    """
-    problems = []
-    n = _lengths(problems, l1=l1, l2=l2, l3=l3, l0=l0)
-    phi = _as_float("phi_deg", phi_deg, problems)
-    if phi is not None and not np.all(np.isfinite(phi)):
-        problems.append(Problem("phi_deg", "must be finite crank angles [deg]"))
-    _raise(problems)
-    args = (phi, n["l1"], n["l2"], n["l3"], n["l0"])
-    return _acute_deg(_cos_mu(*args), _assembles(*args))
-
-
-def min_transmission_angle_deg(l1, l2, l3, l0=1.0):
-    """Smallest acute transmission angle over a full crank turn, and where it occurs.
-
-    Parameters
-    ----------
-    l1, l2, l3 : array_like
-        Crank, coupler and rocker lengths (relative to the ground when ``l0 = 1``). [-]
-    l0 : array_like, optional
-        Ground length. [-]
-
-    Returns
-    -------
-    mu_min_deg : ndarray or float
-        min over φ of μ(φ). [deg]
-    phi_deg : ndarray or float
-        Crank angle of the minimum, 0° or 180° (cos μ is monotonic in cos φ, so the
-        extremes sit on the line of centres); 180° on a tie. [deg]
-
-    Raises
-    ------
-    SynthesisError
-        A length is not positive, or the crank cannot turn fully (|cos μ| > 1 somewhere,
-        beyond :data:`TOL`, as a distance relative to the ground).
-
-    References
-    ----------
-    .. [1] seed 004, eq. (13): μmin = arccos[λ1 (1 + √3/2) / (λ2 λ3)] at φ = 180° for the
-       ККМ-30° family.
-    """
-    problems = []
-    n = _lengths(problems, l1=l1, l2=l2, l3=l3, l0=l0)
-    _raise(problems)
-    args = (n["l1"], n["l2"], n["l3"], n["l0"])
-    c0, c180 = _cos_mu(0.0, *args), _cos_mu(180.0, *args)
-    bad = ~(_assembles(0.0, *args) & _assembles(180.0, *args))
-    if np.any(bad):
-        raise SynthesisError(Problem(
-            "l1, l2, l3", f"the crank cannot turn fully (linkage not assemblable at φ = 0° "
-                          f"or 180°): l1={_fmt(n['l1'])}, l2={_fmt(n['l2'])}, "
-                          f"l3={_fmt(n['l3'])}, l0={_fmt(n['l0'])}"))
-    m0, m180 = _acute_deg(c0), _acute_deg(c180)
-    at180 = m180 <= m0 + 1e-12
-    mu = np.where(at180, m180, m0)
-    where = np.where(at180, 180.0, 0.0)
-    if mu.ndim == 0:
-        return float(mu), float(where)
-    return mu, where
 
 
 # --------------------------------------------------------------------------- the family

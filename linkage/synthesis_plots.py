@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["plot_region", "plot_mu_min_curves", "plot_transmission_angle", "save_figure"]
+__all__ = ["plot_region", "plot_mu_min_curves", "plot_transmission_angle"]
 
 
 def _axes(ax, size):
@@ -180,15 +180,3 @@ def plot_transmission_angle(phi_deg, mu_deg, design, ax=None):
     ax.grid(True, lw=0.4, alpha=0.5)
     ax.legend(loc="lower left", fontsize=8, framealpha=0.92)
     return fig
-
-
-def save_figure(fig, path, dpi=150) -> None:
-    """Save a figure atomically; the format follows the suffix (.png, .svg)."""
-    from pathlib import Path
-
-    from crankdyn.io import atomic_path
-
-    fmt = Path(path).suffix.lstrip(".").lower()
-    with atomic_path(path) as tmp:
-        # "tight" keeps a legend placed outside the axes inside the image
-        fig.savefig(tmp, format=fmt, dpi=dpi, bbox_inches="tight", pad_inches=0.15)

@@ -3,7 +3,7 @@ the workbook and the spec TOML.
 
 Everything here only arranges numbers computed by :mod:`linkage.synthesis`; pandas and
 openpyxl are imported inside the functions that need them.  Every file is written
-atomically (:func:`crankdyn.io.atomic_path`): a crash never leaves half a file.
+atomically (:func:`crankbase.output.atomic_path`): a crash never leaves half a file.
 """
 from __future__ import annotations
 
@@ -162,7 +162,7 @@ def write_workbook(path, table, phi0_deg, mechanism=None) -> None:
     from openpyxl import Workbook
     from openpyxl.styles import Alignment, Font
 
-    from crankdyn.io import atomic_path, ensure_finite, full_precision_xlsx
+    from crankbase.output import atomic_path, ensure_finite, full_precision_xlsx
 
     ensure_finite(table, "Table 1")
     if mechanism is not None:
@@ -300,7 +300,7 @@ def dumps_toml(data: dict, header: str = "") -> str:
 
 def write_toml(data: dict, path, header: str = "") -> None:
     """Write ``data`` as TOML (:func:`dumps_toml`), atomically, UTF-8."""
-    from crankdyn.io import atomic_path
+    from crankbase.output import atomic_path
 
     text = dumps_toml(data, header)
     with atomic_path(path) as tmp:

@@ -209,35 +209,52 @@ class Model:
         side = math.copysign(1.0, math.sin(t4 - self.gamma))
         return [c for c in cands if math.copysign(1.0, math.sin(c - self.gamma)) == side][0]
 
+    def _stroke_phases(self, phi, bodies, extra):
+        """Where each crank angle lies in the cycle, judged from the crank angle alone:
+        +1 strictly inside the working stroke, −1 strictly inside the idle stroke, 0 at
+        (within 1e-9 rad of) an extreme position, where the output stands still.  The
+        strokes are the crank-angle intervals between the two extreme crank angles, which
+        put crank and coupler on one line through O (|OB| = l1 + l2 or l2 − l1)."""
+        ends = []
+        for c in self.extreme_outputs():
+            zB = (self.l0 * self.u + self.l3 * np.exp(1j * c) if self.kind == "crank-rocker"
+                  else (c + 1j * self.offset) * self.u)
+            folded = abs(abs(zB) - (self.l2 - self.l1)) < abs(abs(zB) - (self.l1 + self.l2))
+            ends.append(np.angle(zB) + (math.pi if folded else 0.0))
+        turn = 1.0 if self.w2 > 0 else -1.0
+        into = np.mod(turn * (phi - ends[0]), 2 * math.pi)          # crank turn since start
+        span = np.mod(turn * (ends[1] - ends[0]), 2 * math.pi)      # working-stroke turn
+        near = (np.minimum(into, 2 * math.pi - into) < 1e-9) | (np.abs(into - span) < 1e-9)
+        return np.where(near, 0, np.where(into < span, 1, -1))
+
     def resistance(self, bodies, extra, load):
         """Resistance value per position: moment on the rocker [N·m] or force along the
-        guide on the slider [N], + ccw / + along the guide direction."""
-        R = float(load.get("resistance_Nm", load.get("resistance_N", 0.0)))
-        stroke = load.get("stroke", "working")
+        guide on the slider [N], + ccw / + along the guide direction.
+
+        The working stroke is known here as an interval of crank angles; in it the output
+        moves in its working direction, so a resistance opposing the motion is the
+        magnitude times minus that direction, and the opposite in the idle stroke."""
+        size = float(load.get("resistance_Nm", load.get("resistance_N", 0.0)))
+        phi = bodies["crank"].theta
         if self.kind == "crank-rocker":
-            rate, coord = bodies["rocker"].omega, bodies["rocker"].theta
-            wsign = 1 if self.working == "ccw" else -1
-            scale = abs(self.w2)
-            span = math.radians(load["span_deg"]) if "span_deg" in load else None
+            coord = bodies["rocker"].theta
+            forward = 1.0 if (self.working or "ccw") == "ccw" else -1.0
+            reach = math.radians(load["span_deg"]) if "span_deg" in load else math.inf
         else:
-            rate, coord = extra["v"], extra["s"]
-            wsign = self.asm if self.working == "away" else -self.asm
-            scale = abs(self.w2) * self.l1
-            span = load.get("span_m")
-        moving = np.abs(rate) > 1e-9 * scale
-        if self.working is None:
-            return np.where(moving, -np.sign(rate) * R, 0.0)
-        state = np.where(moving, np.sign(rate) * wsign, 0.0)
-        active = {"working": state > 0, "idle": state < 0, "both": state != 0}[stroke]
-        if span is not None:
-            c_work, c_idle = self.extreme_outputs()
-            start = np.where(state >= 0, c_work, c_idle)
+            coord = extra["s"]
+            forward = float(self.asm) if (self.working or "away") == "away" else -float(self.asm)
+            reach = load.get("span_m", math.inf)
+        phase = self._stroke_phases(phi, bodies, extra)
+        wanted = load.get("stroke", "working") if self.working else "both"
+        on = {"working": phase == 1, "idle": phase == -1, "both": phase != 0}[wanted]
+        if math.isfinite(reach):
+            first = self.extreme_outputs()
+            origin = np.where(phase == 1, first[0], first[1])
+            gone = coord - origin
             if self.kind == "crank-rocker":
-                travel = np.abs(np.angle(np.exp(1j * (coord - start))))
-            else:
-                travel = np.abs(coord - start)
-            active = active & (travel <= span)
-        return np.where(active, -np.sign(rate) * R, 0.0)
+                gone = np.angle(np.exp(1j * gone))
+            on = on & (np.abs(gone) <= reach * (1 + 1e-12))
+        return np.where(on, -forward * phase * size, 0.0)
 
     # ------------------------------------------------------------------ kinetostatics
     def solve(self, phi):

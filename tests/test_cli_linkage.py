@@ -10,7 +10,7 @@ import pytest
 from openpyxl import load_workbook
 
 from crankdyn.cli import main
-from crankdyn.resources import example_path
+from crankbase.resources import example_path
 
 SHEETS = ("inputs", "positions", "velocities", "accelerations", "loads", "forces",
           "extremes")

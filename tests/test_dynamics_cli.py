@@ -7,7 +7,7 @@ import pytest
 from openpyxl import load_workbook
 
 from crankdyn.cli import main
-from crankdyn.resources import example_path
+from crankbase.resources import example_path
 
 COLS = ["phi_deg", "J_red_kgm2", "dJ_red_dphi_kgm2", "M_drive_Nm", "M_resist_Nm",
         "omega_rad_s", "eps_rad_s2", "t_s"]

@@ -3,10 +3,10 @@ import numpy as np
 import pytest
 
 import engine
-from crankdyn.resources import example_path
+from crankbase.resources import example_path
 from dynamics.motion import steady_motion
 from dynamics.reduced import engine_model
-from linkage.validation import read_toml
+from crankbase.validation import read_toml
 
 
 def _spec(acceleration="exact", cylinders=4):

@@ -10,8 +10,9 @@ import numpy as np
 import pytest
 from hypothesis import assume, given
 
+import crankbase.validation
 import linkage
-from crankdyn.resources import example_path
+from crankbase.resources import example_path
 from dynamics.motion import size_flywheel, steady_motion, true_motion_forces
 from dynamics.reduced import linkage_model
 from test_linkage_properties import SETTINGS, mechanisms
@@ -75,7 +76,7 @@ def test_examples_identities(name):
 def test_reduced_resistance_is_the_core_constant_speed_moment():
     """At constant speed without masses the core's balancing moment is the reduced
     resisting moment (virtual work), position by position."""
-    data = linkage.validation.read_toml(example_path("press.toml"))[0]
+    data = crankbase.validation.read_toml(example_path("press.toml"))[0]
     for t in data["links"].values():
         t["mass_kg"] = 0.0
         t.pop("inertia_kg_m2", None)

@@ -8,7 +8,7 @@ import pytest
 from dynamics import MotionError
 from dynamics.motion import Motor, motor_startup, motor_steady_motion, size_flywheel, steady_motion
 from dynamics.reduced import PiecewiseLinear, braking_moment, chain_reduce, machine_model
-from linkage.errors import SpecError
+from crankbase.errors import SpecError
 
 RPM = math.pi / 30.0
 
@@ -221,7 +221,7 @@ def test_bad_inputs():
 def test_machine_elements_spec():
     """[[machine.element]]: J_red = Σ J (ω_k/ω)² + Σ m (v/ω)² (eq. 11-10), the hoist's
     J_e = J1 + J2 (z1/z2)² + (G/g)(D z1/(2 z2))² of Example 11-2."""
-    from crankdyn.resources import example_path
+    from crankbase.resources import example_path
     from dynamics.spec import load_dynamics_spec
 
     job = load_dynamics_spec(example_path("hoist_machine.toml"))

@@ -8,9 +8,9 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from crankdyn.cli import main
-from crankdyn.resources import example_path
+from crankbase.resources import example_path
 from dynamics import balance_rotor, rotor_balance
-from linkage.errors import SpecError
+from crankbase.errors import SpecError
 
 
 def test_seed_example_11_1():

@@ -10,9 +10,9 @@ import pytest
 from hypothesis import assume, given
 
 import linkage
-from crankdyn.resources import example_path
+from crankbase.resources import example_path
 from dynamics.shaking import balance_crank_slider, balance_fourbar, shaking
-from linkage.errors import SpecError
+from crankbase.errors import SpecError
 from test_linkage_properties import SETTINGS, crank_rockers, crank_sliders
 
 

@@ -13,7 +13,7 @@ from openpyxl import load_workbook
 
 import engine
 from crankdyn.cli import main
-from crankdyn.resources import example_path
+from crankbase.resources import example_path
 from engine.plots import PLOT_NAMES
 from engine.report import TABLE2_FORCES
 
@@ -46,8 +46,8 @@ def test_outputs_exist(run):
 def test_csv_equals_force_table(run):
     name, lang, out = run
     df = pd.read_csv(out / "forces.csv")
-    spec = engine.load_spec(example_path(EXAMPLES[name][0]))
-    t = engine.force_table(spec)
+    study = engine.load(example_path(EXAMPLES[name][0]))
+    t = engine.force_table(study.spec, settings=study.settings)
     assert list(df.columns) == list(engine.COLUMNS)
     np.testing.assert_array_equal(df.to_numpy(), t.to_numpy())   # full precision
     text = (out / "forces.csv").read_text()
@@ -61,8 +61,7 @@ def test_workbook_equals_csv(run):
     wb = load_workbook(out / EXAMPLES[name][1])
     assert len(wb.worksheets) == 5
     ws_in, ws_t2, ws_sum, ws_data, ws_ch = wb.worksheets
-    spec = engine.load_spec(example_path(EXAMPLES[name][0]))
-    mu = spec.force_scale
+    mu = engine.load(example_path(EXAMPLES[name][0])).settings.force_scale
     # Table 2: α, (mm, N) × 8 forces, Mкр, Ψ — numbers, not formulas
     assert ws_t2["C2"].value == mu
     n = len(df)
@@ -111,7 +110,8 @@ def test_table2_layout_like_the_textbook(run):
 
 def test_inputs_and_summary_sheets(run):
     name, lang, out = run
-    spec = engine.load_spec(example_path(EXAMPLES[name][0]))
+    study = engine.load(example_path(EXAMPLES[name][0]))
+    spec = study.spec
     wb = load_workbook(out / EXAMPLES[name][1])
     ws_in, ws_sum = wb.worksheets[0], wb.worksheets[2]
     vals = {r[0]: r[3] for r in ws_in.iter_rows(min_row=4, max_col=4, values_only=True)
@@ -125,17 +125,18 @@ def test_inputs_and_summary_sheets(run):
     assert vals["mj"] == pytest.approx(spec.mj)
     assert vals["m_rod_rot"] == pytest.approx(spec.m_rod_rot)
     assert vals["Kr"] == pytest.approx(spec.Kr)
-    assert vals["mu_P"] == spec.force_scale
+    assert vals["mu_P"] == study.settings.force_scale
     assert vals["pi"] > 0.5
-    fine = engine.force_table(spec, engine.fine_angles(spec))
-    summ = engine.summarize(fine, spec)
+    summ = engine.analyze(spec, study.settings).summary
     rows = {r[0]: r[3:7] for r in ws_sum.iter_rows(min_row=4, max_col=7, values_only=True)
             if r[0]}
     for col in ("P_N", "S_N", "N_N", "K_N", "T_N", "M_Nm", "R_N"):
-        assert tuple(rows[col]) == pytest.approx(summ["extremes"][col])
+        e = summ.extreme(col)
+        assert tuple(rows[col]) == pytest.approx((e.max, e.alpha_max_deg, e.min,
+                                                  e.alpha_min_deg))
     for key in ("M_mean_Nm", "R_mean_N", "chi", "p_max_MPa", "pi_MPa"):
-        assert rows[key][0] == pytest.approx(summ[key])
-    assert summ["chi"] == pytest.approx(summ["extremes"]["R_N"][0] / summ["R_mean_N"])
+        assert rows[key][0] == pytest.approx(getattr(summ, key))
+    assert summ.chi == pytest.approx(summ.R_N.max / summ.R_mean_N)
 
 
 def test_plots_exist_and_are_not_empty(run):

@@ -1,17 +1,16 @@
 """Engine spec validation (every problem at once, with its key path or CSV row), mass
 models, pressure sources and the computed indicator diagram."""
 import copy
+import dataclasses
 import math
-import sys
 import subprocess
+import sys
 
 import numpy as np
 import pytest
 
 import engine
-from engine.indicator import (cycle_pressure, interpolate_periodic, sharp_cycle_pressure,
-                              theoretical_mean_pressure, volume_ratio)
-from linkage.errors import SpecError
+from crankbase.errors import SpecError
 
 BASE = {
     "engine": dict(name="t", bore_mm=110.0, stroke_mm=125.0, rod_ratio=0.272,
@@ -66,7 +65,7 @@ def one_problem(d, key, *words, **kw):
 
 def test_base_spec_derived_quantities():
     s = engine.load_spec(BASE)
-    assert s.R == pytest.approx(0.0625)
+    assert s.R == 0.0625 and s.rod_ratio == 0.272 and s.rod_length is None
     assert s.L == pytest.approx(0.0625 / 0.272)
     assert s.area == pytest.approx(math.pi * 0.11 ** 2 / 4)
     assert s.Vh == pytest.approx(s.area * 0.125)
@@ -103,18 +102,10 @@ def test_pressure_units_inline_and_periodic_interpolation():
                                [1e5, 25.5e5, 50e5, 25.5e5, 1e5, 25.5e5])
 
 
-def test_interpolate_periodic_wraps_last_to_first():
-    a = np.array([10.0, 100.0, 700.0])
-    p = np.array([1.0, 2.0, 3.0])
-    # between 700 and 730 (= 10 of the next cycle): linear from 3 to 1
-    np.testing.assert_allclose(interpolate_periodic([715.0, 0.0, 10.0, 55.0], a, p, 720),
-                               [2.0, 5 / 3, 1.0, 1.5])
-
-
 def test_repeated_end_row_is_accepted():
     d = spec_with(pressure=dict(angle_deg=[0, 360, 720], p_MPa=[0.1, 5.0, 0.1]))
     s = engine.load_spec(d)
-    assert list(s.angle_deg) == [0, 360]
+    assert list(s.pressure.angle_deg) == [0, 360]
 
 
 def test_csv_pressure_file_relative_to_spec(tmp_path):
@@ -122,7 +113,7 @@ def test_csv_pressure_file_relative_to_spec(tmp_path):
                                       "720,1,100\n")
     d = spec_with(pressure={"file": "ind.csv"})
     s = engine.load_spec(d, base_dir=tmp_path)
-    np.testing.assert_allclose(s.p, [1e5, 5e6])
+    np.testing.assert_allclose(s.pressure.p, [1e5, 5e6])
     toml = tmp_path / "e.toml"
     toml.write_text('[engine]\nbore_mm = 110\nstroke_mm = 125\nrod_ratio = 0.27\n'
                     'speed_rpm = 2000\n[masses]\nreciprocating_kg = 1\nrod_rotating_kg = 1\n'
@@ -132,20 +123,25 @@ def test_csv_pressure_file_relative_to_spec(tmp_path):
     assert s.name == "engine"
 
 
-def test_with_step():
-    s = engine.load_spec(BASE).with_step(0.1)
-    assert len(engine.force_table(s)) == 7201
+def test_table_settings_are_separate_from_the_physics():
+    study = engine.load(BASE)
+    assert study.settings == engine.TableSettings(step_deg=30.0, force_scale=500.0)
+    assert not hasattr(study.spec, "step_deg") and not hasattr(study.spec, "force_scale")
+    fine = engine.TableSettings(step_deg=0.1)
+    assert len(engine.force_table(study.spec, settings=fine)) == 7201
+    for bad in (0, -1, float("nan"), "1"):
+        with pytest.raises(SpecError) as info:
+            engine.TableSettings(step_deg=bad)
+        assert info.value.lines()[0].startswith("step_deg")
     with pytest.raises(SpecError):
-        s.with_step(0)
-    with pytest.raises(SpecError):
-        s.with_step(float("nan"))
+        engine.TableSettings(extra_angles_deg=(float("inf"),))
 
 
 def test_table_angles_include_end_and_extras():
     d = spec_with("table.step_deg", 50.0)
     d["table"]["extra_angles_deg"] = [372, 5.5, 372]
-    s = engine.load_spec(d)
-    a = engine.table_angles(s)
+    study = engine.load(d)
+    a = engine.table_angles(study.spec, study.settings)
     assert a[0] == 0 and a[-1] == 720 and 700 in a and 372 in a and 5.5 in a
     assert np.all(np.diff(a) > 0)
 
@@ -328,78 +324,6 @@ def test_compression_ratio_given_twice_differently():
     one_problem(d, "engine.compression_ratio", "give it once")
 
 
-# ----------------------------------------------------------------------- the diagram
-
-def cycle_spec(cyc, **kw):
-    return engine.load_spec(spec_with(pressure={"cycle": dict(cyc, **kw)}))
-
-
-@pytest.mark.parametrize("cyc", [OTTO, DIESEL], ids=["otto", "diesel"])
-def test_sharp_diagram_mean_pressure_equals_closed_form(cyc):
-    """Kolchin & Demidov: p′i = pc/(ε−1)·[λ(ρ−1) + λρ/(n2−1)(1 − δ^(1−n2))
-    − 1/(n1−1)(1 − ε^(1−n1))]; the numeric ∮p dV/Vh of the sharp diagram adds the pumping
-    loop −(pr − pa)."""
-    s = cycle_spec(cyc, rounding=False)
-    numeric = engine.indicated_mean_pressure(s, step_deg=0.01)
-    closed = theoretical_mean_pressure(s.cycle) - (s.cycle.pr - s.cycle.pa)
-    assert numeric == pytest.approx(closed, rel=2e-6)
-
-
-@pytest.mark.parametrize("cyc", [OTTO, DIESEL], ids=["otto", "diesel"])
-def test_sharp_diagram_points(cyc):
-    s = cycle_spec(cyc, rounding=False)
-    c = s.cycle
-    p = sharp_cycle_pressure([0, 90, 180, 359.999999, 360, 539.9999999, 540, 600], c, s.lam)
-    eps = c.compression_ratio
-    assert p[0] == c.pa and p[1] == c.pa and p[2] == pytest.approx(c.pa)
-    assert p[3] == pytest.approx(c.pa * eps ** c.n1, rel=1e-9)           # pc
-    assert p[4] == pytest.approx(c.pz)                                    # z (or z′)
-    assert p[5] == pytest.approx(c.pz * (c.rho / eps) ** c.n2, rel=1e-9)  # pb
-    assert p[6] == c.pr and p[7] == c.pr
-    vr = volume_ratio([0, 180], s.lam, eps)
-    np.testing.assert_allclose(vr, [1.0, eps])
-
-
-def test_diesel_isobaric_part():
-    s = cycle_spec(DIESEL, rounding=False)
-    a = np.linspace(360, 420, 6001)
-    vr = volume_ratio(a, s.lam, 16.0)
-    p = sharp_cycle_pressure(a, s.cycle, s.lam)
-    assert np.all(p[vr <= 1.35] == s.cycle.pz)
-    assert np.all(p[vr > 1.35] < s.cycle.pz)
-
-
-@pytest.mark.parametrize("cyc", [OTTO, DIESEL], ids=["otto", "diesel"])
-def test_rounded_diagram_rules(cyc):
-    s = cycle_spec(cyc)
-    c = s.cycle
-    a = np.arange(0, 720.0001, 0.01)
-    p = cycle_pressure(a, c, s.lam)
-    # continuous everywhere (no jumps left), peak where the rule puts it
-    assert np.max(np.abs(np.diff(p))) < 2e-3 * c.pz
-    i = int(np.argmax(p))
-    assert a[i] == pytest.approx(360 + c.peak_after_tdc_deg, abs=0.02)
-    assert p[i] == pytest.approx(c.peak_factor * c.pz, rel=1e-9)
-    at = cycle_pressure([360.0, 540.0, 360 - c.advance_deg], c, s.lam)
-    assert at[0] == pytest.approx(c.pc_factor * c.pc)
-    pb = sharp_cycle_pressure([539.99999999], c, s.lam)[0]
-    assert at[1] == pytest.approx((pb + c.pa) / 2, rel=1e-6)
-    assert at[2] == pytest.approx(sharp_cycle_pressure([360 - c.advance_deg], c, s.lam)[0])
-    # the sharp diagram is untouched outside the rounding zones
-    out = (a > 30) & (a < 300)
-    np.testing.assert_array_equal(p[out], sharp_cycle_pressure(a[out], c, s.lam))
-    # rounding removes area: the diagram fullness φп = pi/pi_sharp in (0.88, 1)
-    ratio = engine.indicated_mean_pressure(s) / engine.indicated_mean_pressure(
-        cycle_spec(cyc, rounding=False))
-    assert 0.88 < ratio < 1.0
-
-
-def test_lambda_z_instead_of_pz():
-    cyc = {k: v for k, v in OTTO.items() if k != "pz_MPa"}
-    s = cycle_spec(cyc, lambda_z=3.6)
-    assert s.cycle.pz == pytest.approx(3.6 * 0.085e6 * 8.5 ** 1.377)
-
-
 def test_importing_engine_is_light():
     code = ("import sys, engine; print('matplotlib' in sys.modules, 'openpyxl' in sys.modules,"
             " 'pandas' in sys.modules)")
@@ -408,57 +332,172 @@ def test_importing_engine_is_light():
     assert out == ["False", "False", "False"]
 
 
-from hypothesis import given, settings  # noqa: E402
-from hypothesis import strategies as st  # noqa: E402
+# ------------------------------------------------ a spec holds inputs only (issue 9)
+
+PARTS = spec_with("masses", dict(piston_group_kg=2.35, rod_kg=3.2, crank_rotating_kg=4.0),
+                  delete="engine.rod_ratio")
+PARTS["engine"]["rod_length_mm"] = 230.0
+AREA = spec_with("masses", dict(piston_group_kg_m2=250.0, rod_kg_m2=300.0,
+                                rod_small_end_fraction=0.3),
+                 pressure={"cycle": dict(OTTO)})
+DIESEL_BASE = spec_with(pressure={"cycle": dict(DIESEL)})
+TWO_STROKE = spec_with(pressure=dict(angle_deg=[0, 10, 180, 300], p_MPa=[5, 6, 0.1, 1]))
+BASES = {"direct": BASE, "parts": PARTS, "area": AREA, "diesel": DIESEL_BASE,
+         "two": TWO_STROKE}
+
+#: EngineSpec field -> (base, dict key path, value in the spec file, value in the spec).
+FIELD_EDITS = {
+    "name": ("direct", "engine.name", "other", "other"),
+    "strokes": ("two", "engine.strokes", 2, 2),
+    "cylinders": ("direct", "engine.cylinders", 6, 6),
+    "bore": ("area", "engine.bore_mm", 100.0, 0.1),
+    "stroke": ("parts", "engine.stroke_mm", 110.0, 0.11),
+    "speed_rpm": ("direct", "engine.speed_rpm", 3000.0, 3000.0),
+    "rod_ratio": ("direct", "engine.rod_ratio", 0.3, 0.3),
+    "rod_length": ("parts", "engine.rod_length_mm", 240.0, 0.24),
+    "p0": ("direct", "engine.crankcase_MPa", 0.12, 0.12e6),
+    "acceleration": ("area", "engine.acceleration", "exact", "exact"),
+    "compression_ratio": ("direct", "engine.compression_ratio", 15.0, 15.0),
+    "pin_offset": ("area", "engine.pin_offset_mm", 6.0, 0.006),
+    "reciprocating_kg": ("direct", "masses.reciprocating_kg", 2.0, 2.0),
+    "rod_rotating_kg": ("direct", "masses.rod_rotating_kg", 1.5, 1.5),
+    "piston_group_kg": ("parts", "masses.piston_group_kg", 2.0, 2.0),
+    "rod_kg": ("parts", "masses.rod_kg", 3.5, 3.5),
+    "piston_group_kg_m2": ("area", "masses.piston_group_kg_m2", 200.0, 200.0),
+    "rod_kg_m2": ("area", "masses.rod_kg_m2", 350.0, 350.0),
+    "rod_small_end_fraction": ("parts", "masses.rod_small_end_fraction", 0.3, 0.3),
+    "crank_rotating_kg": ("parts", "masses.crank_rotating_kg", 5.0, 5.0),
+    "pressure": ("direct", "pressure", dict(angle_deg=[0, 360, 380], p_MPa=[0.1, 4.0, 5.0]),
+                 engine.PressureTable((0.0, 360.0, 380.0), (1e5, 4e6, 5e6))),
+}
+#: Fields that are not physics of the table (it must not change with them).
+NOT_IN_TABLE = {"name", "cylinders", "compression_ratio", "crank_rotating_kg"}
+
+#: CycleSpec field -> (base, key in [pressure.cycle], value in the file, value in the spec).
+CYCLE_EDITS = {
+    "kind": ("area", "kind", "diesel", "diesel"),   # (a diesel needs ρ: see below)
+    "compression_ratio": ("area", "compression_ratio", 9.5, 9.5),
+    "pa": ("area", "pa_MPa", 0.09, 0.09e6),
+    "pr": ("area", "pr_MPa", 0.12, 0.12e6),
+    "n1": ("area", "n1", 1.36, 1.36),
+    "n2": ("area", "n2", 1.26, 1.26),
+    "pz_input": ("area", "pz_MPa", 6.5, 6.5e6),
+    "lambda_z_input": ("area", "lambda_z", 3.4, 3.4),
+    "rho": ("diesel", "rho", 1.4, 1.4),
+    "rounding": ("area", "rounding", False, False),
+    "advance_deg": ("area", "advance_deg", 25.0, 25.0),
+    "pc_factor": ("area", "pc_factor", 1.25, 1.25),
+    "peak_factor": ("area", "peak_factor", 0.8, 0.8),
+    "peak_after_tdc_deg": ("area", "peak_after_tdc_deg", 10.0, 10.0),
+    "exhaust_opening_deg": ("area", "exhaust_opening_deg", 45.0, 45.0),
+    "intake_opening_deg": ("area", "intake_opening_deg", 15.0, 15.0),
+    "exhaust_closing_deg": ("area", "exhaust_closing_deg", 25.0, 25.0),
+}
+
+ANGLES = np.arange(0.0, 720.0, 2.5)
 
 
-@settings(max_examples=30, deadline=None)
-@given(kind=st.sampled_from(["otto", "diesel"]), eps=st.floats(6.0, 22.0),
-       pa=st.floats(0.07, 0.12), pr=st.floats(0.1, 0.13), n1=st.floats(1.3, 1.4),
-       n2=st.floats(1.18, 1.3), lam_z=st.floats(1.3, 4.5), rho=st.floats(1.1, 1.7),
-       lam=st.floats(0.2, 0.35))
-def test_random_cycles(kind, eps, pa, pr, n1, n2, lam_z, rho, lam):
-    """Random thermal-calculation data: the sharp diagram's ∮p dV matches the closed
-    form; the rounded one is continuous, positive, peaks where the rule says, and keeps
-    nearly the same area."""
-    cyc = dict(kind=kind, compression_ratio=eps, pa_MPa=pa, pr_MPa=pr, n1=n1, n2=n2,
-               lambda_z=lam_z)
-    if kind == "diesel":
-        cyc["rho"] = rho
-    d = spec_with("engine.rod_ratio", lam, pressure={"cycle": dict(cyc, rounding=False)})
-    sharp = engine.load_spec(d)
-    c = sharp.cycle
-    closed = theoretical_mean_pressure(c) - (c.pr - c.pa)
-    assert engine.indicated_mean_pressure(sharp, 0.01) == pytest.approx(closed, rel=1e-5)
-    d["pressure"]["cycle"]["rounding"] = True
-    try:
-        rounded = engine.load_spec(d)
-    except SpecError as exc:          # a peak below pc''·pc is refused, by key
-        assert exc.lines()[0].startswith("pressure.cycle.peak_factor")
-        return
-    a = np.arange(0, 720.0001, 0.05)
-    p = cycle_pressure(a, rounded.cycle, rounded.lam)
-    assert np.all(p > 0) and np.all(np.isfinite(p))
-    assert np.max(np.abs(np.diff(p))) < 0.01 * c.pz
-    assert a[int(np.argmax(p))] == pytest.approx(360 + rounded.cycle.peak_after_tdc_deg,
-                                                 abs=0.06)
-    # rounding changes the area only a little (it usually removes some: φп < 1)
-    ratio = engine.indicated_mean_pressure(rounded) / engine.indicated_mean_pressure(sharp)
-    assert 0.8 < ratio < 1.02
+def _tables_equal(a, b):
+    import pandas as pd
+    pd.testing.assert_frame_equal(engine.force_table(a, ANGLES),
+                                  engine.force_table(b, ANGLES), check_exact=True)
 
 
-def test_rounded_peak_must_lie_inside_the_sharp_diagram():
-    cyc = {k: v for k, v in OTTO.items() if k != "pz_MPa"}
-    line = one_problem(spec_with(pressure={"cycle": dict(cyc, compression_ratio=14.0,
-                                                         lambda_z=2.0)}),
-                       "pressure.cycle.peak_factor", "above the expansion line")
-    assert "372°" in line
-    # the same data unrounded are fine
-    engine.load_spec(spec_with(pressure={"cycle": dict(cyc, compression_ratio=14.0,
-                                                       lambda_z=2.0, rounding=False)}))
+def test_every_input_field_is_covered():
+    names = {f.name for f in dataclasses.fields(engine.EngineSpec)}
+    assert names - {"source_path"} == set(FIELD_EDITS)
+    assert {f.name for f in dataclasses.fields(engine.CycleSpec)} == set(CYCLE_EDITS)
 
 
-def test_rounding_needs_the_isobaric_part_inside_its_zone():
-    one_problem(spec_with(pressure={"cycle": dict(DIESEL, compression_ratio=22.0, rho=3.5,
-                                                  pz_MPa=9.0)}),
-                "pressure.cycle.peak_factor", "isobaric")
+@pytest.mark.parametrize("field", list(FIELD_EDITS))
+def test_replace_any_input_gives_the_table_of_the_edited_file(field):
+    """dataclasses.replace(spec, field=v) == load_spec(file with the key edited): the
+    same spec and the same table; nothing derived is stored, so nothing goes stale."""
+    base, path, file_value, spec_value = FIELD_EDITS[field]
+    d = copy.deepcopy(BASES[base])
+    old = engine.load_spec(d)
+    *head, last = path.split(".")
+    node = d
+    for k in head:
+        node = node[k]
+    node[last] = file_value
+    edited = engine.load_spec(d)
+    replaced = dataclasses.replace(old, **{field: spec_value})
+    assert replaced == edited and replaced != old
+    _tables_equal(replaced, edited)
+    assert engine.indicated_mean_pressure(replaced) == engine.indicated_mean_pressure(edited)
+    changed = not engine.force_table(old, ANGLES).equals(engine.force_table(replaced, ANGLES))
+    assert changed == (field not in NOT_IN_TABLE)
+
+
+@pytest.mark.parametrize("field", list(CYCLE_EDITS))
+def test_replace_any_cycle_input_gives_the_table_of_the_edited_file(field):
+    base, key, file_value, spec_value = CYCLE_EDITS[field]
+    d = copy.deepcopy(BASES[base])
+    old = engine.load_spec(d)
+    cyc = d["pressure"]["cycle"]
+    cyc[key] = file_value
+    change = {field: spec_value}
+    if field == "lambda_z_input":                 # λz replaces pz: one of the two
+        del cyc["pz_MPa"]
+        change["pz_input"] = None
+    if field == "kind":                           # a diesel (mixed) cycle needs ρ
+        cyc["rho"] = change["rho"] = 1.15
+    edited = engine.load_spec(d)
+    replaced = dataclasses.replace(old, pressure=dataclasses.replace(old.pressure, **change))
+    assert replaced == edited and replaced != old
+    _tables_equal(replaced, edited)
+    assert not engine.force_table(old, ANGLES).equals(engine.force_table(replaced, ANGLES))
+
+
+def test_replace_the_pressure_file(tmp_path):
+    (tmp_path / "a.csv").write_text("angle_deg,p_MPa\n0,0.1\n360,5\n")
+    (tmp_path / "b.csv").write_text("angle_deg,p_bar\n0,1\n370,60\n")
+    d = spec_with(pressure={"file": "a.csv"})
+    old = engine.load_spec(d, base_dir=tmp_path)
+    d["pressure"]["file"] = "b.csv"
+    edited = engine.load_spec(d, base_dir=tmp_path)
+    new = engine.read_pressure_csv(tmp_path / "b.csv", old.cycle_deg)
+    replaced = dataclasses.replace(old, pressure=new)
+    assert replaced == edited and replaced.pressure_file == (tmp_path / "b.csv").resolve()
+    _tables_equal(replaced, edited)
+
+
+def test_issue_9_new_user_check():
+    """The report of issue 9: Pj stayed −11460.7 N at both speeds.  Now it follows n²."""
+    from crankbase.resources import example_path
+    spec = engine.load_spec(example_path("petrol_vaz2106.toml"))
+    pj = engine.force_table(spec, [0.0])["Pj_N"].iloc[0]
+    assert pj == pytest.approx(-11460.7, abs=0.05)
+    slow = dataclasses.replace(spec, speed_rpm=2700.0)
+    assert engine.force_table(slow, [0.0])["Pj_N"].iloc[0] == pytest.approx(pj / 4, rel=1e-12)
+    assert slow.omega == pytest.approx(2700 * math.pi / 30)
+
+
+@pytest.mark.parametrize("change,key", [
+    (dict(speed_rpm=-1.0), "speed_rpm"),
+    (dict(bore=float("nan")), "bore"),
+    (dict(rod_ratio=1.2), "rod_ratio"),
+    (dict(rod_length=0.2), "rod_ratio"),            # both given
+    (dict(acceleration="three-term"), "acceleration"),
+    (dict(strokes=3), "strokes"),
+    (dict(pin_offset=0.5), "pin_offset"),
+    (dict(reciprocating_kg=None), "reciprocating_kg"),
+    (dict(reciprocating_kg=None, rod_rotating_kg=None), "masses"),
+    (dict(piston_group_kg=2.0), "masses"),           # two ways
+    (dict(rod_rotating_kg=-1.0), "rod_rotating_kg"),
+    (dict(pressure=None), "pressure"),
+])
+def test_replace_with_a_bad_value_is_refused_by_name(change, key):
+    spec = engine.load_spec(BASE)
+    with pytest.raises(SpecError) as info:
+        dataclasses.replace(spec, **change)
+    assert isinstance(info.value, engine.EngineSpecError)
+    assert info.value.lines()[0].startswith(key)
+
+
+def test_pin_offset_in_the_spec_file():
+    s = engine.load_spec(spec_with("engine.pin_offset_mm", -4.0))
+    assert s.pin_offset == -0.004 and s.k_offset == pytest.approx(-0.004 / 0.0625)
+    one_problem(spec_with("engine.pin_offset_mm", 200.0), "engine.pin_offset_mm",
+                "Lш − R")

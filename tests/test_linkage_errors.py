@@ -66,7 +66,7 @@ def test_change_point_is_accepted_analysed_and_warned(name):
     assert all(issubclass(w.category, linkage.SingularPositionWarning) for w in rec)
     assert len(res.warnings) >= 1
     assert "change-point" in res.warnings[0]
-    got = sorted(float(x) % 360.0 for x in res.summary["singular_phi_deg"])
+    got = sorted(float(x) % 360.0 for x in res.summary.singular_phi_deg)
     np.testing.assert_allclose(got, sorted(singular), atol=1e-9)
     for a in singular:  # the warning names each singular crank angle
         assert f"{a:.6g}°" in res.warnings[0]
@@ -81,9 +81,9 @@ def test_change_point_is_accepted_analysed_and_warned(name):
         got = k[c] if c in k else res.forces[c]
         assert rel_err(got, ref[c], max(np.max(np.abs(ref[c])), 1.0)) <= 1e-9, c
     if data["mechanism"]["kind"] == "crank-slider":
-        assert res.summary["grashof"] == "change-point"
+        assert res.summary.grashof == "change-point"
     else:
-        assert "CHANGE" in str(res.summary["grashof"]).upper()
+        assert "CHANGE" in str(res.summary.grashof).upper()
 
 
 @pytest.mark.parametrize("name", list(CHANGE_POINTS))
@@ -130,10 +130,10 @@ def test_change_point_slider_has_a_plan_of_positions():
     with pytest.warns(linkage.SingularPositionWarning):
         res = linkage.analyze(data)
     assert len(res.kinematics) == 12
-    assert res.summary["phi_working_start_deg"] % 360 == pytest.approx(290.0, abs=1e-9)
+    assert res.summary.phi_working_start_deg % 360 == pytest.approx(290.0, abs=1e-9)
     l1, l2, e = 0.1, 0.15, 0.05
     stroke = math.sqrt((l1 + l2) ** 2 - e * e) - math.sqrt(max((l2 - l1) ** 2 - e * e, 0))
-    assert res.summary["stroke_m"] == pytest.approx(stroke, rel=1e-9)
+    assert res.summary.stroke_m == pytest.approx(stroke, rel=1e-9)
     assert res.kinematics["v4_m_s"].iloc[1] > 0
 
 
@@ -143,7 +143,7 @@ def test_regular_mechanism_has_no_warning():
         res = linkage.analyze(loaded_rocker())
         res2 = linkage.analyze(loaded_slider())
     assert res.warnings == [] and res2.warnings == []
-    assert res.summary["singular_phi_deg"] == [] == res2.summary["singular_phi_deg"]
+    assert res.summary.singular_phi_deg == [] == res2.summary.singular_phi_deg
 
 
 # ------------------------------------------------------------------ assembly
@@ -348,7 +348,7 @@ def test_statics_is_accepted_at_explicit_angles(make):
     assert rates and np.all(k[rates].to_numpy(float) == 0.0)
     fu = [c for c in f.columns if c.startswith(("Fu", "Mu"))]
     assert np.all(f[fu].to_numpy(float) == 0.0)
-    assert res.summary["rotation"] == "none (statics)" and res.extremes is None
+    assert res.summary.rotation == "none (statics)" and res.extremes is None
     slow = dict(d, mechanism=dict(d["mechanism"], omega_rad_s=1e-4))
     ref = linkage.analyze(slow).forces
     scale = np.max(np.abs(f["M_drive_Nm"].to_numpy(float)))

@@ -380,10 +380,10 @@ def test_extremes_and_plan_of_positions(name):
     assert _col(k, rate)[-1] * wsign < 0  # and before it, in the idle stroke
     # summary: the extreme crank angles and K = working / idle crank rotation
     s = res.summary
-    assert s["phi_working_start_deg"] == pytest.approx(_col(ex, "phi_deg")[0], abs=1e-9)
-    work = (rot * (s["phi_working_end_deg"] - s["phi_working_start_deg"])) % 360.0
-    assert s["working_crank_angle_deg"] == pytest.approx(work, abs=1e-9)
-    assert s["time_ratio"] == pytest.approx(work / (360.0 - work), rel=1e-12)
+    assert s.phi_working_start_deg == pytest.approx(_col(ex, "phi_deg")[0], abs=1e-9)
+    work = (rot * (s.phi_working_end_deg - s.phi_working_start_deg)) % 360.0
+    assert s.working_crank_angle_deg == pytest.approx(work, abs=1e-9)
+    assert s.time_ratio == pytest.approx(work / (360.0 - work), rel=1e-12)
 
 
 def test_ratchet_swing_and_time_ratio():
@@ -394,19 +394,19 @@ def test_ratchet_swing_and_time_ratio():
     K = (180° + θ)/(180° − θ) with θ the angle between the two lines OB."""
     res = linkage.analyze(ratchet_data())
     s = res.summary
-    assert round(s["swing_deg"], 1) == 68.4           # domain.md §2: swing 68.4°
-    assert round(s["time_ratio"], 3) == 1.138         # domain.md §2: K = 1.138
+    assert round(s.swing_deg, 1) == 68.4           # domain.md §2: swing 68.4°
+    assert round(s.time_ratio, 3) == 1.138         # domain.md §2: K = 1.138
     l1, l2, l3, l0 = 0.175, 0.55, 0.325, 0.54
     c_at = {d: math.acos((l0 ** 2 + l3 ** 2 - d * d) / (2 * l0 * l3)) for d in (l1 + l2, l2 - l1)}
     o_at = {d: math.acos((l0 ** 2 + d * d - l3 ** 2) / (2 * l0 * d)) for d in (l1 + l2, l2 - l1)}
     swing = math.degrees(c_at[l1 + l2] - c_at[l2 - l1])
     theta = math.degrees(o_at[l2 - l1] - o_at[l1 + l2])
-    assert s["swing_deg"] == pytest.approx(swing, rel=1e-9)
-    assert s["time_ratio"] == pytest.approx((180 + theta) / (180 - theta), rel=1e-9)
+    assert s.swing_deg == pytest.approx(swing, rel=1e-9)
+    assert s.time_ratio == pytest.approx((180 + theta) / (180 - theta), rel=1e-9)
     # B above the line of centres (assembly +1): the working start (rocker turning ccw
     # next) is the extended position, at crank angle = the angle of OB there
-    assert s["phi_working_start_deg"] == pytest.approx(math.degrees(o_at[l1 + l2]), abs=1e-7)
-    assert s["phi_working_end_deg"] == pytest.approx(180 + math.degrees(o_at[l2 - l1]),
+    assert s.phi_working_start_deg == pytest.approx(math.degrees(o_at[l1 + l2]), abs=1e-7)
+    assert s.phi_working_end_deg == pytest.approx(180 + math.degrees(o_at[l2 - l1]),
                                                      abs=1e-7)
 
 
@@ -426,8 +426,8 @@ def test_transmission_angle_formula_crank_rocker(name):
     cmu = (L2 ** 2 + L3 ** 2 - L1 ** 2 - 1 + 2 * L1 * np.cos(phi)) / (2 * L2 * L3)
     want = np.degrees(np.arccos(np.abs(cmu)))
     np.testing.assert_allclose(_col(res.kinematics, "mu_deg"), want, rtol=0, atol=1e-9)
-    assert res.summary["mu_min_deg"] == pytest.approx(want.min(), abs=0.5)
-    assert res.summary["mu_min_deg"] <= want.min() + 1e-9
+    assert res.summary.mu_min_deg == pytest.approx(want.min(), abs=0.5)
+    assert res.summary.mu_min_deg <= want.min() + 1e-9
 
 
 @pytest.mark.parametrize("name", list(SLIDERS))

@@ -131,43 +131,8 @@ def test_hand_solution_piston_force_at_90_degrees():
         assert f["R23_t_N"] == pytest.approx(0.0, abs=1e-9)
 
 
-# -- the group routines themselves (linkage.groups via analysis.solve_columns): analyze()
-#    runs a fused kernel that mirrors them, so both paths are held against the reference
-
-
-class _Frame(dict):
-    """Column dict with the DataFrame-ish access compare() needs."""
-
-    @property
-    def columns(self):
-        return list(self.keys())
-
-    def __getitem__(self, c):
-        return _Arr(dict.__getitem__(self, c))
-
-
-class _Arr(np.ndarray):
-    def __new__(cls, a):
-        return np.asarray(a).view(cls)
-
-    def to_numpy(self, dtype=float):
-        return np.asarray(self, dtype)
-
-
-class _Res:
-    def __init__(self, kin, frc):
-        self.kinematics, self.forces = _Frame(kin), _Frame(frc)
-
-
-def group_by_group(data, phi_deg):
-    """The readable group-routine path: driver → dyad kinematics, dyad → driver forces."""
-    from linkage.analysis import build_mechanism, solve_columns
-    spec = linkage.load_spec(data)
-    mech = build_mechanism(spec)
-    rot = 1 if spec.omega > 0 else -1
-    ext = mech.extremes(rot, spec.working_stroke) if spec.working_stroke else None
-    kin, frc = solve_columns(spec, np.radians(np.asarray(phi_deg, float)), mech, ext)
-    return _Res(kin, frc)
+# -- the group routines over cache-sized chunks (linkage.analyze, the one implementation):
+#    other branches, clockwise rotation, ε ≠ 0, offsets, and more positions than one chunk
 
 
 @pytest.mark.parametrize("make", [
@@ -179,11 +144,28 @@ def group_by_group(data, phi_deg):
 def test_group_routines_match_global_newton_euler(make):
     data = make()
     phi = np.linspace(0.0, 360.0, 73)[:-1] + 0.37
-    assert compare(data, group_by_group(data, phi)) > 40
-    # and the fused kernel of analyze() agrees with the group routines
-    res = linkage.analyze(data, crank_angles_deg=phi)
-    grp = group_by_group(data, phi)
-    for df, g in ((res.kinematics, grp.kinematics), (res.forces, grp.forces)):
-        for c in g.columns:
-            a, b = df[c].to_numpy(float), g[c].to_numpy(float)
-            assert np.max(np.abs(a - b)) <= 1e-12 * max(np.max(np.abs(b)), 1.0), c
+    assert compare(data, linkage.analyze(data, crank_angles_deg=phi)) > 40
+
+
+def test_positions_across_chunk_boundaries_match_global_newton_euler():
+    """analyze evaluates the group routines over chunks of CHUNK positions: rows on both
+    sides of every boundary (and a short last chunk) are held against the reference."""
+    from linkage.analysis import CHUNK
+    data = loaded_slider(offset=0.01)
+    phi = np.linspace(-30.0, 700.0, 2 * CHUNK + 5)
+    assert compare(data, linkage.analyze(data, crank_angles_deg=phi)) > 40
+
+
+@pytest.mark.parametrize("stroke", ["idle", "both"])
+@pytest.mark.parametrize("make", [loaded_rocker, loaded_slider])
+def test_resistance_in_other_strokes_matches_global_newton_euler(make, stroke):
+    """The judge's own rule (strokes as crank-angle intervals between the extreme
+    positions) against the library's, for a resistance in the idle stroke and in both."""
+    data = make()
+    for ld in data["load"]:
+        if "resistance_Nm" in ld or "resistance_N" in ld:
+            ld["stroke"] = stroke
+    res = linkage.analyze(data, crank_angles_deg=np.linspace(0.0, 360.0, 145)[:-1] + 0.21)
+    col = "M_res_Nm" if "M_res_Nm" in res.forces else "F_res_N"
+    assert np.count_nonzero(res.forces[col].to_numpy()) > 10
+    assert compare(data, res) > 40

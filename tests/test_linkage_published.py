@@ -257,9 +257,9 @@ def test_sereda_kkm30_design_example_minimum_transmission_angle():
                           "rocker": 0.24, "ground": 1.0, "omega_rad_s": 1.0},
             "analysis": {"crank_angles_deg": [180.0]}}
     res = linkage.analyze(data)
-    assert 46.2 <= res.summary["mu_min_deg"] <= 46.4                       # printed 46°16′
-    assert res.summary["mu_min_phi_deg"] == pytest.approx(180.0, abs=0.01)
-    assert res.kinematics["mu_deg"].iloc[0] == pytest.approx(res.summary["mu_min_deg"],
+    assert 46.2 <= res.summary.mu_min_deg <= 46.4                       # printed 46°16′
+    assert res.summary.mu_min_phi_deg == pytest.approx(180.0, abs=0.01)
+    assert res.kinematics["mu_deg"].iloc[0] == pytest.approx(res.summary.mu_min_deg,
                                                              abs=1e-6)
 
 
@@ -305,7 +305,7 @@ def test_seed000_table_4_1_force_inputs_of_the_crank_and_weights():
     Fu2 = 369,76 / 369,16 N (read off its acceleration plans, hence 0.2 % apart).  The crank
     quantities do not depend on the ground length OC that the source leaves out:
     aS2 = ω²·lOS2 = 17²·0.08 = 23.12 m/s², Fu2 = m2·aS2 = 369.92 N at every position."""
-    from crankdyn.resources import example_path
+    from crankbase.resources import example_path
 
     res = linkage.analyze(example_path("ratchet.toml"))
     k, f = res.kinematics, res.forces

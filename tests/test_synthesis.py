@@ -18,7 +18,9 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 import linkage
+from linkage import fourbar
 from linkage import synthesis as syn
+from linkage.fourbar import GeometryError
 from linkage.synthesis import (GrashofType, SynthesisError, crank_length_for_right_angle,
                                design_equal_l2_l3, design_for_mu_min, design_from_l2_l3,
                                existence_region, grashof, kolchin_line_points, l1_max,
@@ -245,7 +247,7 @@ def test_region_boundary_has_dead_positions():
         for l1, l2, l3 in zip(reg.curve_l1[1:-1], reg.curve_l2[1:-1], reg.curve_l3[1:-1]):
             # |cos μ| = 1 at the dead position (arccos near 1 would amplify rounding)
             at = 180.0 if phi0 <= 90 else 0.0
-            assert abs(syn._cos_mu(at, l1, l2, l3)) == pytest.approx(1.0, abs=1e-12)
+            assert abs(fourbar._cos_mu(at, l1, l2, l3)) == pytest.approx(1.0, abs=1e-12)
             assert grashof(l1, l2, l3) is GrashofType.CHANGE_POINT or \
                 min(syn._kolchin_residuals(l1, l2, l3)) > -1e-12
         np.testing.assert_allclose(np.hypot(reg.arc_l2, reg.arc_l3), 1.0, atol=1e-15)
@@ -307,7 +309,7 @@ def test_grashof_change_point_tolerance():
 
 
 def test_grashof_errors():
-    with pytest.raises(SynthesisError) as e:
+    with pytest.raises(GeometryError) as e:
         grashof(-1, 0.5, float("nan"))
     assert isinstance(e.value, ValueError)
     lines = e.value.lines()
@@ -341,7 +343,7 @@ def test_errors_name_the_argument_value_and_what_is_valid():
         design_for_mu_min(0.9, 40.0, l1_step=0.1)
     with pytest.raises(SynthesisError, match=r"not a member"):
         syn.design(0.1, 0.7, 0.6)
-    with pytest.raises(SynthesisError, match=r"crank cannot turn fully"):
+    with pytest.raises(GeometryError, match=r"crank cannot turn fully"):
         min_transmission_angle_deg(0.5, 0.6, 0.7)
     with pytest.raises(SynthesisError, match=r"ground_m"):
         to_spec(0.1, 0.7, 0.6, 0.0)
@@ -378,8 +380,8 @@ def test_paper_example_through_the_core():
     mu = res.kinematics["mu_deg"].to_numpy()
     assert mu[0] == pytest.approx(90.0, abs=1e-9) and mu[2] == pytest.approx(90.0, abs=1e-9)
     assert mu[1] == pytest.approx(d.mu_min_deg, abs=1e-9)            # 66°2′, seed 004
-    assert res.summary["mu_min_deg"] == pytest.approx(d.mu_min_deg, abs=1e-9)
-    assert res.summary["grashof"] == "crank-rocker"
+    assert res.summary.mu_min_deg == pytest.approx(d.mu_min_deg, abs=1e-9)
+    assert res.summary.grashof == "crank-rocker"
 
 
 def test_boundary_member_is_a_change_point_in_the_core():
@@ -389,8 +391,8 @@ def test_boundary_member_is_a_change_point_in_the_core():
         warnings.simplefilter("always")
         res = linkage.analyze(to_spec(0.1, l2, l3, 1.0), crank_angles_deg=[30.0, 90.0])
     assert res.kinematics["mu_deg"].iloc[0] == pytest.approx(90.0, abs=1e-9)
-    assert res.summary["grashof"] == "change-point"
-    assert res.summary["singular_phi_deg"] == [pytest.approx(180.0)]
+    assert res.summary.grashof == "change-point"
+    assert res.summary.singular_phi_deg == [pytest.approx(180.0)]
 
 
 phi0s = st.floats(1.0, 179.0)
@@ -435,8 +437,8 @@ def test_property_round_trip_through_core(phi0, frac, t, ground):
     assert mu[0] == pytest.approx(90.0, abs=1e-9)
     assert mu[2] == pytest.approx(90.0, abs=1e-9)
     assert mu[1] == pytest.approx(mu_min, abs=1e-9)
-    assert res.summary["mu_min_deg"] == pytest.approx(mu_min, abs=1e-9)
-    assert res.summary["grashof"] == "crank-rocker"
+    assert res.summary.mu_min_deg == pytest.approx(mu_min, abs=1e-9)
+    assert res.summary.grashof == "crank-rocker"
 
 
 @settings(max_examples=100, deadline=None)

@@ -1,6 +1,6 @@
-"""Typed errors of crankdyn.
+"""Typed errors of crankdyn: the one hierarchy that every package raises and the CLI catches.
 
-Every error is a :class:`ValueError` subclass, so a caller may catch the built-in
+Every error is a :class:`CrankdynError`, itself a :class:`ValueError` subclass, so a caller may catch the built-in
 generically.  A :class:`SpecError` carries *all* the problems found in one spec at once,
 each naming the key path, the bad value and what would be valid; the CLI prints them one
 per line and exits with status 2.
@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-__all__ = ["Problem", "SpecError", "AssemblyError", "CrankdynError"]
+__all__ = ["Problem", "SpecError", "AssemblyError", "OutputError", "CrankdynError"]
 
 
 class CrankdynError(ValueError):
@@ -66,3 +66,8 @@ class AssemblyError(CrankdynError):
         self.reason = reason
         self.crank_angles_deg = [float(a) for a in crank_angles_deg]
         super().__init__(reason)
+
+
+class OutputError(CrankdynError):
+    """An output cannot be written safely: it would overwrite an input, holds a non-finite
+    number, or the file system refused it (the path and the reason are in the message)."""

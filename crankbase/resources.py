@@ -1,7 +1,7 @@
 """Locate files shipped with crankdyn (Excel templates, bundled examples).
 
 The top-level folders ``templates/`` and ``examples/`` are installed as the packages
-``crankdyn.templates`` and ``crankdyn.examples`` (see ``pyproject.toml``), so the same
+``crankbase.templates`` and ``crankbase.examples`` (see ``pyproject.toml``), so the same
 lookup works from a plain wheel install and from an editable install.
 """
 from __future__ import annotations
@@ -14,7 +14,7 @@ __all__ = ["template_path", "example_path", "list_examples"]
 
 #: Source-tree folder of each resource package (used when Python runs from a checkout
 #: whose own ``crankdyn`` folder shadows the installed one).
-_SOURCE_DIRS = {"crankdyn.templates": "templates", "crankdyn.examples": "examples"}
+_SOURCE_DIRS = {"crankbase.templates": "templates", "crankbase.examples": "examples"}
 
 
 def _folder(package: str):
@@ -40,15 +40,15 @@ def _resource(package: str, name: str) -> Path:
 
 def template_path(name: str) -> Path:
     """Path of an Excel template shipped in ``templates/``."""
-    return _resource("crankdyn.templates", name)
+    return _resource("crankbase.templates", name)
 
 
 def example_path(name: str) -> Path:
     """Path of a bundled example spec or data file in ``examples/``."""
-    return _resource("crankdyn.examples", name)
+    return _resource("crankbase.examples", name)
 
 
 def list_examples(suffix: str = ".toml") -> list[str]:
     """Names of the bundled example files with the given suffix."""
-    return sorted(p.name for p in _folder("crankdyn.examples").iterdir()
+    return sorted(p.name for p in _folder("crankbase.examples").iterdir()
                   if p.name.endswith(suffix))

@@ -2,7 +2,7 @@
 
 A :class:`Checker` walks a nested dict read from TOML and collects *all* problems, each
 with its dotted key path, the bad value and what is valid; :meth:`Checker.raise_if_any`
-raises one :class:`~linkage.errors.SpecError` holding them.  Unknown keys are problems.
+raises one :class:`~crankbase.errors.SpecError` holding them.  Unknown keys are problems.
 """
 from __future__ import annotations
 

@@ -13,12 +13,10 @@ from pathlib import Path
 
 import numpy as np
 
+from .errors import OutputError
+
 __all__ = ["atomic_path", "staged_output", "write_csv", "check_not_input", "ensure_finite",
-           "full_precision_xlsx", "OutputError"]
-
-
-class OutputError(ValueError):
-    """An output cannot be written safely (it would overwrite an input, or holds NaN)."""
+           "full_precision_xlsx", "safe_name", "save_figure", "OutputError"]
 
 
 @contextlib.contextmanager
@@ -127,3 +125,28 @@ def full_precision_xlsx():
         yield
     finally:
         _writer.safe_string = original
+
+
+def safe_name(name: str, default: str = "report") -> str:
+    """A file-name stem from a spec's name: letters (any script), digits, ``_``, ``.`` and
+    ``-`` kept, every other run of characters replaced by ``_``; ``default`` if nothing is
+    left.  The full name stays inside the report."""
+    import re
+
+    return re.sub(r"[^\w.-]+", "_", name).strip("._") or default
+
+
+def save_figure(fig, stem, formats=("png", "svg"), dpi=110, tight=False) -> list[Path]:
+    """Save a matplotlib figure as ``stem.<fmt>`` for each format, each file atomically.
+
+    ``stem`` is a path without suffix.  ``tight`` crops to the drawn content (keeps a
+    legend placed outside the axes inside the image).  Returns the paths written.
+    """
+    paths = []
+    extra = {"bbox_inches": "tight", "pad_inches": 0.15} if tight else {}
+    for fmt in formats:
+        path = Path(f"{stem}.{fmt}")
+        with atomic_path(path) as tmp:
+            fig.savefig(tmp, format=fmt, dpi=dpi, **extra)
+        paths.append(path)
+    return paths

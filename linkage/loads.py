@@ -1,0 +1,152 @@
+"""External loads of a mechanism spec at every position: applied forces and moments, and
+the useful resistance (the one implementation of its rule).
+
+A useful resistance (``[[load]] resistance_Nm`` on the rocker, ``resistance_N`` on the
+slider) always opposes the motion of its link, acts only while the link moves in the
+load's stroke (``"working"``, ``"idle"`` or ``"both"``), and, with a ``span``, only while
+the swing (travel) from the start of that stroke is within the span.  This is the
+resistance of the course projects: e.g. a constant moment Mпс on the rocker of a ratchet
+drive during the first τ radians of the working stroke (seed 000 of this project,
+ч. 1: "момент полезного сопротивления").
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from crankbase.tolerances import AT_REST_RTOL, ROUNDOFF_RTOL
+
+from .groups import Vec
+
+__all__ = ["StrokeCycle", "stroke_cycle", "resistance", "external_loads"]
+
+
+@dataclass(frozen=True)
+class StrokeCycle:
+    """What the resistance rule needs to know of the cycle.
+
+    Attributes
+    ----------
+    working_sign : {+1, -1}
+        Sign of the output rate (ω4, or the slider velocity along the guide direction) in
+        the working stroke.
+    start_working, start_idle : float
+        Output coordinate (rocker angle θ4 [rad], or slider position s4 [m]) at the start
+        of the working and of the idle stroke (the two extreme positions).
+    rocker : bool
+        True for a rocker (the coordinate is an angle, wrapped), False for a slider.
+    at_rest : float
+        |rate| at or below which the output counts as at rest (AT_REST_RTOL of |ω2|, or
+        of |ω2|·|OA| for a slider). [rad/s] or [m/s]
+    """
+
+    working_sign: int
+    start_working: float | None
+    start_idle: float | None
+    rocker: bool
+    at_rest: float
+
+    def travel(self, coord, working):
+        """Swing [rad] (wrapped, in [0, π]) or travel [m] of the output from the start
+        of the current stroke (``working``: True in the working stroke)."""
+        d = np.abs(coord - np.where(working, self.start_working, self.start_idle))
+        if self.rocker:   # |angle of e^{iΔθ}| = min(|Δθ|, 2π − |Δθ|) for |Δθ| ≤ 2π
+            d = np.minimum(d, 2.0 * math.pi - d)
+        return d
+
+
+def stroke_cycle(mech, spec, ext) -> StrokeCycle:
+    """The cycle data of the resistance rule for a mechanism and its spec.
+
+    ``ext`` is the mechanism's :class:`~linkage.mechanisms.Extremes` (None in statics or
+    for an output that turns fully); without it, or without ``working_stroke`` in the
+    spec, the strokes are not known and a resistance acts whenever its link moves (only
+    ``stroke = "both"`` is valid then)."""
+    rocker = spec.kind == "crank-rocker"
+    at_rest = AT_REST_RTOL * abs(spec.omega) * (1.0 if rocker else spec.crank)
+    if spec.working_stroke is None or ext is None:
+        return StrokeCycle(1, None, None, rocker, at_rest)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ek = mech.kinematics(np.array([ext.phi_start, ext.phi_end]), spec.omega, 0.0)
+    c = mech.output_coordinate(ek)
+    return StrokeCycle(mech._working_sign(spec.working_stroke), float(c[0]), float(c[1]),
+                       rocker, at_rest)
+
+
+def resistance(value, stroke, span, rate, coord, cycle: StrokeCycle):
+    """The useful resistance at every position: ``−sign(rate)·value`` where it acts, else 0.
+
+    Parameters
+    ----------
+    value : float
+        Magnitude of the resistance (moment [N·m] on a rocker, force [N] on a slider).
+    stroke : {"working", "idle", "both"}
+        The stroke in which it acts.
+    span : float or None
+        It acts only while the output's swing [rad] or travel [m] from the start of that
+        stroke is at most ``span`` (None: the whole stroke).
+    rate, coord : ndarray
+        Output rate (ω4 [rad/s] or slider velocity [m/s] along the guide direction) and
+        coordinate (θ4 [rad] or s4 [m]) at every position.
+    cycle : StrokeCycle
+
+    Returns
+    -------
+    ndarray
+        The resistance, + ccw (rocker) or + along the guide direction (slider).
+    """
+    moving = np.abs(rate) > cycle.at_rest
+    if cycle.start_working is None:        # strokes unknown: "both"
+        active = moving
+        working = None
+    else:
+        working = rate * cycle.working_sign > 0
+        active = moving & {"working": working, "idle": ~working, "both": True}[stroke]
+        if span is not None:
+            active = active & (cycle.travel(coord, working) <= span * (1.0 + ROUNDOFF_RTOL))
+    return np.where(active, -np.sign(rate) * value, 0.0)
+
+
+def external_loads(spec, mech, kin, cycle: StrokeCycle):
+    """Applied forces and moments of a spec on every link at the positions of ``kin``.
+
+    Parameters
+    ----------
+    spec : MechanismSpec
+    mech : CrankRocker or CrankSlider
+    kin : dict
+        :meth:`~linkage.mechanisms.CrankRocker.kinematics` at the positions.
+    cycle : StrokeCycle
+
+    Returns
+    -------
+    forces : dict
+        link name → list of (force [N], global point [m]) as :class:`~linkage.groups.Vec`.
+    moments : dict
+        link name → list of moments [N·m], + ccw.
+    res : ndarray or float
+        The sum of the useful resistances (rocker: moment [N·m]; slider: force along the
+        guide direction [N]); 0.0 without one.
+    """
+    forces = {n: [] for n in spec.link_names}
+    moments = {n: [] for n in spec.link_names}
+    res = 0.0
+    rate = coord = None
+    for ld in spec.loads:
+        link = kin["links"][ld.link]
+        if ld.kind == "force":
+            forces[ld.link].append((Vec.of(ld.force), link.point(ld.at).z))
+        elif ld.kind == "moment":
+            moments[ld.link].append(ld.moment)
+        else:
+            if rate is None:
+                rate, coord = mech._output_rate(kin), mech.output_coordinate(kin)
+            value = resistance(ld.resistance, ld.stroke, ld.span, rate, coord, cycle)
+            res = res + value
+            if cycle.rocker:
+                moments[ld.link].append(value)
+            else:
+                forces[ld.link].append((Vec.of(mech.u) * value, kin["dyad"].B.z))
+    return forces, moments, res

@@ -1,0 +1,108 @@
+"""The one-way flow of the packages: crankbase -> linkage -> engine (and the other
+calculation packages) -> reports and plots -> the crankdyn command line.
+
+Importing a calculation package must not import the command line, and must not import
+matplotlib or openpyxl until a plot or a workbook is asked for (scikit-rf's rule).
+"""
+from __future__ import annotations
+
+import ast
+import json
+import pathlib
+import subprocess
+import sys
+
+import pytest
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+#: Library packages: none of their modules may import the CLI package ``crankdyn``.
+LIBRARIES = [p.name for p in ROOT.iterdir()
+             if p.is_dir() and (p / "__init__.py").exists()
+             and p.name not in {"crankdyn", "tests", "templates", "examples", "benchmarks"}]
+#: What each layer may import of the project (the flow is one way).
+ALLOWED = {"crankbase": {"crankbase"}, "linkage": {"crankbase", "linkage"}}
+
+
+def _project_imports(path: pathlib.Path) -> set[str]:
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    names = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            names.update(a.name.split(".")[0] for a in node.names)
+        elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
+            names.add(node.module.split(".")[0])
+    return names
+
+
+def test_libraries_found():
+    assert {"crankbase", "linkage", "engine"} <= set(LIBRARIES)
+
+
+@pytest.mark.parametrize("package", LIBRARIES)
+def test_no_library_module_imports_the_cli(package):
+    for path in sorted((ROOT / package).rglob("*.py")):
+        imported = _project_imports(path)
+        assert "crankdyn" not in imported, f"{path.relative_to(ROOT)} imports the CLI package"
+        if package in ALLOWED:
+            project = imported & (set(LIBRARIES) | {"crankdyn"})
+            assert project <= ALLOWED[package], (
+                f"{path.relative_to(ROOT)} imports {sorted(project - ALLOWED[package])}, "
+                f"above its layer")
+
+
+def _modules_after(code: str) -> list[str]:
+    out = subprocess.run([sys.executable, "-c", code + "\nimport sys, json\n"
+                          "print(json.dumps(sorted(sys.modules)))"],
+                         capture_output=True, text=True, check=True, cwd=ROOT)
+    return json.loads(out.stdout.splitlines()[-1])
+
+
+@pytest.mark.parametrize("package", LIBRARIES)
+def test_import_loads_no_cli_and_nothing_heavy(package):
+    mods = _modules_after(f"import {package}")
+    assert not [m for m in mods if m == "crankdyn" or m.startswith("crankdyn.")]
+    assert not [m for m in mods if m.split(".")[0] in {"matplotlib", "openpyxl"}]
+
+
+def test_a_computation_loads_nothing_heavy():
+    mods = _modules_after(
+        "import engine, linkage\n"
+        "from crankbase.resources import example_path\n"
+        "s = engine.load_spec(example_path('petrol_vaz2106.toml'))\n"
+        "engine.force_table(s)\n"
+        "linkage.analyze(linkage.load_spec(example_path('ratchet.toml')))\n")
+    assert not [m for m in mods if m.split(".")[0] in {"matplotlib", "openpyxl"}]
+    assert not [m for m in mods if m == "crankdyn" or m.startswith("crankdyn.")]
+
+
+def test_cli_catches_only_the_project_errors(monkeypatch, capsys):
+    """A bug (any exception that is not a CrankdynError) shows as a bug, with its traceback;
+    the project's own errors are one line each and exit 2."""
+    from crankbase.errors import CrankdynError, SpecError
+    from crankdyn import cli
+    import crankdyn.cmd_engine as cmd
+
+    def boom(args):
+        raise ValueError("a bug inside numpy")
+    monkeypatch.setattr(cmd, "run", boom)
+    with pytest.raises(ValueError, match="a bug inside numpy"):
+        cli.main(["engine", "--example", "-o", "unused"])
+
+    def bad(args):
+        raise SpecError(["a: first", "b: second"])
+    monkeypatch.setattr(cmd, "run", bad)
+    assert cli.main(["engine", "--example", "-o", "unused"]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert err == ["crankdyn engine: error: a: first", "crankdyn engine: error: b: second"]
+    assert issubclass(CrankdynError, ValueError)
+
+
+def test_every_error_class_is_in_the_hierarchy():
+    import crankbase.errors as errors
+    import engine
+
+    classes = [getattr(errors, n) for n in errors.__all__ if isinstance(getattr(errors, n), type)]
+    classes.append(engine.EngineSpecError)
+    for cls in classes:
+        if issubclass(cls, Exception):
+            assert issubclass(cls, errors.CrankdynError), cls
