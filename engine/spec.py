@@ -359,7 +359,7 @@ _MASS_PARTS = ("piston_group_kg", "rod_kg")
 _MASS_AREA = ("piston_group_kg_m2", "rod_kg_m2")
 _MASS_KEYS = _MASS_DIRECT + _MASS_PARTS + _MASS_AREA + ("rod_small_end_fraction",
                                                         "crank_rotating_kg")
-_PRESSURE_KEYS = ("angle_deg", *PRESSURE_UNITS, "file", "cycle")
+_PRESSURE_KEYS = ("angle_deg", *PRESSURE_UNITS, "file", "cycle", "firing_tdc_deg")
 _CYCLE_KEYS = ("kind", "compression_ratio", "pa_MPa", "pr_MPa", "n1", "n2", "pz_MPa",
                "lambda_z", "rho", "rounding", "advance_deg", "pc_factor", "peak_factor",
                "peak_after_tdc_deg", "exhaust_opening_deg", "intake_opening_deg",
@@ -411,10 +411,15 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
 
     ``[pressure]``, exactly one source: inline ``angle_deg`` with one of ``p_MPa``,
     ``p_bar``, ``p_kPa``, ``p_Pa`` (absolute); ``file`` (a CSV with a header row holding
-    ``angle_deg`` and one of those pressure columns); or ``[pressure.cycle]``.
+    ``angle_deg`` and one of those pressure columns, or a Diesel-RK ``.ind`` export read
+    by :func:`engine.dieselrk.read_ind`, with ``firing_tdc_deg`` its firing TDC, default
+    360); or ``[pressure.cycle]``.
 
     ``[table]``: ``step_deg`` (default 30), ``extra_angles_deg`` (default none),
     ``force_scale_N_per_mm`` (μP > 0, required).
+
+    ``[bearings]`` and ``[rod]`` (optional): checked here, read by
+    :func:`engine.bearing_spec.read_bearing_inputs`.
     """
     data, file_dir = read_toml(path_or_dict)
     if not isinstance(path_or_dict, dict):
@@ -424,7 +429,7 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
         base = Path(base_dir) if base_dir is not None else Path.cwd()
         source_path = None
     c = Checker()
-    c.unknown(data, ("engine", "masses", "pressure", "table"))
+    c.unknown(data, ("engine", "masses", "pressure", "table", "rod", "bearings"))
 
     # ---- [engine]
     e = c.table(data, "engine")
@@ -518,6 +523,14 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
             pfile = (base / fname) if not Path(fname).is_absolute() else Path(fname)
             if not pfile.is_file():
                 c.add("pressure.file", f"file {str(pfile)!r} does not exist")
+            elif pfile.suffix.lower() == ".ind":          # Diesel-RK export
+                from .dieselrk import DIESEL_RK_TDC_DEG, read_ind
+                angle, p = read_ind(pfile, cycle_deg, c.number(
+                    pr, "firing_tdc_deg", "pressure", required=False,
+                    default=DIESEL_RK_TDC_DEG), c)
+                if angle is not None:
+                    pressure = PressureTable(tuple(angle.tolist()), tuple(p.tolist()),
+                                             pfile.resolve())
             else:
                 pressure = read_pressure_csv(pfile, cycle_deg, c)
     elif sources == ["cycle"]:
@@ -544,6 +557,8 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
     if isinstance(pressure, CycleSpec) and pressure.rounding and not c.problems:
         _check_rounded_peak(c, pressure, lam if lam is not None else stroke / 2.0 / L_mm,
                             offset / (stroke / 2.0))
+    from .bearing_spec import check_tables      # [rod], [bearings], pressure.firing_tdc_deg
+    check_tables(c, data)
     if c.problems:
         raise EngineSpecError(c.problems)
 

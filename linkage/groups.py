@@ -104,7 +104,8 @@ class Vec:
         return np.broadcast_shapes(np.shape(self.x), np.shape(self.y))
 
     def __array__(self, dtype=None, copy=None):
-        z = np.asarray(self.x) + 1j * np.asarray(self.y)
+        # numpy 2 wants an ndarray here, also for scalar components (a 0-d array)
+        z = np.asarray(np.asarray(self.x) + 1j * np.asarray(self.y))
         return z if dtype is None else z.astype(dtype)
 
     def __array_ufunc__(self, ufunc, method, *inputs, **kwargs):

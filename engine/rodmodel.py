@@ -1,0 +1,281 @@
+"""The connecting rod as a rigid body: exact K, T, Mкр and crank-pin load, beside the
+textbook two-mass rod.
+
+The textbook rod [1]_ is two point masses, mш.п at the piston pin and mш.к at the crank
+pin; it has the rod's mass and centre of mass but the moment of inertia
+mш.п·a² + mш.к·b² = m·a·b (a, b: distances of the centre of mass from the piston pin and
+from the crank pin), not the rod's own J.  Here the rod is a rigid link of mass m, centre
+of mass at b from the crank pin on the line of centres and moment of inertia J about it;
+the piston group mп is a slider.  Its inertia loads come from the exact kinematics of the
+RRP dyad and the reactions from the dyad's kinetostatics (:mod:`linkage.groups`), so K, T,
+Mкр and the pin load are exact for that body.  With J = m·a·b (and exact acceleration) it
+reproduces the two-mass table exactly.
+
+Spec table ``[rod]`` (read by :func:`rod_options`; :func:`engine.load` checks its keys,
+:func:`engine.bearing_spec.read_bearing_inputs` builds the rod for a loaded spec):
+
+``model``
+    ``"two-mass"`` (default, the textbook) or ``"rigid"`` (computed beside it).
+``inertia_kg_m2``
+    J about the centre of mass (> 0); required for ``"rigid"``.
+``mass_kg``
+    m; default the rod mass of ``[masses]`` when given as parts (``rod_kg`` or
+    ``rod_kg_m2``·Fп); required with ``reciprocating_kg``/``rod_rotating_kg``.
+``cg_from_big_end_mm``
+    b; default the two-mass position b = L·(m − mш.к)/m (the same centre of mass as the
+    two-mass rod, so that only J differs).
+
+The piston group mass mп is ``piston_group_kg`` (or ``piston_group_kg_m2``·Fп) when the
+masses are given as parts, else mj − (m − mш.к).
+
+References
+----------
+.. [1] Колчин А. И., Демидов В. П. Расчёт автомобильных и тракторных двигателей, 2008,
+   § "Приведение масс частей КШМ" (the two-mass rod and the moment-of-inertia error it
+   makes).
+.. [2] Artobolevsky, I. I. Теория механизмов и машин, 1988, ch. 13 (kinetostatics of the
+   RRP group with the inertia of its links).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from linkage.groups import Wrench, dot, driver_reactions, link_wrench, rrp_reactions
+
+from .forces import _psi, force_table
+from .kinematics import crank_slider
+
+__all__ = ["RigidRod", "rod_options", "rigid_rod_forces", "RodModelComparison",
+           "compare_rod_models", "ROD_MODELS", "ROD_KEYS"]
+
+ROD_MODELS = ("two-mass", "rigid")
+ROD_KEYS = ("model", "inertia_kg_m2", "mass_kg", "cg_from_big_end_mm")
+
+
+@dataclass(frozen=True)
+class RigidRod:
+    """A rigid rod and the piston group (SI).
+
+    ``mass`` m [kg], ``cg`` b: centre of mass from the crank pin along the rod [m],
+    ``inertia`` J about the centre of mass [kg·m²], ``m_piston`` mп [kg]."""
+
+    mass: float
+    cg: float
+    inertia: float
+    m_piston: float
+
+    def two_mass_inertia(self, L):
+        """J of the two-mass rod with this mass and centre of mass: m·a·b. [kg·m²]"""
+        return self.mass * self.cg * (L - self.cg)
+
+
+def _parts(spec):
+    """(piston group mass, rod mass) when [masses] gives them as parts, else None."""
+    src = spec.mass_source
+    if "piston_group_kg" in src:
+        return float(src["piston_group_kg"]), float(src["rod_kg"])
+    if "piston_group_kg_m2" in src:
+        return (float(src["piston_group_kg_m2"]) * spec.area,
+                float(src["rod_kg_m2"]) * spec.area)
+    return None
+
+
+def rod_options(table, spec=None, checker=None):
+    """Read the ``[rod]`` table: ``("two-mass", None)`` or ``("rigid", RigidRod)``.
+
+    Parameters
+    ----------
+    table : dict or None
+        The ``[rod]`` table of the spec file (None or {} when absent).
+    spec : EngineSpec, optional
+        The engine, for the defaults and the checks that need it (mass, centre of mass,
+        piston mass); without it only the keys and their ranges are checked and the
+        rigid rod is not built (``("rigid", None)``).
+    checker : Checker, optional
+        Problems are added to it (else a :class:`SpecError` is raised).
+
+    Raises
+    ------
+    SpecError
+        Naming every bad key of ``[rod]`` (unknown key, bad model, missing or
+        non-positive J, a centre of mass off the rod, a negative piston mass).
+    """
+    from crankbase.validation import Checker
+
+    c = checker if checker is not None else Checker()
+    n0 = len(c.problems)
+    t = table if table is not None else {}
+    out = ("two-mass", None)
+    if not isinstance(t, dict):
+        c.add("rod", f"must be a table, got {t!r}")
+        t = {}
+    c.unknown(t, ROD_KEYS, "rod")
+    model = c.choice(t, "model", ROD_MODELS, "rod", required=False, default="two-mass")
+    if model != "rigid":
+        for k in t:
+            if k != "model" and k in ROD_KEYS:
+                c.add(f"rod.{k}", 'only used with model = "rigid"')
+    else:
+        out = ("rigid", _rigid(c, t, spec))
+    if checker is None:
+        c.raise_if_any()
+    return out if len(c.problems) == n0 else ("two-mass", None)
+
+
+def _rigid(c, t, spec):
+    J = c.number(t, "inertia_kg_m2", "rod", gt=0,
+                 what="the rod's moment of inertia about its centre of mass [kg·m²]")
+    m = c.number(t, "mass_kg", "rod", required=False, gt=0)
+    b_mm = c.number(t, "cg_from_big_end_mm", "rod", required=False, gt=0)
+    if spec is None:
+        return None
+    parts = _parts(spec)
+    L = spec.L
+    if m is None and "mass_kg" not in t:
+        if parts is None:
+            c.add("rod.mass_kg", "missing; needed for the rigid rod when [masses] gives "
+                                 "reciprocating_kg and rod_rotating_kg")
+        else:
+            m = parts[1]
+    b = None
+    if b_mm is not None:
+        if not b_mm < L * 1e3:
+            c.add("rod.cg_from_big_end_mm", f"got {b_mm:g}; the centre of mass must lie "
+                                            f"on the rod, 0 < b < Lш = {L * 1e3:g} mm")
+        else:
+            b = b_mm / 1e3
+    elif m is not None:
+        small = m - spec.m_rod_rot
+        if not 0 < small < m:
+            c.add("rod.mass_kg", f"got {m:g} kg; must exceed the rotating part mш.к = "
+                                 f"{spec.m_rod_rot:g} kg (or give cg_from_big_end_mm)")
+        else:
+            b = L * small / m
+    if m is None or b is None or J is None:
+        return None
+    mp = parts[0] if parts is not None else spec.mj - (m - spec.m_rod_rot)
+    if mp < 0:
+        c.add("rod.mass_kg", f"got {m:g} kg: the piston mass mj − (m − mш.к) = "
+                             f"{mp:g} kg would be negative")
+        return None
+    return RigidRod(float(m), float(b), float(J), float(mp))
+
+
+def rigid_rod_forces(alpha_deg, R, L, omega, dPg, rod: RigidRod, offset=0.0):
+    """Forces of the crank-slider with a rigid rod, by the RRP dyad's kinetostatics.
+
+    Parameters
+    ----------
+    alpha_deg : array_like
+        Crank angle from TDC. [deg]
+    R, L, omega : float
+        Crank radius [m], rod length [m], angular velocity [rad/s].
+    dPg : array_like
+        Gas force ΔPг, + towards the crank axis. [N]
+    rod : RigidRod
+    offset : float
+        Piston-pin offset e (désaxé), as in :func:`engine.kinematics.crank_slider`. [m]
+
+    Returns
+    -------
+    dict of ndarray
+        ``K`` (+ towards the crank axis) and ``T`` (+ in the direction of rotation): the
+        crank-frame components of the whole rod's force on the crank pin, inertia of the
+        rod included (compare with K + Kr.ш of the two-mass table) [N]; ``R`` = |(K, T)|
+        and ``psi`` = atan2(T, K) [N, deg]; ``M`` = T·R, the torque on the crank [N·m];
+        ``N`` the side force on the wall [N]; ``S`` the force along the rod at the
+        crank pin, + compressing [N].
+
+    Notes
+    -----
+    Kinematics I(1,2) → RRP(3,4) by :func:`engine.kinematics.crank_slider` (exact);
+    loads by :func:`linkage.groups.link_wrench`: the rod with mass m, J and centre of mass
+    at b on A→B; the piston with mass mп and the gas force −ΔPг·u at B; reactions by
+    :func:`linkage.groups.rrp_reactions`; the crank's torque by
+    :func:`linkage.groups.driver_reactions` with a massless crank [2]_.
+    """
+    a = np.radians(np.asarray(alpha_deg, float))
+    mech = crank_slider(a, R, L, omega, offset=offset)
+    sol = mech.dyad
+    u = sol.link4.e                          # the guide: the cylinder axis towards TDC
+    zB = sol.B.z
+    W3 = link_wrench(sol.link3, mass=rod.mass, inertia=rod.inertia, cg=rod.cg)
+    W4 = link_wrench(sol.link4, mass=rod.m_piston,
+                     forces=[(-np.asarray(dPg, float) * u, zB)])
+    reac = rrp_reactions(sol, L, W3, W4)
+    S32 = -reac.RA
+    e2 = mech.crank.e
+    zero = np.zeros(a.shape)
+    W2 = Wrench(zero + 0j, zero, mech.crank.origin.z)
+    drv = driver_reactions(mech.crank, sol.link3.origin.z, S32, W2)
+    K, T = dot(S32, -e2), dot(S32, 1j * e2)
+    return dict(K=K, T=T, R=np.hypot(K, T), psi=_psi(T, K), M=-drv.M_drive,
+                N=reac.RG_n, S=dot(S32, -sol.link3.e))
+
+
+@dataclass
+class RodModelComparison:
+    """The two rod models side by side.
+
+    ``table``: DataFrame with ``alpha_deg`` and, for the two-mass table (suffix ``2m``,
+    its K being K + Kr.ш) and the rigid rod (``rigid``), ``K_*_N``, ``T_*_N``, ``M_*_Nm``,
+    ``R_*_N``, and the differences rigid − two-mass ``dK_N``, ``dT_N``, ``dM_Nm``,
+    ``dR_N``.  ``extremes``: {column: (max, α at max, min, α at min)} of the differences.
+    ``rod``: the :class:`RigidRod`; ``J_two_mass``: m·a·b [kg·m²]; ``acceleration``:
+    "exact": both models use the exact piston kinematics, so the differences are those of
+    the rod's moment of inertia alone (with a two-term spec the two-mass table is
+    recomputed with the exact acceleration for the comparison).
+    """
+
+    table: object
+    extremes: dict
+    rod: RigidRod
+    J_two_mass: float
+    acceleration: str
+
+
+def compare_rod_models(spec, rod: RigidRod, alpha_deg=None, table=None):
+    """The rigid rod beside the spec's two-mass force table.
+
+    Parameters
+    ----------
+    spec : EngineSpec
+    rod : RigidRod
+    alpha_deg : array_like, optional
+        Angles [deg]; default those of ``table`` or the table rows.
+    table : pandas.DataFrame, optional
+        The two-mass force table at those angles, used as is when the spec's acceleration
+        is exact (else recomputed with the exact acceleration at its angles).
+
+    Returns
+    -------
+    RodModelComparison
+    """
+    import pandas as pd
+    from dataclasses import replace
+
+    if table is not None and alpha_deg is None:
+        alpha_deg = table["alpha_deg"].to_numpy()
+    if table is None or spec.acceleration != "exact":
+        exact = spec if spec.acceleration == "exact" else replace(spec, acceleration="exact")
+        table = force_table(exact, alpha_deg)
+    a = table["alpha_deg"].to_numpy()
+    rg = rigid_rod_forces(a, spec.R, spec.L, spec.omega, table["dPg_N"].to_numpy(), rod,
+                          spec.pin_offset)
+    K2 = (table["K_N"] + table["Kr_N"]).to_numpy()
+    T2 = table["T_N"].to_numpy()
+    M2 = table["M_Nm"].to_numpy()
+    R2 = table["R_N"].to_numpy()
+    cols = dict(alpha_deg=a, K_2m_N=K2, K_rigid_N=rg["K"], dK_N=rg["K"] - K2,
+                T_2m_N=T2, T_rigid_N=rg["T"], dT_N=rg["T"] - T2,
+                M_2m_Nm=M2, M_rigid_Nm=rg["M"], dM_Nm=rg["M"] - M2,
+                R_2m_N=R2, R_rigid_N=rg["R"], dR_N=rg["R"] - R2)
+    df = pd.DataFrame(cols)
+    ext = {}
+    for col in ("dK_N", "dT_N", "dM_Nm", "dR_N"):
+        y = df[col].to_numpy()
+        i, k = int(np.argmax(y)), int(np.argmin(y))
+        ext[col] = (float(y[i]), float(a[i]), float(y[k]), float(a[k]))
+    return RodModelComparison(df, ext, rod, rod.two_mass_inertia(spec.L), "exact")
