@@ -119,3 +119,29 @@ def test_random_mechanisms(data):
         assume(False)
     assume(np.all(np.isfinite(model.J_kgm2)) and model.J_kgm2.min() > 1e-9)
     _true_motion_power_balance(model)
+
+
+@pytest.mark.parametrize("name", ["press.toml", "ratchet.toml"])
+def test_linkage_forces_equal_the_core_table_at_constant_speed(name):
+    """dynamics.motion.linkage_forces (the core's routines with ω, ε per position) at a
+    constant ω and ε gives the core's own force table (linkage.analysis.solve_columns)."""
+    from linkage.analysis import solve_columns
+
+    from dynamics.motion import linkage_forces
+
+    spec = linkage.load_spec(example_path(name))
+    phi = np.radians(np.arange(0.0, 360.0, 2.5))
+    mech = linkage.analysis.build_mechanism(spec)
+    from dynamics.reduced import stroke_extremes
+
+    ext = stroke_extremes(spec, mech)
+    ours = linkage_forces(spec, phi, spec.omega, spec.epsilon, mech, ext)
+    _, core = solve_columns(spec, phi, mech, ext, course_tables=False)
+    for c, v in ours.items():
+        scale = max(np.max(np.abs(core[c])), 1.0)
+        assert np.max(np.abs(v - core[c])) <= 1e-12 * scale, c
+    # and with arrays equal to that constant, the same numbers
+    arr = linkage_forces(spec, phi, np.full_like(phi, spec.omega),
+                         np.full_like(phi, spec.epsilon), mech, ext)
+    for c in ours:
+        assert np.array_equal(arr[c], ours[c]), c
