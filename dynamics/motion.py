@@ -41,7 +41,8 @@ from ._base import MotionError, Problem, SpecError
 
 __all__ = ["MotionResult", "steady_motion", "FlywheelResult", "size_flywheel",
            "motor_steady_motion", "motor_startup", "StartupResult", "check_delta",
-           "linkage_forces", "true_motion_forces", "engine_true_motion_forces"]
+           "linkage_forces", "true_motion_forces", "engine_true_motion_forces",
+           "classic_flywheel"]
 
 
 def _cumtrapz(y, x):
@@ -225,7 +226,8 @@ class FlywheelResult:
     delta : float
         Asked δ.
     dW_max : float
-        ΔW_max, swing of ∫(M_d − M_c)dφ. [J]
+        ΔW_max of the classic estimate: swing of ∫(M_d − M_c − ½ω_m² dJ/dφ)dφ, the
+        turning-moment diagram at constant speed (see :func:`classic_flywheel`). [J]
     J_c : float
         The constant inertia the classic estimate subtracts: the cycle mean of J_red.
         [kg·m²]
@@ -249,9 +251,8 @@ class FlywheelResult:
 def size_flywheel(model, delta, omega_mean=None, *, driving="constant") -> FlywheelResult:
     """Flywheel on the main shaft for the coefficient of speed fluctuation ``delta``.
 
-    Classic: J_F = ΔW_max/(δ ω_m²) − J_c (Khurmi eq. 16.8 with J_c the cycle mean of
-    J_red).  Exact: brentq on δ(J_F) − δ with the energy-form solution (δ decreases
-    monotonically with J_F).
+    Classic: :func:`classic_flywheel`.  Exact: brentq on δ(J_F) − δ with the energy-form
+    solution (δ decreases monotonically with J_F).
     """
     from scipy.optimize import brentq
 
@@ -260,9 +261,7 @@ def size_flywheel(model, delta, omega_mean=None, *, driving="constant") -> Flywh
     m0 = steady_motion(model, wm, J_flywheel=0.0, driving=driving) \
         if _feasible(model, wm, 0.0, driving) else None
     base = model.with_constant_drive()[0] if driving == "constant" else model
-    dW = float(np.ptp(base.W_net_J))
-    Jc = float(np.mean(model.J_kgm2[:-1]))
-    J_classic = dW / (delta * wm * wm) - Jc
+    dW, Jc, J_classic = classic_flywheel(base, delta, wm)
     if m0 is not None and m0.delta <= delta:
         return FlywheelResult(delta, dW, Jc, J_classic, 0.0, m0)
 
@@ -287,6 +286,23 @@ def size_flywheel(model, delta, omega_mean=None, *, driving="constant") -> Flywh
     JF = brentq(f, lo, hi, xtol=1e-12 * hi, rtol=1e-12)
     return FlywheelResult(delta, dW, Jc, J_classic, float(JF),
                           steady_motion(model, wm, J_flywheel=JF, driving=driving))
+
+
+def classic_flywheel(model, delta, omega_mean):
+    """The classic flywheel estimate ``(ΔW_max, J_c, J_F)``.
+
+    ΔW_max is the swing of the work of the turning-moment diagram at the constant speed
+    ω_m, M_d − M_c − ½ω_m² dJ/dφ (the inertia torque of the variable part of J_red
+    included, as in the engine's total torque Mкр of gas and inertia forces); J_c is the
+    cycle mean of J_red, the constant part the estimate treats as already there; then
+    J_F = ΔW_max/(δ ω_m²) − J_c (Khurmi & Gupta eq. 16.8; seed 001 §11.4).  For a
+    constant J_red it is exact; ≤ 0 means no flywheel is needed by this estimate.
+    """
+    # ∫½ω_m² dJ/dφ dφ = ½ω_m² (J − J(0)) exactly; W_net is exact for the diagrams
+    W = model.W_net_J - 0.5 * omega_mean ** 2 * (model.J_kgm2 - model.J_kgm2[0])
+    dW = float(np.ptp(W))
+    Jc = float(np.mean(model.J_kgm2[:-1]))
+    return dW, Jc, dW / (delta * omega_mean ** 2) - Jc
 
 
 def _feasible(model, wm, JF, driving):

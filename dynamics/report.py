@@ -33,6 +33,8 @@ def summary_rows(result: dict, lang="en"):
     if fly is not None:
         rows += [
             ("δ заданный" if ru else "delta asked", fly.delta, "-"),
+            ("ΔTmax при ω = const" if ru else "dW_max at constant speed", fly.dW_max,
+             "Дж" if ru else "J"),
             ("Jc (среднее Jп)" if ru else "J_c (cycle mean of J_red)", fly.J_c,
              "кг·м²" if ru else "kg·m²"),
             ("Jмах = ΔTmax/(δ ωср²) − Jc" if ru else "J_F classic = dW/(delta w^2) - J_c",

@@ -294,19 +294,17 @@ def run_job(job: DynamicsJob):
 
 
 def _motor_flywheel(model, motor, delta):
-    """Flywheel for δ under a motor characteristic: classic estimate from the constant-speed
-    energy swing at the motor's steady speed, exact by brentq on the periodic solution."""
+    """Flywheel for δ under a motor characteristic: the classic estimate (constant driving
+    moment, at the motor's steady mean speed; :func:`dynamics.motion.classic_flywheel`),
+    exact by brentq on the periodic solution with the motor."""
     import numpy as np
     from scipy.optimize import brentq
 
-    from .motion import FlywheelResult, motor_steady_motion
+    from .motion import FlywheelResult, classic_flywheel, motor_steady_motion
 
     m0 = motor_steady_motion(model, motor)
-    Jc = float(np.mean(model.J_kgm2[:-1]))
-    wm = m0.omega_mean
     const, _ = model.with_constant_drive()
-    dW = float(np.ptp(const.W_net_J))
-    J_classic = dW / (delta * wm * wm) - Jc
+    dW, Jc, J_classic = classic_flywheel(const, delta, m0.omega_mean)
     if m0.delta <= delta:
         return FlywheelResult(delta, dW, Jc, J_classic, 0.0, m0)
 

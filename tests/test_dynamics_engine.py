@@ -66,3 +66,19 @@ def test_true_motion_torque_virtual_power():
     big = engine_true_motion_forces(m, steady_motion(m, J_flywheel=1e8))
     for c in ("T_N", "K_N", "R_N"):
         assert np.max(np.abs(big[c] - big[f"{c}_const"])) < 1e-5 * np.max(np.abs(big[c]))
+
+
+def test_classic_flywheel_of_an_engine_includes_the_inertia_torque():
+    """The classic estimate uses the turning-moment diagram at constant speed (gas and
+    inertia torque): for the petrol engine at 5400 rpm it is within 1 % of the exact J_F,
+    while the gas torque alone would give a third of it."""
+    from dynamics.motion import size_flywheel
+
+    spec = _spec("two-term", 4)
+    m = engine_model(spec, J_extra_kgm2=0.02)
+    fw = size_flywheel(m, 0.01)
+    assert fw.motion.delta == pytest.approx(0.01, rel=1e-6)
+    assert fw.J_classic == pytest.approx(fw.J_exact, rel=0.01)
+    const, _ = m.with_constant_drive()
+    gas_only = np.ptp(const.W_net_J) / (0.01 * m.omega_nominal ** 2) - fw.J_c
+    assert gas_only < 0.5 * fw.J_exact
