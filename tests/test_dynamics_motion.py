@@ -288,3 +288,25 @@ def test_random_machines(model, delta):
     assert r.omega_mean == pytest.approx(model.omega_nominal, rel=1e-9)
     r2 = steady_motion(model, J_flywheel=2 * f.J_exact + 1.0)
     assert r2.delta < r.delta or r.delta == 0
+
+
+def test_table_drive_spec():
+    """driving = "table": a given driving diagram equal to the constant that balances the
+    cycle gives the same motion as driving = "constant" (Khurmi Ex. 16.6); one that falls
+    short of the resistance's work is refused."""
+    from dynamics.spec import load_dynamics_spec, run_job
+
+    base = {"machine": {"J_red_kgm2": 180.0, "omega_mean_rad_s": 250 * RPM,
+                        "period_deg": 1080,
+                        "moment": [{"role": "resist", "phi_deg": [0, 180, 540, 720, 1080],
+                                    "M_Nm": [750, 3000, 3000, 750, 750]}]}}
+    const = run_job(load_dynamics_spec({**base, "dynamics": {"driving": "constant"}}))
+    table = run_job(load_dynamics_spec({**base, "dynamics": {
+        "driving": "table", "phi_deg": [0, 1080], "M_Nm": [1875, 1875]}}))
+    assert table["motion"].delta == pytest.approx(const["motion"].delta, rel=1e-12)
+    assert table["motion"].delta == pytest.approx(0.072, abs=0.0005)
+    with pytest.raises(MotionError, match="falls short"):
+        run_job(load_dynamics_spec({**base, "dynamics": {
+            "driving": "table", "phi_deg": [0, 1080], "M_Nm": [1800, 1800]}}))
+    with pytest.raises(SpecError, match="only with driving"):
+        load_dynamics_spec({**base, "dynamics": {"phi_deg": [0], "M_Nm": [1]}})
