@@ -329,14 +329,23 @@ class Motor:
 
 
 def _interp_periodic(model):
-    x = model.phi
-    P = model.period
+    """``f(φ) → (J, dJ/dφ, M_d − M_c)`` by linear interpolation on the model's uniform grid,
+    periodic; scalar Python arithmetic (the ODE right-hand sides call it ~10⁵ times)."""
+    P = float(model.period)
+    n = len(model.phi) - 1
+    h = P / n
+    J = model.J_kgm2.tolist()
+    dJ = model.dJ_dphi_kgm2.tolist()
+    M = (model.M_drive_Nm - model.M_resist_Nm).tolist()
 
-    def f(arr):
-        return lambda p: np.interp(np.mod(p, P), x, arr)
+    def f(p):
+        u = (p % P) / h
+        k = min(int(u), n - 1)
+        t = u - k
+        return (J[k] + t * (J[k + 1] - J[k]), dJ[k] + t * (dJ[k + 1] - dJ[k]),
+                M[k] + t * (M[k + 1] - M[k]))
 
-    return (f(model.J_kgm2), f(model.dJ_dphi_kgm2), f(model.M_resist_Nm),
-            f(model.M_drive_Nm))
+    return f
 
 
 def _check_motor(model, motor, JF):
@@ -376,13 +385,15 @@ def motor_steady_motion(model, motor: Motor, *, J_flywheel=0.0, rtol=1e-9):
     from scipy.optimize import brentq
 
     Mc_mean = _check_motor(model, motor, J_flywheel)
-    Jf, dJf, Mcf, Mdf = _interp_periodic(model)
+    state = _interp_periodic(model)
     P = model.period
+    M0, w0m = motor.M0, motor.omega0
 
     def rhs(p, y):
         w = y[0]
-        M = motor(w) + Mdf(p) - Mcf(p)
-        return [(M - 0.5 * w * w * dJf(p)) / ((Jf(p) + J_flywheel) * w)]
+        J, dJ, M = state(p)
+        M += M0 * (1.0 - w / w0m)
+        return [(M - 0.5 * w * w * dJ) / ((J + J_flywheel) * w)]
 
     w_floor = 1e-4 * motor.omega0   # below this the machine is taken as stopped
 
@@ -485,12 +496,12 @@ def motor_startup(model, motor: Motor, *, J_flywheel=0.0, steady: MotionResult |
     from scipy.integrate import solve_ivp
 
     Mc_mean = _check_motor(model, motor, J_flywheel)
-    Jf, dJf, Mcf, Mdf = _interp_periodic(model)
-    if motor.M0 + Mdf(0.0) <= Mcf(0.0):
+    state = _interp_periodic(model)
+    if motor.M0 + state(0.0)[2] <= 0.0:
         raise MotionError(Problem(
             "dynamics.motor_start_torque_Nm",
             f"the motor cannot start: M0 = {motor.M0:.6g} N·m does not exceed the resisting "
-            f"moment at rest {Mcf(0.0) - Mdf(0.0):.6g} N·m"))
+            f"moment at rest {-state(0.0)[2]:.6g} N·m"))
     w_ss = steady.omega_time_mean if steady is not None else \
         motor.omega0 * (1.0 - Mc_mean / motor.M0)
     Jm = float(np.mean(model.J_kgm2)) + J_flywheel
@@ -500,8 +511,9 @@ def motor_startup(model, motor: Motor, *, J_flywheel=0.0, steady: MotionResult |
 
     def rhs(t, y):
         p, w = y
-        M = motor(w) + Mdf(p) - Mcf(p)
-        return [w, (M - 0.5 * w * w * dJf(p)) / (Jf(p) + J_flywheel)]
+        J, dJ, M = state(p)
+        M += motor(w)
+        return [w, (M - 0.5 * w * w * dJ) / (J + J_flywheel)]
 
     sol = solve_ivp(rhs, (0.0, t_end), [0.0, 0.0], method="LSODA", rtol=1e-8,
                     atol=[1e-10, 1e-10 * motor.omega0], max_step=T / 40, dense_output=True)

@@ -27,7 +27,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ._base import Checker, Problem, SpecError, read_toml
+from ._base import Checker, MotionError, Problem, SpecError, read_toml
 
 __all__ = ["DynamicsSettings", "DynamicsJob", "load_dynamics_spec"]
 
@@ -308,12 +308,29 @@ def _motor_flywheel(model, motor, delta):
     if m0.delta <= delta:
         return FlywheelResult(delta, dW, Jc, J_classic, 0.0, m0)
 
-    def f(JF):
-        return motor_steady_motion(model, motor, J_flywheel=JF).delta - delta
+    cache = {}
 
-    hi = max(J_classic, 1e-9)
-    while f(hi) > 0:
-        hi *= 2.0
-    JF = brentq(f, 0.0, hi, xtol=1e-7 * hi, rtol=1e-7)
-    return FlywheelResult(delta, dW, Jc, J_classic, float(JF),
-                          motor_steady_motion(model, motor, J_flywheel=JF))
+    def motion(JF):
+        if JF not in cache:
+            cache[JF] = motor_steady_motion(model, motor, J_flywheel=JF)
+        return cache[JF]
+
+    def f(JF):
+        return motion(JF).delta - delta
+
+    JF = None
+    x0 = max(J_classic, 1e-6 * max(Jc, 1e-9))
+    try:   # 1/δ is nearly linear in J_F: a secant from the classic estimate, ~4 solves
+        from scipy.optimize import newton
+        JF = float(newton(lambda J: 1.0 / motion(max(J, 0.0)).delta - 1.0 / delta, x0,
+                          x1=1.2 * x0, tol=1e-7 * x0, maxiter=20))
+        if not (JF >= 0 and abs(f(JF)) <= 1e-5 * delta):
+            JF = None
+    except (RuntimeError, ArithmeticError, MotionError):
+        JF = None
+    if JF is None:         # bracket and bisect
+        hi = x0
+        while f(hi) > 0:
+            hi *= 2.0
+        JF = brentq(f, 0.0, hi, xtol=1e-9 * hi, rtol=1e-9)
+    return FlywheelResult(delta, dW, Jc, J_classic, float(JF), motion(JF))
