@@ -2,6 +2,7 @@
 
     crankdyn balance ROTOR.toml -o DIR [--lang ru|en]
     crankdyn balance LINKAGE.toml -o DIR [--lang ru|en]     # optional [balance] section
+    crankdyn balance --example [NAME] -o DIR                 # rotor, ratchet
 
 Rotor (a ``[rotor]`` table): ``DIR/rotor_balance.csv`` (``plane, z_mm, mr_gmm,
 angle_deg`` and ``m_g, r_mm`` when the spec gives ``correction_radius_mm``),
@@ -19,6 +20,10 @@ Everything is written at once through a staging folder; bad input writes nothing
 from __future__ import annotations
 
 
+#: Bundled examples by short name (``--example NAME``).
+EXAMPLES = {"rotor": "rotor_two_plane.toml", "ratchet": "ratchet_balance.toml"}
+
+
 def add_parser(subparsers):
     p = subparsers.add_parser(
         "balance", help="rotor balancing (static or two-plane): corrections and m·r polygons",
@@ -26,7 +31,11 @@ def add_parser(subparsers):
                     "given by its unbalances (m·r or m and r, angle, z): the correction m·r "
                     "and angle per plane, the mass at a chosen radius, the residual force "
                     "and moment, and the m·r polygons.")
-    p.add_argument("spec", metavar="ROTOR.toml", help="rotor spec (TOML, a [rotor] table)")
+    p.add_argument("spec", nargs="?", metavar="SPEC.toml",
+                   help="rotor spec ([rotor]) or linkage spec (optional [balance])")
+    p.add_argument("--example", nargs="?", const="rotor", metavar="NAME",
+                   help="run a bundled example instead of a spec: "
+                        + ", ".join(EXAMPLES) + " (default rotor)")
     p.add_argument("-o", "--output", required=True, metavar="DIR",
                    help="output folder (created if needed)")
     p.add_argument("--lang", choices=("ru", "en"), default="ru",
@@ -39,7 +48,9 @@ def run(args) -> int:
 
     from crankbase.errors import SpecError
 
-    spec_path = Path(args.spec)
+    from .cmd_dynamics import _spec_path
+
+    spec_path = _spec_path(args, EXAMPLES, "balance")
     out = Path(args.output)
     if out.exists() and not out.is_dir():
         raise SpecError(f"-o: {out} exists and is not a folder")

@@ -2,6 +2,7 @@
 a motor drive with the start-up, the forces under the true motion.
 
     crankdyn dynamics SPEC.toml -o DIR [--lang ru|en]
+    crankdyn dynamics --example [NAME] -o DIR
 
 SPEC is a machine given by its reduced quantities (``[machine]``) or a linkage spec, with a
 ``[dynamics]`` section.  Writes ``DIR/motion.csv`` (``phi_deg, J_red_kgm2,
@@ -11,6 +12,10 @@ W_J, E_J``), ``DIR/forces_true_motion.csv`` (linkage), ``DIR/startup.csv`` (moto
 folder; bad input writes nothing.
 """
 from __future__ import annotations
+
+#: Bundled examples by short name (``--example NAME``).
+EXAMPLES = {"flywheel": "flywheel_seed.toml", "press": "press_dynamics.toml",
+            "petrol": "petrol_dynamics.toml", "hoist": "hoist_machine.toml"}
 
 MOTION_COLUMNS = ["phi_deg", "J_red_kgm2", "dJ_red_dphi_kgm2", "M_drive_Nm", "M_resist_Nm",
                   "omega_rad_s", "eps_rad_s2", "t_s", "phi_rad", "W_J", "E_J"]
@@ -23,7 +28,11 @@ def add_parser(subparsers):
                     "steady motion ω(φ), ε, t, δ, the flywheel for a required δ (classic "
                     "and exact), a motor characteristic with the start-up, and the forces "
                     "under the true motion beside the constant-speed ones.")
-    p.add_argument("spec", metavar="SPEC.toml", help="machine or linkage spec with [dynamics]")
+    p.add_argument("spec", nargs="?", metavar="SPEC.toml",
+                   help="machine, linkage or engine spec with [dynamics]")
+    p.add_argument("--example", nargs="?", const="flywheel", metavar="NAME",
+                   help="run a bundled example instead of a spec: "
+                        + ", ".join(EXAMPLES) + " (default flywheel)")
     p.add_argument("-o", "--output", required=True, metavar="DIR",
                    help="output folder (created if needed)")
     p.add_argument("--lang", choices=("ru", "en"), default="ru",
@@ -37,7 +46,7 @@ def run(args) -> int:
 
     from crankbase.errors import SpecError
 
-    spec_path = Path(args.spec)
+    spec_path = _spec_path(args, EXAMPLES, "dynamics")
     out = Path(args.output)
     if out.exists() and not out.is_dir():
         raise SpecError(f"-o: {out} exists and is not a folder")
@@ -83,3 +92,25 @@ def run(args) -> int:
     print(f"wrote {', '.join(tables)}, {xlsx}, {len(figs)} plots (PNG, SVG) in {out}"
           + (" [ru]" if args.lang == "ru" else " [en]"))
     return 0
+
+
+def _spec_path(args, examples, what):
+    """The spec file of ``args.spec`` or ``--example NAME`` (one of them, not both)."""
+    from pathlib import Path
+
+    from crankbase.errors import SpecError
+    from crankbase.resources import example_path
+
+    if args.spec and args.example:
+        raise SpecError("give either SPEC.toml or --example, not both")
+    if args.spec:
+        return Path(args.spec)
+    if not args.example:
+        raise SpecError(f"give a {what} spec SPEC.toml or --example [NAME]")
+    stem = args.example[:-5] if args.example.endswith(".toml") else args.example
+    stems = {f[:-5]: f for f in examples.values()}
+    fname = examples.get(stem) or stems.get(stem)
+    if fname is None:
+        raise SpecError(f"--example: no {what} example {args.example!r}; available: "
+                        + ", ".join(list(examples) + list(stems)))
+    return example_path(fname)

@@ -83,3 +83,16 @@ def test_engine_example(tmp_path):
     w = m["omega_rad_s"]
     assert (w.max() - w.min()) / (0.5 * (w.max() + w.min())) == pytest.approx(0.01, rel=1e-6)
     assert m["phi_deg"].iloc[-1] == pytest.approx(720.0)
+
+
+def test_examples_flag(tmp_path, capsys):
+    assert main(["balance", "--example", "-o", str(tmp_path / "r")]) == 0
+    assert (tmp_path / "r" / "rotor_balance.csv").exists()
+    assert main(["dynamics", "--example", "flywheel", "-o", str(tmp_path / "f")]) == 0
+    assert (tmp_path / "f" / "motion.csv").exists()
+    assert main(["dynamics", "--example", "nope", "-o", str(tmp_path / "n")]) == 2
+    assert main(["dynamics", str(example_path("flywheel_seed.toml")), "--example",
+                 "-o", str(tmp_path / "n")]) == 2
+    err = capsys.readouterr().err
+    assert "no dynamics example 'nope'" in err and "not both" in err
+    assert not (tmp_path / "n").exists()
