@@ -96,3 +96,14 @@ def test_examples_flag(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "no dynamics example 'nope'" in err and "not both" in err
     assert not (tmp_path / "n").exists()
+
+
+def test_linkage_and_dynamics_problems_reported_together(tmp_path, capsys):
+    text = example_path("press.toml").read_text(encoding="utf-8")
+    text = text.replace("crank = 0.08 ", "crank = -0.08 ")
+    bad = tmp_path / "p.toml"
+    bad.write_text(text + "\n[dynamics]\ndelta = 2\nbogus = 1\n", encoding="utf-8")
+    assert main(["dynamics", str(bad), "-o", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err
+    for key in ("mechanism.crank", "dynamics.delta", "dynamics.bogus"):
+        assert f"error: {key}" in err, (key, err)
