@@ -7,7 +7,8 @@ a motor drive with the start-up, the forces under the true motion.
 SPEC is a machine given by its reduced quantities (``[machine]``) or a linkage spec, with a
 ``[dynamics]`` section.  Writes ``DIR/motion.csv`` (``phi_deg, J_red_kgm2,
 dJ_red_dphi_kgm2, M_drive_Nm, M_resist_Nm, omega_rad_s, eps_rad_s2, t_s`` and ``phi_rad,
-W_J, E_J``), ``DIR/forces_true_motion.csv`` (linkage), ``DIR/startup.csv`` (motor),
+W_J, E_J``; a linkage adds ``M_resist_loads_Nm, M_resist_weights_Nm``),
+``DIR/forces_true_motion.csv`` (linkage, engine), ``DIR/startup.csv`` (motor),
 ``DIR/<name>_dynamics.xlsx`` and the plots (PNG, SVG), all at once through a staging
 folder; bad input writes nothing.
 """
@@ -60,7 +61,8 @@ def run(args) -> int:
 
     job = load_dynamics_spec(spec_path)
     res = run_job(job)
-    motion = res["motion"].table[MOTION_COLUMNS]
+    extra = [c for c in res["motion"].table.columns if c not in MOTION_COLUMNS]
+    motion = res["motion"].table[MOTION_COLUMNS + extra]
     ensure_finite(motion, "motion table")
     tables = {"motion.csv": motion}
     if res["forces"] is not None:

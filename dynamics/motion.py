@@ -100,6 +100,14 @@ class MotionResult:
     extra: dict = field(default_factory=dict)
 
 
+def _add_extra_columns(table, model):
+    """Per-position arrays the model carries besides the standard ones (e.g. the parts of
+    a linkage's resisting moment) as more columns."""
+    for k, v in model.extra.items():
+        if isinstance(v, np.ndarray) and v.shape == model.phi.shape:
+            table[k] = v
+
+
 def check_delta(delta, key="dynamics.delta"):
     if delta is None or not (0.0 < delta < 1.0):
         raise SpecError(Problem(key, f"got {delta!r}; the coefficient of speed fluctuation "
@@ -208,6 +216,7 @@ def steady_motion(model, omega_mean=None, *, J_flywheel=0.0, driving="constant")
         "dJ_red_dphi_kgm2": model.dJ_dphi_kgm2, "M_drive_Nm": model.M_drive_Nm,
         "M_resist_Nm": model.M_resist_Nm, "W_J": W, "E_J": 0.5 * J * w * w,
         "omega_rad_s": w, "eps_rad_s2": eps, "t_s": t})
+    _add_extra_columns(table, model)
     return MotionResult(
         name=model.name, table=table, omega_max=wmax, omega_min=wmin, omega_mean=wmean,
         omega_time_mean=float(model.period / t[-1]), delta=(wmax - wmin) / wmean,
@@ -461,6 +470,7 @@ def motor_steady_motion(model, motor: Motor, *, J_flywheel=0.0, rtol=1e-9):
         "dJ_red_dphi_kgm2": model.dJ_dphi_kgm2, "M_drive_Nm": Md,
         "M_resist_Nm": model.M_resist_Nm, "W_J": Wnet, "E_J": 0.5 * J * w * w,
         "omega_rad_s": w, "eps_rad_s2": eps, "t_s": t})
+    _add_extra_columns(table, model)
     wmean = 0.5 * (wmax + wmin)
     return MotionResult(
         name=model.name, table=table, omega_max=wmax, omega_min=wmin, omega_mean=wmean,

@@ -268,16 +268,18 @@ def reduced_inertia(spec, kin):
     return J, dJ
 
 
-def external_power(spec, mech, kin, ext):
+def external_power(spec, mech, kin, ext, split=False):
     """Power [W] of the linkage's external loads (the core's own load model,
     :func:`linkage.loads.external_loads`: forces, moments, useful resistance by stroke and
     span) and of the weights, at the kinematics ``kin`` (unit crank speed: then it is the
-    reduced moment of those loads, + helping the motion)."""
+    reduced moment of those loads, + helping the motion).  ``split=True`` returns the
+    applied loads' and the weights' powers apart."""
     from linkage.groups import dot
     from linkage.loads import external_loads, stroke_cycle
 
     forces, moments, _ = external_loads(spec, mech, kin, stroke_cycle(mech, spec, ext))
     P = 0.0 * np.asarray(kin["A"].z.real, float)
+    Pw = P
     for lname in spec.link_names:
         link = kin["links"][lname]
         o = link.origin
@@ -288,8 +290,10 @@ def external_power(spec, mech, kin, ext):
             P = P + m * link.omega
         ls = spec.links[lname]
         if ls.mass and spec.gravity:                       # weight −m g j at S
-            P = P - ls.mass * spec.gravity * link.point(ls.cg).v.imag
-    return P
+            Pw = Pw - ls.mass * spec.gravity * link.point(ls.cg).v.imag
+    if split:
+        return P, Pw
+    return P + Pw
 
 
 def stroke_extremes(spec, mech):
@@ -317,8 +321,9 @@ def linkage_model(spec, *, steps=720, phi0_deg=None, drive_power=False) -> Reduc
     -------
     ReducedModel
         ``M_resist_Nm`` is minus the reduced moment of every external load and weight
-        (positive where the loads resist); ``M_drive_Nm`` is zero (a drive is added by
-        :mod:`dynamics.motion`).  The crank's own mass and J_S2 are in J_red.
+        (positive where the loads resist), ``extra["M_resist_loads_Nm"]`` and
+        ``extra["M_resist_weights_Nm"]`` its two parts; ``M_drive_Nm`` is zero (a drive is
+        added by :mod:`dynamics.motion`).  The crank's own mass and J_S2 are in J_red.
 
     Notes
     -----
@@ -342,15 +347,17 @@ def linkage_model(spec, *, steps=720, phi0_deg=None, drive_power=False) -> Reduc
     phi_abs = math.radians(phi0_deg) + s * phi
     kin = mech.kinematics(phi_abs, float(s), 0.0)
     J, dJ = reduced_inertia(spec, kin)
-    P = external_power(spec, mech, kin, ext)
-    Mc = -P
+    P_loads, P_weights = external_power(spec, mech, kin, ext, split=True)
+    Mc = -(P_loads + P_weights)
     # work of the resistance: trapezoids on the grid (a resistance that switches on and
     # off inside a step is integrated to O(step)); refine with `steps`
     Wc = np.concatenate([[0.0], np.cumsum(0.5 * (Mc[1:] + Mc[:-1]) * np.diff(phi))])
     zero = np.zeros_like(phi)
     return ReducedModel(spec.name, phi, J, dJ, zero.copy(), Mc, zero.copy(), Wc,
                         2 * math.pi, omega_nominal=abs(spec.omega) or None,
-                        phi0_deg=float(phi0_deg), rotation=s, source=spec)
+                        phi0_deg=float(phi0_deg), rotation=s, source=spec,
+                        extra={"M_resist_loads_Nm": -P_loads,
+                               "M_resist_weights_Nm": -P_weights})
 
 
 # --------------------------------------------------------------------------- engine

@@ -73,6 +73,22 @@ def test_examples_identities(name):
     _true_motion_power_balance(model)
 
 
+def test_resisting_moment_parts():
+    """M_c = (applied loads and useful resistance) + (weights); the weights' part is the
+    derivative of the potential energy Σ m g y_S (zero work over a turn)."""
+    spec = linkage.load_spec(example_path("press.toml"))
+    m = linkage_model(spec, steps=1440)
+    lo, we = m.extra["M_resist_loads_Nm"], m.extra["M_resist_weights_Nm"]
+    assert np.allclose(lo + we, m.M_resist_Nm, rtol=0, atol=1e-12 * np.abs(m.M_resist_Nm).max())
+    res = linkage.analyze(spec, crank_angles_deg=m.phi_deg, course_tables=False).kinematics
+    V = sum(spec.links[n].mass * spec.gravity * res[f"S{i}_y_m"].to_numpy()
+            for n, i in (("crank", 2), ("coupler", 3), ("slider", 4)))
+    dV = np.gradient(V, m.phi, edge_order=2)
+    assert np.max(np.abs(dV - we)) < 1e-4 * np.max(np.abs(we))
+    assert np.sum(0.5 * (we[1:] + we[:-1]) * np.diff(m.phi)) == pytest.approx(0, abs=1e-9 * np.ptp(V) + 1e-9)
+    assert np.all(lo >= -1e-9)   # the press's only load is the resistance
+
+
 def test_reduced_resistance_is_the_core_constant_speed_moment():
     """At constant speed without masses the core's balancing moment is the reduced
     resisting moment (virtual work), position by position."""
