@@ -107,8 +107,6 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
     SpecError
         Every problem at once, each with its key path.
     """
-    import math
-
     from .reduced import PiecewiseLinear, linkage_model, machine_model
 
     data, base_dir = read_toml(path_or_dict)
@@ -297,7 +295,6 @@ def _motor_flywheel(model, motor, delta):
     """Flywheel for δ under a motor characteristic: the classic estimate (constant driving
     moment, at the motor's steady mean speed; :func:`dynamics.motion.classic_flywheel`),
     exact by brentq on the periodic solution with the motor."""
-    import numpy as np
     from scipy.optimize import brentq
 
     from .motion import FlywheelResult, classic_flywheel, motor_steady_motion

@@ -2,7 +2,6 @@
 Cyrillic, Russian ones the textbook symbols; curves told apart by line style."""
 import re
 
-import numpy as np
 import pytest
 from matplotlib.figure import Figure
 
