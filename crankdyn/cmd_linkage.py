@@ -25,8 +25,60 @@ def add_parser(sub):
     p.add_argument("--step", type=float, default=1.0, metavar="DEG",
                    help="crank-angle step of the full-turn plots (default 1°)")
     p.add_argument("--no-plots", action="store_true", help="write the tables only")
+    g = p.add_argument_group(
+        "graphical method (velocity and acceleration plans, force polygons, Zhukovsky lever)")
+    g.add_argument("--plans", metavar="LIST",
+                   help="position numbers, e.g. 5,11, or 'all': plans_<pos>.svg/.pdf/.png, "
+                        "plans.csv, lever.csv, student_table.csv, sheet.pdf, sheet.dxf")
+    g.add_argument("--sheet", default="A1", metavar="A1|A3",
+                   help="drawing sheet size, landscape (default A1)")
+    g.add_argument("--lang", default="ru", metavar="ru|en",
+                   help="language of the drawings (default ru: the textbook's labels)")
+    g.add_argument("--measured", metavar="CSV",
+                   help="a student's measured segments (position, segment, length_mm or "
+                        "value): writes plan_errors.csv, the error of the plan method in %%")
+    g.add_argument("--mu-v", type=float, metavar="MU",
+                   help="velocity plan scale, (m/s)/mm (default: round, pa 100-150 mm)")
+    g.add_argument("--mu-a", type=float, metavar="MU",
+                   help="acceleration plan scale, (m/s²)/mm (default: round, πa 100-150 mm)")
+    g.add_argument("--mu-f", type=float, metavar="MU",
+                   help="force polygon scale, N/mm (default: round, largest force 100-150 mm)")
     p.set_defaults(func=run)
     return p
+
+
+def _plan_options(args):
+    """Check the plan options; return (positions, scales).  One problem per line."""
+    from crankbase.errors import SpecError
+
+    problems = []
+    text = args.plans.strip()
+    positions = "all" if text.lower() == "all" else []
+    if positions != "all":
+        for part in text.split(","):
+            part = part.strip()
+            if not part.isdigit() or int(part) < 1:
+                problems.append(f"--plans: got {part!r}; give position numbers >= 1 "
+                                "separated by commas (e.g. 5,11) or 'all'")
+            elif int(part) not in positions:
+                positions.append(int(part))
+    if args.sheet not in ("A1", "A3"):
+        problems.append(f"--sheet: got {args.sheet!r}; valid: A1, A3")
+    if args.lang not in ("ru", "en"):
+        problems.append(f"--lang: got {args.lang!r}; valid: ru, en")
+    scales = {}
+    for opt, kinds, value in (("--mu-v", ("velocity",), args.mu_v),
+                              ("--mu-a", ("acceleration",), args.mu_a),
+                              ("--mu-f", ("force_dyad", "force_crank"), args.mu_f)):
+        if value is None:
+            continue
+        if not (value > 0 and value < float("inf")):
+            problems.append(f"{opt}: got {value:g}; must be a positive number")
+        for k in kinds:
+            scales[k] = value
+    if problems:
+        raise SpecError(problems)
+    return positions, scales
 
 
 def run(args) -> int:
@@ -47,16 +99,37 @@ def run(args) -> int:
         spec_path = args.spec
     if not (0 < args.step <= 30):
         raise SpecError([f"--step: got {args.step:g}; must be > 0 and <= 30 degrees"])
+    plan_opts = None
+    if args.plans is not None:
+        plan_opts = _plan_options(args)
+    elif args.measured or args.mu_v or args.mu_a or args.mu_f:
+        raise SpecError(["--measured, --mu-v, --mu-a, --mu-f: only with --plans"])
     spec = linkage.load_spec(spec_path)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", SingularPositionWarning)
         result = linkage.analyze(spec)
+    plan_list = measured = None
+    if plan_opts is not None:
+        import plans as plans_pkg
+        from plans.drawing import title_fields
+        from plans.tables import read_measurements
+
+        title_fields(spec)                                   # [drawing] keys checked
+        plan_list = plans_pkg.build_plans(result, plan_opts[0], scales=plan_opts[1])
+        if args.measured:
+            measured = read_measurements(args.measured)
     full = linkage.full_turn(spec, args.step) if not args.no_plots else None
     figures = {}
     if full is not None:
         from linkage.plots import all_figures
         figures = all_figures(result, full)
-    with staged_output(args.output, inputs=[spec_path]) as stage:
+    inputs = [spec_path] + ([args.measured] if args.measured else [])
+    with staged_output(args.output, inputs=inputs) as stage:
+        if plan_list is not None:
+            from plans.report import write_plans
+
+            info = write_plans(result, plan_list, stage, lang=args.lang, sheet=args.sheet,
+                               measurements=measured, previews=not args.no_plots)
         write_csvs(result, stage)
         write_workbook(result, stage / f"{safe_name(spec.name, 'linkage')}.xlsx")
         for stem, fig in figures.items():
@@ -76,4 +149,11 @@ def run(args) -> int:
         where = "" if pd_isna(pos) else f"position {pos}, "
         print(f"  max |Mур| at the positions: {result.forces['M_drive_Nm'].iat[i]:.2f} N·m "
               f"({where}φ = {result.forces['phi_deg'].iat[i]:.2f}°)")
+    if plan_list is not None:
+        print(f"  plans of {len(plan_list)} position(s) on {info['sheets']} {args.sheet} "
+              "sheet(s); Zhukovsky lever against the kinetostatics:")
+        for pp in plan_list:
+            L = pp.lever
+            print(f"    position {pp.tag}: Mур lever {L.M_lever_Nm:.4f} N·m, kinetostatics "
+                  f"{L.M_kinetostatic_Nm:.4f} N·m, difference {L.difference_percent:.1e} %")
     return 0

@@ -122,6 +122,19 @@ class Vec:
         args = [np.asarray(v) if type(v) is Vec else v for v in inputs]
         return getattr(ufunc, method)(*args, **kwargs)
 
+    def __complex__(self):
+        return complex(self.x, self.y)
+
+    def __eq__(self, o):
+        # as complex numbers compare: componentwise (an array of bools for array components)
+        o = o if type(o) is Vec else Vec.of(o)
+        return (self.x == o.x) & (self.y == o.y)
+
+    def __ne__(self, o):
+        return ~(self == o) if np.ndim(self.x) or np.ndim(self.y) else not (self == o)
+
+    __hash__ = None
+
     def __getitem__(self, index):
         return Vec(np.asarray(self.x)[index], np.asarray(self.y)[index])
 

@@ -136,7 +136,8 @@ def load_spec(path_or_dict) -> MechanismSpec:
     data, _ = read_toml(path_or_dict)
     source = None if isinstance(path_or_dict, dict) else str(path_or_dict)
     ck = Checker()
-    ck.unknown(data, ("mechanism", "links", "load", "analysis"))
+    # "drawing": the title block fields of the plans sheet, checked by plans.drawing
+    ck.unknown(data, ("mechanism", "links", "load", "analysis", "drawing"))
 
     m = ck.table(data, "mechanism")
     ck.unknown(m, _MECH_KEYS, "mechanism")

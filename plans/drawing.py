@@ -1,0 +1,344 @@
+"""Drawings of the plans at true scale (matplotlib, object-oriented API, headless) and the
+drawing sheet (A1 or A3 landscape, ГОСТ 2.104 form 1 title block).
+
+Only consumes :class:`plans.model.PositionPlans`; the lines and texts come from
+:mod:`plans.layout`, so the PDF and the DXF (:mod:`plans.dxf`) of a sheet are the same.
+A figure is sized in millimetres (``figsize`` = mm/25.4) with one axes filling it and
+data limits equal to its size in mm: 1 mm of a plan is 1 mm of paper when the SVG or PDF
+is printed at 100 %.
+"""
+from __future__ import annotations
+
+from .errors import PlanError
+from .layout import (CAP_EM, FONT, H_LABEL, H_POINT, S_MAIN, S_THIN, Arrow, Block, Circle,
+                     Line, Sheet, Text, _arrow_parts, diagram_block, lever_block,
+                     positions_block, text_width)
+
+__all__ = ["position_blocks", "position_figure", "layout_sheets", "sheet_figure",
+           "render_items", "SHEETS", "title_fields", "TITLE_KEYS"]
+
+PT = 72.0 / 25.4            # points per mm
+#: Sheet sizes, landscape (ГОСТ 2.301). [mm]
+SHEETS = {"A1": (841.0, 594.0), "A3": (420.0, 297.0)}
+#: Widths of the lines of each layer. [mm]
+WIDTH = {"FRAME": S_MAIN, "MAIN": S_MAIN, "VECTORS": S_MAIN, "LEVER": S_MAIN,
+         "THIN": S_THIN, "DASHED": S_THIN, "TITLE": S_THIN, "TEXT": S_THIN}
+DASH = (4.0, 1.5)           # mm, ГОСТ 2.303 dashed thin line
+#: Keys of the spec's ``[drawing]`` table (the title block fields).
+TITLE_KEYS = ("designation", "title", "material", "letter", "mass", "scale", "organization",
+              "developer", "checker", "tech_control", "norm_control", "approver", "date")
+GAP = 8.0                   # mm between diagrams
+
+
+def title_fields(spec):
+    """The title block's fields from the spec's ``[drawing]`` table (blank when not
+    given; graph 1, the name, defaults to the mechanism's name).
+
+    Raises
+    ------
+    PlanError
+        Unknown keys or values that are not strings or numbers.
+    """
+    raw = dict(spec.raw.get("drawing", {}) or {})
+    problems = []
+    out = {k: "" for k in TITLE_KEYS}
+    for k, v in raw.items():
+        if k not in TITLE_KEYS:
+            problems.append(f"drawing.{k}: unknown key; valid: {', '.join(TITLE_KEYS)}")
+        elif not isinstance(v, (str, int, float)) or isinstance(v, bool):
+            problems.append(f"drawing.{k}: got {v!r}; must be a text")
+        else:
+            out[k] = str(v)
+    if problems:
+        raise PlanError(problems)
+    if not out["title"]:
+        out["title"] = spec.name
+    return out
+
+
+# ------------------------------------------------------------------------- rendering
+
+
+def render_items(ax, items):
+    """Draw layout items (mm coordinates) on a matplotlib Axes whose data unit is 1 mm."""
+    from matplotlib.patches import Circle as MCircle
+    from matplotlib.patches import Polygon
+
+    for it in items:
+        if isinstance(it, Line):
+            lw = WIDTH.get(it.layer, S_THIN) * PT
+            kw = {}
+            if it.layer == "DASHED":
+                kw["dashes"] = (DASH[0] * PT / lw, DASH[1] * PT / lw)
+            ax.plot([it.p1.real, it.p2.real], [it.p1.imag, it.p2.imag], color="k", lw=lw,
+                    solid_capstyle="butt", **kw)
+        elif isinstance(it, Arrow):
+            head = _arrow_parts(it.p1, it.p2)
+            if head is None:
+                continue
+            lw = WIDTH.get(it.layer, S_MAIN) * PT
+            tip, left, right = head
+            base = (left + right) / 2
+            ax.plot([it.p1.real, base.real], [it.p1.imag, base.imag], color="k", lw=lw,
+                    solid_capstyle="butt")
+            ax.add_patch(Polygon([(z.real, z.imag) for z in head], closed=True,
+                                 facecolor="k", edgecolor="k", lw=0.1 * PT))
+        elif isinstance(it, Text):
+            va = {"bottom": "baseline", "center": "center", "top": "top"}[it.va]
+            ax.text(it.at.real, it.at.imag, it.text, fontsize=it.height / CAP_EM * PT,
+                    ha=it.ha, va=va, family=FONT, color="k")
+        elif isinstance(it, Circle):
+            ax.add_patch(MCircle((it.center.real, it.center.imag), it.r,
+                                 facecolor="k" if it.filled else "white", edgecolor="k",
+                                 lw=WIDTH.get(it.layer, S_THIN) * PT, zorder=3))
+
+
+def _mm_figure(width, height):
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(width / 25.4, height / 25.4))
+    ax = fig.add_axes((0, 0, 1, 1))
+    ax.set_xlim(0, width)
+    ax.set_ylim(0, height)
+    ax.set_axis_off()
+    return fig, ax
+
+
+def position_blocks(pp, lang="ru"):
+    """The five diagrams of a position, in the course project's order."""
+    return [diagram_block(pp, "velocity", lang), diagram_block(pp, "acceleration", lang),
+            lever_block(pp, lang), diagram_block(pp, "force_dyad", lang),
+            diagram_block(pp, "force_crank", lang)]
+
+
+def _pack(blocks, x0, y0, x1, y1, corner=None, gap=GAP):
+    """Place blocks in the field (x0, y0)–(x1, y1), each at the top-most, then left-most
+    free spot, clear of the others by ``gap`` and of the lower right ``corner`` = (x, y)
+    region (the title block).  Blocks are tried in their order; one that does not fit is
+    left for the next sheet while later ones may still fill the gaps.  Returns
+    [(block, offset)] and the blocks left over."""
+    rects = []
+    placed = []
+    left_over = []
+    if corner is not None:
+        rects.append((corner[0], y0 - gap, x1 + gap, corner[1]))
+    for b in blocks:
+        xs = sorted({x0} | {r[2] + gap for r in rects})
+        ys = sorted({y1} | {r[1] - gap for r in rects}, reverse=True)
+        spot = None
+        for top in ys:
+            for left in xs:
+                r = (left, top - b.height, left + b.width, top)
+                if r[2] > x1 + 1e-9 or r[1] < y0 - 1e-9:
+                    continue
+                if any(not (r[2] + gap <= q[0] + 1e-9 or q[2] + gap <= r[0] + 1e-9
+                            or r[3] + gap <= q[1] + 1e-9 or q[3] + gap <= r[1] + 1e-9)
+                       for q in rects):
+                    continue
+                spot = r
+                break
+            if spot:
+                break
+        if spot is None:
+            left_over.append(b)
+            continue
+        rects.append(spot)
+        placed.append((b, complex(spot[0] - b.bbox[0], spot[3] - b.bbox[3])))
+    return placed, left_over
+
+
+def position_figure(pp, lang="ru", max_width=560.0):
+    """One figure with all plans of a position at true scale (1 plan mm = 1 paper mm).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Its size in inches is its size in mm / 25.4.
+    """
+    blocks = position_blocks(pp, lang)
+    width = max(max_width, max(b.width for b in blocks) + 2 * GAP)
+    total_h = sum(b.height for b in blocks) + GAP * (len(blocks) + 1)
+    placed, rest = _pack(blocks, GAP, 0.0, width - GAP, total_h - GAP)
+    assert not rest
+    items = []
+    for b, dz in placed:
+        items += b.moved(dz)
+    xs0 = min(b.bbox[0] + dz.real for b, dz in placed)
+    ys0 = min(b.bbox[1] + dz.imag for b, dz in placed)
+    xs1 = max(b.bbox[2] + dz.real for b, dz in placed)
+    ys1 = max(b.bbox[3] + dz.imag for b, dz in placed)
+    shift = complex(GAP - xs0, GAP - ys0)
+    W, H = xs1 - xs0 + 2 * GAP, ys1 - ys0 + 2 * GAP
+    fig, ax = _mm_figure(W, H)
+    render_items(ax, Block(items, (0, 0, W, H)).moved(shift))
+    return fig
+
+
+# ----------------------------------------------------------------------------- sheets
+
+
+def _title_block_items(x0, y0, fields, number, count, lang):
+    """ГОСТ 2.104 form 1 (185 × 55 mm), lower left corner at (x0, y0)."""
+    items = []
+    z0 = complex(x0, y0)
+
+    def ln(xa, ya, xb, yb, layer="FRAME"):
+        items.append(Line(z0 + complex(xa, ya), z0 + complex(xb, yb), layer))
+
+    def tx(x, y, s, h=H_LABEL, ha="center", cell=None):
+        """A text in a cell ``cell`` mm wide: smaller (never below 1.8 mm, the smallest
+        height of ГОСТ 2.304) when it would not fit."""
+        if s:
+            if cell is not None:
+                w = text_width(s, h)
+                if w > cell - 1.0:
+                    h = max(1.8, h * (cell - 1.0) / w)
+            items.append(Text(z0 + complex(x, y), s, h, "TEXT", ha, "center"))
+
+    ln(0, 0, 185, 0)
+    ln(0, 55, 185, 55)
+    ln(0, 0, 0, 55)
+    ln(185, 0, 185, 55)
+    for x in (17, 23 + 17, 55, 65):
+        ln(x, 0, x, 55)
+    ln(7, 30, 7, 55)
+    ln(0, 30, 65, 30)
+    ln(0, 35, 65, 35)
+    for y in (5, 10, 15, 20, 25, 40, 45, 50):
+        ln(0, y, 65, y, "THIN")
+    ln(65, 40, 185, 40)
+    ln(65, 15, 185, 15)
+    ln(135, 0, 135, 40)
+    ln(135, 35, 185, 35)
+    ln(135, 20, 185, 20)
+    ln(150, 20, 150, 40)
+    ln(167, 20, 167, 40)
+    ln(155, 15, 155, 20)
+    ln(140, 20, 140, 35, "THIN")
+    ln(145, 20, 145, 35, "THIN")
+    ru = lang == "ru"
+    heads = (["Изм.", "Лист", "№ докум.", "Подп.", "Дата"] if ru else
+             ["Rev.", "Sheet", "Doc. No.", "Sign.", "Date"])
+    for (xa, xb), s in zip(((0, 7), (7, 17), (17, 40), (40, 55), (55, 65)), heads):
+        tx((xa + xb) / 2, 32.5, s, cell=xb - xa)
+    roles = (["Разраб.", "Пров.", "Т.контр.", "", "Н.контр.", "Утв."] if ru else
+             ["Drawn", "Checked", "Tech.", "", "Norm.", "Appr."])
+    names = [fields["developer"], fields["checker"], fields["tech_control"], "",
+             fields["norm_control"], fields["approver"]]
+    for k, (role, name) in enumerate(zip(roles, names)):
+        y = 27.5 - 5 * k
+        tx(1, y, role, ha="left", cell=17)
+        tx(18, y, name, ha="left", cell=23)
+        if k == 0 and fields["date"]:
+            tx(60, y, fields["date"], h=H_LABEL, cell=10)
+    tx(125, 47.5, fields["designation"], h=7.0, cell=120)
+    tx(100, 27.5, fields["title"], h=5.0, cell=70)
+    tx(100, 7.5, fields["material"], h=5.0, cell=70)
+    for (xa, xb), s in zip(((135, 150), (150, 167), (167, 185)),
+                           (["Лит.", "Масса", "Масштаб"] if ru else
+                            ["Lit.", "Mass", "Scale"])):
+        tx((xa + xb) / 2, 37.5, s, cell=xb - xa)
+    tx(142.5, 27.5, fields["letter"], h=H_POINT, cell=15)
+    tx(158.5, 27.5, fields["mass"], h=H_POINT, cell=17)
+    tx(176, 27.5, fields["scale"], h=H_POINT, cell=18)
+    tx(136, 17.5, f"{'Лист' if ru else 'Sheet'} {number}", ha="left", cell=19)
+    tx(156, 17.5, f"{'Листов' if ru else 'Sheets'} {count}", ha="left", cell=29)
+    tx(160, 7.5, fields["organization"], h=H_POINT, cell=50)
+    return items
+
+
+def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
+    """Lay out the plan of positions and the chosen plans on as many sheets as needed.
+
+    Parameters
+    ----------
+    result : linkage.AnalysisResult
+    plans : list of PositionPlans
+    lang : {"ru", "en"}
+    size : {"A1", "A3"}
+        Landscape sheet (ГОСТ 2.301): A1 841 × 594 mm, A3 420 × 297 mm.
+    fields : dict, optional
+        Title block fields (:func:`title_fields`).
+
+    Returns
+    -------
+    list of Sheet
+        With the frame (ГОСТ 2.104: 20 mm on the left, 5 mm elsewhere), the title block
+        185 × 55 mm in the lower right corner, and the diagrams packed in rows without
+        overlap (at least 8 mm apart, clear of the title block).
+
+    Raises
+    ------
+    PlanError
+        A diagram larger than the sheet's working field (choose a larger scale or A1).
+    """
+    if size not in SHEETS:
+        raise PlanError([f"--sheet: got {size!r}; valid: {', '.join(SHEETS)}"])
+    W, H = SHEETS[size]
+    fields = fields or title_fields(result.spec)
+    chosen = []
+    K = result.kinematics
+    for pp in plans:
+        hit = [i for i in range(len(K)) if abs(K["phi_deg"].iat[i] - pp.phi_deg) < 1e-9]
+        chosen += hit[:1]
+    blocks = [positions_block(result, chosen, lang, longest_mm=0.3 * W)]
+    for pp in plans:
+        blocks += position_blocks(pp, lang)
+    x0, x1 = 20.0 + GAP, W - 5.0 - GAP
+    y0, y1 = 5.0 + GAP, H - 5.0 - GAP
+    tb_left, tb_top = W - 5.0 - 185.0, 5.0 + 55.0
+
+    def fits(b):
+        if b.width > x1 - x0 or b.height > y1 - y0:
+            return False
+        return b.height <= y1 - tb_top - GAP or b.width <= tb_left - GAP - x0
+
+    too_big = [b.title for b in blocks if not fits(b)]
+    if too_big:
+        raise PlanError([f"--sheet {size}: '{t}' does not fit the sheet's field "
+                         f"({x1 - x0:.0f} × {y1 - y0:.0f} mm); use A1 or a coarser scale"
+                         for t in too_big])
+    sheets = []
+    rest = blocks
+    while rest:
+        placed, rest = _pack(rest, x0, y0, x1, y1, (tb_left - GAP, tb_top + GAP))
+        if not placed:   # pragma: no cover - guarded by too_big
+            raise PlanError([f"--sheet {size}: cannot place '{rest[0].title}'"])
+        sh = Sheet(W, H)
+        for b, dz in placed:
+            sh.items += b.moved(dz)
+        sheets.append(sh)
+    for k, sh in enumerate(sheets):
+        sh.number, sh.count = k + 1, len(sheets)
+        frame = [Line(0j, complex(W, 0), "THIN"), Line(complex(W, 0), complex(W, H), "THIN"),
+                 Line(complex(W, H), complex(0, H), "THIN"), Line(complex(0, H), 0j, "THIN")]
+        fx0, fy0, fx1, fy1 = 20.0, 5.0, W - 5.0, H - 5.0
+        frame += [Line(complex(fx0, fy0), complex(fx1, fy0), "FRAME"),
+                  Line(complex(fx1, fy0), complex(fx1, fy1), "FRAME"),
+                  Line(complex(fx1, fy1), complex(fx0, fy1), "FRAME"),
+                  Line(complex(fx0, fy1), complex(fx0, fy0), "FRAME")]
+        sh.items = frame + _title_block_items(tb_left, 5.0, fields, sh.number, sh.count,
+                                              lang) + sh.items
+    return sheets
+
+
+def sheet_figure(sheet):
+    """A sheet as a matplotlib Figure of exactly its size (A1: 841 × 594 mm)."""
+    fig, ax = _mm_figure(sheet.width, sheet.height)
+    render_items(ax, sheet.items)
+    return fig
+
+
+def check_no_overlap(items, pad=0.0):
+    """Pairs of texts whose boxes overlap (for the tests and a self-check)."""
+    from .layout import _boxes_overlap, _text_box
+
+    texts = [t for t in items if isinstance(t, Text)]
+    boxes = [_text_box(t) for t in texts]
+    out = []
+    for a in range(len(boxes)):
+        for b in range(a + 1, len(boxes)):
+            if _boxes_overlap(boxes[a], boxes[b], pad):
+                out.append((texts[a].text, texts[b].text))
+    return out
+

@@ -1,0 +1,97 @@
+"""The drawing sheet as DXF (ezdxf), in real millimetres, one layer per kind of line.
+
+Layers (ГОСТ 2.303 line kinds; lineweights in 1/100 mm):
+
+========  ===========================================  ==========
+layer     what                                         lineweight
+========  ===========================================  ==========
+FRAME     the sheet's frame and the title block's      70 (S = 0.7 mm)
+          main lines
+MAIN      links of the chosen positions (plan of       70
+          positions)
+VECTORS   the vectors of the plans (one LINE each,     70
+          with a SOLID arrowhead)
+LEVER     force arrows of the Zhukovsky lever          70
+THIN      thin lines: other positions, the lever's     30 (S/2.3)
+          turned plan, the title block's thin lines
+DASHED    the crank circle (dashed thin line)          30
+TEXT      every text (style GOST: ISOCPEUR font,       25
+          height = capital height, ГОСТ 2.304)
+========  ===========================================  ==========
+
+Each vector's LINE carries its name ``<position>:<plan>:<segment>`` as XDATA of the
+application ``CRANKDYN``, so a CAD user (and the tests) can match it with ``plans.csv``.
+"""
+from __future__ import annotations
+
+from .layout import Arrow, Circle, Line, Text, _arrow_parts
+
+__all__ = ["sheet_dxf", "write_dxf", "LAYERS", "APPID"]
+
+APPID = "CRANKDYN"
+LAYERS = {"FRAME": 70, "MAIN": 70, "VECTORS": 70, "LEVER": 70, "THIN": 30, "DASHED": 30,
+          "TEXT": 25}
+
+
+def sheet_dxf(sheet, names=None):
+    """An ezdxf document of a sheet (A1/A3 landscape, $INSUNITS = mm, limits = the sheet).
+
+    Parameters
+    ----------
+    sheet : plans.layout.Sheet
+    names : dict, optional
+        Arrow name → the name stored as XDATA (default: the arrow's own name).
+    """
+    import ezdxf
+
+    doc = ezdxf.new("R2010", setup=True, units=4)       # 4 = millimetres
+    doc.header["$MEASUREMENT"] = 1                       # metric
+    doc.appids.add(APPID)
+    for name, lw in LAYERS.items():
+        layer = doc.layers.add(name, color=7)
+        layer.dxf.lineweight = lw
+        if name == "DASHED":
+            layer.dxf.linetype = "DASHED"
+    doc.styles.add("GOST", font="isocpeur.ttf")
+    msp = doc.modelspace()
+    msp.reset_limits((0.0, 0.0), (sheet.width, sheet.height))
+    msp.reset_extents((0.0, 0.0, 0.0), (sheet.width, sheet.height, 0.0))
+    align = {("left", "bottom"): "BOTTOM_LEFT", ("center", "bottom"): "BOTTOM_CENTER",
+             ("right", "bottom"): "BOTTOM_RIGHT", ("left", "center"): "MIDDLE_LEFT",
+             ("center", "center"): "MIDDLE_CENTER", ("right", "center"): "MIDDLE_RIGHT",
+             ("left", "top"): "TOP_LEFT", ("center", "top"): "TOP_CENTER",
+             ("right", "top"): "TOP_RIGHT"}
+    for it in sheet.items:
+        if isinstance(it, Line):
+            msp.add_line((it.p1.real, it.p1.imag), (it.p2.real, it.p2.imag),
+                         dxfattribs={"layer": it.layer})
+        elif isinstance(it, Arrow):
+            head = _arrow_parts(it.p1, it.p2)
+            if head is None:
+                continue
+            line = msp.add_line((it.p1.real, it.p1.imag), (it.p2.real, it.p2.imag),
+                                dxfattribs={"layer": it.layer})
+            if it.name:
+                line.set_xdata(APPID, [(1000, (names or {}).get(it.name, it.name))])
+            tip, left, right = head
+            msp.add_solid([(tip.real, tip.imag), (left.real, left.imag),
+                           (right.real, right.imag)], dxfattribs={"layer": it.layer})
+        elif isinstance(it, Text):
+            t = msp.add_text(it.text, height=it.height,
+                             dxfattribs={"layer": "TEXT", "style": "GOST"})
+            t.set_placement((it.at.real, it.at.imag), align=_align(align[(it.ha, it.va)]))
+        elif isinstance(it, Circle):
+            msp.add_circle((it.center.real, it.center.imag), it.r,
+                           dxfattribs={"layer": it.layer})
+    return doc
+
+
+def _align(name):
+    from ezdxf.enums import TextEntityAlignment
+
+    return getattr(TextEntityAlignment, name)
+
+
+def write_dxf(sheet, path):
+    """Write :func:`sheet_dxf` to ``path`` (the caller makes it atomic)."""
+    sheet_dxf(sheet).saveas(path)

@@ -1,0 +1,464 @@
+"""Drawing primitives of the plans in millimetres of paper, shared by the matplotlib
+renderer (:mod:`plans.drawing`) and the DXF writer (:mod:`plans.dxf`), so the PDF and the
+DXF of a sheet hold the same lines and texts.
+
+Line kinds and text heights follow the Russian drafting standards:
+
+* ГОСТ 2.303-68: solid main line S = 0.5…1.4 mm (here :data:`S_MAIN` = 0.7 mm on A1 and
+  A3 alike), solid thin line S/3…S/2 (:data:`S_THIN` = 0.3 mm), dashed thin line with
+  dashes of 2…8 mm and gaps of 1…2 mm (here 4 mm and 1.5 mm).
+* ГОСТ 2.304-81: text heights from the series 2.5, 3.5, 5, 7, 10, 14 mm (the height of
+  capitals).  The standard's type B font is not shipped with matplotlib; the drawings use
+  DejaVu Sans with its capital height (0.729 em) set to the standard's height, and the
+  DXF names the CAD font ISOCPEUR (the usual stand-in for type B, with Cyrillic).
+
+Vectors are main lines with a filled arrowhead (4 mm long, 1.3 mm wide: shorter on short
+vectors); lines of the plan of positions and the lever's arms are thin lines.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from functools import lru_cache
+
+__all__ = ["Line", "Arrow", "Text", "Circle", "Block", "diagram_block", "lever_block",
+           "positions_block", "text_width", "S_MAIN", "S_THIN", "CAP_EM", "H_LABEL",
+           "H_POINT", "H_TITLE"]
+
+S_MAIN = 0.7     # mm, ГОСТ 2.303 solid main line
+S_THIN = 0.3     # mm, ГОСТ 2.303 solid thin line (≈ S/2.3)
+CAP_EM = 0.729   # DejaVu Sans capital height / em
+H_LABEL = 2.5    # mm, vector labels (ГОСТ 2.304 series)
+H_POINT = 3.5    # mm, point letters
+H_TITLE = 5.0    # mm, diagram titles
+ARROW_L = 4.0
+ARROW_W = 1.3
+FONT = "DejaVu Sans"
+
+
+@dataclass
+class Line:
+    p1: complex
+    p2: complex
+    layer: str = "THIN"          # MAIN, THIN, DASHED, FRAME, TITLE
+
+
+@dataclass
+class Arrow:
+    """A vector: a main line from p1 to p2 with an arrowhead at p2."""
+    p1: complex
+    p2: complex
+    layer: str = "VECTORS"
+    name: str = ""               # ``<plan>:<segment>`` for the vectors of plans.csv
+
+
+@dataclass
+class Text:
+    at: complex
+    text: str
+    height: float = H_LABEL
+    layer: str = "TEXT"
+    ha: str = "center"           # left, center, right
+    va: str = "center"           # bottom, center, top
+
+
+@dataclass
+class Circle:
+    center: complex
+    r: float
+    layer: str = "THIN"
+    filled: bool = False
+
+
+@dataclass
+class Block:
+    """A laid-out diagram: items in local mm coordinates, bbox (x0, y0, x1, y1)."""
+    items: list
+    bbox: tuple
+    title: str = ""
+    key: str = ""
+
+    @property
+    def width(self):
+        return self.bbox[2] - self.bbox[0]
+
+    @property
+    def height(self):
+        return self.bbox[3] - self.bbox[1]
+
+    def moved(self, dz):
+        out = []
+        for it in self.items:
+            if isinstance(it, (Line, Arrow)):
+                out.append(type(it)(it.p1 + dz, it.p2 + dz, *[getattr(it, f) for f in
+                                   ("layer", "name") if hasattr(it, f)]))
+            elif isinstance(it, Text):
+                out.append(Text(it.at + dz, it.text, it.height, it.layer, it.ha, it.va))
+            elif isinstance(it, Circle):
+                out.append(Circle(it.center + dz, it.r, it.layer, it.filled))
+        return out
+
+
+@lru_cache(maxsize=4096)
+def text_width(text: str, height: float) -> float:
+    """Width of ``text`` at capital height ``height`` in DejaVu Sans. [mm]"""
+    from matplotlib.font_manager import FontProperties
+    from matplotlib.textpath import TextPath
+
+    if not text:
+        return 0.0
+    tp = TextPath((0, 0), text, size=height / CAP_EM, prop=FontProperties(family=FONT))
+    ext = tp.get_extents()
+    return max(ext.x1, 0.0) + 0.1 * height
+
+
+def _text_box(t: Text):
+    w = text_width(t.text, t.height)
+    h = t.height * 1.25
+    x = t.at.real - {"left": 0.0, "center": w / 2, "right": w}[t.ha]
+    y = t.at.imag - {"bottom": 0.0, "center": h / 2, "top": h}[t.va]
+    return (x, y - 0.15 * t.height, x + w, y + h)
+
+
+def _boxes_overlap(a, b, pad=0.4):
+    return not (a[2] + pad <= b[0] or b[2] + pad <= a[0] or a[3] + pad <= b[1]
+                or b[3] + pad <= a[1])
+
+
+def _seg_hits_box(p1, p2, box, pad=0.3):
+    """Does the segment p1–p2 cross the box (Liang–Barsky clipping)?"""
+    x0, y0, x1, y1 = box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad
+    dx, dy = p2.real - p1.real, p2.imag - p1.imag
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-dx, p1.real - x0), (dx, x1 - p1.real), (-dy, p1.imag - y0),
+                 (dy, y1 - p1.imag)):
+        if p == 0:
+            if q < 0:
+                return False
+        else:
+            r = q / p
+            if p < 0:
+                t0 = max(t0, r)
+            else:
+                t1 = min(t1, r)
+            if t0 > t1:
+                return False
+    return True
+
+
+class _Placer:
+    """Greedy placement of labels: the first candidate that overlaps no placed label and
+    crosses no line; else the one with the fewest conflicts."""
+
+    def __init__(self, segments):
+        self.segments = list(segments)
+        self.boxes = []
+
+    def place(self, candidates, text, height):
+        best, best_score = None, None
+        for at in candidates:
+            t = Text(at, text, height)
+            box = _text_box(t)
+            score = sum(_boxes_overlap(box, b) for b in self.boxes) * 1000
+            score += sum(_seg_hits_box(p1, p2, box) for p1, p2 in self.segments)
+            if score == 0:
+                best = t
+                break
+            if best_score is None or score < best_score:
+                best, best_score = t, score
+        self.boxes.append(_text_box(best))
+        return best
+
+
+def _arrow_parts(p1, p2):
+    """Arrowhead triangle (3 points) of a vector p1→p2, or None for a null vector."""
+    d = p2 - p1
+    L = abs(d)
+    if L < 1e-6:
+        return None
+    u = d / L
+    hl = min(ARROW_L, 0.45 * L)
+    hw = ARROW_W * hl / ARROW_L
+    base = p2 - u * hl
+    return (p2, base + 1j * u * hw / 2, base - 1j * u * hw / 2)
+
+
+def _label_candidates(p1, p2, dists=(2.2, 4.0, 6.5, 9.5, 13.0, 17.0)):
+    d = p2 - p1
+    L = abs(d)
+    u = d / L if L > 0 else 1.0
+    n = 1j * u
+    out = []
+    for f in (0.5, 0.35, 0.65, 0.2, 0.8):
+        m = p1 + f * d
+        for dist in dists:
+            out += [m + n * dist, m - n * dist]
+    return out
+
+
+def _point_candidates(z, r=3.0):
+    """Spots around a point: 8 directions at r, 2r, 3r and 4r."""
+    return [z + f * r * complex(math.cos(math.radians(k)), math.sin(math.radians(k)))
+            for f in (1, 2, 3, 4) for k in (45, 135, 225, 315, 90, 270, 0, 180)]
+
+
+_QUANTITY_RU = {"V_A": "VA", "V_B": "VB", "V_BA": "VBA", "a_A": "aA", "a_B": "aB",
+                "a_BA": "aBA", "a_BA_n": "aⁿBA", "a_BA_t": "aᵗBA", "a_BC_n": "aⁿBC",
+                "a_BC_t": "aᵗBC", "a_AO_n": "aⁿAO", "a_AO_t": "aᵗAO"}
+
+
+def vector_label(v, lang):
+    """Label of a vector on the drawing: the quantity it stands for (VA, aⁿBA, R₂₃ᵗ …)."""
+    if v.plan.startswith("force"):
+        return v.label(lang)
+    q = v.quantity
+    if q in _QUANTITY_RU:
+        return _QUANTITY_RU[q]
+    kind, point = q.split("_", 1)               # V_S3, a_E
+    return kind + point.translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
+
+
+_TITLES = {
+    "velocity": ("План скоростей", "Velocity diagram"),
+    "acceleration": ("План ускорений", "Acceleration diagram"),
+    "force_dyad": ("План сил группы II(3,4)", "Force polygon of the dyad II(3,4)"),
+    "force_crank": ("План сил начального звена", "Force polygon of the crank"),
+    "lever": ("Рычаг Жуковского", "Zhukovsky's lever"),
+    "positions": ("План положений", "Plan of positions"),
+}
+_SCALE_UNIT = {"velocity": ("(м/с)/мм", "(m/s)/mm"), "acceleration": ("(м/с²)/мм", "(m/s²)/mm"),
+               "force_dyad": ("Н/мм", "N/mm"), "force_crank": ("Н/мм", "N/mm"),
+               "positions": ("м/мм", "m/mm")}
+_MU = {"velocity": "μV", "acceleration": "μa", "force_dyad": "μF", "force_crank": "μF",
+       "positions": "μl"}
+
+
+def fmt(x, lang, digits=4):
+    """A number for the drawing: up to ``digits`` significant digits, a decimal comma in
+    Russian."""
+    s = f"{x:.{digits}g}"
+    return s.replace(".", ",") if lang == "ru" else s
+
+
+def _where(pp, lang):
+    if pp.position is not None:
+        return (f"пол. {pp.position}" if lang == "ru" else f"position {pp.position}")
+    return f"φ = {fmt(pp.phi_deg, lang)}°"
+
+
+def _titled(items, bbox, title_lines, key):
+    """Put the title lines above the bbox; return a Block with the grown bbox."""
+    x0, y0, x1, y1 = bbox
+    y = y1 + 3.0
+    for k, (line, h) in enumerate(reversed(title_lines)):
+        items.append(Text(complex((x0 + x1) / 2, y), line, h, "TEXT", "center", "bottom"))
+        w = text_width(line, h)
+        x0 = min(x0, (bbox[0] + bbox[2]) / 2 - w / 2)
+        x1 = max(x1, (bbox[0] + bbox[2]) / 2 + w / 2)
+        y += h * 1.6
+    name = ", ".join(t for t, _ in title_lines[:2])
+    return Block(items, (x0 - 2, y0 - 2, x1 + 2, y + 1), name, key)
+
+
+def _items_bbox(items):
+    xs, ys = [], []
+    for it in items:
+        if isinstance(it, (Line, Arrow)):
+            xs += [it.p1.real, it.p2.real]
+            ys += [it.p1.imag, it.p2.imag]
+        elif isinstance(it, Text):
+            b = _text_box(it)
+            xs += [b[0], b[2]]
+            ys += [b[1], b[3]]
+        elif isinstance(it, Circle):
+            xs += [it.center.real - it.r, it.center.real + it.r]
+            ys += [it.center.imag - it.r, it.center.imag + it.r]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def diagram_block(pp, kind, lang="ru") -> Block:
+    """A plan (velocity, acceleration, a force polygon) of one position as a Block: every
+    vector an arrow at the plan's scale, labelled with its quantity; the points of the
+    kinematic plans lettered; title and scale above."""
+    plan = pp.plans[kind]
+    items = []
+    segs = []
+    for v in plan.vectors:
+        layer = "VECTORS"
+        items.append(Arrow(v.start, v.end, layer, f"{pp.tag}:{kind}:{v.name}"))
+        segs.append((v.start, v.end))
+    placer = _Placer(segs)
+    # the pole and the points (kinematic plans)
+    if kind in ("velocity", "acceleration"):
+        items.append(Circle(0j, 0.6, "VECTORS", True))
+        for name, z in plan.points.items():
+            lab = plan.point_labels[name][0 if lang == "ru" else 1]
+            t = placer.place(_point_candidates(z), lab, H_POINT)
+            items.append(t)
+    for v in plan.vectors:
+        if v.length_mm < 1e-6:
+            continue
+        lab = vector_label(v, lang)
+        items.append(placer.place(_label_candidates(v.start, v.end), lab, H_LABEL))
+    bbox = _items_bbox(items)
+    title, mu, unit = (_TITLES[kind][0 if lang == "ru" else 1], _MU[kind],
+                       _SCALE_UNIT[kind][0 if lang == "ru" else 1])
+    if lang == "en":
+        mu = {"μV": "kv", "μa": "ka", "μF": "kF"}[mu]
+    lines = [(title, H_TITLE),
+             (f"{_where(pp, lang)}, {mu} = {fmt(plan.scale, lang)} {unit}", H_POINT)]
+    return _titled(items, bbox, lines, f"{pp.tag}:{kind}")
+
+
+def lever_block(pp, lang="ru", force_len=(8.0, 30.0)) -> Block:
+    """Zhukovsky's lever: the velocity plan turned 90° clockwise (thin lines), every load
+    as an arrow at its point (direction true, length only indicative: ``force_len`` mm for
+    the smallest and the largest force), the balancing force Fур at a, and the balancing
+    moment from the lever beside the kinetostatic one."""
+    L = pp.lever
+    items = []
+    segs = []
+    for name, p1, p2, lru, len_ in L.segments:
+        items.append(Line(p1, p2, "THIN"))
+        segs.append((p1, p2))
+    items.append(Circle(0j, 0.6, "VECTORS", True))
+    mags = [abs(f.force) for f in L.forces if abs(f.force) != 0] + [abs(L.balancing_force_N)]
+    lo, hi = min(mags), max(mags)
+
+    def shown(F):
+        if hi == lo:
+            return force_len[1]
+        return force_len[0] + (force_len[1] - force_len[0]) * (abs(F) - lo) / (hi - lo)
+
+    arrows = []
+    for f in L.forces:
+        if abs(f.force) == 0:
+            continue
+        d = f.force / abs(f.force) * shown(f.force)
+        arrows.append((f.at, f.at + d, f.label_ru if lang == "ru" else f.label_en))
+    fb = L.balancing_force_N
+    if fb != 0:
+        d = L.balancing_dir * math.copysign(1.0, fb) * shown(fb)
+        arrows.append((L.balancing_at, L.balancing_at + d, "Fур" if lang == "ru" else "Fb"))
+    for p1, p2, _ in arrows:
+        items.append(Arrow(p1, p2, "LEVER"))
+        segs.append((p1, p2))
+    placer = _Placer(segs)
+    vplan = pp.plans["velocity"]
+    for name, z in L.points.items():
+        lab = vplan.point_labels[name][0 if lang == "ru" else 1]
+        items.append(placer.place(_point_candidates(z), lab, H_POINT))
+    for p1, p2, lab in arrows:
+        cands = [p2 + (p2 - p1) / abs(p2 - p1) * 3.0] + _label_candidates(p1, p2)
+        items.append(placer.place(cands, lab, H_LABEL))
+    bbox = _items_bbox(items)
+    x0, y0, x1, y1 = bbox
+    if lang == "ru":
+        res = [f"Mур (рычаг) = {fmt(L.M_lever_Nm, lang, 6)} Н·м",
+               f"Mур (кинетостатика) = {fmt(L.M_kinetostatic_Nm, lang, 6)} Н·м",
+               f"δ = {L.difference_percent:.2e} %".replace(".", ",")]
+    else:
+        res = [f"Mb (lever) = {fmt(L.M_lever_Nm, lang, 6)} N·m",
+               f"Mb (kinetostatics) = {fmt(L.M_kinetostatic_Nm, lang, 6)} N·m",
+               f"difference = {L.difference_percent:.2e} %"]
+    y = y0 - 3.0
+    for line in res:
+        items.append(Text(complex(x0, y), line, H_LABEL, "TEXT", "left", "top"))
+        y -= H_LABEL * 1.7
+    bbox = _items_bbox(items)
+    title = _TITLES["lever"][0 if lang == "ru" else 1]
+    note = ("план скоростей, повёрнутый на 90° по ч. с.; силы не в масштабе"
+            if lang == "ru" else
+            "velocity diagram turned 90° clockwise; forces not to scale")
+    return _titled(items, bbox, [(title, H_TITLE), (_where(pp, lang), H_POINT),
+                                 (note, H_LABEL)], f"{pp.tag}:lever")
+
+
+def positions_block(result, chosen, lang="ru", longest_mm=220.0) -> Block:
+    """The plan of positions: the mechanism at every analysed position (thin lines, the
+    positions numbered at the crank pin) and at the chosen ones (main lines), at the round
+    length scale μl that keeps the drawing within ``longest_mm``."""
+    import numpy as np
+
+    from .model import round_scale
+
+    spec = result.spec
+    K = result.kinematics
+    A = K["A_x_m"].to_numpy() + 1j * K["A_y_m"].to_numpy()
+    B = K["B_x_m"].to_numpy() + 1j * K["B_y_m"].to_numpy()
+    pts = np.concatenate([A, B, [0j]])
+    C = None
+    if spec.kind == "crank-rocker":
+        C = spec.ground * complex(math.cos(spec.ground_angle), math.sin(spec.ground_angle))
+        pts = np.append(pts, C)
+    extent = max(np.ptp(pts.real), np.ptp(pts.imag))
+    mu = round_scale(extent, longest_mm)
+    items = []
+    chosen_rows = set(chosen)
+    pos = K["position"]
+    segs = []
+    for i in range(len(K)):
+        layer = "MAIN" if i in chosen_rows else "THIN"
+        zA, zB = A[i] / mu, B[i] / mu
+        items.append(Line(0j, zA, layer))
+        items.append(Line(zA, zB, layer))
+        segs += [(0j, zA), (zA, zB)]
+        if C is not None:
+            items.append(Line(C / mu, zB, layer))
+            segs.append((C / mu, zB))
+        else:
+            u = complex(math.cos(spec.ground_angle), math.sin(spec.ground_angle))
+            w, h = 8.0, 5.0
+            corners = [zB + u * (sx * w / 2) + 1j * u * (sy * h / 2)
+                       for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+            for k in range(4):
+                items.append(Line(corners[k], corners[(k + 1) % 4], layer))
+        items.append(Circle(zA, 0.8, layer))
+        items.append(Circle(zB, 0.8, layer))
+    # crank circle, ground pivots, guide line
+    r = spec.crank / mu
+    n = 72
+    for k in range(n):
+        a0, a1 = 2 * math.pi * k / n, 2 * math.pi * (k + 1) / n
+        items.append(Line(r * complex(math.cos(a0), math.sin(a0)),
+                          r * complex(math.cos(a1), math.sin(a1)), "DASHED"))
+    for z, name in [(0j, "O")] + ([(C / mu, "C")] if C is not None else []):
+        items.append(Circle(z, 1.2, "MAIN"))
+        items.append(Line(z - 3 - 3j, z + 3 - 3j, "MAIN"))
+        for k in range(4):
+            items.append(Line(z - 3 + 1.5 * k - 3j, z - 4.5 + 1.5 * k - 4.5j, "THIN"))
+    if C is None:
+        u = complex(math.cos(spec.ground_angle), math.sin(spec.ground_angle))
+        s = (B - 0) / mu
+        proj = (s * u.conjugate()).real
+        off = (s * u.conjugate()).imag.mean()
+        for side in (-3.0, 3.0):
+            p1 = (proj.min() - 8 + 1j * (off + side)) * u
+            p2 = (proj.max() + 8 + 1j * (off + side)) * u
+            items.append(Line(p1, p2, "THIN"))
+    placer = _Placer(segs)
+    for i in range(len(K)):
+        lab = str(pos.iat[i]) if pos.notna().iat[i] else str(i + 1)
+        zA = A[i] / mu
+        out = zA / abs(zA) if abs(zA) > 0 else 1
+        items.append(placer.place([zA + out * d for d in (3.5, 5.5, 8.0)]
+                                  + _point_candidates(zA, 4.0), lab, H_POINT))
+    for z, name in [(0j, "O")] + ([(C / mu, "C")] if C is not None else []):
+        items.append(placer.place([z - 6 + 2j, z + 6 + 2j, z - 6 - 1j, z + 6 - 1j], name,
+                                  H_POINT))
+    bbox = _items_bbox(items)
+    title = _TITLES["positions"][0 if lang == "ru" else 1]
+    mul = "μl" if lang == "ru" else "kl"
+    unit = _SCALE_UNIT["positions"][0 if lang == "ru" else 1]
+    return _titled(items, bbox, [(title, H_TITLE), (f"{mul} = {fmt(mu, lang)} {unit}", H_POINT)],
+                   "positions")
+
+
+@dataclass
+class Sheet:
+    """One drawing sheet: its size, the placed items and the fields of the title block."""
+    width: float
+    height: float
+    items: list = field(default_factory=list)
+    number: int = 1
+    count: int = 1

@@ -1,0 +1,760 @@
+"""Velocity and acceleration plans, force polygons and the Zhukovsky lever, built from the
+exact solution of :func:`linkage.analyze`.
+
+Nothing here solves the mechanism again: every vector is a column of the analysis
+(velocities and accelerations of the points, ω and ε of the links, weights, inertia
+loads, reactions and their n/t components, Mур) divided by the plan's scale.  The plans
+are what a student draws by hand in the course project (seed 000, §3.2–3.3 and §4.2 of
+the ratchet-drive project; Artobolevsky 1988, ch. 4 and 13): the plan is built from the
+pole in the order of the structure formula, so each vector of the graphical solution is
+a segment with its start and end point in millimetres of the drawing.
+
+Conventions
+-----------
+* Plan coordinates are millimetres on paper, x to the right, y up, the pole at (0, 0);
+  complex numbers ``x + iy`` as in :mod:`linkage.groups`.
+* A scale μ is the value of one millimetre: μV in (m/s)/mm, μa in (m/s²)/mm, μF in N/mm
+  (seed 000: μV = VA/pa).  The default is the *round* scale of the textbook: the
+  smallest μ = m·10^k, m ∈ {1, 1.5, 2, 2.5, 3, 4, 5, 6, 8}, that keeps the reference
+  vector (pa, πa, the largest force of the polygon) at most 150 mm long; since
+  consecutive round values differ by at most 1.5×, that vector is then longer than
+  100 mm (:func:`round_scale`).  When the whole plan would then be larger than
+  :data:`MAX_PLAN_MM` (250 mm) in width or height (near a dead position, ω3 and the
+  plan grow without bound while pa stays), the round scale that keeps it within
+  250 mm is taken instead, as a student would shorten pa.
+* Segment names are ASCII (``pa``, ``ab``, ``a_n3``, ``n3_b``, ``R23t``); the labels on
+  the drawing are the textbook's: Russian p, a, b, s₃, π, n₃ …; English o, a, b, s₃ for
+  the velocity diagram and o′, a′, b′ … for the acceleration diagram (Khurmi & Gupta).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from linkage import groups as g
+from linkage.columns import point_names
+from linkage.spec import LINK_NUMBER
+
+from .errors import PlanError
+
+__all__ = ["Vector", "Plan", "LeverForce", "Lever", "PositionPlans", "round_scale",
+           "build_plans", "ROUND_MANTISSAS", "PLAN_KINDS"]
+
+#: Mantissas of the round scales (ГОСТ-like series used for drawing scales of plans).
+ROUND_MANTISSAS = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
+#: Plan kinds, in the order of the course project.
+PLAN_KINDS = ("velocity", "acceleration", "force_dyad", "force_crank")
+_UNITS = {"velocity": "m/s", "acceleration": "m/s2", "force_dyad": "N", "force_crank": "N"}
+_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+#: Largest extent (width or height) of a plan at the default scale. [mm]
+MAX_PLAN_MM = 250.0
+
+
+def _extent(plan):
+    """Largest side of a plan's bounding box (0 → 1 for an all-zero plan). [mm]"""
+    x0, y0, x1, y1 = plan.bbox()
+    return max(x1 - x0, y1 - y0) or 1.0
+
+
+def round_scale(value, longest_mm=150.0):
+    """The textbook's round scale for a reference vector of magnitude ``value``.
+
+    Parameters
+    ----------
+    value : float
+        Magnitude of the reference vector (VA, aA, the largest force). [SI]
+    longest_mm : float
+        Longest drawn length allowed for it. [mm]
+
+    Returns
+    -------
+    float
+        The smallest m·10^k (m in :data:`ROUND_MANTISSAS`) with ``value/μ ≤ longest_mm``;
+        then ``value/μ > longest_mm/1.5`` (100 mm for the default 150 mm). [SI/mm]
+    """
+    value = float(value)
+    if not (math.isfinite(value) and value > 0):
+        raise PlanError([f"scale: the reference magnitude is {value!r}; a plan needs a "
+                         "positive, finite reference vector (is the crank turning?)"])
+    target = value / longest_mm
+    k = math.floor(math.log10(target))
+    for kk in (k - 1, k, k + 1):
+        for m in ROUND_MANTISSAS:
+            mu = float(f"{m}e{kk}")          # exact decimal, no 3*0.1 artefacts
+            if mu >= target * (1 - 1e-12):
+                return mu
+    return float(f"1e{k + 2}")  # pragma: no cover - unreachable
+
+
+@dataclass(frozen=True)
+class Vector:
+    """One drawn vector of a plan.
+
+    Attributes
+    ----------
+    plan : str
+        ``velocity``, ``acceleration``, ``force_dyad``, ``force_crank``.
+    name : str
+        ASCII segment name (``pa``, ``ab``, ``a_n3``, ``R23t`` …), unique in its plan.
+    quantity : str
+        ASCII name of the quantity it represents (``V_A``, ``a_BA_n``, ``R23_t``).
+    label_ru, label_en : str
+        The vector's name on the drawing (textbook symbols).
+    start, end : complex
+        End points on the plan. [mm]
+    value : float
+        Magnitude of the quantity. [m/s, m/s², N]
+    unit : str
+    scale : float
+        The plan's scale (value of 1 mm). [unit/mm]
+    kind : str
+        ``absolute``, ``relative``, ``normal``, ``tangential``, ``load``, ``reaction``.
+    """
+
+    plan: str
+    name: str
+    quantity: str
+    label_ru: str
+    label_en: str
+    start: complex
+    end: complex
+    value: float
+    unit: str
+    scale: float
+    kind: str
+
+    @property
+    def length_mm(self) -> float:
+        return abs(self.end - self.start)
+
+    def label(self, lang="ru") -> str:
+        return self.label_ru if lang == "ru" else self.label_en
+
+
+@dataclass
+class Plan:
+    """A velocity or acceleration plan, or a force polygon.
+
+    Attributes
+    ----------
+    kind : str
+    scale : float
+        μ: value of one millimetre. [m/s per mm, m/s² per mm, N per mm]
+    unit : str
+        Unit of the values (``m/s``, ``m/s2``, ``N``).
+    points : dict of str to complex
+        Named points of the plan (the pole ``p``/``pi`` at 0 for the kinematic plans). [mm]
+    point_labels : dict of str to (str, str)
+        Russian and English label of each point.
+    vectors : list of Vector
+    polygons : list of list of (str, int)
+        Vector equations of the plan: the signed sum of each list is zero
+        (e.g. ``pa + ab − pb = 0``).
+    """
+
+    kind: str
+    scale: float
+    unit: str
+    points: dict
+    point_labels: dict
+    vectors: list
+    polygons: list = field(default_factory=list)
+
+    def vector(self, name) -> Vector:
+        for v in self.vectors:
+            if v.name == name:
+                return v
+        raise KeyError(name)
+
+    def closure(self):
+        """Closure error of every polygon: |Σ ± vectors| over the largest of its vectors."""
+        out = []
+        for poly in self.polygons:
+            vs = [(self.vector(n), s) for n, s in poly]
+            total = sum(s * (v.end - v.start) for v, s in vs)
+            big = max(v.length_mm for v, _ in vs)
+            out.append(abs(total) / big if big > 0 else 0.0)
+        return out
+
+    def bbox(self):
+        """(xmin, ymin, xmax, ymax) of the points and vector ends. [mm]"""
+        zs = [v.start for v in self.vectors] + [v.end for v in self.vectors]
+        zs += list(self.points.values())
+        xs = [z.real for z in zs]
+        ys = [z.imag for z in zs]
+        return min(xs), min(ys), max(xs), max(ys)
+
+
+@dataclass(frozen=True)
+class LeverForce:
+    """One force on the Zhukovsky lever.
+
+    Attributes
+    ----------
+    name, label_ru, label_en : str
+        ASCII name (``G3``, ``Fu3``, ``Mu3_B`` …) and drawing labels.
+    point : str
+        The point of the velocity plan it is applied at (``s3``, ``b`` …).
+    at : complex
+        Application point on the lever (velocity plan turned 90° clockwise). [mm]
+    force : complex
+        The force. [N]
+    arm_mm : float
+        Signed arm about the pole: moment / |force|, + counter-clockwise. [mm]
+    moment_Nmm : float
+        Moment about the pole on the lever, ``at × force``. [N·mm]
+    """
+
+    name: str
+    label_ru: str
+    label_en: str
+    point: str
+    at: complex
+    force: complex
+    arm_mm: float
+    moment_Nmm: float
+
+
+@dataclass
+class Lever:
+    """The Zhukovsky lever of one position.
+
+    Attributes
+    ----------
+    forces : list of LeverForce
+        Every external load, inertia loads and weights included; moments replaced by
+        force couples at the ends of their link.
+    balancing_force_N : float
+        Fур at the crank pin (point a of the lever), perpendicular to pa, + in the sense of
+        a counter-clockwise Mур. [N]
+    balancing_at : complex
+        Point a on the lever. [mm]
+    balancing_dir : complex
+        Unit direction of a positive Fур (i·e2, perpendicular to OA).
+    pa_mm : float
+        Its arm, the length of pa. [mm]
+    M_lever_Nm, M_kinetostatic_Nm : float
+        Balancing moment Mур = Fур·lOA from the lever, and the kinetostatic one
+        (``M_drive_Nm``), + ccw. [N·m]
+    difference_percent : float
+        100·(M_lever − M_kinetostatic)/|M_kinetostatic| (0 when both are 0).
+    points : dict of str to complex
+        The turned velocity plan's points. [mm]
+    segments : list of tuple
+        The turned velocity plan's segments: (name, start, end, label ru, label en). [mm]
+    """
+
+    forces: list
+    balancing_force_N: float
+    balancing_at: complex
+    balancing_dir: complex
+    pa_mm: float
+    M_lever_Nm: float
+    M_kinetostatic_Nm: float
+    difference_percent: float
+    points: dict
+    segments: list
+
+
+@dataclass
+class PositionPlans:
+    """All plans of one position.
+
+    Attributes
+    ----------
+    position : int or None
+        Number in the plan of positions (None for an explicit crank angle).
+    phi_deg : float
+        Crank angle. [°]
+    plans : dict of str to Plan
+        ``velocity``, ``acceleration``, ``force_dyad``, ``force_crank``.
+    lever : Lever
+    angular : list of dict
+        Angular velocities and accelerations read off the plans: ``quantity``,
+        ``segment``, ``plan``, ``link_length_m``, ``value`` (+ ccw), ``unit``.
+    kind : str
+        ``crank-rocker`` or ``crank-slider``.
+    geometry : dict of str to complex
+        Joint positions of the mechanism at this position (O, A, B, C …). [m]
+    """
+
+    position: int | None
+    phi_deg: float
+    kind: str
+    plans: dict
+    lever: Lever
+    angular: list
+    geometry: dict
+
+    @property
+    def tag(self) -> str:
+        """``5`` for position 5, ``phi37.5`` for an explicit angle."""
+        return str(self.position) if self.position is not None else f"phi{self.phi_deg:g}"
+
+
+# ----------------------------------------------------------------------------- helpers
+
+
+def _row(df, i, name):
+    return float(df[name].iat[i])
+
+
+def _c(df, i, p, what):
+    """Complex column pair of point ``p``: what in {"", "v", "a"}."""
+    sx = {"": ("_x_m", "_y_m"), "v": ("_vx_m_s", "_vy_m_s"), "a": ("_ax_m_s2", "_ay_m_s2")}
+    x, y = sx[what]
+    return complex(_row(df, i, p + x), _row(df, i, p + y))
+
+
+def _sub(name: str) -> str:
+    """``s3`` → ``s₃`` (digits as subscripts)."""
+    return name.translate(_SUB)
+
+
+def _chain(plan, items, start=0j):
+    """Place force vectors head to tail from ``start``; returns the end points."""
+    z = start
+    ends = [z]
+    out = []
+    for name, quantity, lru, len_, F, kind in items:
+        w = F / plan.scale
+        out.append(Vector(plan.kind, name, quantity, lru, len_, z, z + w, abs(F), plan.unit,
+                          plan.scale, kind))
+        z = z + w
+        ends.append(z)
+    plan.vectors.extend(out)
+    return ends
+
+
+# ------------------------------------------------------------------------------ builder
+
+
+def _link_motions(spec, K, i):
+    """The links at row ``i`` as :class:`linkage.groups.LinkMotion` (for points of loads)."""
+    zero = 0j
+    O = g.PointMotion(0j, zero, zero)
+    A = g.PointMotion(_c(K, i, "A", ""), _c(K, i, "A", "v"), _c(K, i, "A", "a"))
+    B = g.PointMotion(_c(K, i, "B", ""), _c(K, i, "B", "v"), _c(K, i, "B", "a"))
+    phi = math.radians(_row(K, i, "phi_deg"))
+    th3 = math.radians(_row(K, i, "theta3_deg"))
+    links = {"crank": g.LinkMotion(O, complex(math.cos(phi), math.sin(phi)), spec.omega,
+                                   spec.epsilon),
+             "coupler": g.LinkMotion(A, complex(math.cos(th3), math.sin(th3)),
+                                     _row(K, i, "omega3_rad_s"), _row(K, i, "eps3_rad_s2"))}
+    if spec.kind == "crank-rocker":
+        th4 = math.radians(_row(K, i, "theta4_deg"))
+        e4 = complex(math.cos(th4), math.sin(th4))
+        C = g.PointMotion(B.z - spec.rocker * e4, zero, zero)
+        links["rocker"] = g.LinkMotion(C, e4, _row(K, i, "omega4_rad_s"),
+                                       _row(K, i, "eps4_rad_s2"))
+    else:
+        u = complex(math.cos(spec.ground_angle), math.sin(spec.ground_angle))
+        links["slider"] = g.LinkMotion(B, u, 0.0, 0.0)
+    return links
+
+
+def _velocity_plan(spec, K, i, mu, pts):
+    P = Plan("velocity", mu, "m/s", {"p": 0j}, {"p": ("p", "o")}, [])
+    rocker = spec.kind == "crank-rocker"
+    if rocker:
+        P.point_labels["p"] = ("p, o, c", "o, c")
+    else:
+        P.point_labels["p"] = ("p, o", "o")
+    vA, vB = _c(K, i, "A", "v"), _c(K, i, "B", "v")
+    a, b = vA / mu, vB / mu
+    P.points.update(a=a, b=b)
+    P.point_labels.update(a=("a", "a"), b=("b", "b"))
+    # relative velocity of B about A from the coupler's rotation: V_BA = iω3·(B − A)
+    rBA = _c(K, i, "B", "") - _c(K, i, "A", "")
+    vBA = 1j * _row(K, i, "omega3_rad_s") * rBA
+    V = P.vectors
+    V.append(Vector("velocity", "pa", "V_A", "pa", "oa", 0j, a, abs(vA), "m/s", mu, "absolute"))
+    V.append(Vector("velocity", "ab", "V_BA", "ab", "ab", a, a + vBA / mu, abs(vBA), "m/s", mu,
+                    "relative"))
+    V.append(Vector("velocity", "pb", "V_B", "pb", "ob", 0j, b, abs(vB), "m/s", mu,
+                    "absolute"))
+    P.polygons.append([("pa", 1), ("ab", 1), ("pb", -1)])
+    for pname in pts:
+        if pname in ("A", "B") or (pname == "S4" and not rocker):
+            continue  # the slider translates: V_S4 = V_B
+        v = _c(K, i, pname, "v")
+        key = pname.lower()
+        P.points[key] = v / mu
+        P.point_labels[key] = (_sub(key), _sub(key))
+        V.append(Vector("velocity", f"p{key}", f"V_{pname}", "p" + _sub(key), "o" + _sub(key),
+                        0j, v / mu, abs(v), "m/s", mu, "absolute"))
+    return P
+
+
+def _acceleration_plan(spec, K, i, mu, pts):
+    rocker = spec.kind == "crank-rocker"
+    P = Plan("acceleration", mu, "m/s2", {"pi": 0j},
+             {"pi": ("π, o, c" if rocker else "π, o", "o′, c′" if rocker else "o′")}, [])
+    V = P.vectors
+    U = "m/s2"
+    zA, zB = _c(K, i, "A", ""), _c(K, i, "B", "")
+    aA, aB = _c(K, i, "A", "a"), _c(K, i, "B", "a")
+    a, b = aA / mu, aB / mu
+    P.points.update(a=a, b=b)
+    P.point_labels.update(a=("a", "a′"), b=("b", "b′"))
+    V.append(Vector("acceleration", "pi_a", "a_A", "πa", "o′a′", 0j, a, abs(aA), U, mu,
+                    "absolute"))
+    if spec.epsilon != 0:   # a_A = a_AO^n + a_AO^t
+        an = -spec.omega ** 2 * zA
+        n2 = an / mu
+        P.points["n2"] = n2
+        P.point_labels["n2"] = ("n₂", "n₂′")
+        V.append(Vector("acceleration", "pi_n2", "a_AO_n", "πn₂", "o′n₂′", 0j, n2, abs(an), U,
+                        mu, "normal"))
+        at = 1j * spec.epsilon * zA
+        V.append(Vector("acceleration", "n2_a", "a_AO_t", "n₂a", "n₂′a′", n2, n2 + at / mu,
+                        abs(at), U, mu, "tangential"))
+        P.polygons.append([("pi_n2", 1), ("n2_a", 1), ("pi_a", -1)])
+    # B about A: a_BA^n = −ω3²·(B − A) (towards A), a_BA^t = iε3·(B − A)
+    rBA = zB - zA
+    w3, e3 = _row(K, i, "omega3_rad_s"), _row(K, i, "eps3_rad_s2")
+    an3 = -w3 * w3 * rBA
+    at3 = 1j * e3 * rBA
+    n3 = a + an3 / mu
+    P.points["n3"] = n3
+    P.point_labels["n3"] = ("n₃", "n₃′")
+    V.append(Vector("acceleration", "a_n3", "a_BA_n", "an₃", "a′n₃′", a, n3, abs(an3), U, mu,
+                    "normal"))
+    V.append(Vector("acceleration", "n3_b", "a_BA_t", "n₃b", "n₃′b′", n3, n3 + at3 / mu,
+                    abs(at3), U, mu, "tangential"))
+    V.append(Vector("acceleration", "pi_b", "a_B", "πb", "o′b′", 0j, b, abs(aB), U, mu,
+                    "absolute"))
+    V.append(Vector("acceleration", "ab", "a_BA", "ab", "a′b′", a, b, abs(aB - aA), U, mu,
+                    "relative"))
+    P.polygons.append([("pi_a", 1), ("a_n3", 1), ("n3_b", 1), ("pi_b", -1)])
+    P.polygons.append([("pi_a", 1), ("ab", 1), ("pi_b", -1)])
+    if rocker:   # B about C: a_BC^n = −ω4²·(B − C), a_BC^t = iε4·(B − C)
+        th4 = math.radians(_row(K, i, "theta4_deg"))
+        rBC = spec.rocker * complex(math.cos(th4), math.sin(th4))
+        w4, e4 = _row(K, i, "omega4_rad_s"), _row(K, i, "eps4_rad_s2")
+        an4 = -w4 * w4 * rBC
+        at4 = 1j * e4 * rBC
+        n4 = an4 / mu
+        P.points["n4"] = n4
+        P.point_labels["n4"] = ("n₄", "n₄′")
+        V.append(Vector("acceleration", "pi_n4", "a_BC_n", "πn₄", "o′n₄′", 0j, n4, abs(an4), U,
+                        mu, "normal"))
+        V.append(Vector("acceleration", "n4_b", "a_BC_t", "n₄b", "n₄′b′", n4, n4 + at4 / mu,
+                        abs(at4), U, mu, "tangential"))
+        P.polygons.append([("pi_n4", 1), ("n4_b", 1), ("pi_b", -1)])
+    for pname in pts:
+        if pname in ("A", "B") or (pname == "S4" and not rocker):
+            continue
+        acc = _c(K, i, pname, "a")
+        key = pname.lower()
+        P.points[key] = acc / mu
+        P.point_labels[key] = (_sub(key), _sub(key) + "′")
+        V.append(Vector("acceleration", f"pi_{key}", f"a_{pname}", "π" + _sub(key),
+                        "o′" + _sub(key) + "′", 0j, acc / mu, abs(acc), U, mu, "absolute"))
+    return P
+
+
+def _ext_forces(spec, lname, F, i):
+    """External forces on a link (spec loads and a slider's resistance): list of
+    (ascii name, label, force [N], local point)."""
+    out = []
+    k = 0
+    for ld in spec.loads:
+        if ld.link != lname or ld.kind != "force":
+            continue
+        k += 1
+        n = LINK_NUMBER[lname]
+        out.append((f"F{n}_{k}", f"F{_sub(str(n))}.{k}", ld.force, ld.at))
+    if lname == "slider":
+        fr = _row(F, i, "F_res_N")
+        if fr != 0.0:
+            u = complex(math.cos(spec.ground_angle), math.sin(spec.ground_angle))
+            out.append(("Fres", "Fпс", fr * u, 0j))
+    return out
+
+
+def _ext_moments(spec, lname, F, i):
+    """External couples on a link: list of (ascii name, label ru, label en, moment [N·m])."""
+    out = []
+    k = 0
+    for ld in spec.loads:
+        if ld.link == lname and ld.kind == "moment":
+            k += 1
+            n = LINK_NUMBER[lname]
+            out.append((f"M{n}_{k}", f"M{_sub(str(n))}.{k}", f"M{_sub(str(n))}.{k}", ld.moment))
+    if lname == "rocker":
+        mr = _row(F, i, "M_res_Nm")
+        if mr != 0.0:
+            out.append(("Mres", "Mпс", "Mr", mr))
+    return out
+
+
+def _weight(spec, lname):
+    return -1j * spec.links[lname].mass * spec.gravity
+
+
+def _loads_of(spec, lname, F, i):
+    """Force loads of one link in the textbook's order: G, Fu, external forces.
+    Items: (name, quantity, label ru, label en, force, kind, local point or None=S)."""
+    n = LINK_NUMBER[lname]
+    ns = _sub(str(n))
+    items = []
+    ls = spec.links[lname]
+    if ls.mass != 0 and spec.gravity != 0:
+        items.append((f"G{n}", f"G{n}", f"G{ns}", f"G{ns}", _weight(spec, lname), "load", None))
+    if ls.mass != 0:
+        Fu = complex(_row(F, i, f"Fu{n}_x_N"), _row(F, i, f"Fu{n}_y_N"))
+        items.append((f"Fu{n}", f"Fu{n}", f"Fи{ns}", f"Fi{ns}", Fu, "load", None))
+    for name, lab, force, at in _ext_forces(spec, lname, F, i):
+        lab_en = "Fr" if name == "Fres" else lab
+        items.append((name, name, lab, lab_en, force, "load", at))
+    return items
+
+
+def _force_dyad(spec, K, F, i, mu):
+    rocker = spec.kind == "crank-rocker"
+    out = "rocker" if rocker else "slider"
+    th3 = math.radians(_row(K, i, "theta3_deg"))
+    e3 = complex(math.cos(th3), math.sin(th3))
+    R23t = _row(F, i, "R23_t_N") * 1j * e3
+    R23n = _row(F, i, "R23_n_N") * e3
+    loads3 = _loads_of(spec, "coupler", F, i)
+    loads4 = _loads_of(spec, out, F, i)
+    items = [("R23t", "R23_t", "R₂₃ᵗ", "R₂₃ᵗ", R23t, "reaction")]
+    items += [(n, q, lr, le, f, k) for n, q, lr, le, f, k, _ in loads3]
+    n3 = len(items)
+    items += [(n, q, lr, le, f, k) for n, q, lr, le, f, k, _ in loads4]
+    if rocker:
+        th4 = math.radians(_row(K, i, "theta4_deg"))
+        e4 = complex(math.cos(th4), math.sin(th4))
+        items.append(("R14t", "R14_t", "R₁₄ᵗ", "R₁₄ᵗ", _row(F, i, "R14_t_N") * 1j * e4,
+                      "reaction"))
+        items.append(("R14n", "R14_n", "R₁₄ⁿ", "R₁₄ⁿ", _row(F, i, "R14_n_N") * e4, "reaction"))
+    else:
+        items.append(("R14", "R14", "R₁₄", "R₁₄",
+                      complex(_row(F, i, "R14_x_N"), _row(F, i, "R14_y_N")), "reaction"))
+    items.append(("R23n", "R23_n", "R₂₃ⁿ", "R₂₃ⁿ", R23n, "reaction"))
+    P = Plan("force_dyad", mu, "N", {}, {}, [])
+    ends = _chain(P, items)
+    # R43 closes link 3's own polygon: from the end of its last load to the start of R23n
+    R43 = complex(_row(F, i, "R43_x_N"), _row(F, i, "R43_y_N"))
+    start43 = ends[n3]
+    P.vectors.append(Vector("force_dyad", "R43", "R43", "R₄₃", "R₄₃", start43,
+                            start43 + R43 / mu, abs(R43), "N", mu, "reaction"))
+    names = [it[0] for it in items]
+    P.polygons.append([(n, 1) for n in names])                       # the dyad
+    P.polygons.append([(n, 1) for n in names[:n3]] + [("R43", 1), ("R23n", 1)])  # link 3
+    for k, z in enumerate(ends):
+        P.points[f"k{k}"] = z
+    return P
+
+
+def _force_crank(spec, F, i, mu):
+    R32 = -complex(_row(F, i, "R23_x_N"), _row(F, i, "R23_y_N"))
+    items = [("R32", "R32", "R₃₂", "R₃₂", R32, "reaction")]
+    items += [(n, q, lr, le, f, k) for n, q, lr, le, f, k, _ in _loads_of(spec, "crank", F, i)]
+    items.append(("R12", "R12", "R₁₂", "R₁₂",
+                  complex(_row(F, i, "R12_x_N"), _row(F, i, "R12_y_N")), "reaction"))
+    P = Plan("force_crank", mu, "N", {}, {}, [])
+    ends = _chain(P, items)
+    P.polygons.append([(it[0], 1) for it in items])
+    for k, z in enumerate(ends):
+        P.points[f"k{k}"] = z
+    return P
+
+
+def _lever(spec, K, F, i, vplan: Plan):
+    """Zhukovsky's lever: the velocity plan turned 90° clockwise; a force F applied at a
+    point of velocity v sits at −i·v/μV and its moment about the pole is v·F/μV, its
+    power over μV.  Σ moments + Fур·pa = 0 gives Fур, and Mур = Fур·lOA.
+
+    References: Artobolevsky, Теория механизмов и машин, 1988, §13 (рычаг Жуковского);
+    seed 000 §4 (the same loads: Gi, Fui, Mui, Mпс)."""
+    mu = vplan.scale
+    links = _link_motions(spec, K, i)
+    rot = -1j                                          # 90° clockwise
+    forces = []
+
+    def add(name, lru, len_, pname, v, Fv):
+        at = rot * v / mu
+        m = g.cross(at, Fv)
+        size = abs(Fv)
+        arm = m / size if size != 0 else 0.0
+        forces.append(LeverForce(name, lru, len_, pname, at, Fv, arm, m))
+
+    ends = {"crank": ("o", "a"), "coupler": ("a", "b"),
+            "rocker": ("c", "b"), "slider": ("b", "b")}
+    lengths = {"crank": spec.crank, "coupler": spec.coupler, "rocker": spec.rocker}
+    for lname in spec.link_names:
+        link = links[lname]
+        n = LINK_NUMBER[lname]
+        ls = spec.links[lname]
+        S = link.point(ls.cg)
+        for name, _q, lru, len_, Fv, _k, at in _loads_of(spec, lname, F, i):
+            if at is None:
+                add(name, lru, len_, f"s{n}", S.v, Fv)
+            else:
+                P = link.point(at)
+                add(name, lru, len_, name.lower(), P.v, Fv)
+        # couples: the inertia moment and external moments, each replaced by a pair of
+        # forces ±M/l perpendicular to the link at its two joints (a slider does not turn)
+        couples = []
+        if lname != "slider" and ls.inertia != 0:
+            couples.append((f"Mu{n}", f"Mи{_sub(str(n))}", f"Mi{_sub(str(n))}",
+                            _row(F, i, f"Mu{n}_Nm")))
+        couples += _ext_moments(spec, lname, F, i)
+        if lname == "slider":
+            continue
+        l_ = lengths[lname]
+        first = link.origin
+        second = link.point(l_)
+        perp = 1j * link.e
+        for name, lru, len_, M in couples:
+            f = M / l_ * perp
+            p1, p2 = ends[lname]
+            add(f"{name}_{p2}", f"F({lru})", f"F({len_})", p2, second.v, f)
+            add(f"{name}_{p1}", f"F({lru})", f"F({len_})", p1, first.v, -f)
+    total = sum(fc.moment_Nmm for fc in forces)
+    omega = spec.omega
+    M_lever = -total * mu / omega + 0.0             # + 0.0: no −0.0 without loads
+    vA = _c(K, i, "A", "v")
+    pa = abs(vA) / mu
+    Fb = M_lever / spec.crank                      # + in the sense of a ccw couple
+    e2 = links["crank"].e
+    M_kin = _row(F, i, "M_drive_Nm")
+    if M_kin != 0:
+        diff = 100.0 * (M_lever - M_kin) / abs(M_kin)
+    else:
+        diff = 0.0 if M_lever == 0 else math.copysign(math.inf, M_lever)
+    points = {k: rot * z for k, z in vplan.points.items()}
+    segments = [(v.name, rot * v.start, rot * v.end, v.label_ru, v.label_en)
+                for v in vplan.vectors]
+    return Lever(forces, Fb, rot * vA / mu, 1j * e2, pa,
+                 M_lever, M_kin, diff, points, segments)
+
+
+def _angular(spec, K, i, vplan, aplan):
+    """ω and ε of the links read off the plans (seed 000: ω3 = V_BA/l_AB, ε3 = a_BA^t/l_AB)."""
+    rows = [("omega3", "velocity", "ab", spec.coupler, _row(K, i, "omega3_rad_s"), "rad/s"),
+            ("eps3", "acceleration", "n3_b", spec.coupler, _row(K, i, "eps3_rad_s2"),
+             "rad/s2")]
+    if spec.kind == "crank-rocker":
+        rows += [("omega4", "velocity", "pb", spec.rocker, _row(K, i, "omega4_rad_s"), "rad/s"),
+                 ("eps4", "acceleration", "n4_b", spec.rocker, _row(K, i, "eps4_rad_s2"),
+                  "rad/s2")]
+    out = []
+    for q, plan, seg, length, exact, unit in rows:
+        p = vplan if plan == "velocity" else aplan
+        vec = p.vector(seg)
+        out.append({"quantity": q, "plan": plan, "segment": seg, "link_length_m": length,
+                    "length_mm": vec.length_mm, "value": vec.length_mm * p.scale / length,
+                    "signed_value": exact, "unit": unit, "scale": p.scale})
+    return out
+
+
+def build_plans(result, positions=None, *, scales=None, crank_angles_deg=None):
+    """Plans of the chosen positions of an analysed mechanism.
+
+    Parameters
+    ----------
+    result : linkage.AnalysisResult
+        From :func:`linkage.analyze` with the course tables (the default).
+    positions : iterable of int or "all", optional
+        Position numbers of the plan of positions (default: all rows of ``result``).
+    scales : dict, optional
+        Fixed scales: ``velocity`` [(m/s)/mm], ``acceleration`` [(m/s²)/mm],
+        ``force_dyad``, ``force_crank`` [N/mm]; missing ones are the textbook's round
+        scales (:func:`round_scale`; pa, πa and the largest force ≤ 150 mm).
+    crank_angles_deg : ignored unless ``result`` was analysed at explicit angles; then
+        ``positions`` selects rows by their 1-based order.
+
+    Returns
+    -------
+    list of PositionPlans
+
+    Raises
+    ------
+    PlanError
+        Statics (ω = 0: no velocity plan), a position that is not in the result, a scale
+        that is not a positive finite number, or missing course-table columns.
+    """
+    spec = result.spec
+    K, F = result.kinematics, result.forces
+    problems = []
+    if spec.omega == 0:
+        problems.append("mechanism.omega_rad_s: 0 (statics); velocity and acceleration plans "
+                        "and the lever need a turning crank")
+    if "Fu3_x_N" not in F.columns:
+        problems.append("analysis: run linkage.analyze with course_tables=True (the plans "
+                        "need the inertia loads)")
+    scales = dict(scales or {})
+    for k, v in scales.items():
+        if k not in PLAN_KINDS:
+            problems.append(f"scales.{k}: unknown plan; valid: {', '.join(PLAN_KINDS)}")
+        elif v is not None and not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+            problems.append(f"scales.{k}: got {v!r}; must be a positive number")
+    if problems:
+        raise PlanError(problems)
+    pos_col = K["position"]
+    numbered = pos_col.notna().all()
+    if positions is None or positions == "all":
+        rows = list(range(len(K)))
+    else:
+        rows = []
+        for p in positions:
+            if numbered:
+                hit = np.flatnonzero((pos_col == int(p)).to_numpy(dtype=bool, na_value=False))
+            else:
+                hit = [int(p) - 1] if 1 <= int(p) <= len(K) else []
+            if len(hit) == 0:
+                valid = (f"1…{int(pos_col.max())}" if numbered and len(K) else f"1…{len(K)}")
+                problems.append(f"--plans: position {p} is not in the analysis; valid: {valid}")
+            else:
+                rows.append(int(hit[0]))
+        if problems:
+            raise PlanError(problems)
+    pts = list(point_names(spec))
+    out = []
+    for i in rows:
+        vals = [K[c].iat[i] for c in ("A_vx_m_s", "omega3_rad_s")] + [F["M_drive_Nm"].iat[i]]
+        if not np.all(np.isfinite(np.asarray(vals, float))):
+            problems.append(f"position {pos_col.iat[i]}: a singular (dead) position; its "
+                            "velocities and forces are not finite, no plan can be drawn")
+            continue
+        # the textbook's round scale from the reference vector, coarser when the whole
+        # plan would be larger than MAX_PLAN_MM
+        def scale_of(kind, build, ref):
+            if scales.get(kind):
+                return build(scales[kind])
+            unit = build(1.0)
+            mu = max(round_scale(ref(unit)), round_scale(_extent(unit), MAX_PLAN_MM))
+            return build(mu)
+
+        vplan = scale_of("velocity", lambda m: _velocity_plan(spec, K, i, m, pts),
+                         lambda p: p.vector("pa").length_mm)
+        aplan = scale_of("acceleration", lambda m: _acceleration_plan(spec, K, i, m, pts),
+                         lambda p: p.vector("pi_a").length_mm)
+        dyad = scale_of("force_dyad", lambda m: _force_dyad(spec, K, F, i, m),
+                        lambda p: max(v.length_mm for v in p.vectors if v.name != "R43")
+                        or 1.0)
+        crank = scale_of("force_crank", lambda m: _force_crank(spec, F, i, m),
+                         lambda p: max(v.length_mm for v in p.vectors) or 1.0)
+        lever = _lever(spec, K, F, i, vplan)
+        geo = {"O": 0j, "A": _c(K, i, "A", ""), "B": _c(K, i, "B", "")}
+        if spec.kind == "crank-rocker":
+            geo["C"] = complex(spec.ground * math.cos(spec.ground_angle),
+                               spec.ground * math.sin(spec.ground_angle))
+        for pname in pts:
+            geo[pname] = _c(K, i, pname, "")
+        pos = None if not numbered else int(pos_col.iat[i])
+        out.append(PositionPlans(pos, _row(K, i, "phi_deg"), spec.kind,
+                                 {"velocity": vplan, "acceleration": aplan,
+                                  "force_dyad": dyad, "force_crank": crank},
+                                 lever, _angular(spec, K, i, vplan, aplan), geo))
+    if problems:
+        raise PlanError(problems)
+    return out

@@ -1,0 +1,237 @@
+"""End to end: `crankdyn linkage SPEC --plans …` writes the drawings, the tables and the
+sheet; the DXF read back with ezdxf holds the vectors of plans.csv in real millimetres on
+their layers; the PDF pages are A1/A3 exactly; labels do not overlap; bad input exits 2
+with one line per problem and writes nothing."""
+import math
+import re
+
+import ezdxf
+import pandas as pd
+import pytest
+
+import linkage
+import plans
+from crankdyn.cli import main
+from crankbase.resources import example_path
+from plans import drawing, layout
+from plans.dxf import APPID, LAYERS
+
+PT = 72.0 / 25.4
+
+
+def _pages(pdf_path):
+    """(width, height) in points of every page of a PDF (its /MediaBox entries)."""
+    data = pdf_path.read_bytes()
+    boxes = re.findall(rb"/MediaBox\s*\[\s*([\d.]+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)\s*\]",
+                       data)
+    return [(float(c) - float(a), float(d) - float(b)) for a, b, c, d in boxes]
+
+
+@pytest.fixture(scope="module")
+def ratchet_run(tmp_path_factory):
+    out = tmp_path_factory.mktemp("plans_ratchet")
+    assert main(["linkage", str(example_path("ratchet.toml")), "-o", str(out),
+                 "--plans", "5,11", "--no-plots"]) == 0
+    return out
+
+
+@pytest.fixture(scope="module")
+def press_run(tmp_path_factory):
+    d = tmp_path_factory.mktemp("plans_press")
+    spec = d / "press.toml"
+    spec.write_text(example_path("press.toml").read_text() + """
+[drawing]
+designation = "ТММ.КП.01.000"
+organization = "ВолгГТУ, гр. М-301"
+developer = "Иванов"
+scale = "1:2"
+""", encoding="utf-8")
+    measured = d / "measured.csv"
+    measured.write_text("position,plan,segment,length_mm,value\n"
+                        "2,velocity,pb,80.0,\n2,,omega3,,1.5\n", encoding="utf-8")
+    out = d / "out"
+    assert main(["linkage", str(spec), "-o", str(out), "--plans", "2", "--sheet", "A3",
+                 "--lang", "en", "--measured", str(measured)]) == 0
+    return out
+
+
+def test_files(ratchet_run, press_run):
+    for tag in ("5", "11"):
+        for ext in ("svg", "pdf"):
+            assert (ratchet_run / f"plans_{tag}.{ext}").stat().st_size > 5000
+    for name in ("plans_2.png", "plans_2.svg", "plans_2.pdf", "sheet.png", "plan_errors.csv"):
+        assert (press_run / name).stat().st_size > 100, name
+    for run in (ratchet_run, press_run):
+        for name in ("plans.csv", "lever.csv", "lever_forces.csv", "student_table.csv",
+                     "sheet.pdf", "sheet.dxf", "kinematics.csv", "forces.csv"):
+            assert (run / name).stat().st_size > 100, name
+    lever = pd.read_csv(ratchet_run / "lever.csv")
+    assert list(lever.columns) == ["position", "M_lever_Nm", "M_kinetostatic_Nm",
+                                   "difference_percent"]
+    assert lever["position"].tolist() == [5, 11]
+    forces = pd.read_csv(ratchet_run / "forces.csv").set_index("position")
+    for _, r in lever.iterrows():
+        assert r["M_kinetostatic_Nm"] == forces.loc[r["position"], "M_drive_Nm"]
+        assert abs(r["M_lever_Nm"] - r["M_kinetostatic_Nm"]) < 1e-9 * abs(
+            r["M_kinetostatic_Nm"])
+
+
+def test_error_table_written(press_run):
+    et = pd.read_csv(press_run / "plan_errors.csv")
+    st_ = pd.read_csv(press_run / "student_table.csv")
+    pb = st_[(st_["plan"] == "velocity") & (st_["segment"] == "pb")].iloc[0]
+    row = et[et["segment"] == "pb"].iloc[0]
+    assert math.isclose(row["measured_value"], 80.0 * pb["scale"], rel_tol=1e-12)
+    assert math.isclose(row["error_percent"],
+                        100 * (pb["value"] - 80.0 * pb["scale"]) / pb["value"], rel_tol=1e-12)
+    om = et[et["quantity"] == "omega3"].iloc[0]
+    assert math.isclose(om["error_percent"], 100 * (om["exact_value"] - 1.5) / om["exact_value"])
+
+
+@pytest.mark.parametrize("run, size", [("ratchet_run", (841.0, 594.0)),
+                                       ("press_run", (420.0, 297.0))])
+def test_pdf_page_size_is_the_sheet(run, size, request):
+    out = request.getfixturevalue(run)
+    pages = _pages(out / "sheet.pdf")
+    assert pages
+    for w, h in pages:
+        assert abs(w - size[0] * PT) < 0.01 and abs(h - size[1] * PT) < 0.01
+
+
+def test_position_drawing_is_true_scale(ratchet_run):
+    """The per-position PDF is exactly the laid-out size in mm; its SVG says so in pt."""
+    res = linkage.analyze(example_path("ratchet.toml"))
+    pp = plans.build_plans(res, [5])[0]
+    fig = drawing.position_figure(pp)
+    w_mm, h_mm = fig.get_size_inches() * 25.4
+    (w, h), = _pages(ratchet_run / "plans_5.pdf")
+    assert abs(w - w_mm * PT) < 0.01 and abs(h - h_mm * PT) < 0.01
+    svg = (ratchet_run / "plans_5.svg").read_text()
+    m = re.search(r'width="([\d.]+)pt" height="([\d.]+)pt"', svg)
+    assert abs(float(m.group(1)) - w_mm * PT) < 0.01
+    # the axes map 1 data unit to 1 mm: the x range equals the width in mm
+    ax = fig.axes[0]
+    assert ax.get_xlim() == (0.0, pytest.approx(w_mm)) and ax.get_position().width == 1.0
+
+
+@pytest.mark.parametrize("run", ["ratchet_run", "press_run"])
+def test_dxf_read_back_equals_plans_csv(run, request):
+    out = request.getfixturevalue(run)
+    table = pd.read_csv(out / "plans.csv")
+    files = sorted(out.glob("sheet*.dxf"))
+    found = {}
+    for f in files:
+        doc = ezdxf.readfile(f)
+        assert doc.header["$INSUNITS"] == 4          # millimetres
+        for name, lw in LAYERS.items():
+            assert doc.layers.get(name).dxf.lineweight == lw
+        msp = doc.modelspace()
+        n = 0
+        for e in msp.query("LINE[layer=='VECTORS']"):
+            assert e.has_xdata(APPID)
+            name = e.get_xdata(APPID)[0].value
+            assert name not in found
+            found[name] = (e.dxf.end - e.dxf.start).magnitude
+            n += 1
+        # every vector has its arrowhead on the same layer
+        assert len(msp.query("SOLID[layer=='VECTORS']")) == n
+        # the sheet's limits and its outer trim line: the sheet's size
+        xs = [p for e in msp.query("LINE[layer=='THIN']") for p in (e.dxf.start.x,
+                                                                    e.dxf.end.x)]
+        assert max(xs) == pytest.approx(doc.header["$LIMMAX"][0])
+    expected = {f"{r.position}:{r.plan}:{r.segment}": r.length_mm
+                for r in table.itertuples() if r.length_mm > 1e-6}
+    assert set(found) == set(expected)
+    for k, v in expected.items():
+        assert math.isclose(found[k], v, rel_tol=1e-9, abs_tol=1e-9), k
+    # one DXF per page of the PDF (A3 needs several sheets for the press)
+    assert len(files) == len(_pages(out / "sheet.pdf"))
+    assert (len(files) == 1) == (run == "ratchet_run")
+
+
+def test_title_block_fields(press_run):
+    doc = ezdxf.readfile(press_run / "sheet.dxf")
+    texts = {e.dxf.text for e in doc.modelspace().query("TEXT")}
+    for s in ("ТММ.КП.01.000", "ВолгГТУ, гр. М-301", "Иванов", "1:2", "crank-press",
+              "Sheet 1", f"Sheets {len(_pages(press_run / 'sheet.pdf'))}"):
+        assert s in texts, s
+    # English drawing: no Cyrillic except the fields the user typed
+    user = {"ТММ.КП.01.000", "ВолгГТУ, гр. М-301", "Иванов"}
+    assert not [t for t in texts - user if re.search("[а-яА-ЯёЁ]", t)]
+
+
+@pytest.mark.parametrize("which, chosen, lang", [("ratchet.toml", [5, 11], "ru"),
+                                                 ("press.toml", [2, 8], "en")])
+def test_nothing_overlaps_and_every_vector_is_labelled(which, chosen, lang):
+    res = linkage.analyze(example_path(which))
+    pps = plans.build_plans(res, chosen)
+    for sh in drawing.layout_sheets(res, pps, lang, "A1"):
+        assert drawing.check_no_overlap(sh.items) == []
+        # diagrams are inside the frame and clear of the title block
+        for it in sh.items:
+            if isinstance(it, layout.Arrow):
+                for z in (it.p1, it.p2):
+                    assert 20 < z.real < sh.width - 5 and 5 < z.imag < sh.height - 5
+                    assert not (z.real > sh.width - 5 - 185 and z.imag < 5 + 55)
+    for pp in pps:
+        for kind in ("velocity", "acceleration", "force_dyad", "force_crank"):
+            b = layout.diagram_block(pp, kind, lang)
+            arrows = [i for i in b.items if isinstance(i, layout.Arrow)]
+            texts = [i for i in b.items if isinstance(i, layout.Text)]
+            vecs = pp.plans[kind].vectors
+            assert len(arrows) == len(vecs)
+            n_points = len(pp.plans[kind].point_labels) if kind in ("velocity",
+                                                                    "acceleration") else 0
+            assert len(texts) == sum(v.length_mm > 1e-6 for v in vecs) + n_points + 2
+            labels = {t.text for t in texts}
+            for v in vecs:
+                assert layout.vector_label(v, lang) in labels
+            if lang == "en":
+                assert not [t for t in labels if re.search("[а-яА-ЯёЁ]", t)]
+        lb = layout.lever_block(pp, lang)
+        assert len([i for i in lb.items if isinstance(i, layout.Arrow)]) == \
+            sum(f.force != 0 for f in pp.lever.forces) + 1
+
+
+def test_bad_input_exits_2_and_writes_nothing(tmp_path, capsys):
+    out = tmp_path / "out"
+    spec = str(example_path("ratchet.toml"))
+    assert main(["linkage", spec, "-o", str(out), "--plans", "0,x", "--sheet", "A4",
+                 "--mu-a", "-2"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 4 and all(line.startswith("crankdyn linkage: error: ") for line in err)
+    assert not out.exists()
+    assert main(["linkage", spec, "-o", str(out), "--plans", "5,13"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == ["crankdyn linkage: error: --plans: position 13 is not in the analysis; "
+                   "valid: 1…12"]
+    assert not out.exists()
+    # position 11's acceleration plan (≈ 250 mm) does not fit an A3 sheet beside the
+    # title block: refused before anything is written
+    assert main(["linkage", spec, "-o", str(out), "--plans", "11", "--sheet", "A3"]) == 2
+    err = capsys.readouterr().err
+    assert "does not fit" in err and "Traceback" not in err
+    assert not out.exists()
+    assert main(["linkage", spec, "-o", str(out), "--measured", "x.csv"]) == 2
+    assert "only with --plans" in capsys.readouterr().err
+    bad = tmp_path / "bad.toml"
+    bad.write_text(example_path("ratchet.toml").read_text() + '\n[drawing]\nauthor = "X"\n',
+                   encoding="utf-8")
+    assert main(["linkage", str(bad), "-o", str(out), "--plans", "5"]) == 2
+    assert "drawing.author: unknown key" in capsys.readouterr().err
+    assert not out.exists()
+
+
+def test_massless_unloaded_mechanism_draws(tmp_path):
+    """No masses and no loads: the force polygons are all zero; the drawing and the DXF
+    are still written (nothing to label, nothing crashes)."""
+    spec = {"mechanism": {"kind": "crank-rocker", "name": "bare", "crank": 0.1,
+                          "coupler": 0.4, "rocker": 0.3, "ground": 0.45,
+                          "omega_rad_s": 5.0},
+            "analysis": {"positions": 6, "working_stroke": "ccw"}}
+    res = linkage.analyze(spec)
+    pps = plans.build_plans(res, [2])
+    assert pps[0].lever.M_kinetostatic_Nm == 0 and pps[0].lever.M_lever_Nm == 0
+    from plans.report import write_plans
+    info = write_plans(res, pps, tmp_path, previews=False)
+    assert info["sheets"] == 1 and (tmp_path / "sheet.dxf").is_file()
