@@ -338,19 +338,21 @@ class Motor:
 
 
 def _interp_periodic(model):
-    """``f(φ) → (J, dJ/dφ, M_d − M_c)`` by linear interpolation on the model's uniform grid,
+    """``f(φ) → (J, dJ/dφ, M_d − M_c)`` by linear interpolation on the model's grid,
     periodic; scalar Python arithmetic (the ODE right-hand sides call it ~10⁵ times)."""
+    import bisect
+
     P = float(model.period)
-    n = len(model.phi) - 1
-    h = P / n
+    x = model.phi.tolist()
+    n = len(x) - 1
     J = model.J_kgm2.tolist()
     dJ = model.dJ_dphi_kgm2.tolist()
     M = (model.M_drive_Nm - model.M_resist_Nm).tolist()
 
     def f(p):
-        u = (p % P) / h
-        k = min(int(u), n - 1)
-        t = u - k
+        u = p % P
+        k = min(max(bisect.bisect_right(x, u) - 1, 0), n - 1)
+        t = (u - x[k]) / (x[k + 1] - x[k])
         return (J[k] + t * (J[k + 1] - J[k]), dJ[k] + t * (dJ[k + 1] - dJ[k]),
                 M[k] + t * (M[k + 1] - M[k]))
 

@@ -124,7 +124,9 @@ class ReducedModel:
     name : str
     phi : ndarray
         Angle turned by the main shaft in its direction of rotation, ``0 … period``
-        inclusive (the last point repeats the first one a period later). [rad]
+        inclusive (the last point repeats the first one a period later), increasing;
+        uniform for a linkage or an engine, with the diagrams' breakpoints added for a
+        machine. [rad]
     J_kgm2 : ndarray
         Reduced moment of inertia J_red(φ) (without an added flywheel). [kg·m²]
     dJ_dphi_kgm2 : ndarray
@@ -210,14 +212,18 @@ def machine_model(J_kgm2, moments, period_deg=360.0, *, name="machine", steps=14
     period_deg : float
         Period of the cycle. [deg]
     steps : int
-        Grid intervals over the period.
+        Grid intervals over the period (the diagrams' breakpoints are added to the grid).
     omega_nominal : float, optional
         Nominal mean speed. [rad/s]
     """
     if not J_kgm2 > 0:
         raise SpecError(Problem("machine.J_red_kgm2", f"got {J_kgm2!r}; must be > 0"))
     period = math.radians(period_deg)
-    phi = _grid(period, steps)
+    # the uniform grid plus every breakpoint of the diagrams: the extremes of the work
+    # (kinks of the diagrams, ends of steps) are then grid points, not missed between them
+    knots = [np.mod(pl.x - 0.0, period) for _, pl in moments]
+    phi = np.union1d(_grid(period, steps), np.concatenate([[0.0, period], *knots]))
+    phi = phi[(phi >= 0.0) & (phi <= period)]
     Md, Mc, Wd, Wc = (np.zeros_like(phi) for _ in range(4))
     for role, pl in moments:
         val, work = pl(phi), pl.integral(0.0, phi)

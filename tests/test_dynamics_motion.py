@@ -310,3 +310,27 @@ def test_table_drive_spec():
             "driving": "table", "phi_deg": [0, 1080], "M_Nm": [1800, 1800]}}))
     with pytest.raises(SpecError, match="only with driving"):
         load_dynamics_spec({**base, "dynamics": {"phi_deg": [0], "M_Nm": [1]}})
+
+
+def test_khurmi_16_5_intercepted_areas():
+    """Khurmi & Gupta (14th ed.), Example 16.5: multi-cylinder engine, turning-moment diagram
+    at 1 mm = 600 N·m and 1 mm = 3°; areas between the torque curve and the mean resistance
+    line, in order: +52, −124, +92, −140, +85, −72, +107 mm²; 600 rpm, total fluctuation
+    ±1.5 %, flywheel radius 0.5 m.  Printed: m = 182.5 kg (ΔE = 172 mm² = 5403 J).  Any
+    diagram with these areas has this answer: here each area over an equal part of the
+    turn."""
+    areas = np.array([52, -124, 92, -140, 85, -72, 107]) * 600 * math.radians(3)  # [J]
+    n = len(areas)
+    edges = np.linspace(0, 360, n + 1)
+    width = math.radians(360 / n)
+    x = np.repeat(edges, 2)[1:-1]
+    y = np.repeat(areas / width, 2)
+    excess = PiecewiseLinear(x, y, 360)
+    base = PiecewiseLinear([0, 360], [1000.0, 1000.0], 360)      # any mean torque
+    J_machine = 1e-6
+    m = machine_model(J_machine, [("drive", excess), ("drive", base), ("resist", base)],
+                      360, omega_nominal=600 * RPM)
+    f = size_flywheel(m, 0.03, driving="given")
+    assert f.dW_max == pytest.approx(172 * 600 * math.radians(3), rel=1e-9)
+    mass = (f.J_exact + J_machine) / 0.5 ** 2
+    assert mass == pytest.approx(182.5, abs=0.05)
