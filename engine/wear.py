@@ -87,7 +87,9 @@ def wear_profile(contact_deg, magnitude, half_angle_deg=DEFAULT_HALF_ANGLE_DEG,
     w = np.ones_like(m) if weights is None else np.asarray(weights, float).ravel()
     v = w * m
     phi = np.arange(n_points) * (360.0 / n_points)
-    if half_angle_deg >= 180.0:                     # every load wears the whole circle
+    # every load wears the whole circle (a window of 360° or more would count the point
+    # opposite a load twice, from the load's copies one turn either side)
+    if half_angle_deg + WEAR_ARC_EDGE_DEG >= 180.0:
         return phi, np.full(n_points, v.sum())
     # window sums by prefix sums over the contact angles, sorted and repeated one turn
     # either side so that a window [φ − h, φ + h] never wraps (O((n + N) log n))

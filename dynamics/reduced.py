@@ -1,0 +1,505 @@
+"""The reduced (equivalent) dynamic model of a machine at its main shaft (the crank).
+
+A single-degree-of-freedom machine moves like one shaft with the reduced moment of inertia
+``J_red(φ)`` driven by the reduced moments ``M_d(φ)`` and resisted by ``M_c(φ)``:
+
+    J_red(φ) = Σ [ m_i (v_Si/ω)² + J_Si (ω_i/ω)² ]                       (eq. 11-10)
+    M_red(φ) = Σ [ F_i v_i cos α_i ± M_i ω_i ] / ω                       (eq. 11-13)
+
+Both depend on the position only (velocity ratios), so they come straight from the
+kinematics.  φ here is the angle turned by the crank *in its direction of rotation* from
+the start of the cycle, so ω > 0; moments are positive in the direction of rotation
+(``M_drive``) or against it (``M_resist``).
+
+Sources of a model:
+
+* :func:`machine_model` – given directly by its reduced quantities (a constant J and
+  piecewise-linear moments, the textbooks' turning-moment diagrams);
+* :func:`linkage_model` – a crank-rocker or crank-slider of :mod:`linkage`: J_red and
+  dJ_red/dφ from the core's velocity ratios (kinematics at unit crank speed), the reduced
+  resisting moment from the power of the core's own external loads and weights;
+* :func:`chain_reduce` – a chain of elements with constant speed ratios (shafts, gear pairs,
+  a hoist drum with a load): the seed's Example 11-2.
+
+References
+----------
+.. [1] Seed 001: textbook chapter 11 "机械系统的动力分析与设计", §11.3.1 (equivalent model,
+   eqs. 11-10…11-14), Example 11-2.
+.. [2] Артоболевский И. И. Теория механизмов и машин. М.: Наука, 1988, гл. 15
+   (приведённые массы и силы).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from ._base import Problem, SpecError
+
+__all__ = ["ReducedModel", "PiecewiseLinear", "machine_model", "linkage_model",
+           "engine_model", "chain_reduce", "ChainReduction", "braking_moment"]
+
+
+class PiecewiseLinear:
+    """A periodic piecewise-linear function of the angle (a turning-moment diagram).
+
+    Parameters
+    ----------
+    phi_deg : sequence of float
+        Nondecreasing angles [deg] within one period; a repeated angle is a step (the
+        value jumps there).  Outside [phi_deg[0], phi_deg[-1]] the diagram is closed by a
+        straight line from the last point to the first one a period later.
+    values : sequence of float
+        The values at those angles.
+    period_deg : float
+        Period [deg].
+
+    Notes
+    -----
+    :meth:`integral` is exact (trapezoids between the breakpoints), so steps and kinks
+    cost no accuracy whatever the evaluation grid.
+    """
+
+    def __init__(self, phi_deg, values, period_deg, key="moment"):
+        x = np.asarray(phi_deg, dtype=float)
+        y = np.asarray(values, dtype=float)
+        probs = []
+        if x.ndim != 1 or x.size < 1 or x.shape != y.shape:
+            probs.append(Problem(key, f"phi_deg and M_Nm must be lists of the same length "
+                                      f"(got {x.size} and {y.size})"))
+        elif np.any(np.diff(x) < 0):
+            probs.append(Problem(f"{key}.phi_deg", f"got {x.tolist()}; angles must not "
+                                 "decrease (repeat an angle for a step)"))
+        elif x[-1] - x[0] > period_deg + 1e-9:
+            probs.append(Problem(f"{key}.phi_deg", f"spans {x[-1] - x[0]:g}°, more than "
+                                 f"the period {period_deg:g}°"))
+        if probs:
+            raise SpecError(probs)
+        # one closed period starting at x[0]: append the first point a period later
+        self.x = np.radians(np.concatenate([x, [x[0] + period_deg]]))
+        self.y = np.concatenate([y, [y[0]]])
+        self.period = math.radians(period_deg)
+        seg = 0.5 * (self.y[1:] + self.y[:-1]) * np.diff(self.x)
+        self._cum = np.concatenate([[0.0], np.cumsum(seg)])   # ∫ from x[0] to x[k]
+
+    @property
+    def cycle_integral(self):
+        """∫ over one period. [value·rad]"""
+        return float(self._cum[-1])
+
+    def _reduce(self, phi):
+        """Number of whole periods before ``phi`` (from x[0]) and the angle in the period."""
+        n = np.floor((np.asarray(phi, float) - self.x[0]) / self.period)
+        return n, np.asarray(phi, float) - n * self.period
+
+    def __call__(self, phi):
+        """Value at ``phi`` [rad]; at a step the value after it (right-continuous)."""
+        _, p = self._reduce(phi)
+        k = np.clip(np.searchsorted(self.x, p, side="right") - 1, 0, len(self.x) - 2)
+        dx = self.x[k + 1] - self.x[k]
+        with np.errstate(invalid="ignore", divide="ignore"):
+            t = np.where(dx > 0, (p - self.x[k]) / np.where(dx > 0, dx, 1.0), 0.0)
+        return self.y[k] + t * (self.y[k + 1] - self.y[k])
+
+    def primitive(self, phi):
+        """∫ from x[0] to ``phi`` [rad] of the function (continuous over steps)."""
+        n, p = self._reduce(phi)
+        k = np.clip(np.searchsorted(self.x, p, side="right") - 1, 0, len(self.x) - 2)
+        v = self(p)
+        part = 0.5 * (self.y[k] + v) * (p - self.x[k])
+        return n * self._cum[-1] + self._cum[k] + part
+
+    def integral(self, a, b):
+        """∫ from ``a`` to ``b`` [rad]."""
+        return self.primitive(b) - self.primitive(a)
+
+
+@dataclass
+class ReducedModel:
+    """Reduced quantities of a machine over one period, on a uniform grid.
+
+    Attributes
+    ----------
+    name : str
+    phi : ndarray
+        Angle turned by the main shaft in its direction of rotation, ``0 … period``
+        inclusive (the last point repeats the first one a period later), increasing;
+        uniform for a linkage or an engine, with the diagrams' breakpoints added for a
+        machine. [rad]
+    J_kgm2 : ndarray
+        Reduced moment of inertia J_red(φ) (without an added flywheel). [kg·m²]
+    dJ_dphi_kgm2 : ndarray
+        dJ_red/dφ. [kg·m²/rad]
+    M_drive_Nm, M_resist_Nm : ndarray
+        Reduced driving moment (+ in the direction of rotation) and reduced resisting
+        moment (+ against it). [N·m]
+    W_drive_J, W_resist_J : ndarray
+        Their work from φ = 0: ∫M dφ (exact for piecewise-linear diagrams). [J]
+    period : float
+        [rad]
+    omega_nominal : float or None
+        The machine's nominal (mean) speed if its spec gives one. [rad/s]
+    phi0_deg : float
+        The crank angle of the mechanism at φ = 0 (absolute, ccw from +x), for a linkage;
+        0 otherwise. [deg]
+    rotation : int
+        +1 (ccw) or −1: absolute crank angle = phi0_deg + rotation·φ.
+    source : object
+        What the model was built from (a linkage spec, a machine spec).
+    """
+
+    name: str
+    phi: np.ndarray
+    J_kgm2: np.ndarray
+    dJ_dphi_kgm2: np.ndarray
+    M_drive_Nm: np.ndarray
+    M_resist_Nm: np.ndarray
+    W_drive_J: np.ndarray
+    W_resist_J: np.ndarray
+    period: float
+    omega_nominal: float | None = None
+    phi0_deg: float = 0.0
+    rotation: int = 1
+    source: object = None
+    extra: dict = field(default_factory=dict)
+
+    @property
+    def phi_deg(self):
+        """Absolute crank angle of every grid point (for a linkage; φ in degrees for a
+        machine), not wrapped. [deg]"""
+        return self.phi0_deg + self.rotation * np.degrees(self.phi)
+
+    @property
+    def W_net_J(self):
+        """∫(M_d − M_c)dφ from φ = 0. [J]"""
+        return self.W_drive_J - self.W_resist_J
+
+    def with_drive(self, M_drive_Nm, W_drive_J):
+        return replace(self, M_drive_Nm=np.asarray(M_drive_Nm, float) + 0 * self.phi,
+                       W_drive_J=np.asarray(W_drive_J, float) + 0 * self.phi)
+
+    def with_constant_drive(self):
+        """The same machine with the constant moment that makes the cycle steady.
+
+        Returns ``(model, M_const)``.  Normally a constant driving moment
+        M_d = (∫M_c dφ − ∫M_d,given dφ)/period is added to the given driving moments; a
+        machine given by its driving moments only (an engine's turning-moment diagram)
+        gets a constant *resisting* moment ∫M_d dφ/period instead (``M_const`` is then
+        returned negative: it is the drive's deficit)."""
+        extra = (self.W_resist_J[-1] - self.W_drive_J[-1]) / self.period
+        if not np.any(self.M_resist_Nm) and not np.any(self.W_resist_J) and extra < 0:
+            return replace(self, M_resist_Nm=self.M_resist_Nm - extra,
+                           W_resist_J=self.W_resist_J - extra * self.phi), float(extra)
+        return self.with_drive(self.M_drive_Nm + extra, self.W_drive_J + extra * self.phi), \
+            float(extra)
+
+
+def _grid(period, steps):
+    return np.linspace(0.0, period, int(steps) + 1)
+
+
+def machine_model(J_kgm2, moments, period_deg=360.0, *, name="machine", steps=1440,
+                  omega_nominal=None) -> ReducedModel:
+    """A machine given by its reduced quantities.
+
+    Parameters
+    ----------
+    J_kgm2 : float
+        Constant reduced moment of inertia (> 0). [kg·m²]
+    moments : sequence of (role, PiecewiseLinear)
+        ``role`` "drive" or "resist"; the diagrams add up per role.
+    period_deg : float
+        Period of the cycle. [deg]
+    steps : int
+        Grid intervals over the period (the diagrams' breakpoints are added to the grid).
+    omega_nominal : float, optional
+        Nominal mean speed. [rad/s]
+    """
+    if not J_kgm2 > 0:
+        raise SpecError(Problem("machine.J_red_kgm2", f"got {J_kgm2!r}; must be > 0"))
+    period = math.radians(period_deg)
+    # the uniform grid plus every breakpoint of the diagrams: the extremes of the work
+    # (kinks of the diagrams, ends of steps) are then grid points, not missed between them
+    knots = [np.mod(pl.x - 0.0, period) for _, pl in moments]
+    phi = np.union1d(_grid(period, steps), np.concatenate([[0.0, period], *knots]))
+    phi = phi[(phi >= 0.0) & (phi <= period)]
+    Md, Mc, Wd, Wc = (np.zeros_like(phi) for _ in range(4))
+    for role, pl in moments:
+        val, work = pl(phi), pl.integral(0.0, phi)
+        if role == "drive":
+            Md, Wd = Md + val, Wd + work
+        else:
+            Mc, Wc = Mc + val, Wc + work
+    J = np.full_like(phi, float(J_kgm2))
+    return ReducedModel(name, phi, J, np.zeros_like(phi), Md, Mc, Wd, Wc, period,
+                        omega_nominal=omega_nominal)
+
+
+# --------------------------------------------------------------------------- linkage
+
+
+def _rotation(spec):
+    return 1 if spec.omega >= 0 else -1
+
+
+def linkage_kinematics_unit(spec, phi_abs):
+    """The core's kinematics of a linkage spec at absolute crank angles ``phi_abs`` [rad]
+    at unit crank speed in the spec's direction of rotation (ω = ±1 rad/s, ε = 0):
+    velocities are then velocity ratios d(·)/dφ and accelerations second derivatives."""
+    from linkage.analysis import build_mechanism
+
+    mech = build_mechanism(spec)
+    return mech, mech.kinematics(phi_abs, float(_rotation(spec)), 0.0)
+
+
+def reduced_inertia(spec, kin):
+    """J_red and dJ_red/dφ from the core's kinematics at unit crank speed.
+
+    J_red = Σ m_i |v_Si|² + J_Si ω_i²,  dJ_red/dφ = Σ 2 m_i v_Si·a_Si + 2 J_Si ω_i ε_i
+    (with ω_crank = 1, ε_crank = 0 the velocities are d/dφ, the accelerations d²/dφ²).
+    [kg·m², kg·m²/rad]
+    """
+    from linkage.groups import dot
+
+    zero = 0.0 * np.asarray(kin["A"].z.real, float)
+    J = zero
+    dJ = zero
+    for lname in spec.link_names:
+        ls = spec.links[lname]
+        link = kin["links"][lname]
+        S = link.point(ls.cg)
+        J = J + ls.mass * dot(S.v, S.v) + ls.inertia * link.omega ** 2
+        dJ = dJ + 2 * ls.mass * dot(S.v, S.a) + 2 * ls.inertia * link.omega * link.eps
+    return J, dJ
+
+
+def external_power(spec, mech, kin, ext, split=False):
+    """Power [W] of the linkage's external loads (the core's own load model,
+    :func:`linkage.loads.external_loads`: forces, moments, useful resistance by stroke and
+    span) and of the weights, at the kinematics ``kin`` (unit crank speed: then it is the
+    reduced moment of those loads, + helping the motion).  ``split=True`` returns the
+    applied loads' and the weights' powers apart."""
+    from linkage.groups import dot
+    from linkage.loads import external_loads, stroke_cycle
+
+    forces, moments, _ = external_loads(spec, mech, kin, stroke_cycle(mech, spec, ext))
+    P = 0.0 * np.asarray(kin["A"].z.real, float)
+    Pw = P
+    for lname in spec.link_names:
+        link = kin["links"][lname]
+        o = link.origin
+        for f, at in forces[lname]:
+            v = o.v + (at - o.z).perp() * link.omega      # v = v_O + iω (r − r_O)
+            P = P + dot(f, v)
+        for m in moments[lname]:
+            P = P + m * link.omega
+        ls = spec.links[lname]
+        if ls.mass and spec.gravity:                       # weight −m g j at S
+            Pw = Pw - ls.mass * spec.gravity * link.point(ls.cg).v.imag
+    if split:
+        return P, Pw
+    return P + Pw
+
+
+def stroke_extremes(spec, mech):
+    """The extremes the core's load model needs (None without a working stroke)."""
+    if spec.working_stroke is None:
+        return None
+    default = "ccw" if spec.kind == "crank-rocker" else "away"
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return mech.extremes(_rotation(spec), spec.working_stroke or default)
+
+
+def linkage_model(spec, *, steps=720, phi0_deg=None, drive_power=False) -> ReducedModel:
+    """The reduced model of a crank-rocker or crank-slider of :mod:`linkage`.
+
+    Parameters
+    ----------
+    spec : linkage spec (path, dict or MechanismSpec)
+    steps : int
+        Grid intervals over one turn.
+    phi0_deg : float, optional
+        Absolute crank angle of φ = 0 [deg]; default the start of the working stroke (or
+        0° for a double crank / no working stroke).
+
+    Returns
+    -------
+    ReducedModel
+        ``M_resist_Nm`` is minus the reduced moment of every external load and weight
+        (positive where the loads resist), ``extra["M_resist_loads_Nm"]`` and
+        ``extra["M_resist_weights_Nm"]`` its two parts; ``M_drive_Nm`` is zero (a drive is
+        added by :mod:`dynamics.motion`).  The crank's own mass and J_S2 are in J_red.
+
+    Notes
+    -----
+    Velocity ratios from the core's kinematics at ω = ±1 rad/s, ε = 0
+    (:func:`linkage_kinematics_unit`); eq. (11-10)/(11-13) of [1]_.  The loads are the
+    core's (:func:`linkage.loads.external_loads`): one load model for the force analysis
+    and for the reduction.  The spec's ε is not used (the true motion sets it).
+    """
+    from linkage import load_spec
+
+    spec = load_spec(spec)
+    from linkage.analysis import build_mechanism
+
+    mech = build_mechanism(spec)
+    mech.check_rotatable()
+    s = _rotation(spec)
+    ext = stroke_extremes(spec, mech)
+    if phi0_deg is None:
+        phi0_deg = math.degrees(ext.phi_start) if ext is not None else 0.0
+    phi = _grid(2 * math.pi, steps)
+    phi_abs = math.radians(phi0_deg) + s * phi
+    kin = mech.kinematics(phi_abs, float(s), 0.0)
+    J, dJ = reduced_inertia(spec, kin)
+    P_loads, P_weights = external_power(spec, mech, kin, ext, split=True)
+    Mc = -(P_loads + P_weights)
+    # work of the resistance: trapezoids on the grid (a resistance that switches on and
+    # off inside a step is integrated to O(step)); refine with `steps`
+    Wc = np.concatenate([[0.0], np.cumsum(0.5 * (Mc[1:] + Mc[:-1]) * np.diff(phi))])
+    zero = np.zeros_like(phi)
+    return ReducedModel(spec.name, phi, J, dJ, zero.copy(), Mc, zero.copy(), Wc,
+                        2 * math.pi, omega_nominal=abs(spec.omega) or None,
+                        phi0_deg=float(phi0_deg), rotation=s, source=spec,
+                        extra={"M_resist_loads_Nm": -P_loads,
+                               "M_resist_weights_Nm": -P_weights})
+
+
+# --------------------------------------------------------------------------- engine
+
+
+def engine_model(spec, *, steps=1440, J_extra_kgm2=0.0) -> ReducedModel:
+    """The reduced model of a (multi-cylinder) engine of :mod:`engine`.
+
+    Parameters
+    ----------
+    spec : EngineSpec
+        From :func:`engine.load_spec` (its ``cylinders`` fire evenly: every
+        cycle/cylinders degrees, cylinder k at α − k·cycle/i).
+    steps : int
+        Grid intervals over the cycle (720° four-stroke, 360° two-stroke).
+    J_extra_kgm2 : float
+        Crankshaft and other rotating parts not in the spec's masses. [kg·m²]
+
+    Returns
+    -------
+    ReducedModel
+        ``J_kgm2`` = Σ_k [m_j (v_k/ω)² + (m_ш.к + m_кр) R²] + J_extra (the two-mass model
+        of the engine's rod, as in the force table); ``dJ_dphi_kgm2`` = Σ 2 m_j (v/ω)(j/ω²)
+        (exact kinematics at constant ω); ``M_drive_Nm`` the gas torque Σ Mкр(ΔPг) from the
+        engine's own crank-pin force routine with the gas force alone (the piston's inertia
+        torque is the −½ω² dJ/dφ term of the equation of motion); no resisting moment (a
+        constant one is added by :func:`dynamics.motion.steady_motion`).
+    """
+    import engine
+
+    cyc = spec.cycle_deg
+    i = int(spec.cylinders)
+    phi = _grid(math.radians(cyc), steps)
+    theta = np.degrees(phi)
+    Mgas, vr, ar = [], [], []
+    for k in range(i):       # cylinder k lags k·cycle/i behind cylinder 1 (even firing)
+        phase = k * cyc / i
+        tab = engine.force_table(spec, theta, phase_deg=phase)
+        mech = engine.crank_slider(phi, spec.R, spec.L, spec.omega,
+                                   offset=spec.pin_offset, phase=math.radians(phase))
+        Mgas.append(engine.crank_pin_forces(mech, tab["dPg_N"].to_numpy(), spec.L)["M"])
+        vr.append(tab["v_m_s"].to_numpy() / spec.omega)            # dx/dφ [m]
+        ar.append(tab["j_m_s2"].to_numpy() / spec.omega ** 2)       # d²x/dφ² [m]
+    Mgas, vr, ar = np.array(Mgas), np.array(vr), np.array(ar)
+    m_rot = spec.m_rod_rot + (spec.m_crank_rot or 0.0)
+    J = np.sum(spec.mj * vr * vr + m_rot * spec.R ** 2, axis=0) + J_extra_kgm2
+    dJ = np.sum(2.0 * spec.mj * vr * ar, axis=0)
+    Md = np.sum(Mgas, axis=0)
+    Wd = np.concatenate([[0.0], np.cumsum(0.5 * (Md[1:] + Md[:-1]) * np.diff(phi))])
+    zero = np.zeros_like(phi)
+    return ReducedModel(spec.name, phi, J, dJ, Md, zero.copy(), Wd, zero.copy(),
+                        math.radians(cyc), omega_nominal=spec.omega, source=spec,
+                        extra={"cylinders": i, "cycle_deg": cyc})
+
+
+# --------------------------------------------------------------------------- chains
+
+
+@dataclass
+class ChainReduction:
+    """A chain of elements with constant speed ratios reduced to one shaft.
+
+    Attributes
+    ----------
+    J_red_kgm2 : float
+        Σ J_k (ω_k/ω)² + Σ m_j (v_j/ω)². [kg·m²]
+    M_red_Nm : float
+        Σ M_k (ω_k/ω) + Σ F_j (v_j/ω) (+ in the direction of rotation). [N·m]
+    """
+
+    J_red_kgm2: float
+    M_red_Nm: float
+
+
+def chain_reduce(inertias_kgm2=(), ratios=(), masses_kg=(), velocity_ratios_m=(),
+                 moments_Nm=(), moment_ratios=(), forces_N=(), force_ratios_m=()):
+    """Reduce elements with constant speed ratios to the main shaft (eqs. 11-10, 11-13).
+
+    Parameters
+    ----------
+    inertias_kgm2, ratios : sequences
+        Rotating elements: J_k [kg·m²] and ω_k/ω [-].
+    masses_kg, velocity_ratios_m : sequences
+        Translating elements: m_j [kg] and v_j/ω [m].
+    moments_Nm, moment_ratios : sequences
+        Moments M_k [N·m] (+ in the element's positive sense) on elements turning at ω_k/ω.
+    forces_N, force_ratios_m : sequences
+        Forces F_j [N] (component along the element's positive velocity) with v_j/ω [m].
+
+    Returns
+    -------
+    ChainReduction
+
+    Examples
+    --------
+    The seed's hoist (Example 11-2): motor shaft I with J1 and gear z1, shaft II with J2,
+    gear z2 and a drum of diameter D lifting a weight G: ω2/ω1 = z1/z2 and v/ω1 =
+    (D/2)·z1/z2, so J_e = J1 + J2 (z1/z2)² + (G/g)(D z1/(2 z2))².
+    """
+    J = sum(j * r * r for j, r in zip(inertias_kgm2, ratios))
+    J += sum(m * r * r for m, r in zip(masses_kg, velocity_ratios_m))
+    M = sum(m * r for m, r in zip(moments_Nm, moment_ratios))
+    M += sum(f * r for f, r in zip(forces_N, force_ratios_m))
+    if not J > 0:
+        raise SpecError(Problem("chain", f"reduced moment of inertia {J!r}; must be > 0"))
+    return ChainReduction(float(J), float(M))
+
+
+def braking_moment(J_red_kgm2, omega0_rad_s, t_stop_s, M_other_Nm=0.0):
+    """Constant brake moment that stops a machine of constant reduced quantities from ω0 in
+    ``t_stop_s`` (differential form with J constant: J dω/dt = M_other − M_brake).
+
+    Parameters
+    ----------
+    J_red_kgm2 : float
+        Reduced moment of inertia at the braked shaft. [kg·m²]
+    omega0_rad_s : float
+        Initial speed of that shaft (> 0). [rad/s]
+    t_stop_s : float
+        Stopping time (> 0). [s]
+    M_other_Nm : float
+        Reduced moment of the other loads, + in the direction of motion (a lowered weight
+        helps the motion, a lifted one opposes it). [N·m]
+
+    Returns
+    -------
+    float
+        M_brake = J ω0 / t + M_other [N·m] (seed 001, Example 11-2, eq. 11-17).
+    """
+    probs = []
+    if not J_red_kgm2 > 0:
+        probs.append(Problem("J_red_kgm2", f"got {J_red_kgm2!r}; must be > 0"))
+    if not omega0_rad_s > 0:
+        probs.append(Problem("omega0_rad_s", f"got {omega0_rad_s!r}; must be > 0"))
+    if not t_stop_s > 0:
+        probs.append(Problem("t_stop_s", f"got {t_stop_s!r}; must be > 0"))
+    if probs:
+        raise SpecError(probs)
+    return J_red_kgm2 * omega0_rad_s / t_stop_s + M_other_Nm

@@ -1,0 +1,298 @@
+"""Shaking force and moment of a linkage on its frame, and their balancing by counterweights.
+
+The shaking force is the resultant of the links' d'Alembert inertia forces,
+``F_sh = Σ (−m_i a_Si)``, and the shaking moment their resultant moment about the crank
+pivot O, ``M_sh = Σ [−J_Si ε_i + (r_Si − r_O) × (−m_i a_Si)]``: with no other loads the
+frame receives exactly these through its bearings and the motor's stator (d'Alembert:
+the reactions of the frame balance the inertia loads).  Inertia loads come from the core
+(``linkage.groups.inertia_load`` on the core's kinematics).
+
+Full shaking-force balance of the four-bar (the method of linearly independent vectors,
+Berkof & Lowen 1969): with the loop closure ``l1 e2 + l2 e3 = r_C + l3 e4`` the total mass
+centre is
+
+    M r_G = e2 [m2 r2 + m3 l1 (1 − r3/l2)] + e4 [m4 r4 + m3 r3 l3/l2] + const,
+
+(r_i the centre of mass of link i in its own frame, as a complex number), so r_G stands
+still when both brackets vanish: a counterweight ``(m r)_cw2 = −m2 r2 − m3 l1 (1 − r3/l2)``
+on the crank and ``(m r)_cw4 = −m4 r4 − m3 r3 l3/l2`` on the rocker, each a complex number
+in the link's frame (x along the link).
+
+Partial balance of the crank-slider: the coupler's mass is split exactly (for the force)
+between A and B, ``m3 (1 − r3/l2)`` and ``m3 r3/l2``; the counterweight on the crank takes
+all the rotating mass and a fraction ``f`` of the reciprocating one,
+``(m r)_cw = −m2 r2 − m3 (1 − r3/l2) l1 − f·m_rec·l1`` with
+``m_rec = m4 + m3 Re(r3)/l2`` (Khurmi & Gupta, ch. 22, §22.3: B·b = (m1 + c·m) r).
+
+References
+----------
+.. [1] Berkof R. S., Lowen G. G. A new method for completely force balancing simple
+   linkages. ASME J. Eng. Ind., 91(1), 1969, 21–26.
+.. [2] Seed 001: textbook chapter 11 "机械系统的动力分析与设计", §11.2.3 (balancing of
+   mechanisms by added masses).
+.. [3] Khurmi R. S., Gupta J. K. Theory of Machines, 14th ed., S. Chand, 2005, ch. 22,
+   Example 22.1.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+from types import MappingProxyType
+
+import numpy as np
+
+from ._base import Problem, SpecError
+
+__all__ = ["ShakingResult", "shaking", "BalanceResult", "balance_fourbar",
+           "balance_crank_slider", "mechanism_balance", "plot_shaking_force",
+           "plot_shaking_locus"]
+
+
+@dataclass
+class ShakingResult:
+    """``table``: ``phi_deg, F_x_N, F_y_N, F_N, M_O_Nm`` (shaking force components and
+    magnitude, shaking moment about the crank pivot, + ccw), at the spec's ω and ε."""
+
+    name: str
+    table: object
+
+    @property
+    def F_max(self):
+        return float(self.table["F_N"].max())
+
+
+def shaking(spec, crank_angles_deg=None) -> ShakingResult:
+    """Shaking force and moment of a linkage spec over the crank angle.
+
+    Parameters
+    ----------
+    spec : linkage spec (path, dict or MechanismSpec)
+    crank_angles_deg : array_like, optional
+        Absolute crank angles [deg]; default 0…360° by 1°.
+    """
+    import pandas as pd
+    from linkage import load_spec
+    from linkage.analysis import build_mechanism
+    from linkage.groups import cross, inertia_load
+
+    spec = load_spec(spec)
+    phi_deg = np.arange(0.0, 361.0, 1.0) if crank_angles_deg is None else \
+        np.atleast_1d(np.asarray(crank_angles_deg, float))
+    mech = build_mechanism(spec)
+    mech.check_rotatable()
+    kin = mech.kinematics(np.radians(phi_deg), spec.omega, spec.epsilon)
+    O = mech.pivot
+    F = 0j * phi_deg
+    M = 0.0 * phi_deg
+    for lname in spec.link_names:
+        ls = spec.links[lname]
+        link = kin["links"][lname]
+        S = link.point(ls.cg)
+        Fu, Mu = inertia_load(S.a, link.eps, ls.mass, ls.inertia)
+        F = F + Fu
+        M = M + Mu + cross(S.z - O, Fu)
+    table = pd.DataFrame({"phi_deg": phi_deg, "F_x_N": F.real, "F_y_N": F.imag,
+                          "F_N": np.abs(F), "M_O_Nm": M})
+    return ShakingResult(spec.name, table)
+
+
+@dataclass
+class BalanceResult:
+    """Counterweights and the shaking before and after.
+
+    Attributes
+    ----------
+    counterweights : pandas.DataFrame
+        ``link, mr_kgm`` (|m r|), ``angle_deg`` (direction in the link's frame, from the
+        link's line towards its left), ``radius_m``, ``mass_kg``.
+    balanced_spec : MechanismSpec
+        The spec with each counterweight merged into its link (mass, centre of mass and
+        J_S by the parallel-axis theorem, the counterweight taken as a point mass).
+    before, after : ShakingResult
+    """
+
+    counterweights: object
+    balanced_spec: object
+    before: ShakingResult
+    after: ShakingResult
+
+
+def _with_counterweights(spec, cws):
+    """The spec with point-mass counterweights ``{link: (mass, local position)}`` merged."""
+    links = dict(spec.links)
+    for lname, (m, p) in cws.items():
+        ls = links[lname]
+        M = ls.mass + m
+        if M <= 0:
+            continue
+        cg = (ls.mass * ls.cg + m * p) / M
+        J = ls.inertia + ls.mass * abs(ls.cg - cg) ** 2 + m * abs(p - cg) ** 2
+        links[lname] = dataclasses.replace(ls, mass=M, cg=complex(cg), inertia=float(J))
+    return dataclasses.replace(spec, links=MappingProxyType(links))
+
+
+def _table(rows):
+    import pandas as pd
+
+    return pd.DataFrame(rows, columns=["link", "mr_kgm", "angle_deg", "radius_m", "mass_kg"])
+
+
+def _cw(lname, mr, radius, key):
+    if radius is not None and not radius > 0:
+        raise SpecError(Problem(key, f"got {radius!r}; the counterweight radius must be > 0"))
+    a = abs(mr)
+    mass = a / radius if a > 0 else 0.0
+    pos = radius * mr / a if a > 0 else 0j
+    return (lname, a, math.degrees(math.atan2(mr.imag, mr.real)) % 360.0, radius, mass), \
+        (mass, pos)
+
+
+def balance_fourbar(spec, radius_crank_m=None, radius_rocker_m=None,
+                    crank_angles_deg=None) -> BalanceResult:
+    """Full shaking-force balance of a crank-rocker by one counterweight on the crank and
+    one on the rocker (linearly independent vectors, module docstring).
+
+    Parameters
+    ----------
+    radius_crank_m, radius_rocker_m : float, optional
+        Distance of each counterweight from its pivot (O, C); default the link's length.
+    """
+    from linkage import load_spec
+
+    spec = load_spec(spec)
+    if spec.kind != "crank-rocker":
+        raise SpecError(Problem("mechanism.kind", f"got {spec.kind!r}; full force balance "
+                                "by two counterweights is for the crank-rocker; use "
+                                "balance_crank_slider"))
+    l1, l2, l3 = spec.crank, spec.coupler, spec.rocker
+    m2, m3, m4 = (spec.links[n].mass for n in ("crank", "coupler", "rocker"))
+    r2, r3, r4 = (spec.links[n].cg for n in ("crank", "coupler", "rocker"))
+    mr2 = -m2 * r2 - m3 * l1 * (1 - r3 / l2)
+    mr4 = -m4 * r4 - m3 * r3 * l3 / l2
+    row2, cw2 = _cw("crank", complex(mr2), radius_crank_m or l1, "balance.radius_crank_m")
+    row4, cw4 = _cw("rocker", complex(mr4), radius_rocker_m or l3, "balance.radius_rocker_m")
+    bal = _with_counterweights(spec, {"crank": cw2, "rocker": cw4})
+    return BalanceResult(_table([row2, row4]), bal, shaking(spec, crank_angles_deg),
+                         shaking(bal, crank_angles_deg))
+
+
+def balance_crank_slider(spec, fraction=0.0, radius_m=None,
+                         crank_angles_deg=None) -> BalanceResult:
+    """Partial balance of a crank-slider: a counterweight on the crank for all the rotating
+    mass and ``fraction`` of the reciprocating one (module docstring).
+
+    Parameters
+    ----------
+    fraction : float in [0, 1]
+        Share of the reciprocating mass balanced (textbooks: ½ … ⅔).
+    radius_m : float, optional
+        Counterweight radius; default the crank length.
+    """
+    from linkage import load_spec
+
+    spec = load_spec(spec)
+    if spec.kind != "crank-slider":
+        raise SpecError(Problem("mechanism.kind", f"got {spec.kind!r}; partial balance is "
+                                "for the crank-slider; use balance_fourbar"))
+    if not 0.0 <= fraction <= 1.0:
+        raise SpecError(Problem("balance.fraction", f"got {fraction!r}; the balanced share "
+                                "of the reciprocating mass must be in [0, 1]"))
+    l1, l2 = spec.crank, spec.coupler
+    m2, m3, m4 = (spec.links[n].mass for n in ("crank", "coupler", "slider"))
+    r2, r3 = spec.links["crank"].cg, spec.links["coupler"].cg
+    m_rec = m4 + m3 * r3.real / l2
+    mr = -m2 * r2 - m3 * (1 - r3 / l2) * l1 - fraction * m_rec * l1
+    row, cw = _cw("crank", complex(mr), radius_m or l1, "balance.radius_m")
+    bal = _with_counterweights(spec, {"crank": cw})
+    res = BalanceResult(_table([row]), bal, shaking(spec, crank_angles_deg),
+                        shaking(bal, crank_angles_deg))
+    res.counterweights["fraction"] = fraction
+    res.counterweights["m_rec_kg"] = m_rec
+    return res
+
+
+_L = {"ru": {"phi": "φ, °", "F": "Fин, Н", "b": "до уравновешивания",
+             "a": "после уравновешивания", "t": "Главный вектор сил инерции",
+             "loc": "Годограф главного вектора сил инерции", "x": "Fx, Н", "y": "Fy, Н"},
+      "en": {"phi": "φ [deg]", "F": "F_sh [N]", "b": "before balancing",
+             "a": "after balancing", "t": "Shaking force", "loc": "Shaking force locus",
+             "x": "F_x [N]", "y": "F_y [N]"}}
+
+
+def plot_shaking_force(result: BalanceResult, ax=None, lang="en"):
+    """|F_sh|(φ) before (solid) and after (dashed) balancing."""
+    L = _L[lang]
+    if ax is None:
+        from matplotlib.figure import Figure
+        ax = Figure(figsize=(7, 4), layout="constrained").add_subplot()
+    for r, ls, lab in ((result.before, "-", L["b"]), (result.after, (0, (5, 2)), L["a"])):
+        ax.plot(r.table["phi_deg"], r.table["F_N"], color="black", ls=ls, lw=1.4, label=lab)
+    ax.set_xlabel(L["phi"])
+    ax.set_ylabel(L["F"])
+    ax.set_title(L["t"])
+    ax.legend(fontsize=8, loc="best")
+    ax.grid(True, lw=0.3)
+    return ax
+
+
+def plot_shaking_locus(result: BalanceResult, ax=None, lang="en"):
+    """Polar loci of the shaking force vector (its tip over a turn), before and after;
+    equal aspect, the pole marked."""
+    L = _L[lang]
+    if ax is None:
+        from matplotlib.figure import Figure
+        ax = Figure(figsize=(5.5, 5.5), layout="constrained").add_subplot()
+    for r, ls, lab in ((result.before, "-", L["b"]), (result.after, (0, (5, 2)), L["a"])):
+        ax.plot(r.table["F_x_N"], r.table["F_y_N"], color="black", ls=ls, lw=1.3, label=lab)
+    ax.plot([0], [0], "ko", ms=4)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel(L["x"])
+    ax.set_ylabel(L["y"])
+    ax.set_title(L["loc"])
+    ax.legend(fontsize=8, loc="best")
+    ax.grid(True, lw=0.3)
+    return ax
+
+
+_BAL_KEYS = ("fraction", "radius_m", "radius_crank_m", "radius_rocker_m")
+
+
+def mechanism_balance(path_or_dict) -> BalanceResult:
+    """Balance the mechanism of a linkage spec with an optional ``[balance]`` section::
+
+        [balance]
+        fraction = 0.5            # crank-slider: balanced share of the reciprocating mass
+        radius_m = 0.08           # crank-slider: counterweight radius (default the crank)
+        radius_crank_m = 0.05     # crank-rocker: counterweight radii (default the link
+        radius_rocker_m = 0.3     #   lengths)
+
+    Crank-rocker: full force balance; crank-slider: partial balance.  Over a full turn
+    by 1°, at the spec's ω and ε.
+    """
+    from linkage import load_spec
+
+    from ._base import Checker, read_toml
+
+    data, _ = read_toml(path_or_dict)
+    ck = Checker()
+    bal = ck.table(data, "balance", required=False)
+    ck.unknown(bal, _BAL_KEYS, "balance")
+    frac = ck.number(bal, "fraction", "balance", required=False, default=0.0, ge=0, le=1)
+    radius = {k: ck.number(bal, k, "balance", required=False, gt=0)
+              for k in ("radius_m", "radius_crank_m", "radius_rocker_m")}
+    rest = {k: v for k, v in data.items() if k != "balance"}
+    try:
+        spec = load_spec(rest)
+    except SpecError as exc:
+        raise SpecError(ck.problems + exc.problems) from None
+    kind_keys = {"crank-rocker": ("radius_crank_m", "radius_rocker_m"),
+                 "crank-slider": ("fraction", "radius_m")}[spec.kind]
+    for k in bal:
+        if k in _BAL_KEYS and k not in kind_keys:
+            ck.add(f"balance.{k}", f"does not apply to a {spec.kind}; valid here: "
+                                   + ", ".join(kind_keys))
+    ck.raise_if_any()
+    if spec.kind == "crank-rocker":
+        return balance_fourbar(spec, radius["radius_crank_m"], radius["radius_rocker_m"])
+    return balance_crank_slider(spec, frac, radius["radius_m"])
