@@ -11,6 +11,8 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
+from .symbols import sym
+
 __all__ = ["plot_indicator", "plot_piston_forces", "plot_nkt", "plot_torque",
            "plot_polar", "plot_developed", "all_figures", "PLOT_NAMES"]
 
@@ -28,10 +30,10 @@ _TXT = {
                mean="среднее", T="T, кН", K="K, кН", crank="кривошип",
                frame="система координат кривошипа: кривошип вверх от оси вала O, "
                      "вращение по часовой стрелке; +T вправо, +K вниз (к оси вала)",
-               tdc="ВМТ", bdc="НМТ", sub="ср",
+               tdc="ВМТ", bdc="НМТ", sub="ср", Kr="Kr.ш", pole_sh="Oш", Rsh="Rшш",
                poles="O – полюс силы Sш (T, K), Oш – полюс силы Rшш"),
-    "en": dict(alpha="α, crank deg", p="pг, MPa", V="V, l", Vs="Fп·x, l (from TDC)",
-               force="Force, kN", torque="Mкр, N·m", Rk="Rшш, kN",
+    "en": dict(alpha="α, crank deg", p="pg, MPa", V="V, l", Vs="Ap·x, l (from TDC)",
+               force="Force, kN", torque="Mt, N·m", Rk="Rpin, kN",
                ind="Indicator diagram", pV="p–V", pa="p–α",
                fP="Forces along the cylinder axis", fNKT="Forces N, K, T",
                tq="Torque of one cylinder", polar="Polar diagram of the crank-pin load",
@@ -39,8 +41,8 @@ _TXT = {
                K="K, kN", crank="crank",
                frame="crank-fixed frame: crank up from the shaft axis O, rotation "
                      "clockwise; +T to the right, +K downwards (towards the shaft axis)",
-               tdc="TDC", bdc="BDC", sub="mean",
-               poles="O – pole of the rod force S (T, K), Oш – pole of Rшш"),
+               tdc="TDC", bdc="BDC", sub="mean", Kr="Kr,rod", pole_sh="Opin", Rsh="Rpin",
+               poles="O – pole of the rod force Srod (T, K), Opin – pole of Rpin"),
 }
 
 
@@ -101,10 +103,16 @@ def plot_indicator(table, spec, summary=None, lang="ru"):
     return fig
 
 
+#: Line styles of the curves of one plot: colour and dash pattern both differ, so the
+#: curves stay apart in black-and-white print (Okabe–Ito colours, distinct greys).
+LINE_STYLES = (dict(color="#0072B2", ls="-", lw=1.6), dict(color="#D55E00", ls="--", lw=1.6),
+               dict(color="#000000", ls="-.", lw=1.4), dict(color="#009E73", ls=":", lw=1.8))
+
+
 def _lines(ax, table, cols, labels, scale=1e-3):
     a = table["alpha_deg"].to_numpy()
     for k, (col, lab) in enumerate(zip(cols, labels)):
-        ax.plot(a, table[col].to_numpy() * scale, lw=1.4, label=lab, color=f"C{k}")
+        ax.plot(a, table[col].to_numpy() * scale, label=lab, **LINE_STYLES[k])
     ax.legend(loc="best", fontsize=9)
 
 
@@ -113,7 +121,8 @@ def plot_piston_forces(table, spec, summary=None, lang="ru"):
     t = _TXT[lang]
     fig = _new()
     ax = fig.subplots()
-    _lines(ax, table, ("dPg_N", "Pj_N", "P_N"), ("ΔPг", "Pj", "P = ΔPг + Pj"))
+    dpg = sym("dPg", lang)
+    _lines(ax, table, ("dPg_N", "Pj_N", "P_N"), (dpg, "Pj", f"P = {dpg} + Pj"))
     _alpha_axis(ax, spec, t)
     ax.set_ylabel(t["force"])
     ax.set_title(f"{t['fP']}: {spec.name}")
@@ -138,11 +147,12 @@ def plot_torque(table, spec, summary=None, lang="ru"):
     fig = _new()
     ax = fig.subplots()
     a = table["alpha_deg"].to_numpy()
-    ax.plot(a, table["M_Nm"].to_numpy(), lw=1.4, color="C0", label="Mкр")
+    ax.plot(a, table["M_Nm"].to_numpy(), lw=1.4, color="C0", label=sym("M", lang))
     if summary is not None:
         m = summary["M_mean_Nm"]
         ax.axhline(m, color="C3", ls="--", lw=1.0,
-                   label=f"Mкр.{t['sub']} = {m:.1f} " + ("Н·м" if lang == "ru" else "N·m"))
+                   label=f"{sym('M_mean', lang)} = {_num(m, 1)} "
+                   + ("Н·м" if lang == "ru" else "N·m"))
     ax.legend(loc="best", fontsize=9)
     _alpha_axis(ax, spec, t)
     ax.set_ylabel(t["torque"])
@@ -168,45 +178,97 @@ def plot_polar(table, spec, summary=None, lang="ru"):
     ax = fig.subplots()
     T = table["T_N"].to_numpy() * 1e-3
     K = table["K_N"].to_numpy() * 1e-3
+    a = table["alpha_deg"].to_numpy()
     kr = spec.Kr * 1e-3
     ax.plot(T, K, color="C0", lw=1.3)
-    ax.set_aspect("equal", adjustable="datalim")
-    ax.invert_yaxis()
     ax.axhline(0, color="k", lw=0.7)
     ax.axvline(0, color="k", lw=0.7)
-    # α labels every 30°
-    labels = np.arange(0, spec.cycle_deg, 30.0)
-    lt, lk = _at(table, "T_N", labels) * 1e-3, _at(table, "K_N", labels) * 1e-3
-    ax.plot(lt, lk, "o", ms=3, color="C0")
-    for ang, x, y in zip(labels, lt, lk):
-        ax.annotate(f"{ang:g}", (x, y), xytext=(3, 3), textcoords="offset points",
-                    fontsize=7, color="0.2")
-    # poles
-    ax.plot([0], [0], "ks", ms=5)
-    ax.annotate("O", (0, 0), xytext=(-12, -10), textcoords="offset points", fontsize=11,
-                weight="bold")
-    ax.plot([0], [-kr], "o", color="C3", ms=6)
-    ax.annotate("Oш", (0, -kr), xytext=(-22, 6), textcoords="offset points", fontsize=11,
-                weight="bold", color="C3")
-    # Rшш max / min
-    R = table["R_N"].to_numpy() * 1e-3
-    a = table["alpha_deg"].to_numpy()
-    unit = "кН" if lang == "ru" else "kN"
-    for idx, name, col in ((int(np.argmax(R)), "Rшш max", "C3"),
-                           (int(np.argmin(R)), "Rшш min", "C2")):
-        ax.annotate("", xy=(T[idx], K[idx]), xytext=(0, -kr),
-                    arrowprops=dict(arrowstyle="-|>", color=col, lw=1.3))
-        at = (T[idx], K[idx]) if name.endswith("max") else (0, -kr)
-        ax.annotate(f"{name} = {R[idx]:.2f} {unit}\n(α = {a[idx]:g}°)", at,
-                    xytext=(8, -14) if name.endswith("max") else (10, 6),
-                    textcoords="offset points", fontsize=9, color=col)
     ax.set_xlabel(t["T"])
     ax.set_ylabel(t["K"])
     ax.grid(True, lw=0.4, alpha=0.6)
-    ax.set_title(f"{t['polar']}: {spec.name}\nKr.ш = {spec.Kr:.0f} "
+    ax.set_title(f"{t['polar']}: {spec.name}\n{t['Kr']} = {_num(spec.Kr, 0)} "
                  + ("Н" if lang == "ru" else "N") + f";  {t['poles']}", fontsize=11)
     fig.text(0.5, 0.012, t["frame"], fontsize=8, color="0.3", ha="center")
+    # α markers every 30°, poles, Rшш max/min arrows
+    labels = np.arange(0, spec.cycle_deg, 30.0)
+    lt, lk = _at(table, "T_N", labels) * 1e-3, _at(table, "K_N", labels) * 1e-3
+    ms = 3.5
+    ax.plot(lt, lk, "o", ms=ms, color="C0", gid="alpha-marker")
+    ax.plot([0], [0], "ks", ms=5, gid="pole-marker")
+    ax.plot([0], [-kr], "o", color="C3", ms=6, gid="pole-marker")
+    R = table["R_N"].to_numpy() * 1e-3
+    unit = "кН" if lang == "ru" else "kN"
+    ext = [(int(np.argmax(R)), "max", "C3"), (int(np.argmin(R)), "min", "C2")]
+    for idx, _, col in ext:
+        ax.annotate("", xy=(T[idx], K[idx]), xytext=(0, -kr),
+                    arrowprops=dict(arrowstyle="-|>", color=col, lw=1.3))
+    # freeze the limits (equal aspect, room for labels) before measuring anything
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.margins(0.07)
+    ax.autoscale_view()
+    ax.invert_yaxis()
+    ax.apply_aspect()
+    ax.set_xlim(ax.get_xlim())
+    ax.set_ylim(ax.get_ylim())
+    ax.set_autoscale_on(False)
+    _polar_labels(ax, T, K, kr, lt, lk, labels, ext, R, a, t, unit, ms)
     return fig
+
+
+def _num(x, digits):
+    """A number with a true minus sign (U+2212), never "-0"."""
+    s = f"{x:.{digits}f}"
+    if float(s) == 0:
+        s = s.lstrip("-")
+    return s.replace("-", "\u2212")
+
+
+def _polar_labels(ax, T, K, kr, lt, lk, angles, ext, R, a, t, unit, ms):
+    """Place the pole names, the Rшш max/min texts and the α labels of the polar diagram
+    so that no label covers another label, a marker or an arrow (measured with the
+    renderer; see :mod:`engine.plot_labels`)."""
+    from .plot_labels import Obstacles, label_points, place_label, renderer_of
+
+    fig = ax.figure
+    renderer_of(fig)
+    tr = ax.transData.transform
+    px = fig.dpi / 72.0
+    bb = ax.get_window_extent()
+    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+    curve = tr(np.column_stack([T, K]))
+    obs.curve = curve
+    pts = tr(np.column_stack([lt, lk]))
+    for p in pts:
+        obs.add_marker(p, ms * px + 1)
+    o, osh = tr([(0.0, 0.0)])[0], tr([(0.0, -kr)])[0]
+    obs.add_marker(o, 5 * px + 1)
+    obs.add_marker(osh, 6 * px + 1)
+    for idx, _, _ in ext:
+        obs.add_segment(osh, curve[idx])
+    # pole names first, then Rшш max/min, then α labels (multiples of 90° first)
+    place_label(ax, obs, o, "O", normal=(-1, -1), fontsize=11, weight="bold",
+                gid="polar-label")
+    place_label(ax, obs, osh, t["pole_sh"], normal=(-1, 0), fontsize=11, weight="bold",
+                color="C3", gid="polar-label")
+    for idx, name, col in ext:
+        pos = curve[idx] if name == "max" else osh
+        away = curve[idx] - osh
+        place_label(ax, obs, pos, f"{t['Rsh']} {name} = {R[idx]:.2f} {unit}\n"
+                    f"(α = {a[idx]:g}°)", normal=away if name == "max" else (1, 0),
+                    fontsize=9, color=col, gid="polar-label", gaps_pt=(4, 8, 14, 22, 32))
+    # α labels: normal of the curve at each point, pointing away from the curve's centre
+    d = np.gradient(curve, axis=0)
+    ang_all = a
+    tx = np.interp(angles, ang_all, d[:, 0])
+    ty = np.interp(angles, ang_all, d[:, 1])
+    normals = np.column_stack([-ty, tx])
+    centre = curve.mean(axis=0)
+    flip = np.sum(normals * (pts - centre), axis=1) < 0
+    normals[flip] *= -1
+    order = sorted(range(len(angles)), key=lambda i: (angles[i] % 90 != 0, angles[i]))
+    texts = [f"{x:g}" for x in angles]
+    label_points(ax, obs, pts, texts, normals, order, merge_px=1.4 * 7 * px,
+                 fontsize=7, color="0.15", gid="alpha-label")
 
 
 def plot_developed(table, spec, summary=None, lang="ru"):
@@ -216,11 +278,11 @@ def plot_developed(table, spec, summary=None, lang="ru"):
     ax = fig.subplots()
     a = table["alpha_deg"].to_numpy()
     R = table["R_N"].to_numpy() * 1e-3
-    ax.plot(a, R, lw=1.4, color="C0", label="Rшш")
+    ax.plot(a, R, lw=1.4, color="C0", label=sym("R", lang))
     unit = "кН" if lang == "ru" else "kN"
     if summary is not None:
         m = summary["R_mean_N"] * 1e-3
-        ax.axhline(m, color="C3", ls="--", lw=1.0, label=f"Rшш.{t['sub']} = {m:.2f} {unit}")
+        ax.axhline(m, color="C3", ls="--", lw=1.0, label=f"{sym('R_mean', lang)} = {m:.2f} {unit}")
     for idx, name, col in ((int(np.argmax(R)), "max", "C3"), (int(np.argmin(R)), "min",
                                                                "C2")):
         ax.plot(a[idx], R[idx], "o", color=col)

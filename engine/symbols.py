@@ -1,0 +1,55 @@
+"""Textbook symbols of the engine reports in Russian and in English.
+
+Russian reports use the symbols of the Russian course texts (Колчин & Демидов; the course
+manual of seed 003): ΔPг, Sш, Mкр, Rшш …  English reports use the English textbook
+symbols below, with no Cyrillic letter; the correspondence table is printed once on the
+Inputs sheet of the English workbook and in the README.  Plain data, no imports.
+"""
+from __future__ import annotations
+
+__all__ = ["SYMBOLS", "sym", "correspondence"]
+
+#: key → (Russian symbol, English symbol, English meaning).
+SYMBOLS = {
+    "alpha": ("α", "α", "crank angle from TDC"),
+    "beta": ("β", "β", "angle of the rod from the cylinder axis"),
+    "p_gas": ("pг", "pg", "absolute gas pressure in the cylinder"),
+    "dPg": ("ΔPг", "ΔPg", "gas force on the piston, (pg − p0)·Ap"),
+    "Pj": ("Pj", "Pj", "inertia force of the reciprocating masses"),
+    "P": ("P", "P", "total force on the piston pin"),
+    "S": ("Sш", "Srod", "force along the connecting rod"),
+    "N": ("N", "N", "side force of the piston on the cylinder wall"),
+    "K": ("K", "K", "radial force on the crank pin"),
+    "T": ("T", "T", "tangential force on the crank pin"),
+    "M": ("Mкр", "Mt", "torque of one cylinder"),
+    "Kr": ("Kr.ш", "Kr,rod", "centrifugal force of the rotating part of the rod"),
+    "R": ("Rшш", "Rpin", "resultant load on the crank pin"),
+    "psi": ("Ψ", "ψ", "direction of Rpin in the crank frame"),
+    "L": ("Lш", "L", "connecting-rod length"),
+    "area": ("Fп", "Ap", "piston area"),
+    "m_piston": ("mп", "mp", "mass of the piston group"),
+    "m_rod": ("mш", "mrod", "mass of the connecting rod"),
+    "m_rod_rec": ("mш.п", "mrod,rec", "reciprocating part of the rod mass"),
+    "m_rod_rot": ("mш.к", "mrod,rot", "rotating part of the rod mass"),
+    "m_crank": ("mк", "mc", "unbalanced rotating mass of the crank"),
+    "v_mean": ("vп.ср", "vp,mean", "mean piston speed"),
+    "pole_R": ("Oш", "Opin", "pole of the crank-pin load diagram"),
+    "p_peak_real": ("pzд", "pz,real", "real peak pressure of the rounded diagram"),
+    "M_mean": ("Mкр.ср", "Mt,mean", "mean torque of one cylinder"),
+    "R_mean": ("Rшш.ср", "Rpin,mean", "mean crank-pin load"),
+    "R_max": ("Rшш.max", "Rpin,max", "maximum crank-pin load"),
+    "tdc": ("ВМТ", "TDC", "top dead centre"),
+    "bdc": ("НМТ", "BDC", "bottom dead centre"),
+    "fullness": ("φп", "φf", "fullness of the indicator diagram, pi/p′i"),
+}
+
+
+def sym(key: str, lang: str) -> str:
+    """The symbol ``key`` in ``lang`` ("ru" or "en")."""
+    ru, en, _ = SYMBOLS[key]
+    return ru if lang == "ru" else en
+
+
+def correspondence():
+    """Rows (English symbol, Russian symbol, meaning) where the two differ."""
+    return [(en, ru, what) for ru, en, what in SYMBOLS.values() if ru != en]

@@ -1,0 +1,147 @@
+"""Readability of the engine plots (issue 14): polar-diagram labels never overlap a label,
+a marker or an arrow; curves of one plot differ in colour and dash; English plots carry
+no Cyrillic letter."""
+import re
+
+import numpy as np
+import pytest
+
+import engine
+from crankbase.resources import example_path
+
+pytest.importorskip("matplotlib")
+
+EXAMPLES = ("petrol_vaz2106.toml", "diesel_d240.toml")
+CYRILLIC = re.compile("[\u0400-\u04FF]")
+
+
+def _fine(name):
+    spec = engine.load_spec(example_path(name))
+    fine = engine.force_table(spec, engine.fine_angles(spec))
+    return fine, spec, engine.summarize(fine, spec)
+
+
+def _boxes(fig, gids):
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    canvas = FigureCanvasAgg(fig)
+    fig.draw(canvas.get_renderer())      # what savefig does: layout as printed
+    r = canvas.get_renderer()
+    ax = fig.axes[0]
+    return [(t.get_text(), t.get_window_extent(r)) for t in ax.texts
+            if t.get_gid() in gids], r
+
+
+def _apart(a, b):
+    return a.x1 <= b.x0 or b.x1 <= a.x0 or a.y1 <= b.y0 or b.y1 <= a.y0
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_polar_labels_do_not_overlap(name, lang):
+    from engine.plots import plot_polar
+
+    fine, spec, summary = _fine(name)
+    fig = plot_polar(fine, spec, summary, lang)
+    labels, r = _boxes(fig, {"alpha-label", "polar-label"})
+    ax = fig.axes[0]
+    # labels against labels
+    for i in range(len(labels)):
+        for j in range(i):
+            assert _apart(labels[i][1], labels[j][1]), (labels[i][0], labels[j][0])
+    # labels against markers (α points and both poles), measured from the drawn lines
+    px = fig.dpi / 72
+    for line in ax.lines:
+        if line.get_gid() not in ("alpha-marker", "pole-marker"):
+            continue
+        half = line.get_markersize() * px / 2
+        for x, y in ax.transData.transform(line.get_xydata()):
+            from matplotlib.transforms import Bbox
+            mb = Bbox([[x - half, y - half], [x + half, y + half]])
+            for text, bb in labels:
+                assert _apart(bb, mb), (text, (x, y))
+    # labels against arrows: the arrow's straight segment from Oш to its tip
+    from matplotlib.text import Annotation
+    arrows = [t for t in ax.texts if isinstance(t, Annotation) and t.arrow_patch]
+    assert len(arrows) == 2
+    for arr in arrows:
+        p = ax.transData.transform(arr.xyann)
+        q = ax.transData.transform(arr.xy)
+        for s in np.linspace(0, 1, 200):
+            x, y = p + s * (q - p)
+            for text, bb in labels:
+                assert not (bb.x0 < x < bb.x1 and bb.y0 < y < bb.y1), text
+    # every 30° point is named (merged names count), so the student can trace α
+    named = set()
+    for text, _ in labels:
+        named.update(re.findall(r"^\d+(?:/\d+)*$", text))
+    angles = {int(a) for n in named for a in n.split("/")}
+    expected = set(range(0, int(spec.cycle_deg), 30))
+    assert len(angles & expected) >= 0.9 * len(expected)
+    # Rшш max/min and both pole names are present
+    texts = " ".join(t for t, _ in labels)
+    assert texts.count(" max = ") == 1 and texts.count(" min = ") == 1
+    # labels stay inside the axes
+    ab = ax.get_window_extent(r)
+    for text, bb in labels:
+        assert ab.x0 <= bb.x0 and bb.x1 <= ab.x1 and ab.y0 <= bb.y0 and bb.y1 <= ab.y1
+
+
+def test_place_label_thins_when_no_room():
+    """A label that cannot be placed without covering a marker is left out."""
+    from matplotlib.figure import Figure
+
+    from engine.plot_labels import Obstacles, place_label, renderer_of
+
+    fig = Figure(figsize=(2, 2))
+    ax = fig.subplots()
+    renderer_of(fig)
+    bb = ax.get_window_extent()
+    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+    obs.boxes.append((bb.x0, bb.y0, bb.x1, bb.y1))        # everything is taken
+    assert place_label(ax, obs, ((bb.x0 + bb.x1) / 2, (bb.y0 + bb.y1) / 2), "30") is None
+    obs.boxes.clear()
+    t = place_label(ax, obs, ((bb.x0 + bb.x1) / 2, (bb.y0 + bb.y1) / 2), "30")
+    assert t is not None and len(obs.boxes) == 1
+
+
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_plot_curves_differ_in_colour_and_dash(lang):
+    from engine.plots import all_figures
+
+    fine, spec, summary = _fine(EXAMPLES[0])
+    for stem, fig in all_figures(fine, spec, summary, lang).items():
+        for ax in fig.axes:
+            lines = [ln for ln in ax.get_lines() if len(ln.get_xdata()) > 2
+                     and ln.get_linestyle() != "None"]
+            styles = [(ln.get_color(), ln.get_linestyle()) for ln in lines]
+            colours = [c for c, _ in styles]
+            dashes = [d for _, d in styles]
+            assert len(set(colours)) == len(colours), (stem, styles)
+            assert len(set(dashes)) == len(dashes), (stem, styles)
+
+
+def _all_text(fig):
+    out = []
+    for t in fig.findobj(lambda a: hasattr(a, "get_text")):
+        out.append(t.get_text())
+    return "\n".join(out)
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_english_plots_have_no_cyrillic(name):
+    from engine.plots import all_figures
+
+    fine, spec, summary = _fine(name)
+    for stem, fig in all_figures(fine, spec, summary, "en").items():
+        text = _all_text(fig)
+        assert not CYRILLIC.search(text), (stem, CYRILLIC.findall(text))
+
+
+def test_russian_plots_use_textbook_symbols():
+    from engine.plots import all_figures
+
+    fine, spec, summary = _fine(EXAMPLES[0])
+    text = "\n".join(_all_text(f) for f in all_figures(fine, spec, summary, "ru").values())
+    for symbol in ("ΔPг", "Pj", "Mкр", "Rшш", "Kr.ш", "Oш", "pг", "α"):
+        assert symbol in text, symbol
