@@ -3,9 +3,10 @@
     crankdyn engine SPEC.toml -o DIR [--lang ru|en] [--step DEG]
     crankdyn engine --example [NAME] -o DIR
 
-Writes ``DIR/forces.csv``, ``DIR/<name>.xlsx`` and the plots (PNG and SVG) after
-everything has been validated and computed, all at once through a staging folder; bad
-input writes nothing.  Heavy libraries
+Writes ``DIR/<name>_forces.csv``, ``DIR/<name>.xlsx`` and the plots
+``DIR/<name>_<plot>.png|svg`` (``<name>``: the engine's name as a file stem), so runs of
+two engines into one folder never mix, after everything has been validated and computed,
+all at once through a staging folder; bad input writes nothing.  Heavy libraries
 are imported inside :func:`run` only, so ``crankdyn --help`` stays fast.
 """
 from __future__ import annotations
@@ -31,6 +32,10 @@ def add_parser(subparsers):
                    help="report and plot language (default ru, the textbook symbols)")
     p.add_argument("--step", type=float, metavar="DEG",
                    help="table step in crank degrees (overrides [table] step_deg)")
+    p.add_argument("--form", choices=("seed", "kolchin"),
+                   help="Table 2 in the seed's form (forces in mm and N) or Kolchin's "
+                        "(specific forces in MPa with the coefficients tg β, 1/cos β, "
+                        "cos(α+β)/cos β, sin(α+β)/cos β); overrides [table] form")
     p.set_defaults(func=run)
 
 
@@ -78,9 +83,13 @@ def run(args) -> int:
     ensure_finite(table, "force table")
     ensure_finite(fine, "force table (plot grid)")
     summary = engine.summarize(fine, spec)
-    csv_path = out / "forces.csv"
-    xlsx_path = out / f"{safe_name(spec.name, 'engine')}.xlsx"
-    stems = [out / name for name in PLOT_NAMES]
+    if getattr(args, "form", None):
+        from dataclasses import replace
+        spec = replace(spec, table_form=args.form)
+    stem = safe_name(spec.name, "engine")
+    csv_path = out / f"{stem}_forces.csv"
+    xlsx_path = out / f"{stem}.xlsx"
+    stems = [out / f"{stem}_{name}" for name in PLOT_NAMES]
     outputs = [csv_path, xlsx_path] + [s.with_suffix(f".{e}") for s in stems
                                        for e in ("png", "svg")]
     check_not_input(outputs, [spec_path, spec.pressure_file])
@@ -91,14 +100,39 @@ def run(args) -> int:
     with staged_output(out, inputs=[spec_path, spec.pressure_file]) as stage:
         write_csv(table, stage / csv_path.name)
         save_workbook(wb, stage / xlsx_path.name)
-        for stem in stems:
-            save_figure(figs[stem.name], stage / stem.name)
+        for name, path in zip(PLOT_NAMES, stems):
+            save_figure(figs[name], stage / path.name)
 
-    # 3. terminal summary
+    # 3. terminal summary, in the report's language
+    print("\n".join(summary_lines(spec, table, summary, args.lang, csv_path, xlsx_path,
+                                   len(stems), out)))
+    return 0
+
+
+def summary_lines(spec, table, summary, lang, csv_path, xlsx_path, n_plots, out):
+    """The terminal summary of one run, in ``lang`` (Russian or English symbols)."""
+    from engine.symbols import sym
+
     ext = summary["extremes"]
-    ru = args.lang == "ru"
     pmax, apmax = summary["p_max_MPa"], summary["alpha_p_max_deg"]
-    lines = [
+    R = sym("R", lang)
+    if lang == "ru":
+        return [
+            f"{spec.name}: {spec.strokes}-тактный, D × S = {spec.bore * 1e3:g} × "
+            f"{spec.stroke * 1e3:g} мм, λ = {spec.lam:.4f}, n = {spec.speed_rpm:g} мин⁻¹, "
+            f"ускорение {'двучленное' if spec.acceleration == 'two-term' else 'точное'}",
+            f"  pг max             {pmax:10.3f} МПа  при α = {apmax:g}°;  "
+            f"среднее индикаторное давление pi = {summary['pi_MPa']:.4f} МПа",
+            f"  P max              {ext['P_N'][0]:10.0f} Н    при α = {ext['P_N'][1]:g}°",
+            f"  T max              {ext['T_N'][0]:10.0f} Н    при α = {ext['T_N'][1]:g}°",
+            f"  Mкр.ср             {summary['M_mean_Nm']:10.2f} Н·м  (один цилиндр)",
+            f"  {R} max           {ext['R_N'][0]:10.0f} Н    при α = {ext['R_N'][1]:g}°;"
+            f"  {sym('R_mean', lang)} = {summary['R_mean_N']:.0f} Н;  "
+            f"χ = {summary['chi']:.3f}",
+            f"записано: {csv_path} ({len(table)} строк), {xlsx_path}, {n_plots} графиков "
+            f"(PNG, SVG) в {out}",
+        ]
+    return [
         f"{spec.name}: {spec.strokes}-stroke, D x S = {spec.bore * 1e3:g} x "
         f"{spec.stroke * 1e3:g} mm, lambda = {spec.lam:.4f}, n = {spec.speed_rpm:g} rpm, "
         f"acceleration {spec.acceleration}",
@@ -106,11 +140,9 @@ def run(args) -> int:
         f"indicated mean pressure pi = {summary['pi_MPa']:.4f} MPa",
         f"  P max              {ext['P_N'][0]:10.0f} N    at alpha = {ext['P_N'][1]:g} deg",
         f"  T max              {ext['T_N'][0]:10.0f} N    at alpha = {ext['T_N'][1]:g} deg",
-        f"  mean torque        {summary['M_mean_Nm']:10.2f} N*m  (one cylinder)",
-        f"  R_crank-pin max    {ext['R_N'][0]:10.0f} N    at alpha = {ext['R_N'][1]:g} deg;"
+        f"  mean torque Mt     {summary['M_mean_Nm']:10.2f} N*m  (one cylinder)",
+        f"  {R} max           {ext['R_N'][0]:10.0f} N    at alpha = {ext['R_N'][1]:g} deg;"
         f"  mean {summary['R_mean_N']:.0f} N;  chi = {summary['chi']:.3f}",
-        f"wrote {csv_path} ({len(table)} rows), {xlsx_path}, "
-        f"{len(stems)} plots (PNG, SVG) in {out}" + (" [ru]" if ru else " [en]"),
+        f"wrote {csv_path} ({len(table)} rows), {xlsx_path}, {n_plots} plots (PNG, SVG) "
+        f"in {out}",
     ]
-    print("\n".join(lines))
-    return 0

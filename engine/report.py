@@ -7,7 +7,10 @@ hidden column A of the Inputs and Summary sheets, copies the prototype row's sty
 table row, and adds native Excel charts.  It consumes the computed table and summary; it
 computes no physics.
 
-Sheets, by position: 0 Inputs, 1 Table 2, 2 Summary, 3 Data (the CSV columns), 4 Charts.
+Sheets, by position: 0 Inputs, 1 Table 2 (in the spec's textbook form, ``table.form``:
+the seed's mm|N or Kolchin's MPa with the coefficient columns, :mod:`engine.table2`),
+2 Summary, 3 Data (the CSV columns), 4 Charts.  Row 5 of Table 2 (hidden) holds the column
+keys of :func:`engine.table2.table2_columns`; data start on row 6.
 """
 from __future__ import annotations
 
@@ -17,6 +20,7 @@ import math
 import numpy as np
 
 from .forces import COLUMNS
+from .symbols import sym
 
 __all__ = ["build_workbook", "save_workbook", "input_values", "TABLE2_FORCES", "LANGS"]
 
@@ -25,7 +29,14 @@ LANGS = ("ru", "en")
 #: Table 2 force pairs (mm, N), in the textbook order: (column of the force table).
 TABLE2_FORCES = ("dPg_N", "Pj_N", "P_N", "S_N", "N_N", "K_N", "T_N", "R_N")
 
-_T2_FIRST_ROW = 5     # first data row of Table 2 (rows 3–4: the two-row header)
+_T2_FIRST_ROW = 6     # first data row of Table 2 (rows 3–4: header; 5: hidden keys)
+_T2_KEY_ROW = 5
+
+#: Line colour and dash of the 1st, 2nd, 3rd … series of every native chart: colours
+#: of distinct lightness (Okabe–Ito blue, vermilion, black, green) and distinct dash
+#: patterns, so the curves stay apart in grey-scale print.
+CHART_STYLES = (("0072B2", "solid", 28575), ("D55E00", "dash", 28575),
+                ("000000", "lgDashDot", 22225), ("009E73", "sysDot", 31750))
 _DATA_FIRST_ROW = 4   # first data row of the Data sheet (row 3: the CSV header)
 
 
@@ -38,7 +49,7 @@ def input_values(spec, summary, lang="ru"):
     cyc = spec.cycle
     yes, no = ("да", "нет") if lang == "ru" else ("yes", "no")
     if spec.pressure_source == "cycle":
-        src = ("расчёт по тепловому расчёту ([pressure.cycle])" if lang == "ru"
+        src = ("по данным теплового расчёта ([pressure.cycle])" if lang == "ru"
                else "computed from the thermal calculation ([pressure.cycle])")
     elif spec.pressure_source == "file":
         src = (f"таблица давлений {spec.pressure_file.name}" if lang == "ru"
@@ -50,7 +61,7 @@ def input_values(spec, summary, lang="ru"):
                           else "two-term: j = Rω²(cos α + λ cos 2α)"),
              "exact": ("точная (группа Ассура RRP)" if lang == "ru"
                        else "exact (RRP Assur group)")}[spec.acceleration]
-    mass_input = "; ".join(f"{k} = {v:g}" for k, v in spec.mass_source.items())
+    mass_input = "; ".join(_mass_text(k, v, lang) for k, v in spec.mass_source.items())
     v = {
         "name": spec.name, "strokes": spec.strokes, "cylinders": spec.cylinders,
         "bore_mm": spec.bore * 1e3, "stroke_mm": spec.stroke * 1e3, "R_mm": spec.R * 1e3,
@@ -65,7 +76,9 @@ def input_values(spec, summary, lang="ru"):
         "pressure_source": src, "pi": summary["pi_MPa"], "power_i": summary["power_i_kW"],
     }
     if cyc is not None:
-        v.update(cycle_kind=cyc.kind, pa=cyc.pa / 1e6, pr=cyc.pr / 1e6, n1=cyc.n1,
+        kinds = {"ru": {"otto": "Отто (искровое зажигание)", "diesel": "дизель"},
+                 "en": {"otto": "Otto (spark ignition)", "diesel": "Diesel"}}
+        v.update(cycle_kind=kinds[lang].get(cyc.kind, cyc.kind), pa=cyc.pa / 1e6, pr=cyc.pr / 1e6, n1=cyc.n1,
                  n2=cyc.n2, pc=cyc.pc / 1e6, pz=cyc.pz / 1e6, lambda_z=cyc.lambda_z,
                  rho=cyc.rho if cyc.kind == "diesel" else None,
                  rounding=(yes if cyc.rounding else no),
@@ -77,10 +90,38 @@ def input_values(spec, summary, lang="ru"):
     return v
 
 
+#: The mass keys of the spec as the report shows them: (symbol key or text, unit).
+_MASS_TEXT = {
+    "reciprocating_kg": ("mj", "kg"), "rod_rotating_kg": ("m_rod_rot", "kg"),
+    "piston_group_kg": ("m_piston", "kg"), "rod_kg": ("m_rod", "kg"),
+    "piston_group_kg_m2": ("m_piston", "kg/m2"), "rod_kg_m2": ("m_rod", "kg/m2"),
+    "rod_small_end_fraction": ("fraction", ""), "crank_rotating_kg": ("m_crank", "kg"),
+}
+_UNITS = {"ru": {"kg": "кг", "kg/m2": "кг/м²", "": ""},
+          "en": {"kg": "kg", "kg/m2": "kg/m²", "": ""}}
+
+
+def _mass_text(key, value, lang):
+    """One given mass as "symbol = value unit" in the report's language."""
+    name, unit = _MASS_TEXT.get(key, (None, ""))
+    if name is None:
+        text = key
+    elif name == "fraction":
+        text = "mш.п/mш" if lang == "ru" else "mrod,rec/mrod"
+    else:
+        text = sym(name, lang)
+    if unit == "kg/m2":
+        text += "/Fп" if lang == "ru" else "/Ap"
+    u = _UNITS[lang][unit]
+    return f"{text} = {value:g}" + (f" {u}" if u else "")
+
+
 def _put(cell, value):
     """Store ``value`` in ``cell``; a string always as text, never as a formula (a name
     may start with "=").  Floats keep every bit when the workbook is saved by
     :func:`save_workbook` (:func:`crankbase.output.full_precision_xlsx`)."""
+    if isinstance(value, float) and value == 0.0:
+        value = 0.0                      # never show "-0" (the value is the same)
     cell.value = value
     if isinstance(value, str):
         cell.data_type = "s"
@@ -131,7 +172,7 @@ def build_workbook(table, summary, spec, lang="ru"):
     _check_finite(values, "inputs")
     for row in ws_in.iter_rows(min_row=4, max_col=4):
         key = row[0].value
-        if key is None:
+        if key is None or key == "symbols":
             continue
         _put(row[3], _text(values.get(key)))
         if isinstance(row[3].value, str):
@@ -141,24 +182,33 @@ def build_workbook(table, summary, spec, lang="ru"):
             if lines > 1:
                 ws_in.row_dimensions[row[3].row].height = 15 * lines
 
-    # Table 2
-    mu = spec.force_scale
-    _put(ws_t2["C2"], float(mu))
-    proto = [ws_t2.cell(_T2_FIRST_ROW, c) for c in range(1, 2 * len(TABLE2_FORCES) + 4)]
-    cols = [table["alpha_deg"].to_numpy()]
-    for name in TABLE2_FORCES:
-        n = table[name].to_numpy()
-        cols += [n / mu, n]
-    cols += [table["M_Nm"].to_numpy(), table["psi_deg"].to_numpy()]
-    data = np.column_stack(cols)
-    for i, rowvals in enumerate(data.tolist()):
+    # Table 2 in the spec's textbook form (the other form's sheet is dropped)
+    from .table2 import table2
+
+    form = getattr(spec, "table_form", "seed")
+    ws_k = wb.worksheets[5]
+    if form == "kolchin":
+        wb.remove(ws_t2)
+        wb.move_sheet(ws_k, offset=1 - wb.index(ws_k))
+        ws_t2 = ws_k
+        _put(ws_t2["C2"], float(spec.area * 1e4))
+    else:
+        wb.remove(ws_k)
+        _put(ws_t2["D2"], float(spec.force_scale))
+    t2 = table2(table, spec, form)
+    keys = [ws_t2.cell(_T2_KEY_ROW, j).value for j in range(1, len(t2.columns) + 1)]
+    if keys != list(t2.columns):
+        raise RuntimeError(f"template engine_{lang}.xlsx is out of date: Table 2 keys "
+                           f"{keys} != {list(t2.columns)}; run templates/"
+                           "build_engine_templates.py")
+    proto = [ws_t2.cell(_T2_FIRST_ROW, c) for c in range(1, len(keys) + 1)]
+    for i, rowvals in enumerate(t2.to_numpy().tolist()):
         r = _T2_FIRST_ROW + i
         for j, val in enumerate(rowvals):
             c = ws_t2.cell(r, j + 1)
             _put(c, val)
             if i:
                 _copy_style(proto[j], c)
-    last = _T2_FIRST_ROW + len(data) - 1
 
     # Summary
     ext = summary["extremes"]
@@ -181,25 +231,30 @@ def build_workbook(table, summary, spec, lang="ru"):
             if i:
                 _copy_style(proto[j], c)
 
-    # Charts over α, from Table 2's N columns
-    xref = Reference(ws_t2, min_col=1, min_row=_T2_FIRST_ROW, max_row=last)
-    force_col = {name: 3 + 2 * k for k, name in enumerate(TABLE2_FORCES)}
-    m_col = 2 * len(TABLE2_FORCES) + 2
+    # Charts over α, from the Data sheet (the CSV columns, whatever the Table 2 form)
+    from openpyxl.worksheet.pagebreak import Break
+
+    n = len(table)
+    col = {name: j + 1 for j, name in enumerate(COLUMNS)}
+    xref = Reference(ws_data, min_col=col["alpha_deg"], min_row=_DATA_FIRST_ROW,
+                     max_row=_DATA_FIRST_ROW + n - 1)
     ru = lang == "ru"
+    N, Nm = ("Н", "Н·м") if ru else ("N", "N·m")
+    dpg, M, S, R = (sym(k, lang) for k in ("dPg", "M", "S", "R"))
     charts = [
-        (("Силы ΔPг, Pj, P" if ru else "Forces ΔPг, Pj, P"), ("Н" if ru else "N"),
-         [force_col[k] for k in ("dPg_N", "Pj_N", "P_N")]),
-        (("Силы N, K, T" if ru else "Forces N, K, T"), ("Н" if ru else "N"),
-         [force_col[k] for k in ("N_N", "K_N", "T_N")]),
-        (("Крутящий момент цилиндра Mкр" if ru else "Torque of one cylinder Mкр"),
-         ("Н·м" if ru else "N·m"), [m_col]),
-        (("Сила на шатунную шейку Rшш" if ru else "Crank-pin load Rшш"),
-         ("Н" if ru else "N"), [force_col["S_N"], force_col["R_N"]]),
+        ((f"Силы {dpg}, Pj, P" if ru else f"Forces {dpg}, Pj, P"), N,
+         [("dPg_N", dpg), ("Pj_N", "Pj"), ("P_N", "P")]),
+        (("Силы N, K, T" if ru else "Forces N, K, T"), N,
+         [("N_N", "N"), ("K_N", "K"), ("T_N", "T")]),
+        ((f"Крутящий момент цилиндра {M}" if ru else f"Torque of one cylinder {M}"), Nm,
+         [("M_Nm", M)]),
+        ((f"Сила по шатуну {S} и сила на шатунную шейку {R}" if ru
+          else f"Rod force {S} and crank-pin load {R}"), N, [("S_N", S), ("R_N", R)]),
     ]
-    for k, (title, unit, ycols) in enumerate(charts):
+    rows_per_chart = 20
+    for k, (title, unit, series) in enumerate(charts):
         ch = ScatterChart()
         ch.title = title
-        ch.style = 13
         ch.x_axis.title = "α, °"
         ch.y_axis.title = unit
         ch.x_axis.scaling.min = 0
@@ -209,15 +264,23 @@ def build_workbook(table, summary, spec, lang="ru"):
         ch.x_axis.delete = False
         ch.y_axis.delete = False
         ch.legend.position = "b"
-        for col in ycols:
-            label = ws_t2.cell(3, col - 1).value if col != m_col else "Mкр"
-            yref = Reference(ws_t2, min_col=col, min_row=_T2_FIRST_ROW, max_row=last)
-            s = Series(yref, xref, title=str(label))
+        ch.x_axis.number_format = "0"
+        ch.y_axis.number_format = "0"
+        for m, (name, label) in enumerate(series):
+            yref = Reference(ws_data, min_col=col[name], min_row=_DATA_FIRST_ROW,
+                             max_row=_DATA_FIRST_ROW + n - 1)
+            s = Series(yref, xref, title=label)
             s.marker.symbol = "none"
             s.smooth = False
+            colour, dash, width = CHART_STYLES[m]
+            s.graphicalProperties.line.solidFill = colour
+            s.graphicalProperties.line.prstDash = dash
+            s.graphicalProperties.line.width = width
             ch.series.append(s)
-        ch.width, ch.height = 18, 8.5
-        ws_ch.add_chart(ch, f"A{3 + 18 * k}")
+        ch.width, ch.height = 17, 8.5
+        ws_ch.add_chart(ch, f"A{3 + rows_per_chart * k}")
+        if k % 2 == 1 and k + 1 < len(charts):      # two charts per A4 page, none split
+            ws_ch.row_breaks.append(Break(id=2 + rows_per_chart * (k + 1)))
     return wb
 
 

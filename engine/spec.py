@@ -138,6 +138,7 @@ class EngineSpec:
     cylinders: int = 1
     source_path: Path | None = None
     raw: dict = field(default_factory=dict, repr=False)
+    table_form: str = "seed"       # Table 2 in the seed's form (mm|N) or Kolchin's (MPa)
 
     @property
     def cycle_deg(self) -> float:
@@ -196,7 +197,7 @@ _CYCLE_KEYS = ("kind", "compression_ratio", "pa_MPa", "pr_MPa", "n1", "n2", "pz_
                "lambda_z", "rho", "rounding", "advance_deg", "pc_factor", "peak_factor",
                "peak_after_tdc_deg", "exhaust_opening_deg", "intake_opening_deg",
                "exhaust_closing_deg")
-_TABLE_KEYS = ("step_deg", "extra_angles_deg", "force_scale_N_per_mm")
+_TABLE_KEYS = ("step_deg", "extra_angles_deg", "force_scale_N_per_mm", "form")
 
 #: The rounded combustion curve meets the expansion polytrope this far after the peak. [deg]
 JOIN_AFTER_PEAK_DEG = 20.0
@@ -251,7 +252,8 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
     ``angle_deg`` and one of those pressure columns); or ``[pressure.cycle]``.
 
     ``[table]``: ``step_deg`` (default 30), ``extra_angles_deg`` (default none),
-    ``force_scale_N_per_mm`` (μP > 0, required).
+    ``force_scale_N_per_mm`` (μP > 0, required), ``form`` ("seed": forces in mm and N,
+    the default; "kolchin": specific forces in MPa with the coefficient columns).
     """
     data, file_dir = read_toml(path_or_dict)
     if not isinstance(path_or_dict, dict):
@@ -378,6 +380,8 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
             c.add(f"table.extra_angles_deg[{i}]", f"got {x:g}; must be <= {cycle_deg:g}")
     mu = c.number(t, "force_scale_N_per_mm", "table", gt=0,
                   what="the force scale μP [N/mm]")
+    form = c.choice(t, "form", ("seed", "kolchin"), "table", required=False,
+                    default="seed")
 
     if cycle is not None and cycle.rounding and not c.problems:
         _check_rounded_peak(c, cycle, lam if lam is not None else stroke / 2.0 / L_mm)
@@ -399,7 +403,7 @@ def load_spec(path_or_dict, base_dir=None) -> EngineSpec:
         angle_deg=angle, p=p, cycle=cycle, step_deg=step,
         extra_angles_deg=tuple(sorted(set(extra or []))), force_scale=mu,
         compression_ratio=eps, cylinders=int(cylinders), source_path=source_path,
-        raw=data)
+        raw=data, table_form=form)
 
 
 def _check_pressure_points(c, angle, p, cycle_deg, where):

@@ -7,7 +7,7 @@ Inputs sheet of the English workbook and in the README.  Plain data, no imports.
 """
 from __future__ import annotations
 
-__all__ = ["SYMBOLS", "sym", "correspondence"]
+__all__ = ["SYMBOLS", "sym", "correspondence", "to_english"]
 
 #: key → (Russian symbol, English symbol, English meaning).
 SYMBOLS = {
@@ -27,6 +27,7 @@ SYMBOLS = {
     "psi": ("Ψ", "ψ", "direction of Rpin in the crank frame"),
     "L": ("Lш", "L", "connecting-rod length"),
     "area": ("Fп", "Ap", "piston area"),
+    "mj": ("mj", "mj", "reciprocating mass, mp + mrod,rec"),
     "m_piston": ("mп", "mp", "mass of the piston group"),
     "m_rod": ("mш", "mrod", "mass of the connecting rod"),
     "m_rod_rec": ("mш.п", "mrod,rec", "reciprocating part of the rod mass"),
@@ -53,3 +54,14 @@ def sym(key: str, lang: str) -> str:
 def correspondence():
     """Rows (English symbol, Russian symbol, meaning) where the two differ."""
     return [(en, ru, what) for ru, en, what in SYMBOLS.values() if ru != en]
+
+
+def to_english(text: str) -> str:
+    """``text`` with every Russian textbook symbol replaced by its English one (longest
+    symbols first, so "Rшш.ср" becomes "Rpin,mean", not "Rpin.ср").  Only symbols are
+    translated; words are the caller's business."""
+    pairs = sorted(((ru, en) for ru, en, _ in SYMBOLS.values() if ru != en),
+                   key=lambda p: -len(p[0]))
+    for ru, en in pairs + [("Mкр.max", "Mt,max"), ("ср", "mean")]:
+        text = text.replace(ru, en)
+    return text

@@ -11,6 +11,8 @@ Run from the repository root after changing the layout::
 """
 from __future__ import annotations
 
+import math
+import sys
 from pathlib import Path
 
 from openpyxl import Workbook
@@ -18,11 +20,14 @@ from openpyxl.styles import Alignment, Border, Font, PatternFill, Side
 from openpyxl.utils import get_column_letter
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent))
+from engine.symbols import SYMBOLS, to_english  # noqa: E402  (the one symbol table)
+from engine.table2 import table2_columns  # noqa: E402
 
 #: Sheet names (the report looks sheets up by position, so names may differ per language).
 SHEETS = {
-    "ru": ("Исходные данные", "Таблица 2", "Итоги", "Данные", "Графики"),
-    "en": ("Inputs", "Table 2", "Summary", "Data", "Charts"),
+    "ru": ("Исходные данные", "Таблица 2", "Итоги", "Данные", "Графики", "Таблица 2 (МПа)"),
+    "en": ("Inputs", "Table 2", "Summary", "Data", "Charts", "Table 2 (MPa)"),
 }
 
 TITLE = {
@@ -226,9 +231,57 @@ def _fit_width(ws, orientation):
     ws.page_setup.fitToHeight = 0
 
 
+#: Kolchin's form of Table 2: (column key, ru symbol, unit ru, unit en, number format).
+KOLCHIN = [
+    ("alpha_deg", "α", "°", "deg", "0.##"),
+    ("beta_deg", "β", "°", "deg", "0.00"),
+    ("dPg_MPa", "Δpг", "МПа", "MPa", "0.000"),
+    ("Pj_MPa", "pj", "МПа", "MPa", "0.000"),
+    ("P_MPa", "p", "МПа", "MPa", "0.000"),
+    ("tg_beta", "tg β", "–", "–", "0.0000"),
+    ("N_MPa", "pN", "МПа", "MPa", "0.000"),
+    ("inv_cos_beta", "1/cos β", "–", "–", "0.0000"),
+    ("S_MPa", "pS", "МПа", "MPa", "0.000"),
+    ("K_coef", "cos(α+β)/cos β", "–", "–", "0.0000"),
+    ("K_MPa", "pK", "МПа", "MPa", "0.000"),
+    ("T_coef", "sin(α+β)/cos β", "–", "–", "0.0000"),
+    ("T_MPa", "pT", "МПа", "MPa", "0.000"),
+    ("T_N", "T", "Н", "N", "0"),
+    ("K_N", "K", "Н", "N", "0"),
+    ("R_N", "Rшш", "Н", "N", "0"),
+    ("M_Nm", "Mкр", "Н·м", "N·m", "0.0"),
+    ("psi_deg", "Ψ", "°", "deg", "0.0"),
+]
+KOLCHIN_EN = {"Δpг": "Δpg"}
+
+#: Row-height arithmetic: points per wrapped line, characters per unit of column width.
+LINE_PT, CHARS_PER_WIDTH = 15.0, 1.0
+
+
+def lines_needed(text, width):
+    """Wrapped lines of ``text`` in a column of ``width`` (Excel width units)."""
+    if not text:
+        return 1
+    return sum(max(1, math.ceil(len(part) * 1.1 / (width * CHARS_PER_WIDTH)))
+               for part in str(text).split("\n"))
+
+
+def _fit_rows(ws, widths, first_row):
+    """Give every row from ``first_row`` the height of its most-wrapped cell;
+    ``widths`` maps a column letter (or a merged span "B:E") to its width."""
+    for row in ws.iter_rows(min_row=first_row):
+        n = 1
+        for c in row:
+            w = widths.get(c.column_letter)
+            if w and isinstance(c.value, str):
+                n = max(n, lines_needed(c.value, w))
+        ws.row_dimensions[row[0].row].height = LINE_PT * n + 2
+
+
 def build(lang: str, path: Path) -> None:
     body, bold, title, note = _fonts(lang)
     L = 0 if lang == "ru" else 1
+    E = to_english if lang == "en" else (lambda x: x)
     wb = Workbook()
     ws_in = wb.active
     ws_in.title = SHEETS[lang][0]
@@ -236,6 +289,7 @@ def build(lang: str, path: Path) -> None:
     ws_sum = wb.create_sheet(SHEETS[lang][2])
     ws_data = wb.create_sheet(SHEETS[lang][3])
     ws_ch = wb.create_sheet(SHEETS[lang][4])
+    ws_k = wb.create_sheet(SHEETS[lang][5])
 
     # ---------------------------------------------------------------- Inputs
     ws = ws_in
@@ -247,70 +301,112 @@ def build(lang: str, path: Path) -> None:
     for j, h in enumerate(heads, start=2):
         c = ws.cell(3, j, h)
         c.font, c.fill, c.border, c.alignment = bold, HEAD_FILL, BORDER, CENTER
+    widths = dict(zip("BCDE", (50, 20, 40, 10)))
     for i, (key, ru, en, sym, u_ru, u_en, fmt) in enumerate(INPUTS, start=4):
         ws.cell(i, 1, key)
-        for j, v in enumerate((ru if L == 0 else en, sym, None, u_ru if L == 0 else u_en),
-                              start=2):
+        for j, v in enumerate((ru if L == 0 else en, E(sym), None,
+                               u_ru if L == 0 else u_en), start=2):
             c = ws.cell(i, j, v)
             c.font, c.border = body, BORDER
             c.alignment = LEFT if j in (2, 4) else CENTER
         ws.cell(i, 4).number_format = fmt
         ws.cell(i, 4).alignment = Alignment(horizontal="right", vertical="center",
                                             wrap_text=True)
+        n = max(lines_needed(ru if L == 0 else en, widths["B"]),
+                lines_needed(sym, widths["C"]))
+        ws.row_dimensions[i].height = LINE_PT * n + 2
     r = 4 + len(INPUTS) + 1
+    merged_width = sum(widths.values())
     for k, line in enumerate(CONVENTIONS[lang]):
-        c = ws.cell(r + k, 2, line)
+        c = ws.cell(r + k, 2, E(line) if k else line)
         c.font = bold if k == 0 else note
         c.alignment = Alignment(wrap_text=True, vertical="top")
         ws.merge_cells(start_row=r + k, start_column=2, end_row=r + k, end_column=5)
-        ws.row_dimensions[r + k].height = 15 if k == 0 else 30
+        ws.row_dimensions[r + k].height = LINE_PT * lines_needed(line, merged_width) + 3
+    # the symbol correspondence table, once (key "symbols" in the hidden column A)
+    r += len(CONVENTIONS[lang]) + 1
+    head = (("Обозначения: русский учебник ↔ английский", "русск.", "англ.", "")
+            if lang == "ru" else
+            ("Symbols: English textbook ↔ Russian textbook", "English", "Russian", ""))
+    ws.cell(r, 1, "symbols")
+    for j, h in enumerate(head, start=2):
+        c = ws.cell(r, j, h)
+        c.font, c.fill, c.border, c.alignment = bold, HEAD_FILL, BORDER, CENTER
+    ws.row_dimensions[r].height = LINE_PT + 2
+    for k, (ru_sym, en_sym, what) in enumerate(
+            (v for v in SYMBOLS.values() if v[0] != v[1]), start=1):
+        ws.cell(r + k, 1, "symbols")
+        vals = ((what, ru_sym, en_sym, "") if lang == "ru" else (what, en_sym, ru_sym, ""))
+        for j, v in enumerate(vals, start=2):
+            c = ws.cell(r + k, j, v)
+            c.font, c.border = body, BORDER
+            c.alignment = LEFT if j == 2 else CENTER
+        ws.row_dimensions[r + k].height = LINE_PT + 2
     ws.column_dimensions["A"].hidden = True
-    for col, w in zip("BCDE", (50, 20, 40, 10)):
+    for col, w in widths.items():
         ws.column_dimensions[col].width = w
     ws.freeze_panes = "B4"
+    ws.print_title_rows = "3:3"
     _fit_width(ws, "portrait")
 
-    # ---------------------------------------------------------------- Table 2
+    # ---------------------------------------------------------------- Table 2 (seed)
     ws = ws_t2
     ws["A1"] = TITLE[lang][1]
     ws["A1"].font = title
     ws["A2"] = "μP, Н/мм =" if lang == "ru" else "μP, N/mm ="
     ws["A2"].font = bold
-    ws["C2"].number_format = "0.###"
-    ws["C2"].font = bold
-    ws.merge_cells("A2:B2")
+    ws["D2"].number_format = "0.###"
+    ws["D2"].font = bold
+    ws.merge_cells("A2:C2")
     mm, nn = ("мм", "Н") if lang == "ru" else ("mm", "N")
     ws.cell(3, 1, "α, °")
     ws.merge_cells(start_row=3, start_column=1, end_row=4, end_column=1)
-    col = 2
+    ws.cell(3, 2, "β, °")
+    ws.merge_cells(start_row=3, start_column=2, end_row=4, end_column=2)
+    col = 3
     for sym in FORCES:
-        ws.cell(3, col, sym)
+        ws.cell(3, col, E(sym))
         ws.merge_cells(start_row=3, start_column=col, end_row=3, end_column=col + 1)
         ws.cell(4, col, mm)
         ws.cell(4, col + 1, nn)
         col += 2
-    ws.cell(3, col, "Mкр, Н·м" if lang == "ru" else "Mкр, N·m")
+    ws.cell(3, col, E("Mкр, Н·м") if lang == "ru" else E("Mкр, N·m"))
     ws.merge_cells(start_row=3, start_column=col, end_row=4, end_column=col)
     ws.cell(3, col + 1, "Ψ, °")
     ws.merge_cells(start_row=3, start_column=col + 1, end_row=4, end_column=col + 1)
     ncol = col + 1
-    for rr in (3, 4):
-        for cc in range(1, ncol + 1):
-            c = ws.cell(rr, cc)
-            c.font, c.fill, c.border, c.alignment = bold, HEAD_FILL, BORDER, CENTER
-    # prototype data row (row 5): the report copies its styles to every row
-    formats = ["0.##"] + ["0.0", "0"] * len(FORCES) + ["0.0", "0.0"]
-    for cc in range(1, ncol + 1):
-        c = ws.cell(5, cc)
-        c.font, c.border = body, BORDER
-        c.alignment = Alignment(horizontal="right")
-        c.number_format = formats[cc - 1]
+    _table_head(ws, ncol, bold)
+    _key_row(ws, table2_columns("seed"))
+    formats = ["0.##", "0.00"] + ["0.0", "0"] * len(FORCES) + ["0.0", "0.0"]
+    _proto_row(ws, formats, body)
     ws.column_dimensions["A"].width = 8
-    for cc in range(2, ncol + 1):
-        ws.column_dimensions[get_column_letter(cc)].width = 9 if cc % 2 == 0 else 10
+    ws.column_dimensions["B"].width = 7
+    for cc in range(3, ncol + 1):
+        ws.column_dimensions[get_column_letter(cc)].width = 9 if cc % 2 else 10
     ws.column_dimensions[get_column_letter(ncol - 1)].width = 10
     ws.column_dimensions[get_column_letter(ncol)].width = 8
-    ws.freeze_panes = "B5"
+    ws.freeze_panes = "C6"
+    ws.print_title_rows = "3:4"
+    _fit_width(ws, "landscape")
+
+    # ---------------------------------------------------------------- Table 2 (Kolchin)
+    ws = ws_k
+    ws["A1"] = TITLE[lang][1] + (" (удельные силы, МПа; Колчин, Демидов)" if lang == "ru"
+                                 else " (specific forces, MPa; Kolchin & Demidov)")
+    ws["A1"].font = title
+    ws["A2"] = ("Fп, см² =" if lang == "ru" else "Ap, cm² =")
+    ws["A2"].font = bold
+    ws.merge_cells("A2:B2")
+    ws["C2"].number_format = "0.00"
+    ws["C2"].font = bold
+    for j, (key, sym, u_ru, u_en, fmt) in enumerate(KOLCHIN, start=1):
+        ws.cell(3, j, E(KOLCHIN_EN.get(sym, sym) if lang == "en" else sym))
+        ws.cell(4, j, u_ru if L == 0 else u_en)
+        ws.column_dimensions[get_column_letter(j)].width = 12 if "cos" in sym else 8.5
+    _table_head(ws, len(KOLCHIN), bold)
+    _key_row(ws, [k[0] for k in KOLCHIN])
+    _proto_row(ws, [k[4] for k in KOLCHIN], body)
+    ws.freeze_panes = "C6"
     ws.print_title_rows = "3:4"
     _fit_width(ws, "landscape")
 
@@ -326,9 +422,10 @@ def build(lang: str, path: Path) -> None:
     for j, h in enumerate(heads, start=2):
         c = ws.cell(3, j, h)
         c.font, c.fill, c.border, c.alignment = bold, HEAD_FILL, BORDER, CENTER
+    ws.row_dimensions[3].height = 2 * LINE_PT + 2
     for i, (key, ru, en, sym, u_ru, u_en) in enumerate(SUMMARY_EXTREMES, start=4):
         ws.cell(i, 1, key)
-        vals = (ru if L == 0 else en, sym, None, None, None, None,
+        vals = (ru if L == 0 else en, E(sym), None, None, None, None,
                 u_ru if L == 0 else u_en)
         for j, v in enumerate(vals, start=2):
             c = ws.cell(i, j, v)
@@ -346,22 +443,24 @@ def build(lang: str, path: Path) -> None:
     ws.cell(r0, 1, "key")
     for i, (key, ru, en, sym, u_ru, u_en, fmt) in enumerate(SUMMARY_VALUES, start=r0 + 1):
         ws.cell(i, 1, key)
-        for j, v in enumerate((ru if L == 0 else en, sym, None, u_ru if L == 0 else u_en),
-                              start=2):
+        for j, v in enumerate((ru if L == 0 else en, E(sym), None,
+                               u_ru if L == 0 else u_en), start=2):
             c = ws.cell(i, j, v)
             c.font, c.border = body, BORDER
             c.alignment = LEFT if j == 2 else CENTER
         ws.cell(i, 4).number_format = fmt
         ws.cell(i, 4).alignment = Alignment(horizontal="right")
     note_row = r0 + len(SUMMARY_VALUES) + 2
-    c = ws.cell(note_row, 2, SUMMARY_NOTE[lang])
+    c = ws.cell(note_row, 2, E(SUMMARY_NOTE[lang]))
     c.font = note
     c.alignment = Alignment(wrap_text=True, vertical="top")
     ws.merge_cells(start_row=note_row, start_column=2, end_row=note_row, end_column=8)
-    ws.row_dimensions[note_row].height = 45
     ws.column_dimensions["A"].hidden = True
-    for col, w in zip("BCDEFGH", (44, 20, 13, 13, 13, 13, 9)):
+    widths = dict(zip("BCDEFGH", (44, 20, 13, 13, 13, 13, 9)))
+    for col, w in widths.items():
         ws.column_dimensions[col].width = w
+    ws.row_dimensions[note_row].height = LINE_PT * lines_needed(
+        SUMMARY_NOTE[lang], sum(widths.values())) + 3
     _fit_width(ws, "landscape")
 
     # ---------------------------------------------------------------- Data
@@ -381,15 +480,40 @@ def build(lang: str, path: Path) -> None:
     _fit_width(ws, "landscape")
 
     # ---------------------------------------------------------------- Charts
-    ws_ch["A1"] = ("Графики сил по углу поворота кривошипа (по данным листа «Таблица 2»)"
+    ws_ch["A1"] = ("Графики сил по углу поворота кривошипа (по данным листа «Данные»)"
                    if lang == "ru" else
-                   "Forces over the crank angle (from the sheet 'Table 2')")
+                   "Forces over the crank angle (from the sheet 'Data')")
     ws_ch["A1"].font = title
     _fit_width(ws_ch, "portrait")
 
     wb.properties.title = TITLE[lang][1]
     wb.properties.creator = "crankdyn"
     wb.save(path)
+
+
+def _table_head(ws, ncol, bold):
+    for rr in (3, 4):
+        ws.row_dimensions[rr].height = 2 * LINE_PT if rr == 3 else LINE_PT + 2
+        for cc in range(1, ncol + 1):
+            c = ws.cell(rr, cc)
+            c.font, c.fill, c.border, c.alignment = bold, HEAD_FILL, BORDER, CENTER
+
+
+def _key_row(ws, keys):
+    """Row 5, hidden: the column keys (force-table names), so a reader (``crankdyn
+    check``) finds every column by name, whatever the language of the headers."""
+    for j, k in enumerate(keys, start=1):
+        ws.cell(5, j, k)
+    ws.row_dimensions[5].hidden = True
+
+
+def _proto_row(ws, formats, body):
+    """Row 6: the prototype data row; the report copies its style to every row."""
+    for cc, fmt in enumerate(formats, start=1):
+        c = ws.cell(6, cc)
+        c.font, c.border = body, BORDER
+        c.alignment = Alignment(horizontal="right")
+        c.number_format = fmt
 
 
 def main():

@@ -103,7 +103,9 @@ def test_workbook_inputs_and_extremes(ratchet_run):
     # seed 000 / domain.md §2: with OC = 0.54 m, swing ≈ 68.4°, K ≈ 1.138
     assert values["rocker swing"] == pytest.approx(68.4, abs=0.05)
     assert values["time-ratio coefficient K = φwork/φidle"] == pytest.approx(1.138, abs=5e-4)
-    ext = _sheet_frame(wb["extremes"])
+    # the extremes sheet lists one quantity per row (readable on A4): transpose it back
+    rows = list(wb["extremes"].iter_rows(min_row=2, values_only=True))
+    ext = pd.DataFrame({r[2]: list(r[3:]) for r in rows})
     assert list(ext["label"]) == ["working start", "working end"]
     # the rocker stands still at both extreme positions
     assert np.abs(ext["omega4_rad_s"].to_numpy(float)).max() < 1e-9

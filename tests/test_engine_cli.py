@@ -2,6 +2,7 @@
 workbook read back with openpyxl equals the CSV; mm columns = N ÷ μP; every plot exists
 and is not empty; bad input exits 2 with one line per problem and writes nothing; an
 existing report is replaced only by a complete new one."""
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -21,6 +22,11 @@ EXAMPLES = {"petrol": ("petrol_vaz2106.toml", "petrol-vaz2106.xlsx"),
             "diesel": ("diesel_d240.toml", "diesel-d240.xlsx")}
 
 
+def _stem(name):
+    """Every output of a run is named after the engine (issue 14: runs never mix)."""
+    return EXAMPLES[name][1][:-5]
+
+
 def run_cli(*argv):
     return main(["engine", *map(str, argv)])
 
@@ -38,44 +44,47 @@ def run(request, tmp_path_factory):
 def test_outputs_exist(run):
     name, lang, out = run
     files = {p.name for p in out.iterdir()}
-    expected = {"forces.csv", EXAMPLES[name][1]}
-    expected |= {f"{s}.{e}" for s in PLOT_NAMES for e in ("png", "svg")}
+    expected = {f"{_stem(name)}_forces.csv", EXAMPLES[name][1]}
+    expected |= {f"{_stem(name)}_{s}.{e}" for s in PLOT_NAMES for e in ("png", "svg")}
     assert files == expected          # nothing else (no temporary files left)
 
 
 def test_csv_equals_force_table(run):
     name, lang, out = run
-    df = pd.read_csv(out / "forces.csv")
+    df = pd.read_csv(out / f"{_stem(name)}_forces.csv")
     spec = engine.load_spec(example_path(EXAMPLES[name][0]))
     t = engine.force_table(spec)
     assert list(df.columns) == list(engine.COLUMNS)
     np.testing.assert_array_equal(df.to_numpy(), t.to_numpy())   # full precision
-    text = (out / "forces.csv").read_text()
+    text = (out / f"{_stem(name)}_forces.csv").read_text()
     assert text.splitlines()[0].startswith("alpha_deg,p_gas_MPa,dPg_N,Pj_N,P_N,beta_deg")
     assert ";" not in text
 
 
 def test_workbook_equals_csv(run):
     name, lang, out = run
-    df = pd.read_csv(out / "forces.csv")
+    df = pd.read_csv(out / f"{_stem(name)}_forces.csv")
     wb = load_workbook(out / EXAMPLES[name][1])
     assert len(wb.worksheets) == 5
     ws_in, ws_t2, ws_sum, ws_data, ws_ch = wb.worksheets
     spec = engine.load_spec(example_path(EXAMPLES[name][0]))
     mu = spec.force_scale
-    # Table 2: α, (mm, N) × 8 forces, Mкр, Ψ — numbers, not formulas
-    assert ws_t2["C2"].value == mu
+    # Table 2: α, β, (mm, N) × 8 forces, Mкр, Ψ — numbers, not formulas; row 5 (hidden)
+    # holds the column keys, data from row 6
+    assert ws_t2["D2"].value == mu
+    assert ws_t2.row_dimensions[5].hidden
     n = len(df)
-    rows = list(ws_t2.iter_rows(min_row=5, max_row=4 + n, values_only=True))
-    assert ws_t2.cell(5 + n, 1).value is None
+    rows = list(ws_t2.iter_rows(min_row=6, max_row=5 + n, values_only=True))
+    assert ws_t2.cell(6 + n, 1).value is None
     arr = np.array(rows, dtype=float)
     np.testing.assert_array_equal(arr[:, 0], df["alpha_deg"])
+    np.testing.assert_array_equal(arr[:, 1], df["beta_deg"])
     for k, col in enumerate(TABLE2_FORCES):
-        np.testing.assert_array_equal(arr[:, 2 + 2 * k], df[col])            # N
-        np.testing.assert_allclose(arr[:, 1 + 2 * k], df[col] / mu, rtol=1e-15)  # mm
-    np.testing.assert_array_equal(arr[:, 17], df["M_Nm"])
-    np.testing.assert_array_equal(arr[:, 18], df["psi_deg"])
-    for row in ws_t2.iter_rows(min_row=5, max_row=4 + n):
+        np.testing.assert_array_equal(arr[:, 3 + 2 * k], df[col])            # N
+        np.testing.assert_allclose(arr[:, 2 + 2 * k], df[col] / mu, rtol=1e-15)  # mm
+    np.testing.assert_array_equal(arr[:, 18], df["M_Nm"])
+    np.testing.assert_array_equal(arr[:, 19], df["psi_deg"])
+    for row in ws_t2.iter_rows(min_row=6, max_row=5 + n):
         for c in row:
             assert c.data_type == "n"
     # Data sheet: the CSV, header and values, at full precision
@@ -92,21 +101,22 @@ def test_table2_layout_like_the_textbook(run):
     wb = load_workbook(out / EXAMPLES[name][1])
     ws = wb.worksheets[1]
     mm, nn = ("мм", "Н") if lang == "ru" else ("mm", "N")
-    head = [ws.cell(3, c).value for c in range(1, 20)]
-    sub = [ws.cell(4, c).value for c in range(1, 20)]
-    assert head[0] == "α, °"
-    assert [head[c] for c in range(1, 17, 2)] == ["ΔPг", "Pj", "P", "Sш", "N", "K", "T",
-                                                 "Rшш"]
-    assert sub[1:17] == [mm, nn] * 8
-    assert head[17].startswith("Mкр") and head[18] == "Ψ, °"
+    head = [ws.cell(3, c).value for c in range(1, 21)]
+    sub = [ws.cell(4, c).value for c in range(1, 21)]
+    assert head[0] == "α, °" and head[1] == "β, °"
+    symbols = (["ΔPг", "Pj", "P", "Sш", "N", "K", "T", "Rшш"] if lang == "ru" else
+               ["ΔPg", "Pj", "P", "Srod", "N", "K", "T", "Rpin"])
+    assert [head[c] for c in range(2, 18, 2)] == symbols
+    assert sub[2:18] == [mm, nn] * 8
+    assert head[18].startswith("Mкр" if lang == "ru" else "Mt") and head[19] == "Ψ, °"
     merged = {str(r) for r in ws.merged_cells.ranges}
-    assert {"A3:A4", "B3:C3", "P3:Q3", "R3:R4", "S3:S4"} <= merged
+    assert {"A3:A4", "B3:B4", "C3:D3", "Q3:R3", "S3:S4", "T3:T4"} <= merged
     title = ws["A1"].value
     assert ("Таблица 2" in title) if lang == "ru" else ("Table 2" in title)
     # borders and number formats copied to every data row
     last = ws.max_row
-    assert ws.cell(last, 3).border.left.style == "thin"
-    assert ws.cell(last, 2).number_format == "0.0" and ws.cell(last, 3).number_format == "0"
+    assert ws.cell(last, 4).border.left.style == "thin"
+    assert ws.cell(last, 3).number_format == "0.0" and ws.cell(last, 4).number_format == "0"
 
 
 def test_inputs_and_summary_sheets(run):
@@ -141,8 +151,9 @@ def test_inputs_and_summary_sheets(run):
 def test_plots_exist_and_are_not_empty(run):
     import matplotlib.image as mpimg
 
-    _, _, out = run
+    name, _, out = run
     for stem in PLOT_NAMES:
+        stem = f"{_stem(name)}_{stem}"
         png = out / f"{stem}.png"
         img = mpimg.imread(png)
         assert img.shape[0] > 300 and img.shape[1] > 300
@@ -154,14 +165,19 @@ def test_plots_exist_and_are_not_empty(run):
 def test_terminal_summary(tmp_path, capsys):
     assert run_cli("--example", "-o", tmp_path) == 0
     text = capsys.readouterr().out
+    for word in ("pг max", "P max", "T max", "Mкр.ср", "Rшш max", "χ", "petrol"):
+        assert word in text                        # the report's language: Russian
+    assert run_cli("--example", "-o", tmp_path, "--lang", "en") == 0
+    text = capsys.readouterr().out
     for word in ("peak gas pressure", "P max", "T max", "mean torque", "chi", "petrol"):
         assert word in text
+    assert not re.search("[\u0400-\u04FF]", text)
 
 
 def test_step_option_and_spec_path(tmp_path):
     spec = example_path("diesel_d240.toml")
     assert run_cli(spec, "-o", tmp_path, "--step", 10, "--lang", "en") == 0
-    df = pd.read_csv(tmp_path / "forces.csv")
+    df = pd.read_csv(tmp_path / "diesel-d240_forces.csv")
     assert len(df) == 73 + 1          # 0..720 every 10°, plus 375° (370° is on the grid)
     assert 375 in set(df["alpha_deg"])
 
@@ -306,14 +322,14 @@ def test_existing_report_survives_a_crash_while_saving(tmp_path, monkeypatch):
 
 
 def test_output_may_not_overwrite_an_input(tmp_path, capsys):
-    (tmp_path / "forces.csv").write_text("angle_deg,p_MPa\n0,0.1\n360,5\n")
+    (tmp_path / "t_forces.csv").write_text("angle_deg,p_MPa\n0,0.1\n360,5\n")
     spec = tmp_path / "spec.toml"
     spec.write_text(GOOD.replace("angle_deg = [0, 360, 370]\np_MPa = [0.1, 6, 7]\n",
-                                 "file = 'forces.csv'\n"))
-    before = (tmp_path / "forces.csv").read_text()
+                                 "file = 't_forces.csv'\n"))
+    before = (tmp_path / "t_forces.csv").read_text()
     assert run_cli(spec, "-o", tmp_path) == 2
     assert "input" in capsys.readouterr().err
-    assert (tmp_path / "forces.csv").read_text() == before
+    assert (tmp_path / "t_forces.csv").read_text() == before
 
 
 def test_name_is_text_not_formula(tmp_path):
@@ -336,6 +352,6 @@ def test_two_stroke_engine_end_to_end(tmp_path):
                              "angle_deg = [0, 10, 120, 180, 240, 350]\n"
                              "p_MPa = [5.5, 6.0, 0.5, 0.1, 0.3, 2.5]"))
     assert run_cli(spec, "-o", tmp_path / "o", "--step", 15) == 0
-    df = pd.read_csv(tmp_path / "o" / "forces.csv")
+    df = pd.read_csv(tmp_path / "o" / "two-stroke_forces.csv")
     assert df["alpha_deg"].iloc[-1] == 360 and len(df) == 25
-    assert (tmp_path / "o" / "polar_Rshsh.png").stat().st_size > 10000
+    assert (tmp_path / "o" / "two-stroke_polar_Rshsh.png").stat().st_size > 10000
