@@ -268,11 +268,11 @@ def lines_needed(text, width):
 
 def _fit_rows(ws, widths, first_row):
     """Give every row from ``first_row`` the height of its most-wrapped cell;
-    ``widths`` maps a column letter (or a merged span "B:E") to its width."""
+    ``widths`` maps a column letter to its width."""
     for row in ws.iter_rows(min_row=first_row):
         n = 1
         for c in row:
-            w = widths.get(c.column_letter)
+            w = widths.get(getattr(c, "column_letter", None))
             if w and isinstance(c.value, str):
                 n = max(n, lines_needed(c.value, w))
         ws.row_dimensions[row[0].row].height = LINE_PT * n + 2
@@ -341,7 +341,7 @@ def build(lang: str, path: Path) -> None:
             c = ws.cell(r + k, j, v)
             c.font, c.border = body, BORDER
             c.alignment = LEFT if j == 2 else CENTER
-        ws.row_dimensions[r + k].height = LINE_PT + 2
+        ws.row_dimensions[r + k].height = LINE_PT * lines_needed(what, widths["B"]) + 2
     ws.column_dimensions["A"].hidden = True
     for col, w in widths.items():
         ws.column_dimensions[col].width = w
@@ -459,6 +459,7 @@ def build(lang: str, path: Path) -> None:
     widths = dict(zip("BCDEFGH", (44, 20, 13, 13, 13, 13, 9)))
     for col, w in widths.items():
         ws.column_dimensions[col].width = w
+    _fit_rows(ws, {"B": widths["B"], "C": widths["C"]}, 4)
     ws.row_dimensions[note_row].height = LINE_PT * lines_needed(
         SUMMARY_NOTE[lang], sum(widths.values())) + 3
     _fit_width(ws, "landscape")
@@ -474,7 +475,7 @@ def build(lang: str, path: Path) -> None:
         d = ws.cell(4, cc)
         d.font, d.border = body, BORDER
         d.number_format = "0.000"
-        ws.column_dimensions[get_column_letter(cc)].width = 12
+        ws.column_dimensions[get_column_letter(cc)].width = 11
     ws.freeze_panes = "B4"
     ws.print_title_rows = "3:3"
     _fit_width(ws, "landscape")
