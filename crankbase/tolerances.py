@@ -31,3 +31,11 @@ SAME_ANGLE_DEG = 1e-6
 #: extreme position is confirmed against the assembly branch (the closed form goes through
 #: a square root, which loses about half the digits near a double root).
 ASSEMBLY_CHECK_RTOL = 1e-7
+
+#: Relative tolerance of `crankdyn check` on a student's table: a graphical plan or a
+#: diagram drawn by hand on millimetre paper is good to a few per cent.
+CHECK_RTOL = 0.02
+
+#: Absolute tolerance of `crankdyn check`, as a fraction of the largest magnitude in the
+#: column: a value near a zero crossing (T at α = 0) is judged against its column's scale.
+CHECK_ATOL_OF_SCALE = 0.005

@@ -1,7 +1,8 @@
 """``crankdyn engine``: the engine force table (Table 2), its workbook and plots.
 
-    crankdyn engine SPEC.toml -o DIR [--lang ru|en] [--step DEG]
+    crankdyn engine SPEC.toml -o DIR [--lang ru|en] [--step DEG] [--form seed|kolchin]
     crankdyn engine --example [NAME] -o DIR
+    crankdyn engine SPEC.toml --variants variants.csv|xlsx -o DIR
 
 Writes ``DIR/<name>_forces.csv``, ``DIR/<name>.xlsx`` and the plots
 ``DIR/<name>_<plot>.png|svg`` (``<name>``: the engine's name as a file stem), so runs of
@@ -32,6 +33,13 @@ def add_parser(subparsers):
                    help="report and plot language (default ru, the textbook symbols)")
     p.add_argument("--step", type=float, metavar="DEG",
                    help="table step in crank degrees (overrides [table] step_deg)")
+    p.add_argument("--variants", metavar="TABLE",
+                   help="course variants: a CSV or .xlsx table with a 'variant' (or "
+                        "'name') column and one column per spec key as a dotted path "
+                        "(engine.bore_mm, masses.rod_kg, …) overriding the base spec "
+                        "(SPEC.toml or --example); writes one complete report per variant "
+                        "in DIR/<variant>/ and DIR/variants_summary.csv|xlsx; bad rows are "
+                        "reported by row and key and skipped; exit status 1 if any failed")
     p.add_argument("--form", choices=("seed", "kolchin"),
                    help="Table 2 in the seed's form (forces in mm and N) or Kolchin's "
                         "(specific forces in MPa with the coefficients tg β, 1/cos β, "
@@ -67,6 +75,30 @@ def run(args) -> int:
     if out.exists() and not out.is_dir():
         raise SpecError(f"-o: {out} exists and is not a folder")
 
+    if getattr(args, "variants", None):
+        from .variants_cli import run_variants
+        return run_variants(args, spec_path, out)
+
+    import engine
+
+    spec = engine.load_spec(spec_path)
+    if args.step is not None:
+        spec = spec.with_step(args.step)
+    if getattr(args, "form", None):
+        from dataclasses import replace
+        spec = replace(spec, table_form=args.form)
+    table, summary, paths = report(spec, out, args.lang, inputs=[spec_path])
+    # terminal summary, in the report's language
+    print("\n".join(summary_lines(spec, table, summary, args.lang, *paths, out)))
+    return 0
+
+
+def report(spec, out, lang, inputs=()):
+    """Compute the force table of ``spec`` and write its complete report into ``out``
+    (CSV, workbook, plots, all named after the engine, through a staging folder).
+
+    Returns ``(table, summary, (csv_path, xlsx_path, n_plots))``.
+    """
     import engine
     from engine.plots import PLOT_NAMES, all_figures
     from engine.report import build_workbook, save_workbook
@@ -75,38 +107,31 @@ def run(args) -> int:
                                   staged_output, write_csv)
 
     # 1. validate and compute everything
-    spec = engine.load_spec(spec_path)
-    if args.step is not None:
-        spec = spec.with_step(args.step)
     table = engine.force_table(spec)
     fine = engine.force_table(spec, engine.fine_angles(spec))
     ensure_finite(table, "force table")
     ensure_finite(fine, "force table (plot grid)")
     summary = engine.summarize(fine, spec)
-    if getattr(args, "form", None):
-        from dataclasses import replace
-        spec = replace(spec, table_form=args.form)
     stem = safe_name(spec.name, "engine")
     csv_path = out / f"{stem}_forces.csv"
     xlsx_path = out / f"{stem}.xlsx"
     stems = [out / f"{stem}_{name}" for name in PLOT_NAMES]
     outputs = [csv_path, xlsx_path] + [s.with_suffix(f".{e}") for s in stems
                                        for e in ("png", "svg")]
-    check_not_input(outputs, [spec_path, spec.pressure_file])
-    wb = build_workbook(table, summary, spec, args.lang)
-    figs = all_figures(fine, spec, summary, args.lang)
+    inputs = [*inputs, spec.pressure_file]
+    check_not_input(outputs, inputs)
+    wb = build_workbook(table, summary, spec, lang)
+    figs = all_figures(fine, spec, summary, lang)
 
     # 2. write: every file into a staging folder, moved into DIR only when all are done
-    with staged_output(out, inputs=[spec_path, spec.pressure_file]) as stage:
+    with staged_output(out, inputs=inputs) as stage:
         write_csv(table, stage / csv_path.name)
         save_workbook(wb, stage / xlsx_path.name)
         for name, path in zip(PLOT_NAMES, stems):
             save_figure(figs[name], stage / path.name)
-
-    # 3. terminal summary, in the report's language
-    print("\n".join(summary_lines(spec, table, summary, args.lang, csv_path, xlsx_path,
-                                   len(stems), out)))
-    return 0
+    for fig in figs.values():
+        fig.clear()
+    return table, summary, (csv_path, xlsx_path, len(stems))
 
 
 def summary_lines(spec, table, summary, lang, csv_path, xlsx_path, n_plots, out):
