@@ -93,14 +93,56 @@ def plot_indicator(table, spec, summary=None, lang="ru"):
     ax2.set_ylabel(t["p"])
     ax2.set_title(t["pa"])
     ax2.set_ylim(bottom=0)
-    i = int(np.argmax(p))
-    ax2.annotate(f"{p[i]:.2f} ({a[i]:g}°)", (a[i], p[i]), xytext=(8, -4),
-                 textcoords="offset points", fontsize=8)
+    _diagram_points(ax1, ax2, table, spec, sw, lang)
     title = f"{t['ind']}: {spec.name}"
     if summary is not None:
         title += f";  pi = {summary['pi_MPa']:.3f} " + ("МПа" if lang == "ru" else "MPa")
+        from .diagram_points import fullness
+        phi = fullness(summary)
+        if phi is not None:
+            title += f";  {sym('fullness', lang)} = pi/p′i = {phi:.3f}"
     fig.suptitle(title)
     return fig
+
+
+def _diagram_points(ax1, ax2, table, spec, sw, lang):
+    """Mark and name the characteristic points (r, a, c′, c, c″, zд, b′, b″) on the p–V and
+    p–α diagrams; names placed clear of each other and of the markers."""
+    from .diagram_points import characteristic_points
+    from .plot_labels import Obstacles, place_label, renderer_of
+
+    a = table["alpha_deg"].to_numpy()
+    p = table["p_gas_MPa"].to_numpy()
+    pts = characteristic_points(spec, table)
+    if not pts:
+        return
+    x_of = (lambda al: (spec.Vc * 1e3 if spec.Vc is not None else 0.0)
+            + np.interp(al, a, sw))
+    r = renderer_of(ax1.figure)
+    for ax, xfun in ((ax1, x_of), (ax2, lambda al: np.asarray(al, float))):
+        ax.set_xlim(ax.get_xlim())
+        ax.set_ylim(ax.get_ylim())
+        ax.set_autoscale_on(False)
+        bb = ax.get_window_extent()
+        obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+        line = ax.get_lines()[0]
+        obs.curve = ax.transData.transform(line.get_xydata())
+        for text in ax.texts:                       # the TDC/BDC names already there
+            e = text.get_window_extent(r)
+            obs.boxes.append((e.x0, e.y0, e.x1, e.y1))
+        xy = []
+        for pt in pts:
+            al = pt.alpha_deg % spec.cycle_deg if pt.alpha_deg < spec.cycle_deg else 0.0
+            pp = pt.p / 1e6 if pt.p is not None else float(np.interp(al, a, p))
+            xy.append((float(xfun(al)), pp, pt.p is not None))
+        for x, y, off in xy:
+            ax.plot([x], [y], "o", ms=4.5, mfc="white" if off else "k", mec="k",
+                    gid="diagram-point", zorder=5)
+            obs.add_marker(ax.transData.transform((x, y)), 4.5 * ax.figure.dpi / 72 + 1)
+        for pt, (x, y, _) in zip(pts, xy):
+            place_label(ax, obs, ax.transData.transform((x, y)),
+                        pt.name_ru if lang == "ru" else pt.name_en, normal=(0.6, 1.0),
+                        fontsize=9, gid="diagram-label", color="0.1")
 
 
 #: Line styles of the curves of one plot: colour and dash pattern both differ, so the

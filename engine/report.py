@@ -75,6 +75,8 @@ def input_values(spec, summary, lang="ru"):
         "extra_angles": ", ".join(f"{a:g}" for a in spec.extra_angles_deg) or None,
         "pressure_source": src, "pi": summary["pi_MPa"], "power_i": summary["power_i_kW"],
     }
+    from .diagram_points import fullness
+    v["fullness"] = fullness(summary)
     if cyc is not None:
         kinds = {"ru": {"otto": "Отто (искровое зажигание)", "diesel": "дизель"},
                  "en": {"otto": "Otto (spark ignition)", "diesel": "Diesel"}}

@@ -116,6 +116,8 @@ INPUTS = [
     ("pi", "Среднее индикаторное давление диаграммы (с насосными ходами)",
      "Indicated mean pressure of the diagram (pumping loop included)", "pi = ∮p dV / Vh",
      "МПа", "MPa", "0.0000"),
+    ("fullness", "Коэффициент полноты индикаторной диаграммы",
+     "Fullness of the indicator diagram", "φп = pi/p′i", "", "", "0.000"),
     ("power_i", "Индикаторная мощность одного цилиндра", "Indicated power of one cylinder",
      "Ni = pi·Vh·n/(30τ)", "кВт", "kW", "0.00"),
 ]

@@ -145,3 +145,33 @@ def test_russian_plots_use_textbook_symbols():
     text = "\n".join(_all_text(f) for f in all_figures(fine, spec, summary, "ru").values())
     for symbol in ("ΔPг", "Pj", "Mкр", "Rшш", "Kr.ш", "Oш", "pг", "α"):
         assert symbol in text, symbol
+
+
+def test_indicator_characteristic_points_and_fullness():
+    """The points r, a, c′, c, c″, zд, b′, b″ sit at the spec's angles; those on the curve
+    at its pressure, c at pc of the thermal calculation; φп = pi/p′i is in the textbook's
+    range for a petrol engine (Kolchin & Demidov 2008: φп = 0.94–0.97)."""
+    from engine.diagram_points import characteristic_points, fullness
+    from engine.plots import plot_indicator
+
+    fine, spec, summary = _fine(EXAMPLES[0])
+    cyc = spec.cycle
+    pts = {p.name_ru: p for p in characteristic_points(spec, fine)}
+    assert set(pts) == {"r", "a", "c′", "c", "c″", "zд", "b′", "b″"}
+    assert pts["c′"].alpha_deg == 360 - cyc.advance_deg
+    assert pts["zд"].alpha_deg == 360 + cyc.peak_after_tdc_deg
+    assert pts["b′"].alpha_deg == 540 - cyc.exhaust_opening_deg
+    assert pts["c"].p == pytest.approx(cyc.pa * cyc.compression_ratio ** cyc.n1)
+    phi = fullness(summary)
+    assert phi == pytest.approx(summary["pi_MPa"] / summary["pi_theory_MPa"])
+    assert 0.94 <= phi <= 0.97
+    fig = plot_indicator(fine, spec, summary, "ru")
+    ax2 = fig.axes[1]
+    marks = [ln for ln in ax2.get_lines() if ln.get_gid() == "diagram-point"]
+    assert len(marks) == 8
+    a, p = fine["alpha_deg"].to_numpy(), fine["p_gas_MPa"].to_numpy()
+    zd = next(m for m in marks if m.get_xdata()[0] == pts["zд"].alpha_deg)
+    assert zd.get_ydata()[0] == pytest.approx(np.interp(pts["zд"].alpha_deg, a, p))
+    names = {t.get_text() for t in ax2.texts if t.get_gid() == "diagram-label"}
+    assert names == set(pts)
+    assert "φп = pi/p′i = " in fig._suptitle.get_text()
