@@ -281,9 +281,80 @@ def build_workbook(table, summary, spec, lang="ru"):
             ch.series.append(s)
         ch.width, ch.height = 17, 8.5
         ws_ch.add_chart(ch, f"A{3 + rows_per_chart * k}")
-        if k % 2 == 1 and k + 1 < len(charts):      # two charts per A4 page, none split
+        if k % 2 == 1:                              # two charts per A4 page, none split
             ws_ch.row_breaks.append(Break(id=2 + rows_per_chart * (k + 1)))
+    _polar_chart(ws_ch, ws_data, col, n, spec, lang, 3 + rows_per_chart * len(charts))
     return wb
+
+
+def _polar_chart(ws_ch, ws_data, col, n, spec, lang, row):
+    """The polar diagram of the crank-pin load as a native, editable scatter chart: the
+    locus of S = (T, K) from the Data sheet, +K downwards (reversed axis), the poles O and
+    Oш = (0, −Kr.ш) as markers from a small table beside the chart; both axes get the same
+    span on a square chart, so the diagram keeps its shape."""
+    from openpyxl.chart import Reference, ScatterChart, Series
+    from openpyxl.chart.marker import Marker
+    from openpyxl.chart.shapes import GraphicalProperties
+
+    ru = lang == "ru"
+    T = np.asarray([ws_data.cell(_DATA_FIRST_ROW + i, col["T_N"]).value for i in range(n)])
+    K = np.asarray([ws_data.cell(_DATA_FIRST_ROW + i, col["K_N"]).value for i in range(n)])
+    kr = spec.Kr
+    # the poles, in a small table right of the chart (columns M:O)
+    _put(ws_ch.cell(row, 13), "T, Н" if ru else "T, N")
+    _put(ws_ch.cell(row, 14), "K, Н" if ru else "K, N")
+    for i, (name, t, k) in enumerate((("O", 0.0, 0.0), (sym("pole_R", lang), 0.0, -kr)),
+                                     start=1):
+        _put(ws_ch.cell(row + i, 13), t)
+        _put(ws_ch.cell(row + i, 14), float(k))
+        _put(ws_ch.cell(row + i, 15), name)
+        ws_ch.cell(row + i, 14).number_format = "0"
+    ch = ScatterChart()
+    ch.title = (f"Полярная диаграмма нагрузки на шатунную шейку ({sym('pole_R', lang)} – "
+                f"полюс {sym('R', lang)})" if ru else
+                f"Polar diagram of the crank-pin load ({sym('pole_R', lang)}: pole of "
+                f"{sym('R', lang)})")
+    ch.x_axis.title = "T, Н" if ru else "T, N"
+    ch.y_axis.title = "K, Н (вниз)" if ru else "K, N (downwards)"
+    ch.y_axis.scaling.orientation = "maxMin"            # +K downwards, as in the textbook
+    ch.width, ch.height = 17, 17
+    # equal scales: the same span on both axes of a square chart, centred on the data
+    xs_all, ys_all = np.r_[T, 0.0], np.r_[K, 0.0, -kr]
+    span = 1.1 * max(np.ptp(xs_all), np.ptp(ys_all))
+    step = 10 ** np.floor(np.log10(span / 4))
+    for ax, vals in ((ch.x_axis, xs_all), (ch.y_axis, ys_all)):
+        mid = 0.5 * (vals.min() + vals.max())
+        ax.scaling.min = float(np.floor((mid - span / 2) / step) * step)
+        ax.scaling.max = float(np.floor((mid - span / 2) / step) * step
+                               + np.ceil(span / step) * step)
+        ax.majorUnit = float(step * (2 if span / step > 12 else 1))
+        ax.number_format = "0"
+        ax.delete = False
+    ch.x_axis.tickLblPos = "high"        # the y axis is reversed: "high" is the bottom
+    ch.y_axis.tickLblPos = "low"
+    ch.legend.position = "b"
+    xs = Reference(ws_data, min_col=col["T_N"], min_row=_DATA_FIRST_ROW,
+                   max_row=_DATA_FIRST_ROW + n - 1)
+    ys = Reference(ws_data, min_col=col["K_N"], min_row=_DATA_FIRST_ROW,
+                   max_row=_DATA_FIRST_ROW + n - 1)
+    s = Series(ys, xs, title=f"{sym('S', lang)} (T, K)")
+    s.marker.symbol = "none"
+    s.smooth = False
+    colour, dash, width = CHART_STYLES[0]
+    s.graphicalProperties.line.solidFill = colour
+    s.graphicalProperties.line.prstDash = dash
+    s.graphicalProperties.line.width = width
+    ch.series.append(s)
+    px = Reference(ws_ch, min_col=13, min_row=row + 1, max_row=row + 2)
+    py = Reference(ws_ch, min_col=14, min_row=row + 1, max_row=row + 2)
+    poles = Series(py, px, title=f"O, {sym('pole_R', lang)}")
+    colour, dash, _ = CHART_STYLES[2]
+    poles.marker = Marker(symbol="square", size=8)
+    poles.marker.graphicalProperties = GraphicalProperties(solidFill=colour)
+    poles.marker.graphicalProperties.line.solidFill = colour
+    poles.graphicalProperties.line.noFill = True          # markers only
+    ch.series.append(poles)
+    ws_ch.add_chart(ch, f"A{row}")
 
 
 def save_workbook(wb, path):

@@ -93,7 +93,7 @@ def test_workbook_equals_csv(run):
                                            values_only=True)), dtype=float)
     np.testing.assert_array_equal(data, df.to_numpy())
     # native charts
-    assert len(ws_ch._charts) == 4
+    assert len(ws_ch._charts) == 5          # four over α and the polar diagram
 
 
 def test_table2_layout_like_the_textbook(run):

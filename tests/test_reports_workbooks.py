@@ -60,6 +60,9 @@ def _chart_series(path):
                 ln = ser.find("c:spPr/a:ln", ns)
                 clr = ln.find("a:solidFill/a:srgbClr", ns) if ln is not None else None
                 dash = ln.find("a:prstDash", ns) if ln is not None else None
+                if ln is not None and ln.find("a:noFill", ns) is not None:
+                    assert ser.find("c:marker/c:symbol", ns).get("val") != "none"
+                    continue                   # markers only (the poles): no line
                 series.append((None if clr is None else clr.get("val"),
                                None if dash is None else dash.get("val")))
             charts.append((name, series))
@@ -76,7 +79,7 @@ def test_every_chart_series_has_its_own_colour_and_dash(runs):
         if key[0] != "engine":
             continue
         charts = _chart_series(path)
-        assert len(charts) == 4
+        assert len(charts) == 5
         for name, series in charts:
             colours = [c for c, _ in series]
             dashes = [d for _, d in series]
@@ -275,3 +278,29 @@ def test_workbooks_render_on_a4_pages(runs, tmp_path):
         sizes = {tuple(sorted((round(float(w)), round(float(h))))) for w, h in pages}
         assert sizes == {(595, 842)}, (key, sizes)                  # A4, either way
         assert len(pages) >= len(load_workbook(path).worksheets), key
+
+
+def test_native_polar_chart():
+    """The polar diagram as an editable Excel scatter chart: K downwards (reversed axis),
+    equal spans on both axes of a square chart (the shape is kept), the locus of (T, K)
+    from the Data sheet and the poles O and Oш = (0, −Kr.ш) as markers."""
+    from engine.report import build_workbook
+
+    spec = engine.load_spec(example_path("petrol_vaz2106.toml"))
+    table = engine.force_table(spec)
+    summary = engine.summarize(engine.force_table(spec, engine.fine_angles(spec)), spec)
+    wb = build_workbook(table, summary, spec, "ru")
+    ws = wb.worksheets[4]
+    polar = ws._charts[-1]
+    assert polar.y_axis.scaling.orientation == "maxMin"
+    assert polar.width == polar.height
+    xs = polar.x_axis.scaling.max - polar.x_axis.scaling.min
+    ys = polar.y_axis.scaling.max - polar.y_axis.scaling.min
+    assert xs == pytest.approx(ys)
+    curve, poles = polar.series
+    assert "$J$" in curve.xVal.numRef.f and "$I$" in curve.yVal.numRef.f   # T_N, K_N
+    assert [c.value for c in ws["N"] if isinstance(c.value, float)] == [0.0, -spec.Kr]
+    assert polar.x_axis.scaling.min <= table["T_N"].min()
+    assert polar.x_axis.scaling.max >= table["T_N"].max()
+    assert polar.y_axis.scaling.min <= min(table["K_N"].min(), -spec.Kr)
+    assert polar.y_axis.scaling.max >= max(table["K_N"].max(), -spec.Kr)
