@@ -1,6 +1,7 @@
 """``crankdyn linkage``: kinematics and kinetostatics of a crank-rocker or crank-slider.
 
-Writes ``kinematics.csv``, ``forces.csv``, the workbook ``<name>.xlsx`` and the plots
+Writes ``<name>_kinematics.csv``, ``<name>_forces.csv``, the workbook ``<name>.xlsx`` and
+the plots ``<name>_<plot>.png`` (``<name>``: the mechanism's name as a file stem)
 (plan of positions; over a full turn at 1°: ω and ε of links 3 and 4, the driving moment
 Mур, the transmission angle).  All outputs are produced in a staging folder and moved
 into place only when every one of them is complete.
@@ -10,6 +11,9 @@ from __future__ import annotations
 import sys
 
 EXAMPLE = "ratchet.toml"
+
+#: File stems of every plot ``crankdyn linkage`` may draw (linkage.plots.all_figures).
+PLOTS = ("plan", "velocities", "accelerations", "driving_moment", "transmission_angle")
 
 
 def add_parser(sub):
@@ -56,11 +60,23 @@ def run(args) -> int:
     if full is not None:
         from linkage.plots import all_figures
         figures = all_figures(result, full)
+    from pathlib import Path
+
+    name = safe_name(spec.name, "linkage")
     with staged_output(args.output, inputs=[spec_path]) as stage:
         write_csvs(result, stage)
-        write_workbook(result, stage / f"{safe_name(spec.name, 'linkage')}.xlsx")
+        for csv in list(stage.iterdir()):        # every output named after the mechanism
+            csv.rename(stage / f"{name}_{csv.name}")
+        write_workbook(result, stage / f"{name}.xlsx")
         for stem, fig in figures.items():
-            save_figure(fig, stage / stem, formats=("png",), dpi=120)
+            save_figure(fig, stage / f"{name}_{stem}", formats=("png",), dpi=120)
+    # plots of this mechanism from an earlier run that this run did not draw are stale
+    stale = [Path(args.output) / f"{name}_{p}.png" for p in PLOTS if p not in figures]
+    for path in stale:
+        if path.exists():
+            path.unlink()
+            print(f"crankdyn linkage: removed {path} (an earlier run's plot, not drawn now)",
+                  file=sys.stderr)
     for w in caught:
         print(f"crankdyn linkage: warning: {w.message}", file=sys.stderr)
     statics = "; statics, ω = 0" if spec.omega == 0 else ""

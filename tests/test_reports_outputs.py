@@ -1,0 +1,35 @@
+"""Outputs are named after the engine or mechanism (issue 14): two runs into one folder
+never mix, and a plot an earlier run drew but this one did not is not left behind."""
+from crankdyn.cli import main
+
+
+def test_two_engines_into_one_folder_do_not_mix(tmp_path):
+    out = tmp_path / "o"
+    assert main(["engine", "--example", "petrol", "-o", str(out)]) == 0
+    first = {p.name: p.read_bytes() for p in out.iterdir()}
+    assert main(["engine", "--example", "diesel", "-o", str(out)]) == 0
+    names = {p.name for p in out.iterdir()}
+    petrol = {n for n in names if n.startswith("petrol-vaz2106")}
+    diesel = {n for n in names if n.startswith("diesel-d240")}
+    assert petrol == set(first) and len(diesel) == len(petrol)
+    assert petrol | diesel == names
+    for n in petrol:                                   # the petrol report is untouched
+        assert (out / n).read_bytes() == first[n]
+
+
+def test_two_mechanisms_and_stale_plots(tmp_path, capsys):
+    out = tmp_path / "o"
+    assert main(["linkage", "--example", "ratchet", "-o", str(out)]) == 0
+    assert main(["linkage", "--example", "press", "-o", str(out)]) == 0
+    names = {p.name for p in out.iterdir()}
+    assert {"ratchet-drive_kinematics.csv", "crank-press_kinematics.csv",
+            "ratchet-drive.xlsx", "crank-press.xlsx", "ratchet-drive_plan.png",
+            "crank-press_plan.png"} <= names
+    assert not [n for n in names if not n.startswith(("ratchet-drive", "crank-press"))]
+    # the same mechanism again without plots: its old plots are removed, and said so
+    capsys.readouterr()
+    assert main(["linkage", "--example", "ratchet", "-o", str(out), "--no-plots"]) == 0
+    assert "removed" in capsys.readouterr().err
+    names = {p.name for p in out.iterdir()}
+    assert not [n for n in names if n.startswith("ratchet-drive_") and n.endswith(".png")]
+    assert "crank-press_plan.png" in names            # another mechanism's plots stay
