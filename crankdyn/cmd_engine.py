@@ -4,8 +4,9 @@
     crankdyn engine --example [NAME] -o DIR
     crankdyn engine SPEC.toml --variants variants.csv|xlsx -o DIR
 
-Writes ``DIR/<name>_forces.csv``, ``DIR/<name>.xlsx`` and the plots
-``DIR/<name>_<plot>.png|svg`` (``<name>``: the engine's name as a file stem), so runs of
+Writes ``DIR/<name>_forces.csv``, ``DIR/<name>.xlsx``, the plots
+``DIR/<name>_<plot>.png|svg`` and the diagrams at the drawing scale
+``DIR/<name>_drawing_*.pdf`` (``<name>``: the engine's name as a file stem), so runs of
 two engines into one folder never mix, after everything has been validated and computed,
 all at once through a staging folder; bad input writes nothing.  Heavy libraries
 are imported inside :func:`run` only, so ``crankdyn --help`` stays fast.
@@ -100,6 +101,7 @@ def report(spec, out, lang, inputs=()):
     Returns ``(table, summary, (csv_path, xlsx_path, n_plots))``.
     """
     import engine
+    from engine.drawing import DRAWING_NAMES, drawing_figures
     from engine.plots import PLOT_NAMES, all_figures
     from engine.report import build_workbook, save_workbook
 
@@ -116,12 +118,14 @@ def report(spec, out, lang, inputs=()):
     csv_path = out / f"{stem}_forces.csv"
     xlsx_path = out / f"{stem}.xlsx"
     stems = [out / f"{stem}_{name}" for name in PLOT_NAMES]
-    outputs = [csv_path, xlsx_path] + [s.with_suffix(f".{e}") for s in stems
-                                       for e in ("png", "svg")]
+    drawings = [out / f"{stem}_{name}.pdf" for name in DRAWING_NAMES]
+    outputs = [csv_path, xlsx_path, *drawings] + [s.with_suffix(f".{e}") for s in stems
+                                                  for e in ("png", "svg")]
     inputs = [*inputs, spec.pressure_file]
     check_not_input(outputs, inputs)
     wb = build_workbook(table, summary, spec, lang)
     figs = all_figures(fine, spec, summary, lang)
+    figs.update(drawing_figures(fine, spec, summary, lang))
 
     # 2. write: every file into a staging folder, moved into DIR only when all are done
     with staged_output(out, inputs=inputs) as stage:
@@ -129,6 +133,8 @@ def report(spec, out, lang, inputs=()):
         save_workbook(wb, stage / xlsx_path.name)
         for name, path in zip(PLOT_NAMES, stems):
             save_figure(figs[name], stage / path.name)
+        for name, path in zip(DRAWING_NAMES, drawings):       # 1:1, vector only
+            save_figure(figs[name], stage / path.stem, formats=("pdf",))
     for fig in figs.values():
         fig.clear()
     return table, summary, (csv_path, xlsx_path, len(stems))

@@ -15,6 +15,7 @@ from openpyxl import load_workbook
 import engine
 from crankdyn.cli import main
 from crankbase.resources import example_path
+from engine.drawing import DRAWING_NAMES
 from engine.plots import PLOT_NAMES
 from engine.report import TABLE2_FORCES
 
@@ -46,6 +47,7 @@ def test_outputs_exist(run):
     files = {p.name for p in out.iterdir()}
     expected = {f"{_stem(name)}_forces.csv", EXAMPLES[name][1]}
     expected |= {f"{_stem(name)}_{s}.{e}" for s in PLOT_NAMES for e in ("png", "svg")}
+    expected |= {f"{_stem(name)}_{s}.pdf" for s in DRAWING_NAMES}
     assert files == expected          # nothing else (no temporary files left)
 
 

@@ -175,3 +175,30 @@ def test_indicator_characteristic_points_and_fullness():
     names = {t.get_text() for t in ax2.texts if t.get_gid() == "diagram-label"}
     assert names == set(pts)
     assert "φп = pi/p′i = " in fig._suptitle.get_text()
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_drawing_scale_diagrams_are_one_to_one(name):
+    """The drawing-scale diagrams: one data unit is one millimetre of paper (x and y), the
+    curves are the forces divided by μP (and α by μα), and the scales are stated."""
+    from engine.drawing import default_mu_alpha, drawing_figures
+
+    fine, spec, summary = _fine(name)
+    figs = drawing_figures(fine, spec, summary, "en")
+    for stem, fig in figs.items():
+        ax = fig.axes[0]
+        w_in, h_in = fig.get_size_inches()
+        pos = ax.get_position()
+        x0, x1 = sorted(ax.get_xlim())
+        y0, y1 = sorted(ax.get_ylim())
+        assert pos.width * w_in * 25.4 == pytest.approx(x1 - x0, rel=1e-9), stem
+        assert pos.height * h_in * 25.4 == pytest.approx(y1 - y0, rel=1e-9), stem
+        assert f"μP = {spec.force_scale:g} N/mm" in ax.get_title(loc="left")
+        assert not CYRILLIC.search(_all_text(fig))
+    ax = figs["drawing_forces_P"].axes[0]
+    p_line = [ln for ln in ax.get_lines() if ln.get_label() == "P"][0]
+    np.testing.assert_allclose(p_line.get_ydata(), fine["P_N"] / spec.force_scale)
+    np.testing.assert_allclose(p_line.get_xdata(), fine["alpha_deg"] / default_mu_alpha(spec))
+    polar = figs["drawing_polar"].axes[0]
+    np.testing.assert_allclose(polar.get_lines()[0].get_xdata(),
+                               fine["T_N"] / spec.force_scale)
