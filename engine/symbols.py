@@ -7,7 +7,7 @@ Inputs sheet of the English workbook and in the README.  Plain data, no imports.
 """
 from __future__ import annotations
 
-__all__ = ["SYMBOLS", "sym", "correspondence", "to_english"]
+__all__ = ["SYMBOLS", "MEANING_RU", "sym", "correspondence", "to_english"]
 
 #: key → (Russian symbol, English symbol, English meaning).
 SYMBOLS = {
@@ -45,15 +45,52 @@ SYMBOLS = {
 }
 
 
+#: key → the meaning in Russian (for the Russian workbook's symbol table).
+MEANING_RU = {
+    "alpha": "угол поворота кривошипа от ВМТ",
+    "beta": "угол отклонения оси шатуна от оси цилиндра",
+    "p_gas": "абсолютное давление газов в цилиндре",
+    "dPg": "сила давления газов на поршень, (pг − p0)·Fп",
+    "Pj": "сила инерции возвратно-поступательно движущихся масс",
+    "P": "суммарная сила, действующая на поршневой палец",
+    "S": "сила, действующая вдоль шатуна",
+    "N": "боковая сила поршня на стенку цилиндра",
+    "K": "радиальная сила на шатунной шейке",
+    "T": "тангенциальная сила на шатунной шейке",
+    "M": "крутящий момент одного цилиндра",
+    "Kr": "центробежная сила вращающейся части шатуна",
+    "R": "результирующая сила на шатунную шейку",
+    "psi": "направление силы Rшш в системе координат кривошипа",
+    "L": "длина шатуна",
+    "area": "площадь поршня",
+    "mj": "масса возвратно-поступательно движущихся частей, mп + mш.п",
+    "m_piston": "масса поршневой группы",
+    "m_rod": "масса шатуна",
+    "m_rod_rec": "часть массы шатуна, отнесённая к поступательно движущимся",
+    "m_rod_rot": "часть массы шатуна, отнесённая к вращающимся",
+    "m_crank": "неуравновешенная вращающаяся масса кривошипа",
+    "v_mean": "средняя скорость поршня",
+    "pole_R": "полюс диаграммы нагрузки на шатунную шейку",
+    "p_peak_real": "действительное максимальное давление скруглённой диаграммы",
+    "M_mean": "средний крутящий момент одного цилиндра",
+    "R_mean": "средняя сила на шатунную шейку",
+    "R_max": "максимальная сила на шатунную шейку",
+    "tdc": "верхняя мёртвая точка",
+    "bdc": "нижняя мёртвая точка",
+    "fullness": "коэффициент полноты индикаторной диаграммы, pi/p′i",
+}
+
+
 def sym(key: str, lang: str) -> str:
     """The symbol ``key`` in ``lang`` ("ru" or "en")."""
     ru, en, _ = SYMBOLS[key]
     return ru if lang == "ru" else en
 
 
-def correspondence():
-    """Rows (English symbol, Russian symbol, meaning) where the two differ."""
-    return [(en, ru, what) for ru, en, what in SYMBOLS.values() if ru != en]
+def correspondence(lang="en"):
+    """Rows (English symbol, Russian symbol, meaning in ``lang``) where the two differ."""
+    return [(en, ru, what if lang == "en" else MEANING_RU[key])
+            for key, (ru, en, what) in SYMBOLS.items() if ru != en]
 
 
 def to_english(text: str) -> str:

@@ -182,12 +182,12 @@ def write_workbook(result, path):
     ws["A1"] = f"crankdyn linkage — {spec.name} ({spec.kind})"
     ws["A1"].font = Font(bold=True, size=12)
     ws.append([])
-    ws.append(["spec key", "value"])
+    ws.append(["spec key", "value", "unit"])
     for c in ws[3]:
         c.font = bold
         c.fill = head_fill
     for key, value in _spec_rows(dict(spec.raw)):
-        ws.append([key, value])
+        ws.append([key, value, _spec_unit(key)])
     ws.append([])
     ws.append(["cycle geometry", "value", "unit"])
     for c in ws[ws.max_row]:
@@ -301,6 +301,24 @@ def _extremes_sheet(ws, df, cols, bold, grey, head_fill, box, center):
     ws.freeze_panes = "D2"
     ws.print_title_rows = "1:1"
     _page_setup(ws, landscape=False)
+
+
+#: Units of the spec keys, by the key's suffix (the spec's naming rule) or its name.
+_UNIT_SUFFIXES = (("_kg_m2", "kg·m²"), ("_rad_s2", "rad/s²"), ("_rad_s", "rad/s"),
+                  ("_m_s2", "m/s²"), ("_deg", "°"), ("_kg", "kg"), ("_Nm", "N·m"),
+                  ("_N", "N"), ("_m", "m"))
+_LENGTH_KEYS = {"crank", "coupler", "rocker", "ground", "offset", "cg", "at", "rod"}
+
+
+def _spec_unit(key):
+    """The unit of a spec key as shown on the inputs sheet ('' for a word or a count)."""
+    last = re.sub(r"\[\d+\]$", "", key.split(".")[-1])
+    for suffix, unit in _UNIT_SUFFIXES:
+        if last.endswith(suffix):
+            return unit
+    if last in _LENGTH_KEYS or key.split(".")[-2:-1] == ["points"]:
+        return "m"
+    return ""
 
 
 def _page_setup(ws, landscape, pages_wide=1):

@@ -21,7 +21,7 @@ from openpyxl.utils import get_column_letter
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
-from engine.symbols import SYMBOLS, to_english  # noqa: E402  (the one symbol table)
+from engine.symbols import correspondence, to_english  # noqa: E402  (one symbol table)
 from engine.table2 import table2_columns  # noqa: E402
 
 #: Sheet names (the report looks sheets up by position, so names may differ per language).
@@ -335,8 +335,7 @@ def build(lang: str, path: Path) -> None:
         c = ws.cell(r, j, h)
         c.font, c.fill, c.border, c.alignment = bold, HEAD_FILL, BORDER, CENTER
     ws.row_dimensions[r].height = LINE_PT + 2
-    for k, (ru_sym, en_sym, what) in enumerate(
-            (v for v in SYMBOLS.values() if v[0] != v[1]), start=1):
+    for k, (en_sym, ru_sym, what) in enumerate(correspondence(lang), start=1):
         ws.cell(r + k, 1, "symbols")
         vals = ((what, ru_sym, en_sym, "") if lang == "ru" else (what, en_sym, ru_sym, ""))
         for j, v in enumerate(vals, start=2):

@@ -33,3 +33,15 @@ def test_two_mechanisms_and_stale_plots(tmp_path, capsys):
     names = {p.name for p in out.iterdir()}
     assert not [n for n in names if n.startswith("ratchet-drive_") and n.endswith(".png")]
     assert "crank-press_plan.png" in names            # another mechanism's plots stay
+
+
+def test_linkage_inputs_carry_units(tmp_path):
+    from openpyxl import load_workbook
+
+    assert main(["linkage", "--example", "ratchet", "-o", str(tmp_path), "--no-plots"]) == 0
+    ws = load_workbook(tmp_path / "ratchet-drive.xlsx")["inputs"]
+    units = {r[0]: r[2] for r in ws.iter_rows(min_row=4, max_col=3, values_only=True)
+             if r[0] and "." in str(r[0])}
+    assert units["mechanism.crank"] == "m" and units["mechanism.omega_rad_s"] == "rad/s"
+    assert units["links.coupler.inertia_kg_m2"] == "kg·m²"
+    assert units["links.crank.mass_kg"] == "kg" and units["mechanism.kind"] in ("", None)
