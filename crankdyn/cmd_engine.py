@@ -5,7 +5,7 @@
     crankdyn engine SPEC.toml --variants variants.csv|xlsx -o DIR
 
 Writes ``DIR/<name>_forces.csv``, ``DIR/<name>.xlsx``, the plots
-``DIR/<name>_<plot>.png|svg`` and the diagrams at the drawing scale
+``DIR/<name>_<plot>.png|svg`` and, with ``--drawing``, the diagrams at the drawing scale
 ``DIR/<name>_drawing_*.pdf`` (``<name>``: the engine's name as a file stem), so runs of
 two engines into one folder never mix, after everything has been validated and computed,
 all at once through a staging folder; bad input writes nothing.  Heavy libraries
@@ -34,6 +34,10 @@ def add_parser(subparsers):
                    help="report and plot language (default ru, the textbook symbols)")
     p.add_argument("--step", type=float, metavar="DEG",
                    help="table step in crank degrees (overrides [table] step_deg)")
+    p.add_argument("--drawing", action="store_true",
+                   help="also write the diagrams at the drawing scale (forces over α, N/K/T, "
+                        "polar), 1:1 PDF on millimetre paper: axes in mm of the drawing, "
+                        "μP from the spec, μα = cycle/240 mm")
     p.add_argument("--variants", metavar="TABLE",
                    help="course variants: a CSV or .xlsx table with a 'variant' (or "
                         "'name') column and one column per spec key as a dotted path "
@@ -88,15 +92,17 @@ def run(args) -> int:
     if getattr(args, "form", None):
         from dataclasses import replace
         spec = replace(spec, table_form=args.form)
-    table, summary, paths = report(spec, out, args.lang, inputs=[spec_path])
+    table, summary, paths = report(spec, out, args.lang, inputs=[spec_path],
+                                   drawing=args.drawing)
     # terminal summary, in the report's language
     print("\n".join(summary_lines(spec, table, summary, args.lang, *paths, out)))
     return 0
 
 
-def report(spec, out, lang, inputs=()):
+def report(spec, out, lang, inputs=(), drawing=False):
     """Compute the force table of ``spec`` and write its complete report into ``out``
-    (CSV, workbook, plots, all named after the engine, through a staging folder).
+    (CSV, workbook, plots and, with ``drawing``, the 1:1 drawing-scale PDFs; all named
+    after the engine, through a staging folder).
 
     Returns ``(table, summary, (csv_path, xlsx_path, n_plots))``.
     """
@@ -118,14 +124,15 @@ def report(spec, out, lang, inputs=()):
     csv_path = out / f"{stem}_forces.csv"
     xlsx_path = out / f"{stem}.xlsx"
     stems = [out / f"{stem}_{name}" for name in PLOT_NAMES]
-    drawings = [out / f"{stem}_{name}.pdf" for name in DRAWING_NAMES]
+    drawings = [out / f"{stem}_{name}.pdf" for name in DRAWING_NAMES] if drawing else []
     outputs = [csv_path, xlsx_path, *drawings] + [s.with_suffix(f".{e}") for s in stems
                                                   for e in ("png", "svg")]
     inputs = [*inputs, spec.pressure_file]
     check_not_input(outputs, inputs)
     wb = build_workbook(table, summary, spec, lang)
     figs = all_figures(fine, spec, summary, lang)
-    figs.update(drawing_figures(fine, spec, summary, lang))
+    if drawing:
+        figs.update(drawing_figures(fine, spec, summary, lang))
 
     # 2. write: every file into a staging folder, moved into DIR only when all are done
     with staged_output(out, inputs=inputs) as stage:

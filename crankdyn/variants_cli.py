@@ -54,7 +54,7 @@ def run_variants(args, spec_path, out) -> int:
                 from dataclasses import replace
                 spec = replace(spec, table_form=args.form)
             _, summary, _ = report(spec, out / folder, args.lang,
-                                   inputs=[spec_path, variants_path])
+                                   inputs=[spec_path, variants_path], drawing=args.drawing)
         except CrankdynError as exc:
             lines = exc.lines() or [str(exc)]
             lines = [ln if ln.startswith("row ") else f"row {v.row} ({v.variant}): {ln}"

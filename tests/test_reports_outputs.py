@@ -1,5 +1,7 @@
 """Outputs are named after the engine or mechanism (issue 14): two runs into one folder
 never mix, and a plot an earlier run drew but this one did not is not left behind."""
+import pytest
+
 from crankdyn.cli import main
 
 
@@ -45,3 +47,16 @@ def test_linkage_inputs_carry_units(tmp_path):
     assert units["mechanism.crank"] == "m" and units["mechanism.omega_rad_s"] == "rad/s"
     assert units["links.coupler.inertia_kg_m2"] == "kg·m²"
     assert units["links.crank.mass_kg"] == "kg" and units["mechanism.kind"] in ("", None)
+
+
+def test_drawing_option_writes_the_one_to_one_pdfs(tmp_path):
+    import re
+
+    assert main(["engine", "--example", "petrol", "-o", str(tmp_path), "--drawing"]) == 0
+    pdfs = sorted(p.name for p in tmp_path.glob("*.pdf"))
+    assert pdfs == ["petrol-vaz2106_drawing_forces_NKT.pdf", "petrol-vaz2106_drawing_forces_P.pdf",
+                    "petrol-vaz2106_drawing_polar.pdf"]
+    head = (tmp_path / pdfs[1]).read_bytes()
+    box = re.search(rb"/MediaBox\s*\[\s*0\s+0\s+([\d.]+)\s+([\d.]+)", head)
+    # 240 mm of α axis + 10 mm + margins (30 mm) = 280 mm wide, at 72 pt per inch
+    assert float(box.group(1)) == pytest.approx(280 / 25.4 * 72, abs=0.01)
