@@ -21,7 +21,7 @@ def add_parser(sub):
                     "names, or either with --map), compute the same rows from the spec and "
                     "mark every value outside the tolerance |student - computed| <= atol + "
                     "rtol*|computed| (default rtol 0.02: a hand-drawn plan is good to a few "
-                    "per cent; default atol 0.5 %% of the column's largest magnitude).")
+                    "per cent; default atol 0.5 % of the column's largest magnitude).")
     p.add_argument("spec", metavar="SPEC.toml", help="engine or linkage spec (TOML)")
     p.add_argument("student", metavar="STUDENT.xlsx|csv", help="the student's table")
     p.add_argument("-o", "--output", required=True, metavar="DIR", help="output folder")
