@@ -45,6 +45,8 @@ def add_parser(subparsers):
                         "(SPEC.toml or --example); writes one complete report per variant "
                         "in DIR/<variant>/ and DIR/variants_summary.csv|xlsx; bad rows are "
                         "reported by row and key and skipped; exit status 1 if any failed")
+    p.add_argument("--jobs", type=int, default=1, metavar="N",
+                   help="with --variants: write N reports at a time (processes; default 1)")
     p.add_argument("--form", choices=("seed", "kolchin"),
                    help="Table 2 in the seed's form (forces in mm and N) or Kolchin's "
                         "(specific forces in MPa with the coefficients tg β, 1/cos β, "
@@ -80,6 +82,8 @@ def run(args) -> int:
     if out.exists() and not out.is_dir():
         raise SpecError(f"-o: {out} exists and is not a folder")
 
+    if args.jobs < 1:
+        raise SpecError(f"--jobs: got {args.jobs}; must be a whole number >= 1")
     if getattr(args, "variants", None):
         from .variants_cli import run_variants
         return run_variants(args, spec_path, out)

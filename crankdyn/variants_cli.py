@@ -18,12 +18,10 @@ def run_variants(args, spec_path, out) -> int:
 
     from tqdm import tqdm
 
-    from crankbase.errors import CrankdynError, SpecError
+    from crankbase.errors import SpecError
     from crankbase.output import check_not_input, safe_name
     from crankbase.validation import read_toml
-    from engine.variants import load_variant, read_variants, summary_record
-
-    from .cmd_engine import report
+    from engine.variants import read_variants
 
     variants_path = Path(args.variants)
     base, base_dir = read_toml(spec_path)
@@ -43,32 +41,39 @@ def run_variants(args, spec_path, out) -> int:
 
     ru = args.lang == "ru"
     records, failures = [], []
-    bar = tqdm(list(folders.items()), desc="варианты" if ru else "variants",
-               unit="var", file=sys.stderr, disable=None, leave=False)
-    for folder, v in bar:
-        try:
-            spec = load_variant(base, v, base_dir)
-            if args.step is not None:
-                spec = spec.with_step(args.step)
-            if getattr(args, "form", None):
-                from dataclasses import replace
-                spec = replace(spec, table_form=args.form)
-            _, summary, _ = report(spec, out / folder, args.lang,
-                                   inputs=[spec_path, variants_path], drawing=args.drawing)
-        except CrankdynError as exc:
-            lines = exc.lines() or [str(exc)]
-            lines = [ln if ln.startswith("row ") else f"row {v.row} ({v.variant}): {ln}"
-                     for ln in lines]
-            failures.append((v, lines))
-            for ln in lines:
-                tqdm.write(f"crankdyn engine: error: {ln}", file=sys.stderr)
-            stale = out / folder
-            if stale.exists():
-                tqdm.write(f"crankdyn engine: warning: {stale} holds an earlier report of "
-                           f"variant {v.variant!r}; it was not replaced", file=sys.stderr)
-            continue
-        records.append(summary_record(v.variant, spec, summary))
+    tasks = [(base, v, base_dir, spec_path, variants_path, out / folder, args.lang, args.step,
+              getattr(args, "form", None), args.drawing) for folder, v in folders.items()]
+    jobs = max(1, int(getattr(args, "jobs", 1) or 1))
+    bar = tqdm(total=len(tasks), desc="варианты" if ru else "variants", unit="var",
+               file=sys.stderr, disable=None, leave=False)
+    if jobs == 1:
+        results = (_one_variant(t) for t in tasks)
+    else:
+        import multiprocessing
+        from concurrent.futures import ProcessPoolExecutor, as_completed
+
+        pool = ProcessPoolExecutor(max_workers=jobs,
+                                   mp_context=multiprocessing.get_context("spawn"))
+        futures = [pool.submit(_one_variant, t) for t in tasks]
+        results = (f.result() for f in as_completed(futures))
+    done = []
+    for v, record, lines in results:
+        bar.update(1)
+        done.append((v, record, lines))
+        for ln in lines or ():
+            tqdm.write(f"crankdyn engine: error: {ln}", file=sys.stderr)
+        if lines and (out / safe_name(v.variant, "variant")).exists():
+            tqdm.write(f"crankdyn engine: warning: {out / safe_name(v.variant, 'variant')} "
+                       f"holds an earlier report of variant {v.variant!r}; it was not "
+                       "replaced", file=sys.stderr)
+    if jobs > 1:
+        pool.shutdown()
     bar.close()
+    for v, record, lines in sorted(done, key=lambda d: d[0].row):    # the table's order
+        if lines:
+            failures.append((v, lines))
+        else:
+            records.append(record)
 
     _write_summary(out, records, failures, args.lang)
     n_ok, n_bad = len(records), len(failures)
@@ -84,6 +89,33 @@ def run_variants(args, spec_path, out) -> int:
                           if n_bad else ""))
         print(f"summary table: {out / 'variants_summary.xlsx'}")
     return 1 if failures else 0
+
+
+def _one_variant(task):
+    """Validate one variant and write its complete report: ``(variant, summary record,
+    None)``, or ``(variant, None, problem lines)`` when the row is bad.  A module-level
+    function, so that a process pool (``--jobs``) can run it."""
+    from dataclasses import replace
+
+    from crankbase.errors import CrankdynError
+    from engine.variants import load_variant, summary_record
+
+    from .cmd_engine import report
+
+    base, v, base_dir, spec_path, variants_path, folder, lang, step, form, drawing = task
+    try:
+        spec = load_variant(base, v, base_dir)
+        if step is not None:
+            spec = spec.with_step(step)
+        if form:
+            spec = replace(spec, table_form=form)
+        _, summary, _ = report(spec, folder, lang, inputs=[spec_path, variants_path],
+                               drawing=drawing)
+    except CrankdynError as exc:
+        lines = exc.lines() or [str(exc)]
+        return v, None, [ln if ln.startswith("row ") else f"row {v.row} ({v.variant}): {ln}"
+                         for ln in lines]
+    return v, summary_record(v.variant, spec, summary), None
 
 
 def _write_summary(out, records, failures, lang):

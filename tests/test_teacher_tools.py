@@ -43,7 +43,7 @@ def test_thirty_variants_end_to_end(tmp_path, capsys):
     table.to_csv(path, index=False)
     out = tmp_path / "out"
     assert main(["engine", str(PETROL), "--variants", str(path), "-o", str(out),
-                 "--lang", "en"]) == 1                       # one row failed
+                 "--lang", "en", "--jobs", "2"]) == 1        # one row failed
     cap = capsys.readouterr()
     bad_row = broken + 2                                     # header is row 1
     assert f"row {bad_row} (V{broken + 1:02d}): engine.bore_mm: got -5" in cap.err
