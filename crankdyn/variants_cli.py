@@ -151,7 +151,7 @@ def _write_summary(out, records, failures, lang):
         c.font = Font(bold=True)
         c.fill = PatternFill("solid", fgColor="DDE4EE")
         c.alignment = Alignment(horizontal="center", wrap_text=True)
-        ws.column_dimensions[c.column_letter].width = 11 if j > 2 else 16
+        ws.column_dimensions[c.column_letter].width = max(10, len(name) + 2)
     for i, row in enumerate(df.itertuples(index=False), start=4):
         for j, val in enumerate(row, start=1):
             c = ws.cell(i, j, val.item() if hasattr(val, "item") else val)
@@ -166,7 +166,8 @@ def _write_summary(out, records, failures, lang):
     ws.page_setup.paperSize = ws.PAPERSIZE_A4
     ws.page_setup.orientation = "landscape"
     ws.sheet_properties.pageSetUpPr.fitToPage = True
-    ws.page_setup.fitToWidth = 2
+    width = sum(max(10, len(n) + 2) for n in df.columns)
+    ws.page_setup.fitToWidth = max(1, -(-width // 190))   # ≤ 190 width units a page
     ws.page_setup.fitToHeight = 0
     with atomic_path(out / "variants_summary.xlsx") as tmp, full_precision_xlsx():
         wb.save(tmp)
