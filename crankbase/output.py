@@ -279,7 +279,13 @@ def _lock(directory: Path):
     raise OutputError(f"output folder {directory}: keeps being removed by another run")
 
 
-def _commit(directory: Path, stage: Path, inputs) -> None:
+def _in_unit(name: str, unit) -> bool:
+    """Whether output file ``name`` belongs to the report named ``unit`` (``<unit>.xlsx``,
+    ``<unit>_forces.csv`` …); every file does when ``unit`` is None."""
+    return unit is None or name.startswith((unit + "_", unit + "."))
+
+
+def _commit(directory: Path, stage: Path, inputs, unit=None) -> None:
     import datetime
     import json
 
@@ -303,6 +309,9 @@ def _commit(directory: Path, stage: Path, inputs) -> None:
             p = directory / n
             if n in files or p.resolve() in ins or not p.is_file():
                 continue
+            if not _in_unit(n, unit):          # another report's file in this folder
+                files[n] = info
+                continue
             if p.stat().st_size == info.get("size") and _sha256(p) == info.get("sha256"):
                 obsolete.append(n)
     manifest = {"format": 1, "created": datetime.datetime.now(datetime.timezone.utc)
@@ -315,7 +324,7 @@ def _commit(directory: Path, stage: Path, inputs) -> None:
 
 
 @contextlib.contextmanager
-def staged_output(directory, inputs=()):
+def staged_output(directory, inputs=(), unit=None):
     """Context manager for a multi-file report, replaced as one unit.
 
     Yields a staging folder *inside* ``directory`` (so on the same file system, whatever
@@ -342,7 +351,10 @@ def staged_output(directory, inputs=()):
 
     Any :class:`OSError` (read-only file system, disk full, a path through a file, ...)
     becomes one :class:`OutputError` naming the path and the reason.  ``inputs`` are input
-    paths that must not be overwritten (:class:`OutputError`).
+    paths that must not be overwritten (:class:`OutputError`).  ``unit``: the name of
+    the report when its files are named after it (``<unit>.xlsx``, ``<unit>_*.csv``):
+    then only the old files of that same report are replaced, and reports of other
+    engines or mechanisms in the folder stay (and stay in the manifest).
     """
     import shutil
 
@@ -373,7 +385,7 @@ def staged_output(directory, inputs=()):
             raise OutputError(f"cannot write the report into {directory}: {_reason(exc)}") \
                 from None
         try:
-            _commit(directory, stage, inputs)
+            _commit(directory, stage, inputs, unit)
         except OSError as exc:
             raise _output_error(exc, "cannot replace the report in", directory) from None
     except BaseException:

@@ -59,3 +59,11 @@ WEAR_TIE_RTOL = 1e-9
 #: A cylinder's phase must agree with its bank angle and throw, φ ≡ γ − τ (mod 360°),
 #: within this [deg]: the layout's angles are sums of degrees given to ~1e-12.
 PHASE_MATCH_DEG = 1e-6
+
+#: Relative tolerance of `crankdyn check` on a student's table: a graphical plan or a
+#: diagram drawn by hand on millimetre paper is good to a few per cent.
+CHECK_RTOL = 0.02
+
+#: Absolute tolerance of `crankdyn check`, as a fraction of the largest magnitude in the
+#: column: a value near a zero crossing (T at α = 0) is judged against its column's scale.
+CHECK_ATOL_OF_SCALE = 0.005

@@ -1,11 +1,16 @@
 """``crankdyn engine``: the engine force table (Table 2), its workbook and plots.
 
-    crankdyn engine SPEC.toml -o DIR [--lang ru|en] [--step DEG]
+    crankdyn engine SPEC.toml -o DIR [--lang ru|en] [--step DEG] [--form seed|kolchin]
+                                     [--bearings] [--drawing]
     crankdyn engine --example [NAME] -o DIR
+    crankdyn engine SPEC.toml --variants variants.csv|xlsx -o DIR [--jobs N]
 
-Writes ``DIR/forces.csv``, ``DIR/<name>.xlsx`` and the plots (PNG and SVG) after
-everything has been validated and computed, all at once through a staging folder; bad
-input writes nothing.  Heavy libraries
+Writes ``DIR/<name>_forces.csv``, ``DIR/<name>_table2.csv``, the whole-engine tables
+``DIR/<name>_cylinders.csv``, ``_torque.csv``, ``_balance.csv`` (and the bearing tables
+with --bearings), ``DIR/<name>.xlsx`` and the plots ``DIR/<name>_<plot>.png|svg``
+(``<name>``: the engine's name as a file stem, so that two engines in one folder never
+mix) after everything has been validated and computed, all at once through a staging
+folder; bad input writes nothing.  Heavy libraries
 are imported inside :func:`run` only, so ``crankdyn --help`` stays fast.
 """
 from __future__ import annotations
@@ -38,6 +43,23 @@ def add_parser(subparsers):
                         "journal_torques.csv, rod_bearings.csv, wear.csv, rod_model.csv with "
                         "[rod] model = \"rigid\", and their plots); implied by a [bearings] "
                         "or [rod] table in the spec")
+    p.add_argument("--form", choices=("seed", "kolchin"),
+                   help="Table 2 (<name>_table2.csv) in the seed's form (forces in mm and N) "
+                        "or Kolchin's (specific forces in MPa with the coefficients tg β, "
+                        "1/cos β, cos(α+β)/cos β, sin(α+β)/cos β); overrides [table] form")
+    p.add_argument("--drawing", action="store_true",
+                   help="also write the diagrams at the drawing scale (forces over α, N/K/T, "
+                        "polar), 1:1 PDF on millimetre paper: axes in mm of the drawing, "
+                        "μP from the spec, μα = cycle/240 mm")
+    p.add_argument("--variants", metavar="TABLE",
+                   help="course variants: a CSV or .xlsx table with a 'variant' (or "
+                        "'name') column and one column per spec key as a dotted path "
+                        "(engine.bore_mm, masses.rod_kg, …) overriding the base spec "
+                        "(SPEC.toml or --example); writes one complete report per variant "
+                        "in DIR/<variant>/ and DIR/variants_summary.csv|xlsx; bad rows are "
+                        "reported by row and key and skipped; exit status 1 if any failed")
+    p.add_argument("--jobs", type=int, default=1, metavar="N",
+                   help="with --variants: write N reports at a time (processes; default 1)")
     p.set_defaults(func=run)
 
 
@@ -68,88 +90,174 @@ def run(args) -> int:
     out = Path(args.output)
     if out.exists() and not out.is_dir():
         raise SpecError(f"-o: {out} exists and is not a folder")
-
-    from dataclasses import replace
+    if args.jobs < 1:
+        raise SpecError(f"--jobs: got {args.jobs}; must be a whole number >= 1")
+    if getattr(args, "variants", None):
+        from .variants_cli import run_variants
+        return run_variants(args, spec_path, out)
 
     import engine
+
+    study = with_options(engine.load(spec_path), args.step, args.form)
+    lines = report(study, spec_path, out, args.lang, inputs=[spec_path],
+                   bearings=args.bearings, drawing=args.drawing)["lines"]
+    print("\n".join(lines))
+    return 0
+
+
+def with_options(study, step=None, form=None):
+    """The study with the command line's ``--step`` and ``--form`` applied to its
+    :class:`~engine.TableSettings` (presentation only; the physics is untouched)."""
+    from dataclasses import replace
+
+    settings = study.settings
+    if step is not None:
+        from crankbase.validation import step_argument
+
+        spec = study.spec
+        rows = spec.cycle_deg + len(settings.extra_angles_deg) * step
+        settings = replace(settings, step_deg=step_argument(step, "--step", spec.cycle_deg,
+                                                             rows_span=rows))
+    if form:
+        settings = replace(settings, form=form)
+    return replace(study, settings=settings)
+
+
+def output_names(stem, names):
+    """``{name: file name}`` of every output, named after the engine (``<stem>_<name>``),
+    so that reports of two engines in one folder never mix."""
+    return {n: f"{stem}_{n}" for n in names}
+
+
+def report(study, spec_path, out, lang, inputs=(), bearings=False, drawing=False):
+    """Compute the whole engine of ``study`` and write its complete report into ``out``:
+    ``<name>_forces.csv``, ``<name>_table2.csv`` (Table 2 in the settings' form),
+    ``<name>_cylinders.csv``, ``<name>_torque.csv``, ``<name>_balance.csv``, the bearing
+    tables (``<name>_crankpins.csv`` …) when asked, ``<name>.xlsx``, the plots
+    ``<name>_<plot>.png|svg`` and, with ``drawing``, the 1:1 drawing-scale PDFs
+    ``<name>_drawing_*.pdf`` (``<name>``: the engine's name as a file stem), all through a
+    staging folder.  Plots of this engine that this run does not draw are removed.
+
+    Returns a dict: ``result`` (one cylinder), ``whole``, ``lines`` (terminal summary).
+    """
+    import engine
+    from engine.drawing import DRAWING_NAMES, drawing_figures
     from engine.plots import PLOT_NAMES, TRAIN_PLOT_NAMES, figures, train_figures
-    from engine.report import add_engine_sheets, build_workbook, save_workbook
+    from engine.report import a4_setup, add_engine_sheets, build_workbook, save_workbook
+    from engine.table2 import table2
 
     from crankbase.output import (check_not_input, ensure_finite, safe_name, save_figure,
                                   staged_output, write_csv)
 
     # 1. validate and compute everything
-    study = engine.load(spec_path)
     spec, settings = study.spec, study.settings
-    if args.step is not None:
-        from crankbase.validation import step_argument
-
-        rows = spec.cycle_deg + len(settings.extra_angles_deg) * args.step
-        step = step_argument(args.step, "--step", spec.cycle_deg, rows_span=rows)
-        settings = replace(settings, step_deg=step)
     whole = engine.analyze_engine(spec, study.train, settings)
     result = whole.cylinder
     table = result.table
     ensure_finite(table, "force table")
     ensure_finite(result.curves, "force table (plot grid)")
-    summary = result.summary
     for df, what in ((whole.torque, "torque"), (whole.balance, "balance")):
         ensure_finite(df, what)
-    csv_path = out / "forces.csv"
-    csvs = {"cylinders.csv": whole.layout.cylinders, "torque.csv": whole.torque,
+    name = safe_name(spec.name, "engine")
+    csvs = {"forces.csv": table, "table2.csv": table2(table, spec, settings),
+            "cylinders.csv": whole.layout.cylinders, "torque.csv": whole.torque,
             "balance.csv": whole.balance}
-    xlsx_path = out / f"{safe_name(spec.name, 'engine')}.xlsx"
-    stems = [out / name for name in PLOT_NAMES + TRAIN_PLOT_NAMES]
+    xlsx_path = out / f"{name}.xlsx"
+    plot_names = list(PLOT_NAMES + TRAIN_PLOT_NAMES)
     from engine.bearing_spec import read_bearing_inputs
-    inputs = read_bearing_inputs(spec_path, spec)
-    bearing = _bearings(spec, table, result.curves, inputs, whole) \
-        if args.bearings or inputs.asked else None
+    b_inputs = read_bearing_inputs(spec_path, spec)
+    bearing = _bearings(spec, table, result.curves, b_inputs, whole) \
+        if bearings or b_inputs.asked else None
     if bearing is not None:
         csvs.update(bearing["csv"])
-        stems += [out / name for name in bearing["figures"]]
-    outputs = [csv_path, xlsx_path] + [out / n for n in csvs] + [
-        s.with_suffix(f".{e}") for s in stems for e in ("png", "svg")]
-    check_not_input(outputs, [spec_path, spec.pressure_file])
-    wb = add_engine_sheets(build_workbook(result, args.lang), whole, args.lang)
-    figs = figures(result, args.lang)
-    figs.update(train_figures(whole, args.lang))
+        plot_names += list(bearing["figures"])
+    files = output_names(name, list(csvs) + plot_names)
+    pdfs = output_names(name, DRAWING_NAMES) if drawing else {}
+    outputs = [xlsx_path] + [out / files[n] for n in csvs] + [
+        out / f"{files[n]}.{e}" for n in plot_names for e in ("png", "svg")] + [
+        out / f"{f}.pdf" for f in pdfs.values()]
+    inputs = [*inputs, spec.pressure_file]
+    check_not_input(outputs, inputs)
+    wb = add_engine_sheets(build_workbook(result, lang), whole, lang)
+    figs = figures(result, lang)
+    figs.update(train_figures(whole, lang))
     if bearing is not None:
         from engine.bearing_plots import bearing_figures
         from engine.bearing_report import add_bearing_sheets
-        figs.update(bearing_figures(bearing["analysis"], args.lang))
-        add_bearing_sheets(wb, bearing["csv"], bearing["analysis"], args.lang)
+        figs.update(bearing_figures(bearing["analysis"], lang))
+        add_bearing_sheets(wb, bearing["csv"], bearing["analysis"], lang)
+    a4_setup(wb)
+    if drawing:
+        figs.update(drawing_figures(result, lang))
 
     # 2. write: every file into a staging folder, moved into DIR only when all are done;
     #    SVG text stays text (searchable, and a third cheaper to write than glyph paths)
     import matplotlib
 
-    with staged_output(out, inputs=[spec_path, spec.pressure_file]) as stage, \
+    with staged_output(out, inputs=inputs, unit=name) as stage, \
             matplotlib.rc_context({"svg.fonttype": "none"}):
-        write_csv(table, stage / csv_path.name)
-        for name, df in csvs.items():
-            write_csv(df, stage / name)
+        for n, df in csvs.items():
+            write_csv(df, stage / files[n])
         save_workbook(wb, stage / xlsx_path.name)
-        for stem in stems:
-            save_figure(figs[stem.name], stage / stem.name)
+        for n in plot_names:
+            save_figure(figs[n], stage / files[n])
+        for n, f in pdfs.items():                      # 1:1, vector only
+            save_figure(figs[n], stage / f, formats=("pdf",))
+    for fig in figs.values():
+        fig.clear()
+    # plots of this engine from an earlier run that this run did not draw are stale
+    from engine.bearing_plots import BEARING_PLOT_NAMES
+    for n in set(BEARING_PLOT_NAMES + DRAWING_NAMES) - set(plot_names) - set(pdfs):
+        for ext in ("png", "svg", "pdf"):
+            path = out / f"{name}_{n}.{ext}"
+            if path.exists():
+                path.unlink()
+    lines = summary_lines(result, whole, lang)
+    if bearing is not None:
+        lines += bearing["lines"]
+    lines.append(("записано: " if lang == "ru" else "wrote ")
+                 + ", ".join(files[n] for n in csvs) + f", {xlsx_path.name}, "
+                 + f"{len(plot_names)} " + ("графиков (PNG, SVG) в " if lang == "ru"
+                                              else "plots (PNG, SVG) in ") + str(out))
+    return dict(result=result, whole=whole, lines=lines)
 
-    # 3. terminal summary
-    ru = args.lang == "ru"
+
+def summary_lines(result, whole, lang="en"):
+    """The terminal summary of one run: the cylinder in ``lang`` (Russian textbook
+    symbols for ru), then the whole engine."""
+    spec, summary = result.spec, result.summary
     P, T, R = summary.P_N, summary.T_N, summary.R_N
-    lines = [
-        f"{spec.name}: {spec.strokes}-stroke, D x S = {spec.bore * 1e3:g} x "
-        f"{spec.stroke * 1e3:g} mm, lambda = {spec.lam:.4f}, n = {spec.speed_rpm:g} rpm, "
-        f"acceleration {spec.acceleration}",
-        f"  peak gas pressure  {summary.p_max_MPa:10.3f} MPa  at alpha = "
-        f"{summary.alpha_p_max_deg:g} deg;  indicated mean pressure pi = "
-        f"{summary.pi_MPa:.4f} MPa",
-        f"  P max              {P.max:10.0f} N    at alpha = {P.alpha_max_deg:g} deg",
-        f"  T max              {T.max:10.0f} N    at alpha = {T.alpha_max_deg:g} deg",
-        f"  mean torque        {summary.M_mean_Nm:10.2f} N*m  (one cylinder)",
-        f"  R_crank-pin max    {R.max:10.0f} N    at alpha = {R.alpha_max_deg:g} deg;"
-        f"  mean {summary.R_mean_N:.0f} N;  chi = "
-        + (f"{summary.chi:.3f}" if summary.chi == summary.chi else "undefined "
-           "(the mean load is 0)"),
-    ]
+    chi = (f"{summary.chi:.3f}" if summary.chi == summary.chi else
+           ("не определено (средняя нагрузка 0)" if lang == "ru"
+            else "undefined (the mean load is 0)"))
+    if lang == "ru":
+        lines = [
+            f"{spec.name}: {spec.strokes}-тактный, D × S = {spec.bore * 1e3:g} × "
+            f"{spec.stroke * 1e3:g} мм, λ = {spec.lam:.4f}, n = {spec.speed_rpm:g} мин⁻¹, "
+            f"ускорение {'двучленное' if spec.acceleration == 'two-term' else 'точное'}",
+            f"  pг max             {summary.p_max_MPa:10.3f} МПа  при α = "
+            f"{summary.alpha_p_max_deg:g}°;  среднее индикаторное давление pi = "
+            f"{summary.pi_MPa:.4f} МПа",
+            f"  P max              {P.max:10.0f} Н    при α = {P.alpha_max_deg:g}°",
+            f"  T max              {T.max:10.0f} Н    при α = {T.alpha_max_deg:g}°",
+            f"  Mкр.ср             {summary.M_mean_Nm:10.2f} Н·м  (один цилиндр)",
+            f"  Rшш max            {R.max:10.0f} Н    при α = {R.alpha_max_deg:g}°;"
+            f"  Rшш.ср = {summary.R_mean_N:.0f} Н;  χ = {chi}",
+        ]
+    else:
+        lines = [
+            f"{spec.name}: {spec.strokes}-stroke, D x S = {spec.bore * 1e3:g} x "
+            f"{spec.stroke * 1e3:g} mm, lambda = {spec.lam:.4f}, n = {spec.speed_rpm:g} rpm, "
+            f"acceleration {spec.acceleration}",
+            f"  peak gas pressure  {summary.p_max_MPa:10.3f} MPa  at alpha = "
+            f"{summary.alpha_p_max_deg:g} deg;  indicated mean pressure pi = "
+            f"{summary.pi_MPa:.4f} MPa",
+            f"  P max              {P.max:10.0f} N    at alpha = {P.alpha_max_deg:g} deg",
+            f"  T max              {T.max:10.0f} N    at alpha = {T.alpha_max_deg:g} deg",
+            f"  mean torque        {summary.M_mean_Nm:10.2f} N*m  (one cylinder)",
+            f"  R_crank-pin max    {R.max:10.0f} N    at alpha = {R.alpha_max_deg:g} deg;"
+            f"  mean {summary.R_mean_N:.0f} N;  chi = {chi}",
+        ]
     ws = whole.summary
     lay = whole.layout
     lines += [
@@ -184,13 +292,7 @@ def run(args) -> int:
     for cw in ws.counterweights:
         lines.append(f"  counterweight      m*r = {cw.mr * 1e3:9.2f} kg*mm at "
                      f"{cw.angle_deg:6.1f} deg from throw 1, z = {cw.z * 1e3:7.1f} mm")
-    if bearing is not None:
-        lines += bearing["lines"]
-    lines.append(f"wrote {csv_path} ({len(table)} rows), cylinders.csv, torque.csv, "
-                 f"balance.csv, {xlsx_path}, {len(stems)} plots (PNG, SVG) in {out}"
-                 + (" [ru]" if ru else " [en]"))
-    print("\n".join(lines))
-    return 0
+    return lines
 
 
 def _bearings(spec, table, fine, inputs, whole):

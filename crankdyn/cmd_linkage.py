@@ -1,6 +1,7 @@
 """``crankdyn linkage``: kinematics and kinetostatics of a crank-rocker or crank-slider.
 
-Writes ``kinematics.csv``, ``forces.csv``, the workbook ``<name>.xlsx`` and the plots
+Writes ``<name>_kinematics.csv``, ``<name>_forces.csv``, the workbook ``<name>.xlsx`` and
+the plots ``<name>_<plot>.png`` (``<name>``: the mechanism's name as a file stem)
 (plan of positions; over a full turn at 1°: ω and ε of links 3 and 4, the driving moment
 Mур, the transmission angle).  All outputs are produced in a staging folder and moved
 into place only when every one of them is complete.
@@ -10,6 +11,9 @@ from __future__ import annotations
 import sys
 
 EXAMPLE = "ratchet.toml"
+
+#: File stems of every plot ``crankdyn linkage`` may draw (linkage.plots.all_figures).
+PLOTS = ("plan", "velocities", "accelerations", "driving_moment", "transmission_angle")
 
 
 def add_parser(sub):
@@ -127,17 +131,36 @@ def run(args) -> int:
     if full is not None:
         from linkage.plots import all_figures
         figures = all_figures(result, full, lang=args.lang)
+    from pathlib import Path
+
+    name = safe_name(spec.name, "linkage")
     inputs = [spec_path] + ([args.measured] if args.measured else [])
-    with staged_output(args.output, inputs=inputs) as stage:
+    stale = [p for p in (Path(args.output) / f"{name}_{s}.png" for s in PLOTS
+                         if s not in figures) if p.exists()]
+    # files named after the mechanism: other mechanisms' reports in the folder stay; the
+    # plans' files are not, so with --plans the folder holds this one report
+    unit = name if plan_list is None else None
+    with staged_output(args.output, inputs=inputs, unit=unit) as stage:
         if plan_list is not None:
             from plans.report import write_plans
 
             info = write_plans(result, plan_list, stage, lang=args.lang, sheet=args.sheet,
                                measurements=measured, previews=not args.no_plots)
+        before = set(stage.iterdir())
         write_csvs(result, stage)
-        write_workbook(result, stage / f"{safe_name(spec.name, 'linkage')}.xlsx")
+        for csv in sorted(set(stage.iterdir()) - before):   # named after the mechanism
+            csv.rename(stage / f"{name}_{csv.name}")
+        write_workbook(result, stage / f"{name}.xlsx")
         for stem, fig in figures.items():
-            save_figure(fig, stage / stem, formats=("png",), dpi=120)
+            save_figure(fig, stage / f"{name}_{stem}", formats=("png",), dpi=120)
+    # plots of this mechanism from an earlier run that this run did not draw are stale
+    # (the report swap removes those it wrote itself; any other copy goes too)
+    for path in stale:
+        if path.exists():
+            path.unlink()
+        if not path.exists():
+            print(f"crankdyn linkage: removed {path} (an earlier run's plot, not drawn now)",
+                  file=sys.stderr)
     for w in caught:
         print(f"crankdyn linkage: warning: {w.message}", file=sys.stderr)
     statics = "; statics, ω = 0" if spec.omega == 0 else ""

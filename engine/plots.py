@@ -110,9 +110,20 @@ def plot_indicator(result, ax=None, lang="ru"):
         ax.plot(sw, p, color="C0", lw=1.4)
         ax.set_xlabel(t["Vs"])
     ax.set_ylabel(t["p"])
-    ax.set_title(t["pV"])
+    from .diagram_points import fullness
+    from .symbols import sym
+
+    s = result.summary
+    title = f"{t['pV']}: pi = {s.pi_MPa:.3f} {t['MPa']}"
+    phi = fullness(s)
+    if phi is not None:
+        title += f";  {sym('fullness', lang)} = pi/p′i = {phi:.3f}"
+    ax.set_title(title)
     ax.grid(True, lw=0.4, alpha=0.6)
     ax.set_ylim(bottom=0)
+    a = c["alpha_deg"].to_numpy()
+    v0 = spec.Vc * 1e3 if spec.Vc is not None else 0.0
+    _diagram_points(ax, result, lambda al: v0 + np.interp(al, a, sw), lang)
     return ax
 
 
@@ -131,18 +142,21 @@ def plot_pressure(result, ax=None, lang="ru"):
     i = int(np.argmax(p))
     ax.annotate(f"{p[i]:.2f} ({a[i]:g}°)", (a[i], p[i]), xytext=(8, -4),
                 textcoords="offset points", fontsize=8)
+    _diagram_points(ax, result, lambda al: np.asarray(al, float), lang)
     return ax
 
 
-#: Line styles of the curves drawn together, told apart in black-and-white print.
-_STYLES = ("-", "--", "-.")
+#: Line styles of the curves of one plot: colour and dash pattern both differ, so the
+#: curves stay apart in black-and-white print (Okabe–Ito colours, distinct greys).
+LINE_STYLES = (dict(color="#0072B2", ls="-", lw=1.6), dict(color="#D55E00", ls="--", lw=1.6),
+               dict(color="#000000", ls="-.", lw=1.4), dict(color="#009E73", ls=":", lw=1.8))
 
 
 def _lines(ax, table, cols, labels, scale=1e-3):
     a = table["alpha_deg"].to_numpy()
     for k, (col, lab) in enumerate(zip(cols, labels)):
-        ax.plot(a, table[col].to_numpy() * scale, lw=1.4, label=lab, color=f"C{k}",
-                ls=_STYLES[k % len(_STYLES)])
+        ax.plot(a, table[col].to_numpy() * scale, label=lab,
+                **LINE_STYLES[k % len(LINE_STYLES)])
     ax.legend(loc="best", fontsize=9)
 
 
@@ -177,9 +191,9 @@ def plot_torque(result, ax=None, lang="ru"):
     ax = _axes(ax)
     c = result.curves
     M = t["sym"]["M"]
-    ax.plot(c["alpha_deg"].to_numpy(), c["M_Nm"].to_numpy(), lw=1.4, color="C0", label=M)
+    ax.plot(c["alpha_deg"].to_numpy(), c["M_Nm"].to_numpy(), label=M, **LINE_STYLES[0])
     m = result.summary.M_mean_Nm
-    ax.axhline(m, color="C3", ls="--", lw=1.0, label=f"{M}{t['sub']} = {m:.1f} {t['Nm']}")
+    ax.axhline(m, **{**LINE_STYLES[1], "lw": 1.0}, label=f"{M}{t['sub']} = {m:.1f} {t['Nm']}")
     ax.legend(loc="best", fontsize=9)
     _alpha_axis(ax, result.spec, t)
     ax.set_ylabel(t["torque"])
@@ -213,28 +227,25 @@ def plot_polar(result, ax=None, lang="ru"):
     ax.axvline(0, color="k", lw=0.7)
     labels = np.arange(0, spec.cycle_deg, 30.0)           # α labels every 30°
     lt, lk = _at(c, "T_N", labels) * 1e-3, _at(c, "K_N", labels) * 1e-3
-    ax.plot(lt, lk, "o", ms=3, color="C0")
-    for ang, x, y in zip(labels, lt, lk):
-        ax.annotate(f"{ang:g}", (x, y), xytext=(3, 3), textcoords="offset points",
-                    fontsize=7, color="0.2")
-    ax.plot([0], [0], "ks", ms=5)
-    ax.annotate("O", (0, 0), xytext=(-12, -10), textcoords="offset points", fontsize=11,
-                weight="bold")
-    ax.plot([0], [-kr], "o", color="C3", ms=6)
+    ms = 3.5
+    ax.plot(lt, lk, "o", ms=ms, color="C0", gid="alpha-marker")
+    ax.plot([0], [0], "ks", ms=5, gid="pole-marker")
+    ax.plot([0], [-kr], "o", color="C3", ms=6, gid="pole-marker")
     y = t["sym"]
-    ax.annotate(y["Osh"], (0, -kr), xytext=(-22, 6), textcoords="offset points",
-                fontsize=11, weight="bold", color="C3")
     R = c["R_N"].to_numpy() * 1e-3
     a = c["alpha_deg"].to_numpy()
-    unit = t["kN"]
-    for idx, name, col in ((int(np.argmax(R)), f"{y['R']} max", "C3"),
-                           (int(np.argmin(R)), f"{y['R']} min", "C2")):
+    ext = [(int(np.argmax(R)), "max", "C3"), (int(np.argmin(R)), "min", "C2")]
+    for idx, _, col in ext:
         ax.annotate("", xy=(T[idx], K[idx]), xytext=(0, -kr),
                     arrowprops=dict(arrowstyle="-|>", color=col, lw=1.3))
-        at = (T[idx], K[idx]) if name.endswith("max") else (0, -kr)
-        ax.annotate(f"{name} = {R[idx]:.2f} {unit}\n(α = {a[idx]:g}°)", at,
-                    xytext=(8, -14) if name.endswith("max") else (10, 6),
-                    textcoords="offset points", fontsize=9, color=col)
+    # freeze the limits (equal aspect, room for labels) before measuring anything
+    ax.margins(0.07)
+    ax.autoscale_view()
+    ax.apply_aspect()
+    ax.set_xlim(ax.get_xlim())
+    ax.set_ylim(ax.get_ylim())
+    ax.set_autoscale_on(False)
+    _polar_labels(ax, T, K, kr, lt, lk, labels, ext, R, a, y["Osh"], y["R"], t["kN"], ms)
     ax.set_ylabel(t["K"])
     ax.grid(True, lw=0.4, alpha=0.6)
     ax.set_title(f"{t['polar']}: {spec.name}", fontsize=11)
@@ -247,6 +258,91 @@ def plot_polar(result, ax=None, lang="ru"):
     return ax
 
 
+def _polar_labels(ax, T, K, kr, lt, lk, angles, ext, R, a, pole_name, r_name, unit, ms):
+    """Place the pole names, the Rшш max/min texts and the α labels of the polar diagram
+    so that no label covers another label, a marker or an arrow (measured with the
+    renderer; see :mod:`engine.plot_labels`)."""
+    from .plot_labels import Obstacles, label_points, place_label, renderer_of
+
+    fig = ax.figure
+    renderer_of(fig)
+    tr = ax.transData.transform
+    px = fig.dpi / 72.0
+    bb = ax.get_window_extent()
+    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+    curve = tr(np.column_stack([T, K]))
+    obs.curve = curve
+    pts = tr(np.column_stack([lt, lk]))
+    for p in pts:
+        obs.add_marker(p, ms * px + 1)
+    o, osh = tr([(0.0, 0.0)])[0], tr([(0.0, -kr)])[0]
+    obs.add_marker(o, 5 * px + 1)
+    obs.add_marker(osh, 6 * px + 1)
+    for idx, _, _ in ext:
+        obs.add_segment(osh, curve[idx])
+    # pole names first, then Rшш max/min, then α labels (multiples of 90° first)
+    place_label(ax, obs, o, "O", normal=(-1, -1), fontsize=11, weight="bold",
+                gid="polar-label")
+    place_label(ax, obs, osh, pole_name, normal=(-1, 0), fontsize=11, weight="bold",
+                color="C3", gid="polar-label")
+    for idx, name, col in ext:
+        pos = curve[idx] if name == "max" else osh
+        away = curve[idx] - osh
+        place_label(ax, obs, pos, f"{r_name} {name} = {R[idx]:.2f} {unit}\n"
+                    f"(α = {a[idx]:g}°)", normal=away if name == "max" else (1, 0),
+                    fontsize=9, color=col, gid="polar-label", gaps_pt=(4, 8, 14, 22, 32))
+    # α labels: normal of the curve at each point, pointing away from the curve's centre
+    d = np.gradient(curve, axis=0)
+    tx = np.interp(angles, a, d[:, 0])
+    ty = np.interp(angles, a, d[:, 1])
+    normals = np.column_stack([-ty, tx])
+    centre = curve.mean(axis=0)
+    flip = np.sum(normals * (pts - centre), axis=1) < 0
+    normals[flip] *= -1
+    order = sorted(range(len(angles)), key=lambda i: (angles[i] % 90 != 0, angles[i]))
+    texts = [f"{x:g}" for x in angles]
+    label_points(ax, obs, pts, texts, normals, order, merge_px=1.4 * 7 * px,
+                 fontsize=7, color="0.15", gid="alpha-label")
+
+
+def _diagram_points(ax, result, x_of, lang):
+    """Mark and name the characteristic points (r, a, c′, c, c″, zд, b′, b″) of the
+    indicator diagram on ``ax`` (x of a crank angle by ``x_of``); names placed clear of
+    each other and of the markers."""
+    from .diagram_points import characteristic_points
+    from .plot_labels import Obstacles, place_label, renderer_of
+
+    spec, c = result.spec, result.curves
+    a = c["alpha_deg"].to_numpy()
+    p = c["p_gas_MPa"].to_numpy()
+    pts = characteristic_points(spec, c)
+    if not pts:
+        return
+    r = renderer_of(ax.figure)
+    ax.set_xlim(ax.get_xlim())
+    ax.set_ylim(ax.get_ylim())
+    ax.set_autoscale_on(False)
+    bb = ax.get_window_extent()
+    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+    obs.curve = ax.transData.transform(ax.get_lines()[0].get_xydata())
+    for text in ax.texts:                       # the TDC/BDC names already there
+        e = text.get_window_extent(r)
+        obs.boxes.append((e.x0, e.y0, e.x1, e.y1))
+    xy = []
+    for pt in pts:
+        al = pt.alpha_deg % spec.cycle_deg if pt.alpha_deg < spec.cycle_deg else 0.0
+        pp = pt.p / 1e6 if pt.p is not None else float(np.interp(al, a, p))
+        xy.append((float(x_of(al)), pp, pt.p is not None))
+    for x, y, off in xy:
+        ax.plot([x], [y], "o", ms=4.5, mfc="white" if off else "k", mec="k",
+                gid="diagram-point", zorder=5)
+        obs.add_marker(ax.transData.transform((x, y)), 4.5 * ax.figure.dpi / 72 + 1)
+    for pt, (x, y, _) in zip(pts, xy):
+        place_label(ax, obs, ax.transData.transform((x, y)),
+                    pt.name_ru if lang == "ru" else pt.name_en, normal=(0.6, 1.0),
+                    fontsize=9, gid="diagram-label", color="0.1")
+
+
 def plot_developed(result, ax=None, lang="ru"):
     """Developed diagram Rшш(α) with its cycle mean, max and min marked. Returns the Axes."""
     t = _texts(lang)
@@ -255,10 +351,10 @@ def plot_developed(result, ax=None, lang="ru"):
     a = c["alpha_deg"].to_numpy()
     R = c["R_N"].to_numpy() * 1e-3
     Rs = t["sym"]["R"]
-    ax.plot(a, R, lw=1.4, color="C0", label=Rs)
+    ax.plot(a, R, label=Rs, **LINE_STYLES[0])
     unit = t["kN"]
     m = result.summary.R_mean_N * 1e-3
-    ax.axhline(m, color="C3", ls="--", lw=1.0, label=f"{Rs}{t['sub']} = {m:.2f} {unit}")
+    ax.axhline(m, **{**LINE_STYLES[1], "lw": 1.0}, label=f"{Rs}{t['sub']} = {m:.2f} {unit}")
     for idx, col in ((int(np.argmax(R)), "C3"), (int(np.argmin(R)), "C2")):
         ax.plot(a[idx], R[idx], "o", color=col)
         ax.annotate(f"{R[idx]:.2f} {unit} ({a[idx]:g}°)", (a[idx], R[idx]),
@@ -356,7 +452,7 @@ def plot_total_torque(result, ax=None, lang="ru"):
     n = result.layout.n
     for j in range(n):
         ax.plot(th, c[f"M_{j + 1}_Nm"].to_numpy(), color="0.55", lw=0.6, ls=":",
-                label=t["cyl"].format(n=n) if j == 0 else None)
+                label=t["cyl"].format(n=n) if j == 0 else None, gid="context")
     ax.plot(th, c["M_total_Nm"].to_numpy(), color="C0", lw=1.6, label=t["Mtot"])
     ax.axhline(s.M_mean_Nm, color="C3", ls="--", lw=1.1, label=t["mean"].format(v=s.M_mean_Nm))
     for v, a, key, off in ((s.M_max_Nm, s.alpha_M_max_deg, "Mmax", (6, 4)),
@@ -461,7 +557,7 @@ def _over_alpha(ax, result, kind, t):
     unit = "N" if kind == "F" else "Nm"
     scale = 1e-3 if kind == "F" else 1.0
     sym = {"F": ("F_x", "F_y"), "M": ("M_x", "M_y")}[kind]
-    for key, lab, styles in (("after", t["after"], ("-", "-")),
+    for key, lab, styles in (("after", t["after"], ("-", ":")),
                              ("before", t["before"], ("--", "-."))):
         for comp, name, ls, col in (("x", sym[0], styles[0], "C0"),
                                     ("y", sym[1], styles[1], "C3")):

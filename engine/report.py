@@ -31,7 +31,15 @@ LANGS = ("ru", "en")
 #: Table 2 force pairs (mm, N), in the textbook order: (column of the force table).
 TABLE2_FORCES = ("dPg_N", "Pj_N", "P_N", "S_N", "N_N", "K_N", "T_N", "R_N")
 
-_T2_FIRST_ROW = 5     # first data row of Table 2 (rows 3–4: the two-row header)
+#: Column keys of the Table 2 sheet (its hidden row 5): α, (mm, N) × 8 forces, Mкр, Ψ.
+TABLE2_KEYS = (("alpha_deg",) + tuple(k for f in TABLE2_FORCES for k in (f[:-2] + "_mm", f))
+               + ("M_Nm", "psi_deg"))
+
+#: Name of the sheet of Table 2 in Kolchin's form (``[table] form = "kolchin"``).
+KOLCHIN_SHEET = {"ru": "Таблица 2 (Колчин)", "en": "Table 2 (Kolchin)"}
+
+_T2_KEY_ROW = 5       # hidden row of column keys (inserted into the template's Table 2)
+_T2_FIRST_ROW = 6     # first data row of Table 2 (rows 3–4: the two-row header)
 _DATA_FIRST_ROW = 4   # first data row of the Data sheet (row 3: the CSV header)
 
 
@@ -153,7 +161,12 @@ def build_workbook(result, lang="ru"):
             if lines > 1:
                 ws_in.row_dimensions[row[3].row].height = 15 * lines
 
-    # Table 2
+    # Table 2 (the seed's form, mm and N): a hidden row 5 holds the column keys, so that
+    # `crankdyn check` reads a filled-in copy of this sheet; data start on row 6
+    ws_t2.insert_rows(_T2_KEY_ROW)
+    for j, key in enumerate(TABLE2_KEYS, start=1):
+        _put(ws_t2.cell(_T2_KEY_ROW, j), key)
+    ws_t2.row_dimensions[_T2_KEY_ROW].hidden = True
     _put(ws_t2["C2"], float(mu))
     proto = [ws_t2.cell(_T2_FIRST_ROW, c) for c in range(1, 2 * len(TABLE2_FORCES) + 4)]
     cols = [table["alpha_deg"].to_numpy()]
@@ -169,7 +182,6 @@ def build_workbook(result, lang="ru"):
             _put(c, val)
             if i:
                 _copy_style(proto[j], c)
-    last = _T2_FIRST_ROW + len(data) - 1
 
     # Summary
     extremes = set(SUMMARY_QUANTITIES)
@@ -194,25 +206,32 @@ def build_workbook(result, lang="ru"):
             if i:
                 _copy_style(proto[j], c)
 
-    # Charts over α, from Table 2's N columns
-    xref = Reference(ws_t2, min_col=1, min_row=_T2_FIRST_ROW, max_row=last)
-    force_col = {name: 3 + 2 * k for k, name in enumerate(TABLE2_FORCES)}
-    m_col = 2 * len(TABLE2_FORCES) + 2
+    # Charts over α, from the Data sheet (the CSV columns), each series in its own colour
+    # and dash; two charts per A4 page, none split by a page break
+    from openpyxl.worksheet.pagebreak import Break
+
+    n = len(table)
+    col = {name: j + 1 for j, name in enumerate(COLUMNS)}
+    xref = Reference(ws_data, min_col=col["alpha_deg"], min_row=_DATA_FIRST_ROW,
+                     max_row=_DATA_FIRST_ROW + n - 1)
     ru = lang == "ru"
+    y = _CHART_SYMBOLS[lang]
+    N, Nm = ("Н", "Н·м") if ru else ("N", "N·m")
     charts = [
-        (("Силы ΔPг, Pj, P" if ru else "Forces ΔPg, Pj, P"), ("Н" if ru else "N"),
-         [force_col[k] for k in ("dPg_N", "Pj_N", "P_N")]),
-        (("Силы N, K, T" if ru else "Forces N, K, T"), ("Н" if ru else "N"),
-         [force_col[k] for k in ("N_N", "K_N", "T_N")]),
-        (("Крутящий момент цилиндра Mкр" if ru else "Torque of one cylinder M"),
-         ("Н·м" if ru else "N·m"), [m_col]),
-        (("Сила на шатунную шейку Rшш" if ru else "Crank-pin load Rcp"),
-         ("Н" if ru else "N"), [force_col["S_N"], force_col["R_N"]]),
+        ((f"Силы {y['dPg']}, Pj, P" if ru else f"Forces {y['dPg']}, Pj, P"), N,
+         [("dPg_N", y["dPg"]), ("Pj_N", "Pj"), ("P_N", "P")]),
+        (("Силы N, K, T" if ru else "Forces N, K, T"), N,
+         [("N_N", "N"), ("K_N", "K"), ("T_N", "T")]),
+        ((f"Крутящий момент цилиндра {y['M']}" if ru else
+          f"Torque of one cylinder {y['M']}"), Nm, [("M_Nm", y["M"])]),
+        ((f"Сила по шатуну {y['S']} и сила на шатунную шейку {y['R']}" if ru
+          else f"Rod force {y['S']} and crank-pin load {y['R']}"), N,
+         [("S_N", y["S"]), ("R_N", y["R"])]),
     ]
-    for k, (title, unit, ycols) in enumerate(charts):
+    rows_per_chart = 20
+    for k, (title, unit, series) in enumerate(charts):
         ch = ScatterChart()
         ch.title = title
-        ch.style = 13
         ch.x_axis.title = "α, °"
         ch.y_axis.title = unit
         ch.x_axis.scaling.min = 0
@@ -222,15 +241,177 @@ def build_workbook(result, lang="ru"):
         ch.x_axis.delete = False
         ch.y_axis.delete = False
         ch.legend.position = "b"
-        for col in ycols:
-            label = ws_t2.cell(3, col - 1).value if col != m_col else ("Mкр" if ru else "M")
-            yref = Reference(ws_t2, min_col=col, min_row=_T2_FIRST_ROW, max_row=last)
-            s = Series(yref, xref, title=str(label))
+        ch.x_axis.number_format = "0"
+        ch.y_axis.number_format = "0"
+        for m, (name, label) in enumerate(series):
+            yref = Reference(ws_data, min_col=col[name], min_row=_DATA_FIRST_ROW,
+                             max_row=_DATA_FIRST_ROW + n - 1)
+            s = Series(yref, xref, title=label)
             s.marker.symbol = "none"
             s.smooth = False
+            _style_series(s, m)
             ch.series.append(s)
-        ch.width, ch.height = 18, 8.5
-        ws_ch.add_chart(ch, f"A{3 + 18 * k}")
+        ch.width, ch.height = 17, 8.5
+        ws_ch.add_chart(ch, f"A{3 + rows_per_chart * k}")
+        if k % 2 == 1:                              # two charts per A4 page, none split
+            ws_ch.row_breaks.append(Break(id=2 + rows_per_chart * (k + 1)))
+    _polar_chart(ws_ch, ws_data, col, n, spec, lang, 3 + rows_per_chart * len(charts))
+    if result.settings.form == "kolchin":
+        _kolchin_sheet(wb, result, lang)
+    return wb
+
+
+def _kolchin_sheet(wb, result, lang):
+    """Table 2 in Kolchin's form (specific forces in MPa with tg β, 1/cos β,
+    cos(α+β)/cos β, sin(α+β)/cos β; :func:`engine.table2.table2`) as the last sheet: row 3
+    the column keys, data from row 4."""
+    from openpyxl.styles import Font
+
+    from .table2 import table2
+
+    t2 = table2(result.table, result.spec, result.settings, "kolchin")
+    ws = wb.create_sheet(KOLCHIN_SHEET[lang])
+    ws["A1"] = ("Таблица 2 в форме Колчина: удельные силы, МПа, и коэффициенты "
+                "(Колчин и Демидов)" if lang == "ru" else
+                "Table 2 in Kolchin's form: specific forces, MPa, and the coefficients "
+                "(Kolchin & Demidov)")
+    ws["A1"].font = Font(bold=True, size=12)
+    ws["A2"] = (f"Fп = {result.spec.area * 1e4:.6g} см²" if lang == "ru"
+                else f"Ap = {result.spec.area * 1e4:.6g} cm²")
+    for j, key in enumerate(t2.columns, start=1):
+        c = ws.cell(3, j, key)
+        c.font = Font(bold=True)
+        ws.column_dimensions[c.column_letter].width = max(9, len(key) + 2)
+    for i, rowvals in enumerate(t2.to_numpy().tolist(), start=4):
+        for j, val in enumerate(rowvals, start=1):
+            _put(ws.cell(i, j), val)
+            ws.cell(i, j).number_format = "0.0000"
+    ws.print_title_rows = "3:3"
+    ws.freeze_panes = "B4"
+
+
+#: Line colour, dash and width [EMU] of the 1st, 2nd, 3rd … series of every native chart:
+#: colours of distinct lightness (Okabe–Ito blue, vermilion, black, green) and distinct
+#: dash patterns, so the curves stay apart in grey-scale print.
+CHART_STYLES = (("0072B2", "solid", 28575), ("D55E00", "dash", 28575),
+                ("000000", "lgDashDot", 22225), ("009E73", "sysDot", 31750))
+
+#: Colours and dashes of the thin per-cylinder series under a bold total.
+_CYL_COLOURS = ("D55E00", "009E73", "CC79A7", "E69F00", "56B4E9", "000000", "7F7F7F",
+                "4D4D4D", "F0E442", "999999", "8C510A", "01665E")
+_CYL_DASHES = ("sysDot", "dash", "lgDashDot", "sysDash", "dashDot", "lgDash",
+               "lgDashDotDot", "sysDashDot", "sysDashDotDot", "dot", "lgDashDot", "dash")
+
+#: Symbols in the native charts: Russian textbook ones, English ones without Cyrillic.
+_CHART_SYMBOLS = {"ru": dict(dPg="ΔPг", M="Mкр", S="Sш", R="Rшш", pole="Oш"),
+                  "en": dict(dPg="ΔPg", M="M", S="S", R="Rcp", pole="Or")}
+
+
+def _style_series(s, m):
+    """Give chart series number ``m`` its colour, dash and width (:data:`CHART_STYLES`)."""
+    colour, dash, width = CHART_STYLES[m % len(CHART_STYLES)]
+    s.graphicalProperties.line.solidFill = colour
+    s.graphicalProperties.line.prstDash = dash
+    s.graphicalProperties.line.width = width
+
+
+def _polar_chart(ws_ch, ws_data, col, n, spec, lang, row):
+    """The polar diagram of the crank-pin load as a native, editable scatter chart: the
+    locus of S = (T, K) from the Data sheet, +K downwards (reversed axis), the poles O and
+    Oш = (0, −Kr.ш) as markers from a small table beside the chart; both axes get the same
+    span on a square chart, so the diagram keeps its shape."""
+    from openpyxl.chart import Reference, ScatterChart, Series
+    from openpyxl.chart.marker import Marker
+    from openpyxl.chart.shapes import GraphicalProperties
+
+    ru = lang == "ru"
+    y = _CHART_SYMBOLS[lang]
+    T = np.asarray([ws_data.cell(_DATA_FIRST_ROW + i, col["T_N"]).value for i in range(n)])
+    K = np.asarray([ws_data.cell(_DATA_FIRST_ROW + i, col["K_N"]).value for i in range(n)])
+    kr = spec.Kr
+    # the poles, in a small table right of the chart (columns M:O)
+    _put(ws_ch.cell(row, 13), "T, Н" if ru else "T, N")
+    _put(ws_ch.cell(row, 14), "K, Н" if ru else "K, N")
+    for i, (name, tt, k) in enumerate((("O", 0.0, 0.0), (y["pole"], 0.0, -kr)), start=1):
+        _put(ws_ch.cell(row + i, 13), tt)
+        _put(ws_ch.cell(row + i, 14), float(k))
+        _put(ws_ch.cell(row + i, 15), name)
+        ws_ch.cell(row + i, 14).number_format = "0"
+    ch = ScatterChart()
+    ch.title = (f"Полярная диаграмма нагрузки на шатунную шейку ({y['pole']} – "
+                f"полюс {y['R']})" if ru else
+                f"Polar diagram of the crank-pin load ({y['pole']}: pole of {y['R']})")
+    ch.x_axis.title = "T, Н" if ru else "T, N"
+    ch.y_axis.title = "K, Н (вниз)" if ru else "K, N (downwards)"
+    ch.y_axis.scaling.orientation = "maxMin"            # +K downwards, as in the textbook
+    ch.width, ch.height = 17, 17
+    # equal scales: the same span on both axes of a square chart, centred on the data
+    xs_all, ys_all = np.r_[T, 0.0], np.r_[K, 0.0, -kr]
+    span = 1.1 * max(np.ptp(xs_all), np.ptp(ys_all))
+    step = 10 ** np.floor(np.log10(span / 4))
+    for ax, vals in ((ch.x_axis, xs_all), (ch.y_axis, ys_all)):
+        mid = 0.5 * (vals.min() + vals.max())
+        ax.scaling.min = float(np.floor((mid - span / 2) / step) * step)
+        ax.scaling.max = float(np.floor((mid - span / 2) / step) * step
+                               + np.ceil(span / step) * step)
+        ax.majorUnit = float(step * (2 if span / step > 12 else 1))
+        ax.number_format = "0"
+        ax.delete = False
+    ch.x_axis.tickLblPos = "high"        # the y axis is reversed: "high" is the bottom
+    ch.y_axis.tickLblPos = "low"
+    ch.legend.position = "b"
+    xs = Reference(ws_data, min_col=col["T_N"], min_row=_DATA_FIRST_ROW,
+                   max_row=_DATA_FIRST_ROW + n - 1)
+    ys = Reference(ws_data, min_col=col["K_N"], min_row=_DATA_FIRST_ROW,
+                   max_row=_DATA_FIRST_ROW + n - 1)
+    s = Series(ys, xs, title=f"{y['S']} (T, K)")
+    s.marker.symbol = "none"
+    s.smooth = False
+    _style_series(s, 0)
+    ch.series.append(s)
+    px = Reference(ws_ch, min_col=13, min_row=row + 1, max_row=row + 2)
+    py = Reference(ws_ch, min_col=14, min_row=row + 1, max_row=row + 2)
+    poles = Series(py, px, title=f"O, {y['pole']}")
+    colour = CHART_STYLES[2][0]
+    poles.marker = Marker(symbol="square", size=8)
+    poles.marker.graphicalProperties = GraphicalProperties(solidFill=colour)
+    poles.marker.graphicalProperties.line.solidFill = colour
+    poles.graphicalProperties.line.noFill = True          # markers only
+    ch.series.append(poles)
+    ws_ch.add_chart(ch, f"A{row}")
+
+
+def a4_setup(wb):
+    """Print setup of every sheet of ``wb``: A4 (landscape where the sheet has none of its
+    own), as many pages down as needed, as many pages wide as its columns need (at most
+    ~190 width units a page); rows of wrapped text as tall as their lines."""
+    import math
+
+    from openpyxl.utils import get_column_letter
+
+    for ws in wb.worksheets:
+        ps = ws.page_setup
+        if ps.paperSize is None:
+            ps.paperSize = ws.PAPERSIZE_A4
+            ps.orientation = "landscape"
+        ws.sheet_properties.pageSetUpPr.fitToPage = True
+        ps.fitToHeight = 0
+        widths = [ws.column_dimensions[get_column_letter(j)].width or 8.43
+                  for j in range(1, ws.max_column + 1)
+                  if not ws.column_dimensions[get_column_letter(j)].hidden]
+        ps.fitToWidth = max(int(ps.fitToWidth or 1), math.ceil(sum(widths) / 190))
+        merged = {(r.min_row, r.min_col): r for r in ws.merged_cells.ranges}
+        for row in ws.iter_rows(min_row=1):
+            for c in row:
+                if not (isinstance(c.value, str) and c.alignment.wrap_text):
+                    continue
+                m = merged.get((c.row, c.column))
+                cols = range(m.min_col, m.max_col + 1) if m else [c.column]
+                width = sum(ws.column_dimensions[get_column_letter(j)].width or 8.43
+                            for j in cols)
+                lines = sum(math.ceil(len(p) * 1.1 / width) or 1 for p in c.value.split("\n"))
+                if lines > 1 and (ws.row_dimensions[c.row].height or 15) < 13 * lines:
+                    ws.row_dimensions[c.row].height = 13 * lines
     return wb
 
 
@@ -449,7 +630,6 @@ def add_engine_sheets(wb, tr, lang="ru"):
     last = _write_rows(ws, 4, c0, tr.torque.to_numpy().tolist()) - 1
     ch = ScatterChart()
     ch.title = t["chart"]
-    ch.style = 13
     ch.x_axis.title = t["alpha"]
     ch.y_axis.title = "N·m" if lang == "en" else "Н·м"
     ch.x_axis.scaling.min, ch.x_axis.scaling.max = 0, lay.cycle_deg
@@ -463,7 +643,12 @@ def add_engine_sheets(wb, tr, lang="ru"):
         ser = Series(yref, xref, title=str(tr.torque.columns[j]))
         ser.marker.symbol = "none"
         ser.smooth = False
-        ser.graphicalProperties.line.width = 28000 if j == n + 1 else 6000
+        if j == n + 1:                       # the total: bold, the first chart style
+            _style_series(ser, 0)
+        else:                                # each cylinder: thin, its own colour and dash
+            ser.graphicalProperties.line.solidFill = _CYL_COLOURS[(j - 1) % len(_CYL_COLOURS)]
+            ser.graphicalProperties.line.prstDash = _CYL_DASHES[(j - 1) % len(_CYL_DASHES)]
+            ser.graphicalProperties.line.width = 9525
         ch.series.append(ser)
     ch.width, ch.height = 24, 10
     ws.add_chart(ch, f"A{end + len(rows) + 3}")

@@ -307,6 +307,10 @@ class EngineSpec:
         return None if self.cycle is not None else self.pressure.file
 
 
+#: Forms of Table 2 in the report ([table] form, --form).
+TABLE_FORMS = ("seed", "kolchin")
+
+
 @dataclass(frozen=True)
 class TableSettings:
     """Presentation settings of the force table and its report (not physics).
@@ -319,14 +323,21 @@ class TableSettings:
         Extra rows (sorted, without repeats). [deg]
     force_scale : float or None
         μP, the force scale of the drawing: the mm columns are force ÷ μP. [N/mm]
+    form : {"seed", "kolchin"}
+        Form of Table 2 in the report: the seed's (forces in mm and N) or Kolchin's
+        (specific forces in MPa with tg β, 1/cos β, cos(α+β)/cos β, sin(α+β)/cos β).
     """
 
     step_deg: float = 30.0
     extra_angles_deg: tuple = ()
     force_scale: float | None = None
+    form: str = "seed"
 
     def __post_init__(self):
         problems = []
+        if self.form not in TABLE_FORMS:
+            problems.append(Problem("form", f"got {self.form!r}; valid: "
+                                            + ", ".join(repr(f) for f in TABLE_FORMS)))
         if not (_finite(self.step_deg) and self.step_deg > 0):
             problems.append(Problem("step_deg", f"got {self.step_deg!r}; must be a finite "
                                                 "number > 0"))
@@ -487,7 +498,7 @@ _CYCLE_KEYS = ("kind", "compression_ratio", "pa_MPa", "pr_MPa", "n1", "n2", "pz_
                "lambda_z", "rho", "rounding", "advance_deg", "pc_factor", "peak_factor",
                "peak_after_tdc_deg", "exhaust_opening_deg", "intake_opening_deg",
                "exhaust_closing_deg")
-_TABLE_KEYS = ("step_deg", "extra_angles_deg", "force_scale_N_per_mm")
+_TABLE_KEYS = ("step_deg", "extra_angles_deg", "force_scale_N_per_mm", "form")
 
 #: Rounding defaults (Kolchin & Demidov, "Скругление индикаторной диаграммы"); the
 #: advance depends on the kind and is resolved by :attr:`CycleSpec.advance`.
@@ -539,7 +550,8 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
     360); or ``[pressure.cycle]``.
 
     ``[table]``: ``step_deg`` (default 30), ``extra_angles_deg`` (default none),
-    ``force_scale_N_per_mm`` (μP > 0, required).
+    ``force_scale_N_per_mm`` (μP > 0, required), ``form`` ("seed": forces in mm and N,
+    the default; "kolchin": specific forces in MPa with the coefficient columns).
 
     ``[bearings]`` and ``[rod]`` (optional): checked here, read by
     :func:`engine.bearing_spec.read_bearing_inputs`.
@@ -682,6 +694,8 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
             c.add(f"table.extra_angles_deg[{i}]", f"got {x:g}; must be <= {cycle_deg:g}")
     mu = c.number(t, "force_scale_N_per_mm", "table", gt=0,
                   what="the force scale μP [N/mm]")
+    form = c.choice(t, "form", ("seed", "kolchin"), "table", required=False,
+                    default="seed")
 
     train = _crank_train(c, data, e, cylinders)
 
@@ -701,7 +715,7 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
         pressure=pressure, source_path=source_path,
         rod_small_end_fraction=frac, **masses)
     settings = TableSettings(step_deg=step, extra_angles_deg=tuple(sorted(set(extra or []))),
-                             force_scale=mu)
+                             force_scale=mu, form=form or "seed")
     return EngineStudy(spec, settings, train)
 
 

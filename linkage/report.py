@@ -186,12 +186,12 @@ def write_workbook(result, path):
     ws["A1"] = f"crankdyn linkage — {spec.name} ({spec.kind})"
     ws["A1"].font = Font(bold=True, size=12)
     ws.append([])
-    ws.append(["spec key", "value"])
+    ws.append(["spec key", "value", "unit"])
     for c in ws[3]:
         c.font = bold
         c.fill = head_fill
     for key, value in _spec_rows(dict(spec.raw)):
-        ws.append([key, value])
+        ws.append([key, value, _spec_unit(key)])
     ws.append([])
     ws.append(["cycle geometry", "value", "unit"])
     for c in ws[ws.max_row]:
@@ -226,6 +226,9 @@ def write_workbook(result, path):
         tables.append(("extremes", result.extremes, list(result.extremes.columns)))
     for title, df, cols in tables:
         ws = wb.create_sheet(title)
+        if title == "extremes":
+            _extremes_sheet(ws, df, cols, bold, grey, head_fill, box, center)
+            continue
         for j, col in enumerate(cols, start=1):
             sym, unit = column_label(col)
             for i, text in enumerate((sym, unit, col), start=1):
@@ -250,7 +253,11 @@ def write_workbook(result, path):
                     cell._style = copy.copy(proto)
         ws.freeze_panes = "C4" if "phi_deg" in cols else "B4"
         ws.print_title_rows = "1:3"
-        _page_setup(ws, landscape=True)
+        if "phi_deg" in cols:
+            ws.print_title_cols = "A:B"      # position and φ repeated on every page
+        width = sum(ws.column_dimensions[get_column_letter(j)].width
+                    for j in range(1, len(cols) + 1))
+        _page_setup(ws, landscape=True, pages_wide=math.ceil(width / _WIDTH_PER_PAGE))
     _page_setup(wb["inputs"], landscape=False)
     _check_finite_tables(result)
     with atomic_path(path) as tmp, full_precision_xlsx():
@@ -268,11 +275,66 @@ CONVENTIONS = (
 )
 
 
-def _page_setup(ws, landscape):
-    """Print on A4, one page wide."""
+#: Column width (Excel units) printed on one landscape A4 page: at most ~70 % scale,
+#: so the numbers stay readable (a wider sheet prints on more pages, titles repeated).
+_WIDTH_PER_PAGE = 190
+
+
+def _extremes_sheet(ws, df, cols, bold, grey, head_fill, box, center):
+    """The extreme positions, one quantity per row (quantity, unit, CSV key, one value
+    column per extreme position): two positions of ~100 quantities print as a readable
+    portrait list instead of a strip 100 columns wide."""
+    from openpyxl.styles import Alignment
+
+    heads = ["quantity", "unit", "column"] + [f"extreme {i + 1}" for i in range(len(df))]
+    for j, text in enumerate(heads, start=1):
+        c = ws.cell(1, j, text)
+        c.font, c.fill, c.border, c.alignment = bold, head_fill, box, center
+    for i, col in enumerate(cols, start=2):
+        sym, unit = column_label(col)
+        values = _cell_values(df[col])
+        fmt = _number_format(col, values)
+        for j, v in enumerate([sym, unit, col] + values, start=1):
+            c = ws.cell(i, j, v)
+            c.border = box
+            if j == 3:
+                c.font = grey
+            if j > 3:
+                c.number_format = fmt
+                c.alignment = Alignment(horizontal="right")
+    ws.column_dimensions["A"].width = 14
+    ws.column_dimensions["B"].width = 8
+    ws.column_dimensions["C"].width = 22
+    for j in range(len(df)):
+        ws.column_dimensions[chr(ord("D") + j)].width = 16
+    ws.freeze_panes = "D2"
+    ws.print_title_rows = "1:1"
+    _page_setup(ws, landscape=False)
+
+
+#: Units of the spec keys, by the key's suffix (the spec's naming rule) or its name.
+_UNIT_SUFFIXES = (("_kg_m2", "kg·m²"), ("_rad_s2", "rad/s²"), ("_rad_s", "rad/s"),
+                  ("_m_s2", "m/s²"), ("_deg", "°"), ("_kg", "kg"), ("_Nm", "N·m"),
+                  ("_N", "N"), ("_m", "m"))
+_LENGTH_KEYS = {"crank", "coupler", "rocker", "ground", "offset", "cg", "at", "rod"}
+
+
+def _spec_unit(key):
+    """The unit of a spec key as shown on the inputs sheet ('' for a word or a count)."""
+    last = re.sub(r"\[\d+\]$", "", key.split(".")[-1])
+    for suffix, unit in _UNIT_SUFFIXES:
+        if last.endswith(suffix):
+            return unit
+    if last in _LENGTH_KEYS or key.split(".")[-2:-1] == ["points"]:
+        return "m"
+    return ""
+
+
+def _page_setup(ws, landscape, pages_wide=1):
+    """Print on A4, ``pages_wide`` pages wide, as many tall as needed."""
     ws.page_setup.orientation = "landscape" if landscape else "portrait"
     ws.page_setup.paperSize = ws.PAPERSIZE_A4
-    ws.page_setup.fitToWidth = 1
+    ws.page_setup.fitToWidth = max(1, int(pages_wide))
     ws.page_setup.fitToHeight = 0
     ws.sheet_properties.pageSetUpPr.fitToPage = True
 

@@ -199,6 +199,17 @@ def write_workbook(path, table, phi0_deg, mechanism=None) -> None:
         wm.column_dimensions["A"].width = 36
         wm.column_dimensions["B"].width = 18
         wm.column_dimensions["C"].width = 40
+    # print: A4 portrait, one page wide, header rows repeated on every page
+    for sheet, titles in ((ws, "1:3"), (wb["mechanism"] if mechanism is not None else None,
+                                        "1:1")):
+        if sheet is None:
+            continue
+        sheet.page_setup.paperSize = sheet.PAPERSIZE_A4
+        sheet.page_setup.orientation = "portrait"
+        sheet.sheet_properties.pageSetUpPr.fitToPage = True
+        sheet.page_setup.fitToWidth = 1
+        sheet.page_setup.fitToHeight = 0
+        sheet.print_title_rows = titles
     with atomic_path(path) as tmp, full_precision_xlsx():
         wb.save(tmp)
 

@@ -17,6 +17,14 @@ SHEETS = ("inputs", "positions", "velocities", "accelerations", "loads", "forces
 PLOTS = ("plan", "velocities", "accelerations", "driving_moment", "transmission_angle")
 
 
+def _one(folder, tail):
+    """The one output in ``folder`` named ``<mechanism>_<tail>`` (issue 14: every output
+    is named after the mechanism, so two runs into one folder never mix)."""
+    found = [p for p in folder.iterdir() if p.name.endswith("_" + tail)]
+    assert len(found) == 1, (tail, sorted(p.name for p in folder.iterdir()))
+    return found[0]
+
+
 def _sheet_frame(ws):
     """A sheet's table as a DataFrame keyed by the CSV column names (header row 3)."""
     rows = list(ws.iter_rows(values_only=True))
@@ -33,8 +41,8 @@ def ratchet_run(tmp_path_factory):
 
 
 def test_outputs_exist_and_are_not_empty(ratchet_run):
-    for name in ["kinematics.csv", "forces.csv", "ratchet-drive.xlsx"] + \
-            [f"{p}.png" for p in PLOTS]:
+    for name in ["ratchet-drive_kinematics.csv", "ratchet-drive_forces.csv",
+                 "ratchet-drive.xlsx"] + [f"ratchet-drive_{p}.png" for p in PLOTS]:
         f = ratchet_run / name
         assert f.is_file() and f.stat().st_size > 1000, name
     # no staging leftovers beside the output folder
@@ -42,8 +50,8 @@ def test_outputs_exist_and_are_not_empty(ratchet_run):
 
 
 def test_csv_has_the_contract_columns_and_rows(ratchet_run):
-    k = pd.read_csv(ratchet_run / "kinematics.csv")
-    f = pd.read_csv(ratchet_run / "forces.csv")
+    k = pd.read_csv(_one(ratchet_run, "kinematics.csv"))
+    f = pd.read_csv(_one(ratchet_run, "forces.csv"))
     assert len(k) == len(f) == 12  # positions = 12 gives exactly 12 rows
     assert list(k["position"]) == list(range(1, 13))
     for c in ("phi_deg", "theta3_deg", "omega3_rad_s", "eps3_rad_s2", "theta4_deg",
@@ -59,8 +67,8 @@ def test_csv_is_full_precision(ratchet_run):
     import linkage
 
     res = linkage.analyze(example_path("ratchet.toml"))
-    k = pd.read_csv(ratchet_run / "kinematics.csv")
-    f = pd.read_csv(ratchet_run / "forces.csv")
+    k = pd.read_csv(_one(ratchet_run, "kinematics.csv"))
+    f = pd.read_csv(_one(ratchet_run, "forces.csv"))
     num = [c for c in res.kinematics.columns if c != "position"]
     np.testing.assert_array_equal(k[num].to_numpy(), res.kinematics[num].to_numpy())
     num = [c for c in res.forces.columns if c != "position"]
@@ -70,8 +78,8 @@ def test_csv_is_full_precision(ratchet_run):
 def test_workbook_read_back_equals_csv(ratchet_run):
     wb = load_workbook(ratchet_run / "ratchet-drive.xlsx")
     assert set(SHEETS) <= set(wb.sheetnames)
-    k = pd.read_csv(ratchet_run / "kinematics.csv")
-    f = pd.read_csv(ratchet_run / "forces.csv")
+    k = pd.read_csv(_one(ratchet_run, "kinematics.csv"))
+    f = pd.read_csv(_one(ratchet_run, "forces.csv"))
     seen = set()
     for sheet in ("positions", "velocities", "accelerations"):
         df = _sheet_frame(wb[sheet])
@@ -103,12 +111,14 @@ def test_workbook_inputs_and_extremes(ratchet_run):
     # seed 000 / domain.md §2: with OC = 0.54 m, swing ≈ 68.4°, K ≈ 1.138
     assert values["rocker swing"] == pytest.approx(68.4, abs=0.05)
     assert values["time-ratio coefficient K = φwork/φidle"] == pytest.approx(1.138, abs=5e-4)
-    ext = _sheet_frame(wb["extremes"])
+    # the extremes sheet lists one quantity per row (readable on A4): transpose it back
+    rows = list(wb["extremes"].iter_rows(min_row=2, values_only=True))
+    ext = pd.DataFrame({r[2]: list(r[3:]) for r in rows})
     assert list(ext["label"]) == ["working start", "working end"]
     # the rocker stands still at both extreme positions
     assert np.abs(ext["omega4_rad_s"].to_numpy(float)).max() < 1e-9
     # position 1 is the working-stroke start
-    k = pd.read_csv(ratchet_run / "kinematics.csv")
+    k = pd.read_csv(_one(ratchet_run, "kinematics.csv"))
     assert ext["phi_deg"].iat[0] == pytest.approx(k["phi_deg"].iat[0], abs=1e-9)
 
 
@@ -117,8 +127,8 @@ def test_every_bundled_linkage_example_runs(name, tmp_path):
     out = tmp_path / "out"
     assert main(["linkage", "--example", name, "-o", str(out)]) == 0
     for p in PLOTS:
-        assert (out / f"{p}.png").stat().st_size > 1000
-    k = pd.read_csv(out / "kinematics.csv")
+        assert _one(out, f"{p}.png").stat().st_size > 1000
+    k = pd.read_csv(_one(out, "kinematics.csv"))
     assert len(k) == 12 and list(k["position"]) == list(range(1, 13))
 
 
@@ -143,8 +153,8 @@ crank_angles_deg = [10.0, 200.0, 90.0]
 """)
     out = tmp_path / "out"
     assert main(["linkage", str(spec), "-o", str(out)]) == 0
-    k = pd.read_csv(out / "kinematics.csv")
-    f = pd.read_csv(out / "forces.csv")
+    k = pd.read_csv(_one(out, "kinematics.csv"))
+    f = pd.read_csv(_one(out, "forces.csv"))
     assert list(k["phi_deg"]) == [10.0, 200.0, 90.0]   # one row each, in the order given
     assert k["position"].isna().all()                 # empty for explicit angles
     for c in ("s4_m", "v4_m_s", "a4_m_s2"):
@@ -226,7 +236,7 @@ def test_missing_spec_file(tmp_path, capsys):
 def test_existing_report_replaced_only_when_complete(tmp_path, monkeypatch):
     out = tmp_path / "out"
     assert main(["linkage", "--example", "-o", str(out), "--no-plots"]) == 0
-    before = (out / "forces.csv").read_bytes()
+    before = (_one(out, "forces.csv")).read_bytes()
     import linkage.report as report
 
     def boom(*a, **k):
@@ -234,7 +244,7 @@ def test_existing_report_replaced_only_when_complete(tmp_path, monkeypatch):
     monkeypatch.setattr(report, "write_workbook", boom)
     with pytest.raises(RuntimeError):
         main(["linkage", "--example", "-o", str(out), "--no-plots"])
-    assert (out / "forces.csv").read_bytes() == before
+    assert (_one(out, "forces.csv")).read_bytes() == before
     assert not [p for p in tmp_path.iterdir() if ".staging." in p.name]
 
 
@@ -303,11 +313,11 @@ crank_angles_deg = [300.0, 290.0]
     text = capsys.readouterr().out
     assert "statics, ω = 0" in text and "<NA>" not in text
     for p in ("plan", "driving_moment", "transmission_angle"):
-        assert (out / f"{p}.png").stat().st_size > 1000
-    assert not (out / "velocities.png").exists() and not (out / "accelerations.png").exists()
-    f = pd.read_csv(out / "forces.csv")
+        assert _one(out, f"{p}.png").stat().st_size > 1000
+    assert not list(out.glob("*_velocities.png")) and not list(out.glob("*_accelerations.png"))
+    f = pd.read_csv(_one(out, "forces.csv"))
     assert f["M_drive_Nm"].iat[0] == pytest.approx(3 * W * a, rel=1e-12)
-    k = pd.read_csv(out / "kinematics.csv")
+    k = pd.read_csv(_one(out, "kinematics.csv"))
     assert (k["omega3_rad_s"] == 0).all() and (k["B_a_m_s2"] == 0).all()
     wb = load_workbook(out / "rhombus.xlsx")
     assert "extremes" not in wb.sheetnames        # no strokes without rotation

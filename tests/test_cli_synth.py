@@ -70,7 +70,7 @@ def test_paper_example_fig3_with_ground(tmp_path, capsys):
 
     # the spec runs through `crankdyn linkage`
     assert main(["linkage", str(out / "press_drive.toml"), "-o", str(tmp_path / "lk")]) == 0
-    kin = pd.read_csv(tmp_path / "lk" / "kinematics.csv")
+    kin = pd.read_csv(next((tmp_path / "lk").glob("*_kinematics.csv")))
     assert kin["mu_deg"].min() >= m["mu_min_deg"] - 1e-9
 
 

@@ -54,34 +54,35 @@ def test_bearings_flag_writes_tables_equal_to_the_library(tmp_path, capsys):
     text = capsys.readouterr().out
     assert "crank pins         most loaded:" in text and "main journals      most" in text
     names = {p.name for p in out.iterdir()}
-    assert set(CSVS) <= names and "rod_model.csv" not in names
+    assert {f"diesel-d240_{c}" for c in CSVS} <= names
+    assert "diesel-d240_rod_model.csv" not in names
     for stem in BEARING_PLOT_NAMES[:-1]:
         for ext in ("png", "svg"):
-            assert (out / f"{stem}.{ext}").stat().st_size > 1000, stem
+            assert (out / f"diesel-d240_{stem}.{ext}").stat().st_size > 1000, stem
     study = engine.load(example_path("diesel_d240.toml"))
     spec = study.spec
     t = engine.force_table(spec, settings=study.settings)
     theta = t["alpha_deg"].to_numpy()
-    cyl = pd.read_csv(out / "cylinders.csv")
-    pins = pd.read_csv(out / "crankpins.csv")
+    cyl = pd.read_csv(out / "diesel-d240_cylinders.csv")
+    pins = pd.read_csv(out / "diesel-d240_crankpins.csv")
     # inline: one rod per pin, so pin k's load is cylinder k's Rшш at its own phase
     for k, phase in zip(cyl["throw"], cyl["phase_deg"]):
         tk = engine.force_table(spec, theta, phase_deg=phase)
         np.testing.assert_allclose(pins[f"R_{k}_N"], tk["R_N"], rtol=1e-12)
         np.testing.assert_allclose(pins[f"psi_{k}_deg"], tk["psi_deg"], atol=1e-9)
     # the last main journal carries the engine's total torque (torque.csv)
-    tq = pd.read_csv(out / "journal_torques.csv")
-    total = pd.read_csv(out / "torque.csv")
+    tq = pd.read_csv(out / "diesel-d240_journal_torques.csv")
+    total = pd.read_csv(out / "diesel-d240_torque.csv")
     assert list(tq.columns) == ["alpha_deg"] + [f"M_{j}_Nm" for j in range(1, 6)]
     both = tq.merge(total, on="alpha_deg")          # torque.csv has no extra angles
     assert len(both) == len(total)
     np.testing.assert_allclose(both["M_5_Nm"], both["M_total_Nm"], rtol=1e-10, atol=1e-6)
     assert (tq["M_1_Nm"] == 0).all()
-    wear = pd.read_csv(out / "wear.csv")
+    wear = pd.read_csv(out / "diesel-d240_wear.csv")
     assert list(wear.columns) == (["phi_deg"] + [f"wear_pin_{k}_Ndeg" for k in range(1, 5)]
                                   + [f"wear_journal_{j}_Ndeg" for j in range(1, 6)])
     assert len(wear) == 360
-    rb = pd.read_csv(out / "rod_bearings.csv")
+    rb = pd.read_csv(out / "diesel-d240_rod_bearings.csv")
     assert list(rb.columns)[-3:] == ["Pp_axial_N", "Pp_side_N", "Pp_N"]
     # the workbook's bearing sheets hold the CSVs bit for bit, and the summary
     from openpyxl import load_workbook
@@ -89,7 +90,7 @@ def test_bearings_flag_writes_tables_equal_to_the_library(tmp_path, capsys):
     wb = load_workbook(out / "diesel-d240.xlsx")
     for fname in CSVS:
         rows = list(wb[SHEET_NAMES["en"][fname]].values)
-        df = pd.read_csv(out / fname)
+        df = pd.read_csv(out / f"diesel-d240_{fname}")
         assert list(rows[0]) == list(df.columns)
         np.testing.assert_array_equal(np.array(rows[1:], float), df.to_numpy())
     summ = {r[0]: r[1:] for r in wb[SHEET_NAMES["en"]["summary"]].values if r and r[0]}
@@ -120,8 +121,8 @@ def test_one_cylinder_spec_with_bearing_tables(tmp_path, capsys):
                             read_bearing_inputs(spec_path, spec))
     ps = fine.loads.pin_stats[0]
     assert f"most loaded: 1 (max {ps.max_N:.0f} N at alpha = {ps.alpha_max_deg:g} deg" in text
-    assert (out / "wear_journals.png").exists()
-    pins = pd.read_csv(out / "crankpins.csv")
+    assert (out / "diesel-d240_wear_journals.png").exists()
+    pins = pd.read_csv(out / "diesel-d240_crankpins.csv")
     t = engine.force_table(spec, settings=study.settings)
     np.testing.assert_array_equal(pins["R_1_N"].to_numpy(), t["R_N"].to_numpy())
     from openpyxl import load_workbook
@@ -145,11 +146,12 @@ def test_rigid_rod_spec_writes_rod_model(tmp_path, capsys):
     assert main(["engine", str(spec_path), "-o", str(out), "--lang", "ru"]) == 0
     text = capsys.readouterr().out
     assert "rigid rod" in text and "wear arcs +/-45 deg" in text
-    rm = pd.read_csv(out / "rod_model.csv")
+    rm = pd.read_csv(out / "diesel-d240_rod_model.csv")
     assert list(rm.columns[:4]) == ["alpha_deg", "K_2m_N", "K_rigid_N", "dK_N"]
     np.testing.assert_allclose(rm["dT_N"], rm["T_rigid_N"] - rm["T_2m_N"], rtol=1e-12)
-    assert (out / "rod_model.png").exists() and (out / "wear_pins.svg").exists()
-    assert (out / "wear_journals.png").exists()
+    assert (out / "diesel-d240_rod_model.png").exists()
+    assert (out / "diesel-d240_wear_pins.svg").exists()
+    assert (out / "diesel-d240_wear_journals.png").exists()
 
 
 def test_bad_bearing_keys_exit_2_and_write_nothing(tmp_path, capsys):

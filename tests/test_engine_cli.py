@@ -16,12 +16,17 @@ from crankbase.output import MANIFEST_NAME
 from crankdyn.cli import main
 from crankbase.resources import example_path
 from engine.plots import PLOT_NAMES, TRAIN_PLOT_NAMES
-from engine.report import TABLE2_FORCES
+from engine.report import TABLE2_FORCES, TABLE2_KEYS
 
 EXAMPLES = {"petrol": ("petrol_vaz2106.toml", "petrol-vaz2106.xlsx"),
             "diesel": ("diesel_d240.toml", "diesel-d240.xlsx"),
             "six": ("petrol_bmw_m54.toml", "petrol-bmw-m54b30.xlsx"),
             "v8": ("diesel_kamaz740.toml", "diesel-kamaz740.xlsx")}
+
+
+def named(name, file):
+    """An output of example ``name``: every file is named after the engine."""
+    return f"{EXAMPLES[name][1][:-5]}_{file}"
 
 
 def run_cli(*argv):
@@ -42,27 +47,29 @@ def run(request, tmp_path_factory):
 def test_outputs_exist(run):
     name, lang, out = run
     files = {p.name for p in out.iterdir()}
-    expected = {"forces.csv", "cylinders.csv", "torque.csv", "balance.csv", EXAMPLES[name][1],
-                MANIFEST_NAME}
-    expected |= {f"{s}.{e}" for s in PLOT_NAMES + TRAIN_PLOT_NAMES for e in ("png", "svg")}
+    expected = {named(name, f) for f in ("forces.csv", "table2.csv", "cylinders.csv",
+                                         "torque.csv", "balance.csv")}
+    expected |= {EXAMPLES[name][1], MANIFEST_NAME}
+    expected |= {named(name, f"{s}.{e}") for s in PLOT_NAMES + TRAIN_PLOT_NAMES
+                 for e in ("png", "svg")}
     assert files == expected          # nothing else (no temporary files left)
 
 
 def test_csv_equals_force_table(run):
     name, lang, out = run
-    df = pd.read_csv(out / "forces.csv")
+    df = pd.read_csv(out / named(name, "forces.csv"))
     study = engine.load(example_path(EXAMPLES[name][0]))
     t = engine.force_table(study.spec, settings=study.settings)
     assert list(df.columns) == list(engine.COLUMNS)
     np.testing.assert_array_equal(df.to_numpy(), t.to_numpy())   # full precision
-    text = (out / "forces.csv").read_text()
+    text = (out / named(name, "forces.csv")).read_text()
     assert text.splitlines()[0].startswith("alpha_deg,p_gas_MPa,dPg_N,Pj_N,P_N,beta_deg")
     assert ";" not in text
 
 
 def test_workbook_equals_csv(run):
     name, lang, out = run
-    df = pd.read_csv(out / "forces.csv")
+    df = pd.read_csv(out / named(name, "forces.csv"))
     wb = load_workbook(out / EXAMPLES[name][1])
     assert len(wb.worksheets) == 9
     ws_in, ws_t2, ws_sum, ws_data, ws_ch = wb.worksheets[:5]
@@ -70,8 +77,11 @@ def test_workbook_equals_csv(run):
     # Table 2: α, (mm, N) × 8 forces, Mкр, Ψ — numbers, not formulas
     assert ws_t2["C2"].value == mu
     n = len(df)
-    rows = list(ws_t2.iter_rows(min_row=5, max_row=4 + n, values_only=True))
-    assert ws_t2.cell(5 + n, 1).value is None
+    # row 5 (hidden): the column keys, for `crankdyn check`; data from row 6
+    assert ws_t2.row_dimensions[5].hidden
+    assert [c.value for c in ws_t2[5]][:19] == list(TABLE2_KEYS)
+    rows = list(ws_t2.iter_rows(min_row=6, max_row=5 + n, values_only=True))
+    assert ws_t2.cell(6 + n, 1).value is None
     arr = np.array(rows, dtype=float)
     np.testing.assert_array_equal(arr[:, 0], df["alpha_deg"])
     for k, col in enumerate(TABLE2_FORCES):
@@ -79,7 +89,7 @@ def test_workbook_equals_csv(run):
         np.testing.assert_allclose(arr[:, 1 + 2 * k], df[col] / mu, rtol=1e-15)  # mm
     np.testing.assert_array_equal(arr[:, 17], df["M_Nm"])
     np.testing.assert_array_equal(arr[:, 18], df["psi_deg"])
-    for row in ws_t2.iter_rows(min_row=5, max_row=4 + n):
+    for row in ws_t2.iter_rows(min_row=6, max_row=5 + n):
         for c in row:
             assert c.data_type == "n"
     # Data sheet: the CSV, header and values, at full precision
@@ -88,7 +98,7 @@ def test_workbook_equals_csv(run):
                                            values_only=True)), dtype=float)
     np.testing.assert_array_equal(data, df.to_numpy())
     # native charts
-    assert len(ws_ch._charts) == 4
+    assert len(ws_ch._charts) == 5      # 4 over α and the polar diagram
 
 
 def test_table2_layout_like_the_textbook(run):
@@ -148,8 +158,9 @@ def test_inputs_and_summary_sheets(run):
 def test_plots_exist_and_are_not_empty(run):
     import matplotlib.image as mpimg
 
-    _, _, out = run
+    name, _, out = run
     for stem in PLOT_NAMES + TRAIN_PLOT_NAMES:
+        stem = named(name, stem)
         png = out / f"{stem}.png"
         img = mpimg.imread(png)
         assert img.shape[0] > 300 and img.shape[1] > 300
@@ -173,9 +184,9 @@ def test_engine_csvs_equal_the_workbook_and_the_library(run):
     name, lang, out = run
     study = engine.load(example_path(EXAMPLES[name][0]))
     res = engine.analyze_engine(study.spec, study.train, study.settings)
-    cyl = pd.read_csv(out / "cylinders.csv")
-    tq = pd.read_csv(out / "torque.csv")
-    bal = pd.read_csv(out / "balance.csv")
+    cyl = pd.read_csv(out / named(name, "cylinders.csv"))
+    tq = pd.read_csv(out / named(name, "torque.csv"))
+    bal = pd.read_csv(out / named(name, "balance.csv"))
     assert list(cyl.columns) == ["cylinder", "bank", "throw", "axial_position_mm",
                                  "bank_angle_deg", "throw_angle_deg", "phase_deg"]
     n = study.spec.cylinders
@@ -224,7 +235,11 @@ def test_engine_csvs_equal_the_workbook_and_the_library(run):
 
 
 def test_terminal_summary(tmp_path, capsys):
-    assert run_cli("--example", "-o", tmp_path) == 0
+    assert run_cli("--example", "-o", tmp_path / "ru") == 0
+    text = capsys.readouterr().out             # Russian textbook symbols for ru
+    for word in ("pг max", "Mкр.ср", "Rшш max", "χ =", "среднее индикаторное давление"):
+        assert word in text
+    assert run_cli("--example", "-o", tmp_path, "--lang", "en") == 0
     text = capsys.readouterr().out
     for word in ("peak gas pressure", "P max", "T max", "mean torque", "chi", "petrol",
                  "firing order 1-3-4-2", "mu =", "excess work", "J0 =", "balance"):
@@ -234,7 +249,7 @@ def test_terminal_summary(tmp_path, capsys):
 def test_step_option_and_spec_path(tmp_path):
     spec = example_path("diesel_d240.toml")
     assert run_cli(spec, "-o", tmp_path, "--step", 10, "--lang", "en") == 0
-    df = pd.read_csv(tmp_path / "forces.csv")
+    df = pd.read_csv(tmp_path / "diesel-d240_forces.csv")
     assert len(df) == 73 + 1          # 0..720 every 10°, plus 375° (370° is on the grid)
     assert 375 in set(df["alpha_deg"])
 
@@ -395,14 +410,14 @@ def test_existing_report_survives_a_crash_while_saving(tmp_path, monkeypatch, ca
 
 
 def test_output_may_not_overwrite_an_input(tmp_path, capsys):
-    (tmp_path / "forces.csv").write_text("angle_deg,p_MPa\n0,0.1\n360,5\n")
+    (tmp_path / "t_forces.csv").write_text("angle_deg,p_MPa\n0,0.1\n360,5\n")
     spec = tmp_path / "spec.toml"
     spec.write_text(GOOD.replace("angle_deg = [0, 360, 370]\np_MPa = [0.1, 6, 7]\n",
-                                 "file = 'forces.csv'\n"))
-    before = (tmp_path / "forces.csv").read_text()
+                                 "file = 't_forces.csv'\n"))
+    before = (tmp_path / "t_forces.csv").read_text()
     assert run_cli(spec, "-o", tmp_path) == 2
     assert "input" in capsys.readouterr().err
-    assert (tmp_path / "forces.csv").read_text() == before
+    assert (tmp_path / "t_forces.csv").read_text() == before
 
 
 def test_name_is_text_not_formula(tmp_path):
@@ -425,6 +440,6 @@ def test_two_stroke_engine_end_to_end(tmp_path):
                              "angle_deg = [0, 10, 120, 180, 240, 350]\n"
                              "p_MPa = [5.5, 6.0, 0.5, 0.1, 0.3, 2.5]"))
     assert run_cli(spec, "-o", tmp_path / "o", "--step", 15) == 0
-    df = pd.read_csv(tmp_path / "o" / "forces.csv")
+    df = pd.read_csv(tmp_path / "o" / "two-stroke_forces.csv")
     assert df["alpha_deg"].iloc[-1] == 360 and len(df) == 25
-    assert (tmp_path / "o" / "polar_Rshsh.png").stat().st_size > 10000
+    assert (tmp_path / "o" / "two-stroke_polar_Rshsh.png").stat().st_size > 10000

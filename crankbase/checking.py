@@ -1,0 +1,305 @@
+"""Check a student's table against computed values (``crankdyn check``): read, compare,
+mark.  Nothing here computes physics: the computed table comes from the calculation
+package (``engine.check``, ``linkage.check``); this module reads the student's table
+(a workbook in our layout, a CSV with our column names, or either with a column mapping),
+compares it cell by cell with a documented tolerance and writes a marked copy.
+
+Tolerance: a value passes when |student − computed| ≤ atol + rtol·|computed|.  ``rtol``
+defaults to :data:`crankbase.tolerances.CHECK_RTOL` (2 %: a graphical plan or a
+hand-drawn diagram is good to a few per cent); ``atol``, unless given, is
+:data:`crankbase.tolerances.CHECK_ATOL_OF_SCALE` times the largest magnitude of the
+computed column, so a value near a zero crossing (T at α = 0) is judged against the
+scale of its column instead of against zero.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from .errors import Problem, SpecError
+from .tolerances import CHECK_ATOL_OF_SCALE, CHECK_RTOL
+
+__all__ = ["StudentTable", "read_student_table", "parse_mapping", "compare", "verdicts",
+           "mark_workbook", "CHECK_COLUMNS"]
+
+#: Columns of check.csv (``alpha_deg`` is replaced by the table's key column).
+CHECK_COLUMNS = ("column", "student", "computed", "deviation", "ok")
+
+_HEADER_SCAN_ROWS = 12
+
+
+@dataclass
+class StudentTable:
+    """A student's table: values by our column keys, rows in the student's order.
+
+    Attributes
+    ----------
+    data : pandas.DataFrame
+        Column ``key`` first (α or position), then every recognised column; a cell that
+        is empty is NaN, a cell that is not a number is kept as text.
+    cells : dict
+        (row index, column) → (sheet title, cell coordinate) for a workbook; empty for CSV.
+    source : Path
+    ignored : list of str
+        Headers that are not columns of the computed table.
+    """
+
+    data: object
+    cells: dict = field(default_factory=dict)
+    source: Path | None = None
+    ignored: list = field(default_factory=list)
+
+
+def parse_mapping(items) -> dict:
+    """``["T, Н=T_N", "α=alpha_deg"]`` → {"T, Н": "T_N", "α": "alpha_deg"} (the CLI's
+    ``--map``); the last ``=`` splits, so a header may contain "=" itself."""
+    out, problems = {}, []
+    for item in items or ():
+        head, sep, key = str(item).rpartition("=")
+        if not sep or not head.strip() or not key.strip():
+            problems.append(Problem("--map", f"got {item!r}; write STUDENT_HEADER=our_column"))
+            continue
+        out[head.strip()] = key.strip()
+    if problems:
+        raise SpecError(problems)
+    return out
+
+
+def _number(v):
+    if v is None:
+        return np.nan
+    if isinstance(v, bool):
+        return v
+    if isinstance(v, (int, float)):
+        return float(v)
+    text = str(v).strip().replace("\u2212", "-").replace(",", ".")
+    if not text:
+        return np.nan
+    try:
+        return float(text)
+    except ValueError:
+        return str(v)
+
+
+def _frame(header, rows, key, known, mapping):
+    """Pick the recognised columns of a header + rows block."""
+    import pandas as pd
+
+    names = [mapping.get(str(h).strip(), str(h).strip()) if h is not None else ""
+             for h in header]
+    keep = [(j, n) for j, n in enumerate(names) if n == key or n in known]
+    seen, cols = set(), []
+    for j, n in keep:
+        if n not in seen:
+            seen.add(n)
+            cols.append((j, n))
+    ignored = [n for n in names if n and n not in seen and n != key]
+    data = {n: [_number(r[j]) if j < len(r) else np.nan for r in rows] for j, n in cols}
+    return pd.DataFrame(data, columns=[n for _, n in cols]), cols, ignored
+
+
+def read_student_table(path, key, known, mapping=None) -> StudentTable:
+    """Read a student's table.
+
+    Parameters
+    ----------
+    path : str or Path
+        ``.xlsx`` (every sheet is searched for a header row holding ``key``, within its
+        first rows: our workbooks have such a row, hidden on Table 2) or ``.csv``
+        (``,`` or ``;``; header in the first row).
+    key : str
+        The row key column: ``alpha_deg`` (engine) or ``position`` (linkage).
+    known : collection of str
+        Column names the computed table has; other columns are ignored (and listed).
+    mapping : dict, optional
+        Student header → our column name (:func:`parse_mapping`).
+
+    Raises
+    ------
+    SpecError
+        The file is missing, or no sheet/CSV has the key column.
+    """
+    import pandas as pd
+
+    path = Path(path)
+    mapping = dict(mapping or {})
+    if not path.is_file():
+        raise SpecError(Problem(str(path), "student's table does not exist"))
+    known = set(known)
+    if path.suffix.lower() in (".xlsx", ".xlsm"):
+        from openpyxl import load_workbook
+
+        wb = load_workbook(path, data_only=True)
+        frames, cells, ignored = [], {}, []
+        for ws in wb.worksheets:
+            rows = list(ws.iter_rows(max_row=_HEADER_SCAN_ROWS, values_only=True))
+            hdr = next((i for i, r in enumerate(rows, start=1)
+                        if key in [mapping.get(str(v).strip(), str(v).strip())
+                                   for v in r if v is not None]), None)
+            if hdr is None:
+                continue
+            header = [c.value for c in ws[hdr]]
+            kj = [mapping.get(str(v).strip(), str(v).strip()) if v is not None else ""
+                  for v in header].index(key)
+            body, coords = [], []
+            for row in ws.iter_rows(min_row=hdr + 1):
+                if row[kj].value is None:
+                    if body:
+                        break
+                    continue
+                body.append([c.value for c in row])
+                coords.append([c.coordinate for c in row])
+            df, cols, ign = _frame(header, body, key, known, mapping)
+            taken = set().union(*(set(f.columns) for f in frames)) if frames else set()
+            new = [n for _, n in cols if n not in taken or n == key]
+            if len(new) <= 1:
+                continue
+            frames.append(df[new])
+            ignored += ign
+            for i in range(len(body)):
+                for j, n in cols:
+                    if n in new and n != key:
+                        cells[(i, n)] = (ws.title, coords[i][j])
+            cells.setdefault("_sheets", []).append(ws.title)
+        if not frames:
+            raise SpecError(Problem(str(path), f"no sheet has a column {key!r} in its first "
+                                    f"{_HEADER_SCAN_ROWS} rows (our workbook layout), and "
+                                    "none was mapped to it with --map HEADER=" + key))
+        data = _join(frames, key, path)
+        sheets = cells.pop("_sheets")
+        # rows of later sheets are matched by key: re-point their cells
+        return StudentTable(data, _repoint(cells, frames, data, key, sheets), path, ignored)
+    import csv
+
+    text = path.read_text(encoding="utf-8-sig")
+    lines = text.splitlines()
+    head = lines[0] if lines else ""
+    delim = ";" if head.count(";") > head.count(",") else ","
+    rows = [r for r in csv.reader(lines, delimiter=delim) if any(x.strip() for x in r)]
+    header = [mapping.get(h.strip(), h.strip()) for h in rows[0]] if rows else []
+    if key not in header:
+        raise SpecError(Problem(str(path), f"no column {key!r}; columns: "
+                                + ", ".join(rows[0] if rows else [])
+                                + f" (map one with --map HEADER={key})"))
+    df, _, ignored = _frame(header, rows[1:], key, known, {})
+    return StudentTable(df, {}, path, ignored)
+
+
+def _join(frames, key, path):
+    out = frames[0]
+    for f in frames[1:]:
+        out = out.merge(f, on=key, how="left", sort=False)
+    if out[key].duplicated().any():
+        dup = out[key][out[key].duplicated()].tolist()
+        raise SpecError(Problem(str(path), f"{key} repeats: {dup[:5]}"))
+    return out
+
+
+def _repoint(cells, frames, data, key, sheets):
+    """Cell locations by row of the joined table (frames after the first matched by key)."""
+    out = {}
+    order = {v: i for i, v in enumerate(data[key].tolist())}
+    for (i, col), loc in cells.items():
+        f = next(f for f in frames if col in f.columns)
+        k = f[key].iat[i]
+        if k in order:
+            out[(order[k], col)] = loc
+    return out
+
+
+def compare(student: StudentTable, computed, key, rtol=None, atol=None):
+    """Compare every recognised column of the student's table with the computed one.
+
+    Parameters
+    ----------
+    student : StudentTable
+    computed : pandas.DataFrame
+        The same rows (one per student row, same order) and every column.
+    key : str
+    rtol : float, optional
+        Default :data:`~crankbase.tolerances.CHECK_RTOL`.
+    atol : float, optional
+        Default: :data:`~crankbase.tolerances.CHECK_ATOL_OF_SCALE` × max |computed column|.
+
+    Returns
+    -------
+    pandas.DataFrame
+        ``key, column, student, computed, deviation, ok`` in the student's row order, then
+        column order; a text cell or an empty one where a number is due is not ok.
+    """
+    import pandas as pd
+
+    rtol = CHECK_RTOL if rtol is None else float(rtol)
+    recs = []
+    s = student.data
+    for col in s.columns:
+        if col == key:
+            continue
+        comp = computed[col].to_numpy(float)
+        finite = np.isfinite(comp)
+        scale = float(np.abs(comp[finite]).max()) if finite.any() else 0.0
+        tol_abs = CHECK_ATOL_OF_SCALE * scale if atol is None else float(atol)
+        for i, (kv, sv, cv) in enumerate(zip(s[key], s[col], comp)):
+            if isinstance(sv, str) or (isinstance(sv, float) and np.isnan(sv)):
+                ok = isinstance(sv, float) and not np.isfinite(cv)   # both empty
+                recs.append((kv, col, sv if isinstance(sv, str) else None, cv, None, ok, i))
+                continue
+            dev = float(sv) - cv
+            if col.endswith("_deg") and np.isfinite(dev):
+                dev = (dev + 180.0) % 360.0 - 180.0      # an angle: −180° is +180°
+            ok = bool(np.isfinite(cv) and abs(dev) <= tol_abs + rtol * abs(cv))
+            recs.append((kv, col, float(sv), cv, dev, ok, i))
+    out = pd.DataFrame(recs, columns=[key, *CHECK_COLUMNS, "row_index"])
+    return out
+
+
+def verdicts(check, key, lang="en"):
+    """One line per column: all rows right, or how many are wrong and where."""
+    lines = []
+    for col, g in check.groupby("column", sort=False):
+        bad = g[~g["ok"]]
+        dev = g["deviation"].abs().max()
+        keyname = {"alpha_deg": "α", "position": "position" if lang == "en" else "положение"}[key]
+        where = ", ".join(f"{v:g}" if isinstance(v, float) else str(v)
+                          for v in bad[key].tolist()[:8]) + (" …" if len(bad) > 8 else "")
+        if lang == "ru":
+            lines.append(f"  {col:14s} " + ("верно" if bad.empty else
+                         f"НЕВЕРНО {len(bad)} из {len(g)} ({keyname} = {where})")
+                         + (f";  max |отклонение| = {dev:.4g}" if np.isfinite(dev) else ""))
+        else:
+            lines.append(f"  {col:14s} " + ("right" if bad.empty else
+                         f"WRONG {len(bad)} of {len(g)} ({keyname} = {where})")
+                         + (f";  max |deviation| = {dev:.4g}" if np.isfinite(dev) else ""))
+    return lines
+
+
+def mark_workbook(student: StudentTable, check, dst, lang="en") -> int:
+    """A copy of the student's workbook with every wrong cell filled red and a comment
+    carrying the computed value.  Returns the number of cells marked."""
+    from openpyxl import load_workbook
+    from openpyxl.comments import Comment
+    from openpyxl.styles import PatternFill
+
+    from .output import atomic_path
+
+    wb = load_workbook(student.source)
+    red = PatternFill("solid", fgColor="FF7C80")
+    n = 0
+    for rec in check[~check["ok"]].itertuples(index=False):
+        loc = student.cells.get((rec.row_index, rec.column))
+        if loc is None:
+            continue
+        cell = wb[loc[0]][loc[1]]
+        cell.fill = red
+        right = f"{rec.computed:.6g}" if np.isfinite(rec.computed) else "—"
+        text = (f"верно: {right}" if lang == "ru" else f"right value: {right}")
+        if rec.deviation is not None and np.isfinite(rec.deviation):
+            text += (f" (отклонение {rec.deviation:+.4g})" if lang == "ru"
+                     else f" (deviation {rec.deviation:+.4g})")
+        cell.comment = Comment(text, "crankdyn check", width=220, height=60)
+        n += 1
+    with atomic_path(dst) as tmp:
+        wb.save(tmp)
+    return n

@@ -1,0 +1,42 @@
+"""The computed side of ``crankdyn check`` for an engine: every column a student's Table 2
+may hold (either textbook form, and the force-table columns), at the student's own crank
+angles.  Computed by :func:`engine.force_table` and :func:`engine.table2.table2`; the
+comparison itself is :mod:`crankbase.checking`.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["KEY", "known_columns", "computed_rows"]
+
+#: The row key of an engine table.
+KEY = "alpha_deg"
+
+
+def known_columns():
+    """Every column name a student's engine table may use (force table ∪ both forms)."""
+    from .forces import COLUMNS
+    from .table2 import FORMS, table2_columns
+
+    names = list(COLUMNS)
+    for form in FORMS:
+        names += [c for c in table2_columns(form) if c not in names]
+    return names
+
+
+def computed_rows(spec, settings, alpha_deg):
+    """The computed table at the given crank angles [deg], every :func:`known_columns`
+    column, one row per angle in the given order."""
+    import pandas as pd
+
+    from .forces import force_table
+    from .table2 import FORMS, table2
+
+    a = np.asarray(alpha_deg, float)
+    t = force_table(spec, a, settings=settings)
+    parts = [t] + [table2(t, spec, settings, form) for form in FORMS]
+    out = {}
+    for p in parts:
+        for c in p.columns:
+            out.setdefault(c, p[c].to_numpy())
+    return pd.DataFrame(out)[known_columns()]

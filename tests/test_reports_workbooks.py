@@ -1,0 +1,311 @@
+"""Workbooks a student hands in (issue 14): chart series told apart in grey-scale print,
+English workbooks without Cyrillic (Russian ones with every textbook symbol), every sheet
+of every workbook set up for A4 with readable row heights and charts kept on one page,
+Table 2 in both textbook forms with the same numbers behind them."""
+import math
+import re
+import shutil
+import subprocess
+import zipfile
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+from openpyxl import load_workbook
+
+import engine
+from crankbase.resources import example_path
+from crankdyn.cli import main
+from engine.table2 import coefficients, table2, table2_columns
+
+CYRILLIC = re.compile("[\u0400-\u04FF]")
+RUSSIAN_SYMBOLS = ("ΔPг", "Pj", "Sш", "Mкр", "Kr.ш", "Rшш", "Ψ", "Lш", "Fп", "mш.к", "pг",
+                   "β", "α", "μP", "Mкр.ср", "Rшш.ср", "vп.ср")
+
+
+@pytest.fixture(scope="module")
+def runs(tmp_path_factory):
+    """Every workbook the CLI writes: engine (both examples × languages × forms),
+    linkage (two examples), synthesis."""
+    out = {}
+    for ex in ("petrol", "diesel"):
+        for lang in ("ru", "en"):
+            for form in ("seed", "kolchin"):
+                d = tmp_path_factory.mktemp(f"{ex}_{lang}_{form}")
+                assert main(["engine", "--example", ex, "-o", str(d), "--lang", lang,
+                             "--form", form]) == 0
+                out[("engine", ex, lang, form)] = next(d.glob("*.xlsx"))
+                out[("table2", ex, lang, form)] = next(d.glob("*_table2.csv"))
+    for ex in ("ratchet", "press"):
+        d = tmp_path_factory.mktemp(ex)
+        assert main(["linkage", "--example", ex, "-o", str(d), "--no-plots"]) == 0
+        out[("linkage", ex)] = next(d.glob("*.xlsx"))
+    d = tmp_path_factory.mktemp("synth")
+    assert main(["synth", "--phi0", "30", "--l1", "0.15", "-o", str(d), "--no-plots"]) == 0
+    out[("synth",)] = next(d.glob("*.xlsx"))
+    return out
+
+
+def _chart_series(path):
+    """(chart file, [(colour, dash, title)]) of every native chart, from the XML."""
+    ns = {"c": "http://schemas.openxmlformats.org/drawingml/2006/chart",
+          "a": "http://schemas.openxmlformats.org/drawingml/2006/main"}
+    import xml.etree.ElementTree as ET
+
+    charts = []
+    with zipfile.ZipFile(path) as z:
+        for name in sorted(n for n in z.namelist() if n.startswith("xl/charts/chart")):
+            root = ET.fromstring(z.read(name))
+            series = []
+            for ser in root.iter(f"{{{ns['c']}}}ser"):
+                ln = ser.find("c:spPr/a:ln", ns)
+                clr = ln.find("a:solidFill/a:srgbClr", ns) if ln is not None else None
+                dash = ln.find("a:prstDash", ns) if ln is not None else None
+                if ln is not None and ln.find("a:noFill", ns) is not None:
+                    assert ser.find("c:marker/c:symbol", ns).get("val") != "none"
+                    continue                   # markers only (the poles): no line
+                series.append((None if clr is None else clr.get("val"),
+                               None if dash is None else dash.get("val")))
+            charts.append((name, series))
+    return charts
+
+
+def _grey(hex_rgb):
+    r, g, b = (int(hex_rgb[i:i + 2], 16) for i in (0, 2, 4))
+    return 0.299 * r + 0.587 * g + 0.114 * b
+
+
+def test_every_chart_series_has_its_own_colour_and_dash(runs):
+    for key, path in runs.items():
+        if key[0] != "engine":
+            continue
+        charts = _chart_series(path)
+        assert len(charts) == 6      # 4 over α, the polar diagram, the total torque
+        for name, series in charts:
+            colours = [c for c, _ in series]
+            dashes = [d for _, d in series]
+            assert None not in colours and None not in dashes, (key, name, series)
+            assert len(set(colours)) == len(colours), (key, name, series)
+            assert len(set(dashes)) == len(dashes), (key, name, series)
+            # told apart in grey-scale print as well: lightness differs by > 10 % (the
+            # thin per-cylinder series under a total are told apart by their dashes)
+            if len(series) <= 4:
+                greys = sorted(_grey(c) for c in colours)
+                assert all(b - a > 25 for a, b in zip(greys, greys[1:])), (key, name, greys)
+
+
+def _strings(wb, skip_symbol_table=True):
+    """Every text in a workbook (cells, sheet names) except the symbol table rows."""
+    for ws in wb.worksheets:
+        yield ws.title, "sheet name", ws.title
+        for row in ws.iter_rows():
+            if skip_symbol_table and row[0].value == "symbols":
+                continue
+            for c in row:
+                if isinstance(c.value, str):
+                    yield ws.title, c.coordinate, c.value
+
+
+def test_english_workbooks_have_no_cyrillic(runs):
+    for key, path in runs.items():
+        if key[0] != "engine" or key[2] != "en":
+            continue
+        wb = load_workbook(path)
+        bad = [(s, where, v) for s, where, v in _strings(wb) if CYRILLIC.search(v)]
+        assert not bad, (key, bad[:5])
+        with zipfile.ZipFile(path) as z:            # chart titles and series names
+            for name in z.namelist():
+                if name.startswith("xl/charts/"):
+                    assert not CYRILLIC.search(z.read(name).decode()), (key, name)
+
+
+def test_russian_workbooks_carry_every_textbook_symbol(runs):
+    for key, path in runs.items():
+        if key[0] != "engine" or key[2] != "ru" or key[3] != "seed":
+            continue
+        text = "\n".join(v for _, _, v in _strings(load_workbook(path)))
+        with zipfile.ZipFile(path) as z:
+            text += "".join(z.read(n).decode() for n in z.namelist()
+                            if n.startswith("xl/charts/"))
+        missing = [s for s in RUSSIAN_SYMBOLS if s not in text]
+        assert not missing, (key, missing)
+
+
+def test_every_sheet_has_an_a4_print_setup(runs):
+    for key, path in runs.items():
+        if key[0] == "table2":
+            continue
+        wb = load_workbook(path)
+        for ws in wb.worksheets:
+            ps = ws.page_setup
+            assert int(ps.paperSize) == 9, (key, ws.title)          # A4
+            assert ps.orientation in ("portrait", "landscape"), (key, ws.title)
+            assert ws.sheet_properties.pageSetUpPr.fitToPage, (key, ws.title)
+            assert int(ps.fitToHeight) == 0 and int(ps.fitToWidth) >= 1, (key, ws.title)
+            # a sheet wider than ~190 width units prints on more than one page width
+            from openpyxl.utils import get_column_letter
+            letters = [get_column_letter(j) for j in range(1, ws.max_column + 1)]
+            widths = [ws.column_dimensions[c].width or 8.43 for c in letters
+                      if not ws.column_dimensions[c].hidden]
+            assert sum(widths) / int(ps.fitToWidth) <= 200, (key, ws.title, sum(widths))
+
+
+def test_wrapped_text_rows_are_tall_enough(runs):
+    """A wrapped label never overlaps the next row: each row with wrapped text has a
+    height of at least its number of lines (at the column's width) × 12 pt."""
+    for key, path in runs.items():
+        if key[0] != "engine":
+            continue
+        wb = load_workbook(path)
+        for ws in (wb.worksheets[0], wb.worksheets[2]):
+            merged = {r.min_row: r for r in ws.merged_cells.ranges}
+            for row in ws.iter_rows(min_row=3):
+                for c in row:
+                    if not (isinstance(c.value, str) and c.alignment.wrap_text):
+                        continue
+                    if c.row in merged and merged[c.row].min_col == c.column:
+                        m = merged[c.row]
+                        width = sum(ws.column_dimensions[ws.cell(1, j).column_letter].width
+                                    for j in range(m.min_col, m.max_col + 1))
+                    else:
+                        width = ws.column_dimensions[c.column_letter].width
+                    lines = sum(math.ceil(len(p) * 1.05 / width) or 1
+                                for p in c.value.split("\n"))
+                    height = ws.row_dimensions[c.row].height
+                    if lines > 1:
+                        assert height and height >= 12 * lines, (key, ws.title,
+                                                                 c.coordinate, c.value)
+
+
+def test_charts_are_not_split_by_page_breaks():
+    from engine.report import build_workbook
+
+    study = engine.load(example_path("petrol_vaz2106.toml"))
+    result = engine.analyze(study.spec, study.settings)
+    spec, table = result.spec, result.table
+    wb = build_workbook(result, "ru")
+    ws = wb.worksheets[4]
+    breaks = sorted(b.id for b in ws.row_breaks.brk)
+    assert breaks                                    # four charts: two pages
+    for ch in ws._charts:
+        # a break with id b ends a page after row b (1-based); the chart covers rows
+        # first … last (its height in cm over rows of 15 pt = 0.529 cm)
+        first = int(re.sub(r"[A-Z]", "", ch.anchor))
+        last = first + math.ceil(ch.height / 0.529)
+        assert not any(first <= b < last for b in breaks), (ch.anchor, breaks)
+
+
+# ----------------------------------------------------------------------- Table 2 forms
+@pytest.mark.parametrize("name", ["petrol_vaz2106.toml", "diesel_d240.toml"])
+def test_kolchin_coefficients_reproduce_the_dyad_forces(name):
+    """Kolchin's route (p × coefficient × Fп) equals the Assur-dyad forces: an independent
+    check of N, Sш, K, T (Колчин & Демидов 2008, § "Силы, действующие в КШМ")."""
+    study = engine.load(example_path(name))
+    spec = study.spec
+    t = engine.force_table(spec, settings=study.settings)
+    k = table2(t, spec, study.settings, "kolchin")
+    P = t["P_N"].to_numpy()
+    scale = np.abs(P).max()
+    np.testing.assert_allclose(k["P_MPa"] * k["tg_beta"] * spec.area * 1e6, t["N_N"],
+                               atol=1e-9 * scale)
+    np.testing.assert_allclose(k["P_MPa"] * k["inv_cos_beta"] * spec.area * 1e6, t["S_N"],
+                               atol=1e-9 * scale)
+    np.testing.assert_allclose(k["P_MPa"] * k["K_coef"] * spec.area * 1e6, t["K_N"],
+                               atol=1e-9 * scale)
+    np.testing.assert_allclose(k["P_MPa"] * k["T_coef"] * spec.area * 1e6, t["T_N"],
+                               atol=1e-9 * scale)
+    np.testing.assert_allclose(k["K_MPa"] * spec.area * 1e6, t["K_N"], rtol=1e-12)
+    # β = arcsin(λ sin α) for the central mechanism (domain brief § 5)
+    a = np.radians(t["alpha_deg"])
+    np.testing.assert_allclose(np.radians(t["beta_deg"]), np.arcsin(spec.lam * np.sin(a)),
+                               atol=1e-12)
+
+
+def test_coefficients_at_known_angles():
+    """At α = 90° with λ = 0.25: tg β = 0.25/√(1 − 0.0625); sin(α+β)/cos β = 1;
+    cos(α+β)/cos β = −tg β (hand computation)."""
+    beta = np.degrees(np.arcsin(0.25))
+    c = coefficients([90.0], [beta])
+    assert c["tg_beta"][0] == pytest.approx(0.25 / math.sqrt(1 - 0.0625), rel=1e-14)
+    assert c["inv_cos_beta"][0] == pytest.approx(1 / math.sqrt(1 - 0.0625), rel=1e-14)
+    assert c["T_coef"][0] == pytest.approx(1.0, rel=1e-14)
+    assert c["K_coef"][0] == pytest.approx(-c["tg_beta"][0], rel=1e-13)
+
+
+def test_both_forms_share_the_numbers(runs):
+    """<name>_table2.csv in either form: the columns of the form, the numbers of the
+    force table (bit for bit where both hold a column)."""
+    for ex, spec_name in (("petrol", "petrol_vaz2106.toml"), ("diesel", "diesel_d240.toml")):
+        study = engine.load(example_path(spec_name))
+        t = engine.force_table(study.spec, settings=study.settings)
+        for form in ("seed", "kolchin"):
+            got = pd.read_csv(runs[("table2", ex, "ru", form)])
+            assert list(got.columns) == table2_columns(form)
+            want = table2(t, study.spec, study.settings, form)
+            np.testing.assert_array_equal(got.to_numpy(), want.to_numpy())
+            for col in ("T_N", "M_Nm", "alpha_deg", "beta_deg"):
+                np.testing.assert_array_equal(got[col], t[col])
+    mm = pd.read_csv(runs[("table2", "petrol", "ru", "seed")])
+    mu = engine.load(example_path("petrol_vaz2106.toml")).settings.force_scale
+    np.testing.assert_allclose(mm["P_mm"] * mu, mm["P_N"], rtol=1e-12)
+
+
+def test_table_form_in_the_spec_and_refused_when_unknown(tmp_path, capsys):
+    d, _ = engine.spec.read_toml(example_path("petrol_vaz2106.toml"))
+    d["table"]["form"] = "kolchin"
+    assert engine.load(d).settings.form == "kolchin"
+    d["table"]["form"] = "pretty"
+    with pytest.raises(engine.EngineSpecError) as e:
+        engine.load(d)
+    assert "table.form" in str(e.value) and "kolchin" in str(e.value)
+
+
+# ----------------------------------------------------------------------- render on A4
+@pytest.mark.slow
+@pytest.mark.skipif(shutil.which("soffice") is None or shutil.which("pdfinfo") is None,
+                    reason="LibreOffice or poppler-utils not installed")
+def test_workbooks_render_on_a4_pages(runs, tmp_path):
+    """LibreOffice prints every workbook to PDF: every page is A4 (either orientation)
+    and every sheet yields at least one page."""
+    chosen = [("engine", "petrol", "ru", "seed"), ("engine", "diesel", "en", "kolchin"),
+              ("linkage", "ratchet"), ("synth",)]      # every layout, each language
+    for key in chosen:
+        path = runs[key]
+        out = tmp_path / "_".join(key)
+        out.mkdir()
+        subprocess.run(["soffice", "--headless", "--convert-to", "pdf", "--outdir",
+                        str(out), str(path)], check=True, capture_output=True, timeout=300)
+        pdf = next(out.glob("*.pdf"))
+        info = subprocess.run(["pdfinfo", "-f", "1", "-l", "10000", str(pdf)], check=True,
+                              capture_output=True, text=True).stdout
+        pages = re.findall(r"Page\s+\d+ size:\s+([\d.]+) x ([\d.]+) pts", info)
+        sizes = {tuple(sorted((round(float(w)), round(float(h))))) for w, h in pages}
+        assert sizes == {(595, 842)}, (key, sizes)                  # A4, either way
+        assert len(pages) >= len(load_workbook(path).worksheets), key
+
+
+def test_native_polar_chart():
+    """The polar diagram as an editable Excel scatter chart: K downwards (reversed axis),
+    equal spans on both axes of a square chart (the shape is kept), the locus of (T, K)
+    from the Data sheet and the poles O and Oш = (0, −Kr.ш) as markers."""
+    from engine.report import build_workbook
+
+    study = engine.load(example_path("petrol_vaz2106.toml"))
+    result = engine.analyze(study.spec, study.settings)
+    spec, table = result.spec, result.table
+    wb = build_workbook(result, "ru")
+    ws = wb.worksheets[4]
+    polar = ws._charts[-1]
+    assert polar.y_axis.scaling.orientation == "maxMin"
+    assert polar.width == polar.height
+    xs = polar.x_axis.scaling.max - polar.x_axis.scaling.min
+    ys = polar.y_axis.scaling.max - polar.y_axis.scaling.min
+    assert xs == pytest.approx(ys)
+    curve, poles = polar.series
+    assert "$J$" in curve.xVal.numRef.f and "$I$" in curve.yVal.numRef.f   # T_N, K_N
+    assert [c.value for c in ws["N"] if isinstance(c.value, float)] == [0.0, -spec.Kr]
+    assert polar.x_axis.scaling.min <= table["T_N"].min()
+    assert polar.x_axis.scaling.max >= table["T_N"].max()
+    assert polar.y_axis.scaling.min <= min(table["K_N"].min(), -spec.Kr)
+    assert polar.y_axis.scaling.max >= max(table["K_N"].max(), -spec.Kr)

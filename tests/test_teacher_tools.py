@@ -1,0 +1,266 @@
+"""Teacher tools (issue 14): ``crankdyn engine --variants`` (one complete report per
+variant, a summary equal to the individual reports, bad rows reported by row and key
+without stopping the good ones) and ``crankdyn check`` (a workbook we wrote, altered by
+known amounts, is flagged at exactly those cells; an unaltered one passes)."""
+import shutil
+
+import numpy as np
+import pandas as pd
+import pytest
+from openpyxl import load_workbook
+
+import engine
+from crankbase.checking import parse_mapping
+from crankbase.errors import SpecError
+from crankbase.resources import example_path
+from crankdyn.cli import main
+from engine.plots import PLOT_NAMES, TRAIN_PLOT_NAMES
+from engine.report import KOLCHIN_SHEET
+from engine.variants import VariantRow, apply_variant, parse_cell, read_variants
+
+PETROL = example_path("petrol_vaz2106.toml")
+
+
+# ----------------------------------------------------------------------------- variants
+def _variants_table(n, broken_row_index):
+    """n petrol variants (bore, stroke, rod mass per area, speed, form); one broken."""
+    rng = np.random.default_rng(14)
+    rows = []
+    for i in range(n):
+        rows.append({"variant": f"V{i + 1:02d}",
+                     "engine.bore_mm": round(float(rng.uniform(72, 92)), 1),
+                     "engine.stroke_mm": round(float(rng.uniform(70, 90)), 1),
+                     "masses.rod_kg_m2": round(float(rng.uniform(120, 180)), 1),
+                     "engine.speed_rpm": int(rng.integers(4000, 6000)),
+                     "table.form": "kolchin" if i % 3 == 0 else "seed"})
+    rows[broken_row_index]["engine.bore_mm"] = -5          # a deliberately broken row
+    return pd.DataFrame(rows)
+
+
+@pytest.mark.slow
+def test_thirty_variants_end_to_end(tmp_path, capsys):
+    n, broken = 30, 16
+    table = _variants_table(n, broken)
+    path = tmp_path / "variants.csv"
+    table.to_csv(path, index=False)
+    out = tmp_path / "out"
+    assert main(["engine", str(PETROL), "--variants", str(path), "-o", str(out),
+                 "--lang", "en", "--jobs", "2"]) == 1        # one row failed
+    cap = capsys.readouterr()
+    bad_row = broken + 2                                     # header is row 1
+    assert f"row {bad_row} (V{broken + 1:02d}): engine.bore_mm: got -5" in cap.err
+    assert f"{n - 1} written" in cap.out and "1 failed" in cap.out
+    summary = pd.read_csv(out / "variants_summary.csv")
+    assert len(summary) == n - 1
+    assert f"V{broken + 1:02d}" not in set(summary["variant"])
+    assert not (out / f"V{broken + 1:02d}").exists()
+    errors = pd.read_csv(out / "variants_errors.csv")
+    assert errors["row"].tolist() == [bad_row]
+    # the summary equals the individual reports, variant by variant
+    for rec in summary.itertuples(index=False):
+        folder = out / rec.variant
+        files = sorted(p.name for p in folder.iterdir())
+        assert f"{rec.variant}.xlsx" in files and f"{rec.variant}_forces.csv" in files
+        assert len([f for f in files if f.endswith(".png")]) == len(PLOT_NAMES
+                                                                    + TRAIN_PLOT_NAMES)
+        wb = load_workbook(folder / f"{rec.variant}.xlsx", read_only=True)
+        rows = {r[0]: r for r in wb.worksheets[2].iter_rows(min_row=4, values_only=True)
+                if r[0]}
+        assert rows["T_N"][3] == rec.T_max_N and rows["T_N"][4] == rec.alpha_T_max_deg
+        assert rows["R_N"][3] == rec.R_max_N and rows["P_N"][3] == rec.P_max_N
+        assert rows["M_mean_Nm"][3] == rec.M_mean_Nm and rows["chi"][3] == rec.chi
+        inputs = {r[0]: r[3] for r in wb.worksheets[0].iter_rows(min_row=4, values_only=True)
+                  if r[0]}
+        src = table[table["variant"] == rec.variant].iloc[0]
+        assert inputs["bore_mm"] == pytest.approx(src["engine.bore_mm"], rel=1e-12)
+        assert inputs["speed_rpm"] == src["engine.speed_rpm"] == rec.speed_rpm
+        form = src["table.form"]
+        assert (KOLCHIN_SHEET["en"] in wb.sheetnames) == (form == "kolchin")
+        wb.close()
+        # and equals a direct computation of that variant
+        d = apply_variant(engine.spec.read_toml(PETROL)[0],
+                          VariantRow(0, rec.variant, {k: parse_cell(src[k].item() if
+                                                                hasattr(src[k], "item")
+                                                                else src[k])
+                                                      for k in table.columns
+                                                      if k != "variant"}))
+        st = engine.load(d)
+        s = engine.analyze(st.spec, st.settings).summary
+        assert s.M_mean_Nm == rec.M_mean_Nm and s.R_N.max == rec.R_max_N
+
+
+def test_variants_from_xlsx_rerun_and_all_good(tmp_path, capsys):
+    table = _variants_table(3, 0)
+    table.loc[0, "engine.bore_mm"] = 80.0
+    path = tmp_path / "variants.xlsx"
+    table.to_excel(path, index=False, engine="openpyxl")
+    out = tmp_path / "out"
+    assert main(["engine", "--example", "petrol", "--variants", str(path), "-o",
+                 str(out)]) == 0
+    assert "вариантов: 3; записано 3" in capsys.readouterr().out
+    s1 = pd.read_csv(out / "variants_summary.csv")
+    assert list(s1["variant"]) == ["V01", "V02", "V03"]
+    assert not (out / "variants_errors.csv").exists()
+
+
+def test_variants_table_problems_at_once(tmp_path, capsys):
+    path = tmp_path / "v.csv"
+    path.write_text("engine.bore_mm,engine.stroke_mm\n80,80\n")
+    assert main(["engine", "--example", "--variants", str(path), "-o",
+                 str(tmp_path / "o")]) == 2
+    assert "no 'variant' (or 'name') column" in capsys.readouterr().err
+    path.write_text("variant;engine.bore_mm\nA;80\nA;81\n;82\n")     # ';' separated
+    with pytest.raises(SpecError) as e:
+        read_variants(path)
+    assert [str(p) for p in e.value.problems] == [
+        "row 3: variant 'A' repeats row 2", "row 4: column 'variant' is empty"]
+    assert not (tmp_path / "o").exists()
+
+
+def test_parse_cell_and_apply_variant():
+    assert parse_cell("79") == 79 and parse_cell("0.275") == 0.275
+    assert parse_cell(80.0) == 80 and isinstance(parse_cell(80.0), int)
+    assert parse_cell("[372, 375]") == [372, 375] and parse_cell("true") is True
+    assert parse_cell("kolchin") == "kolchin" and parse_cell("  ") is None
+    base = {"engine": {"name": "x", "bore_mm": 79}}
+    d = apply_variant(base, VariantRow(2, "A1", {"engine.bore_mm": 82, "table.form": "s"}))
+    assert d == {"engine": {"name": "A1", "bore_mm": 82}, "table": {"form": "s"}}
+    assert base["engine"]["bore_mm"] == 79                      # the base is untouched
+    with pytest.raises(SpecError, match=r"row 2: engine.bore_mm.x: engine.bore_mm is a value"):
+        apply_variant(base, VariantRow(2, "A1", {"engine.bore_mm.x": 1}))
+
+
+# ----------------------------------------------------------------------------- check
+@pytest.fixture(scope="module")
+def petrol_report(tmp_path_factory):
+    out = tmp_path_factory.mktemp("petrol")
+    assert main(["engine", "--example", "petrol", "-o", str(out), "--lang", "en"]) == 0
+    return out
+
+
+def _check(tmp_path, *argv):
+    out = tmp_path / "chk"
+    code = main(["check", *map(str, argv), "-o", str(out), "--lang", "en"])
+    return code, out
+
+
+def test_unaltered_workbook_passes(petrol_report, tmp_path):
+    code, out = _check(tmp_path, PETROL, petrol_report / "petrol-vaz2106.xlsx")
+    assert code == 0
+    check = pd.read_csv(out / "check.csv")
+    assert list(check.columns) == ["alpha_deg", "column", "student", "computed",
+                                   "deviation", "ok"]
+    assert check["ok"].all() and (check["deviation"] == 0).all()
+    assert {"T_N", "T_mm", "beta_deg", "M_Nm", "psi_deg"} <= set(check["column"])
+
+
+@pytest.mark.parametrize("form", ["seed", "kolchin"])
+def test_altered_cells_are_flagged_exactly(tmp_path, capsys, form):
+    src = tmp_path / "report"
+    assert main(["engine", "--example", "diesel", "-o", str(src), "--form", form]) == 0
+    wb = load_workbook(src / "diesel-d240.xlsx")
+    # Table 2 (keys in hidden row 5, data from row 6); Kolchin's form: its own sheet
+    # (keys in row 3, data from row 4)
+    sheets = {"t2": (wb.worksheets[1], 5)}
+    if form == "kolchin":
+        sheets["k"] = (wb[KOLCHIN_SHEET["ru"]], 3)
+    keys = {s: [ws.cell(k, j).value for j in range(1, ws.max_column + 1)]
+            for s, (ws, k) in sheets.items()}
+    rows = {s: {ws.cell(r, 1).value: r for r in range(k + 1, ws.max_row + 1)}
+            for s, (ws, k) in sheets.items()}
+    # (sheet, α, column, factor): 30 % off is wrong (the values are ≥ 2 % of their
+    # column's scale, so 30 % exceeds rtol + atol); 1 % off is within rtol = 2 %
+    edits = [("t2", 30, "T_N", 1.30), ("t2", 420, "T_N", 0.70), ("t2", 120, "K_N", 1.30),
+             ("t2", 60, "M_Nm", 1.01)]
+    if form == "kolchin":
+        edits += [("k", 210, "T_coef", 1.2), ("k", 240, "P_MPa", 0.5),
+                  ("k", 150, "tg_beta", 1.30)]
+    else:
+        edits += [("t2", 210, "T_mm", 1.2), ("t2", 240, "P_N", 0.5)]
+    wrong = set()
+    for s, a, col, f in edits:
+        ws = sheets[s][0]
+        c = ws.cell(rows[s][a], keys[s].index(col) + 1)
+        assert abs(c.value) > 1e-3                 # a real value, not a zero crossing
+        c.value = c.value * f
+        if abs(f - 1) > 0.02:
+            wrong.add((a, col))
+    student = tmp_path / "student.xlsx"
+    wb.save(student)
+    code, out = _check(tmp_path, example_path("diesel_d240.toml"), student)
+    assert code == 1
+    check = pd.read_csv(out / "check.csv")
+    flagged = {(a, c) for a, c in check.loc[~check["ok"], ["alpha_deg", "column"]]
+               .itertuples(index=False)}
+    assert flagged == wrong
+    # the marked copy: exactly those cells red, each with the right value in a comment
+    marked = load_workbook(out / "student_checked.xlsx")
+    red = set()
+    for s, (ws, k) in sheets.items():
+        mws = marked[ws.title]
+        red |= {(mws.cell(c.row, 1).value, keys[s][c.column - 1])
+                for row in mws.iter_rows(min_row=k + 1) for c in row
+                if c.fill.fgColor.rgb in ("00FF7C80", "FFFF7C80")}
+    assert red == wrong
+    study = engine.load(example_path("diesel_d240.toml"))
+    t = engine.force_table(study.spec, settings=study.settings)
+    s, a, col, _ = edits[0]
+    mws = marked[sheets[s][0].title]
+    comment = mws.cell(rows[s][a], keys[s].index(col) + 1).comment.text
+    right = t.loc[t["alpha_deg"] == a, "T_N"].iat[0]
+    assert f"right value: {right:.6g}" in comment
+    text = capsys.readouterr().out
+    assert "T_N            WRONG 2 of" in text and "M_Nm           right" in text
+
+
+def test_check_csv_with_a_column_mapping(petrol_report, tmp_path):
+    df = pd.read_csv(petrol_report / "petrol-vaz2106_forces.csv")
+    student = df[["alpha_deg", "T_N", "K_N"]].rename(columns={"alpha_deg": "α",
+                                                              "T_N": "T, Н"})
+    student.loc[2, "T, Н"] *= 1.5
+    path = tmp_path / "s.csv"
+    student.to_csv(path, index=False, sep=";", decimal=",")
+    code, out = _check(tmp_path, PETROL, path, "--map", "α=alpha_deg", "--map", "T, Н=T_N")
+    assert code == 1
+    check = pd.read_csv(out / "check.csv")
+    assert set(check["column"]) == {"T_N", "K_N"}
+    bad = check[~check["ok"]]
+    assert bad[["alpha_deg", "column"]].values.tolist() == [[df["alpha_deg"][2], "T_N"]]
+    assert not list(out.glob("*.xlsx"))                  # no workbook for a CSV
+    with pytest.raises(SpecError, match="--map"):
+        parse_mapping(["no-equals-sign"])
+
+
+def test_check_linkage_tables(tmp_path):
+    src = tmp_path / "lk"
+    assert main(["linkage", "--example", "ratchet", "-o", str(src), "--no-plots"]) == 0
+    wb = load_workbook(src / "ratchet-drive.xlsx")
+    ws = wb["velocities"]
+    head = [c.value for c in ws[3]]
+    j = head.index("omega3_rad_s") + 1
+    ws.cell(4 + 5, j).value *= 1.3                        # position 6, ω3 30 % off
+    wf = wb["forces"]
+    fh = [c.value for c in wf[3]]
+    wf.cell(4 + 2, fh.index("M_drive_Nm") + 1).value += 50.0    # position 3, Mур + 50 N·m
+    student = tmp_path / "lk_student.xlsx"
+    wb.save(student)
+    code, out = _check(tmp_path, example_path("ratchet.toml"), student)
+    assert code == 1
+    check = pd.read_csv(out / "check.csv")
+    assert list(check.columns)[0] == "position"
+    bad = check[~check["ok"]][["position", "column"]].values.tolist()
+    assert sorted(bad) == [[3, "M_drive_Nm"], [6, "omega3_rad_s"]]
+    code, _ = _check(tmp_path / "2", example_path("ratchet.toml"), src / "ratchet-drive.xlsx")
+    assert code == 0
+
+
+def test_check_bad_input_exits_2(tmp_path, capsys):
+    (tmp_path / "s.csv").write_text("a,b\n1,2\n")
+    assert main(["check", str(PETROL), str(tmp_path / "s.csv"), "-o",
+                 str(tmp_path / "o"), "--rtol", "-1"]) == 2
+    assert "--rtol" in capsys.readouterr().err
+    assert main(["check", str(PETROL), str(tmp_path / "s.csv"), "-o",
+                 str(tmp_path / "o")]) == 2
+    assert "no column 'alpha_deg'" in capsys.readouterr().err
+    assert not (tmp_path / "o").exists()
+    shutil.rmtree(tmp_path, ignore_errors=True)
