@@ -147,9 +147,9 @@ def add_bearing_sheets(wb, tables, analysis, lang="ru"):
     for line in t["conv"]:
         _put(ws, row, 1, line)
         row += 1
-    ws.column_dimensions["A"].width = 46
-    for col in "BCDEFGHI":
-        ws.column_dimensions[col].width = 14
+    from .report import readable_numbers
+
+    readable_numbers(ws, {"A": 46}, default_width=14, per_column=False)
 
     for fname, df in tables.items():
         sh = wb.create_sheet(names[fname])
@@ -160,4 +160,5 @@ def add_bearing_sheets(wb, tables, analysis, lang="ru"):
             for c in range(values.shape[1]):
                 sh.cell(r + 2, c + 1).value = float(values[r, c])
         sh.freeze_panes = "B2"
+        readable_numbers(sh, default_width=12)
     return wb

@@ -550,6 +550,44 @@ def _write_rows(ws, r0, c0, rows, bold=False):
     return r0 + len(rows)
 
 
+def readable_numbers(ws, widths=None, default_width=None, per_column=True):
+    """Display every number of ``ws`` with the digits a reader needs; the stored value
+    keeps full precision, so a sheet read back still equals the CSV.
+
+    ``per_column``: one format for a whole column, from its largest magnitude (a table
+    reads with aligned decimals; a round-off residue such as 1e-11 N of a balanced force
+    shows as 0); else each number by its own magnitude (a list of results).  Bold header
+    cells wrap; ``widths`` maps column letters to widths, ``default_width`` applies to
+    every other used column."""
+    from openpyxl.styles import Alignment
+    from openpyxl.utils import get_column_letter
+
+    def fmt(a):
+        return "0" if a >= 1e5 else "0.0" if a >= 1e3 else "0.00" if a >= 1 else "0.0000"
+
+    cells = [c for row in ws.iter_rows() for c in row]
+    numbers = [c for c in cells if isinstance(c.value, (int, float))
+               and not isinstance(c.value, bool)]
+    top, whole = {}, {}
+    for c in numbers:
+        top[c.column] = max(top.get(c.column, 0.0), abs(c.value))
+        whole[c.column] = whole.get(c.column, True) and float(c.value).is_integer()
+    for c in numbers:
+        if whole[c.column] or float(c.value).is_integer() and not per_column:
+            c.number_format = "0"
+        else:
+            c.number_format = fmt(top[c.column] if per_column else abs(c.value))
+    for c in cells:
+        if (isinstance(c.value, str) and c.font.b
+                and not (c.font.sz and c.font.sz > 11)):   # headers, not titles
+            c.alignment = Alignment(wrap_text=True, vertical="top")
+    if default_width:
+        for j in range(1, ws.max_column + 1):
+            ws.column_dimensions[get_column_letter(j)].width = default_width
+    for col, w in (widths or {}).items():
+        ws.column_dimensions[col].width = w
+
+
 def add_engine_sheets(wb, tr, lang="ru"):
     """Add the whole engine's sheets to a report workbook: the layout, the total-torque
     table (one firing interval, or the cycle for an odd-firing engine) with the summary
@@ -607,8 +645,7 @@ def add_engine_sheets(wb, tr, lang="ru"):
     ws["A1"].font = Font(bold=True, size=12)
     _write_rows(ws, 3, 1, [t["layout_cols"]], bold=True)
     _write_rows(ws, 4, 1, lay.cylinders.to_numpy().tolist())
-    for col, w in zip("ABCDEFG", (10, 8, 8, 12, 16, 18, 12)):
-        ws.column_dimensions[col].width = w
+    readable_numbers(ws, dict(zip("ABCDEFG", (10, 8, 8, 12, 16, 18, 12))))
 
     # Total torque: the textbook table, the summary, the whole-cycle data and a chart
     ws = wb.create_sheet(t["torque"])
@@ -652,6 +689,7 @@ def add_engine_sheets(wb, tr, lang="ru"):
         ch.series.append(ser)
     ch.width, ch.height = 24, 10
     ws.add_chart(ch, f"A{end + len(rows) + 3}")
+    readable_numbers(ws, {"A": 34, "C": 12}, default_width=11)
 
     # Balance: amplitudes, counterweights, the data of balance.csv
     ws = wb.create_sheet(t["balance"])
@@ -672,9 +710,7 @@ def add_engine_sheets(wb, tr, lang="ru"):
     ws.cell(r, 1, t["bal_data"]).font = Font(bold=True)
     _write_rows(ws, r + 1, 1, [list(tr.balance.columns)], bold=True)
     _write_rows(ws, r + 2, 1, tr.balance.to_numpy().tolist())
-    ws.column_dimensions["A"].width = 40
-    for col in "BCDE":
-        ws.column_dimensions[col].width = 16
+    readable_numbers(ws, {"A": 40}, default_width=12)
 
     # Flywheel
     ws = wb.create_sheet(t["flywheel"])
@@ -689,6 +725,5 @@ def add_engine_sheets(wb, tr, lang="ru"):
         _write_rows(ws, 3, 1, [(lab, _text(vals[key]), unit)
                                for key, lab, unit in t["fw_rows"]])
         _put(ws.cell(4 + len(t["fw_rows"]), 1), t["fw_note"])
-    ws.column_dimensions["A"].width = 55
-    ws.column_dimensions["B"].width = 16
+    readable_numbers(ws, {"A": 55, "B": 16}, per_column=False)
     return wb
