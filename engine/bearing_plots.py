@@ -81,43 +81,18 @@ def _xy(phi_deg, r):
     return r * np.sin(p), -r * np.cos(p)
 
 
-def _polar(ax, a, T, K, title, lang, stats, cycle, Kr=0.0):
+def _polar(ax, a, T, K, R, title, lang, stats, cycle, Kr=0.0):
     """The load locus (T, K) with its pole; with Kr ≠ 0 (a crank pin) the curve is the
     rods' force ΣS with the pole O and the pole Oш = (0, −ΣKr.ш), from which the same
-    curve reads as the pin load R (as :func:`engine.plots.plot_polar`)."""
+    curve reads as the pin load R (as :func:`engine.plots.plot_polar`).  ``R`` is the
+    load's magnitude from the result's table (the plot computes no load). [N]"""
+    from .plots import draw_polar
+
     t = _TXT[lang]
-    T, K = np.asarray(T) * 1e-3, (np.asarray(K) - Kr) * 1e-3
-    kr = Kr * 1e-3
-    ax.plot(T, K, color="C0", lw=1.3)
-    ax.set_aspect("equal", adjustable="datalim")
-    ax.invert_yaxis()
-    ax.axhline(0, color="k", lw=0.7)
-    ax.axvline(0, color="k", lw=0.7)
-    labels = np.arange(0.0, cycle, 30.0)
-    lt, lk = np.interp(labels, a, T), np.interp(labels, a, K)
-    ax.plot(lt, lk, "o", ms=3, color="C0")
-    for ang, x, y in zip(labels, lt, lk):
-        ax.annotate(f"{ang:g}", (x, y), xytext=(3, 3), textcoords="offset points",
-                    fontsize=7, color="0.25")
-    R = np.hypot(T, K + kr)
-    for idx, name, col in ((int(np.argmax(R)), "max", "C3"), (int(np.argmin(R)), "min",
-                                                               "C2")):
-        ax.annotate("", xy=(T[idx], K[idx]), xytext=(0, -kr),
-                    arrowprops=dict(arrowstyle="-|>", color=col, lw=1.2))
-        right = T[idx] > 0                    # keep the label inside the axes
-        ax.annotate(f"R{name} = {R[idx]:.2f} {t['kN']} (α = {a[idx]:g}°)",
-                    (T[idx], K[idx]), xytext=(-8 if right else 8,
-                                              -12 if name == "max" else 8),
-                    textcoords="offset points", fontsize=8, color=col,
-                    ha="right" if right else "left",
-                    bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.8))
-    ax.plot([0], [0], "ks", ms=4)
-    if kr != 0.0:
-        ax.annotate("O", (0, 0), xytext=(-12, -10), textcoords="offset points",
-                    fontsize=10, weight="bold")
-        ax.plot([0], [-kr], "o", color="C3", ms=5)
-        ax.annotate("Oш", (0, -kr), xytext=(-22, 6), textcoords="offset points",
-                    fontsize=10, weight="bold", color="C3")
+    draw_polar(ax, a, np.asarray(T) * 1e-3, (np.asarray(K) - Kr) * 1e-3,
+               np.asarray(R) * 1e-3, Kr * 1e-3, cycle,
+               None if Kr == 0.0 else "Oш" if lang == "ru" else "Or",
+               "R", t["kN"])
     ax.set_xlabel(t["T"])
     ax.set_ylabel(t["K"])
     ax.grid(True, lw=0.4, alpha=0.6)
@@ -138,7 +113,7 @@ def plot_pin_polar(result, ax=None, lang="ru", throw=1, short=False):
     t = _TXT[lang]
     title = f"{t['dev_pin']} {throw}" if short else t["pin"].format(k=throw)
     return _polar(ax, p["alpha_deg"].to_numpy(), p[f"T_{throw}_N"], p[f"K_{throw}_N"],
-                  title, lang, loads.pin_stats[throw - 1], cyc, kr)
+                  p[f"R_{throw}_N"], title, lang, loads.pin_stats[throw - 1], cyc, kr)
 
 
 def plot_journal_polar(result, ax=None, lang="ru", journal=1, short=False):
@@ -152,7 +127,7 @@ def plot_journal_polar(result, ax=None, lang="ru", journal=1, short=False):
     title = (f"{t['dev_j']} {journal} " if short else t["journal"].format(k=journal) + " ") \
         + t["frame_j"].format(k=k)
     return _polar(ax, j["alpha_deg"].to_numpy(), j[f"T_{journal}_N"], j[f"K_{journal}_N"],
-                  title, lang, loads.journal_stats[journal - 1], _cycle(loads))
+                  j[f"R_{journal}_N"], title, lang, loads.journal_stats[journal - 1], _cycle(loads))
 
 
 def _cycle(loads):

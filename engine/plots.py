@@ -217,23 +217,43 @@ def plot_polar(result, ax=None, lang="ru"):
     t = _texts(lang)
     ax = _axes(ax, (9, 9.8), left=0.09, right=0.97, bottom=0.12, top=0.95)
     spec, c = result.spec, result.curves
-    T = c["T_N"].to_numpy() * 1e-3
-    K = c["K_N"].to_numpy() * 1e-3
-    kr = spec.Kr * 1e-3
+    y = t["sym"]
+    draw_polar(ax, c["alpha_deg"].to_numpy(), c["T_N"].to_numpy() * 1e-3,
+               c["K_N"].to_numpy() * 1e-3, c["R_N"].to_numpy() * 1e-3, spec.Kr * 1e-3,
+               spec.cycle_deg, y["Osh"], y["R"], t["kN"])
+    ax.set_ylabel(t["K"])
+    ax.grid(True, lw=0.4, alpha=0.6)
+    ax.set_title(f"{t['polar']}: {spec.name}", fontsize=11)
+    import textwrap
+
+    # the conventions go under the T axis, outside the diagram (never over the curve)
+    note = (textwrap.wrap(f"{y['Kr']} = {spec.Kr:.0f} {t['N']};  {t['poles']}", 80)
+            + textwrap.wrap(t["frame"], 80))
+    ax.set_xlabel("\n".join([t["T"]] + note), fontsize=8.5, linespacing=1.4)
+    return ax
+
+
+def draw_polar(ax, a, T, K, R, kr, cycle_deg, pole_name, r_name, unit, ms=3.5):
+    """Draw a polar load diagram on ``ax`` (the shared drawing of :func:`plot_polar` and
+    the bearing diagrams of :mod:`engine.bearing_plots`): the locus (T, K), +K
+    downwards, equal aspect; the pole O and the shifted pole (0, −kr) named
+    ``pole_name`` (None: no shifted pole); α markers and labels every 30°; the arrows to the largest and the
+    smallest load ``R`` with their values; every label placed clear of the others, the
+    markers and the arrows (:func:`_polar_labels`).  All quantities in the plot's unit
+    (``unit``, e.g. kN); ``R`` comes from the result's table (nothing is computed here).
+    """
+    a, T, K, R = (np.asarray(v, float) for v in (a, T, K, R))
     ax.plot(T, K, color="C0", lw=1.3)
     ax.set_aspect("equal", adjustable="datalim")
     ax.invert_yaxis()
     ax.axhline(0, color="k", lw=0.7)
     ax.axvline(0, color="k", lw=0.7)
-    labels = np.arange(0, spec.cycle_deg, 30.0)           # α labels every 30°
-    lt, lk = _at(c, "T_N", labels) * 1e-3, _at(c, "K_N", labels) * 1e-3
-    ms = 3.5
+    labels = np.arange(0, cycle_deg, 30.0)                # α labels every 30°
+    lt, lk = np.interp(labels, a, T), np.interp(labels, a, K)
     ax.plot(lt, lk, "o", ms=ms, color="C0", gid="alpha-marker")
     ax.plot([0], [0], "ks", ms=5, gid="pole-marker")
-    ax.plot([0], [-kr], "o", color="C3", ms=6, gid="pole-marker")
-    y = t["sym"]
-    R = c["R_N"].to_numpy() * 1e-3
-    a = c["alpha_deg"].to_numpy()
+    if pole_name:                   # no shifted pole (a main journal): arrows from O
+        ax.plot([0], [-kr], "o", color="C3", ms=6, gid="pole-marker")
     ext = [(int(np.argmax(R)), "max", "C3"), (int(np.argmin(R)), "min", "C2")]
     for idx, _, col in ext:
         ax.annotate("", xy=(T[idx], K[idx]), xytext=(0, -kr),
@@ -245,16 +265,7 @@ def plot_polar(result, ax=None, lang="ru"):
     ax.set_xlim(ax.get_xlim())
     ax.set_ylim(ax.get_ylim())
     ax.set_autoscale_on(False)
-    _polar_labels(ax, T, K, kr, lt, lk, labels, ext, R, a, y["Osh"], y["R"], t["kN"], ms)
-    ax.set_ylabel(t["K"])
-    ax.grid(True, lw=0.4, alpha=0.6)
-    ax.set_title(f"{t['polar']}: {spec.name}", fontsize=11)
-    import textwrap
-
-    # the conventions go under the T axis, outside the diagram (never over the curve)
-    note = (textwrap.wrap(f"{y['Kr']} = {spec.Kr:.0f} {t['N']};  {t['poles']}", 80)
-            + textwrap.wrap(t["frame"], 80))
-    ax.set_xlabel("\n".join([t["T"]] + note), fontsize=8.5, linespacing=1.4)
+    _polar_labels(ax, T, K, kr, lt, lk, labels, ext, R, a, pole_name, r_name, unit, ms)
     return ax
 
 
@@ -283,8 +294,9 @@ def _polar_labels(ax, T, K, kr, lt, lk, angles, ext, R, a, pole_name, r_name, un
     # pole names first, then Rшш max/min, then α labels (multiples of 90° first)
     place_label(ax, obs, o, "O", normal=(-1, -1), fontsize=11, weight="bold",
                 gid="polar-label")
-    place_label(ax, obs, osh, pole_name, normal=(-1, 0), fontsize=11, weight="bold",
-                color="C3", gid="polar-label")
+    if pole_name:
+        place_label(ax, obs, osh, pole_name, normal=(-1, 0), fontsize=11, weight="bold",
+                    color="C3", gid="polar-label")
     for idx, name, col in ext:
         pos = curve[idx] if name == "max" else osh
         away = curve[idx] - osh
