@@ -166,7 +166,7 @@ def report(study, spec_path, out, lang, inputs=(), bearings=False, drawing=False
     plot_names = list(PLOT_NAMES + TRAIN_PLOT_NAMES)
     from engine.bearing_spec import read_bearing_inputs
     b_inputs = read_bearing_inputs(spec_path, spec)
-    bearing = _bearings(spec, table, result.curves, b_inputs, whole) \
+    bearing = _bearings(spec, table, result.curves, b_inputs, whole, lang) \
         if bearings or b_inputs.asked else None
     if bearing is not None:
         csvs.update(bearing["csv"])
@@ -258,44 +258,90 @@ def summary_lines(result, whole, lang="en"):
             f"  R_crank-pin max    {R.max:10.0f} N    at alpha = {R.alpha_max_deg:g} deg;"
             f"  mean {summary.R_mean_N:.0f} N;  chi = {chi}",
         ]
-    ws = whole.summary
-    lay = whole.layout
-    lines += [
-        f"whole engine: {lay.n} cylinders {whole.train.arrangement}, firing order "
-        f"{'-'.join(map(str, lay.firing_order))}, throws "
-        f"{', '.join(f'{x:g}' for x in lay.throw_angles_deg)} deg ({lay.crankshaft})"
-        + ("" if lay.even_firing else ", uneven firing"),
-        f"  total torque       mean {ws.M_mean_Nm:.1f} N*m, max {ws.M_max_Nm:.1f} at "
-        f"{ws.alpha_M_max_deg:g} deg, min {ws.M_min_Nm:.1f} at {ws.alpha_M_min_deg:g} deg;"
-        f"  mu = {ws.mu:.3f}",
-        f"  indicated          Mi = {ws.Mi_Nm:.1f} N*m (mean differs by {ws.diff_pct:+.4f} %),"
-        f" Ni = {ws.Ni_kW:.2f} kW"
-        + ("" if ws.Me_Nm is None else f";  Me = {ws.Me_Nm:.1f} N*m, Ne = {ws.Ne_kW:.2f} kW"),
-        f"  excess work        L = {ws.L_excess_J:.1f} J"
-        + ("" if ws.flywheel is None else
-           f";  J0 = {ws.flywheel.J0_kgm2:.4f} kg*m^2 (delta = {ws.flywheel.delta:g}), "
-           f"flywheel m*D^2 = {ws.flywheel.mD2_kgm2:.4f} kg*m^2"),
-    ]
+    return lines + whole_engine_lines(whole, lang)
+
+
+#: Words of the terminal summary that depend on the language (the numbers do not).
+_ARRANGEMENT_RU = {"inline": "рядный", "vee": "V-образный", "boxer": "оппозитный"}
+_CRANKSHAFT_RU = {"given": "заданы",
+                  "default for even firing": "по умолчанию для равномерного чередования"}
+_ORDER = {"ru": {"1": "1-го порядка", "2": "2-го порядка", "r": "вращающиеся"},
+          "en": {"1": "1st order", "2": "2nd order", "r": "rotating"}}
+
+
+def whole_engine_lines(whole, lang="en"):
+    """The terminal summary of the whole engine (total torque, its uniformity, the
+    flywheel, the balance and counterweights) in ``lang``."""
+    ws, lay = whole.summary, whole.layout
+    ru = lang == "ru"
+    order = "-".join(map(str, lay.firing_order))
+    throws = ", ".join(f"{x:g}" for x in lay.throw_angles_deg)
+    if ru:
+        lines = [f"двигатель: {lay.n} цил., {_ARRANGEMENT_RU[whole.train.arrangement]}, "
+                 f"порядок работы {order}, колена {throws}° "
+                 f"({_CRANKSHAFT_RU[lay.crankshaft]})"
+                 + ("" if lay.even_firing else ", неравномерное чередование"),
+                 f"  суммарный Mкр      Mкр.ср = {ws.M_mean_Nm:.1f} Н·м, max "
+                 f"{ws.M_max_Nm:.1f} при α = {ws.alpha_M_max_deg:g}°, min "
+                 f"{ws.M_min_Nm:.1f} при α = {ws.alpha_M_min_deg:g}°;  μ = {ws.mu:.3f}",
+                 f"  индикаторные       Mi = {ws.Mi_Nm:.1f} Н·м (Mкр.ср отличается на "
+                 f"{ws.diff_pct:+.4f} %), Ni = {ws.Ni_kW:.2f} кВт"
+                 + ("" if ws.Me_Nm is None else
+                    f";  Me = {ws.Me_Nm:.1f} Н·м, Ne = {ws.Ne_kW:.2f} кВт"),
+                 f"  избыточная работа  Lизб = {ws.L_excess_J:.1f} Дж"
+                 + ("" if ws.flywheel is None else
+                    f";  J0 = {ws.flywheel.J0_kgm2:.4f} кг·м² (δ = {ws.flywheel.delta:g}), "
+                    f"маховой момент m·D² = {ws.flywheel.mD2_kgm2:.4f} кг·м²")]
+    else:
+        lines = [f"whole engine: {lay.n} cylinders {whole.train.arrangement}, firing order "
+                 f"{order}, throws {throws} deg ({lay.crankshaft})"
+                 + ("" if lay.even_firing else ", uneven firing"),
+                 f"  total torque       mean {ws.M_mean_Nm:.1f} N*m, max {ws.M_max_Nm:.1f} "
+                 f"at {ws.alpha_M_max_deg:g} deg, min {ws.M_min_Nm:.1f} at "
+                 f"{ws.alpha_M_min_deg:g} deg;  mu = {ws.mu:.3f}",
+                 f"  indicated          Mi = {ws.Mi_Nm:.1f} N*m (mean differs by "
+                 f"{ws.diff_pct:+.4f} %), Ni = {ws.Ni_kW:.2f} kW"
+                 + ("" if ws.Me_Nm is None else
+                    f";  Me = {ws.Me_Nm:.1f} N*m, Ne = {ws.Ne_kW:.2f} kW"),
+                 f"  excess work        L = {ws.L_excess_J:.1f} J"
+                 + ("" if ws.flywheel is None else
+                    f";  J0 = {ws.flywheel.J0_kgm2:.4f} kg*m^2 (delta = "
+                    f"{ws.flywheel.delta:g}), flywheel m*D^2 = "
+                    f"{ws.flywheel.mD2_kgm2:.4f} kg*m^2")]
     amp = whole.balance_amplitudes.set_index("part")
-    unbalanced = [p for p in ("1", "2", "r") if not (amp.loc[p, "F_balanced"]
-                                                    and amp.loc[p, "M_balanced"])]
-    lines.append(f"  balance            free force max {amp.loc['after', 'F_max_N']:.1f} N, "
-                 f"free moment max {amp.loc['after', 'M_max_Nm']:.1f} N*m with "
-                 f"{len(ws.counterweights)} counterweights; unbalanced before them: "
-                 + (", ".join({"1": "1st order", "2": "2nd order", "r": "rotating"}[p]
-                              for p in unbalanced) or "none"))
-    if ws.flywheel is not None and ws.flywheel.mass_kg is not None:
-        lines.append(f"  flywheel           J = {ws.flywheel.J_flywheel_kgm2:.4f} kg*m^2 "
-                     f"({ws.flywheel.share:g} of J0): rim D = "
-                     f"{ws.flywheel.diameter_m * 1e3:g} mm, m = {ws.flywheel.mass_kg:.2f} kg,"
-                     f" rim speed {ws.flywheel.rim_speed_m_s:.1f} m/s")
-    for cw in ws.counterweights:
-        lines.append(f"  counterweight      m*r = {cw.mr * 1e3:9.2f} kg*mm at "
-                     f"{cw.angle_deg:6.1f} deg from throw 1, z = {cw.z * 1e3:7.1f} mm")
+    unbalanced = ", ".join(_ORDER[lang][p] for p in ("1", "2", "r")
+                           if not (amp.loc[p, "F_balanced"] and amp.loc[p, "M_balanced"]))
+    F, M, n_cw = amp.loc["after", "F_max_N"], amp.loc["after", "M_max_Nm"], \
+        len(ws.counterweights)
+    fw = ws.flywheel if ws.flywheel is not None and ws.flywheel.mass_kg is not None \
+        else None
+    if ru:
+        lines.append(f"  уравновешенность   свободная сила max {F:.1f} Н, свободный момент "
+                     f"max {M:.1f} Н·м, противовесов {n_cw}; без них не уравновешены: "
+                     + (unbalanced or "нет"))
+        if fw is not None:
+            lines.append(f"  маховик            Jм = {fw.J_flywheel_kgm2:.4f} кг·м² "
+                         f"({fw.share:g} от J0): D обода = {fw.diameter_m * 1e3:g} мм, "
+                         f"m = {fw.mass_kg:.2f} кг, окружная скорость обода "
+                         f"{fw.rim_speed_m_s:.1f} м/с")
+        lines += [f"  противовес         m·r = {cw.mr * 1e3:9.2f} кг·мм под углом "
+                  f"{cw.angle_deg:6.1f}° от колена 1, z = {cw.z * 1e3:7.1f} мм"
+                  for cw in ws.counterweights]
+    else:
+        lines.append(f"  balance            free force max {F:.1f} N, free moment max "
+                     f"{M:.1f} N*m with {n_cw} counterweights; unbalanced before them: "
+                     + (unbalanced or "none"))
+        if fw is not None:
+            lines.append(f"  flywheel           J = {fw.J_flywheel_kgm2:.4f} kg*m^2 "
+                         f"({fw.share:g} of J0): rim D = {fw.diameter_m * 1e3:g} mm, "
+                         f"m = {fw.mass_kg:.2f} kg, rim speed {fw.rim_speed_m_s:.1f} m/s")
+        lines += [f"  counterweight      m*r = {cw.mr * 1e3:9.2f} kg*mm at "
+                  f"{cw.angle_deg:6.1f} deg from throw 1, z = {cw.z * 1e3:7.1f} mm"
+                  for cw in ws.counterweights]
     return lines
 
 
-def _bearings(spec, table, fine, inputs, whole):
+def _bearings(spec, table, fine, inputs, whole, lang):
     """Bearing loads: one cylinder by its spec ([bearings] journal positions and
     counterweight), a whole engine by its layout and counterweights.  CSVs at the table
     rows; plots, wear diagrams and the summary lines from the fine grid."""
@@ -327,28 +373,56 @@ def _bearings(spec, table, fine, inputs, whole):
         csv["rod_model.csv"] = rows.rod_comparison.table
     for name, df in csv.items():
         ensure_finite(df, name)
+    lines = bearing_lines(res, pin_wear, lang)
+    return dict(analysis=res, csv=csv, figures=list(_figure_names(res)), lines=lines)
+
+
+def bearing_lines(res, pin_wear, lang="en"):
+    """The terminal summary of a bearing analysis ``res`` (its crank-pin wear diagrams
+    ``pin_wear``) in ``lang``."""
+    from engine.bearing_spec import NOTE_NO_PISTON_MASS
+
     L = res.loads
     kp, jm, jt = L.most_loaded_pin, L.most_loaded_journal, L.most_twisted_journal
     ps, js, ts = L.pin_stats[kp - 1], L.journal_stats[jm - 1], L.torque_stats[jt - 1]
+    pin_holes = ", ".join(f"{w.oil_hole_deg:g}" for w in pin_wear)
+    journal_holes = ", ".join(f"{w.oil_hole_deg:g}" for w in res.journal_wear)
+    half = res.options.wear_half_angle_deg
+    ext = None if res.rod_comparison is None else res.rod_comparison.extremes
+    if lang == "ru":
+        lines = [
+            f"  шатунные шейки     наиболее нагружена {kp}-я: Rшш max {ps.max_N:.0f} Н при "
+            f"α = {ps.alpha_max_deg:g}°, Rшш.ср {ps.mean_N:.0f} Н, χ = {ps.chi:.3f}; "
+            f"масляные отверстия под углом {pin_holes}° (от оси кривошипа)",
+            f"  коренные шейки     наиболее нагружена {jm}-я: Rк.ш max {js.max_N:.0f} Н, "
+            f"Rк.ш.ср {js.mean_N:.0f} Н, χ = {js.chi:.3f}; масляные отверстия под углом "
+            f"{journal_holes}°",
+            f"  моменты на шейках  наибольший размах у {jt}-й коренной шейки: max "
+            f"{ts['max_Nm']:.1f}, min {ts['min_Nm']:.1f} Н·м (последняя передаёт "
+            f"суммарный Mкр); дуги износа ±{half:g}°"]
+        if ext is not None:
+            lines.append(
+                f"  жёсткий шатун      ΔT {ext['dT_N'][2]:+.1f}…{ext['dT_N'][0]:+.1f} Н, ΔMкр "
+                f"{ext['dM_Nm'][2]:+.2f}…{ext['dM_Nm'][0]:+.2f} Н·м, ΔRшш "
+                f"{ext['dR_N'][2]:+.1f}…{ext['dR_N'][0]:+.1f} Н против двухмассовой модели")
+        notes = {NOTE_NO_PISTON_MASS: "нагрузка на поршневой палец не вычислена: задайте "
+                 "массы по частям (piston_group_kg, rod_kg) или [rod] mass_kg"}
+        lines += [f"  примечание: {notes.get(n, n)}" for n in res.notes]
+        return lines
     lines = [
         f"  crank pins         most loaded: {kp} (max {ps.max_N:.0f} N at alpha = "
         f"{ps.alpha_max_deg:g} deg; mean {ps.mean_N:.0f} N; chi = {ps.chi:.3f}); oil holes "
-        "at " + ", ".join(f"{w.oil_hole_deg:g}" for w in pin_wear) + " deg (crank frame)",
+        f"at {pin_holes} deg (crank frame)",
         f"  main journals      most loaded: {jm} (max {js.max_N:.0f} N, mean "
-        f"{js.mean_N:.0f} N, chi = {js.chi:.3f}); oil holes at "
-        + ", ".join(f"{w.oil_hole_deg:g}" for w in res.journal_wear) + " deg",
+        f"{js.mean_N:.0f} N, chi = {js.chi:.3f}); oil holes at {journal_holes} deg",
         f"  journal torques    largest swing: journal {jt} (max {ts['max_Nm']:.1f}, min "
-        f"{ts['min_Nm']:.1f} N*m); the last carries the total; wear arcs +/-"
-        f"{res.options.wear_half_angle_deg:g} deg"]
-    if res.rod_comparison is not None:
-        ext = res.rod_comparison.extremes
+        f"{ts['min_Nm']:.1f} N*m); the last carries the total; wear arcs +/-{half:g} deg"]
+    if ext is not None:
         lines.append(
             f"  rigid rod          dT {ext['dT_N'][2]:+.1f}...{ext['dT_N'][0]:+.1f} N, dM "
             f"{ext['dM_Nm'][2]:+.2f}...{ext['dM_Nm'][0]:+.2f} N*m, dR "
             f"{ext['dR_N'][2]:+.1f}...{ext['dR_N'][0]:+.1f} N against the two-mass rod")
-    lines += [f"  note: {n}" for n in res.notes]
-    lines.append("  bearing tables: " + ", ".join(csv))
-    return dict(analysis=res, csv=csv, figures=list(_figure_names(res)), lines=lines)
+    return lines + [f"  note: {n}" for n in res.notes]
 
 
 def _figure_names(res):

@@ -153,6 +153,11 @@ def read_bearing_inputs(path_or_dict, spec):
     return BearingInputs(opt, model, rod, "bearings" in data or "rod" in data)
 
 
+#: The note of a bearing analysis whose piston mass is unknown (the piston-pin load needs it).
+NOTE_NO_PISTON_MASS = ("piston-pin load not computed: give the masses as parts "
+                       "(piston_group_kg, rod_kg) or [rod] mass_kg")
+
+
 def piston_mass(spec, rod: RigidRod | None = None):
     """mп: ``piston_group_kg`` (or per area) when the masses are given as parts, else the
     rigid rod's, else None (the piston-pin load then needs it). [kg]"""
@@ -256,10 +261,7 @@ def bearing_analysis(spec, table, inputs: BearingInputs | None = None, n_points=
                        jr[f"R_{j}_N"].to_numpy(), h, n_points)
           for j in range(1, len(loads.shaft.z_journal) + 1)]
     mp = piston_mass(spec, rod)
-    notes = []
-    if mp is None:
-        notes.append("piston-pin load not computed: give the masses as parts "
-                     "(piston_group_kg, rod_kg) or [rod] mass_kg")
+    notes = [] if mp is not None else [NOTE_NO_PISTON_MASS]
     comp = compare_rod_models(spec, rod, table=table) \
         if model == "rigid" and rod is not None else None
     return BearingAnalysis(loads, pin_wear, jw, rod_bearing_table(table, spec, mp), model,

@@ -18,7 +18,8 @@ import numpy as np
 from crankbase.errors import Problem
 from crankbase.tolerances import PHASE_MATCH_DEG
 
-from .bearing_spec import BearingInputs, piston_mass, rod_bearing_table
+from .bearing_spec import (NOTE_NO_PISTON_MASS, BearingInputs, piston_mass,
+                           rod_bearing_table)
 from .bearings import BearingInputError, Crankshaft, CrankshaftLoads, crankshaft_loads
 from .forces import force_table
 from .wear import wear_diagram
@@ -196,9 +197,7 @@ def engine_bearings(spec, theta_deg, cylinders, throw_dir_deg, z_throw, *,
                        j[f"R_{k}_N"].to_numpy(), h, n_points) for k in range(1, len(zj) + 1)]
     mp = piston_mass(spec, inputs.rod)
     rb = rod_bearing_table(tables[0], spec, mp, phase_deg=cyl[0].phase_deg)
-    notes = [] if mp is not None else [
-        "piston-pin load not computed: give the masses as parts (piston_group_kg, rod_kg) "
-        "or [rod] mass_kg"]
+    notes = [] if mp is not None else [NOTE_NO_PISTON_MASS]
     comp = None
     if inputs.rod_model == "rigid" and inputs.rod is not None:
         from .rodmodel import compare_rod_models

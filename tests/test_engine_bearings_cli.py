@@ -145,7 +145,7 @@ def test_rigid_rod_spec_writes_rod_model(tmp_path, capsys):
     out = tmp_path / "o"
     assert main(["engine", str(spec_path), "-o", str(out), "--lang", "ru"]) == 0
     text = capsys.readouterr().out
-    assert "rigid rod" in text and "wear arcs +/-45 deg" in text
+    assert "жёсткий шатун" in text and "дуги износа ±45°" in text   # the report's language
     rm = pd.read_csv(out / "diesel-d240_rod_model.csv")
     assert list(rm.columns[:4]) == ["alpha_deg", "K_2m_N", "K_rigid_N", "dK_N"]
     np.testing.assert_allclose(rm["dT_N"], rm["T_rigid_N"] - rm["T_2m_N"], rtol=1e-12)

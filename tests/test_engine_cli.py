@@ -246,6 +246,28 @@ def test_terminal_summary(tmp_path, capsys):
         assert word in text
 
 
+def test_terminal_summary_speaks_the_report_language(tmp_path, capsys):
+    """The whole engine and its bearings (V8: flywheel, counterweights, every line) print
+    in the report's language: no English word in a Russian run, no Cyrillic letter in an
+    English one."""
+    import re
+    assert run_cli("--example", "v8", "-o", tmp_path / "ru", "--bearings") == 0
+    text = capsys.readouterr().out
+    for word in ("двигатель: 8 цил., V-образный, порядок работы 1-5-4-2-6-3-7-8",
+                 "противовес", "маховик", "шатунные шейки", "коренные шейки", "дуги износа"):
+        assert word in text
+    summary, written = text.rsplit("записано: ", 1)   # the last line lists file names
+    assert "diesel-kamaz740_journals.csv" in written
+    words = set(re.findall(r"[A-Za-z]{3,}", summary.replace("diesel-kamaz740", "")))
+    assert words <= {"max", "min"}, words
+    assert run_cli("--example", "v8", "-o", tmp_path / "en", "--bearings",
+                   "--lang", "en") == 0
+    text = capsys.readouterr().out
+    assert not re.search("[\u0400-\u04ff]", text), text
+    for word in ("whole engine: 8 cylinders vee", "counterweight", "most loaded"):
+        assert word in text
+
+
 def test_step_option_and_spec_path(tmp_path):
     spec = example_path("diesel_d240.toml")
     assert run_cli(spec, "-o", tmp_path, "--step", 10, "--lang", "en") == 0
