@@ -29,7 +29,7 @@ _T = {
            "true": "true motion", "const": "ω = const", "t_F": "Balancing (driving) moment",
            "Mur": "M_b [N·m]", "steady": "steady band", "R12": "R12 [N]",
            "t_R": "Crank bearing reaction R12", "Mkr": "M [N·m]",
-           "t_Mkr": "Torque of cylinder 1", "Rpin": "R_pin [N]",
+           "t_Mkr": "Torque of cylinder 1", "Rpin": "$R_{cp}$ [N]",
            "t_Rpin": "Crank-pin load of cylinder 1"},
 }
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from crankbase.errors import Problem
+from .symbols import math_symbol, sym
 
 __all__ = ["plot_indicator", "plot_pressure", "plot_piston_forces", "plot_nkt",
            "plot_torque", "plot_polar", "plot_developed", "figures", "PLOT_NAMES", "LANGS",
@@ -24,13 +25,13 @@ PLOT_NAMES = ("indicator", "forces_P", "forces_NKT", "torque", "polar_Rshsh",
 
 LANGS = ("ru", "en")
 
-#: Symbols of the quantities: the Russian textbook's, and the English textbooks' (no
-#: Cyrillic in an English plot).
+#: Symbols of the quantities, from the one table :mod:`engine.symbols`: the Russian
+#: textbook's, and the English report's set as mathtext (no Cyrillic in an English plot).
+_PLOT_KEYS = dict(p="p_gas", dPg="dPg", Pj="Pj", P="P", S="S", N="N", K="K", T="T",
+                  M="M", R="R", Kr="Kr", Osh="pole_R")
 SYMBOLS = {
-    "ru": dict(p="pг", dPg="ΔPг", Pj="Pj", P="P", S="Sш", N="N", K="K", T="T", M="Mкр",
-               R="Rшш", Kr="Kr.ш", Osh="Oш", Fx="Fп·x"),
-    "en": dict(p="$p_g$", dPg="$F_g$", Pj="$F_j$", P="$F$", S="$S$", N="$N$", K="$K$",
-               T="$T$", M="$M$", R="$R_{cp}$", Kr="$K_r$", Osh="$O_r$", Fx="$A_p x$"),
+    "ru": dict({k: sym(v, "ru") for k, v in _PLOT_KEYS.items()}, Fx="Fп·x"),
+    "en": dict({k: math_symbol(v) for k, v in _PLOT_KEYS.items()}, Fx="$A_{p} x$"),
 }
 
 _TXT = {
@@ -111,7 +112,6 @@ def plot_indicator(result, ax=None, lang="ru"):
         ax.set_xlabel(t["Vs"])
     ax.set_ylabel(t["p"])
     from .diagram_points import fullness
-    from .symbols import sym
 
     s = result.summary
     title = f"{t['pV']}: pi = {s.pi_MPa:.3f} {t['MPa']}"

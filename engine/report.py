@@ -22,6 +22,7 @@ from crankbase.errors import OutputError, Problem
 
 from .forces import COLUMNS, SUMMARY_QUANTITIES
 from .spec import EngineSpecError
+from .symbols import mass_inputs, sym
 
 __all__ = ["build_workbook", "add_engine_sheets", "save_workbook", "input_values",
            "TABLE2_FORCES", "LANGS"]
@@ -47,14 +48,23 @@ def _text(value):
     return "—" if value is None else value
 
 
+#: The kind of the thermal cycle ([pressure.cycle] kind) in words.
+_CYCLE_KINDS = {
+    "ru": {"otto": "с подводом теплоты при V = const (Отто)",
+           "diesel": "смешанный, подвод теплоты при V = const и p = const (Тринклер)"},
+    "en": {"otto": "heat added at constant volume (Otto)",
+           "diesel": "dual: heat added at constant volume and pressure (Sabathé)"},
+}
+
+
 def input_values(result, lang="ru"):
     """The values of the Inputs sheet, by key (numbers in the report's units)."""
     spec, settings, summary = result.spec, result.settings, result.summary
     cyc = spec.cycle
     yes, no = ("да", "нет") if lang == "ru" else ("yes", "no")
     if spec.pressure_source == "cycle":
-        src = ("расчёт по тепловому расчёту ([pressure.cycle])" if lang == "ru"
-               else "computed from the thermal calculation ([pressure.cycle])")
+        src = ("по тепловому расчёту ([pressure.cycle])" if lang == "ru"
+               else "from the thermal calculation ([pressure.cycle])")
     elif spec.pressure_source == "file":
         src = (f"таблица давлений {spec.pressure_file.name}" if lang == "ru"
                else f"pressure table {spec.pressure_file.name}")
@@ -66,7 +76,7 @@ def input_values(result, lang="ru"):
                           else "two-term: j = Rω²(cos α + λ cos 2α)"),
              "exact": ("точная (группа Ассура RRP)" if lang == "ru"
                        else "exact (RRP Assur group)")}[spec.acceleration]
-    mass_input = "; ".join(f"{k} = {v:g}" for k, v in spec.mass_source.items())
+    mass_input = mass_inputs(spec.mass_source, lang)
     v = {
         "name": spec.name, "strokes": spec.strokes, "cylinders": spec.cylinders,
         "bore_mm": spec.bore * 1e3, "stroke_mm": spec.stroke * 1e3, "R_mm": spec.R * 1e3,
@@ -81,7 +91,7 @@ def input_values(result, lang="ru"):
         "pressure_source": src, "pi": summary.pi_MPa, "power_i": summary.power_i_kW,
     }
     if cyc is not None:
-        v.update(cycle_kind=cyc.kind, pa=cyc.pa / 1e6, pr=cyc.pr / 1e6, n1=cyc.n1,
+        v.update(cycle_kind=_CYCLE_KINDS[lang][cyc.kind], pa=cyc.pa / 1e6, pr=cyc.pr / 1e6, n1=cyc.n1,
                  n2=cyc.n2, pc=cyc.pc / 1e6, pz=cyc.pz / 1e6, lambda_z=cyc.lambda_z,
                  rho=cyc.rho if cyc.kind == "diesel" else None,
                  rounding=(yes if cyc.rounding else no),
@@ -101,6 +111,18 @@ def _put(cell, value):
     cell.value = value
     if isinstance(value, str):
         cell.data_type = "s"
+
+
+def _fit_row(ws, cell, width=None):
+    """Give the row of ``cell`` the height of its wrapped text (15 pt a line), from the
+    text's length and the column's width (or ``width``, for merged cells) [characters]."""
+    if not isinstance(cell.value, str):
+        return
+    width = width or ws.column_dimensions[cell.column_letter].width or 10
+    lines = math.ceil(len(cell.value) * 1.1 / width)
+    if lines > 1:
+        ws.row_dimensions[cell.row].height = max(ws.row_dimensions[cell.row].height or 0,
+                                                 15 * lines)
 
 
 def _copy_style(src, dst):
@@ -154,12 +176,7 @@ def build_workbook(result, lang="ru"):
         if key is None:
             continue
         _put(row[3], _text(values.get(key)))
-        if isinstance(row[3].value, str):
-            # long text wraps: give the row the height of its lines
-            width = ws_in.column_dimensions["D"].width or 10
-            lines = math.ceil(len(row[3].value) * 1.1 / width)
-            if lines > 1:
-                ws_in.row_dimensions[row[3].row].height = 15 * lines
+        _fit_row(ws_in, row[3])
 
     # Table 2 (the seed's form, mm and N): a hidden row 5 holds the column keys, so that
     # `crankdyn check` reads a filled-in copy of this sheet; data start on row 6
@@ -303,8 +320,8 @@ _CYL_DASHES = ("sysDot", "dash", "lgDashDot", "sysDash", "dashDot", "lgDash",
                "lgDashDotDot", "sysDashDot", "sysDashDotDot", "dot", "lgDashDot", "dash")
 
 #: Symbols in the native charts: Russian textbook ones, English ones without Cyrillic.
-_CHART_SYMBOLS = {"ru": dict(dPg="ΔPг", M="Mкр", S="Sш", R="Rшш", pole="Oш"),
-                  "en": dict(dPg="ΔPg", M="M", S="S", R="Rcp", pole="Or")}
+_CHART_SYMBOLS = {lang: dict(dPg=sym("dPg", lang), M=sym("M", lang), S=sym("S", lang),
+                             R=sym("R", lang), pole=sym("pole_R", lang)) for lang in LANGS}
 
 
 def _style_series(s, m):
@@ -472,6 +489,21 @@ _TR = {
                 "тонкое кольцо (J = m·Dср²/4).",
         fw_none="δ не задан ([flywheel] delta): маховик не рассчитан",
         chart="Суммарный крутящий момент", inputs="Коленчатый вал и соглашения",
+        train_items=[("arrangement", "Расположение цилиндров", ""),
+                     ("vee_angle_deg", "Угол развала цилиндров γ", "°"),
+                     ("firing_order", "Порядок работы цилиндров", ""),
+                     ("throw_angles_deg", "Углы колен от 1-го по вращению", "°"),
+                     ("cylinder_spacing_mm", "Расстояние между осями цилиндров", "мм"),
+                     ("bank_offset_mm", "Смещение второго ряда вдоль вала", "мм"),
+                     ("mechanical_efficiency", "Механический КПД ηм", ""),
+                     ("delta", "Коэффициент неравномерности хода δ", ""),
+                     ("counterweights", "Противовесы", "")],
+        arrangements={"inline": "рядное", "vee": "V-образное", "boxer": "оппозитное"},
+        given="заданы", default_throws="по умолчанию для равномерного чередования вспышек",
+        cw_designs={"none": "нет", "throws": "на каждом колене (вращающиеся массы)",
+                    "throws+first_order": "на каждом колене и два концевых (силы и "
+                                          "моменты 1-го порядка)"},
+        cw_given="заданы списком ({n})",
         conv=("Система координат: вид со стороны маховика, x вправо, y вверх, z вдоль вала "
               "от цилиндра 1 к маховику; вал вращается против часовой стрелки на этом виде "
               "(по часовой — со стороны носка).",
@@ -524,16 +556,30 @@ _TR = {
                 "is a thin ring (J = m·D²/4).",
         fw_none="delta not given ([flywheel] delta): no flywheel computed",
         chart="Total engine torque", inputs="Crank train and conventions",
+        train_items=[("arrangement", "Cylinder arrangement", ""),
+                     ("vee_angle_deg", "Vee angle between the banks", "deg"),
+                     ("firing_order", "Firing order", ""),
+                     ("throw_angles_deg", "Throw angles from throw 1 in rotation", "deg"),
+                     ("cylinder_spacing_mm", "Cylinder spacing along the crankshaft", "mm"),
+                     ("bank_offset_mm", "Axial offset of the second bank", "mm"),
+                     ("mechanical_efficiency", "Mechanical efficiency ηm", ""),
+                     ("delta", "Coefficient of cyclic irregularity δ", ""),
+                     ("counterweights", "Counterweights", "")],
+        arrangements={"inline": "inline", "vee": "vee", "boxer": "boxer"},
+        given="given", default_throws="default for even firing",
+        cw_designs={"none": "none", "throws": "one per throw (rotating masses)",
+                    "throws+first_order": "one per throw and two end ones (first-order "
+                                          "forces and moments)"},
+        cw_given="given one by one ({n})",
         conv=("Frame: seen from the flywheel end, x right, y up, z along the crankshaft "
               "from cylinder 1 to the flywheel; the crankshaft turns counter-clockwise in "
               "this view (clockwise seen from the front).",
               "Numbering: inline 1…i from the front; vee and boxer: first bank 1…i/2 (right, "
-              "gamma = -V/2), second bank i/2+1…i; on a common pin the first bank reaches TDC "
-              "V deg earlier.",
+              "γ = −V/2), second bank i/2+1…i; on a common pin the first bank reaches TDC "
+              "V° earlier.",
               "Throw k carries cylinders k and k + i/2 (vee); throw angles are from throw 1, "
               "in the direction of rotation.",
-              "Phase phi: the lag of a cylinder's cycle behind cylinder 1's: alpha = theta - "
-              "phi.")),
+              "Phase φ: the lag of a cylinder's cycle behind cylinder 1's: α = θ − φ.")),
 }
 
 
@@ -603,7 +649,7 @@ def add_engine_sheets(wb, tr, lang="ru"):
     lang : {"ru", "en"}
     """
     from openpyxl.chart import Reference, ScatterChart, Series
-    from openpyxl.styles import Font
+    from openpyxl.styles import Alignment, Font
 
     from crankbase.output import ensure_finite
 
@@ -619,25 +665,40 @@ def add_engine_sheets(wb, tr, lang="ru"):
     # Inputs: the crank train and the conventions, below the template's rows
     ws_in = wb.worksheets[0]
     r = ws_in.max_row + 2
-    ws_in.cell(r, 2, t["inputs"]).font = Font(bold=True)
+    proto = [ws_in.cell(4, c) for c in range(2, 6)]      # the template's first input row
+    ws_in.cell(r, 2, t["inputs"]).font = Font(name=proto[0].font.name, bold=True)
     train = tr.train
-    items = [("arrangement", train.arrangement), ("vee_angle_deg", train.vee_angle_deg),
-             ("firing_order", "-".join(map(str, lay.firing_order))),
-             ("throw_angles_deg", ", ".join(f"{x:g}" for x in lay.throw_angles_deg)
-              + f" ({lay.crankshaft})"),
-             ("cylinder_spacing_mm", None if train.cylinder_spacing is None
-              else train.cylinder_spacing * 1e3),
-             ("bank_offset_mm", train.bank_offset * 1e3),
-             ("mechanical_efficiency", train.mechanical_efficiency),
-             ("flywheel.delta", train.delta), ("balance.counterweights",
-                                               train.counterweights)]
-    for i, (key, val) in enumerate(items, start=1):
+    how = {"given": t["given"], "default for even firing": t["default_throws"]}
+    cw = (t["cw_designs"][train.counterweights] if not train.counterweight_list
+          else t["cw_given"].format(n=len(train.counterweight_list)))
+    values = dict(
+        arrangement=t["arrangements"][train.arrangement],
+        vee_angle_deg=train.vee_angle_deg,
+        firing_order="-".join(map(str, lay.firing_order)),
+        throw_angles_deg=(", ".join(f"{x:g}" for x in lay.throw_angles_deg)
+                          + f" ({how[lay.crankshaft]})"),
+        cylinder_spacing_mm=(None if train.cylinder_spacing is None
+                             else train.cylinder_spacing * 1e3),
+        bank_offset_mm=train.bank_offset * 1e3,
+        mechanical_efficiency=train.mechanical_efficiency,
+        delta=train.delta, counterweights=cw)
+    items = t["train_items"]
+    for i, (key, label, unit) in enumerate(items, start=1):
         ws_in.cell(r + i, 1, key)
-        _put(ws_in.cell(r + i, 2), key)
-        _put(ws_in.cell(r + i, 4), _text(val))
+        for j, v in enumerate((label, None, _text(values[key]), unit or None)):
+            c = ws_in.cell(r + i, 2 + j)
+            _copy_style(proto[j], c)
+            _put(c, v)
+        _fit_row(ws_in, ws_in.cell(r + i, 4))
     r += len(items) + 2
+    widths = sum(ws_in.column_dimensions[c].width or 10 for c in "BCDE")
     for i, line in enumerate(t["conv"]):
-        _put(ws_in.cell(r + i, 2), line)
+        c = ws_in.cell(r + i, 2)
+        _put(c, line)
+        c.font = Font(name=proto[0].font.name, italic=True, size=10)
+        c.alignment = Alignment(wrap_text=True, vertical="top")
+        ws_in.merge_cells(start_row=r + i, start_column=2, end_row=r + i, end_column=5)
+        _fit_row(ws_in, c, width=widths)
 
     # Layout
     ws = wb.create_sheet(t["layout"])

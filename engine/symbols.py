@@ -7,7 +7,8 @@ Inputs sheet of the English workbook and in the README.  Plain data, no imports.
 """
 from __future__ import annotations
 
-__all__ = ["SYMBOLS", "MEANING_RU", "sym", "correspondence", "to_english"]
+__all__ = ["SYMBOLS", "MEANING_RU", "MASS_INPUTS", "sym", "math_symbol", "correspondence",
+           "to_english", "mass_inputs"]
 
 #: key → (Russian symbol, English symbol, English meaning).
 SYMBOLS = {
@@ -17,31 +18,34 @@ SYMBOLS = {
     "dPg": ("ΔPг", "ΔPg", "gas force on the piston, (pg − p0)·Ap"),
     "Pj": ("Pj", "Pj", "inertia force of the reciprocating masses"),
     "P": ("P", "P", "total force on the piston pin"),
-    "S": ("Sш", "Srod", "force along the connecting rod"),
+    "S": ("Sш", "S", "force along the connecting rod"),
     "N": ("N", "N", "side force of the piston on the cylinder wall"),
     "K": ("K", "K", "radial force on the crank pin"),
     "T": ("T", "T", "tangential force on the crank pin"),
-    "M": ("Mкр", "Mt", "torque of one cylinder"),
-    "Kr": ("Kr.ш", "Kr,rod", "centrifugal force of the rotating part of the rod"),
-    "R": ("Rшш", "Rpin", "resultant load on the crank pin"),
-    "psi": ("Ψ", "ψ", "direction of Rpin in the crank frame"),
+    "M": ("Mкр", "M", "torque of one cylinder"),
+    "Kr": ("Kr.ш", "Kr", "centrifugal force of the rotating part of the rod"),
+    "R": ("Rшш", "Rcp", "resultant load on the crank pin"),
+    "psi": ("Ψ", "Ψ", "direction of Rcp in the crank frame"),
     "L": ("Lш", "L", "connecting-rod length"),
     "area": ("Fп", "Ap", "piston area"),
-    "mj": ("mj", "mj", "reciprocating mass, mp + mrod,rec"),
+    "mj": ("mj", "mj", "reciprocating mass, mp + mr,rec"),
     "m_piston": ("mп", "mp", "mass of the piston group"),
-    "m_rod": ("mш", "mrod", "mass of the connecting rod"),
-    "m_rod_rec": ("mш.п", "mrod,rec", "reciprocating part of the rod mass"),
-    "m_rod_rot": ("mш.к", "mrod,rot", "rotating part of the rod mass"),
+    "m_rod": ("mш", "mr", "mass of the connecting rod"),
+    "m_rod_rec": ("mш.п", "mr,rec", "reciprocating part of the rod mass"),
+    "m_rod_rot": ("mш.к", "mr,rot", "rotating part of the rod mass"),
     "m_crank": ("mк", "mc", "unbalanced rotating mass of the crank"),
     "v_mean": ("vп.ср", "vp,mean", "mean piston speed"),
-    "pole_R": ("Oш", "Opin", "pole of the crank-pin load diagram"),
+    "pole_R": ("Oш", "Or", "pole of the crank-pin load diagram"),
     "p_peak_real": ("pzд", "pz,real", "real peak pressure of the rounded diagram"),
-    "M_mean": ("Mкр.ср", "Mt,mean", "mean torque of one cylinder"),
-    "R_mean": ("Rшш.ср", "Rpin,mean", "mean crank-pin load"),
-    "R_max": ("Rшш.max", "Rpin,max", "maximum crank-pin load"),
+    "M_mean": ("Mкр.ср", "M mean", "mean torque of one cylinder"),
+    "R_mean": ("Rшш.ср", "Rcp,mean", "mean crank-pin load"),
+    "R_max": ("Rшш.max", "Rcp,max", "maximum crank-pin load"),
     "tdc": ("ВМТ", "TDC", "top dead centre"),
     "bdc": ("НМТ", "BDC", "bottom dead centre"),
     "fullness": ("φп", "φf", "fullness of the indicator diagram, pi/p′i"),
+    "m_piston_area": ("m′п", "m′p", "mass of the piston group per unit piston area"),
+    "m_rod_area": ("m′ш", "m′r", "mass of the connecting rod per unit piston area"),
+    "M_max": ("Mкр.max", "M max", "maximum torque of one cylinder"),
 }
 
 
@@ -78,6 +82,21 @@ MEANING_RU = {
     "tdc": "верхняя мёртвая точка",
     "bdc": "нижняя мёртвая точка",
     "fullness": "коэффициент полноты индикаторной диаграммы, pi/p′i",
+    "m_piston_area": "масса поршневой группы, отнесённая к площади поршня",
+    "m_rod_area": "масса шатуна, отнесённая к площади поршня",
+    "M_max": "максимальный крутящий момент одного цилиндра",
+}
+
+
+#: ``[masses]`` keys of an engine spec → (symbol key of :data:`SYMBOLS`, unit ru, unit en);
+#: ``rod_small_end_fraction`` is the share mш.п/mш of the rod mass at the piston pin.
+MASS_INPUTS = {
+    "reciprocating_kg": ("mj", "кг", "kg"), "rod_rotating_kg": ("m_rod_rot", "кг", "kg"),
+    "piston_group_kg": ("m_piston", "кг", "kg"), "rod_kg": ("m_rod", "кг", "kg"),
+    "piston_group_kg_m2": ("m_piston_area", "кг/м²", "kg/m²"),
+    "rod_kg_m2": ("m_rod_area", "кг/м²", "kg/m²"),
+    "rod_small_end_fraction": (("m_rod_rec", "m_rod"), "", ""),
+    "crank_rotating_kg": ("m_crank", "кг", "kg"),
 }
 
 
@@ -85,6 +104,23 @@ def sym(key: str, lang: str) -> str:
     """The symbol ``key`` in ``lang`` ("ru" or "en")."""
     ru, en, _ = SYMBOLS[key]
     return ru if lang == "ru" else en
+
+
+def math_symbol(key: str) -> str:
+    """The English symbol ``key`` as matplotlib mathtext, its letters after the first as a
+    subscript: "Rcp" → ``$R_{cp}$``, "ΔPg" → ``$\\Delta P_{g}$``, "mr,rot" → ``$m_{r,rot}$``
+    (the same symbol as in the workbook, set as the textbook prints it)."""
+    en = SYMBOLS[key][1]
+    head = "\\Delta " if en.startswith("Δ") else ""
+    body = en[1:] if head else en
+    if " " in body:                                   # "M mean": a word after the symbol
+        body, word = body.split(" ", 1)
+        return f"${head}{_sub(body)}$ {word}"
+    return f"${head}{_sub(body)}$"
+
+
+def _sub(body):
+    return body[0] + (f"_{{{body[1:]}}}" if len(body) > 1 else "")
 
 
 def correspondence(lang="en"):
@@ -95,10 +131,23 @@ def correspondence(lang="en"):
 
 def to_english(text: str) -> str:
     """``text`` with every Russian textbook symbol replaced by its English one (longest
-    symbols first, so "Rшш.ср" becomes "Rpin,mean", not "Rpin.ср").  Only symbols are
+    symbols first, so "Rшш.ср" becomes "Rcp,mean", not "Rcp.ср").  Only symbols are
     translated; words are the caller's business."""
     pairs = sorted(((ru, en) for ru, en, _ in SYMBOLS.values() if ru != en),
                    key=lambda p: -len(p[0]))
-    for ru, en in pairs + [("Mкр.max", "Mt,max"), ("ср", "mean")]:
+    for ru, en in pairs:
         text = text.replace(ru, en)
     return text
+
+
+def mass_inputs(mass_source, lang="ru") -> str:
+    """The masses of a spec as given (``{[masses] key: value}``), in textbook symbols with
+    units: "mп = 0.5 кг; mш = 0.7 кг" (ru), "mp = 0.5 kg; mr = 0.7 kg" (en)."""
+    out = []
+    for key, value in mass_source.items():
+        what, u_ru, u_en = MASS_INPUTS[key]
+        name = ("/".join(sym(k, lang) for k in what) if isinstance(what, tuple)
+                else sym(what, lang))
+        unit = u_ru if lang == "ru" else u_en
+        out.append(f"{name} = {value:g}" + (f" {unit}" if unit else ""))
+    return "; ".join(out)

@@ -204,23 +204,12 @@ SUMMARY_NOTE = {
           "over the cycle. Mкр mean and Rшш mean are for one cylinder.",
 }
 
-#: The English template uses the English textbooks' symbols: no Cyrillic anywhere (the
-#: Russian subscripts are replaced, longest first, after the sheets are built).
-EN_SYMBOLS = [
-    ("Kr.ш = −mш.к·R·ω²", "Kr = −mr,rot·R·ω²"), ("mj = mп + mш.п", "mj = mp + mr,rec"),
-    ("χ = Rшш.max/Rшш.ср", "χ = Rcp,max/Rcp,mean"), ("Mкр.ср", "M mean"),
-    ("Rшш.ср", "Rcp,mean"), ("ΔPг", "ΔPg"), ("pг max", "pg max"), ("pг", "pg"),
-    ("vп.ср", "vp,mean"), ("Fп", "Ap"), ("Rшш", "Rcp"), ("Mкр", "M"), ("Kr.ш", "Kr"),
-    ("mш.к", "mr,rot"), ("mш.п", "mr,rec"), ("mш", "mr"), ("mп", "mp"), ("mк", "mc"),
-    ("Lш", "L"), ("Sш", "S"), ("pzд", "pz,real"), ("Oш", "Or"),
-]
-
-
 def english_symbols(text):
-    """An English template string with the Russian symbols replaced by English ones."""
-    for ru, en in EN_SYMBOLS:
-        text = text.replace(ru, en)
-    return text
+    """An English template string with the Russian symbols replaced by the English ones of
+    :mod:`engine.symbols` (the one table of symbols; imported here, in the build script,
+    not at run time)."""
+    from engine.symbols import to_english
+    return to_english(text)
 
 
 def _check_no_cyrillic(wb):
@@ -255,6 +244,37 @@ def _fit_width(ws, orientation):
     ws.sheet_properties.pageSetUpPr.fitToPage = True
     ws.page_setup.fitToWidth = 1
     ws.page_setup.fitToHeight = 0
+
+
+def _symbol_table(ws, r, lang, bold, body):
+    """The table of symbols below the conventions: in the Russian template the Russian
+    textbook symbol, the English report's symbol and the meaning; in the English one the
+    English symbol and its meaning (no Cyrillic), every symbol of :mod:`engine.symbols`
+    whose two forms differ."""
+    from engine.symbols import correspondence
+
+    ru = lang == "ru"
+    title = ("Обозначения русского и английского отчётов" if ru
+             else "Symbols of this report (the Russian report and the README list the "
+                  "Russian textbook symbols beside them)")
+    c = ws.cell(r, 2, title)
+    c.font = bold
+    c.alignment = Alignment(wrap_text=True, vertical="top")
+    ws.merge_cells(start_row=r, start_column=2, end_row=r, end_column=5)
+    ws.row_dimensions[r].height = 15 if ru else 30
+    head = (("Величина", "Русский отчёт", "Английский отчёт") if ru
+            else ("Quantity", "Symbol"))
+    for j, h in enumerate(head, start=2):
+        c = ws.cell(r + 1, j, h)
+        c.font, c.fill, c.border, c.alignment = bold, HEAD_FILL, BORDER, CENTER
+    for i, (en, rus, what) in enumerate(correspondence(lang), start=r + 2):
+        row = (what, rus, en) if ru else (what, en)
+        for j, v in enumerate(row, start=2):
+            c = ws.cell(i, j, v)
+            c.font, c.border = body, BORDER
+            c.alignment = LEFT if j == 2 else CENTER
+        # a meaning longer than column B (50 characters wide) wraps onto a second line
+        ws.row_dimensions[i].height = 15 if len(what) <= 55 else 30
 
 
 def build(lang: str, path: Path) -> None:
@@ -295,6 +315,8 @@ def build(lang: str, path: Path) -> None:
         c.alignment = Alignment(wrap_text=True, vertical="top")
         ws.merge_cells(start_row=r + k, start_column=2, end_row=r + k, end_column=5)
         ws.row_dimensions[r + k].height = 15 if k == 0 else 30
+    r += len(CONVENTIONS[lang]) + 1
+    _symbol_table(ws, r, lang, bold, body)
     ws.column_dimensions["A"].hidden = True
     for col, w in zip("BCDE", (50, 20, 40, 10)):
         ws.column_dimensions[col].width = w

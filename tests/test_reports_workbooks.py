@@ -132,6 +132,76 @@ def test_russian_workbooks_carry_every_textbook_symbol(runs):
         assert not missing, (key, missing)
 
 
+def test_one_set_of_english_symbols():
+    """engine.symbols is the one table: the workbook template, the native charts and the
+    plots print the same English symbol for each quantity (the plots as mathtext)."""
+    from engine.plots import SYMBOLS as PLOT_SYMBOLS
+    from engine.report import _CHART_SYMBOLS
+    from engine.symbols import SYMBOLS, math_symbol, sym, to_english
+
+    def plain(math):
+        return (math.replace("$", "").replace("\\Delta ", "Δ").replace("_", "")
+                .replace("{", "").replace("}", ""))
+    for key, ru_en_what in SYMBOLS.items():
+        assert plain(math_symbol(key)) == ru_en_what[1].replace(" ", " ")
+        assert to_english(ru_en_what[0]) == ru_en_what[1], key
+    keys = dict(p="p_gas", dPg="dPg", Pj="Pj", P="P", S="S", N="N", K="K", T="T", M="M",
+                R="R", Kr="Kr", Osh="pole_R")
+    assert {k: plain(PLOT_SYMBOLS["en"][k]) for k in keys} == {
+        k: sym(v, "en") for k, v in keys.items()}
+    assert {k: PLOT_SYMBOLS["ru"][k] for k in keys} == {k: sym(v, "ru")
+                                                      for k, v in keys.items()}
+    assert _CHART_SYMBOLS["en"] == dict(dPg="ΔPg", M="M", S="S", R="Rcp", pole="Or")
+    assert _CHART_SYMBOLS["ru"] == dict(dPg="ΔPг", M="Mкр", S="Sш", R="Rшш", pole="Oш")
+
+
+def _inputs_rows(path):
+    ws = load_workbook(path).worksheets[0]
+    return [[c.value for c in row] for row in ws.iter_rows(min_col=1, max_col=5)]
+
+
+def test_inputs_sheet_lists_the_symbols_of_both_reports(runs):
+    """The Russian Inputs sheet maps every Russian textbook symbol to the English report's
+    one; the English sheet lists the English symbols with their meanings (no Cyrillic)."""
+    from engine.symbols import correspondence
+
+    for lang in ("ru", "en"):
+        rows = _inputs_rows(runs[("engine", "petrol", lang, "seed")])
+        table = {tuple(r[1:4]) if lang == "ru" else tuple(r[1:3]) for r in rows}
+        for en, rus, what in correspondence(lang):
+            assert ((what, rus, en) if lang == "ru" else (what, en)) in table, (lang, en)
+    rows = _inputs_rows(runs[("engine", "petrol", "ru", "seed")])
+    assert ("результирующая сила на шатунную шейку", "Rшш", "Rcp") in {
+        tuple(r[1:4]) for r in rows}
+
+
+def test_inputs_sheet_speaks_the_report_language(runs):
+    """No raw spec key (``rod_kg_m2``, ``arrangement``…) and no untranslated spec value
+    (``otto``, ``inline``) on the Inputs sheet; the masses as given in textbook symbols
+    with units (Kolchin's m′п, m′ш per unit piston area for the petrol engine)."""
+    for ex in ("petrol", "diesel"):
+        for lang in ("ru", "en"):
+            key_like = re.compile(r"\b[a-z]+_[a-z0-9_]+\b|\b(otto|diesel|throws"
+                                  + ("|inline" if lang == "ru" else "") + r")\b")
+            rows = _inputs_rows(runs[("engine", ex, lang, "seed")])
+            for r in rows:
+                for v in r[1:] if r[0] != "name" else r[1:2]:    # not the engine's name
+                    if isinstance(v, str):
+                        text = re.sub(r"\[[^]]*\]|\S+\.csv", "", v)   # file names, [table]s
+                        assert not key_like.search(text), (ex, lang, v)
+            values = {r[1]: r[3] for r in rows if r[1]}
+            masses = values["Массы (как заданы)" if lang == "ru" else "Masses (as given)"]
+            if ex == "petrol":                       # petrol_vaz2106.toml: per unit area
+                assert masses == ("m′п = 100 кг/м²; m′ш = 150 кг/м²; mш.п/mш = 0.275"
+                                  if lang == "ru" else
+                                  "m′p = 100 kg/m²; m′r = 150 kg/m²; mr,rec/mr = 0.275")
+                assert values["Цикл" if lang == "ru" else "Cycle"].endswith(
+                    "(Отто)" if lang == "ru" else "(Otto)")
+            train = values["Расположение цилиндров" if lang == "ru" else
+                           "Cylinder arrangement"]
+            assert train == ("рядное" if lang == "ru" else "inline")
+
+
 def test_every_sheet_has_an_a4_print_setup(runs):
     for key, path in runs.items():
         if key[0] == "table2":
