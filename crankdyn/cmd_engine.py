@@ -254,9 +254,9 @@ def summary_lines(result, whole, lang="en"):
             f"{summary.pi_MPa:.4f} MPa",
             f"  P max              {P.max:10.0f} N    at alpha = {P.alpha_max_deg:g} deg",
             f"  T max              {T.max:10.0f} N    at alpha = {T.alpha_max_deg:g} deg",
-            f"  mean torque        {summary.M_mean_Nm:10.2f} N*m  (one cylinder)",
-            f"  R_crank-pin max    {R.max:10.0f} N    at alpha = {R.alpha_max_deg:g} deg;"
-            f"  mean {summary.R_mean_N:.0f} N;  chi = {chi}",
+            f"  M mean             {summary.M_mean_Nm:10.2f} N*m  (one cylinder)",
+            f"  Rcp max            {R.max:10.0f} N    at alpha = {R.alpha_max_deg:g} deg;"
+            f"  Rcp mean = {summary.R_mean_N:.0f} N;  chi = {chi}",
         ]
     return lines + whole_engine_lines(whole, lang)
 

@@ -241,9 +241,17 @@ def test_terminal_summary(tmp_path, capsys):
         assert word in text
     assert run_cli("--example", "-o", tmp_path, "--lang", "en") == 0
     text = capsys.readouterr().out
-    for word in ("peak gas pressure", "P max", "T max", "mean torque", "chi", "petrol",
+    for word in ("peak gas pressure", "P max", "T max", "M mean", "Rcp max", "chi", "petrol",
                  "firing order 1-3-4-2", "mu =", "excess work", "J0 =", "balance"):
         assert word in text
+
+
+def test_readme_states_the_symbol_table():
+    """The README's table of Russian and English symbols is engine.symbols' own."""
+    from engine.symbols import correspondence
+    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+    for en, ru, what in correspondence("en"):
+        assert f"| {en} | {ru} | {what} |" in readme
 
 
 def test_terminal_summary_speaks_the_report_language(tmp_path, capsys):
