@@ -9,6 +9,22 @@ from __future__ import annotations
 #: lengths, an angle range of exactly 2π, a count of steps that is an exact integer).
 ROUNDOFF_RTOL = 1e-12
 
+
+def snap_roundoff(values, scale):
+    """Set every entry of the float array ``values`` with |x| ≤ ROUNDOFF_RTOL·``scale`` to
+    exactly 0.0 (−0.0 too), in place, and return it.
+
+    For result tables: a quantity that is exactly zero (the piston speed at TDC, β at
+    α = 0, a balanced free force) comes out of the arithmetic as a residue of about
+    1e-16 of the operands (−2e-32 m/s, −0.0°); below 1e-12 of the quantity's own scale
+    (``scale``: a number, or one per column of a 2-D ``values``, broadcast over the rows)
+    such a value carries no information, and a report should say 0.
+    """
+    import numpy as np
+
+    values[np.abs(values) <= ROUNDOFF_RTOL * np.asarray(scale, float)] = 0.0
+    return values
+
 #: Relative margin of the Grashof / rotatability inequalities within which a mechanism
 #: counts as a change-point (folding) one: lengths read from a spec in mm with ~10
 #: significant digits agree to about this, and the synthesis region boundary uses it too.

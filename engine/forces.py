@@ -34,7 +34,7 @@ import math
 import numpy as np
 
 from crankbase.errors import Problem
-from crankbase.tolerances import ROUNDOFF_RTOL, SAME_ANGLE_DEG
+from crankbase.tolerances import ROUNDOFF_RTOL, SAME_ANGLE_DEG, snap_roundoff
 from crankbase.validation import angles_argument, step_argument
 from linkage.groups import Wrench, dot, driver_reactions, link_wrench, rrp_reactions
 
@@ -267,12 +267,30 @@ def force_table(spec, alpha_deg=None, *, settings=None, bank_deg=0.0, phase_deg=
     f = _cylinder_forces(spec, alpha_deg, settings, bank_deg, phase_deg)
     mech, P = f["mech"], f["P"]
     Kr = np.full_like(P, spec.Kr)
-    Kt = f["K"] + Kr
+    zero = np.zeros_like(P)                         # Rшш and Ψ: from the snapped T, K
     cols = (f["theta_deg"], f["p"] / 1e6, f["dPg"], f["Pj"], P, np.degrees(mech.beta),
-            f["N"], f["S"], f["K"], f["T"], f["M"], Kr, np.hypot(f["T"], Kt),
-            _psi(f["T"], Kt), mech.x * 1e3, mech.v, mech.j)
-    # one float block (the columns of COLUMNS, in order): cheaper than a dict of arrays
-    return pd.DataFrame(np.column_stack(cols), columns=list(COLUMNS))
+            f["N"], f["S"], f["K"], f["T"], f["M"], Kr, zero, zero, mech.x * 1e3, mech.v,
+            mech.j)
+    # one float block (the columns of COLUMNS, in order): cheaper than a dict of arrays;
+    # round-off residues of exact zeros (v and β at TDC) become 0 before Rшш and Ψ
+    block = np.column_stack(cols)
+    snap_roundoff(block, _column_scales(block))
+    T, Kt = block[:, _COL["T_N"]], block[:, _COL["K_N"]] + block[:, _COL["Kr_N"]]
+    block[:, _COL["R_N"]] = np.hypot(T, Kt)
+    block[:, _COL["psi_deg"]] = _psi(T, Kt)
+    return pd.DataFrame(block, columns=list(COLUMNS))
+
+
+_COL = {c: i for i, c in enumerate(COLUMNS)}
+
+
+def _column_scales(block):
+    """The scale of each column of a force-table block [its unit]: the largest magnitude
+    of all force columns (``*_N``) for a force, of the column itself otherwise."""
+    scale = np.max(np.abs(block), axis=0, initial=0.0)
+    force = np.array([c.endswith("_N") for c in COLUMNS])
+    scale[force] = np.max(scale[force])
+    return scale
 
 
 def _cylinder_forces(spec, alpha_deg, settings, bank_deg, phase_deg):

@@ -56,7 +56,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from crankbase.errors import Problem
-from crankbase.tolerances import BALANCED_RTOL, ROUNDOFF_RTOL, SAME_ANGLE_DEG
+from crankbase.tolerances import BALANCED_RTOL, ROUNDOFF_RTOL, SAME_ANGLE_DEG, snap_roundoff
 
 from .forces import PLOT_STEP_DEG, analyze, force_table, two_term_acceleration
 from .kinematics import crank_slider
@@ -674,15 +674,20 @@ def _uniform(step, cycle):
     return np.linspace(0.0, cycle, n + 1)
 
 
-def _balance_frame(theta_deg, f):
+def _balance_frame(theta_deg, f, scale_F, scale_M):
+    """balance.csv: the free forces and moments at ``theta_deg``, their round-off
+    residues (a balanced part: ~1e-12 N) as 0 against the engine's force and moment
+    scales ``scale_F`` [N] and ``scale_M`` [N·m]."""
     import pandas as pd
 
-    cols = [np.asarray(theta_deg, float)]
-    for kind in ("F", "M"):
+    cols, scale = [np.asarray(theta_deg, float)], [0.0]     # angles: only −0.0 → 0.0
+    for kind, sc in (("F", scale_F), ("M", scale_M)):
         for p in BALANCE_PARTS:
             v = f[f"{kind}{p}"]
             cols += [v.real, v.imag]
-    return pd.DataFrame(np.column_stack(cols), columns=list(BALANCE_COLUMNS))
+            scale += [sc, sc]
+    block = snap_roundoff(np.column_stack(cols), scale)
+    return pd.DataFrame(block, columns=list(BALANCE_COLUMNS))
 
 
 def analyze_engine(spec, train, settings=None, *, fine_step_deg=None) -> EngineTrainResult:
@@ -720,7 +725,12 @@ def analyze_engine(spec, train, settings=None, *, fine_step_deg=None) -> EngineT
     cols = TORQUE_COLUMNS(n)
 
     def torque_frame(theta, M):
-        return pd.DataFrame(np.column_stack([theta, M.T, M.sum(0)]), columns=list(cols))
+        """torque.csv: θ, each cylinder's Mкр and the total; round-off residues (the
+        total of a balanced instant, ~1e-14 N·m) as 0 against the largest torque."""
+        block = np.column_stack([theta, M.T, M.sum(0)])
+        scale = np.full(block.shape[1], np.max(np.abs(block[:, 1:]), initial=0.0))
+        scale[0] = 0.0
+        return pd.DataFrame(snap_roundoff(block, scale), columns=list(cols))
 
     n_steps = cyc / step
     if abs(n_steps - round(n_steps)) < ROUNDOFF_RTOL * n_steps:
@@ -747,18 +757,20 @@ def analyze_engine(spec, train, settings=None, *, fine_step_deg=None) -> EngineT
     torque_table = torque[torque["alpha_deg"] <= span + SAME_ANGLE_DEG].reset_index(drop=True)
 
     cws = counterweights_for(spec, lay, train)
-    keep = theta_f <= 360.0 + SAME_ANGLE_DEG
-    fb = free_forces(spec, lay, theta_f[keep], cws, Pj=parts["Pj_N"][:, keep])
-    balance_curves = _balance_frame(theta_f[keep], fb)
-    if same:
-        balance = balance_curves
-    else:
-        rev = table_theta[table_theta <= 360.0 + SAME_ANGLE_DEG]
-        balance = _balance_frame(rev, free_forces(spec, lay, rev, cws))
+    # the engine's force scale (every inertia force in phase) and its arm, the length
     scale_F = n * spec.mj * spec.R * spec.omega ** 2 + \
         (n * spec.m_rod_rot + (spec.m_crank_rot or 0) * len(lay.throw_angles_deg)) \
         * spec.R * spec.omega ** 2
     length = max(float(np.ptp(lay.z)), spec.bore)
+    keep = theta_f <= 360.0 + SAME_ANGLE_DEG
+    fb = free_forces(spec, lay, theta_f[keep], cws, Pj=parts["Pj_N"][:, keep])
+    balance_curves = _balance_frame(theta_f[keep], fb, scale_F, scale_F * length)
+    if same:
+        balance = balance_curves
+    else:
+        rev = table_theta[table_theta <= 360.0 + SAME_ANGLE_DEG]
+        balance = _balance_frame(rev, free_forces(spec, lay, rev, cws), scale_F,
+                                 scale_F * length)
     rows = []
     for key, F, M in (("1", fb["F1"], fb["M1"]), ("2", fb["F2"], fb["M2"]),
                       ("j", fb["Fj"], fb["Mj"]), ("r", fb["Fr"], fb["Mr"]),

@@ -2,6 +2,7 @@
 workbook read back with openpyxl equals the CSV; mm columns = N ÷ μP; every plot exists
 and is not empty; bad input exits 2 with one line per problem and writes nothing; an
 existing report is replaced only by a complete new one."""
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -65,6 +66,22 @@ def test_csv_equals_force_table(run):
     text = (out / named(name, "forces.csv")).read_text()
     assert text.splitlines()[0].startswith("alpha_deg,p_gas_MPa,dPg_N,Pj_N,P_N,beta_deg")
     assert ";" not in text
+
+
+def test_csv_has_no_round_off_residues(run):
+    """At TDC the piston speed and β are exactly 0 (not −2e-32 m/s and −0.0°); no CSV of
+    the engine carries a round-off residue below 1e-12 of its column's scale, nor −0.0."""
+    name, lang, out = run
+    t = pd.read_csv(out / named(name, "forces.csv"))
+    tdc = t[t["alpha_deg"] == 0.0].iloc[0]
+    for col in ("v_m_s", "beta_deg", "x_mm", "N_N", "T_N", "M_Nm"):
+        assert tdc[col] == 0.0 and not np.signbit(tdc[col]), col
+    for csv in ("forces.csv", "torque.csv", "balance.csv", "table2.csv"):
+        text = (out / named(name, csv)).read_text()
+        assert not re.search(r"(^|,)-0\.0(,|$)", text, re.M), csv
+        a = np.abs(pd.read_csv(out / named(name, csv)).to_numpy(float))
+        tiny = (a > 0) & (a <= 1e-12 * a.max(axis=0))
+        assert not tiny.any(), (csv, np.argwhere(tiny)[:3])
 
 
 def test_workbook_equals_csv(run):
