@@ -13,7 +13,8 @@ Line kinds and text heights follow the Russian drafting standards:
   DXF names the CAD font ISOCPEUR (the usual stand-in for type B, with Cyrillic).
 
 Vectors are main lines with a filled arrowhead (4 mm long, 1.3 mm wide: shorter on short
-vectors); lines of the plan of positions and the lever's arms are thin lines.
+vectors, 0.45 of their length but not below 1.8 mm); lines of the plan of positions and
+the lever's arms are thin lines.
 """
 from __future__ import annotations
 
@@ -33,6 +34,7 @@ H_POINT = 3.5    # mm, point letters
 H_TITLE = 5.0    # mm, diagram titles
 ARROW_L = 4.0
 ARROW_W = 1.3
+ARROW_MIN = 1.8  # mm, the shortest arrowhead of a vector at least that long
 FONT = "DejaVu Sans"
 
 
@@ -177,7 +179,9 @@ def _arrow_parts(p1, p2):
     if L < 1e-6:
         return None
     u = d / L
-    hl = min(ARROW_L, 0.45 * L)
+    # 4 mm, 0.45 of a short vector, but at least ARROW_MIN mm (or the whole vector) so
+    # that the head of a short force arrow drawn to scale stays visible
+    hl = min(ARROW_L, max(0.45 * L, min(L, ARROW_MIN)))
     hw = ARROW_W * hl / ARROW_L
     base = p2 - u * hl
     return (p2, base + 1j * u * hw / 2, base - 1j * u * hw / 2)
@@ -333,7 +337,10 @@ def lever_block(pp, lang="ru") -> Block:
         items.append(placer.place(_point_candidates(z), lab, H_POINT))
     for v in arrows:
         p1, p2 = v.start, v.end
-        cands = [p2 + (p2 - p1) / abs(p2 - p1) * 3.0] + _label_candidates(p1, p2)
+        # beyond the tip, beside the arrow, then around its point (short arrows drawn to
+        # scale sit among the lines of the plan)
+        cands = ([p2 + (p2 - p1) / abs(p2 - p1) * 3.0] + _label_candidates(p1, p2)
+                 + _point_candidates(p1, 4.0) + _point_candidates(p1, 9.0))
         items.append(placer.place(cands, v.label(lang), H_LABEL))
     bbox = _items_bbox(items)
     x0, y0, x1, y1 = bbox

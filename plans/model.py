@@ -643,8 +643,9 @@ def _lever(spec, K, F, i, vplan: Plan, scale=None):
     forces = []
 
     def add(name, lru, len_, pname, v, Fv):
-        at = rot * v / mu
-        m = g.cross(at, Fv)
+        at = complex(rot * v / mu)
+        Fv = complex(Fv)
+        m = float(g.cross(at, Fv))
         size = abs(Fv)
         arm = m / size if size != 0 else 0.0
         forces.append(LeverForce(name, lru, len_, pname, at, Fv, arm, m))
