@@ -22,9 +22,15 @@ Conventions
   :data:`MAX_PLAN_MM` (250 mm) in width or height (near a dead position, ω3 and the
   plan grow without bound while pa stays), the round scale that keeps it within
   250 mm is taken instead, as a student would shorten pa.
-* Segment names are ASCII (``pa``, ``ab``, ``a_n3``, ``n3_b``, ``R23t``); the labels on
-  the drawing are the textbook's: Russian p, a, b, s₃, π, n₃ …; English o, a, b, s₃ for
-  the velocity diagram and o′, a′, b′ … for the acceleration diagram (Khurmi & Gupta).
+* The Zhukovsky lever draws every force from its point at one force scale of its own,
+  the round scale that keeps its largest force at most :data:`LEVER_LONGEST_MM` long.
+* The crank's polygon takes the balancing moment Mур as the textbook does: as the
+  balancing force Fур at A ⟂ OA (:func:`balancing_force`, segment ``Fb``), so its R12
+  is the analysis' R12 (Mур a couple) minus Fур.
+* Segment names are ASCII (``pa``, ``ab``, ``a_n3``, ``n3_b``, ``R23t``, ``Fb``); the
+  labels on the drawing are the textbook's: Russian p, a, b, s₃, π, n₃, Fур …; English o,
+  a, b, s₃ for the velocity diagram and o′, a′, b′ … for the acceleration diagram
+  (Khurmi & Gupta), Fb for Fур.
 """
 from __future__ import annotations
 

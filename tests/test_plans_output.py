@@ -135,6 +135,28 @@ def test_two_mechanisms_share_a_folder(tmp_path):
     assert press_plans["position"].unique().tolist() == [2]
 
 
+def test_mechanism_names_with_a_common_prefix(tmp_path):
+    """``press`` and ``press_b`` in one folder: the run of ``press`` keeps ``press_b``'s
+    plans (their names start with ``press_`` too; the manifest knows whose they are)."""
+    text = example_path("press.toml").read_text(encoding="utf-8")
+    assert text.count(f'name = "{PRESS}"') == 1
+    specs = {}
+    for n in ("press", "press_b"):
+        specs[n] = tmp_path / f"{n}.toml"
+        specs[n].write_text(text.replace(f'name = "{PRESS}"', f'name = "{n}"'),
+                            encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["linkage", str(specs["press_b"]), "-o", str(out), "--plans", "2",
+                 "--no-plots"]) == 0
+    b_files = {n: (out / n).read_bytes() for n in _files(out)}
+    assert "press_b_plans_2.pdf" in b_files and "press_b_sheet.dxf" in b_files
+    for plans_arg in ("2", "3"):
+        assert main(["linkage", str(specs["press"]), "-o", str(out), "--plans", plans_arg,
+                     "--no-plots"]) == 0
+        assert {n: (out / n).read_bytes() for n in b_files} == b_files
+    assert "press_plans_3.pdf" in _files(out) and "press_plans_2.pdf" not in _files(out)
+
+
 def test_error_table_written(press_run):
     et = pd.read_csv(press_run / f"{PRESS}_plan_errors.csv")
     st_ = pd.read_csv(press_run / f"{PRESS}_student_table.csv")
