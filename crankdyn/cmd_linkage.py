@@ -52,6 +52,9 @@ def add_parser(sub):
                    help="acceleration plan scale, (m/s²)/mm (default: round, πa 100-150 mm)")
     g.add_argument("--mu-f", type=float, metavar="MU",
                    help="force polygon scale, N/mm (default: round, largest force 100-150 mm)")
+    g.add_argument("--mu-lever", type=float, metavar="MU",
+                   help="force scale of the Zhukovsky lever, N/mm (default: round, largest "
+                        "force 50-75 mm)")
     p.set_defaults(func=run)
     return p
 
@@ -78,7 +81,8 @@ def _plan_options(args):
     scales = {}
     for opt, kinds, value in (("--mu-v", ("velocity",), args.mu_v),
                               ("--mu-a", ("acceleration",), args.mu_a),
-                              ("--mu-f", ("force_dyad", "force_crank"), args.mu_f)):
+                              ("--mu-f", ("force_dyad", "force_crank"), args.mu_f),
+                              ("--mu-lever", ("lever",), args.mu_lever)):
         if value is None:
             continue
         if not (value > 0 and value < float("inf")):
@@ -114,8 +118,9 @@ def run(args) -> int:
     plan_opts = None
     if args.plans is not None:
         plan_opts = _plan_options(args)
-    elif args.measured or args.mu_v or args.mu_a or args.mu_f:
-        raise SpecError(["--measured, --mu-v, --mu-a, --mu-f: only with --plans"])
+    elif (args.measured or args.mu_v or args.mu_a or args.mu_f
+          or args.mu_lever is not None):
+        raise SpecError(["--measured, --mu-v, --mu-a, --mu-f, --mu-lever: only with --plans"])
     spec = linkage.load_spec(spec_path)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", SingularPositionWarning)

@@ -6,6 +6,7 @@ import math
 import re
 
 import ezdxf
+import numpy as np
 import pandas as pd
 import pytest
 
@@ -111,6 +112,19 @@ def test_files(ratchet_run, press_run):
         assert math.isclose(fb["length_mm"], fb["value"] / fb["scale"], rel_tol=1e-12)
         lv = table[(table["position"] == r["position"]) & (table["plan"] == "lever")]
         assert (lv["scale"] == r["scale_N_per_mm"]).all() and "Fb" in set(lv["segment"])
+
+
+def test_given_lever_scale(tmp_path):
+    """--mu-lever fixes the lever's force scale: every lever arrow is F/μ of it."""
+    out = tmp_path / "out"
+    assert main(["linkage", "--example", "-o", str(out), "--plans", "5", "--no-plots",
+                 "--mu-lever", "50"]) == 0
+    t = pd.read_csv(out / f"{RATCHET}_plans.csv")
+    lever = t[t["plan"] == "lever"]
+    assert len(lever) > 0 and (lever["scale"] == 50.0).all()
+    assert np.allclose(lever["length_mm"], lever["value"] / 50.0, rtol=1e-12)
+    assert pd.read_csv(out / f"{RATCHET}_lever.csv")["scale_N_per_mm"].tolist() == [50.0]
+    assert (t[t["plan"] != "lever"]["scale"] != 50.0).any()       # the others unchanged
 
 
 def test_two_mechanisms_share_a_folder(tmp_path):
@@ -313,6 +327,12 @@ def test_bad_input_exits_2_and_writes_nothing(tmp_path, capsys):
     assert not out.exists()
     assert main(["linkage", spec, "-o", str(out), "--measured", "x.csv"]) == 2
     assert "only with --plans" in capsys.readouterr().err
+    assert main(["linkage", spec, "-o", str(out), "--mu-lever", "50"]) == 2
+    assert "only with --plans" in capsys.readouterr().err
+    assert main(["linkage", spec, "-o", str(out), "--plans", "5", "--mu-lever", "0"]) == 2
+    assert capsys.readouterr().err.strip() == ("crankdyn linkage: error: --mu-lever: got 0; "
+                                               "must be a positive number")
+    assert not out.exists()
     bad = tmp_path / "bad.toml"
     bad.write_text(example_path("ratchet.toml").read_text() + '\n[drawing]\nauthor = "X"\n',
                    encoding="utf-8")
