@@ -279,10 +279,19 @@ def _lock(directory: Path):
     raise OutputError(f"output folder {directory}: keeps being removed by another run")
 
 
-def _in_unit(name: str, unit) -> bool:
-    """Whether output file ``name`` belongs to the report named ``unit`` (``<unit>.xlsx``,
-    ``<unit>_forces.csv`` …); every file does when ``unit`` is None."""
-    return unit is None or name.startswith((unit + "_", unit + "."))
+def _in_unit(name: str, unit, info=None) -> bool:
+    """Whether output file ``name`` of the previous manifest (its entry ``info``) belongs
+    to the report named ``unit``; every file does when ``unit`` is None.  The manifest
+    records the unit that wrote each file, so a file belongs to exactly that unit (the
+    report ``press_b``'s ``press_b_plans.csv`` is not the report ``press``'s, though its
+    name starts with ``press_``); an entry without a unit (a manifest of an older version,
+    a report that was not named) is judged by its name: ``<unit>.xlsx``,
+    ``<unit>_forces.csv`` …"""
+    if unit is None:
+        return True
+    if info is not None and info.get("unit") is not None:
+        return info["unit"] == unit
+    return name.startswith((unit + "_", unit + "."))
 
 
 def _commit(directory: Path, stage: Path, inputs, unit=None) -> None:
@@ -296,7 +305,7 @@ def _commit(directory: Path, stage: Path, inputs, unit=None) -> None:
         p = stage / n
         with open(p, "rb") as f:
             os.fsync(f.fileno())
-        files[n] = {"size": p.stat().st_size, "sha256": _sha256(p)}
+        files[n] = {"size": p.stat().st_size, "sha256": _sha256(p), "unit": unit}
     # files of the previous report that this one does not write are part of the old unit:
     # removed, unless the user has changed them since (then they are not ours any more)
     old = None
@@ -309,7 +318,7 @@ def _commit(directory: Path, stage: Path, inputs, unit=None) -> None:
             p = directory / n
             if n in files or p.resolve() in ins or not p.is_file():
                 continue
-            if not _in_unit(n, unit):          # another report's file in this folder
+            if not _in_unit(n, unit, info):    # another report's file in this folder
                 files[n] = info
                 continue
             if p.stat().st_size == info.get("size") and _sha256(p) == info.get("sha256"):
@@ -354,7 +363,8 @@ def staged_output(directory, inputs=(), unit=None):
     paths that must not be overwritten (:class:`OutputError`).  ``unit``: the name of
     the report when its files are named after it (``<unit>.xlsx``, ``<unit>_*.csv``):
     then only the old files of that same report are replaced, and reports of other
-    engines or mechanisms in the folder stay (and stay in the manifest).
+    engines or mechanisms in the folder stay (and stay in the manifest, which records
+    the unit of every file, so ``press`` never takes ``press_b``'s files for its own).
     """
     import shutil
 

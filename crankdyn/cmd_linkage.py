@@ -3,8 +3,10 @@
 Writes ``<name>_kinematics.csv``, ``<name>_forces.csv``, the workbook ``<name>.xlsx`` and
 the plots ``<name>_<plot>.png`` (``<name>``: the mechanism's name as a file stem)
 (plan of positions; over a full turn at 1°: ω and ε of links 3 and 4, the driving moment
-Mур, the transmission angle).  All outputs are produced in a staging folder and moved
-into place only when every one of them is complete.
+Mур, the transmission angle); with ``--plans`` the graphical method's files, named the
+same way (``<name>_plans.csv``, ``<name>_sheet.pdf`` …, see :mod:`plans.report`).  All
+outputs are produced in a staging folder and moved into place only when every one of them
+is complete; the reports of other mechanisms in the folder stay.
 """
 from __future__ import annotations
 
@@ -35,19 +37,24 @@ def add_parser(sub):
     g = p.add_argument_group(
         "graphical method (velocity and acceleration plans, force polygons, Zhukovsky lever)")
     g.add_argument("--plans", metavar="LIST",
-                   help="position numbers, e.g. 5,11, or 'all': plans_<pos>.svg/.pdf/.png, "
-                        "plans.csv, lever.csv, student_table.csv, sheet.pdf, sheet.dxf")
+                   help="position numbers, e.g. 5,11, or 'all': <name>_plans_<pos>.svg/.pdf/"
+                        ".png, <name>_plans.csv, _lever.csv, _lever_forces.csv, "
+                        "_student_table.csv, _sheet.pdf, _sheet.dxf")
     g.add_argument("--sheet", default="A1", metavar="A1|A3",
                    help="drawing sheet size, landscape (default A1)")
     g.add_argument("--measured", metavar="CSV",
                    help="a student's measured segments (position, segment, length_mm or "
-                        "value): writes plan_errors.csv, the error of the plan method in %%")
+                        "value): writes <name>_plan_errors.csv, the error of the plan method "
+                        "in %%")
     g.add_argument("--mu-v", type=float, metavar="MU",
                    help="velocity plan scale, (m/s)/mm (default: round, pa 100-150 mm)")
     g.add_argument("--mu-a", type=float, metavar="MU",
                    help="acceleration plan scale, (m/s²)/mm (default: round, πa 100-150 mm)")
     g.add_argument("--mu-f", type=float, metavar="MU",
                    help="force polygon scale, N/mm (default: round, largest force 100-150 mm)")
+    g.add_argument("--mu-lever", type=float, metavar="MU",
+                   help="force scale of the Zhukovsky lever, N/mm (default: round, largest "
+                        "force 50-75 mm)")
     p.set_defaults(func=run)
     return p
 
@@ -74,7 +81,8 @@ def _plan_options(args):
     scales = {}
     for opt, kinds, value in (("--mu-v", ("velocity",), args.mu_v),
                               ("--mu-a", ("acceleration",), args.mu_a),
-                              ("--mu-f", ("force_dyad", "force_crank"), args.mu_f)):
+                              ("--mu-f", ("force_dyad", "force_crank"), args.mu_f),
+                              ("--mu-lever", ("lever",), args.mu_lever)):
         if value is None:
             continue
         if not (value > 0 and value < float("inf")):
@@ -110,8 +118,9 @@ def run(args) -> int:
     plan_opts = None
     if args.plans is not None:
         plan_opts = _plan_options(args)
-    elif args.measured or args.mu_v or args.mu_a or args.mu_f:
-        raise SpecError(["--measured, --mu-v, --mu-a, --mu-f: only with --plans"])
+    elif (args.measured or args.mu_v or args.mu_a or args.mu_f
+          or args.mu_lever is not None):
+        raise SpecError(["--measured, --mu-v, --mu-a, --mu-f, --mu-lever: only with --plans"])
     spec = linkage.load_spec(spec_path)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", SingularPositionWarning)
@@ -137,15 +146,15 @@ def run(args) -> int:
     inputs = [spec_path] + ([args.measured] if args.measured else [])
     stale = [p for p in (Path(args.output) / f"{name}_{s}.png" for s in PLOTS
                          if s not in figures) if p.exists()]
-    # files named after the mechanism: other mechanisms' reports in the folder stay; the
-    # plans' files are not, so with --plans the folder holds this one report
-    unit = name if plan_list is None else None
-    with staged_output(args.output, inputs=inputs, unit=unit) as stage:
+    # every file is named after the mechanism (the plans' too): other mechanisms' reports
+    # in the folder stay
+    with staged_output(args.output, inputs=inputs, unit=name) as stage:
         if plan_list is not None:
             from plans.report import write_plans
 
-            info = write_plans(result, plan_list, stage, lang=args.lang, sheet=args.sheet,
-                               measurements=measured, previews=not args.no_plots)
+            info = write_plans(result, plan_list, stage, name=name, lang=args.lang,
+                               sheet=args.sheet, measurements=measured,
+                               previews=not args.no_plots)
         before = set(stage.iterdir())
         write_csvs(result, stage)
         for csv in sorted(set(stage.iterdir()) - before):   # named after the mechanism
@@ -182,5 +191,6 @@ def run(args) -> int:
         for pp in plan_list:
             L = pp.lever
             print(f"    position {pp.tag}: Mур lever {L.M_lever_Nm:.4f} N·m, kinetostatics "
-                  f"{L.M_kinetostatic_Nm:.4f} N·m, difference {L.difference_percent:.1e} %")
+                  f"{L.M_kinetostatic_Nm:.4f} N·m, difference {L.difference_percent:.1e} %; "
+                  f"Fур = {L.balancing_force_N:.3f} N at A ⟂ OA")
     return 0

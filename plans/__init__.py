@@ -9,8 +9,8 @@ true scale, the A1/A3 sheet) and :mod:`plans.dxf` writes the sheet as DXF (ezdxf
 Importing this package imports neither matplotlib nor ezdxf.
 """
 from .errors import PlanError
-from .model import (Lever, LeverForce, Plan, PositionPlans, Vector, build_plans,
-                    round_scale)
+from .model import (Lever, LeverForce, Plan, PositionPlans, Vector, balancing_force,
+                    build_plans, round_scale)
 
-__all__ = ["build_plans", "round_scale", "Plan", "Vector", "Lever", "LeverForce",
-           "PositionPlans", "PlanError"]
+__all__ = ["build_plans", "round_scale", "balancing_force", "Plan", "Vector", "Lever",
+           "LeverForce", "PositionPlans", "PlanError"]

@@ -13,7 +13,8 @@ Line kinds and text heights follow the Russian drafting standards:
   DXF names the CAD font ISOCPEUR (the usual stand-in for type B, with Cyrillic).
 
 Vectors are main lines with a filled arrowhead (4 mm long, 1.3 mm wide: shorter on short
-vectors); lines of the plan of positions and the lever's arms are thin lines.
+vectors, 0.45 of their length but not below 1.8 mm); lines of the plan of positions and
+the lever's arms are thin lines.
 """
 from __future__ import annotations
 
@@ -33,6 +34,7 @@ H_POINT = 3.5    # mm, point letters
 H_TITLE = 5.0    # mm, diagram titles
 ARROW_L = 4.0
 ARROW_W = 1.3
+ARROW_MIN = 1.8  # mm, the shortest arrowhead of a vector at least that long
 FONT = "DejaVu Sans"
 
 
@@ -177,7 +179,9 @@ def _arrow_parts(p1, p2):
     if L < 1e-6:
         return None
     u = d / L
-    hl = min(ARROW_L, 0.45 * L)
+    # 4 mm, 0.45 of a short vector, but at least ARROW_MIN mm (or the whole vector) so
+    # that the head of a short force arrow drawn to scale stays visible
+    hl = min(ARROW_L, max(0.45 * L, min(L, ARROW_MIN)))
     hw = ARROW_W * hl / ARROW_L
     base = p2 - u * hl
     return (p2, base + 1j * u * hw / 2, base - 1j * u * hw / 2)
@@ -310,11 +314,11 @@ def diagram_block(pp, kind, lang="ru") -> Block:
     return _titled(items, bbox, lines, f"{pp.tag}:{kind}")
 
 
-def lever_block(pp, lang="ru", force_len=(8.0, 30.0)) -> Block:
+def lever_block(pp, lang="ru") -> Block:
     """Zhukovsky's lever: the velocity plan turned 90° clockwise (thin lines), every load
-    as an arrow at its point (direction true, length only indicative: ``force_len`` mm for
-    the smallest and the largest force), the balancing force Fур at a, and the balancing
-    moment from the lever beside the kinetostatic one."""
+    as an arrow from its point at the lever's force scale μF (``|F|/μF`` mm, stated under
+    the title), the balancing force Fур at a, and the balancing moment and force from the
+    lever beside the kinetostatic ones."""
     L = pp.lever
     items = []
     segs = []
@@ -322,44 +326,35 @@ def lever_block(pp, lang="ru", force_len=(8.0, 30.0)) -> Block:
         items.append(Line(p1, p2, "THIN"))
         segs.append((p1, p2))
     items.append(Circle(0j, 0.6, "VECTORS", True))
-    mags = [abs(f.force) for f in L.forces if abs(f.force) != 0] + [abs(L.balancing_force_N)]
-    lo, hi = min(mags), max(mags)
-
-    def shown(F):
-        if hi == lo:
-            return force_len[1]
-        return force_len[0] + (force_len[1] - force_len[0]) * (abs(F) - lo) / (hi - lo)
-
-    arrows = []
-    for f in L.forces:
-        if abs(f.force) == 0:
-            continue
-        d = f.force / abs(f.force) * shown(f.force)
-        arrows.append((f.at, f.at + d, f.label_ru if lang == "ru" else f.label_en))
-    fb = L.balancing_force_N
-    if fb != 0:
-        d = L.balancing_dir * math.copysign(1.0, fb) * shown(fb)
-        arrows.append((L.balancing_at, L.balancing_at + d, "Fур" if lang == "ru" else "Fb"))
-    for p1, p2, _ in arrows:
-        items.append(Arrow(p1, p2, "LEVER"))
-        segs.append((p1, p2))
+    arrows = [v for v in L.arrows() if v.length_mm >= 1e-6]
+    for v in arrows:
+        items.append(Arrow(v.start, v.end, "LEVER", f"{pp.tag}:lever:{v.name}"))
+        segs.append((v.start, v.end))
     placer = _Placer(segs)
     vplan = pp.plans["velocity"]
     for name, z in L.points.items():
         lab = vplan.point_labels[name][0 if lang == "ru" else 1]
         items.append(placer.place(_point_candidates(z), lab, H_POINT))
-    for p1, p2, lab in arrows:
-        cands = [p2 + (p2 - p1) / abs(p2 - p1) * 3.0] + _label_candidates(p1, p2)
-        items.append(placer.place(cands, lab, H_LABEL))
+    for v in arrows:
+        p1, p2 = v.start, v.end
+        # beyond the tip, beside the arrow, then around its point (short arrows drawn to
+        # scale sit among the lines of the plan)
+        cands = ([p2 + (p2 - p1) / abs(p2 - p1) * 3.0] + _label_candidates(p1, p2)
+                 + _point_candidates(p1, 4.0) + _point_candidates(p1, 9.0))
+        items.append(placer.place(cands, v.label(lang), H_LABEL))
     bbox = _items_bbox(items)
     x0, y0, x1, y1 = bbox
     if lang == "ru":
-        res = [f"Mур (рычаг) = {fmt(L.M_lever_Nm, lang, 6)} Н·м",
-               f"Mур (кинетостатика) = {fmt(L.M_kinetostatic_Nm, lang, 6)} Н·м",
+        res = [f"Mур (рычаг) = {fmt(L.M_lever_Nm, lang, 6)} Н·м, "
+               f"Fур = {fmt(L.balancing_force_N, lang, 6)} Н",
+               f"Mур (кинетостатика) = {fmt(L.M_kinetostatic_Nm, lang, 6)} Н·м, "
+               f"Fур = {fmt(L.F_kinetostatic_N, lang, 6)} Н",
                f"δ = {L.difference_percent:.2e} %".replace(".", ",")]
     else:
-        res = [f"Mb (lever) = {fmt(L.M_lever_Nm, lang, 6)} N·m",
-               f"Mb (kinetostatics) = {fmt(L.M_kinetostatic_Nm, lang, 6)} N·m",
+        res = [f"Mb (lever) = {fmt(L.M_lever_Nm, lang, 6)} N·m, "
+               f"Fb = {fmt(L.balancing_force_N, lang, 6)} N",
+               f"Mb (kinetostatics) = {fmt(L.M_kinetostatic_Nm, lang, 6)} N·m, "
+               f"Fb = {fmt(L.F_kinetostatic_N, lang, 6)} N",
                f"difference = {L.difference_percent:.2e} %"]
     y = y0 - 3.0
     for line in res:
@@ -367,10 +362,13 @@ def lever_block(pp, lang="ru", force_len=(8.0, 30.0)) -> Block:
         y -= H_LABEL * 1.7
     bbox = _items_bbox(items)
     title = _TITLES["lever"][0 if lang == "ru" else 1]
-    note = ("план скоростей, повёрнутый на 90° по ч. с.; силы не в масштабе"
-            if lang == "ru" else
-            "velocity diagram turned 90° clockwise; forces not to scale")
-    return _titled(items, bbox, [(title, H_TITLE), (_where(pp, lang), H_POINT),
+    mu = "μF" if lang == "ru" else "kF"
+    unit = _SCALE_UNIT["force_crank"][0 if lang == "ru" else 1]
+    note = ("план скоростей, повёрнутый на 90° по ч. с." if lang == "ru" else
+            "velocity diagram turned 90° clockwise")
+    return _titled(items, bbox, [(title, H_TITLE),
+                                 (f"{_where(pp, lang)}, {mu} = {fmt(L.scale, lang)} {unit}",
+                                  H_POINT),
                                  (note, H_LABEL)], f"{pp.tag}:lever")
 
 

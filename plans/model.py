@@ -22,9 +22,15 @@ Conventions
   :data:`MAX_PLAN_MM` (250 mm) in width or height (near a dead position, ω3 and the
   plan grow without bound while pa stays), the round scale that keeps it within
   250 mm is taken instead, as a student would shorten pa.
-* Segment names are ASCII (``pa``, ``ab``, ``a_n3``, ``n3_b``, ``R23t``); the labels on
-  the drawing are the textbook's: Russian p, a, b, s₃, π, n₃ …; English o, a, b, s₃ for
-  the velocity diagram and o′, a′, b′ … for the acceleration diagram (Khurmi & Gupta).
+* The Zhukovsky lever draws every force from its point at one force scale of its own,
+  the round scale that keeps its largest force at most :data:`LEVER_LONGEST_MM` long.
+* The crank's polygon takes the balancing moment Mур as the textbook does: as the
+  balancing force Fур at A ⟂ OA (:func:`balancing_force`, segment ``Fb``), so its R12
+  is the analysis' R12 (Mур a couple) minus Fур.
+* Segment names are ASCII (``pa``, ``ab``, ``a_n3``, ``n3_b``, ``R23t``, ``Fb``); the
+  labels on the drawing are the textbook's: Russian p, a, b, s₃, π, n₃, Fур …; English o,
+  a, b, s₃ for the velocity diagram and o′, a′, b′ … for the acceleration diagram
+  (Khurmi & Gupta), Fb for Fур.
 """
 from __future__ import annotations
 
@@ -40,18 +46,24 @@ from linkage.spec import LINK_NUMBER
 from .errors import PlanError
 
 __all__ = ["Vector", "Plan", "LeverForce", "Lever", "PositionPlans", "round_scale",
-           "build_plans", "ROUND_MANTISSAS", "PLAN_KINDS"]
+           "build_plans", "balancing_force", "ROUND_MANTISSAS", "PLAN_KINDS", "SCALE_KINDS",
+           "LEVER_LONGEST_MM"]
 
 #: Mantissas of the round scales (ГОСТ-like series used for drawing scales of plans).
 ROUND_MANTISSAS = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
 #: Plan kinds, in the order of the course project.
 PLAN_KINDS = ("velocity", "acceleration", "force_dyad", "force_crank")
+#: Scales that :func:`build_plans` accepts: the plans' and the Zhukovsky lever's forces.
+SCALE_KINDS = PLAN_KINDS + ("lever",)
 _UNITS = {"velocity": "m/s", "acceleration": "m/s2", "force_dyad": "N", "force_crank": "N"}
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 
 #: Largest extent (width or height) of a plan at the default scale. [mm]
 MAX_PLAN_MM = 250.0
+#: Longest force arrow on the Zhukovsky lever at its default round force scale: half the
+#: 150 mm of pa, so the arrows stay within the turned velocity plan's size. [mm]
+LEVER_LONGEST_MM = 75.0
 
 
 def _extent(plan):
@@ -229,8 +241,8 @@ class Lever:
         Every external load, inertia loads and weights included; moments replaced by
         force couples at the ends of their link.
     balancing_force_N : float
-        Fур at the crank pin (point a of the lever), perpendicular to pa, + in the sense of
-        a counter-clockwise Mур. [N]
+        Fур at the crank pin (point a of the lever), perpendicular to pa, from the lever's
+        balance of moments about the pole, + in the sense of a counter-clockwise Mур. [N]
     balancing_at : complex
         Point a on the lever. [mm]
     balancing_dir : complex
@@ -246,6 +258,12 @@ class Lever:
         The turned velocity plan's points. [mm]
     segments : list of tuple
         The turned velocity plan's segments: (name, start, end, label ru, label en). [mm]
+    scale : float
+        μF of the lever: every force is drawn from its point as an arrow |F|/μF mm long
+        (:meth:`arrows`). [N/mm]
+    F_kinetostatic_N : float
+        Fур = Mур/lOA from the kinetostatic Mур (:func:`balancing_force`), same sign
+        convention as ``balancing_force_N``. [N]
     """
 
     forces: list
@@ -258,6 +276,26 @@ class Lever:
     difference_percent: float
     points: dict
     segments: list
+    scale: float
+    F_kinetostatic_N: float
+
+    @property
+    def balancing_force(self) -> complex:
+        """Fур from the lever as a vector. [N]"""
+        return self.balancing_force_N * self.balancing_dir
+
+    def arrows(self):
+        """The force arrows of the lever at its scale :attr:`scale`, as
+        :class:`Vector` (plan ``lever``): each load from its point, then ``Fb`` (Fур) at
+        a; ``length_mm = |F|/μF``."""
+        out = [Vector("lever", f.name, f.name, f.label_ru, f.label_en, f.at,
+                      f.at + f.force / self.scale, abs(f.force), "N", self.scale, "load")
+               for f in self.forces]
+        Fb = self.balancing_force
+        out.append(Vector("lever", "Fb", "Fb", "Fур", "Fb", self.balancing_at,
+                          self.balancing_at + Fb / self.scale, abs(Fb), "N", self.scale,
+                          "balancing"))
+        return out
 
 
 @dataclass
@@ -553,12 +591,41 @@ def _force_dyad(spec, K, F, i, mu):
     return P
 
 
-def _force_crank(spec, F, i, mu):
+def balancing_force(M_Nm, zA):
+    """The balancing force Fур that replaces the balancing moment Mур on the crank.
+
+    Fур is applied at the crank pin A perpendicular to the crank OA, so that its moment
+    about O is Mур: ``OA × Fур = Mур``, hence |Fур| = |Mур|/lOA and
+    ``Fур = Mур·i·OA/lOA²`` (seed 000 §4, the force analysis of the initial link;
+    Artobolevsky, Теория механизмов и машин, 1988, §13).
+
+    Parameters
+    ----------
+    M_Nm : float
+        The balancing moment Mур on the crank, + counter-clockwise. [N·m]
+    zA : complex
+        The crank pin relative to the pivot O (x + iy). [m]
+
+    Returns
+    -------
+    complex
+        Fур. [N]
+    """
+    return M_Nm * 1j * zA / (abs(zA) ** 2)
+
+
+def _force_crank(spec, K, F, i, mu):
+    """The crank's polygon as the textbook builds it: the balancing moment Mур applied as
+    the force Fур at A ⟂ OA (:func:`balancing_force`), so R32 + G2 + Fu2 (+ applied
+    forces) + Fур + R12 = 0 closes at R12.  R12 here is the frame's reaction with Fур at
+    A: the analysis' R12 (Mур a couple) minus Fур."""
     R32 = -complex(_row(F, i, "R23_x_N"), _row(F, i, "R23_y_N"))
+    Fb = balancing_force(_row(F, i, "M_drive_Nm"), _c(K, i, "A", ""))
+    R12 = complex(_row(F, i, "R12_x_N"), _row(F, i, "R12_y_N")) - Fb
     items = [("R32", "R32", "R₃₂", "R₃₂", R32, "reaction")]
     items += [(n, q, lr, le, f, k) for n, q, lr, le, f, k, _ in _loads_of(spec, "crank", F, i)]
-    items.append(("R12", "R12", "R₁₂", "R₁₂",
-                  complex(_row(F, i, "R12_x_N"), _row(F, i, "R12_y_N")), "reaction"))
+    items.append(("Fb", "Fb", "Fур", "Fb", Fb, "balancing"))
+    items.append(("R12", "R12_Fb", "R₁₂", "R₁₂", R12, "reaction"))
     P = Plan("force_crank", mu, "N", {}, {}, [])
     ends = _chain(P, items)
     P.polygons.append([(it[0], 1) for it in items])
@@ -567,10 +634,12 @@ def _force_crank(spec, F, i, mu):
     return P
 
 
-def _lever(spec, K, F, i, vplan: Plan):
+def _lever(spec, K, F, i, vplan: Plan, scale=None):
     """Zhukovsky's lever: the velocity plan turned 90° clockwise; a force F applied at a
     point of velocity v sits at −i·v/μV and its moment about the pole is v·F/μV, its
-    power over μV.  Σ moments + Fур·pa = 0 gives Fур, and Mур = Fур·lOA.
+    power over μV.  Σ moments + Fур·pa = 0 gives Fур, and Mур = Fур·lOA.  The forces
+    are drawn at the lever's own round force scale (``scale``, default from the largest
+    force with :data:`LEVER_LONGEST_MM`).
 
     References: Artobolevsky, Теория механизмов и машин, 1988, §13 (рычаг Жуковского);
     seed 000 §4 (the same loads: Gi, Fui, Mui, Mпс)."""
@@ -580,8 +649,9 @@ def _lever(spec, K, F, i, vplan: Plan):
     forces = []
 
     def add(name, lru, len_, pname, v, Fv):
-        at = rot * v / mu
-        m = g.cross(at, Fv)
+        at = complex(rot * v / mu)
+        Fv = complex(Fv)
+        m = float(g.cross(at, Fv))
         size = abs(Fv)
         arm = m / size if size != 0 else 0.0
         forces.append(LeverForce(name, lru, len_, pname, at, Fv, arm, m))
@@ -618,14 +688,18 @@ def _lever(spec, K, F, i, vplan: Plan):
             p1, p2 = ends[lname]
             add(f"{name}_{p2}", f"F({lru})", f"F({len_})", p2, second.v, f)
             add(f"{name}_{p1}", f"F({lru})", f"F({len_})", p1, first.v, -f)
+    # Fур at a, perpendicular to OA: its moment on the lever, Fур·(a × i·e2), balances
+    # the sum of the loads' moments about the pole
+    vA, zA = _c(K, i, "A", "v"), _c(K, i, "A", "")
+    e2 = zA / abs(zA)                               # along OA
+    at_a = rot * vA / mu
     total = sum(fc.moment_Nmm for fc in forces)
-    omega = spec.omega
-    M_lever = -total * mu / omega + 0.0             # + 0.0: no −0.0 without loads
-    vA = _c(K, i, "A", "v")
+    arm_a = g.cross(at_a, 1j * e2)                  # signed, |arm| = pa [mm]
+    Fb = -total / arm_a + 0.0                       # + 0.0: no −0.0 without loads
+    M_lever = Fb * spec.crank                       # Mур = Fур·lOA, + ccw
     pa = abs(vA) / mu
-    Fb = M_lever / spec.crank                      # + in the sense of a ccw couple
-    e2 = links["crank"].e
     M_kin = _row(F, i, "M_drive_Nm")
+    F_kin_N = (balancing_force(M_kin, zA) / (1j * e2)).real + 0.0
     if M_kin != 0:
         diff = 100.0 * (M_lever - M_kin) / abs(M_kin)
     else:
@@ -633,8 +707,12 @@ def _lever(spec, K, F, i, vplan: Plan):
     points = {k: rot * z for k, z in vplan.points.items()}
     segments = [(v.name, rot * v.start, rot * v.end, v.label_ru, v.label_en)
                 for v in vplan.vectors]
-    return Lever(forces, Fb, rot * vA / mu, 1j * e2, pa,
-                 M_lever, M_kin, diff, points, segments)
+    # the lever's force scale: the textbook's round scale of its largest force
+    if scale is None:
+        big = max([abs(fc.force) for fc in forces] + [abs(Fb)])
+        scale = round_scale(big or 1.0, LEVER_LONGEST_MM)
+    return Lever(forces, Fb, at_a, 1j * e2, pa, M_lever, M_kin, diff, points, segments,
+                 scale, F_kin_N)
 
 
 def _angular(spec, K, i, vplan, aplan):
@@ -667,8 +745,9 @@ def build_plans(result, positions=None, *, scales=None, crank_angles_deg=None):
         Position numbers of the plan of positions (default: all rows of ``result``).
     scales : dict, optional
         Fixed scales: ``velocity`` [(m/s)/mm], ``acceleration`` [(m/s²)/mm],
-        ``force_dyad``, ``force_crank`` [N/mm]; missing ones are the textbook's round
-        scales (:func:`round_scale`; pa, πa and the largest force ≤ 150 mm).
+        ``force_dyad``, ``force_crank``, ``lever`` [N/mm]; missing ones are the
+        textbook's round scales (:func:`round_scale`; pa, πa and the largest force of a
+        polygon ≤ 150 mm, the largest force on the lever ≤ :data:`LEVER_LONGEST_MM`).
     crank_angles_deg : ignored unless ``result`` was analysed at explicit angles; then
         ``positions`` selects rows by their 1-based order.
 
@@ -693,8 +772,8 @@ def build_plans(result, positions=None, *, scales=None, crank_angles_deg=None):
                         "need the inertia loads)")
     scales = dict(scales or {})
     for k, v in scales.items():
-        if k not in PLAN_KINDS:
-            problems.append(f"scales.{k}: unknown plan; valid: {', '.join(PLAN_KINDS)}")
+        if k not in SCALE_KINDS:
+            problems.append(f"scales.{k}: unknown plan; valid: {', '.join(SCALE_KINDS)}")
         elif v is not None and not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
             problems.append(f"scales.{k}: got {v!r}; must be a positive number")
     if problems:
@@ -741,9 +820,9 @@ def build_plans(result, positions=None, *, scales=None, crank_angles_deg=None):
         dyad = scale_of("force_dyad", lambda m: _force_dyad(spec, K, F, i, m),
                         lambda p: max(v.length_mm for v in p.vectors if v.name != "R43")
                         or 1.0)
-        crank = scale_of("force_crank", lambda m: _force_crank(spec, F, i, m),
+        crank = scale_of("force_crank", lambda m: _force_crank(spec, K, F, i, m),
                          lambda p: max(v.length_mm for v in p.vectors) or 1.0)
-        lever = _lever(spec, K, F, i, vplan)
+        lever = _lever(spec, K, F, i, vplan, scales.get("lever"))
         geo = {"O": 0j, "A": _c(K, i, "A", ""), "B": _c(K, i, "B", "")}
         if spec.kind == "crank-rocker":
             geo["C"] = complex(spec.ground * math.cos(spec.ground_angle),

@@ -3,34 +3,41 @@
 
 Files
 -----
-``plans_<pos>.svg``, ``plans_<pos>.pdf``
+Every file is named after the mechanism, ``<name>_…`` (``<name>`` = the spec's name as a
+file stem, :func:`crankbase.output.safe_name`, as the other linkage outputs), so the
+plans of two mechanisms written into one folder never mix:
+
+``<name>_plans_<pos>.svg``, ``<name>_plans_<pos>.pdf``
     All plans of a position at true scale (1 mm of a plan = 1 mm of paper at 100 %).
-``plans_<pos>.png``
+``<name>_plans_<pos>.png``
     Preview of the same (150 dpi).
-``plans.csv``
-    ``position, plan, segment, length_mm, value, unit, scale``.
-``lever.csv``
-    ``position, M_lever_Nm, M_kinetostatic_Nm, difference_percent``.
-``lever_forces.csv``
-    Every force on the lever with its point, magnitude, arm and moment.
-``student_table.csv``
+``<name>_plans.csv``
+    ``position, plan, segment, length_mm, value, unit, scale`` (the lever's arrows too).
+``<name>_lever.csv``
+    ``position, M_lever_Nm, M_kinetostatic_Nm, difference_percent, F_lever_N,
+    F_kinetostatic_N, scale_N_per_mm``.
+``<name>_lever_forces.csv``
+    Every force on the lever with its point, magnitude, arm, moment and arrow length.
+``<name>_student_table.csv``
     The table a student fills from the plans (segments, labels, lengths, values, ω and ε).
-``plan_errors.csv``
+``<name>_plan_errors.csv``
     With measurements: the error of the plan method in % per measured segment.
-``sheet.pdf``, ``sheet.dxf`` (``sheet_2.dxf`` … when the plans need more sheets),
-``sheet.png``
+``<name>_sheet.pdf``, ``<name>_sheet.dxf`` (``<name>_sheet_2.dxf`` … when the plans need
+more sheets), ``<name>_sheet.png`` (``<name>_sheet_2.png`` …)
     The drawing sheet(s) A1 or A3 landscape; the PDF has one page per sheet.
 """
 from __future__ import annotations
 
 from pathlib import Path
 
+from crankbase.output import safe_name
+
 from .drawing import layout_sheets, position_figure, sheet_figure, title_fields
 from .dxf import write_dxf
 from .tables import (error_table, lever_forces_table, lever_table, plans_table,
                      student_table)
 
-__all__ = ["write_plans"]
+__all__ = ["write_plans", "output_names"]
 
 
 def _csv(df, path):
@@ -38,8 +45,28 @@ def _csv(df, path):
     df.to_csv(path, index=False, float_format=None, lineterminator="\n")
 
 
-def write_plans(result, plans, folder, *, lang="ru", sheet="A1", measurements=None,
-                previews=True):
+def output_names(name, tags, sheets=1, measurements=False, previews=True):
+    """The file names :func:`write_plans` writes for mechanism file stem ``name``,
+    position tags ``tags`` (``5``, ``phi37.5``) and ``sheets`` drawing sheets."""
+    out = []
+    for tag in tags:
+        out += [f"{name}_plans_{tag}.svg", f"{name}_plans_{tag}.pdf"]
+        if previews:
+            out.append(f"{name}_plans_{tag}.png")
+    out += [f"{name}_{t}.csv" for t in ("plans", "lever", "lever_forces", "student_table")]
+    if measurements:
+        out.append(f"{name}_plan_errors.csv")
+    out.append(f"{name}_sheet.pdf")
+    for k in range(sheets):
+        sfx = "" if k == 0 else f"_{k + 1}"
+        out.append(f"{name}_sheet{sfx}.dxf")
+        if previews:
+            out.append(f"{name}_sheet{sfx}.png")
+    return out
+
+
+def write_plans(result, plans, folder, *, name=None, lang="ru", sheet="A1",
+                measurements=None, previews=True):
     """Write every output of the plans into ``folder``.
 
     Parameters
@@ -48,45 +75,53 @@ def write_plans(result, plans, folder, *, lang="ru", sheet="A1", measurements=No
     plans : list of PositionPlans
     folder : path-like
         An existing (staging) folder.
+    name : str, optional
+        File stem of the outputs, ``<name>_plans.csv`` … (default: the spec's name via
+        :func:`crankbase.output.safe_name`, as ``crankdyn linkage`` names its files).
     lang : {"ru", "en"}
     sheet : {"A1", "A3"}
     measurements : DataFrame, optional
-        :func:`plans.tables.read_measurements`; adds ``plan_errors.csv``.
+        :func:`plans.tables.read_measurements`; adds ``<name>_plan_errors.csv``.
     previews : bool
         Also write the PNG previews.
 
     Returns
     -------
     dict
-        ``{"sheets": number of sheets, "errors": the error table or None}``.
+        ``{"sheets": number of sheets, "errors": the error table or None, "name": the
+        file stem}``.
     """
     from matplotlib.backends.backend_pdf import PdfPages
 
     folder = Path(folder)
+    stem = name if name is not None else safe_name(result.spec.name, "linkage")
     fields = title_fields(result.spec)
     sheets = layout_sheets(result, plans, lang, sheet, fields)   # raises before writing
     for pp in plans:
         fig = position_figure(pp, lang)
-        fig.savefig(folder / f"plans_{pp.tag}.svg")
-        fig.savefig(folder / f"plans_{pp.tag}.pdf")
+        fig.savefig(folder / f"{stem}_plans_{pp.tag}.svg")
+        fig.savefig(folder / f"{stem}_plans_{pp.tag}.pdf")
         if previews:
-            fig.savefig(folder / f"plans_{pp.tag}.png", dpi=150)
-    _csv(plans_table(plans), folder / "plans.csv")
-    _csv(lever_table(plans), folder / "lever.csv")
-    _csv(lever_forces_table(plans), folder / "lever_forces.csv")
+            fig.savefig(folder / f"{stem}_plans_{pp.tag}.png", dpi=150)
+    _csv(plans_table(plans), folder / f"{stem}_plans.csv")
+    _csv(lever_table(plans), folder / f"{stem}_lever.csv")
+    _csv(lever_forces_table(plans), folder / f"{stem}_lever_forces.csv")
     st = student_table(plans)
-    _csv(st, folder / "student_table.csv")
+    _csv(st, folder / f"{stem}_student_table.csv")
     errors = None
     if measurements is not None:
         errors = error_table(st, measurements)
-        _csv(errors, folder / "plan_errors.csv")
-    with PdfPages(folder / "sheet.pdf") as pdf:
+        _csv(errors, folder / f"{stem}_plan_errors.csv")
+
+    def sheet_file(k, ext):
+        return folder / f"{stem}_sheet{'' if k == 0 else f'_{k + 1}'}.{ext}"
+
+    with PdfPages(folder / f"{stem}_sheet.pdf") as pdf:
         for k, sh in enumerate(sheets):
             fig = sheet_figure(sh)
             pdf.savefig(fig)
             if previews:
-                fig.savefig(folder / ("sheet.png" if k == 0 else f"sheet_{k + 1}.png"),
-                            dpi=60)
+                fig.savefig(sheet_file(k, "png"), dpi=60)
     for k, sh in enumerate(sheets):
-        write_dxf(sh, folder / ("sheet.dxf" if k == 0 else f"sheet_{k + 1}.dxf"))
-    return {"sheets": len(sheets), "errors": errors}
+        write_dxf(sh, sheet_file(k, "dxf"))
+    return {"sheets": len(sheets), "errors": errors, "name": stem}

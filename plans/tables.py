@@ -19,7 +19,9 @@ def _pos(pp):
 
 def plans_table(plans):
     """One row per drawn vector: ``position, plan, segment, length_mm, value, unit, scale``
-    (``value`` in the unit, ``scale`` in unit per mm; ``length_mm = value/scale``)."""
+    (``value`` in the unit, ``scale`` in unit per mm; ``length_mm = value/scale``): the
+    plans and polygons (the crank's with Fур, segment ``Fb``), then the force arrows of
+    the Zhukovsky lever (plan ``lever``, at the lever's force scale)."""
     import pandas as pd
 
     rows = []
@@ -27,34 +29,50 @@ def plans_table(plans):
         for kind, plan in pp.plans.items():
             for v in plan.vectors:
                 rows.append((_pos(pp), kind, v.name, v.length_mm, v.value, v.unit, v.scale))
+        for v in pp.lever.arrows():
+            rows.append((_pos(pp), "lever", v.name, v.length_mm, v.value, v.unit, v.scale))
     return pd.DataFrame(rows, columns=PLANS_COLUMNS)
 
 
+LEVER_COLUMNS = ["position", "M_lever_Nm", "M_kinetostatic_Nm", "difference_percent",
+                 "F_lever_N", "F_kinetostatic_N", "scale_N_per_mm"]
+
+
 def lever_table(plans):
-    """``position, M_lever_Nm, M_kinetostatic_Nm, difference_percent``."""
+    """``position, M_lever_Nm, M_kinetostatic_Nm, difference_percent, F_lever_N,
+    F_kinetostatic_N, scale_N_per_mm``: the balancing moment Mур and the balancing force
+    Fур = Mур/lOA (at a, ⟂ OA; + in the sense of a counter-clockwise Mур) from the lever
+    and from the kinetostatics, and the lever's force scale μF."""
     import pandas as pd
 
     return pd.DataFrame([(_pos(pp), pp.lever.M_lever_Nm, pp.lever.M_kinetostatic_Nm,
-                          pp.lever.difference_percent) for pp in plans],
-                        columns=["position", "M_lever_Nm", "M_kinetostatic_Nm",
-                                 "difference_percent"])
+                          pp.lever.difference_percent, pp.lever.balancing_force_N,
+                          pp.lever.F_kinetostatic_N, pp.lever.scale) for pp in plans],
+                        columns=LEVER_COLUMNS)
 
 
 def lever_forces_table(plans):
-    """Every force on the lever: ``position, force, point, F_N, arm_mm, moment_Nmm``, then
-    the balancing force at a (arm pa)."""
+    """Every force on the lever: ``position, force, point, F_N, arm_mm, moment_Nmm,
+    length_mm, scale``, then the balancing force ``Fb`` at a (arm pa); ``length_mm`` is
+    the arrow's length on the drawing, |F|/μF, at the lever's force scale ``scale``
+    [N/mm]."""
     import pandas as pd
 
     rows = []
     for pp in plans:
         L = pp.lever
+        arrows = {v.name: v for v in L.arrows()}
         for f in L.forces:
-            rows.append((_pos(pp), f.name, f.point, abs(f.force), f.arm_mm, f.moment_Nmm))
+            a = arrows[f.name]
+            rows.append((_pos(pp), f.name, f.point, abs(f.force), f.arm_mm, f.moment_Nmm,
+                         a.length_mm, a.scale))
         mb = -sum(f.moment_Nmm for f in L.forces)      # the balancing force's moment
         fb = abs(L.balancing_force_N)
-        rows.append((_pos(pp), "Fb", "a", fb, mb / fb if fb else 0.0, mb))
+        a = arrows["Fb"]
+        rows.append((_pos(pp), "Fb", "a", fb, mb / fb if fb else 0.0, mb, a.length_mm,
+                     a.scale))
     return pd.DataFrame(rows, columns=["position", "force", "point", "F_N", "arm_mm",
-                                       "moment_Nmm"])
+                                       "moment_Nmm", "length_mm", "scale"])
 
 
 def student_table(plans):

@@ -182,6 +182,36 @@ def test_obsolete_files_of_the_old_report_removed_unless_changed(tmp_path):
     assert json.loads((out / MANIFEST_NAME).read_text())["files"]["a.csv"]["size"] == 3
 
 
+def test_units_whose_names_share_a_prefix_keep_their_files(tmp_path):
+    """Reports named ``press`` and ``press_b`` in one folder: the manifest records which
+    report wrote each file, so a run of ``press`` replaces its own old files only, never
+    ``press_b_…`` (whose names also start with ``press_``)."""
+    out = tmp_path / "out"
+    with staged_output(out, unit="press_b") as stage:
+        for n in ("press_b.xlsx", "press_b_plans.csv", "press_b_plans_2.pdf"):
+            (stage / n).write_text(n)
+    with staged_output(out, unit="press") as stage:
+        for n in ("press.xlsx", "press_plans.csv", "press_plans_2.pdf"):
+            (stage / n).write_text(n)
+    with staged_output(out, unit="press") as stage:          # position 3 instead of 2
+        for n in ("press.xlsx", "press_plans.csv", "press_plans_3.pdf"):
+            (stage / n).write_text(n + " again")
+    names = sorted(p.name for p in out.iterdir() if p.name != MANIFEST_NAME)
+    assert names == ["press.xlsx", "press_b.xlsx", "press_b_plans.csv", "press_b_plans_2.pdf",
+                     "press_plans.csv", "press_plans_3.pdf"]
+    files = json.loads((out / MANIFEST_NAME).read_text())["files"]
+    assert {n: f["unit"] for n, f in files.items()} == {
+        n: ("press_b" if n.startswith("press_b") else "press") for n in names}
+    assert verify_report(out) == names
+    # a manifest of an older version (no unit per file): judged by the name, as before
+    old = {n: {k: v for k, v in f.items() if k != "unit"} for n, f in files.items()}
+    (out / MANIFEST_NAME).write_text(json.dumps({"format": 1, "files": old}))
+    with staged_output(out, unit="press_b") as stage:
+        (stage / "press_b.xlsx").write_text("b again")
+    left = sorted(p.name for p in out.iterdir() if p.name != MANIFEST_NAME)
+    assert left == ["press.xlsx", "press_b.xlsx", "press_plans.csv", "press_plans_3.pdf"]
+
+
 def test_failure_inside_leaves_nothing_and_removes_created_folders(tmp_path):
     out = tmp_path / "new" / "deeper" / "out"
     with pytest.raises(OutputError, match=f"cannot write the report into {out}: No space"):

@@ -65,7 +65,8 @@ def test_segments_equal_the_core_columns(which, request):
                   (D, "R23t", F["R23_t_N"].abs()), (D, "R23n", F["R23_n_N"].abs()),
                   (D, "R14n" if rocker else "R14", (F["R14_n_N"].abs() if rocker
                                                      else F["R14_N"])),
-                  (C, "R12", F["R12_N"]), (C, "R32", F["R23_N"]), (C, "Fu2", F["Fu2_N"])]
+                  (C, "R32", F["R23_N"]), (C, "Fu2", F["Fu2_N"]),
+                  (C, "Fb", F["M_drive_Nm"].abs() / res.spec.crank)]
         if rocker:
             checks += [(A, "pi_n4", K["a_BC_n_m_s2"]), (A, "n4_b", K["a_BC_t_m_s2"]),
                        (V, "ps4", K["S4_v_m_s"]), (D, "R14t", F["R14_t_N"].abs())]
@@ -105,6 +106,131 @@ def test_lever_equals_kinetostatics(which, request):
         total = sum(f.moment_Nmm for f in L.forces)
         assert math.isclose(abs(L.balancing_force_N) * L.pa_mm, abs(total), rel_tol=1e-12,
                             abs_tol=1e-9)
+
+
+def _crank_vectors(res, pp, i):
+    """The crank polygon's vectors (N) and, from the analysis columns, A, S2 (m), R12 with
+    Mур as a couple, the loads G2, Fu2 and Mu2 of the crank."""
+    K, F = res.kinematics, res.forces
+    C = pp.plans["force_crank"]
+    vec = {v.name: (v.end - v.start) * C.scale for v in C.vectors}
+    zA = complex(K["A_x_m"].iat[i], K["A_y_m"].iat[i])
+    zS2 = complex(K["S2_x_m"].iat[i], K["S2_y_m"].iat[i])
+    R12_couple = complex(F["R12_x_N"].iat[i], F["R12_y_N"].iat[i])
+    return vec, zA, zS2, R12_couple
+
+
+def _cross(a, b):
+    return a.real * b.imag - a.imag * b.real
+
+
+@pytest.mark.parametrize("which", ["ratchet", "press"])
+def test_crank_polygon_with_the_balancing_force(which, request):
+    """The crank's polygon as the textbook builds it (seed 000 §4; Artobolevsky 1988 §13):
+    R32 + G2 + Fu2 + Fур + R12 = 0, Fур at A ⟂ OA with |Fур|·lOA = |Mур| and
+    OA × Fур = Mур (the sign that makes its moment about O the kinetostatic Mур).  With
+    Fур at A the crank is in equilibrium without the couple: the moments about O of R32,
+    G2, Fu2, Fур and the inertia couple Mu2 sum to 0; R12 is then the analysis' R12 (Mур
+    a couple) minus Fур."""
+    res, pps = request.getfixturevalue(which)
+    F = res.forces
+    l_OA = res.spec.crank
+    for i, pp in enumerate(pps):
+        C = pp.plans["force_crank"]
+        assert [v.name for v in C.vectors] == (["R32", "G2", "Fu2", "Fb", "R12"])
+        assert C.closure()[0] < TOL
+        vec, zA, zS2, R12_couple = _crank_vectors(res, pp, i)
+        M = float(F["M_drive_Nm"].iat[i])
+        Fb = vec["Fb"]
+        big = max(abs(v) for v in vec.values())
+        assert math.isclose(abs(Fb) * l_OA, abs(M), rel_tol=TOL, abs_tol=1e-9)
+        assert abs(Fb.real * zA.real + Fb.imag * zA.imag) <= TOL * abs(Fb) * l_OA  # ⟂ OA
+        assert abs(_cross(zA, Fb) - M) <= TOL * max(abs(M), 1.0)                 # sign
+        # the crank's moments about O without the couple Mур
+        moments = (_cross(zA, vec["R32"]) + _cross(zS2, vec["G2"] + vec["Fu2"])
+                   + float(F["Mu2_Nm"].iat[i]) + _cross(zA, Fb))
+        assert abs(moments) <= TOL * big * l_OA, (pp.tag, moments)
+        assert abs(vec["R12"] - (R12_couple - Fb)) <= TOL * big
+        # the lever's Fур (from its moments about the pole) is the same vector
+        L = pp.lever
+        assert abs(L.balancing_force - Fb) <= TOL * max(abs(Fb), 1.0)
+        assert math.isclose(L.balancing_force_N, L.F_kinetostatic_N, rel_tol=TOL,
+                            abs_tol=1e-9)
+        assert math.isclose(L.F_kinetostatic_N * l_OA, M, rel_tol=TOL, abs_tol=1e-9)
+        # plans.csv and the student table carry Fур at μF
+        row = tables.plans_table([pp]).query("plan == 'force_crank' and segment == 'Fb'")
+        assert len(row) == 1
+        assert math.isclose(row["length_mm"].iat[0], abs(M) / l_OA / C.scale, rel_tol=TOL)
+        assert row["scale"].iat[0] == C.scale and row["unit"].iat[0] == "N"
+    labels = {(v.label_ru, v.label_en) for v in pps[0].plans["force_crank"].vectors}
+    assert {("Fур", "Fb"), ("R₁₂", "R₁₂"), ("R₃₂", "R₃₂"), ("G₂", "G₂")} <= labels
+
+
+def test_balancing_force_catches_a_wrong_sign(ratchet):
+    """The checks are not vacuous: Fур reversed (or along OA) breaks the crank's balance
+    of moments by 2|Mур| at every position where Mур ≠ 0."""
+    res, pps = ratchet
+    F = res.forces
+    n = 0
+    for i, pp in enumerate(pps):
+        vec, zA, zS2, _ = _crank_vectors(res, pp, i)
+        M = float(F["M_drive_Nm"].iat[i])
+        rest = (_cross(zA, vec["R32"]) + _cross(zS2, vec["G2"] + vec["Fu2"])
+                + float(F["Mu2_Nm"].iat[i]))
+        assert abs(rest + _cross(zA, vec["Fb"])) < 1e-9 * max(1.0, abs(M))
+        assert math.isclose(abs(rest - _cross(zA, vec["Fb"])), 2 * abs(M), rel_tol=1e-9)
+        assert abs(_cross(zA, vec["Fb"] * 1j)) < 1e-9 * max(1.0, abs(M))   # along OA: no moment
+        n += abs(M) > 10.0
+    assert n >= 10
+
+
+def test_lever_arrows_to_scale(ratchet, press):
+    """Every force on the lever is drawn from its point at the lever's one round force
+    scale: the arrow is F/μF (length and direction, 1e-9), the largest within
+    (75/1.5, 75] mm; the scale is stated under the title and in plans.csv."""
+    from plans import layout
+    from plans.model import LEVER_LONGEST_MM
+
+    for res, pps in (ratchet, press):
+        for pp in pps:
+            L = pp.lever
+            arrows = L.arrows()
+            assert [a.name for a in arrows] == [f.name for f in L.forces] + ["Fb"]
+            for a, f in zip(arrows, L.forces + [None]):
+                force = f.force if f is not None else L.balancing_force
+                assert a.scale == L.scale
+                assert math.isclose(a.length_mm, abs(force) / L.scale, rel_tol=TOL,
+                                    abs_tol=1e-12)
+                assert abs((a.end - a.start) - force / L.scale) <= TOL * max(a.length_mm, 1)
+                assert a.start == (f.at if f is not None else L.balancing_at)
+            longest = max(a.length_mm for a in arrows)
+            assert LEVER_LONGEST_MM / 1.5 < longest <= LEVER_LONGEST_MM + 1e-9
+            m = L.scale / 10 ** math.floor(math.log10(L.scale))
+            assert any(math.isclose(m, r, rel_tol=1e-9) for r in ROUND_MANTISSAS)
+            # the drawing: one arrow per nonzero force, each of its length in mm
+            for lang in ("ru", "en"):
+                b = layout.lever_block(pp, lang)
+                drawn = {it.name.split(":")[-1]: abs(it.p2 - it.p1) for it in b.items
+                         if isinstance(it, layout.Arrow) and it.layer == "LEVER"}
+                expect = {a.name: a.length_mm for a in arrows if a.length_mm >= 1e-6}
+                assert drawn.keys() == expect.keys()
+                for k, v in expect.items():
+                    assert math.isclose(drawn[k], v, rel_tol=TOL), k
+                mu = "μF" if lang == "ru" else "kF"
+                scale_text = f"{mu} = {layout.fmt(L.scale, lang)} " + (
+                    "Н/мм" if lang == "ru" else "N/mm")
+                assert any(isinstance(it, layout.Text) and scale_text in it.text
+                           for it in b.items), scale_text
+            rows = tables.plans_table([pp]).query("plan == 'lever'")
+            assert rows["segment"].tolist() == [a.name for a in arrows]
+            assert (rows["scale"] == L.scale).all()
+            assert np.allclose(rows["length_mm"], rows["value"] / L.scale, rtol=TOL)
+    # a given lever scale is used as it is
+    res, _ = ratchet
+    pp = plans.build_plans(res, [5], scales={"lever": 25.0})[0]
+    assert pp.lever.scale == 25.0
+    assert math.isclose(pp.lever.arrows()[-1].length_mm,
+                        abs(pp.lever.balancing_force_N) / 25.0, rel_tol=1e-12)
 
 
 def test_lever_catches_a_wrong_sign(ratchet):
@@ -164,8 +290,14 @@ def test_tables(ratchet):
     assert np.allclose(pt["length_mm"], pt["value"] / pt["scale"], rtol=TOL)
     lt = tables.lever_table(pps)
     assert list(lt.columns) == ["position", "M_lever_Nm", "M_kinetostatic_Nm",
-                                "difference_percent"]
+                                "difference_percent", "F_lever_N", "F_kinetostatic_N",
+                                "scale_N_per_mm"]
     assert (lt["difference_percent"].abs() < 1e-9).all()
+    assert np.allclose(lt["F_lever_N"], lt["F_kinetostatic_N"], rtol=TOL, atol=1e-9)
+    assert np.allclose(lt["F_kinetostatic_N"] * res.spec.crank, lt["M_kinetostatic_Nm"],
+                       rtol=TOL)
+    lf = tables.lever_forces_table(pps)
+    assert np.allclose(lf["length_mm"], lf["F_N"] / lf["scale"], rtol=TOL)
     assert lt["position"].tolist() == list(range(1, 13))
 
 
@@ -305,6 +437,23 @@ def test_random_mechanisms(spec):
         # tolerance relative to the largest term of the power balance
         scale = max(abs(L.M_kinetostatic_Nm), big * mu / abs(res.spec.omega))
         assert abs(L.M_lever_Nm - L.M_kinetostatic_Nm) <= TOL * scale
+        # Fур: from the lever equal to the kinetostatic one; OA × Fур = Mур, ⟂ OA
+        l_OA = res.spec.crank
+        assert abs(L.balancing_force_N - L.F_kinetostatic_N) <= TOL * scale / l_OA
+        C = pp.plans["force_crank"]
+        Fb = (C.vector("Fb").end - C.vector("Fb").start) * C.scale
+        assert abs(L.balancing_force - Fb) <= TOL * scale / l_OA
+        i = pps.index(pp)
+        zA = complex(res.kinematics["A_x_m"].iat[i], res.kinematics["A_y_m"].iat[i])
+        M = float(F["M_drive_Nm"].iat[i])
+        assert abs(_cross(zA, Fb) - M) <= TOL * max(abs(M), 1e-6)
+        assert abs(Fb.real * zA.real + Fb.imag * zA.imag) <= TOL * max(abs(M), 1e-6)
+        R12 = complex(F["R12_x_N"].iat[i], F["R12_y_N"].iat[i]) - Fb
+        big = max(v.length_mm for v in C.vectors) * C.scale
+        assert abs((C.vector("R12").end - C.vector("R12").start) * C.scale - R12) <= TOL * big
+        # the lever's arrows: F/μF
+        for a in L.arrows():
+            assert math.isclose(a.length_mm, a.value / L.scale, rel_tol=TOL, abs_tol=1e-12)
         for kind, plan in pp.plans.items():
             assert max(plan.closure()) < TOL, kind
             for v in plan.vectors:

@@ -6,6 +6,7 @@ import math
 import re
 
 import ezdxf
+import numpy as np
 import pandas as pd
 import pytest
 
@@ -17,6 +18,8 @@ from plans import drawing, layout
 from plans.dxf import APPID, LAYERS
 
 PT = 72.0 / 25.4
+RATCHET = "ratchet-drive"      # examples/ratchet.toml: mechanism.name, the files' stem
+PRESS = "crank-press"          # examples/press.toml
 
 
 def _pages(pdf_path):
@@ -55,35 +58,122 @@ scale = "1:2"
     return out
 
 
+def _files(folder):
+    return {p.name for p in folder.iterdir() if not p.name.startswith(".")}
+
+
 def test_files(ratchet_run, press_run):
+    """Every output is named after the mechanism (``<name>_…``), the plans' files as the
+    linkage tables, workbook and plots."""
+    from plans.report import output_names
+
     for tag in ("5", "11"):
         for ext in ("svg", "pdf"):
-            assert (ratchet_run / f"plans_{tag}.{ext}").stat().st_size > 5000
+            assert (ratchet_run / f"{RATCHET}_plans_{tag}.{ext}").stat().st_size > 5000
     for name in ("plans_2.png", "plans_2.svg", "plans_2.pdf", "sheet.png", "plan_errors.csv"):
-        assert (press_run / name).stat().st_size > 100, name
-    for run in (ratchet_run, press_run):
+        assert (press_run / f"{PRESS}_{name}").stat().st_size > 100, name
+    for run, stem in ((ratchet_run, RATCHET), (press_run, PRESS)):
         for name in ("plans.csv", "lever.csv", "lever_forces.csv", "student_table.csv",
-                     "sheet.pdf", "sheet.dxf"):
-            assert (run / name).stat().st_size > 100, name
-        for name in ("kinematics.csv", "forces.csv"):        # named after the mechanism
-            (path,) = [p for p in run.glob(f"*_{name}") if not p.name.startswith("lever_")]
-            assert path.stat().st_size > 100, name
-    lever = pd.read_csv(ratchet_run / "lever.csv")
+                     "sheet.pdf", "sheet.dxf", "kinematics.csv", "forces.csv"):
+            assert (run / f"{stem}_{name}").stat().st_size > 100, name
+        assert all(n.startswith(stem + "_") or n == f"{stem}.xlsx" for n in _files(run))
+    # exactly the files of plans.report.output_names (and the linkage tables/workbook)
+    base = {f"{RATCHET}_kinematics.csv", f"{RATCHET}_forces.csv", f"{RATCHET}.xlsx"}
+    assert _files(ratchet_run) == base | set(output_names(RATCHET, ["5", "11"],
+                                                          previews=False))
+    n_sheets = len(_pages(press_run / f"{PRESS}_sheet.pdf"))
+    plots = {f"{PRESS}_{s}.png" for s in ("plan", "velocities", "accelerations",
+                                          "driving_moment", "transmission_angle")}
+    assert _files(press_run) == ({f"{PRESS}_kinematics.csv", f"{PRESS}_forces.csv",
+                                  f"{PRESS}.xlsx"} | plots
+                                 | set(output_names(PRESS, ["2"], n_sheets, True)))
+    lever = pd.read_csv(ratchet_run / f"{RATCHET}_lever.csv")
     assert list(lever.columns) == ["position", "M_lever_Nm", "M_kinetostatic_Nm",
-                                   "difference_percent"]
+                                   "difference_percent", "F_lever_N", "F_kinetostatic_N",
+                                   "scale_N_per_mm"]
     assert lever["position"].tolist() == [5, 11]
-    (forces_csv,) = [p for p in ratchet_run.glob("*_forces.csv")
-                     if not p.name.startswith("lever_")]
-    forces = pd.read_csv(forces_csv).set_index("position")
+    forces = pd.read_csv(ratchet_run / f"{RATCHET}_forces.csv").set_index("position")
+    l_OA = linkage.load_spec(example_path("ratchet.toml")).crank
     for _, r in lever.iterrows():
         assert r["M_kinetostatic_Nm"] == forces.loc[r["position"], "M_drive_Nm"]
         assert abs(r["M_lever_Nm"] - r["M_kinetostatic_Nm"]) < 1e-9 * abs(
             r["M_kinetostatic_Nm"])
+        # Fур = Mур/lOA, from the lever equal to the kinetostatic one
+        assert math.isclose(r["F_kinetostatic_N"] * l_OA, r["M_kinetostatic_Nm"],
+                            rel_tol=1e-12)
+        assert abs(r["F_lever_N"] - r["F_kinetostatic_N"]) < 1e-9 * abs(
+            r["F_kinetostatic_N"])
+    # Fур in plans.csv (crank polygon at μF) and the lever's arrows at the lever's scale
+    table = pd.read_csv(ratchet_run / f"{RATCHET}_plans.csv")
+    for _, r in lever.iterrows():
+        fb = table[(table["position"] == r["position"]) & (table["plan"] == "force_crank")
+                   & (table["segment"] == "Fb")].iloc[0]
+        assert math.isclose(fb["value"], abs(r["F_kinetostatic_N"]), rel_tol=1e-12)
+        assert math.isclose(fb["length_mm"], fb["value"] / fb["scale"], rel_tol=1e-12)
+        lv = table[(table["position"] == r["position"]) & (table["plan"] == "lever")]
+        assert (lv["scale"] == r["scale_N_per_mm"]).all() and "Fb" in set(lv["segment"])
+
+
+def test_given_lever_scale(tmp_path):
+    """--mu-lever fixes the lever's force scale: every lever arrow is F/μ of it."""
+    out = tmp_path / "out"
+    assert main(["linkage", "--example", "-o", str(out), "--plans", "5", "--no-plots",
+                 "--mu-lever", "50"]) == 0
+    t = pd.read_csv(out / f"{RATCHET}_plans.csv")
+    lever = t[t["plan"] == "lever"]
+    assert len(lever) > 0 and (lever["scale"] == 50.0).all()
+    assert np.allclose(lever["length_mm"], lever["value"] / 50.0, rtol=1e-12)
+    assert pd.read_csv(out / f"{RATCHET}_lever.csv")["scale_N_per_mm"].tolist() == [50.0]
+    assert (t[t["plan"] != "lever"]["scale"] != 50.0).any()       # the others unchanged
+
+
+def test_two_mechanisms_share_a_folder(tmp_path):
+    """The plans of two mechanisms written into one folder keep each other's files: each
+    run replaces only the files named after its own mechanism."""
+    out = tmp_path / "both"
+    assert main(["linkage", "--example", "-o", str(out), "--plans", "5,11",
+                 "--no-plots"]) == 0
+    first = {n: (out / n).read_bytes() for n in _files(out)}
+    assert main(["linkage", "--example", "press", "-o", str(out), "--plans", "2",
+                 "--no-plots"]) == 0
+    files = _files(out)
+    assert {n: (out / n).read_bytes() for n in first} == first      # untouched
+    assert f"{PRESS}_plans.csv" in files and f"{PRESS}_sheet.dxf" in files
+    # a second run of the ratchet with other positions drops its own old position files
+    assert main(["linkage", "--example", "-o", str(out), "--plans", "5",
+                 "--no-plots"]) == 0
+    files = _files(out)
+    assert f"{RATCHET}_plans_11.pdf" not in files and f"{RATCHET}_plans_5.pdf" in files
+    assert f"{PRESS}_plans_2.pdf" in files
+    press_plans = pd.read_csv(out / f"{PRESS}_plans.csv")
+    assert press_plans["position"].unique().tolist() == [2]
+
+
+def test_mechanism_names_with_a_common_prefix(tmp_path):
+    """``press`` and ``press_b`` in one folder: the run of ``press`` keeps ``press_b``'s
+    plans (their names start with ``press_`` too; the manifest knows whose they are)."""
+    text = example_path("press.toml").read_text(encoding="utf-8")
+    assert text.count(f'name = "{PRESS}"') == 1
+    specs = {}
+    for n in ("press", "press_b"):
+        specs[n] = tmp_path / f"{n}.toml"
+        specs[n].write_text(text.replace(f'name = "{PRESS}"', f'name = "{n}"'),
+                            encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["linkage", str(specs["press_b"]), "-o", str(out), "--plans", "2",
+                 "--no-plots"]) == 0
+    b_files = {n: (out / n).read_bytes() for n in _files(out)}
+    assert "press_b_plans_2.pdf" in b_files and "press_b_sheet.dxf" in b_files
+    for plans_arg in ("2", "3"):
+        assert main(["linkage", str(specs["press"]), "-o", str(out), "--plans", plans_arg,
+                     "--no-plots"]) == 0
+        assert {n: (out / n).read_bytes() for n in b_files} == b_files
+    assert "press_plans_3.pdf" in _files(out) and "press_plans_2.pdf" not in _files(out)
 
 
 def test_error_table_written(press_run):
-    et = pd.read_csv(press_run / "plan_errors.csv")
-    st_ = pd.read_csv(press_run / "student_table.csv")
+    et = pd.read_csv(press_run / f"{PRESS}_plan_errors.csv")
+    st_ = pd.read_csv(press_run / f"{PRESS}_student_table.csv")
     pb = st_[(st_["plan"] == "velocity") & (st_["segment"] == "pb")].iloc[0]
     row = et[et["segment"] == "pb"].iloc[0]
     assert math.isclose(row["measured_value"], 80.0 * pb["scale"], rel_tol=1e-12)
@@ -93,11 +183,11 @@ def test_error_table_written(press_run):
     assert math.isclose(om["error_percent"], 100 * (om["exact_value"] - 1.5) / om["exact_value"])
 
 
-@pytest.mark.parametrize("run, size", [("ratchet_run", (841.0, 594.0)),
-                                       ("press_run", (420.0, 297.0))])
-def test_pdf_page_size_is_the_sheet(run, size, request):
+@pytest.mark.parametrize("run, stem, size", [("ratchet_run", RATCHET, (841.0, 594.0)),
+                                             ("press_run", PRESS, (420.0, 297.0))])
+def test_pdf_page_size_is_the_sheet(run, stem, size, request):
     out = request.getfixturevalue(run)
-    pages = _pages(out / "sheet.pdf")
+    pages = _pages(out / f"{stem}_sheet.pdf")
     assert pages
     for w, h in pages:
         assert abs(w - size[0] * PT) < 0.01 and abs(h - size[1] * PT) < 0.01
@@ -109,9 +199,9 @@ def test_position_drawing_is_true_scale(ratchet_run):
     pp = plans.build_plans(res, [5])[0]
     fig = drawing.position_figure(pp)
     w_mm, h_mm = fig.get_size_inches() * 25.4
-    (w, h), = _pages(ratchet_run / "plans_5.pdf")
+    (w, h), = _pages(ratchet_run / f"{RATCHET}_plans_5.pdf")
     assert abs(w - w_mm * PT) < 0.01 and abs(h - h_mm * PT) < 0.01
-    svg = (ratchet_run / "plans_5.svg").read_text()
+    svg = (ratchet_run / f"{RATCHET}_plans_5.svg").read_text()
     m = re.search(r'width="([\d.]+)pt" height="([\d.]+)pt"', svg)
     assert abs(float(m.group(1)) - w_mm * PT) < 0.01
     # the axes map 1 data unit to 1 mm: the x range equals the width in mm
@@ -119,11 +209,14 @@ def test_position_drawing_is_true_scale(ratchet_run):
     assert ax.get_xlim() == (0.0, pytest.approx(w_mm)) and ax.get_position().width == 1.0
 
 
-@pytest.mark.parametrize("run", ["ratchet_run", "press_run"])
-def test_dxf_read_back_equals_plans_csv(run, request):
+@pytest.mark.parametrize("run, stem", [("ratchet_run", RATCHET), ("press_run", PRESS)])
+def test_dxf_read_back_equals_plans_csv(run, stem, request):
+    """Every vector of plans.csv (the plans, the polygons with Fур, and the lever's force
+    arrows at the lever's scale) is one LINE of its layer in the DXF, as long in mm as
+    its ``length_mm`` = value/scale, with its arrowhead."""
     out = request.getfixturevalue(run)
-    table = pd.read_csv(out / "plans.csv")
-    files = sorted(out.glob("sheet*.dxf"))
+    table = pd.read_csv(out / f"{stem}_plans.csv")
+    files = sorted(out.glob(f"{stem}_sheet*.dxf"))
     found = {}
     for f in files:
         doc = ezdxf.readfile(f)
@@ -131,15 +224,17 @@ def test_dxf_read_back_equals_plans_csv(run, request):
         for name, lw in LAYERS.items():
             assert doc.layers.get(name).dxf.lineweight == lw
         msp = doc.modelspace()
-        n = 0
-        for e in msp.query("LINE[layer=='VECTORS']"):
-            assert e.has_xdata(APPID)
-            name = e.get_xdata(APPID)[0].value
-            assert name not in found
-            found[name] = (e.dxf.end - e.dxf.start).magnitude
-            n += 1
-        # every vector has its arrowhead on the same layer
-        assert len(msp.query("SOLID[layer=='VECTORS']")) == n
+        for layer in ("VECTORS", "LEVER"):
+            n = 0
+            for e in msp.query(f"LINE[layer=='{layer}']"):
+                assert e.has_xdata(APPID)
+                name = e.get_xdata(APPID)[0].value
+                assert name not in found
+                assert (name.split(":")[1] == "lever") == (layer == "LEVER"), name
+                found[name] = (e.dxf.end - e.dxf.start).magnitude
+                n += 1
+            # every vector has its arrowhead on the same layer
+            assert len(msp.query(f"SOLID[layer=='{layer}']")) == n
         # the sheet's limits and its outer trim line: the sheet's size
         xs = [p for e in msp.query("LINE[layer=='THIN']") for p in (e.dxf.start.x,
                                                                     e.dxf.end.x)]
@@ -149,16 +244,24 @@ def test_dxf_read_back_equals_plans_csv(run, request):
     assert set(found) == set(expected)
     for k, v in expected.items():
         assert math.isclose(found[k], v, rel_tol=1e-9, abs_tol=1e-9), k
+    # the lever's arrows: F/μF of the lever, read back from the DXF
+    lever = table[table["plan"] == "lever"]
+    assert len(lever) > 0 and lever.groupby("position")["scale"].nunique().eq(1).all()
+    for r in lever.itertuples():
+        if r.length_mm > 1e-6:
+            key = f"{r.position}:lever:{r.segment}"
+            assert math.isclose(found[key], r.value / r.scale, rel_tol=1e-9), key
+    assert {f"{p}:force_crank:Fb" for p in table["position"].unique()} <= set(found)
     # one DXF per page of the PDF (A3 needs several sheets for the press)
-    assert len(files) == len(_pages(out / "sheet.pdf"))
+    assert len(files) == len(_pages(out / f"{stem}_sheet.pdf"))
     assert (len(files) == 1) == (run == "ratchet_run")
 
 
 def test_title_block_fields(press_run):
-    doc = ezdxf.readfile(press_run / "sheet.dxf")
+    doc = ezdxf.readfile(press_run / f"{PRESS}_sheet.dxf")
     texts = {e.dxf.text for e in doc.modelspace().query("TEXT")}
     for s in ("ТММ.КП.01.000", "ВолгГТУ, гр. М-301", "Иванов", "1:2", "crank-press",
-              "Sheet 1", f"Sheets {len(_pages(press_run / 'sheet.pdf'))}"):
+              "Sheet 1", f"Sheets {len(_pages(press_run / f'{PRESS}_sheet.pdf'))}"):
         assert s in texts, s
     # English drawing: no Cyrillic except the fields the user typed
     user = {"ТММ.КП.01.000", "ВолгГТУ, гр. М-301", "Иванов"}
@@ -196,6 +299,11 @@ def test_nothing_overlaps_and_every_vector_is_labelled(which, chosen, lang):
         lb = layout.lever_block(pp, lang)
         assert len([i for i in lb.items if isinstance(i, layout.Arrow)]) == \
             sum(f.force != 0 for f in pp.lever.forces) + 1
+        lever_texts = {i.text for i in lb.items if isinstance(i, layout.Text)}
+        assert ("Fур" if lang == "ru" else "Fb") in lever_texts
+        for f in pp.lever.forces:
+            if f.force != 0:
+                assert (f.label_ru if lang == "ru" else f.label_en) in lever_texts
 
 
 def test_bad_input_exits_2_and_writes_nothing(tmp_path, capsys):
@@ -219,6 +327,12 @@ def test_bad_input_exits_2_and_writes_nothing(tmp_path, capsys):
     assert not out.exists()
     assert main(["linkage", spec, "-o", str(out), "--measured", "x.csv"]) == 2
     assert "only with --plans" in capsys.readouterr().err
+    assert main(["linkage", spec, "-o", str(out), "--mu-lever", "50"]) == 2
+    assert "only with --plans" in capsys.readouterr().err
+    assert main(["linkage", spec, "-o", str(out), "--plans", "5", "--mu-lever", "0"]) == 2
+    assert capsys.readouterr().err.strip() == ("crankdyn linkage: error: --mu-lever: got 0; "
+                                               "must be a positive number")
+    assert not out.exists()
     bad = tmp_path / "bad.toml"
     bad.write_text(example_path("ratchet.toml").read_text() + '\n[drawing]\nauthor = "X"\n',
                    encoding="utf-8")
@@ -239,4 +353,5 @@ def test_massless_unloaded_mechanism_draws(tmp_path):
     assert pps[0].lever.M_kinetostatic_Nm == 0 and pps[0].lever.M_lever_Nm == 0
     from plans.report import write_plans
     info = write_plans(res, pps, tmp_path, previews=False)
-    assert info["sheets"] == 1 and (tmp_path / "sheet.dxf").is_file()
+    assert info["sheets"] == 1 and (tmp_path / "bare_sheet.dxf").is_file()
+    assert pps[0].lever.balancing_force_N == 0 and pps[0].lever.F_kinetostatic_N == 0
