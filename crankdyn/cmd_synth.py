@@ -3,11 +3,13 @@
     crankdyn synth --phi0 30 [--l2 L2 --l3 L3 | --l1 L1 | --l2 L2 --mu-min DEG]
                    [--ground M] -o DIR
 
-Writes the chosen mechanism (``mechanism.csv``, printed too), the paper's Table 1 for
-that φ0 (``table1.csv``, and the workbook ``synthesis.xlsx``), μ(φ) over a turn
-(``transmission_angle.csv``), with ``--ground`` a spec TOML for ``crankdyn linkage``, and
-the plots ``region``, ``mu_min`` and ``transmission_angle`` (PNG and SVG).  Every input is
-checked before anything is written; bad input prints one line per problem and exits 2.
+Writes, named after the design (``<name>``: ``--name``, default ``kkm-<φ0>``, so that two
+designs in one folder never mix), the chosen mechanism (``<name>_mechanism.csv``, printed
+too), the paper's Table 1 for that φ0 (``<name>_table1.csv``, and the workbook
+``<name>_synthesis.xlsx``), μ(φ) over a turn (``<name>_transmission_angle.csv``), with
+``--ground`` a spec TOML for ``crankdyn linkage`` (``<name>.toml``), and the plots
+``<name>_region``, ``_mu_min`` and ``_transmission_angle`` (PNG and SVG).  Every input
+is checked before anything is written; bad input prints one line per problem and exits 2.
 numpy, pandas, matplotlib and openpyxl are imported inside :func:`run` only.
 """
 from __future__ import annotations
@@ -47,7 +49,9 @@ def add_parser(sub):
                    help="ground length l0 in metres: also write a spec TOML for "
                         "`crankdyn linkage` with the absolute lengths")
     p.add_argument("--name", metavar="NAME",
-                   help="mechanism name in the spec (default kkm-<φ0>; with --ground)")
+                   help="name of the design: its files are <NAME>_table1.csv, "
+                        "<NAME>_synthesis.xlsx …, the spec <NAME>.toml with --ground, and "
+                        "the mechanism's name in it (default kkm-<φ0>)")
     p.add_argument("--omega", metavar="RAD_S",
                    help="crank angular velocity in the spec, rad/s, + ccw (default 1; "
                         "with --ground)")
@@ -108,9 +112,8 @@ def _validate(args):
     if args.ground is not None and mode == "region":
         problems.append("--ground: needs a chosen mechanism (--l2 --l3, --l1 or "
                         "--l2 --mu-min)")
-    for opt, val in (("--name", args.name), ("--omega", args.omega)):
-        if val is not None and args.ground is None:
-            problems.append(f"{opt}: only with --ground (it goes into the spec TOML)")
+    if args.omega is not None and args.ground is None:
+        problems.append("--omega: only with --ground (it goes into the spec TOML)")
     if args.name is not None:
         from crankbase.validation import name_problem
         why = name_problem(args.name)
@@ -165,7 +168,9 @@ def run(args) -> int:
     table = rep.table1(phi0)
     ensure_finite(table, "Table 1")
     mech = None
-    spec = spec_name = None
+    spec = None
+    spec_name = args.name if args.name is not None else f"kkm-{phi0:g}"
+    stem = safe_name(spec_name, "kkm")
     phi = np.arange(0.0, 361.0, 1.0)
     mu_turn = None
     if design is not None:
@@ -175,7 +180,6 @@ def run(args) -> int:
             phi, design.l1, design.l2, design.l3)})
         ensure_finite(mu_turn, "transmission angle")
         if v["ground"] is not None:
-            spec_name = args.name if args.name is not None else f"kkm-{phi0:g}"
             extra = {"name": spec_name}
             if v["omega"] is not None:
                 extra["omega_rad_s"] = v["omega"]
@@ -196,27 +200,26 @@ def run(args) -> int:
 
     # ---- write (all files appear together, or none)
     written = []
-    with staged_output(args.output) as stage:
-        write_csv(table, stage / "table1.csv")
-        written.append("table1.csv")
-        rep.write_workbook(stage / "synthesis.xlsx", table, phi0, mech)
-        written.append("synthesis.xlsx")
+
+    def put(name):
+        written.append(name)
+        return stage / name
+    with staged_output(args.output, unit=stem) as stage:
+        write_csv(table, put(f"{stem}_table1.csv"))
+        rep.write_workbook(put(f"{stem}_synthesis.xlsx"), table, phi0, mech)
         if design is not None:
-            write_csv(mech, stage / "mechanism.csv")
-            write_csv(mu_turn, stage / "transmission_angle.csv")
-            written += ["mechanism.csv", "transmission_angle.csv"]
+            write_csv(mech, put(f"{stem}_mechanism.csv"))
+            write_csv(mu_turn, put(f"{stem}_transmission_angle.csv"))
         if spec is not None:
-            fname = f"{safe_name(spec_name, 'kkm')}.toml"
             header = (f"ККМ-{phi0:g}°: crank-rocker with μ = 90° at φ = {phi0:g}° from the "
                       f"line of centres (ground along +x)\n"
                       f"written by crankdyn synth; λ1 = {design.l1!r}, λ2 = {design.l2!r}, "
                       f"λ3 = {design.l3!r}, μmin = {design.mu_min_deg:.6g}°\n"
                       f"massless links, no loads: add [links.*] and [[load]] for forces")
-            rep.write_toml(spec, stage / fname, header)
-            written.append(fname)
-        for stem, fig in figures.items():
-            save_figure(fig, stage / stem, dpi=150, tight=True)
-            written.extend(f"{stem}.{ext}" for ext in ("png", "svg"))
+            rep.write_toml(spec, put(f"{stem}.toml"), header)
+        for name, fig in figures.items():
+            save_figure(fig, stage / f"{stem}_{name}", dpi=150, tight=True)
+            written.extend(f"{stem}_{name}.{ext}" for ext in ("png", "svg"))
 
     reg = region
     print(f"ККМ-{phi0:g}°: region of existence 0 < λ1 ≤ {reg.l1_max:.4f}, point d = "

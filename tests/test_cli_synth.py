@@ -34,16 +34,17 @@ def test_paper_example_fig3_with_ground(tmp_path, capsys):
     printed = capsys.readouterr().out
     assert "λ1 = 0.0800" in printed and "λ3 = 0.2405" in printed and "46°24′" in printed
     names = sorted(p.name for p in out.iterdir() if p.name != MANIFEST_NAME)
-    assert names == sorted(["table1.csv", "synthesis.xlsx", "mechanism.csv",
-                            "transmission_angle.csv", "press_drive.toml",
-                            *[f"{p}.{e}" for p in PLOTS for e in ("png", "svg")]])
+    assert names == sorted(["press_drive_table1.csv", "press_drive_synthesis.xlsx",
+                            "press_drive_mechanism.csv", "press_drive_transmission_angle.csv",
+                            "press_drive.toml", *[f"press_drive_{p}.{e}" for p in PLOTS
+                                                  for e in ("png", "svg")]])
     for p in PLOTS:
         for e in ("png", "svg"):
-            assert (out / f"{p}.{e}").stat().st_size > 1000
-    assert (out / "region.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    assert b"<svg" in (out / "region.svg").read_bytes()[:500]
+            assert (out / f"press_drive_{p}.{e}").stat().st_size > 1000
+    assert (out / "press_drive_region.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert b"<svg" in (out / "press_drive_region.svg").read_bytes()[:500]
 
-    mech = pd.read_csv(out / "mechanism.csv")
+    mech = pd.read_csv(out / "press_drive_mechanism.csv")
     assert len(mech) == 1
     m = mech.iloc[0]
     assert m["l1"] == pytest.approx(0.08, abs=1e-15)
@@ -63,7 +64,7 @@ def test_paper_example_fig3_with_ground(tmp_path, capsys):
     np.testing.assert_allclose(res.kinematics["mu_deg"], [90.0, m["mu_min_deg"]], atol=1e-9)
 
     # μ(φ) table: 0…360° at 1°, 90° at φ0 and the minimum at 180°
-    mu = pd.read_csv(out / "transmission_angle.csv")
+    mu = pd.read_csv(out / "press_drive_transmission_angle.csv")
     assert mu["phi_deg"].tolist() == list(np.arange(0.0, 361.0))
     assert mu["mu_deg"].iloc[30] == pytest.approx(90.0, abs=1e-9)
     assert mu["mu_deg"].min() == pytest.approx(m["mu_min_deg"], abs=1e-12)
@@ -77,7 +78,7 @@ def test_paper_example_fig3_with_ground(tmp_path, capsys):
 def test_table1_csv_and_workbook(tmp_path):
     out = tmp_path / "o"
     assert run(["--l2", "0.7", "--l3", "0.6"], out) == 0
-    t1 = pd.read_csv(out / "table1.csv")
+    t1 = pd.read_csv(out / "kkm-30_table1.csv")
     assert list(t1.columns) == ["l1", "l2", "l3", "mu_min_deg"]
     # seed 004, Table 1 (four decimals)
     expected = [(0.05, 0.9520, 0.0980), (0.05, 0.0980, 0.9520),
@@ -87,7 +88,7 @@ def test_table1_csv_and_workbook(tmp_path):
     np.testing.assert_array_equal(t1[["l1", "l2", "l3"]].round(4).to_numpy(), expected)
     assert (t1["mu_min_deg"] == 0).all()
 
-    wb = load_workbook(out / "synthesis.xlsx", read_only=True)
+    wb = load_workbook(out / "kkm-30_synthesis.xlsx", read_only=True)
     assert wb.sheetnames == ["table1", "mechanism"]
     rows = list(wb["table1"].iter_rows(values_only=True))
     assert "Таблица 1" in rows[0][0]
@@ -100,14 +101,14 @@ def test_table1_csv_and_workbook(tmp_path):
     assert round(mech["crank l1"], 2) == 0.09
     assert mech["mu_min_deg"] == pytest.approx(66 + 2 / 60, abs=0.5 / 60)
     assert mech["grashof"] == "crank-rocker"
-    csv = pd.read_csv(out / "mechanism.csv").iloc[0]
+    csv = pd.read_csv(out / "kkm-30_mechanism.csv").iloc[0]
     assert mech["crank l1"] == csv["l1"] and mech["mu_min_deg"] == csv["mu_min_deg"]
 
 
 def test_equal_l2_l3_example(tmp_path, capsys):
     # seed 004, example 2 to Fig. 2: λ1 = 0.146, λ2 = λ3 → 0.620
     assert run(["--l1", "0.146", "--no-plots"], tmp_path / "o") == 0
-    m = pd.read_csv(tmp_path / "o" / "mechanism.csv").iloc[0]
+    m = pd.read_csv(tmp_path / "o" / "kkm-30_mechanism.csv").iloc[0]
     assert round(m["l2"], 3) == 0.620 and m["l3"] == m["l2"]
     assert not list((tmp_path / "o").glob("*.png"))
     assert "λ2 = 0.6199" in capsys.readouterr().out
@@ -117,13 +118,13 @@ def test_region_only_and_other_phi0(tmp_path):
     out = tmp_path / "o"
     assert run(["--phi0", "120"], out) == 0
     names = {p.name for p in out.iterdir()} - {MANIFEST_NAME}
-    assert names == {"table1.csv", "synthesis.xlsx", "region.png", "region.svg",
-                     "mu_min.png", "mu_min.svg"}
-    t1 = pd.read_csv(out / "table1.csv")
+    assert names == {"kkm-120_table1.csv", "kkm-120_synthesis.xlsx", "kkm-120_region.png",
+                     "kkm-120_region.svg", "kkm-120_mu_min.png", "kkm-120_mu_min.svg"}
+    t1 = pd.read_csv(out / "kkm-120_table1.csv")
     # φ0 > 90°: the boundary is on Kolchin's lines (1)–(2): |λ2 − λ3| = 1 − λ1
     np.testing.assert_allclose((t1["l2"] - t1["l3"]).abs(), 1 - t1["l1"], atol=1e-12)
     assert t1["l1"].iloc[-1] == 1.0
-    wb = load_workbook(out / "synthesis.xlsx", read_only=True)
+    wb = load_workbook(out / "kkm-120_synthesis.xlsx", read_only=True)
     assert wb.sheetnames == ["table1"]
 
 
@@ -131,8 +132,17 @@ def test_rerun_replaces_outputs(tmp_path):
     out = tmp_path / "o"
     assert run(["--l2", "0.7", "--l3", "0.6", "--no-plots"], out) == 0
     assert run(["--l2", "0.6", "--l3", "0.7", "--no-plots"], out) == 0
-    assert pd.read_csv(out / "mechanism.csv")["l2"].iloc[0] == 0.6
+    assert pd.read_csv(out / "kkm-30_mechanism.csv")["l2"].iloc[0] == 0.6
     assert [p.name for p in out.iterdir() if p.name.startswith(".")] == [MANIFEST_NAME]
+
+
+def test_two_designs_share_a_folder(tmp_path):
+    """Named designs never mix: a second design in the folder leaves the first's files."""
+    out = tmp_path / "o"
+    assert run(["--l2", "0.7", "--l3", "0.6", "--no-plots", "--name", "a"], out) == 0
+    assert run(["--l2", "0.6", "--l3", "0.7", "--no-plots", "--name", "b"], out) == 0
+    assert pd.read_csv(out / "a_mechanism.csv")["l2"].iloc[0] == 0.7
+    assert pd.read_csv(out / "b_mechanism.csv")["l2"].iloc[0] == 0.6
 
 
 BAD = [
@@ -152,7 +162,6 @@ BAD = [
     (["--l1", "0.1", "--l2", "0.5", "--mu-min", "40"], ["options: got --l1 --l2 --mu-min"]),
     (["--l1", "0.1", "--l1-step", "0.01"], ["--l1-step: only with --l2 and --mu-min"]),
     (["--ground", "0.5"], ["--ground: needs a chosen mechanism"]),
-    (["--l1", "0.1", "--name", "x"], ["--name: only with --ground"]),
     (["--l1", "0.1", "--ground", "-1", "--omega", "0"],
      ["--ground: got -1", "--omega: got 0"]),
 ]
