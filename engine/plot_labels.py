@@ -88,7 +88,21 @@ class Obstacles:
             return False
         return not any(_segment_hits_box(p, q, b) for p, q in self.segments)
 
+    def set_curve(self, xy_px, step_px=2.0):
+        """The polyline to avoid, resampled so that its vertices lie at most ``step_px``
+        apart (a fast stretch of the curve, few vertices far apart, still counts where
+        it crosses a box)."""
+        xy = np.asarray(xy_px, float)
+        if len(xy) < 2:
+            self.curve = xy.reshape(-1, 2)
+            return
+        seg = np.hypot(*np.diff(xy, axis=0).T)
+        s = np.concatenate([[0.0], np.cumsum(seg)])
+        t = np.linspace(0.0, s[-1], max(int(np.ceil(s[-1] / step_px)) + 1, len(xy)))
+        self.curve = np.column_stack([np.interp(t, s, xy[:, 0]), np.interp(t, s, xy[:, 1])])
+
     def curve_cost(self, box):
+        """Number of the curve's (resampled) vertices inside ``box``."""
         if not len(self.curve):
             return 0
         c = self.curve

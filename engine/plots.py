@@ -227,7 +227,8 @@ def plot_polar(result, ax=None, lang="ru"):
     import textwrap
 
     # the conventions go under the T axis, outside the diagram (never over the curve)
-    note = (textwrap.wrap(f"{y['Kr']} = {spec.Kr:.0f} {t['N']};  {t['poles']}", 80)
+    kr = f"{spec.Kr:.0f}".replace("-", "−")               # a minus sign, not a hyphen
+    note = (textwrap.wrap(f"{y['Kr']} = {kr} {t['N']};  {t['poles']}", 80)
             + textwrap.wrap(t["frame"], 80))
     ax.set_xlabel("\n".join([t["T"]] + note), fontsize=8.5, linespacing=1.4)
     return ax
@@ -282,7 +283,7 @@ def _polar_labels(ax, T, K, kr, lt, lk, angles, ext, R, a, pole_name, r_name, un
     bb = ax.get_window_extent()
     obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
     curve = tr(np.column_stack([T, K]))
-    obs.curve = curve
+    obs.set_curve(curve)
     pts = tr(np.column_stack([lt, lk]))
     for p in pts:
         obs.add_marker(p, ms * px + 1)
@@ -302,7 +303,8 @@ def _polar_labels(ax, T, K, kr, lt, lk, angles, ext, R, a, pole_name, r_name, un
         away = curve[idx] - osh
         place_label(ax, obs, pos, f"{r_name} {name} = {R[idx]:.2f} {unit}\n"
                     f"(α = {a[idx]:g}°)", normal=away if name == "max" else (1, 0),
-                    fontsize=9, color=col, gid="polar-label", gaps_pt=(4, 8, 14, 22, 32))
+                    fontsize=9, color=col, gid="polar-label", curve_weight=25.0,
+                    gaps_pt=(4, 8, 14, 22, 32, 46, 64))      # off the curve, even if farther
     # α labels: normal of the curve at each point, pointing away from the curve's centre
     d = np.gradient(curve, axis=0)
     tx = np.interp(angles, a, d[:, 0])
@@ -336,7 +338,7 @@ def _diagram_points(ax, result, x_of, lang):
     ax.set_autoscale_on(False)
     bb = ax.get_window_extent()
     obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
-    obs.curve = ax.transData.transform(ax.get_lines()[0].get_xydata())
+    obs.set_curve(ax.transData.transform(ax.get_lines()[0].get_xydata()))
     for text in ax.texts:                       # the TDC/BDC names already there
         e = text.get_window_extent(r)
         obs.boxes.append((e.x0, e.y0, e.x1, e.y1))
