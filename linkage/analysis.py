@@ -270,7 +270,8 @@ class AnalysisResult:
 def _table(spec, phi, mech, ext, positions, course_tables=True):
     """The kinematics and force DataFrames at crank angles ``phi`` [rad]: the group
     routines run chunk by chunk into two preallocated column blocks, which become the
-    frames' storage without a copy."""
+    frames' storage without a copy (one float block per frame, plus the ``position``
+    column, one Int64 array that both frames share copy-on-write)."""
     import pandas as pd
 
     n = len(phi)
@@ -284,8 +285,11 @@ def _table(spec, phi, mech, ext, positions, course_tables=True):
         pos = pd.array(positions, dtype="Int64")
     kin = pd.DataFrame(kblock.T, columns=t.kcols, copy=False)
     frc = pd.DataFrame(fblock.T, columns=t.fcols, copy=False)
+    # a Series on the frames' own index is inserted by reference (copy-on-write), an
+    # array would be copied
+    pos = pd.Series(pos, index=kin.index, copy=False)
     kin.insert(0, "position", pos)
-    frc.insert(0, "position", pos.copy())
+    frc.insert(0, "position", pos)
     return kin, frc
 
 
@@ -366,7 +370,8 @@ def analyze(spec, crank_angles_deg=None, *, course_tables=True) -> AnalysisResul
                          "analysis.crank_angles_deg instead"])
     positions = None
     if crank_angles_deg is not None:
-        phi = np.radians(angles_argument(crank_angles_deg, "crank_angles_deg"))
+        phi = angles_argument(crank_angles_deg, "crank_angles_deg")  # a new array
+        np.radians(phi, out=phi)
     elif spec.crank_angles_deg is not None:
         phi = np.radians(np.asarray(spec.crank_angles_deg, dtype=float))
     else:
