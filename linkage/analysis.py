@@ -377,8 +377,7 @@ def analyze(spec, crank_angles_deg=None, *, course_tables=True) -> AnalysisResul
                          "analysis.crank_angles_deg instead"])
     positions = None
     if crank_angles_deg is not None:
-        phi = angles_argument(crank_angles_deg, "crank_angles_deg")  # a new array
-        np.radians(phi, out=phi)
+        phi = np.radians(angles_argument(crank_angles_deg, "crank_angles_deg"))
     elif spec.crank_angles_deg is not None:
         phi = np.radians(np.asarray(spec.crank_angles_deg, dtype=float))
     else:
