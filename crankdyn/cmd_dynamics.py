@@ -149,7 +149,7 @@ def report_stale(command, stale, out, lang, legacy=LEGACY_NAMES):
     old = [n for n in legacy if (Path(out) / n).is_file()]
     if old:
         print(f"crankdyn {command}: " + (
-            "в папке остались файлы прежней версии crankdyn, названные без имени "
+            "в папке остались файлы прежней версии программы, названные без имени "
             "спецификации (не тронуты): " if ru else "the folder still holds unnamed outputs of an older "
             "crankdyn (left alone): ") + ", ".join(old), file=sys.stderr)
 

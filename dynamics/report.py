@@ -24,7 +24,7 @@ _ROWS = {
     "delta_asked": ("δ заданный", "delta asked"),
     "dT_const": ("ΔTmax при ω = const", "dE_max at constant speed"),
     "Jc": ("Jc (среднее Jп за цикл)", "J_c (cycle mean of J_red)"),
-    "J_classic": ("Jм = ΔTmax/(δ ωср²) − Jc", "J_F classic = dE/(delta w^2) - J_c"),
+    "J_classic": ("Jм = ΔTmax/(δ ωср²) − Jc", "J_F classic = dE/(delta w_m²) - J_c"),
     "J_exact": ("Jм точный", "J_F exact"),
     "startup": ("время разгона", "start-up time"),
 }
@@ -64,7 +64,7 @@ _KIND = {"machine": ("машина, заданная приведёнными в
          "engine": ("поршневой двигатель", "engine")}
 _DRIVING = {"constant": ("движущий момент постоянный", "driving constant"),
             "table": ("движущий момент по таблице", "driving table"),
-            "motor": ("электродвигатель M = M0 (1 − ω/ω0)", "driving motor")}
+            "motor": ("привод от электродвигателя", "driving motor")}
 
 
 def summary_lines(result: dict, name: str, kind: str, driving: str, lang="en"):
