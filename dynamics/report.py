@@ -162,9 +162,9 @@ def build_workbook(result: dict, lang="en", name=None):
     ws.page_setup.paperSize = ws.PAPERSIZE_A4
     ws.page_setup.orientation = "portrait"
 
-    def sheet(title, df, symbols=None):
-        import numpy as np
+    import numpy as np
 
+    def sheet(title, df, symbols=None):
         num = df.select_dtypes("number")
         if not np.all(np.isfinite(num.to_numpy())):
             raise ValueError(f"sheet {title}: a value is not finite")
@@ -179,9 +179,18 @@ def build_workbook(result: dict, lang="en", name=None):
         for rec in df.itertuples(index=False):
             s.append([float(v) for v in rec])
         for j, col in enumerate(df.columns, start=1):
-            s.column_dimensions[get_column_letter(j)].width = max(12, min(22, len(col) + 2))
+            letter = get_column_letter(j)
+            s.column_dimensions[letter].width = 13
+            # about six significant digits of the column's largest value (the cells keep
+            # every digit: the CSV's numbers)
+            fmt = _value_format(float(np.abs(df[col].to_numpy(float)).max()))
+            for (c,) in s.iter_rows(min_row=3, min_col=j, max_col=j):
+                c.number_format = fmt
+        # the labels wrap at the column width (13): room for their longest
+        s.row_dimensions[1].height = 13 * max(math.ceil(len(c.value) / 9) for c in s[1])
         s.freeze_panes = "B3"
         s.print_title_rows = "1:2"
+        s.print_title_cols = "A:A"          # φ (α) on every page of a wide sheet
         s.page_setup.paperSize = s.PAPERSIZE_A4
         s.page_setup.orientation = "landscape" if len(df.columns) > 8 else "portrait"
 
