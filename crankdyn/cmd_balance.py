@@ -209,6 +209,8 @@ _LINKAGE = {"crank-rocker": ("кривошипно-коромысловый ме
             "crank-slider": ("кривошипно-ползунный механизм", "crank-slider"),
             "what": ("уравновешивание главного вектора сил инерции противовесами",
                      "shaking-force balance by counterweights"),
+            "partial": ("частичное уравновешивание главного вектора сил инерции "
+                        "противовесом", "partial shaking-force balance by a counterweight"),
             "crank": ("кривошип", "crank"), "rocker": ("коромысло", "rocker"),
             "mr": ("(m r)б", "m·r"), "kgm": ("кг·м", "kg·m"), "kg": ("кг", "kg"),
             "m": ("м", "m"), "N": ("Н", "N"), "at": ("под углом", "at"),
@@ -226,7 +228,8 @@ def linkage_lines(res, lang="en"):
     i = 0 if lang == "ru" else 1
     W = {k: v[i] for k, v in _LINKAGE.items()}
     spec = res.balanced_spec
-    lines = [f"{spec.name}: {W.get(spec.kind, spec.kind)}, {W['what']}"]
+    what = W["partial"] if spec.kind == "crank-slider" else W["what"]
+    lines = [f"{spec.name}: {W.get(spec.kind, spec.kind)}, {what}"]
     cw = res.counterweights
     width = max(len(W.get(r, r)) for r in cw["link"])
     for _, r in cw.iterrows():

@@ -286,3 +286,25 @@ def test_dynamics_workbooks_render_on_a4_pages(runs, tmp_path):
         sizes = {tuple(sorted((round(float(w)), round(float(h))))) for w, h in pages}
         assert sizes == {(595, 842)}, (lang, sizes)
         assert len(pages) >= 4
+
+
+def test_crank_slider_balance_summary_in_both_languages(tmp_path, capsys):
+    """The partial balance of a crank-slider (press.toml with [balance] fraction = 0.5):
+    named after the mechanism, its summary in the report's language with the fraction."""
+    spec = tmp_path / "slider.toml"
+    spec.write_text(example_path("press.toml").read_text(encoding="utf-8")
+                    + "\n[balance]\nfraction = 0.5\n", encoding="utf-8")
+    out = tmp_path / "o"
+    text = {}
+    for lang in ("ru", "en"):
+        capsys.readouterr()
+        assert main(["balance", str(spec), "-o", str(out), "--lang", lang]) == 0
+        text[lang] = capsys.readouterr()
+    assert _names(out) == {f"crank-press_{w}" for w in (
+        "counterweights.csv", "shaking.csv", "shaking_force.png", "shaking_force.svg",
+        "shaking_locus.png", "shaking_locus.svg")}
+    ru = text["ru"].out + text["ru"].err
+    assert not _latin_words(_strip(ru, out, "crank-press")), ru
+    assert "частичное" in ru and "кривошипно-ползунный" in ru and ": 0.5" in ru
+    en = text["en"].out + text["en"].err
+    assert not CYRILLIC.search(en) and "partial" in en and ": 0.5" in en
