@@ -100,7 +100,7 @@ def run(args) -> int:
     names = list(files.values()) + [xlsx] + [f"{p}.{e}" for p in plots.values()
                                              for e in ("png", "svg")]
     check_not_input([out / n for n in names], [spec_path])
-    stale = stale_outputs(out, name, [f"{t}" for t in TABLES] + [
+    stale = stale_outputs(out, name, list(TABLES) + [
         f"{p}.{e}" for p in PLOT_NAMES for e in ("png", "svg")], names)
     with staged_output(out, inputs=[spec_path], unit=f"dynamics:{name}") as stage:
         for key, df in tables.items():
