@@ -8,7 +8,9 @@ import numpy as np
 __all__ = ["plot_inertia", "plot_moments", "plot_wittenbauer", "plot_omega", "plot_startup",
            "plot_true_forces", "dynamics_figures", "PLOT_NAMES"]
 
-PLOT_NAMES = ("inertia", "moments", "wittenbauer", "omega", "startup", "forces")
+#: Every figure a dynamics run can draw (``startup`` with a motor, ``forces_true_motion``
+#: for a linkage or an engine), in order.
+PLOT_NAMES = ("inertia", "moments", "wittenbauer", "omega", "startup", "forces_true_motion")
 
 _T = {
     "ru": {"phi": "φ, °", "J": "Jп, кг·м²", "dJ": "dJп/dφ, кг·м²", "Md": "Mд", "Mc": "Mс",
@@ -169,8 +171,8 @@ def plot_true_forces(forces, column="M_drive_Nm", ax=None, lang="en"):
 
 
 def dynamics_figures(result: dict, lang="en"):
-    """Every figure of a dynamics run: name → Figure (``startup`` and ``forces`` only when
-    computed)."""
+    """Every figure of a dynamics run: name (one of :data:`PLOT_NAMES`) → Figure
+    (``startup`` and ``forces_true_motion`` only when computed)."""
     from matplotlib.figure import Figure
 
     m = result["motion"]
@@ -192,5 +194,5 @@ def dynamics_figures(result: dict, lang="en"):
         plot_true_forces(result["forces"], "M_Nm" if eng else "M_drive_Nm", ax1, lang=lang)
         plot_true_forces(result["forces"], "R_N" if eng else "R12_N", ax2, lang=lang)
         ax1.set_xlabel("")
-        figs["forces"] = fig
+        figs["forces_true_motion"] = fig
     return figs

@@ -4,84 +4,201 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["summary_rows", "build_workbook"]
+__all__ = ["summary_rows", "summary_lines", "build_workbook", "column_label"]
+
+
+#: Labels of the summary rows: key → (Russian textbook symbol or words, English).  The
+#: Russian symbols are those of the plots (Jп, Mд, Mс, ΔT for the change of kinetic
+#: energy, Jм for the flywheel, ωср for the mean speed).
+_ROWS = {
+    "w_max": ("ωmax", "omega_max"),
+    "w_min": ("ωmin", "omega_min"),
+    "w_m": ("ωср = (ωmax + ωmin)/2", "omega_m = (max + min)/2"),
+    "w_t": ("ω средняя по времени", "time-mean omega"),
+    "delta": ("δ", "delta"),
+    "dT": ("ΔTmax", "dE_max"),
+    "JF": ("Jм (маховик)", "J_F (flywheel)"),
+    "cycle": ("время цикла", "cycle time"),
+    "Mc": ("Mс = const", "M_c (constant)"),
+    "Md": ("Mд = const", "M_d (constant)"),
+    "delta_asked": ("δ заданный", "delta asked"),
+    "dT_const": ("ΔTmax при ω = const", "dE_max at constant speed"),
+    "Jc": ("Jc (среднее Jп за цикл)", "J_c (cycle mean of J_red)"),
+    "J_classic": ("Jм = ΔTmax/(δ ωср²) − Jc", "J_F classic = dE/(delta w_m²) - J_c"),
+    "J_exact": ("Jм точный", "J_F exact"),
+    "startup": ("время разгона", "start-up time"),
+}
+
+#: Units: key → (ru, en).
+_UNIT = {"rad_s": ("рад/с", "rad/s"), "J": ("Дж", "J"), "kgm2": ("кг·м²", "kg·m²"),
+         "s": ("с", "s"), "Nm": ("Н·м", "N·m"), "1": ("-", "-")}
 
 
 def summary_rows(result: dict, lang="en"):
-    """(label, value, unit) rows of the summary, in the report language."""
-    ru = lang == "ru"
+    """(label, value, unit) rows of the summary, in the report language (``"ru"``: the
+    Russian textbook symbols; ``"en"``: English, no Cyrillic letter); the same rows and
+    values in both."""
+    i = 0 if lang == "ru" else 1
     m, fly = result["motion"], result["flywheel"]
-    rows = [
-        ("ωmax" if ru else "omega_max", m.omega_max, "рад/с" if ru else "rad/s"),
-        ("ωmin" if ru else "omega_min", m.omega_min, "рад/с" if ru else "rad/s"),
-        ("ωср = (ωmax + ωmin)/2" if ru else "omega_m = (max + min)/2", m.omega_mean,
-         "рад/с" if ru else "rad/s"),
-        ("ω средняя по времени" if ru else "time-mean omega", m.omega_time_mean,
-         "рад/с" if ru else "rad/s"),
-        ("δ", m.delta, "-"),
-        ("ΔTmax" if ru else "dW_max", m.dW_max, "Дж" if ru else "J"),
-        ("Jмаховика" if ru else "J_flywheel", m.J_flywheel, "кг·м²" if ru else "kg·m²"),
-        ("Время цикла" if ru else "cycle time", m.cycle_time, "с" if ru else "s"),
-    ]
+    keys = [("w_max", m.omega_max, "rad_s"), ("w_min", m.omega_min, "rad_s"),
+            ("w_m", m.omega_mean, "rad_s"), ("w_t", m.omega_time_mean, "rad_s"),
+            ("delta", m.delta, "1"), ("dT", m.dW_max, "J"), ("JF", m.J_flywheel, "kgm2"),
+            ("cycle", m.cycle_time, "s")]
     if m.M_drive_const is not None:
         if m.constant_role == "resist":
-            rows.append(("Mс = const" if ru else "M_c (constant)", -m.M_drive_const,
-                         "Н·м" if ru else "N·m"))
+            keys.append(("Mc", -m.M_drive_const, "Nm"))
         else:
-            rows.append(("Mд = const" if ru else "M_d (constant)", m.M_drive_const,
-                         "Н·м" if ru else "N·m"))
+            keys.append(("Md", m.M_drive_const, "Nm"))
     if fly is not None:
-        rows += [
-            ("δ заданный" if ru else "delta asked", fly.delta, "-"),
-            ("ΔTmax при ω = const" if ru else "dW_max at constant speed", fly.dW_max,
-             "Дж" if ru else "J"),
-            ("Jc (среднее Jп)" if ru else "J_c (cycle mean of J_red)", fly.J_c,
-             "кг·м²" if ru else "kg·m²"),
-            ("Jмах = ΔTmax/(δ ωср²) − Jc" if ru else "J_F classic = dW/(delta w^2) - J_c",
-             fly.J_classic, "кг·м²" if ru else "kg·m²"),
-            ("Jмах точный" if ru else "J_F exact", fly.J_exact, "кг·м²" if ru else "kg·m²"),
-        ]
+        keys += [("delta_asked", fly.delta, "1"), ("dT_const", fly.dW_max, "J"),
+                 ("Jc", fly.J_c, "kgm2"), ("J_classic", fly.J_classic, "kgm2"),
+                 ("J_exact", fly.J_exact, "kgm2")]
     if result.get("startup") is not None:
-        rows.append(("Время разгона" if ru else "start-up time", result["startup"].t_steady,
-                     "с" if ru else "s"))
-    return rows
+        keys.append(("startup", result["startup"].t_steady, "s"))
+    return [(_ROWS[k][i], float(v), _UNIT[u][i]) for k, v, u in keys]
 
 
-def build_workbook(result: dict, lang="en"):
-    """An openpyxl Workbook; raises ValueError if any number is not finite."""
+#: Words of the terminal summary's first line: (ru, en).
+_KIND = {"machine": ("машина, заданная приведёнными величинами", "machine"),
+         "linkage": ("рычажный механизм", "linkage"),
+         "engine": ("поршневой двигатель", "engine")}
+_DRIVING = {"constant": ("движущий момент постоянный", "driving constant"),
+            "table": ("движущий момент по таблице", "driving table"),
+            "motor": ("привод от электродвигателя", "driving motor")}
+
+
+def summary_lines(result: dict, name: str, kind: str, driving: str, lang="en"):
+    """The terminal summary of a dynamics run in ``lang``: the machine (``name``,
+    ``kind``: machine, linkage or engine; ``driving``: constant, table or motor), the grid,
+    then one line per row of :func:`summary_rows`.  Every number is formatted once, the
+    same in both languages; ru speaks Russian with the textbook symbols, en has no
+    Cyrillic letter."""
+    i = 0 if lang == "ru" else 1
+    m = result["motion"]
+    points = f"{len(m.table)}"
+    span = f"{float(m.table['phi_rad'].iloc[-1]) * 180.0 / math.pi:g}"
+    grid = (f"узлов сетки {points} на {span}°", f"{points} grid points over {span} deg")[i]
+    lines = [f"{name}: {_KIND[kind][i]}, {_DRIVING[driving][i]}, {grid}"]
+    lines += [f"  {label:<36} {value:14.6g} {unit}"
+              for label, value, unit in summary_rows(result, lang)]
+    return lines
+
+
+#: Column symbols of the tables: CSV name without its unit → (ru, en).  A column not
+#: listed keeps its CSV symbol (``R12_x``, ``M14``): the same in both languages.
+_SYMBOL = {"phi": ("φ", "φ"), "alpha": ("α", "α"), "omega": ("ω", "ω"), "eps": ("ε", "ε"),
+           "t": ("t", "t"), "J_red": ("Jп", "J_red"), "dJ_red_dphi": ("dJп/dφ", "dJ_red/dφ"),
+           "M_drive": ("Mд", "M_d"), "M_resist": ("Mс", "M_c"),
+           "M_resist_loads": ("Mс от нагрузок", "M_c of the loads"),
+           "M_resist_weights": ("Mс от сил тяжести", "M_c of the weights"),
+           "W": ("ΔT = ∫(Mд − Mс)dφ", "ΔE = ∫(M_d − M_c)dφ"),
+           "E": ("T = Jп ω²/2", "E = J_red ω²/2"), "j": ("j", "j"), "Pj": ("Pj", "Pj"),
+           "P": ("P", "P"), "T": ("T", "T"), "K": ("K", "K"), "M": ("Mкр", "M"),
+           "R": ("Rшш", "Rcp")}
+#: The linkage's forces sheet: its M_drive is the balancing moment Mур of the core.
+_SYMBOL_FORCES = {"M_drive": ("Mур", "M_b")}
+#: Unit suffixes of the CSV names → (ru, en); longest first.
+_SUFFIX = (("_rad_s2", ("рад/с²", "rad/s²")),
+           ("_rad_s", ("рад/с", "rad/s")), ("_m_s2", ("м/с²", "m/s²")),
+           ("_kgm2", ("кг·м²", "kg·m²")), ("_deg", ("°", "deg")), ("_rad", ("рад", "rad")),
+           ("_Nm", ("Н·м", "N·m")), ("_N", ("Н", "N")), ("_J", ("Дж", "J")), ("_s", ("с", "s")))
+
+
+def column_label(column: str, lang="en", symbols=None) -> str:
+    """The header of a table column in the report language: ``omega_rad_s`` →
+    ``ω, рад/с`` (ru) or ``ω [rad/s]`` (en); a ``_const`` column is the same quantity at
+    ω = const.  ``symbols`` overrides :data:`_SYMBOL` entries."""
+    i = 0 if lang == "ru" else 1
+    const = column.endswith("_const")
+    base = column[:-len("_const")] if const else column
+    unit = None
+    for suffix, names in _SUFFIX:
+        if base.endswith(suffix):
+            base, unit = base[:-len(suffix)], names[i]
+            break
+    table = {**_SYMBOL, **(symbols or {})}
+    sym = table[base][i] if base in table else base
+    text = sym if unit is None else (f"{sym}, {unit}" if i == 0 else f"{sym} [{unit}]")
+    return text + (" (ω = const)" if const else "")
+
+
+def _value_format(v: float) -> str:
+    """An Excel number format showing ``v`` with about six significant digits."""
+    if v == 0 or not math.isfinite(v):
+        return "0"
+    decimals = max(0, min(10, 5 - math.floor(math.log10(abs(v)))))
+    return "0." + "0" * decimals if decimals else "0"
+
+
+def build_workbook(result: dict, lang="en", name=None):
+    """An openpyxl Workbook: a summary sheet (``name`` as its title when given), then the
+    motion, forces and start-up tables with two header rows (the quantity in the report
+    language, then the CSV column name); every sheet set up for A4.  Raises ValueError if
+    any number is not finite."""
     from openpyxl import Workbook
-    from openpyxl.styles import Font
+    from openpyxl.styles import Alignment, Font
+    from openpyxl.utils import get_column_letter
 
+    ru = lang == "ru"
     wb = Workbook()
     ws = wb.active
-    ws.title = "Итоги" if lang == "ru" else "Summary"
-    ws.append(["Величина" if lang == "ru" else "Quantity",
-               "Значение" if lang == "ru" else "Value", "Ед." if lang == "ru" else "Unit"])
+    ws.title = "Итоги" if ru else "Summary"
+    if name is not None:
+        ws.append([f"{name}: " + ("динамика машины" if ru else "machine dynamics")])
+        ws["A1"].font = Font(bold=True, size=12)
+    ws.append(["Величина" if ru else "Quantity", "Значение" if ru else "Value",
+               "Ед." if ru else "Unit"])
+    head = ws.max_row
     for row in summary_rows(result, lang):
         if not math.isfinite(row[1]):
             raise ValueError(f"summary value {row[0]} is not finite")
         ws.append(list(row))
-    for c in ws[1]:
+        ws.cell(ws.max_row, 2).number_format = _value_format(row[1])
+    for c in ws[head]:
         c.font = Font(bold=True)
-    ws.column_dimensions["A"].width = 36
+    ws.column_dimensions["A"].width = 38
     ws.column_dimensions["B"].width = 16
+    ws.column_dimensions["C"].width = 10
+    ws.page_setup.paperSize = ws.PAPERSIZE_A4
+    ws.page_setup.orientation = "portrait"
 
-    def sheet(title, df):
-        import numpy as np
+    import numpy as np
 
+    def sheet(title, df, symbols=None):
         num = df.select_dtypes("number")
         if not np.all(np.isfinite(num.to_numpy())):
             raise ValueError(f"sheet {title}: a value is not finite")
         s = wb.create_sheet(title)
+        s.append([column_label(c, lang, symbols) for c in df.columns])
         s.append(list(df.columns))
         for c in s[1]:
             c.font = Font(bold=True)
+            c.alignment = Alignment(wrap_text=True, vertical="top")
+        for c in s[2]:
+            c.font = Font(italic=True, size=8, color="555555")
         for rec in df.itertuples(index=False):
             s.append([float(v) for v in rec])
+        for j, col in enumerate(df.columns, start=1):
+            letter = get_column_letter(j)
+            s.column_dimensions[letter].width = 13
+            # about six significant digits of the column's largest value (the cells keep
+            # every digit: the CSV's numbers)
+            fmt = _value_format(float(np.abs(df[col].to_numpy(float)).max()))
+            for (c,) in s.iter_rows(min_row=3, min_col=j, max_col=j):
+                c.number_format = fmt
+        # the labels wrap at the column width (13): room for their longest
+        s.row_dimensions[1].height = 13 * max(math.ceil(len(c.value) / 9) for c in s[1])
+        s.freeze_panes = "B3"
+        s.print_title_rows = "1:2"
+        s.print_title_cols = "A:A"          # φ (α) on every page of a wide sheet
+        s.page_setup.paperSize = s.PAPERSIZE_A4
+        s.page_setup.orientation = "landscape" if len(df.columns) > 8 else "portrait"
 
-    sheet("Движение" if lang == "ru" else "Motion", result["motion"].table)
+    sheet("Движение" if ru else "Motion", result["motion"].table)
     if result.get("forces") is not None:
-        sheet("Силы" if lang == "ru" else "Forces", result["forces"])
+        sheet("Силы" if ru else "Forces", result["forces"], _SYMBOL_FORCES)
     if result.get("startup") is not None:
-        sheet("Разгон" if lang == "ru" else "Startup", result["startup"].table)
-    return wb
+        sheet("Разгон" if ru else "Startup", result["startup"].table)
+    from engine.report import a4_setup      # the one print setup of every workbook
+
+    return a4_setup(wb)

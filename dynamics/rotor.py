@@ -329,8 +329,13 @@ def plot_mr_polygon(result: RotorBalance, plane=0, ax=None, lang="en"):
     end = pts[-1]
     ax.annotate("", xy=(0, 0), xytext=(end.real, end.imag),
                 arrowprops=dict(arrowstyle="-|>", color="0.35", lw=2.0, linestyle="--"))
+    # the label beside the middle of the closing vector, on the side away from the
+    # polygon (its vertices' mean), so that it covers no arrow of a thin polygon
     nrm = -1j * end / max(abs(end), 1e-300)   # right normal of the closing vector
-    cm = 0.5 * end + 0.12 * span * nrm
+    centre = np.mean(pts) - 0.5 * end
+    if (centre.real * nrm.real + centre.imag * nrm.imag) > 0:
+        nrm = -nrm
+    cm = 0.5 * end + 0.2 * span * nrm
     b_lab = "(m r)б" if lang == "ru" else "(m r)b"
     ax.text(cm.real, cm.imag, f"{b_lab} = {abs(corr):.4g}\n{_angle_deg(corr):.2f}°",
             fontsize=9, color="0.2", ha="center", va="center",

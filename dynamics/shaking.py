@@ -214,10 +214,12 @@ def balance_crank_slider(spec, fraction=0.0, radius_m=None,
 
 _L = {"ru": {"phi": "φ, °", "F": "Fин, Н", "b": "до уравновешивания",
              "a": "после уравновешивания", "t": "Главный вектор сил инерции",
-             "loc": "Годограф главного вектора сил инерции", "x": "Fx, Н", "y": "Fy, Н"},
+             "loc": "Годограф главного вектора сил инерции", "x": "Fx, Н", "y": "Fy, Н",
+             "zero": "после уравновешивания: Fин = 0"},
       "en": {"phi": "φ [deg]", "F": "F_sh [N]", "b": "before balancing",
              "a": "after balancing", "t": "Shaking force", "loc": "Shaking force locus",
-             "x": "F_x [N]", "y": "F_y [N]"}}
+             "x": "F_x [N]", "y": "F_y [N]",
+             "zero": "after balancing: F_sh = 0"}}
 
 
 def plot_shaking_force(result: BalanceResult, ax=None, lang="en"):
@@ -243,8 +245,15 @@ def plot_shaking_locus(result: BalanceResult, ax=None, lang="en"):
     if ax is None:
         from matplotlib.figure import Figure
         ax = Figure(figsize=(5.5, 5.5), layout="constrained").add_subplot()
-    for r, ls, lab in ((result.before, "-", L["b"]), (result.after, (0, (5, 2)), L["a"])):
-        ax.plot(r.table["F_x_N"], r.table["F_y_N"], color="black", ls=ls, lw=1.3, label=lab)
+    from crankbase.tolerances import ROUNDOFF_RTOL
+
+    ax.plot(result.before.table["F_x_N"], result.before.table["F_y_N"], color="black",
+            ls="-", lw=1.3, label=L["b"])
+    if result.after.F_max <= ROUNDOFF_RTOL * result.before.F_max:   # fully balanced
+        ax.plot([0], [0], "o", mfc="white", mec="black", ms=9, ls="none", label=L["zero"])
+    else:
+        ax.plot(result.after.table["F_x_N"], result.after.table["F_y_N"], color="black",
+                ls=(0, (5, 2)), lw=1.3, label=L["a"])
     ax.plot([0], [0], "ko", ms=4)
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel(L["x"])

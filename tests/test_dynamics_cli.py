@@ -18,18 +18,19 @@ def test_machine_example(tmp_path, lang, capsys):
     out = tmp_path / "o"
     assert main(["dynamics", str(example_path("flywheel_seed.toml")), "-o", str(out),
                  "--lang", lang]) == 0
-    df = pd.read_csv(out / "motion.csv")
+    df = pd.read_csv(out / "flywheel-example-11-3_motion.csv")
     assert list(df.columns[:8]) == COLS
     assert df["omega_rad_s"].max() == pytest.approx(168.45, abs=0.01)   # seed Ex. 11-3
     assert df["omega_rad_s"].min() == pytest.approx(145.72, abs=0.01)
     wb = load_workbook(out / "flywheel-example-11-3_dynamics.xlsx")
     ws = wb.worksheets[1]
-    header = [c.value for c in ws[1]]
+    header = [c.value for c in ws[2]]           # row 1: the quantity, row 2: the CSV name
     col = header.index("omega_rad_s")
-    vals = np.array([r[col] for r in ws.iter_rows(min_row=2, values_only=True)], float)
+    assert ws.cell(1, col + 1).value == ("ω, рад/с" if lang == "ru" else "ω [rad/s]")
+    vals = np.array([r[col] for r in ws.iter_rows(min_row=3, values_only=True)], float)
     assert np.array_equal(vals, df["omega_rad_s"].to_numpy())
     for name in ("inertia", "moments", "wittenbauer", "omega"):
-        assert (out / f"{name}.png").stat().st_size > 5000
+        assert (out / f"flywheel-example-11-3_{name}.png").stat().st_size > 5000
     text = capsys.readouterr().out
     assert "168.44" in text
     strings = [c.value for w in wb.worksheets for row in w.iter_rows() for c in row
@@ -42,14 +43,15 @@ def test_linkage_motor_example(tmp_path):
     out = tmp_path / "o"
     assert main(["dynamics", str(example_path("press_dynamics.toml")), "-o", str(out),
                  "--lang", "en"]) == 0
-    m = pd.read_csv(out / "motion.csv")
+    m = pd.read_csv(out / "crank-press_motion.csv")
     w = m["omega_rad_s"]
     assert (w.max() - w.min()) / (0.5 * (w.max() + w.min())) == pytest.approx(0.05, rel=1e-5)
-    f = pd.read_csv(out / "forces_true_motion.csv")
+    f = pd.read_csv(out / "crank-press_forces_true_motion.csv")
     assert {"M_drive_Nm", "M_drive_Nm_const", "R12_x_N", "R12_x_N_const"} <= set(f.columns)
-    s = pd.read_csv(out / "startup.csv")
+    s = pd.read_csv(out / "crank-press_startup.csv")
     assert s["omega_rad_s"].iloc[0] == 0.0 and s["omega_rad_s"].iloc[-1] > 9.0
-    assert (out / "startup.png").exists() and (out / "forces.png").exists()
+    assert (out / "crank-press_startup.png").exists()
+    assert (out / "crank-press_forces_true_motion.png").exists()
 
 
 @pytest.mark.parametrize("body,keys", [
@@ -79,7 +81,7 @@ def test_engine_example(tmp_path):
     out = tmp_path / "o"
     assert main(["dynamics", str(example_path("petrol_dynamics.toml")), "-o", str(out),
                  "--lang", "ru"]) == 0
-    m = pd.read_csv(out / "motion.csv")
+    m = pd.read_csv(out / "petrol-vaz2106_motion.csv")
     w = m["omega_rad_s"]
     assert (w.max() - w.min()) / (0.5 * (w.max() + w.min())) == pytest.approx(0.01, rel=1e-6)
     assert m["phi_deg"].iloc[-1] == pytest.approx(720.0)
@@ -87,9 +89,9 @@ def test_engine_example(tmp_path):
 
 def test_examples_flag(tmp_path, capsys):
     assert main(["balance", "--example", "-o", str(tmp_path / "r")]) == 0
-    assert (tmp_path / "r" / "rotor_balance.csv").exists()
+    assert (tmp_path / "r" / "two-plane-example_rotor_balance.csv").exists()
     assert main(["dynamics", "--example", "flywheel", "-o", str(tmp_path / "f")]) == 0
-    assert (tmp_path / "f" / "motion.csv").exists()
+    assert (tmp_path / "f" / "flywheel-example-11-3_motion.csv").exists()
     assert main(["dynamics", "--example", "nope", "-o", str(tmp_path / "n")]) == 2
     assert main(["dynamics", str(example_path("flywheel_seed.toml")), "--example",
                  "-o", str(tmp_path / "n")]) == 2

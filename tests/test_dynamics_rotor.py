@@ -115,11 +115,11 @@ def test_spec_m_and_r():
 def test_cli(tmp_path, capsys):
     assert main(["balance", str(example_path("rotor_two_plane.toml")), "-o",
                  str(tmp_path), "--lang", "en"]) == 0
-    df = pd.read_csv(tmp_path / "rotor_balance.csv")
+    df = pd.read_csv(tmp_path / "two-plane-example_rotor_balance.csv")
     assert list(df.columns) == ["plane", "z_mm", "mr_gmm", "angle_deg", "m_g", "r_mm"]
     assert df["mr_gmm"].to_numpy() == pytest.approx([285.595, 819.0615], abs=1e-3)
     assert df["m_g"].to_numpy() == pytest.approx(df["mr_gmm"].to_numpy() / 50)
-    assert (tmp_path / "rotor_polygons.png").stat().st_size > 10_000
+    assert (tmp_path / "two-plane-example_rotor_polygons.png").stat().st_size > 10_000
 
 
 def test_cli_bad_input(tmp_path, capsys):

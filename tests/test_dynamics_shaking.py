@@ -134,12 +134,12 @@ def test_cli_linkage_balance(tmp_path):
     out = tmp_path / "o"
     assert main(["balance", str(example_path("ratchet_balance.toml")), "-o", str(out),
                  "--lang", "en"]) == 0
-    t = pd.read_csv(out / "shaking.csv")
+    t = pd.read_csv(out / "ratchet-drive_shaking.csv")
     assert t["F_N"].max() > 100 and t["F_N_after"].max() < 1e-9 * t["F_N"].max()
-    cw = pd.read_csv(out / "counterweights.csv")
+    cw = pd.read_csv(out / "ratchet-drive_counterweights.csv")
     assert list(cw["link"]) == ["crank", "rocker"]
     assert cw["radius_m"].iloc[0] == pytest.approx(0.05)
-    assert (out / "shaking_locus.png").exists()
+    assert (out / "ratchet-drive_shaking_locus.png").exists()
 
 
 def test_cli_balance_bad_section(tmp_path, capsys):
