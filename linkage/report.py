@@ -375,7 +375,7 @@ _KEY_MEANING = {
     "coupler": ("длина шатуна lAB", "coupler (rod) length |AB|"),
     "rocker": ("длина коромысла lBC", "rocker length |CB|"),
     "ground": ("межосевое расстояние lOC (стойка)", "ground length |OC|"),
-    "ground_angle_deg": ("угол линии стойки (направляющей) к оси x",
+    "ground_angle_deg": ("угол стойки OC (направляющей) к оси x",
                          "angle of the ground line (guide) to +x"),
     "offset": ("смещение направляющей (дезаксаж) e", "guide offset e"),
     "assembly": ("вариант сборки (+1 или −1)", "assembly branch (+1 or −1)"),
@@ -383,11 +383,11 @@ _KEY_MEANING = {
                     "crank angular velocity ω2 (+ ccw)"),
     "epsilon_rad_s2": ("угловое ускорение кривошипа ε2", "crank angular acceleration ε2"),
     "gravity_m_s2": ("ускорение свободного падения g", "gravity g"),
-    "mass_kg": ("масса {link}", "mass {link}"),
-    "inertia_kg_m2": ("момент инерции {link} относительно центра масс",
-                      "moment of inertia {link} about its centre of mass"),
-    "cg": ("центр масс {link} (x, y в системе звена)",
-           "centre of mass {link} (x, y in the link frame)"),
+    "mass_kg": ("масса {link} m{n}", "mass {link} m{n}"),
+    "inertia_kg_m2": ("момент инерции {link} JS{n} (относительно S{n})",
+                      "moment of inertia {link} JS{n} (about S{n})"),
+    "cg": ("центр масс {link} S{n} (x, y в системе звена)",
+           "centre of mass {link} S{n} (x, y in the link frame)"),
     "points": ("точка {point} {link} (x, y в системе звена)",
                "point {point} {link} (x, y in the link frame)"),
     "link": ("звено, к которому приложена нагрузка", "link carrying the load"),
@@ -432,8 +432,10 @@ def _key_meaning(key, value, lang):
     meaning = _KEY_MEANING.get(last)
     if meaning is None:
         return ""
+    from .spec import LINK_NUMBER
+
     out = meaning[i].format(link=_LINK_GEN.get(link, (link or "", link or ""))[i],
-                            point=point or "")
+                            point=point or "", n=LINK_NUMBER.get(link, ""))
     out = re.sub(r"\s+", " ", out).strip()
     if lang == "ru" and isinstance(value, str) and value in _VALUE_RU:
         out += f": {_VALUE_RU[value]}"
@@ -475,7 +477,7 @@ def write_workbook(result, path, lang: str = "ru"):
     # -- inputs (portrait A4: A spec key / label, B value, C unit, D meaning)
     ws = wb.active
     ws.title = t["sheets"]["inputs"]
-    widths = dict(A=34, B=22, C=9, D=37)
+    widths = dict(A=34, B=20, C=9, D=39)
     for letter, w in widths.items():
         ws.column_dimensions[letter].width = w
 
@@ -601,7 +603,7 @@ CONVENTIONS = _TEXT["en"]["conv"]
 #: units (one '0'; Cyrillic letters are wider than the average Latin text, measured on
 #: LibreOffice's rendering with a margin for word breaks), and the height of a line [pt],
 #: for the row heights of wrapped labels.
-_CHAR_WIDTH = {"cyrillic": 1.1, "other": 0.9}
+_CHAR_WIDTH = {"cyrillic": 1.0, "other": 0.88}
 _LINE_PT = 12.75
 
 
@@ -609,6 +611,9 @@ def _text_width(s: str) -> float:
     """Estimated printed width of a text in Excel column-width units."""
     cyr = sum(1 for ch in s if "\u0400" <= ch <= "\u04ff")
     return cyr * _CHAR_WIDTH["cyrillic"] + (len(s) - cyr) * _CHAR_WIDTH["other"]
+
+#: Width of a value column of the extremes sheet ("крайнее положение 1" on one line).
+_EXTREME_WIDTH = 22
 
 #: Column width (Excel units) printed on one landscape A4 page: at most ~70 % scale,
 #: so the numbers stay readable (a wider sheet prints on more pages, titles repeated).
@@ -642,7 +647,8 @@ def _extremes_sheet(ws, df, cols, lang, bold, grey, head_fill, box, center):
                 c.number_format = fmt
                 c.alignment = Alignment(horizontal="right", wrap_text=True)
         if col == "label":                   # the stroke's name: centred, wrapped
-            ws.row_dimensions[i].height = 30
+            if max(_text_width(str(v)) for v in values) > _EXTREME_WIDTH:
+                ws.row_dimensions[i].height = 2 * _LINE_PT + 4
             for j in range(4, 4 + len(values)):
                 ws.cell(i, j).alignment = Alignment(horizontal="center", vertical="center",
                                                     wrap_text=True)
@@ -650,7 +656,7 @@ def _extremes_sheet(ws, df, cols, lang, bold, grey, head_fill, box, center):
     ws.column_dimensions["B"].width = 9
     ws.column_dimensions["C"].width = 22
     for j in range(len(df)):
-        ws.column_dimensions[chr(ord("D") + j)].width = 20
+        ws.column_dimensions[chr(ord("D") + j)].width = _EXTREME_WIDTH
     ws.freeze_panes = "D2"
     ws.print_title_rows = "1:1"
     _page_setup(ws, landscape=False)
