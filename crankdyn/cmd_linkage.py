@@ -109,7 +109,8 @@ def run(args) -> int:
     from crankbase.output import safe_name, save_figure, staged_output
     from linkage.analysis import SingularPositionWarning
     from crankbase.errors import SpecError
-    from linkage.report import kind_text, summary_lines, text, write_csvs, write_workbook
+    from linkage.report import (kind_text, summary_lines, text, warning_text, write_csvs,
+                                write_workbook)
     from pandas import isna as pd_isna
 
     if args.example:
@@ -179,7 +180,8 @@ def run(args) -> int:
         if not path.exists():
             print(t["removed"].format(path=path), file=sys.stderr)
     for w in caught:
-        print(t["warning_line"].format(w=w.message), file=sys.stderr)
+        print(t["warning_line"].format(w=warning_text(w.message, args.lang)),
+              file=sys.stderr)
     statics = t["statics"] if spec.omega == 0 else ""
     print(t["run"].format(name=spec.name, kind=kind_text(spec.kind, args.lang),
                           statics=statics, n=len(result.kinematics), out=args.output))

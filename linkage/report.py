@@ -44,7 +44,8 @@ import numpy as np
 
 from crankbase.tolerances import SAME_ANGLE_DEG
 
-__all__ = ["column_label", "unit_text", "kind_text", "write_csvs", "write_workbook",
+__all__ = ["column_label", "unit_text", "kind_text", "warning_text", "write_csvs",
+           "write_workbook",
            "sheet_columns", "force_sheet_columns", "summary_lines", "text", "LANGS"]
 
 #: Report languages.
@@ -256,7 +257,7 @@ _TEXT = {
         "grashof": {"crank-rocker": "кривошипно-коромысловый",
                     "double-crank": "двухкривошипный",
                     "double-rocker": "двухкоромысловый",
-                    "change-point": "с переходным положением (s + l = p + q)",
+                    "change-point": "переходный (s + l = p + q)",
                     "non-Grashof": "не удовлетворяет условию Грасгофа (трёхкоромысловый)",
                     "rotatable": "кривошип проворачивается полностью",
                     "non-rotatable": "кривошип не проворачивается полностью"},
@@ -341,6 +342,31 @@ def summary_lines(result, lang: str = "ru"):
     if s.singular_phi_deg:
         rows.append((c["singular"], ", ".join(f"{a:.6g}" for a in s.singular_phi_deg), "°"))
     return rows
+
+
+#: The analysis' warnings (linkage.analysis, in English) in Russian: pattern → text.
+_WARNINGS_RU = (
+    (re.compile(r"change-point mechanism: singular position\(s\) at crank angle (.+?) "
+                r"\(links collinear; the output's motion is indeterminate there\)"),
+     "механизм с переходным положением: особые положения при угле кривошипа {0} "
+     "(звенья на одной прямой, движение выходного звена не определено)"),
+    (re.compile(r"requested crank angles include a singular position; its velocities, "
+                r"accelerations and forces are not finite"),
+     "заданные углы кривошипа включают особое положение: скорости, ускорения и силы в "
+     "нём не определены (ячейки пусты)"),
+)
+
+
+def warning_text(message, lang: str = "ru") -> str:
+    """An analysis warning (:attr:`AnalysisResult.warnings`) in the report's language;
+    a message without a translation is returned as it is."""
+    message = str(message)
+    if text(lang) is _TEXT["ru"]:
+        for pattern, ru in _WARNINGS_RU:
+            m = pattern.fullmatch(message)
+            if m:
+                return ru.format(*m.groups())
+    return message
 
 
 def kind_text(kind: str, lang: str = "ru") -> str:
@@ -486,8 +512,7 @@ def write_workbook(result, path, lang: str = "ru"):
         lines = 1
         for c, w in zip(ws[row], col_widths):
             if isinstance(c.value, str):
-                lines = max(lines, sum(math.ceil(_text_width(p) / w) or 1
-                                       for p in c.value.split("\n")))
+                lines = max(lines, _wrapped_lines(c.value, w))
         if lines > 1:
             ws.row_dimensions[row].height = _LINE_PT * lines + 2
 
@@ -533,8 +558,9 @@ def write_workbook(result, path, lang: str = "ru"):
     if result.warnings:
         ws.append([])
         for w in result.warnings:
-            ws.append([t["warning"], w])
+            ws.append([t["warning"], warning_text(w, lang)])
             ws.cell(ws.max_row, 1).font = Font(bold=True, color="C00000")
+            ws.cell(ws.max_row, 1).alignment = wrap
             ws.cell(ws.max_row, 2).alignment = wrap
             ws.merge_cells(start_row=ws.max_row, start_column=2, end_row=ws.max_row,
                            end_column=4)
@@ -611,6 +637,27 @@ def _text_width(s: str) -> float:
     """Estimated printed width of a text in Excel column-width units."""
     cyr = sum(1 for ch in s if "\u0400" <= ch <= "\u04ff")
     return cyr * _CHAR_WIDTH["cyrillic"] + (len(s) - cyr) * _CHAR_WIDTH["other"]
+
+
+def _wrapped_lines(s: str, width: float) -> int:
+    """Lines a wrapped text takes in a column ``width`` units wide: words are put on a
+    line while they fit (a word longer than a line is broken), as a spreadsheet does."""
+    lines = 0
+    for para in s.split("\n"):
+        lines += 1
+        used = 0.0
+        for word in para.split(" "):
+            w = _text_width(word)
+            if used and used + _CHAR_WIDTH["other"] + w > width:
+                lines += 1
+                used = 0.0
+            elif used:
+                used += _CHAR_WIDTH["other"]
+            if w > width:                      # broken inside the word
+                lines += math.ceil(w / width) - 1
+                w = w % width
+            used += w
+    return lines
 
 #: Width of a value column of the extremes sheet ("крайнее положение 1" on one line).
 _EXTREME_WIDTH = 22

@@ -512,8 +512,9 @@ _LATIN_WORD = re.compile(r"[A-Za-z]{3,}")
 
 def _russian_terminal_problems(text, allowed):
     """English words of 3+ letters in a Russian terminal text, apart from ``allowed``
-    (the mechanism's name, file names) and max/min."""
-    for a in allowed:
+    (the mechanism's name, file names), the command's own name on stderr lines
+    ("crankdyn linkage: предупреждение: …") and max/min."""
+    for a in sorted(allowed, key=len, reverse=True) + ["crankdyn linkage:"]:
         text = text.replace(a, "")
     return [w for w in _LATIN_WORD.findall(text) if w not in ("max", "min")]
 
@@ -576,3 +577,47 @@ def test_inputs_sheet_wrapped_rows_are_tall_enough(lang_runs):
                     height = ws.row_dimensions[c.row].height
                     assert height and height >= 12 * lines, (key, c.coordinate, c.value)
         assert wrapped > 20, key
+
+
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_change_point_warnings_in_the_report_language(lang, tmp_path, capsys):
+    """A change-point mechanism asked at its singular position (1 + 3 = 2 + 2, the
+    singular crank angle 30°: tests/test_linkage_mechanisms.py): both warnings of the
+    analysis reach the terminal and the inputs sheet in the report's language; the
+    singular row is left empty, the other row is the same number in both languages."""
+    spec = tmp_path / "cp.toml"
+    spec.write_text("""
+[mechanism]
+kind = "crank-rocker"
+name = "cp"
+crank = 1.0
+coupler = 3.0
+rocker = 2.0
+ground = 2.0
+ground_angle_deg = 30.0
+omega_rad_s = 1.0
+[analysis]
+crank_angles_deg = [30.0, 40.0]
+""")
+    out = tmp_path / "o"
+    assert main(["linkage", str(spec), "-o", str(out), "--no-plots", "--lang", lang]) == 0
+    cap = capsys.readouterr()
+    warned = [l for l in cap.err.splitlines() if "30°" in l or "особое" in l
+              or "singular position;" in l]
+    assert len(warned) == 2, cap.err
+    ws = load_workbook(out / "cp.xlsx").worksheets[0]
+    texts = [r[1] for r in ws.iter_rows(values_only=True)
+             if r[0] in ("warning", "предупреждение")]
+    assert len(texts) == 2
+    if lang == "ru":
+        assert texts[0].startswith("механизм с переходным положением: особые положения "
+                                   "при угле кривошипа 30°")
+        assert texts[1].startswith("заданные углы кривошипа включают особое положение")
+        assert not _russian_terminal_problems(cap.out + cap.err, [str(out), "cp"])
+    else:
+        assert texts[0].startswith("change-point mechanism: singular position(s) at crank "
+                                   "angle 30°")
+        assert not CYRILLIC.search(cap.out + cap.err)
+        assert not any(CYRILLIC.search(v) for _, v in _workbook_strings(out / "cp.xlsx"))
+    df = _sheet_frame(_sheet(load_workbook(out / "cp.xlsx"), "velocities"))
+    assert math.isnan(df["omega4_rad_s"].iat[0]) and np.isfinite(df["omega4_rad_s"].iat[1])
