@@ -172,6 +172,18 @@ def pylinkage_timing(spec, n_pl, res_phi, res):
     return label, t, HAS_NUMBA, getattr(pylinkage, "__version__", "?")
 
 
+def cpu_model():
+    """The processor's model name (Linux: /proc/cpuinfo), else ``platform.processor()``."""
+    try:
+        with open("/proc/cpuinfo", encoding="utf-8") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or "unknown CPU"
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--positions", type=int, default=1_000_000)
@@ -185,7 +197,9 @@ def main(argv=None):
     n = args.positions
 
     from linkage import analysis as an
-    print(f"Python {platform.python_version()}, numpy {np.__version__}, "
+    import pandas as pd
+    print(f"{cpu_model()}; Python {platform.python_version()}, numpy {np.__version__}, "
+          f"pandas {pd.__version__}, "
           f"{os.cpu_count()} CPU(s) available, one thread used; CHUNK = {an.CHUNK}; "
           f"{'wall-clock' if args.wall else 'CPU'} time; load average "
           f"{', '.join(f'{x:.1f}' for x in os.getloadavg())}")
@@ -225,7 +239,8 @@ def main(argv=None):
         if pl is not None and mech.startswith("crank-rocker"):
             line += f" {(npos / t) * t_pl:12.0f}"
         print(line)
-    print("\ntargets (issue 9, kinematics + forces, one core, 1,000,000 positions): "
+    print(f"\nload average at the end: {', '.join(f'{x:.1f}' for x in os.getloadavg())}")
+    print("targets (issue 9, kinematics + forces, one core, 1,000,000 positions): "
           "analyze(course_tables=False) ≥ 5 M/s, analyze ≥ 2 M/s, ≥ 100 × pylinkage")
 
 

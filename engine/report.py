@@ -91,7 +91,8 @@ def input_values(result, lang="ru"):
         "pressure_source": src, "pi": summary.pi_MPa, "power_i": summary.power_i_kW,
     }
     if cyc is not None:
-        v.update(cycle_kind=_CYCLE_KINDS[lang][cyc.kind], pa=cyc.pa / 1e6, pr=cyc.pr / 1e6, n1=cyc.n1,
+        v.update(cycle_kind=_CYCLE_KINDS[lang][cyc.kind], pa=cyc.pa / 1e6,
+                 pr=cyc.pr / 1e6, n1=cyc.n1,
                  n2=cyc.n2, pc=cyc.pc / 1e6, pz=cyc.pz / 1e6, lambda_z=cyc.lambda_z,
                  rho=cyc.rho if cyc.kind == "diesel" else None,
                  rounding=(yes if cyc.rounding else no),

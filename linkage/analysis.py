@@ -167,11 +167,21 @@ def solve_columns(spec, phi, mech=None, ext=None, *, course_tables=True):
     """
     spec = load_spec(spec)
     mech = mech or build_mechanism(spec)
-    phi = np.asarray(phi, dtype=float)
-    t = _Tables(spec, mech, ext, course_tables, min(len(phi), CHUNK))
-    kblock, fblock = np.empty((len(t.kcols), len(phi))), np.empty((len(t.fcols), len(phi)))
+    kcols, fcols, kblock, fblock = _blocks(spec, np.asarray(phi, dtype=float), mech, ext,
+                                           course_tables)
+    return dict(zip(kcols, kblock)), dict(zip(fcols, fblock))
+
+
+def _blocks(spec, phi, mech, ext, course_tables):
+    """The group routines at crank angles ``phi`` [rad], chunk by chunk, into two
+    preallocated column blocks; returns the kinematics and force column names (without
+    ``position``) and the blocks (columns × positions)."""
+    n = len(phi)
+    t = _Tables(spec, mech, ext, course_tables, max(1, min(n, CHUNK)))
+    kblock = np.empty((len(t.kcols), n))
+    fblock = np.empty((len(t.fcols), n))
     t.fill(phi, kblock, fblock)
-    return dict(zip(t.kcols, kblock)), dict(zip(t.fcols, fblock))
+    return t.kcols, t.fcols, kblock, fblock
 
 
 def plan_angles(ext, rotation_sign, n):
@@ -270,22 +280,23 @@ class AnalysisResult:
 def _table(spec, phi, mech, ext, positions, course_tables=True):
     """The kinematics and force DataFrames at crank angles ``phi`` [rad]: the group
     routines run chunk by chunk into two preallocated column blocks, which become the
-    frames' storage without a copy."""
+    frames' storage without a copy (one float block per frame, plus the ``position``
+    column, one Int64 array that both frames share copy-on-write)."""
     import pandas as pd
 
     n = len(phi)
-    t = _Tables(spec, mech, ext, course_tables, max(1, min(n, CHUNK)))
-    kblock = np.empty((len(t.kcols), n))
-    fblock = np.empty((len(t.fcols), n))
-    t.fill(phi, kblock, fblock)
+    kcols, fcols, kblock, fblock = _blocks(spec, phi, mech, ext, course_tables)
     if positions is None:  # all missing (pd.array([None] * n) is slow for large n)
         pos = pd.arrays.IntegerArray(np.zeros(n, np.int64), np.ones(n, bool))
     else:
         pos = pd.array(positions, dtype="Int64")
-    kin = pd.DataFrame(kblock.T, columns=t.kcols, copy=False)
-    frc = pd.DataFrame(fblock.T, columns=t.fcols, copy=False)
+    kin = pd.DataFrame(kblock.T, columns=kcols, copy=False)
+    frc = pd.DataFrame(fblock.T, columns=fcols, copy=False)
+    # a Series on the frames' own index is inserted by reference (copy-on-write), an
+    # array would be copied
+    pos = pd.Series(pos, index=kin.index, copy=False)
     kin.insert(0, "position", pos)
-    frc.insert(0, "position", pos.copy())
+    frc.insert(0, "position", pos)
     return kin, frc
 
 
@@ -376,10 +387,7 @@ def analyze(spec, crank_angles_deg=None, *, course_tables=True) -> AnalysisResul
     kin, frc = _table(spec, phi, mech, ext_loads, positions, course_tables)
     ext_df = None
     if ext is not None:
-        ek, ef = _table(spec, np.array([ext.phi_start, ext.phi_end]), mech, ext_loads, None,
-                        course_tables)
-        ek.insert(0, "label", ["working start", "working end"])
-        ext_df = _join_extremes(ek, ef)
+        ext_df = _extremes_table(spec, mech, ext, ext_loads, course_tables)
     with np.errstate(divide="ignore", invalid="ignore"):
         summary = _summary(spec, mech, ext)
     msgs = []
@@ -416,12 +424,17 @@ def _angle_apart(phi, a):
     return np.abs((phi - a + math.pi) % (2.0 * math.pi) - math.pi)
 
 
-def _join_extremes(ek, ef):
-    """One table for the two extreme positions: label, kinematics, then forces."""
+def _extremes_table(spec, mech, ext, ext_loads, course_tables):
+    """One table for the two extreme positions: label, kinematics, then forces (without
+    ``phi_deg`` a second time)."""
     import pandas as pd
 
-    ef = ef.drop(columns=["position", "phi_deg"])
-    return pd.concat([ek.drop(columns="position"), ef], axis=1)
+    kcols, fcols, kblock, fblock = _blocks(spec, np.array([ext.phi_start, ext.phi_end]), mech,
+                                           ext_loads, course_tables)
+    # the force columns start with phi_deg, which the kinematics columns have already
+    df = pd.DataFrame(np.vstack([kblock, fblock[1:]]).T, columns=kcols + fcols[1:], copy=False)
+    df.insert(0, "label", ["working start", "working end"])
+    return df
 
 
 def full_turn(spec, step_deg=1.0):

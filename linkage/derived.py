@@ -88,6 +88,6 @@ def fill_derived(spec: MechanismSpec, K, F, scratch=None):
         np.add(fy, 0.0, out=F[f"Fu{i}_y_N"])
         np.multiply(K[f"S{i}_a_m_s2"], ls.mass, out=F[f"Fu{i}_N"])
         if lname != "slider":                      # a slider does not turn
-            F[f"Mu{i}_Nm"][...] = mu + 0.0
+            np.add(mu, 0.0, out=F[f"Mu{i}_Nm"])
     for r in ("R12", "R23", "R43", "R14"):
         _norm(F[f"{r}_x_N"], F[f"{r}_y_N"], F[f"{r}_N"], t)

@@ -41,19 +41,34 @@ __all__ = [
 ]
 
 
-def _nil(c):
-    """True for a component that is the float constant 0.0 (not an array of zeros)."""
-    return type(c) is float and c == 0.0
-
+# A component that is the float constant 0.0 (``type(c) is float and c == 0.0``, not an
+# array of zeros) costs no array operation.  These helpers run a few hundred times per
+# chunk of crank positions, so they test it inline.
 
 def _is_zero(v):
     """True for a vector that is the exact constant zero (``Vec(0.0, 0.0)`` of floats)."""
-    return _nil(v.x) and _nil(v.y)
+    x, y = v.x, v.y
+    return type(x) is float and x == 0.0 and type(y) is float and y == 0.0
 
 
 def _plus(a, b):
     """a + b, skipping a float-constant zero."""
-    return a if _nil(b) else b if _nil(a) else a + b
+    if type(b) is float and b == 0.0:
+        return a
+    if type(a) is float and a == 0.0:
+        return b
+    return a + b
+
+
+def _minus(a, b):
+    """a − b, skipping a float-constant zero ``b``."""
+    return a if type(b) is float and b == 0.0 else a - b
+
+
+def _is_complex(k):
+    """True for a complex number or a complex array."""
+    return isinstance(k, (complex, np.complexfloating)) or \
+        (isinstance(k, np.ndarray) and k.dtype.kind == "c")
 
 
 class Vec:
@@ -148,16 +163,18 @@ class Vec:
 
     # -- arithmetic (a component that is the float constant 0.0 costs no array operation)
     def __add__(self, o):
-        o = o if type(o) is Vec else Vec.of(o)
+        if type(o) is not Vec:
+            o = Vec.of(o)
         return Vec(_plus(self.x, o.x), _plus(self.y, o.y))
 
     __radd__ = __add__
 
     def __sub__(self, o):
-        o = o if type(o) is Vec else Vec.of(o)
+        if type(o) is not Vec:
+            o = Vec.of(o)
         if _is_zero(self):
             return -o
-        return Vec(self.x if _nil(o.x) else self.x - o.x, self.y if _nil(o.y) else self.y - o.y)
+        return Vec(_minus(self.x, o.x), _minus(self.y, o.y))
 
     def __rsub__(self, o):
         return Vec.of(o) - self
@@ -167,13 +184,11 @@ class Vec:
 
     def __mul__(self, k):
         if type(k) is not Vec:
-            if isinstance(k, complex) or (isinstance(k, np.ndarray) and k.dtype.kind == "c") \
-                    or isinstance(k, np.complexfloating):
-                k = Vec.of(k)
-            else:                                  # a real factor: scale
+            if type(k) is float or not _is_complex(k):     # a real factor: scale
                 if type(k) is float and k == 0.0 or _is_zero(self):
                     return _ZERO
                 return Vec(self.x * k, self.y * k)
+            k = Vec.of(k)
         # complex product (x1 + iy1)(x2 + iy2)
         return Vec(self.x * k.x - self.y * k.y, self.x * k.y + self.y * k.x)
 
@@ -251,14 +266,20 @@ class LinkMotion:
     omega: object
     eps: object
     _points: dict = field(default_factory=dict, init=False, repr=False, compare=False)
+    _theta: object = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self):
         self.e = Vec.of(self.e)
 
     @property
     def theta(self):
-        """Angle of the local x axis, ccw from +x, in (−π, π]. [rad]"""
-        return self.e.angle
+        """Angle of the local x axis, ccw from +x, in (−π, π]. [rad]
+
+        Kept once computed: the tables and the resistance rule (the rocker's angle) ask
+        for the same angle."""
+        if self._theta is None:
+            self._theta = self.e.angle
+        return self._theta
 
     def point(self, local) -> PointMotion:
         """Motion of the point with local coordinates ``local`` (complex or real, m).

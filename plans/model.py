@@ -679,6 +679,11 @@ def _lever(spec, K, F, i, vplan: Plan, scale=None):
         couples += _ext_moments(spec, lname, F, i)
         if lname == "slider":
             continue
+        if len(couples) > 1:
+            # the couples of one link are one couple (their sum), as the textbook draws
+            # them: separate pairs would lie on one line at the same joints
+            names, lrus, lens, Ms = zip(*couples)
+            couples = [("+".join(names), "+".join(lrus), "+".join(lens), sum(Ms))]
         l_ = lengths[lname]
         first = link.origin
         second = link.point(l_)

@@ -3,7 +3,6 @@ the bearing CSVs read back equal the library's tables, the plots exist, bad keys
 with one line per problem."""
 import copy
 import tomllib
-from pathlib import Path
 
 import numpy as np
 import pandas as pd

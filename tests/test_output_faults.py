@@ -21,12 +21,12 @@ from crankbase.output import (COMMIT_NAME, MANIFEST_NAME, STAGE_PREFIX, recover_
 from crankdyn.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]
-#: Two different synthesis reports: A writes old.toml as well, B does not (so B's report
-#: must also remove old.toml, which belonged to A's unit).
+#: Three synthesis reports of one unit (the design "old"): A writes old.toml as well, B
+#: does not (so B's report must also remove old.toml, which belonged to A's report).
 RUN_A = ["synth", "--l2", "0.7", "--l3", "0.6", "--ground", "0.5", "--name", "old",
          "--no-plots"]
-RUN_B = ["synth", "--l2", "0.6", "--l3", "0.7", "--no-plots"]
-RUN_C = ["synth", "--l1", "0.1", "--no-plots"]
+RUN_B = ["synth", "--l2", "0.6", "--l3", "0.7", "--name", "old", "--no-plots"]
+RUN_C = ["synth", "--l1", "0.1", "--name", "old", "--no-plots"]
 
 
 def _cli(args, out, **kw):
@@ -296,7 +296,7 @@ def test_mount_point_as_output_folder(tmp_path):
     rc, err, files = _in_namespace("mount -t tmpfs -o size=4m none $M",
                                    [*RUN_B, "-o", "$M"], tmp_path)
     assert rc == 0, err
-    assert "$M/mechanism.csv" in files and f"$M/{MANIFEST_NAME}" in files
+    assert "$M/old_mechanism.csv" in files and f"$M/{MANIFEST_NAME}" in files
     assert not [f for f in files if STAGE_PREFIX in f]
 
 
@@ -327,7 +327,7 @@ def test_writable_folder_under_read_only_parent(tmp_path):
         "mount -t tmpfs none $M; mkdir $M/w; mount -t tmpfs none $M/w; "
         "mount -o remount,ro,bind $M", [*RUN_B, "-o", "$M/w"], tmp_path)
     assert rc == 0, err
-    assert "$M/w/mechanism.csv" in files
+    assert "$M/w/old_mechanism.csv" in files
 
 
 def test_verify_report_detects_a_changed_or_missing_file(tmp_path):

@@ -184,6 +184,30 @@ def test_balancing_force_catches_a_wrong_sign(ratchet):
     assert n >= 10
 
 
+def test_couples_of_one_link_are_one_pair_on_the_lever(ratchet):
+    """The rocker of the ratchet drive carries its inertia moment Mи4 and the resistance
+    Mпс: on the lever they are one couple (their sum) at b and c, not two pairs on one
+    line; its moment is that of the two moments."""
+    res, pps = ratchet
+    combined = 0
+    for pp in pps:
+        row = res.forces[res.forces["position"] == pp.position].iloc[0]
+        names = [f.name for f in pp.lever.forces]
+        if row["M_res_Nm"] == 0:                        # idle stroke: Mи4 alone
+            assert "Mu4_b" in names and not any("Mres" in n for n in names)
+            continue
+        combined += 1
+        assert not {"Mres_b", "Mres_c", "Mu4_b", "Mu4_c"} & set(names)
+        pair = [f for f in pp.lever.forces if f.name.startswith("Mu4+Mres_")]
+        assert [f.name for f in pair] == ["Mu4+Mres_b", "Mu4+Mres_c"]
+        assert pair[0].label_ru == "F(Mи₄+Mпс)"
+        M = row["Mu4_Nm"] + row["M_res_Nm"]                 # the one couple [N·m]
+        l4 = res.spec.rocker
+        assert abs(pair[0].force) == pytest.approx(abs(M) / l4, rel=TOL)
+        assert pair[0].force == pytest.approx(-pair[1].force, rel=TOL)
+    assert combined >= 3                                # the working stroke's positions
+
+
 def test_lever_arrows_to_scale(ratchet, press):
     """Every force on the lever is drawn from its point at the lever's one round force
     scale: the arrow is F/μF (length and direction, 1e-9), the largest within

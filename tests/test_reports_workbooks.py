@@ -7,7 +7,6 @@ import re
 import shutil
 import subprocess
 import zipfile
-from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -264,7 +263,6 @@ def test_charts_are_not_split_by_page_breaks():
 
     study = engine.load(example_path("petrol_vaz2106.toml"))
     result = engine.analyze(study.spec, study.settings)
-    spec, table = result.spec, result.table
     wb = build_workbook(result, "ru")
     ws = wb.worksheets[4]
     breaks = sorted(b.id for b in ws.row_breaks.brk)
