@@ -516,10 +516,9 @@ def write_workbook(result, path, lang: str = "ru"):
         if lines > 1:
             ws.row_dimensions[row].height = _LINE_PT * lines + 2
 
-    def merged(row, lines_text, font=None):
+    def merged(row, lines_text):
+        """One text across A:D, wrapped."""
         ws.cell(row, 1, lines_text).alignment = wrap
-        if font is not None:
-            ws.cell(row, 1).font = font
         ws.merge_cells(start_row=row, start_column=1, end_row=row, end_column=4)
         fit(row, [sum(widths.values())])
 
