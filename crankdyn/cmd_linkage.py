@@ -7,6 +7,11 @@ Mур, the transmission angle); with ``--plans`` the graphical method's files, n
 same way (``<name>_plans.csv``, ``<name>_sheet.pdf`` …, see :mod:`plans.report`).  All
 outputs are produced in a staging folder and moved into place only when every one of them
 is complete; the reports of other mechanisms in the folder stay.
+
+``--lang ru|en`` (default ru) chooses the language of the workbook (sheet titles, labels,
+units, symbols: :mod:`linkage.report`), the plots, the plan drawings and the terminal
+summary; the CSV files, the workbook's numbers and its CSV-name header row are the same
+in both.
 """
 from __future__ import annotations
 
@@ -32,8 +37,11 @@ def add_parser(sub):
                    help="crank-angle step of the full-turn plots (default 1°)")
     p.add_argument("--no-plots", action="store_true", help="write the tables only")
     p.add_argument("--lang", choices=("ru", "en"), default="ru",
-                   help="language of plots and drawings: ru (the Russian textbook's symbols "
-                        "and labels, default) or en (English symbols)")
+                   help="language of every output: the workbook (sheet titles, labels, "
+                        "units, symbols), the plots, the plan drawings and this terminal "
+                        "summary; ru (the Russian textbook's symbols Mур, Mпс, Fпс and "
+                        "units Н·м, м/с, default) or en (English symbols Mb, Mr, Fr, no "
+                        "Cyrillic). The CSV files are the same in both")
     g = p.add_argument_group(
         "graphical method (velocity and acceleration plans, force polygons, Zhukovsky lever)")
     g.add_argument("--plans", metavar="LIST",
@@ -101,7 +109,8 @@ def run(args) -> int:
     from crankbase.output import safe_name, save_figure, staged_output
     from linkage.analysis import SingularPositionWarning
     from crankbase.errors import SpecError
-    from linkage.report import summary_lines, write_csvs, write_workbook
+    from linkage.report import (kind_text, summary_lines, text, warning_text, write_csvs,
+                                write_workbook)
     from pandas import isna as pd_isna
 
     if args.example:
@@ -159,38 +168,40 @@ def run(args) -> int:
         write_csvs(result, stage)
         for csv in sorted(set(stage.iterdir()) - before):   # named after the mechanism
             csv.rename(stage / f"{name}_{csv.name}")
-        write_workbook(result, stage / f"{name}.xlsx")
+        write_workbook(result, stage / f"{name}.xlsx", lang=args.lang)
         for stem, fig in figures.items():
             save_figure(fig, stage / f"{name}_{stem}", formats=("png",), dpi=120)
     # plots of this mechanism from an earlier run that this run did not draw are stale
     # (the report swap removes those it wrote itself; any other copy goes too)
+    t = text(args.lang)
     for path in stale:
         if path.exists():
             path.unlink()
         if not path.exists():
-            print(f"crankdyn linkage: removed {path} (an earlier run's plot, not drawn now)",
-                  file=sys.stderr)
+            print(t["removed"].format(path=path), file=sys.stderr)
     for w in caught:
-        print(f"crankdyn linkage: warning: {w.message}", file=sys.stderr)
-    statics = "; statics, ω = 0" if spec.omega == 0 else ""
-    print(f"{spec.name} ({spec.kind}{statics}): {len(result.kinematics)} positions -> "
-          f"{args.output}")
-    for label, value, unit in summary_lines(result):
+        print(t["warning_line"].format(w=warning_text(w.message, args.lang)),
+              file=sys.stderr)
+    statics = t["statics"] if spec.omega == 0 else ""
+    print(t["run"].format(name=spec.name, kind=kind_text(spec.kind, args.lang),
+                          statics=statics, n=len(result.kinematics), out=args.output))
+    for label, value, unit in summary_lines(result, args.lang):
         v = f"{value:.4f}" if isinstance(value, float) else str(value)
         print(f"  {label}: {v} {unit}".rstrip())
     m = result.forces["M_drive_Nm"].abs()
     if m.notna().any():
         i = int(m.idxmax())
         pos = result.forces["position"].iat[i]
-        where = "" if pd_isna(pos) else f"position {pos}, "
-        print(f"  max |Mур| at the positions: {result.forces['M_drive_Nm'].iat[i]:.2f} N·m "
-              f"({where}φ = {result.forces['phi_deg'].iat[i]:.2f}°)")
+        where = "" if pd_isna(pos) else t["at_pos"].format(pos=pos)
+        print("  " + t["max_M"].format(M=result.forces["M_drive_Nm"].iat[i], where=where,
+                                       phi=result.forces["phi_deg"].iat[i]))
     if plan_list is not None:
-        print(f"  plans of {len(plan_list)} position(s) on {info['sheets']} {args.sheet} "
-              "sheet(s); Zhukovsky lever against the kinetostatics:")
+        print("  " + t["plans"].format(n=len(plan_list), sheets=info["sheets"],
+                                       size=args.sheet))
         for pp in plan_list:
             L = pp.lever
-            print(f"    position {pp.tag}: Mур lever {L.M_lever_Nm:.4f} N·m, kinetostatics "
-                  f"{L.M_kinetostatic_Nm:.4f} N·m, difference {L.difference_percent:.1e} %; "
-                  f"Fур = {L.balancing_force_N:.3f} N at A ⟂ OA")
+            print("    " + t["lever"].format(tag=pp.tag, lever=L.M_lever_Nm,
+                                             kin=L.M_kinetostatic_Nm,
+                                             diff=L.difference_percent,
+                                             Fb=L.balancing_force_N))
     return 0

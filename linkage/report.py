@@ -1,12 +1,37 @@
-"""Reports of a linkage analysis: CSV tables and the Excel workbook.
+"""Reports of a linkage analysis: CSV tables and the Excel workbook, in Russian or English.
 
 Reports only consume an :class:`~linkage.analysis.AnalysisResult`; they compute no
-physics.  The workbook has the sheets ``inputs`` (spec values and the cycle geometry),
-``positions``, ``velocities``, ``accelerations``, ``loads`` (weights, inertia forces and
-moments, resistance), ``forces`` (reactions, driving moment) -- one row per position, the
-CSV columns regrouped -- and ``extremes`` (the two extreme positions).  Every sheet has
-three header rows: the textbook symbol, the unit, and the CSV column name; numbers are
-stored at full precision (number formats only change how they are shown).
+physics.  The workbook has the sheets inputs (spec values and the cycle geometry),
+positions, velocities, accelerations, loads (weights, inertia forces and moments,
+resistance), forces (reactions, driving moment) -- one row per position, the CSV columns
+regrouped -- and extremes (the two extreme positions); the sheet titles, labels, units
+and symbols are in the report's language (``lang="ru"``: «Исходные данные»,
+«Положения» …).  Every table sheet has three header rows: the textbook symbol, the unit,
+and the CSV column name -- the third row is the same in both languages, so
+``crankdyn check`` reads a Russian and an English workbook alike.  Numbers are stored at
+full precision (number formats only change how they are shown).
+
+Symbols (:func:`column_label`, the one place they are made)
+-----------------------------------------------------------
+Both languages share the Latin/Greek symbols of the kinematics (φ, θ3, ω3, ε3, VB, VBA,
+aB, aBAⁿ, aBAᵗ, xE …) and of the reactions (R12, R23n, R23t, R14n, N14, M14, Gi).
+They differ only where the Russian textbook (Artobolevsky; seed 000) uses Cyrillic
+indices; the English set is the one the project's other English outputs use (the plots
+of :mod:`linkage.plots` and :mod:`dynamics.plots`: M_b; the plan labels of
+:mod:`plans.model`: Fb, Mr, Fr, Fi₃, Mi₃):
+
+=====================  ============  ==========  =================================
+CSV column             ru            en          quantity
+=====================  ============  ==========  =================================
+``position``           №             No.         position number
+``M_drive_Nm``         Mур           Mb          balancing (driving) moment on the crank
+``M_res_Nm``           Mпс           Mr          useful-resistance moment on the rocker
+``F_res_N``            Fпс           Fr          useful-resistance force on the slider
+``Fu3_N``, ``Fu3_x_N`` Fи3, Fи3x     Fi3, Fi3x   d'Alembert inertia force of link 3
+``Mu3_Nm``             Mи3           Mi3         inertia moment of link 3
+=====================  ============  ==========  =================================
+
+Units: SI in both, written м, м/с, м/с², рад/с, рад/с², Н, Н·м, кг, кг·м² in Russian.
 """
 from __future__ import annotations
 
@@ -19,27 +44,57 @@ import numpy as np
 
 from crankbase.tolerances import SAME_ANGLE_DEG
 
-__all__ = ["column_label", "write_csvs", "write_workbook", "sheet_columns",
-           "force_sheet_columns", "summary_lines"]
+__all__ = ["column_label", "unit_text", "kind_text", "warning_text", "write_csvs",
+           "write_workbook",
+           "sheet_columns", "force_sheet_columns", "summary_lines", "text", "LANGS"]
+
+#: Report languages.
+LANGS = ("ru", "en")
 
 _UNITS = {"m": "m", "m_s": "m/s", "m_s2": "m/s²", "deg": "°", "rad_s": "rad/s",
           "rad_s2": "rad/s²", "N": "N", "Nm": "N·m"}
+#: SI unit (English spelling) → its Russian spelling.
+_UNIT_RU = {"m": "м", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с", "rad/s²": "рад/с²",
+            "N": "Н", "N·m": "Н·м", "kg": "кг", "kg·m²": "кг·м²", "°": "°", "": "",
+            "%": "%", "mm": "мм"}
 _SIMPLE = {
-    "position": ("№", ""), "phi_deg": ("φ", "°"), "theta3_deg": ("θ3", "°"),
+    "position": ("No.", ""), "phi_deg": ("φ", "°"), "theta3_deg": ("θ3", "°"),
     "theta4_deg": ("θ4", "°"), "omega3_rad_s": ("ω3", "rad/s"), "omega4_rad_s": ("ω4", "rad/s"),
     "eps3_rad_s2": ("ε3", "rad/s²"), "eps4_rad_s2": ("ε4", "rad/s²"), "s4_m": ("s4", "m"),
     "v4_m_s": ("v4", "m/s"), "a4_m_s2": ("a4", "m/s²"), "mu_deg": ("μ", "°"),
-    "M_drive_Nm": ("Mур", "N·m"), "M_res_Nm": ("Mпс", "N·m"), "F_res_N": ("Fпс", "N"),
+    "M_drive_Nm": ("Mb", "N·m"), "M_res_Nm": ("Mr", "N·m"), "F_res_N": ("Fr", "N"),
     "M14_Nm": ("M14", "N·m"), "N14_N": ("N14", "N"), "label": ("", ""),
     "R23_n_N": ("R23n", "N"), "R23_t_N": ("R23t", "N"), "R14_n_N": ("R14n", "N"),
     "R14_t_N": ("R14t", "N"),
 }
-_POINT_Q = {"x": ("x_{P}", ""), "y": ("y_{P}", ""), "vx": ("V_{P}x", ""), "vy": ("V_{P}y", ""),
-            "ax": ("a_{P}x", ""), "ay": ("a_{P}y", "")}
+#: The Russian textbook's symbols where they differ from the English ones (module doc).
+_SIMPLE_RU = {"position": "№", "M_drive_Nm": "Mур", "M_res_Nm": "Mпс", "F_res_N": "Fпс"}
+#: Index letter of the inertia force and moment (Fи3, Mи3 / Fi3, Mi3).
+_INERTIA = {"ru": "и", "en": "i"}
 
 
-def column_label(col: str):
-    """Textbook symbol and unit of a table column, e.g. ``"B_vx_m_s"`` → ("VBx", "m/s")."""
+def unit_text(unit: str, lang: str = "en") -> str:
+    """An SI unit as written in the report's language (``"N·m"`` → ``"Н·м"`` in ru)."""
+    _check_lang(lang)
+    return _UNIT_RU.get(unit, unit) if lang == "ru" else unit
+
+
+def column_label(col: str, lang: str = "en"):
+    """Textbook symbol and unit of a table column in the report's language, e.g.
+    ``"B_vx_m_s"`` → ("VBx", "m/s") in en, ("VBx", "м/с") in ru; ``"M_drive_Nm"`` →
+    ("Mb", "N·m") in en, ("Mур", "Н·м") in ru (the symbol table: module docstring).
+    An unknown column is its own symbol, without a unit."""
+    _check_lang(lang)
+    sym, unit = _column_label_en(col)
+    if lang == "ru":
+        sym = _SIMPLE_RU.get(col, sym)
+        m = re.fullmatch(r"(F|M)i(\d.*)", sym)
+        if m and re.fullmatch(r"(Fu\d(_[xy])?_N|Mu\d_Nm)", col):
+            sym = f"{m.group(1)}{_INERTIA['ru']}{m.group(2)}"
+    return sym, unit_text(unit, lang)
+
+
+def _column_label_en(col):
     if col in _SIMPLE:
         return _SIMPLE[col]
     m = re.fullmatch(r"R(\d\d)_([xy])_N", col)
@@ -50,10 +105,10 @@ def column_label(col: str):
         return m.group(1), "N"
     m = re.fullmatch(r"Fu(\d)(_[xy])?_N", col)
     if m:
-        return f"Fu{m.group(1)}{(m.group(2) or '')[1:]}", "N"
+        return f"Fi{m.group(1)}{(m.group(2) or '')[1:]}", "N"
     m = re.fullmatch(r"Mu(\d)_Nm", col)
     if m:
-        return f"Mu{m.group(1)}", "N·m"
+        return f"Mi{m.group(1)}", "N·m"
     m = re.fullmatch(r"v_(\w\w)_m_s", col)
     if m:
         return f"V{m.group(1)}", "m/s"
@@ -72,6 +127,11 @@ def column_label(col: str):
                "ax": f"a{p}x", "ay": f"a{p}y"}[q]
         return sym, _UNITS[unit]
     return col, ""
+
+
+def _check_lang(lang):
+    if lang not in LANGS:
+        raise ValueError(f"lang: got {lang!r}; one of 'ru', 'en'")
 
 
 def sheet_columns(kinematics_cols):
@@ -115,30 +175,204 @@ def write_csvs(result, folder):
     write_csv(result.forces, folder / "forces.csv")
 
 
-def summary_lines(result):
-    """The cycle geometry as (label, value, unit) rows for the inputs sheet and terminal."""
+#: Every text of the workbook and the terminal summary, by language (one place).
+_TEXT = {
+    "en": {
+        "sheets": {"inputs": "inputs", "positions": "positions", "velocities": "velocities",
+                   "accelerations": "accelerations", "loads": "loads", "forces": "forces",
+                   "extremes": "extremes"},
+        "title": "Kinematic and force analysis: {name} ({kind})",
+        "spec_head": ("spec key", "value", "unit", "meaning"),
+        "cycle_head": ("cycle geometry", "value", "unit"),
+        "warning": "warning", "conventions": "conventions",
+        "ext_head": ("quantity", "unit", "column"), "extreme": "extreme {i}",
+        "ext_labels": {"working start": "working start", "working end": "working end"},
+        "kind": {"crank-rocker": "crank-rocker", "crank-slider": "crank-slider"},
+        "grashof_label": "Grashof type",
+        "rotatable_label": "Grashof type",
+        "grashof": {"crank-rocker": "crank-rocker", "double-crank": "double-crank",
+                    "double-rocker": "double-rocker", "change-point": "change-point",
+                    "non-Grashof": "non-Grashof", "rotatable": "rotatable",
+                    "non-rotatable": "non-rotatable"},
+        "cycle": {
+            "phi_ws": "crank angle, working-stroke start (position 1)",
+            "phi_we": "crank angle, working-stroke end",
+            "phi_w": "crank rotation in the working stroke",
+            "phi_i": "crank rotation in the idle stroke",
+            "K": "time-ratio coefficient K = φwork/φidle",
+            "th_ws": "rocker angle at working-stroke start",
+            "th_we": "rocker angle at working-stroke end",
+            "swing": "rocker swing",
+            "s_ws": "slider position at working-stroke start",
+            "s_we": "slider position at working-stroke end",
+            "stroke": "slider stroke",
+            "mu": "minimum transmission angle μmin",
+            "mu_phi": "crank angle of μmin",
+            "singular": "singular crank angles (change point)",
+        },
+        "conv": (
+            "SI units; angles in degrees, counter-clockwise from +x; O at the origin.",
+            "Rij = force of link i on link j (1 ground, 2 crank, 3 coupler/rod, "
+            "4 rocker/slider).",
+            "Mb (M_drive) = balancing (driving) moment applied to the crank, "
+            "+ counter-clockwise.",
+            "Mr, Fr = useful resistance on the rocker (moment) or the slider (force); "
+            "Fi, Mi = d'Alembert inertia force and moment.",
+            "R23n, R23t: along A→B and 90° ccw from it; R14n, R14t: along C→B and 90° ccw "
+            "from it.",
+            "Position 1 = extreme position where the working stroke starts; then every "
+            "360°/N in the direction of rotation.",
+            "Row 3 of every table sheet holds the CSV column names (the same in the "
+            "Russian report).",
+        ),
+        # terminal
+        "run": "{name} ({kind}{statics}): {n} positions -> {out}",
+        "statics": "; statics, ω = 0",
+        "max_M": "max |Mb| at the positions: {M:.2f} N·m ({where}φ = {phi:.2f}°)",
+        "at_pos": "position {pos}, ",
+        "plans": "plans of {n} position(s) on {sheets} {size} sheet(s); Zhukovsky lever "
+                 "against the kinetostatics:",
+        "lever": "position {tag}: Mb lever {lever:.4f} N·m, kinetostatics {kin:.4f} N·m, "
+                 "difference {diff:.1e} %; Fb = {Fb:.3f} N at A ⟂ OA",
+        "removed": "crankdyn linkage: removed {path} (an earlier run's plot, not drawn now)",
+        "warning_line": "crankdyn linkage: warning: {w}",
+    },
+    "ru": {
+        "sheets": {"inputs": "Исходные данные", "positions": "Положения",
+                   "velocities": "Скорости", "accelerations": "Ускорения",
+                   "loads": "Нагрузки", "forces": "Реакции и Mур",
+                   "extremes": "Крайние положения"},
+        "title": "Кинематический и силовой анализ: {name} ({kind})",
+        "spec_head": ("Параметр спецификации", "Значение", "Ед. изм.", "Пояснение"),
+        "cycle_head": ("Геометрия цикла", "Значение", "Ед. изм."),
+        "warning": "предупреждение", "conventions": "Обозначения и правила знаков",
+        "ext_head": ("Величина", "Ед. изм.", "Столбец CSV"),
+        "extreme": "крайнее положение {i}",
+        "ext_labels": {"working start": "начало рабочего хода",
+                       "working end": "конец рабочего хода"},
+        "kind": {"crank-rocker": "кривошипно-коромысловый механизм",
+                 "crank-slider": "кривошипно-ползунный механизм"},
+        "grashof_label": "Тип механизма по Грасгофу",
+        "rotatable_label": "Проворачиваемость кривошипа",
+        "grashof": {"crank-rocker": "кривошипно-коромысловый",
+                    "double-crank": "двухкривошипный",
+                    "double-rocker": "двухкоромысловый",
+                    "change-point": "переходный (s + l = p + q)",
+                    "non-Grashof": "не удовлетворяет условию Грасгофа (трёхкоромысловый)",
+                    "rotatable": "кривошип проворачивается полностью",
+                    "non-rotatable": "кривошип не проворачивается полностью"},
+        "cycle": {
+            "phi_ws": "угол кривошипа в начале рабочего хода (положение 1)",
+            "phi_we": "угол кривошипа в конце рабочего хода",
+            "phi_w": "угол поворота кривошипа за рабочий ход φр.х",
+            "phi_i": "угол поворота кривошипа за холостой ход φх.х",
+            "K": "коэффициент изменения средней скорости выходного звена K = φр.х/φх.х",
+            "th_ws": "угол коромысла в начале рабочего хода",
+            "th_we": "угол коромысла в конце рабочего хода",
+            "swing": "угол размаха коромысла",
+            "s_ws": "положение ползуна в начале рабочего хода",
+            "s_we": "положение ползуна в конце рабочего хода",
+            "stroke": "ход ползуна",
+            "mu": "минимальный угол передачи μmin",
+            "mu_phi": "угол кривошипа при μmin",
+            "singular": "особые углы кривошипа (переходное положение)",
+        },
+        "conv": (
+            "Единицы СИ; углы в градусах, против часовой стрелки от оси +x; "
+            "точка O в начале координат.",
+            "Rij = сила действия звена i на звено j (1 стойка, 2 кривошип, "
+            "3 шатун, 4 коромысло/ползун).",
+            "Mур (M_drive) = уравновешивающий (движущий) момент на кривошипе, "
+            "+ против часовой стрелки.",
+            "Mпс, Fпс = момент (на коромысле) или сила (на ползуне) полезного "
+            "сопротивления; Fи, Mи = сила и момент сил инерции (Даламбер).",
+            "R23n, R23t: вдоль A→B и под 90° к ней против часовой стрелки; R14n, R14t: "
+            "вдоль C→B и под 90° против часовой стрелки.",
+            "Положение 1 = крайнее положение, с которого начинается рабочий ход; далее "
+            "через 360°/N по направлению вращения.",
+            "В строке 3 каждого листа с таблицей: имена столбцов CSV (те же, что в "
+            "английском отчёте).",
+        ),
+        "run": "{name} ({kind}{statics}), положений: {n} -> {out}",
+        "statics": "; статика, ω = 0",
+        "max_M": "max |Mур| в положениях: {M:.2f} Н·м ({where}φ = {phi:.2f}°)",
+        "at_pos": "положение {pos}, ",
+        "plans": "планы скоростей, ускорений и сил для положений: {n}; листов {size}: "
+                 "{sheets}; рычаг Жуковского и кинетостатика:",
+        "lever": "положение {tag}: Mур по рычагу {lever:.4f} Н·м, по кинетостатике "
+                 "{kin:.4f} Н·м, расхождение {diff:.1e} %; Fур = {Fb:.3f} Н в точке A ⟂ OA",
+        "removed": "crankdyn linkage: удалён {path} (график прежнего запуска, теперь не "
+                   "строится)",
+        "warning_line": "crankdyn linkage: предупреждение: {w}",
+    },
+}
+
+
+def text(lang: str) -> dict:
+    """The report's texts in ``lang`` ("ru" or "en"): sheet titles, labels, the terminal
+    lines of ``crankdyn linkage`` (one table for the workbook and the terminal)."""
+    _check_lang(lang)
+    return _TEXT[lang]
+
+
+def summary_lines(result, lang: str = "ru"):
+    """The cycle geometry as (label, value, unit) rows for the inputs sheet and the
+    terminal, in the report's language (the Grashof type in words of that language)."""
+    t = text(lang)
+    c, u = t["cycle"], (lambda unit: unit_text(unit, lang))
     s = result.summary
-    rows = [("Grashof type", str(s.grashof), "")]
+    label = t["grashof_label" if s.kind == "crank-rocker" else "rotatable_label"]
+    rows = [(label, t["grashof"].get(str(s.grashof), str(s.grashof)), "")]
     if s.has_extremes:
-        rows += [("crank angle, working-stroke start (position 1)", s.phi_working_start_deg, "°"),
-                 ("crank angle, working-stroke end", s.phi_working_end_deg, "°"),
-                 ("crank rotation in the working stroke", s.working_crank_angle_deg, "°"),
-                 ("crank rotation in the idle stroke", s.idle_crank_angle_deg, "°"),
-                 ("time-ratio coefficient K = φwork/φidle", s.time_ratio, "")]
+        rows += [(c["phi_ws"], s.phi_working_start_deg, "°"),
+                 (c["phi_we"], s.phi_working_end_deg, "°"),
+                 (c["phi_w"], s.working_crank_angle_deg, "°"),
+                 (c["phi_i"], s.idle_crank_angle_deg, "°"),
+                 (c["K"], s.time_ratio, "")]
         if s.swing_deg is not None:
-            rows += [("rocker angle at working-stroke start", s.theta4_working_start_deg, "°"),
-                     ("rocker angle at working-stroke end", s.theta4_working_end_deg, "°"),
-                     ("rocker swing", s.swing_deg, "°")]
+            rows += [(c["th_ws"], s.theta4_working_start_deg, "°"),
+                     (c["th_we"], s.theta4_working_end_deg, "°"),
+                     (c["swing"], s.swing_deg, "°")]
         else:
-            rows += [("slider position at working-stroke start", s.s4_working_start_m, "m"),
-                     ("slider position at working-stroke end", s.s4_working_end_m, "m"),
-                     ("slider stroke", s.stroke_m, "m")]
-    rows += [("minimum transmission angle μmin", s.mu_min_deg, "°"),
-             ("crank angle of μmin", s.mu_min_phi_deg, "°")]
+            rows += [(c["s_ws"], s.s4_working_start_m, u("m")),
+                     (c["s_we"], s.s4_working_end_m, u("m")),
+                     (c["stroke"], s.stroke_m, u("m"))]
+    rows += [(c["mu"], s.mu_min_deg, "°"),
+             (c["mu_phi"], s.mu_min_phi_deg, "°")]
     if s.singular_phi_deg:
-        rows.append(("singular crank angles (change point)",
-                     ", ".join(f"{a:.6g}" for a in s.singular_phi_deg), "°"))
+        rows.append((c["singular"], ", ".join(f"{a:.6g}" for a in s.singular_phi_deg), "°"))
     return rows
+
+
+#: The analysis' warnings (linkage.analysis, in English) in Russian: pattern → text.
+_WARNINGS_RU = (
+    (re.compile(r"change-point mechanism: singular position\(s\) at crank angle (.+?) "
+                r"\(links collinear; the output's motion is indeterminate there\)"),
+     "механизм с переходным положением: особые положения при угле кривошипа {0} "
+     "(звенья на одной прямой, движение выходного звена не определено)"),
+    (re.compile(r"requested crank angles include a singular position; its velocities, "
+                r"accelerations and forces are not finite"),
+     "заданные углы кривошипа включают особое положение: скорости, ускорения и силы в "
+     "нём не определены (ячейки пусты)"),
+)
+
+
+def warning_text(message, lang: str = "ru") -> str:
+    """An analysis warning (:attr:`AnalysisResult.warnings`) in the report's language;
+    a message without a translation is returned as it is."""
+    message = str(message)
+    if text(lang) is _TEXT["ru"]:
+        for pattern, ru in _WARNINGS_RU:
+            m = pattern.fullmatch(message)
+            if m:
+                return ru.format(*m.groups())
+    return message
+
+
+def kind_text(kind: str, lang: str = "ru") -> str:
+    """The mechanism's kind in words (``"crank-rocker"`` → «кривошипно-коромысловый
+    механизм» in ru)."""
+    return text(lang)["kind"].get(kind, kind)
 
 
 def _spec_rows(raw, prefix=""):
@@ -158,8 +392,93 @@ def _spec_rows(raw, prefix=""):
     return rows
 
 
-def write_workbook(result, path):
-    """Write the Excel workbook of a linkage analysis (atomically).
+#: Meaning of the spec keys on the inputs sheet: key (last part) → (ru, en); ``{link}``
+#: is the link's name in the genitive (кривошипа / of the crank).
+_KEY_MEANING = {
+    "kind": ("вид механизма", "mechanism kind"),
+    "name": ("название механизма", "mechanism name"),
+    "crank": ("длина кривошипа lOA", "crank length |OA|"),
+    "coupler": ("длина шатуна lAB", "coupler (rod) length |AB|"),
+    "rocker": ("длина коромысла lBC", "rocker length |CB|"),
+    "ground": ("межосевое расстояние lOC (стойка)", "ground length |OC|"),
+    "ground_angle_deg": ("угол стойки OC (направляющей) к оси x",
+                         "angle of the ground line (guide) to +x"),
+    "offset": ("смещение направляющей (дезаксаж) e", "guide offset e"),
+    "assembly": ("вариант сборки (+1 или −1)", "assembly branch (+1 or −1)"),
+    "omega_rad_s": ("угловая скорость кривошипа ω2 (+ против часовой стрелки)",
+                    "crank angular velocity ω2 (+ ccw)"),
+    "epsilon_rad_s2": ("угловое ускорение кривошипа ε2", "crank angular acceleration ε2"),
+    "gravity_m_s2": ("ускорение свободного падения g", "gravity g"),
+    "mass_kg": ("масса {link} m{n}", "mass {link} m{n}"),
+    "inertia_kg_m2": ("момент инерции {link} JS{n} (относительно S{n})",
+                      "moment of inertia {link} JS{n} (about S{n})"),
+    "cg": ("центр масс {link} S{n} (x, y в системе звена)",
+           "centre of mass {link} S{n} (x, y in the link frame)"),
+    "points": ("точка {point} {link} (x, y в системе звена)",
+               "point {point} {link} (x, y in the link frame)"),
+    "link": ("звено, к которому приложена нагрузка", "link carrying the load"),
+    "at": ("точка приложения силы (x, y в системе звена)",
+           "point of application (x, y in the link frame)"),
+    "force_N": ("сила (x, y)", "force (x, y)"),
+    "moment_Nm": ("момент (+ против часовой стрелки)", "moment (+ ccw)"),
+    "resistance_Nm": ("момент полезного сопротивления Mпс", "useful-resistance moment Mr"),
+    "resistance_N": ("сила полезного сопротивления Fпс", "useful-resistance force Fr"),
+    "stroke": ("ход, на котором действует сопротивление", "stroke carrying the resistance"),
+    "span_deg": ("участок действия сопротивления (поворот коромысла от начала рабочего "
+                 "хода)", "span of the resistance (rocker rotation from the stroke start)"),
+    "span_m": ("участок действия сопротивления (путь ползуна от начала рабочего хода)",
+               "span of the resistance (slider travel from the stroke start)"),
+    "positions": ("число положений плана", "number of plan positions"),
+    "crank_angles_deg": ("заданные углы кривошипа", "crank angles given"),
+    "working_stroke": ("направление рабочего хода", "direction of the working stroke"),
+}
+_LINK_GEN = {"crank": ("кривошипа", "of the crank"), "coupler": ("шатуна", "of the coupler"),
+             "rocker": ("коромысла", "of the rocker"), "slider": ("ползуна", "of the slider")}
+#: The spec's word values, explained beside them on the Russian inputs sheet.
+_VALUE_RU = {"crank-rocker": "кривошипно-коромысловый", "crank-slider": "кривошипно-ползунный",
+             "crank": "кривошип", "coupler": "шатун", "rocker": "коромысло",
+             "slider": "ползун", "working": "рабочий ход", "idle": "холостой ход",
+             "both": "оба хода", "ccw": "против часовой стрелки",
+             "cw": "по часовой стрелке", "away": "ползун удаляется от кривошипа",
+             "toward": "ползун приближается к кривошипу"}
+
+
+def _key_meaning(key, value, lang):
+    """The meaning of a spec key in the report's language ('' when not known)."""
+    i = 0 if lang == "ru" else 1
+    parts = [re.sub(r"\[\d+\]$", "", p) for p in key.split(".")]
+    if parts[0] == "drawing":
+        return ("поле основной надписи чертежа", "title-block field of the drawing")[i]
+    last = parts[-1]
+    link, point = None, None
+    if parts[0] == "links" and len(parts) >= 3:
+        link = parts[1]
+        if parts[2] == "points":
+            last, point = "points", parts[-1]
+    meaning = _KEY_MEANING.get(last)
+    if meaning is None:
+        return ""
+    from .spec import LINK_NUMBER
+
+    out = meaning[i].format(link=_LINK_GEN.get(link, (link or "", link or ""))[i],
+                            point=point or "", n=LINK_NUMBER.get(link, ""))
+    out = re.sub(r"\s+", " ", out).strip()
+    if lang == "ru" and isinstance(value, str) and value in _VALUE_RU:
+        out += f": {_VALUE_RU[value]}"
+    return out
+
+
+def write_workbook(result, path, lang: str = "ru"):
+    """Write the Excel workbook of a linkage analysis (atomically) in ``lang``.
+
+    Parameters
+    ----------
+    result : linkage.analysis.AnalysisResult
+    path : str or Path
+        The ``.xlsx`` to write.
+    lang : {"ru", "en"}
+        Language of the sheet titles, labels, units and symbols (module docstring); the
+        numbers and the CSV-name header row are the same in both.
 
     Raises :class:`crankbase.output.OutputError` if a table holds a non-finite number outside
     the rows of singular positions of a change-point mechanism (those are left empty
@@ -171,49 +490,86 @@ def write_workbook(result, path):
 
     from crankbase.output import atomic_path, full_precision_xlsx
 
+    t = text(lang)
     wb = Workbook()
     bold = Font(bold=True)
     grey = Font(italic=True, size=8, color="808080")
     head_fill = PatternFill("solid", fgColor="DDEBF7")
     thin = Side(style="thin", color="999999")
     box = Border(left=thin, right=thin, top=thin, bottom=thin)
-    center = Alignment(horizontal="center", vertical="center")
+    center = Alignment(horizontal="center", vertical="center", wrap_text=True)
+    wrap = Alignment(wrap_text=True, vertical="top")
 
-    # -- inputs
+    # -- inputs (portrait A4: A spec key / label, B value, C unit, D meaning)
     ws = wb.active
-    ws.title = "inputs"
+    ws.title = t["sheets"]["inputs"]
+    widths = dict(A=34, B=20, C=9, D=39)
+    for letter, w in widths.items():
+        ws.column_dimensions[letter].width = w
+
+    def fit(row, col_widths):
+        """Row height for the wrapped texts of ``row`` (12.75 pt a line)."""
+        lines = 1
+        for c, w in zip(ws[row], col_widths):
+            if isinstance(c.value, str):
+                lines = max(lines, _wrapped_lines(c.value, w))
+        if lines > 1:
+            ws.row_dimensions[row].height = _LINE_PT * lines + 2
+
+    def merged(row, lines_text):
+        """One text across A:D, wrapped."""
+        ws.cell(row, 1, lines_text).alignment = wrap
+        ws.merge_cells(start_row=row, start_column=1, end_row=row, end_column=4)
+        fit(row, [sum(widths.values())])
+
     spec = result.spec
-    ws["A1"] = f"crankdyn linkage — {spec.name} ({spec.kind})"
+    ws["A1"] = t["title"].format(name=spec.name, kind=kind_text(spec.kind, lang))
     ws["A1"].font = Font(bold=True, size=12)
+    ws.merge_cells("A1:D1")
+    ws["A1"].alignment = wrap
+    fit(1, [sum(widths.values()) / 1.3])
     ws.append([])
-    ws.append(["spec key", "value", "unit"])
+    ws.append(list(t["spec_head"]))
     for c in ws[3]:
         c.font = bold
         c.fill = head_fill
+        c.alignment = wrap
     for key, value in _spec_rows(dict(spec.raw)):
-        ws.append([key, value, _spec_unit(key)])
+        ws.append([key, value, unit_text(_spec_unit(key), lang),
+                   _key_meaning(key, value, lang)])
+        for c in ws[ws.max_row]:
+            c.alignment = wrap
+        fit(ws.max_row, widths.values())
     ws.append([])
-    ws.append(["cycle geometry", "value", "unit"])
-    for c in ws[ws.max_row]:
+    ws.append(list(t["cycle_head"]))
+    for c in ws[ws.max_row][:3]:
         c.font = bold
         c.fill = head_fill
-    for label, value, unit in summary_lines(result):
+    for label, value, unit in summary_lines(result, lang):
         ws.append([label, value, unit])
+        ws.cell(ws.max_row, 1).alignment = wrap
+        ws.cell(ws.max_row, 2).alignment = Alignment(vertical="top", horizontal=(
+            "right" if isinstance(value, float) else "left"), wrap_text=True)
+        ws.cell(ws.max_row, 3).alignment = wrap
         if isinstance(value, float):
             ws.cell(ws.max_row, 2).number_format = "0.0000"
+        fit(ws.max_row, widths.values())
     if result.warnings:
         ws.append([])
         for w in result.warnings:
-            ws.append(["warning", w])
+            ws.append([t["warning"], warning_text(w, lang)])
             ws.cell(ws.max_row, 1).font = Font(bold=True, color="C00000")
+            ws.cell(ws.max_row, 1).alignment = wrap
+            ws.cell(ws.max_row, 2).alignment = wrap
+            ws.merge_cells(start_row=ws.max_row, start_column=2, end_row=ws.max_row,
+                           end_column=4)
+            fit(ws.max_row, [widths["A"], widths["B"] + widths["C"] + widths["D"]])
     ws.append([])
-    ws.append(["conventions"])
+    ws.append([t["conventions"]])
     ws.cell(ws.max_row, 1).font = bold
-    for line in CONVENTIONS:
+    for line in t["conv"]:
         ws.append([line])
-    ws.column_dimensions["A"].width = 46
-    ws.column_dimensions["B"].width = 24
-    ws.column_dimensions["C"].width = 8
+        merged(ws.max_row, line)
 
     pos_cols, vel_cols, acc_cols = sheet_columns(list(result.kinematics.columns))
     load_cols, force_cols = force_sheet_columns(list(result.forces.columns))
@@ -224,15 +580,15 @@ def write_workbook(result, path):
               ("forces", result.forces, force_cols)]
     if result.extremes is not None:
         tables.append(("extremes", result.extremes, list(result.extremes.columns)))
-    for title, df, cols in tables:
-        ws = wb.create_sheet(title)
-        if title == "extremes":
-            _extremes_sheet(ws, df, cols, bold, grey, head_fill, box, center)
+    for key, df, cols in tables:
+        ws = wb.create_sheet(t["sheets"][key])
+        if key == "extremes":
+            _extremes_sheet(ws, df, cols, lang, bold, grey, head_fill, box, center)
             continue
         for j, col in enumerate(cols, start=1):
-            sym, unit = column_label(col)
-            for i, text in enumerate((sym, unit, col), start=1):
-                cell = ws.cell(i, j, text)
+            sym, unit = column_label(col, lang)
+            for i, txt in enumerate((sym, unit, col), start=1):
+                cell = ws.cell(i, j, txt)
                 cell.alignment = center
                 cell.border = box
                 cell.font = grey if i == 3 else bold
@@ -258,41 +614,75 @@ def write_workbook(result, path):
         width = sum(ws.column_dimensions[get_column_letter(j)].width
                     for j in range(1, len(cols) + 1))
         _page_setup(ws, landscape=True, pages_wide=math.ceil(width / _WIDTH_PER_PAGE))
-    _page_setup(wb["inputs"], landscape=False)
+    _page_setup(wb.worksheets[0], landscape=False)
     _check_finite_tables(result)
     with atomic_path(path) as tmp, full_precision_xlsx():
         wb.save(tmp)
 
 
-#: Conventions printed on the inputs sheet.
-CONVENTIONS = (
-    "SI units; angles in degrees, counter-clockwise from +x; O at the origin.",
-    "Rij = force of link i on link j (1 ground, 2 crank, 3 coupler/rod, 4 rocker/slider).",
-    "Mур (M_drive) = driving (balancing) moment applied to the crank, + counter-clockwise.",
-    "R23n, R23t: along A→B and 90° ccw from it; R14n, R14t: along C→B and 90° ccw from it.",
-    "Position 1 = extreme position where the working stroke starts; then every 360°/N "
-    "in the direction of rotation.",
-)
+#: Conventions printed on the English inputs sheet (the Russian ones: ``text("ru")``).
+CONVENTIONS = _TEXT["en"]["conv"]
 
+
+#: Width of a Cyrillic and of another character of wrapped text in Excel column-width
+#: units (one '0'; Cyrillic letters are wider than the average Latin text, measured on
+#: LibreOffice's rendering with a margin for word breaks), and the height of a line [pt],
+#: for the row heights of wrapped labels.
+_CHAR_WIDTH = {"cyrillic": 1.0, "other": 0.88}
+_LINE_PT = 12.75
+
+
+def _text_width(s: str) -> float:
+    """Estimated printed width of a text in Excel column-width units."""
+    cyr = sum(1 for ch in s if "\u0400" <= ch <= "\u04ff")
+    return cyr * _CHAR_WIDTH["cyrillic"] + (len(s) - cyr) * _CHAR_WIDTH["other"]
+
+
+def _wrapped_lines(s: str, width: float) -> int:
+    """Lines a wrapped text takes in a column ``width`` units wide: words are put on a
+    line while they fit (a word longer than a line is broken), as a spreadsheet does."""
+    lines = 0
+    for para in s.split("\n"):
+        lines += 1
+        used = 0.0
+        for word in para.split(" "):
+            w = _text_width(word)
+            if used and used + _CHAR_WIDTH["other"] + w > width:
+                lines += 1
+                used = 0.0
+            elif used:
+                used += _CHAR_WIDTH["other"]
+            if w > width:                      # broken inside the word
+                lines += math.ceil(w / width) - 1
+                w = w % width
+            used += w
+    return lines
+
+#: Width of a value column of the extremes sheet ("крайнее положение 1" on one line).
+_EXTREME_WIDTH = 22
 
 #: Column width (Excel units) printed on one landscape A4 page: at most ~70 % scale,
 #: so the numbers stay readable (a wider sheet prints on more pages, titles repeated).
 _WIDTH_PER_PAGE = 190
 
 
-def _extremes_sheet(ws, df, cols, bold, grey, head_fill, box, center):
+def _extremes_sheet(ws, df, cols, lang, bold, grey, head_fill, box, center):
     """The extreme positions, one quantity per row (quantity, unit, CSV key, one value
     column per extreme position): two positions of ~100 quantities print as a readable
     portrait list instead of a strip 100 columns wide."""
     from openpyxl.styles import Alignment
 
-    heads = ["quantity", "unit", "column"] + [f"extreme {i + 1}" for i in range(len(df))]
-    for j, text in enumerate(heads, start=1):
-        c = ws.cell(1, j, text)
+    t = text(lang)
+    heads = list(t["ext_head"]) + [t["extreme"].format(i=i + 1) for i in range(len(df))]
+    for j, txt in enumerate(heads, start=1):
+        c = ws.cell(1, j, txt)
         c.font, c.fill, c.border, c.alignment = bold, head_fill, box, center
+    ws.row_dimensions[1].height = 30
     for i, col in enumerate(cols, start=2):
-        sym, unit = column_label(col)
+        sym, unit = column_label(col, lang)
         values = _cell_values(df[col])
+        if col == "label":
+            values = [t["ext_labels"].get(v, v) for v in values]
         fmt = _number_format(col, values)
         for j, v in enumerate([sym, unit, col] + values, start=1):
             c = ws.cell(i, j, v)
@@ -301,12 +691,18 @@ def _extremes_sheet(ws, df, cols, bold, grey, head_fill, box, center):
                 c.font = grey
             if j > 3:
                 c.number_format = fmt
-                c.alignment = Alignment(horizontal="right")
+                c.alignment = Alignment(horizontal="right", wrap_text=True)
+        if col == "label":                   # the stroke's name: centred, wrapped
+            if max(_text_width(str(v)) for v in values) > _EXTREME_WIDTH:
+                ws.row_dimensions[i].height = 2 * _LINE_PT + 4
+            for j in range(4, 4 + len(values)):
+                ws.cell(i, j).alignment = Alignment(horizontal="center", vertical="center",
+                                                    wrap_text=True)
     ws.column_dimensions["A"].width = 14
-    ws.column_dimensions["B"].width = 8
+    ws.column_dimensions["B"].width = 9
     ws.column_dimensions["C"].width = 22
     for j in range(len(df)):
-        ws.column_dimensions[chr(ord("D") + j)].width = 16
+        ws.column_dimensions[chr(ord("D") + j)].width = _EXTREME_WIDTH
     ws.freeze_panes = "D2"
     ws.print_title_rows = "1:1"
     _page_setup(ws, landscape=False)

@@ -1,6 +1,9 @@
-"""End-to-end: `crankdyn linkage` on the bundled examples; workbook read back = CSV;
-bad input exits 2 with one line per problem and writes nothing."""
+"""End-to-end: `crankdyn linkage` on the bundled examples; workbook read back = CSV in
+both languages; the Russian report in Russian (sheet titles, labels, units, symbols Mур,
+Mпс, terminal summary), the English one without a Cyrillic letter; bad input exits 2
+with one line per problem and writes nothing."""
 import math
+import re
 import subprocess
 import sys
 
@@ -12,8 +15,13 @@ from openpyxl import load_workbook
 from crankdyn.cli import main
 from crankbase.resources import example_path
 
+#: The sheets in their order; their titles are in the report's language.
 SHEETS = ("inputs", "positions", "velocities", "accelerations", "loads", "forces",
           "extremes")
+TITLES = {"en": SHEETS,
+          "ru": ("Исходные данные", "Положения", "Скорости", "Ускорения", "Нагрузки",
+                 "Реакции и Mур", "Крайние положения")}
+CYRILLIC = re.compile("[\u0400-\u04FF]")
 PLOTS = ("plan", "velocities", "accelerations", "driving_moment", "transmission_angle")
 
 
@@ -33,10 +41,34 @@ def _sheet_frame(ws):
     return pd.DataFrame(data, columns=cols)
 
 
+def _sheet(wb, key):
+    """A workbook's sheet by its place (``key`` in SHEETS), whatever the language."""
+    return wb.worksheets[SHEETS.index(key)]
+
+
 @pytest.fixture(scope="module")
 def ratchet_run(tmp_path_factory):
     out = tmp_path_factory.mktemp("ratchet")
     assert main(["linkage", "--example", "-o", str(out)]) == 0
+    return out
+
+
+@pytest.fixture(scope="module")
+def lang_runs(tmp_path_factory):
+    """Both bundled examples in both languages (tables only): (example, lang) →
+    (folder, terminal stdout, stderr)."""
+    import contextlib
+    import io
+
+    out = {}
+    for ex in ("ratchet", "press"):
+        for lang in ("ru", "en"):
+            d = tmp_path_factory.mktemp(f"{ex}_{lang}")
+            so, se = io.StringIO(), io.StringIO()
+            with contextlib.redirect_stdout(so), contextlib.redirect_stderr(se):
+                assert main(["linkage", "--example", ex, "-o", str(d), "--no-plots",
+                             "--lang", lang]) == 0
+            out[(ex, lang)] = (d, so.getvalue(), se.getvalue())
     return out
 
 
@@ -75,50 +107,73 @@ def test_csv_is_full_precision(ratchet_run):
     np.testing.assert_array_equal(f[num].to_numpy(), res.forces[num].to_numpy())
 
 
-def test_workbook_read_back_equals_csv(ratchet_run):
-    wb = load_workbook(ratchet_run / "ratchet-drive.xlsx")
-    assert set(SHEETS) <= set(wb.sheetnames)
-    k = pd.read_csv(_one(ratchet_run, "kinematics.csv"))
-    f = pd.read_csv(_one(ratchet_run, "forces.csv"))
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_workbook_read_back_equals_csv(lang_runs, lang):
+    """Every number of the workbook equals the CSV to the last bit, in either language."""
+    run = lang_runs[("ratchet", lang)][0]
+    wb = load_workbook(run / "ratchet-drive.xlsx")
+    assert tuple(wb.sheetnames) == TITLES[lang]
+    k = pd.read_csv(_one(run, "kinematics.csv"))
+    f = pd.read_csv(_one(run, "forces.csv"))
     seen = set()
     for sheet in ("positions", "velocities", "accelerations"):
-        df = _sheet_frame(wb[sheet])
+        df = _sheet_frame(_sheet(wb, sheet))
         for c in df.columns:
             np.testing.assert_array_equal(df[c].to_numpy(float), k[c].to_numpy(float))
             seen.add(c)
     assert seen == set(k.columns)  # every kinematics column is on some sheet
     seen = set()
     for sheet in ("loads", "forces"):
-        df = _sheet_frame(wb[sheet])
+        df = _sheet_frame(_sheet(wb, sheet))
         assert list(df.columns[:2]) == ["position", "phi_deg"]
         for c in df.columns:
             np.testing.assert_array_equal(df[c].to_numpy(float), f[c].to_numpy(float))
             seen.add(c)
     assert seen == set(f.columns)  # every force column is on some sheet
     # the course tables' magnitudes come first on the velocities sheet
-    vel = list(_sheet_frame(wb["velocities"]).columns)
+    vel = list(_sheet_frame(_sheet(wb, "velocities")).columns)
     assert vel.index("v_BA_m_s") < vel.index("A_vx_m_s")
-    assert {"G3_N", "Fu3_N", "Mu3_Nm", "M_res_Nm"} <= set(_sheet_frame(wb["loads"]).columns)
-    assert "Fu3_N" not in _sheet_frame(wb["forces"]).columns
+    assert {"G3_N", "Fu3_N", "Mu3_Nm", "M_res_Nm"} <= set(
+        _sheet_frame(_sheet(wb, "loads")).columns)
+    assert "Fu3_N" not in _sheet_frame(_sheet(wb, "forces")).columns
 
 
-def test_workbook_inputs_and_extremes(ratchet_run):
-    wb = load_workbook(ratchet_run / "ratchet-drive.xlsx")
-    values = {r[0]: r[1] for r in wb["inputs"].iter_rows(values_only=True) if r and r[0]}
+#: Labels of the inputs sheet by language: Grashof type, swing, K, extremes' stroke names.
+INPUT_LABELS = {
+    "en": ("Grashof type", "crank-rocker", "rocker swing",
+           "time-ratio coefficient K = φwork/φidle", ["working start", "working end"]),
+    "ru": ("Тип механизма по Грасгофу", "кривошипно-коромысловый", "угол размаха коромысла",
+           "коэффициент изменения средней скорости выходного звена K = φр.х/φх.х",
+           ["начало рабочего хода", "конец рабочего хода"]),
+}
+
+
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_workbook_inputs_and_extremes(lang_runs, lang):
+    run = lang_runs[("ratchet", lang)][0]
+    grashof, crank_rocker, swing, K, strokes = INPUT_LABELS[lang]
+    wb = load_workbook(run / "ratchet-drive.xlsx")
+    rows = [r for r in _sheet(wb, "inputs").iter_rows(values_only=True) if r and r[0]]
+    values = {r[0]: r[1] for r in rows}
+    units = {r[0]: r[2] for r in rows}
     assert values["mechanism.crank"] == 0.175
     assert values["links.coupler.inertia_kg_m2"] == 0.51
-    assert values["Grashof type"] == "crank-rocker"
+    assert units["mechanism.crank"] == {"ru": "м", "en": "m"}[lang]
+    assert units["links.coupler.inertia_kg_m2"] == {"ru": "кг·м²", "en": "kg·m²"}[lang]
+    assert units["links.coupler.mass_kg"] == {"ru": "кг", "en": "kg"}[lang]
+    assert units["load[0].resistance_Nm"] == {"ru": "Н·м", "en": "N·m"}[lang]
+    assert values[grashof] == crank_rocker
     # seed 000 / domain.md §2: with OC = 0.54 m, swing ≈ 68.4°, K ≈ 1.138
-    assert values["rocker swing"] == pytest.approx(68.4, abs=0.05)
-    assert values["time-ratio coefficient K = φwork/φidle"] == pytest.approx(1.138, abs=5e-4)
+    assert values[swing] == pytest.approx(68.4, abs=0.05)
+    assert values[K] == pytest.approx(1.138, abs=5e-4)
     # the extremes sheet lists one quantity per row (readable on A4): transpose it back
-    rows = list(wb["extremes"].iter_rows(min_row=2, values_only=True))
+    rows = list(_sheet(wb, "extremes").iter_rows(min_row=2, values_only=True))
     ext = pd.DataFrame({r[2]: list(r[3:]) for r in rows})
-    assert list(ext["label"]) == ["working start", "working end"]
+    assert list(ext["label"]) == strokes
     # the rocker stands still at both extreme positions
     assert np.abs(ext["omega4_rad_s"].to_numpy(float)).max() < 1e-9
     # position 1 is the working-stroke start
-    k = pd.read_csv(_one(ratchet_run, "kinematics.csv"))
+    k = pd.read_csv(_one(run, "kinematics.csv"))
     assert ext["phi_deg"].iat[0] == pytest.approx(k["phi_deg"].iat[0], abs=1e-9)
 
 
@@ -164,7 +219,7 @@ crank_angles_deg = [10.0, 200.0, 90.0]
     # the resistance opposes the slider's velocity
     assert np.all(np.sign(f["F_res_N"]) == -np.sign(k["v4_m_s"]))
     wb = load_workbook(out / "press.xlsx")
-    df = _sheet_frame(wb["forces"])
+    df = _sheet_frame(_sheet(wb, "forces"))
     assert df["position"].isna().all()
 
 
@@ -311,7 +366,7 @@ crank_angles_deg = [300.0, 290.0]
     out = tmp_path / "out"
     assert main(["linkage", str(spec), "-o", str(out)]) == 0
     text = capsys.readouterr().out
-    assert "statics, ω = 0" in text and "<NA>" not in text
+    assert "статика, ω = 0" in text and "<NA>" not in text          # --lang ru
     for p in ("plan", "driving_moment", "transmission_angle"):
         assert _one(out, f"{p}.png").stat().st_size > 1000
     assert not list(out.glob("*_velocities.png")) and not list(out.glob("*_accelerations.png"))
@@ -320,4 +375,249 @@ crank_angles_deg = [300.0, 290.0]
     k = pd.read_csv(_one(out, "kinematics.csv"))
     assert (k["omega3_rad_s"] == 0).all() and (k["B_a_m_s2"] == 0).all()
     wb = load_workbook(out / "rhombus.xlsx")
-    assert "extremes" not in wb.sheetnames        # no strokes without rotation
+    assert len(wb.worksheets) == len(SHEETS) - 1   # no extremes without rotation
+
+
+# ------------------------------------------------------------ the report's language
+def _workbook_strings(path):
+    """Every text of a workbook: sheet names and string cells, (where, text)."""
+    wb = load_workbook(path)
+    for ws in wb.worksheets:
+        yield ws.title, ws.title
+        for row in ws.iter_rows():
+            for c in row:
+                if isinstance(c.value, str):
+                    yield f"{ws.title}!{c.coordinate}", c.value
+
+
+def test_english_report_has_no_cyrillic(lang_runs):
+    """An English user sees no Cyrillic letter: not in the workbook (cells, sheet names,
+    the raw XML parts as well), not on the terminal."""
+    import zipfile
+
+    for ex in ("ratchet", "press"):
+        run, out, err = lang_runs[(ex, "en")]
+        path = next(run.glob("*.xlsx"))
+        bad = [(w, v) for w, v in _workbook_strings(path) if CYRILLIC.search(v)]
+        assert not bad, (ex, bad[:5])
+        with zipfile.ZipFile(path) as z:
+            for name in z.namelist():
+                assert not CYRILLIC.search(z.read(name).decode("utf-8", "replace")), name
+        assert not CYRILLIC.search(out + err), (ex, out, err)
+        assert "max |Mb| at the positions" in out
+
+
+def _symbol_rows(path):
+    """Symbol row, unit row and CSV-name row of every table sheet, by sheet place."""
+    wb = load_workbook(path)
+    out = {}
+    for key, ws in zip(SHEETS[1:6], wb.worksheets[1:6]):
+        rows = list(ws.iter_rows(min_row=1, max_row=3, values_only=True))
+        out[key] = rows
+    return out
+
+
+#: Column → (Russian, English) symbol: the textbook's and the English set of the
+#: project (linkage.report's docstring; seed 000 tables 3.1, 3.2, 4.1 for the Russian).
+EXPECTED_SYMBOLS = {
+    "M_drive_Nm": ("Mур", "Mb"), "M_res_Nm": ("Mпс", "Mr"), "Fu3_N": ("Fи3", "Fi3"),
+    "Fu3_x_N": ("Fи3x", "Fi3x"), "Mu3_Nm": ("Mи3", "Mi3"), "v_BA_m_s": ("VBA", "VBA"),
+    "B_v_m_s": ("VB", "VB"), "a_BA_n_m_s2": ("aBAⁿ", "aBAⁿ"), "a_BA_t_m_s2": ("aBAᵗ", "aBAᵗ"),
+    "omega3_rad_s": ("ω3", "ω3"), "R23_n_N": ("R23n", "R23n"), "G3_N": ("G3", "G3"),
+    "position": ("№", "No."),
+}
+EXPECTED_UNITS = {
+    "M_drive_Nm": ("Н·м", "N·m"), "Fu3_N": ("Н", "N"), "B_v_m_s": ("м/с", "m/s"),
+    "a_BA_n_m_s2": ("м/с²", "m/s²"), "omega3_rad_s": ("рад/с", "rad/s"),
+    "eps3_rad_s2": ("рад/с²", "rad/s²"), "E_x_m": ("м", "m"), "phi_deg": ("°", "°"),
+}
+
+
+def test_workbook_symbols_units_and_numbers_in_both_languages(lang_runs):
+    """The Russian workbook carries the Russian textbook symbols and units, the English
+    one the English set; the CSV-name row and every number are identical in both (and
+    equal the CSV to the last bit: test_workbook_read_back_equals_csv)."""
+    for ex in ("ratchet", "press"):
+        ru = _symbol_rows(next(lang_runs[(ex, "ru")][0].glob("*.xlsx")))
+        en = _symbol_rows(next(lang_runs[(ex, "en")][0].glob("*.xlsx")))
+        found = {}
+        for key in ru:
+            assert ru[key][2] == en[key][2], (ex, key)          # CSV names: the same
+            for j, col in enumerate(ru[key][2]):
+                found[col] = ((ru[key][0][j], en[key][0][j]), (ru[key][1][j], en[key][1][j]))
+            for unit in ru[key][1]:                              # no English unit left
+                assert unit in (None, "°") or CYRILLIC.search(unit), (ex, key, unit)
+        for col, (r, e) in EXPECTED_SYMBOLS.items():
+            if col in found:
+                assert found[col][0] == (r, e), (ex, col, found[col][0])
+        for col, (r, e) in EXPECTED_UNITS.items():
+            if col in found:
+                assert found[col][1] == (r, e), (ex, col, found[col][1])
+        if ex == "ratchet":
+            assert set(EXPECTED_SYMBOLS) <= set(found)
+        else:                                                   # the slider's resistance
+            assert found["F_res_N"] == (("Fпс", "Fr"), ("Н", "N"))
+        # every number of every sheet, cell by cell, is the same in both languages
+        wr = load_workbook(next(lang_runs[(ex, "ru")][0].glob("*.xlsx")))
+        we = load_workbook(next(lang_runs[(ex, "en")][0].glob("*.xlsx")))
+        assert len(wr.worksheets) == len(we.worksheets)
+        for a, b in zip(wr.worksheets[1:], we.worksheets[1:]):
+            na = [(c.coordinate, c.value) for r in a.iter_rows() for c in r
+                  if isinstance(c.value, (int, float))]
+            nb = [(c.coordinate, c.value) for r in b.iter_rows() for c in r
+                  if isinstance(c.value, (int, float))]
+            assert na == nb and len(na) > 20, (ex, a.title)
+        va = [r[1] for r in wr.worksheets[0].iter_rows(values_only=True)
+              if isinstance(r[1] if len(r) > 1 else None, float)]
+        vb = [r[1] for r in we.worksheets[0].iter_rows(values_only=True)
+              if isinstance(r[1] if len(r) > 1 else None, float)]
+        assert va == vb                                          # the inputs sheet too
+
+
+def test_column_label_is_the_one_table():
+    """column_label(col, lang) gives every symbol; the English set is the one the
+    English plots and plan drawings use (Mb, Mr, Fr, Fi, Mi), without Cyrillic."""
+    from linkage.plots import _TEXT as PLOT_TEXT
+    from linkage.report import column_label, unit_text
+
+    assert column_label("M_drive_Nm", "ru") == ("Mур", "Н·м")
+    assert column_label("M_drive_Nm", "en") == ("Mb", "N·m")
+    assert column_label("F_res_N", "ru") == ("Fпс", "Н")
+    assert column_label("Mu4_Nm", "ru") == ("Mи4", "Н·м")
+    assert column_label("B_vx_m_s", "ru") == ("VBx", "м/с")
+    assert column_label("a_BC_t_m_s2", "en") == ("aBCᵗ", "m/s²")
+    assert unit_text("kg·m²", "ru") == "кг·м²"
+    with pytest.raises(ValueError, match="lang"):
+        column_label("M_drive_Nm", "de")
+    # the plots of the same report: "Mb, balancing …", "Mr, resistance …"
+    assert PLOT_TEXT["en"]["Md"].split(",")[0] == column_label("M_drive_Nm", "en")[0]
+    assert PLOT_TEXT["en"]["Mr"].split(",")[0] == column_label("M_res_Nm", "en")[0]
+    assert PLOT_TEXT["ru"]["Md"].split(",")[0] == column_label("M_drive_Nm", "ru")[0]
+    assert PLOT_TEXT["ru"]["Mr"].split(",")[0] == column_label("M_res_Nm", "ru")[0]
+    # the plan drawings (force polygons): Fres → Fr / Fпс, Fu3 → Fi₃ / Fи₃
+    import linkage
+    import plans
+
+    res = linkage.analyze(example_path("press.toml"))
+    poly = plans.build_plans(res, [2])[0].plans["force_dyad"]
+    sub = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
+    labels = {v.name: (v.label_ru.translate(sub), v.label_en.translate(sub))
+              for v in poly.vectors}
+    assert labels["Fres"] == (column_label("F_res_N", "ru")[0], column_label("F_res_N", "en")[0])
+    assert labels["Fu3"] == (column_label("Fu3_N", "ru")[0], column_label("Fu3_N", "en")[0])
+
+
+_LATIN_WORD = re.compile(r"[A-Za-z]{3,}")
+
+
+def _russian_terminal_problems(text, allowed):
+    """English words of 3+ letters in a Russian terminal text, apart from ``allowed``
+    (the mechanism's name, file names), the command's own name on stderr lines
+    ("crankdyn linkage: предупреждение: …") and max/min."""
+    for a in sorted(allowed, key=len, reverse=True) + ["crankdyn linkage:"]:
+        text = text.replace(a, "")
+    return [w for w in _LATIN_WORD.findall(text) if w not in ("max", "min")]
+
+
+def test_terminal_summary_speaks_the_report_language(lang_runs, tmp_path, capsys):
+    for ex, name in (("ratchet", "ratchet-drive"), ("press", "crank-press")):
+        run, out, err = lang_runs[(ex, "ru")]
+        assert not _russian_terminal_problems(out + err, [str(run), name]), (ex, out)
+        assert "max |Mур| в положениях: " in out and " Н·м (положение " in out
+        assert "Тип механизма по Грасгофу" in out or "Проворачиваемость кривошипа" in out
+        # the same numbers in both languages
+        num = re.compile(r"-?\d+\.\d+")
+        en_out = lang_runs[(ex, "en")][1]
+        assert num.findall(out) == num.findall(en_out) and num.findall(out)
+    # the plans' lines (Zhukovsky lever) too
+    for lang in ("ru", "en"):
+        d = tmp_path / lang
+        assert main(["linkage", "--example", "-o", str(d), "--no-plots", "--plans", "5",
+                     "--lang", lang]) == 0
+        cap = capsys.readouterr()
+        if lang == "ru":
+            assert not _russian_terminal_problems(cap.out + cap.err,
+                                                  [str(d), "ratchet-drive"]), cap.out
+            assert "рычаг Жуковского" in cap.out and "Fур = " in cap.out
+        else:
+            assert not CYRILLIC.search(cap.out + cap.err), cap.out
+            assert "Zhukovsky lever" in cap.out and "Fb = " in cap.out
+
+
+def test_lang_help_says_what_it_changes(capsys):
+    with pytest.raises(SystemExit):
+        main(["linkage", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert "--lang" in text and "workbook" in text and "terminal" in text
+
+
+def test_inputs_sheet_wrapped_rows_are_tall_enough(lang_runs):
+    """A wrapped label or meaning on the inputs sheet never runs into the next row: a row
+    whose text needs more than one line at its column's width (at least 1.0 width unit a
+    Cyrillic letter, 0.85 another character: measured on LibreOffice's rendering, where
+    a Cyrillic text is wider) is at least 12 pt a line tall; merged cells (title,
+    conventions) count their merged width."""
+    for key, (run, _, _) in lang_runs.items():
+        from openpyxl.utils import get_column_letter
+
+        ws = load_workbook(next(run.glob("*.xlsx"))).worksheets[0]
+        spans = {(r.min_row, r.min_col): r for r in ws.merged_cells.ranges}
+        wrapped = 0
+        for row in ws.iter_rows():
+            for c in row:
+                if not (isinstance(c.value, str) and c.alignment.wrap_text):
+                    continue
+                wrapped += 1
+                m = spans.get((c.row, c.column))
+                cols = range(m.min_col, m.max_col + 1) if m else [c.column]
+                width = sum(ws.column_dimensions[get_column_letter(j)].width for j in cols)
+                text_width = sum(1.0 if CYRILLIC.match(ch) else 0.85 for ch in c.value)
+                lines = math.ceil(text_width / width)
+                if lines > 1:
+                    height = ws.row_dimensions[c.row].height
+                    assert height and height >= 12 * lines, (key, c.coordinate, c.value)
+        assert wrapped > 20, key
+
+
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_change_point_warnings_in_the_report_language(lang, tmp_path, capsys):
+    """A change-point mechanism asked at its singular position (1 + 3 = 2 + 2, the
+    singular crank angle 30°: tests/test_linkage_mechanisms.py): both warnings of the
+    analysis reach the terminal and the inputs sheet in the report's language; the
+    singular row is left empty, the other row is the same number in both languages."""
+    spec = tmp_path / "cp.toml"
+    spec.write_text("""
+[mechanism]
+kind = "crank-rocker"
+name = "cp"
+crank = 1.0
+coupler = 3.0
+rocker = 2.0
+ground = 2.0
+ground_angle_deg = 30.0
+omega_rad_s = 1.0
+[analysis]
+crank_angles_deg = [30.0, 40.0]
+""")
+    out = tmp_path / "o"
+    assert main(["linkage", str(spec), "-o", str(out), "--no-plots", "--lang", lang]) == 0
+    cap = capsys.readouterr()
+    warned = [l for l in cap.err.splitlines() if "30°" in l or "особое" in l
+              or "singular position;" in l]
+    assert len(warned) == 2, cap.err
+    ws = load_workbook(out / "cp.xlsx").worksheets[0]
+    texts = [r[1] for r in ws.iter_rows(values_only=True)
+             if r[0] in ("warning", "предупреждение")]
+    assert len(texts) == 2
+    if lang == "ru":
+        assert texts[0].startswith("механизм с переходным положением: особые положения "
+                                   "при угле кривошипа 30°")
+        assert texts[1].startswith("заданные углы кривошипа включают особое положение")
+        assert not _russian_terminal_problems(cap.out + cap.err, [str(out), "cp"])
+    else:
+        assert texts[0].startswith("change-point mechanism: singular position(s) at crank "
+                                   "angle 30°")
+        assert not CYRILLIC.search(cap.out + cap.err)
+        assert not any(CYRILLIC.search(v) for _, v in _workbook_strings(out / "cp.xlsx"))
+    df = _sheet_frame(_sheet(load_workbook(out / "cp.xlsx"), "velocities"))
+    assert math.isnan(df["omega4_rad_s"].iat[0]) and np.isfinite(df["omega4_rad_s"].iat[1])

@@ -33,22 +33,26 @@ def test_two_mechanisms_and_stale_plots(tmp_path, capsys):
     # the same mechanism again without plots: its old plots are removed, and said so
     capsys.readouterr()
     assert main(["linkage", "--example", "ratchet", "-o", str(out), "--no-plots"]) == 0
-    assert "removed" in capsys.readouterr().err
+    assert "удалён" in capsys.readouterr().err             # --lang ru, the default
     names = {p.name for p in out.iterdir()}
     assert not [n for n in names if n.startswith("ratchet-drive_") and n.endswith(".png")]
     assert "crank-press_plan.png" in names            # another mechanism's plots stay
 
 
-def test_linkage_inputs_carry_units(tmp_path):
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_linkage_inputs_carry_units(tmp_path, lang):
     from openpyxl import load_workbook
 
-    assert main(["linkage", "--example", "ratchet", "-o", str(tmp_path), "--no-plots"]) == 0
-    ws = load_workbook(tmp_path / "ratchet-drive.xlsx")["inputs"]
+    assert main(["linkage", "--example", "ratchet", "-o", str(tmp_path), "--no-plots",
+                 "--lang", lang]) == 0
+    ws = load_workbook(tmp_path / "ratchet-drive.xlsx").worksheets[0]     # the inputs
     units = {r[0]: r[2] for r in ws.iter_rows(min_row=4, max_col=3, values_only=True)
              if r[0] and "." in str(r[0])}
-    assert units["mechanism.crank"] == "m" and units["mechanism.omega_rad_s"] == "rad/s"
-    assert units["links.coupler.inertia_kg_m2"] == "kg·m²"
-    assert units["links.crank.mass_kg"] == "kg" and units["mechanism.kind"] in ("", None)
+    m, rad_s, kg_m2, kg = (("m", "rad/s", "kg·m²", "kg") if lang == "en" else
+                           ("м", "рад/с", "кг·м²", "кг"))
+    assert units["mechanism.crank"] == m and units["mechanism.omega_rad_s"] == rad_s
+    assert units["links.coupler.inertia_kg_m2"] == kg_m2
+    assert units["links.crank.mass_kg"] == kg and units["mechanism.kind"] in ("", None)
 
 
 def test_drawing_option_writes_the_one_to_one_pdfs(tmp_path):

@@ -39,7 +39,11 @@ def runs(tmp_path_factory):
     for ex in ("ratchet", "press"):
         d = tmp_path_factory.mktemp(ex)
         assert main(["linkage", "--example", ex, "-o", str(d), "--no-plots"]) == 0
-        out[("linkage", ex)] = next(d.glob("*.xlsx"))
+        out[("linkage", ex)] = next(d.glob("*.xlsx"))               # ru, the default
+        d = tmp_path_factory.mktemp(f"{ex}_en")
+        assert main(["linkage", "--example", ex, "-o", str(d), "--no-plots",
+                     "--lang", "en"]) == 0
+        out[("linkage", ex, "en")] = next(d.glob("*.xlsx"))
     d = tmp_path_factory.mktemp("synth")
     assert main(["synth", "--phi0", "30", "--l1", "0.15", "-o", str(d), "--no-plots"]) == 0
     out[("synth",)] = next(d.glob("*.xlsx"))
@@ -108,7 +112,7 @@ def _strings(wb, skip_symbol_table=True):
 
 def test_english_workbooks_have_no_cyrillic(runs):
     for key, path in runs.items():
-        if key[0] != "engine" or key[2] != "en":
+        if key[0] not in ("engine", "linkage") or key[2:3] != ("en",):
             continue
         wb = load_workbook(path)
         bad = [(s, where, v) for s, where, v in _strings(wb) if CYRILLIC.search(v)]
@@ -129,6 +133,13 @@ def test_russian_workbooks_carry_every_textbook_symbol(runs):
                             if n.startswith("xl/charts/"))
         missing = [s for s in RUSSIAN_SYMBOLS if s not in text]
         assert not missing, (key, missing)
+    # the linkage workbook (Russian, the default): seed 000's symbols and Russian units
+    for ex, extra in (("ratchet", ("Mпс", "ω4", "ε4", "aBCⁿ")), ("press", ("Fпс",))):
+        text = "\n".join(v for _, _, v in _strings(load_workbook(runs[("linkage", ex)])))
+        missing = [s for s in ("Mур", "Fи3", "Mи3", "VB", "VBA", "aBAⁿ", "aBAᵗ", "R23n",
+                               "R12", "G3", "Н·м", "Н", "м/с", "м/с²", "рад/с", "кг")
+                   + extra if s not in text]
+        assert not missing, (ex, missing)
 
 
 def test_one_set_of_english_symbols():
@@ -337,7 +348,8 @@ def test_workbooks_render_on_a4_pages(runs, tmp_path):
     """LibreOffice prints every workbook to PDF: every page is A4 (either orientation)
     and every sheet yields at least one page."""
     chosen = [("engine", "petrol", "ru", "seed"), ("engine", "diesel", "en", "kolchin"),
-              ("linkage", "ratchet"), ("synth",)]      # every layout, each language
+              ("linkage", "ratchet"), ("linkage", "press", "en"),
+              ("synth",)]                                 # every layout, each language
     for key in chosen:
         path = runs[key]
         out = tmp_path / "_".join(key)

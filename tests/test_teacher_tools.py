@@ -231,16 +231,26 @@ def test_check_csv_with_a_column_mapping(petrol_report, tmp_path):
         parse_mapping(["no-equals-sign"])
 
 
-def test_check_linkage_tables(tmp_path):
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_check_linkage_tables(tmp_path, lang):
+    """The check reads our linkage workbook by its CSV-name header row (row 3), the same
+    in the Russian workbook (sheets «Скорости», «Реакции и Mур», symbols Mур, units Н·м)
+    and the English one: altered cells are flagged exactly there, the unaltered
+    workbook passes."""
     src = tmp_path / "lk"
-    assert main(["linkage", "--example", "ratchet", "-o", str(src), "--no-plots"]) == 0
+    assert main(["linkage", "--example", "ratchet", "-o", str(src), "--no-plots",
+                 "--lang", lang]) == 0
     wb = load_workbook(src / "ratchet-drive.xlsx")
-    ws = wb["velocities"]
+    # sheets by their place (inputs, positions, velocities, accelerations, loads, forces):
+    # the titles are in the report's language
+    ws = wb.worksheets[2]
+    assert ws.title == {"ru": "Скорости", "en": "velocities"}[lang]
     head = [c.value for c in ws[3]]
     j = head.index("omega3_rad_s") + 1
     ws.cell(4 + 5, j).value *= 1.3                        # position 6, ω3 30 % off
-    wf = wb["forces"]
+    wf = wb.worksheets[5]
     fh = [c.value for c in wf[3]]
+    assert wf.cell(1, fh.index("M_drive_Nm") + 1).value == {"ru": "Mур", "en": "Mb"}[lang]
     wf.cell(4 + 2, fh.index("M_drive_Nm") + 1).value += 50.0    # position 3, Mур + 50 N·m
     student = tmp_path / "lk_student.xlsx"
     wb.save(student)
@@ -250,6 +260,17 @@ def test_check_linkage_tables(tmp_path):
     assert list(check.columns)[0] == "position"
     bad = check[~check["ok"]][["position", "column"]].values.tolist()
     assert sorted(bad) == [[3, "M_drive_Nm"], [6, "omega3_rad_s"]]
+    # every table column of the workbook was read (none ignored as unknown), and the
+    # marked copy has the red cells on the student's own sheets
+    res = pd.read_csv(src / "ratchet-drive_kinematics.csv")
+    assert set(check["column"]) == (set(res.columns) - {"position"}) | set(
+        pd.read_csv(src / "ratchet-drive_forces.csv").columns) - {"position"}
+    marked = load_workbook(out / "lk_student_checked.xlsx")
+    red = [(w.title, c.coordinate) for w in marked.worksheets for r in w.iter_rows()
+           for c in r if c.comment is not None]
+    assert sorted(red) == sorted([(ws.title, ws.cell(4 + 5, j).coordinate),
+                                  (wf.title, wf.cell(4 + 2, fh.index("M_drive_Nm") + 1)
+                                   .coordinate)])
     code, _ = _check(tmp_path / "2", example_path("ratchet.toml"), src / "ratchet-drive.xlsx")
     assert code == 0
 
