@@ -169,7 +169,8 @@ def _spec_path(args, examples, what):
     from pathlib import Path
 
     from crankbase.errors import SpecError
-    from crankbase.resources import example_path
+
+    from .examples import find_example
 
     if args.spec and args.example:
         raise SpecError("give either SPEC.toml or --example, not both")
@@ -177,10 +178,4 @@ def _spec_path(args, examples, what):
         return Path(args.spec)
     if not args.example:
         raise SpecError(f"give a {what} spec SPEC.toml or --example [NAME]")
-    stem = args.example[:-5] if args.example.endswith(".toml") else args.example
-    stems = {f[:-5]: f for f in examples.values()}
-    fname = examples.get(stem) or stems.get(stem)
-    if fname is None:
-        raise SpecError(f"--example: no {what} example {args.example!r}; available: "
-                        + ", ".join(list(examples) + list(stems)))
-    return example_path(fname)
+    return find_example(args.example, examples, what)

@@ -64,17 +64,8 @@ def add_parser(subparsers):
 
 
 def _example_path(name):
-    from crankbase.errors import SpecError
-
-    from crankbase.resources import example_path
-
-    stems = {f[:-5]: f for f in EXAMPLES.values()}
-    stem = name[:-5] if name.endswith(".toml") else name
-    fname = EXAMPLES.get(stem) or stems.get(stem)
-    if fname is None:
-        raise SpecError(f"--example: no engine example {name!r}; available: "
-                        + ", ".join(list(EXAMPLES) + list(stems)))
-    return example_path(fname)
+    from .examples import find_example
+    return find_example(name, EXAMPLES, "engine")
 
 
 def run(args) -> int:

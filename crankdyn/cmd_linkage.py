@@ -17,7 +17,8 @@ from __future__ import annotations
 
 import sys
 
-EXAMPLE = "ratchet.toml"
+#: Bundled examples by short name (``--example NAME``; a file stem works too).
+EXAMPLES = {"ratchet": "ratchet.toml", "press": "press.toml"}
 
 #: File stems of every plot ``crankdyn linkage`` may draw (linkage.plots.all_figures).
 PLOTS = ("plan", "velocities", "accelerations", "driving_moment", "transmission_angle")
@@ -30,8 +31,10 @@ def add_parser(sub):
                     "TOML spec (see README): CSV tables, an Excel workbook and plots.")
     src = p.add_mutually_exclusive_group(required=True)
     src.add_argument("spec", nargs="?", help="the mechanism spec (TOML)")
-    src.add_argument("--example", nargs="?", const=EXAMPLE, metavar="NAME",
-                     help=f"use a bundled example spec (default {EXAMPLE})")
+    src.add_argument("--example", nargs="?", const="ratchet", metavar="NAME",
+                     help="run a bundled example instead of a spec: "
+                          + ", ".join(EXAMPLES) + " (default ratchet: the ratchet drive "
+                          "of the course project; press: a crank-slider press)")
     p.add_argument("-o", "--output", required=True, metavar="DIR", help="output folder")
     p.add_argument("--step", type=float, default=1.0, metavar="DEG",
                    help="crank-angle step of the full-turn plots (default 1°)")
@@ -114,9 +117,8 @@ def run(args) -> int:
     from pandas import isna as pd_isna
 
     if args.example:
-        from crankbase.resources import example_path
-        spec_path = example_path(args.example if args.example.endswith(".toml")
-                                 else args.example + ".toml")
+        from .examples import find_example
+        spec_path = find_example(args.example, EXAMPLES, "linkage")
     else:
         spec_path = args.spec
     if not (0 < args.step <= 30):

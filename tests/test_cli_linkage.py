@@ -177,7 +177,20 @@ def test_workbook_inputs_and_extremes(lang_runs, lang):
     assert ext["phi_deg"].iat[0] == pytest.approx(k["phi_deg"].iat[0], abs=1e-9)
 
 
-@pytest.mark.parametrize("name", ["ratchet.toml", "press.toml"])
+def test_example_names_are_the_commands_own(tmp_path, capsys):
+    """--example lists and accepts only linkage examples, by name: an engine example is
+    refused naming the linkage ones, and nothing is written."""
+    assert main(["linkage", "--example", "petrol_vaz2106", "-o", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == ["crankdyn linkage: error: --example: no linkage example "
+                   "'petrol_vaz2106'; available: ratchet, press"]
+    assert not (tmp_path / "o").exists()
+    with pytest.raises(SystemExit):
+        main(["linkage", "--help"])
+    assert "ratchet, press" in " ".join(capsys.readouterr().out.split())
+
+
+@pytest.mark.parametrize("name", ["ratchet", "press", "ratchet.toml"])
 def test_every_bundled_linkage_example_runs(name, tmp_path):
     out = tmp_path / "out"
     assert main(["linkage", "--example", name, "-o", str(out)]) == 0
