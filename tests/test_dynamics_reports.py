@@ -2,10 +2,9 @@
 named after the spec, so two specs share a folder and a rerun replaces only its own
 files; the terminal summary, the workbook and the plots speak the report's language."""
 import re
-import shutil
-import subprocess
 
 import pytest
+from rendering import needs_office, page_sizes
 from openpyxl import load_workbook
 
 from crankbase.output import MANIFEST_NAME, read_manifest, verify_report
@@ -270,21 +269,12 @@ def test_column_labels():
 
 
 @pytest.mark.slow
-@pytest.mark.skipif(shutil.which("soffice") is None or shutil.which("pdfinfo") is None,
-                    reason="LibreOffice or poppler-utils not installed")
+@needs_office
 def test_dynamics_workbooks_render_on_a4_pages(runs, tmp_path):
     for lang in ("ru", "en"):
         path = runs[("dynamics", "press", lang)][0] / "crank-press_dynamics.xlsx"
-        out = tmp_path / lang
-        out.mkdir()
-        subprocess.run(["soffice", "--headless", "--convert-to", "pdf", "--outdir",
-                        str(out), str(path)], check=True, capture_output=True, timeout=300)
-        pdf = next(out.glob("*.pdf"))
-        info = subprocess.run(["pdfinfo", "-f", "1", "-l", "10000", str(pdf)], check=True,
-                              capture_output=True, text=True).stdout
-        pages = re.findall(r"Page\s+\d+ size:\s+([\d.]+) x ([\d.]+) pts", info)
-        sizes = {tuple(sorted((round(float(w)), round(float(h))))) for w, h in pages}
-        assert sizes == {(595, 842)}, (lang, sizes)
+        pages = page_sizes(path, tmp_path / lang)
+        assert set(pages) == {(595, 842)}, (lang, set(pages))
         assert len(pages) >= 4
 
 

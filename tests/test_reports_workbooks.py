@@ -4,13 +4,12 @@ of every workbook set up for A4 with readable row heights and charts kept on one
 Table 2 in both textbook forms with the same numbers behind them."""
 import math
 import re
-import shutil
-import subprocess
 import zipfile
 
 import numpy as np
 import pandas as pd
 import pytest
+from rendering import needs_office, page_sizes
 from openpyxl import load_workbook
 
 import engine
@@ -342,8 +341,7 @@ def test_table_form_in_the_spec_and_refused_when_unknown(tmp_path, capsys):
 
 # ----------------------------------------------------------------------- render on A4
 @pytest.mark.slow
-@pytest.mark.skipif(shutil.which("soffice") is None or shutil.which("pdfinfo") is None,
-                    reason="LibreOffice or poppler-utils not installed")
+@needs_office
 def test_workbooks_render_on_a4_pages(runs, tmp_path):
     """LibreOffice prints every workbook to PDF: every page is A4 (either orientation)
     and every sheet yields at least one page."""
@@ -352,16 +350,8 @@ def test_workbooks_render_on_a4_pages(runs, tmp_path):
               ("synth",)]                                 # every layout, each language
     for key in chosen:
         path = runs[key]
-        out = tmp_path / "_".join(key)
-        out.mkdir()
-        subprocess.run(["soffice", "--headless", "--convert-to", "pdf", "--outdir",
-                        str(out), str(path)], check=True, capture_output=True, timeout=300)
-        pdf = next(out.glob("*.pdf"))
-        info = subprocess.run(["pdfinfo", "-f", "1", "-l", "10000", str(pdf)], check=True,
-                              capture_output=True, text=True).stdout
-        pages = re.findall(r"Page\s+\d+ size:\s+([\d.]+) x ([\d.]+) pts", info)
-        sizes = {tuple(sorted((round(float(w)), round(float(h))))) for w, h in pages}
-        assert sizes == {(595, 842)}, (key, sizes)                  # A4, either way
+        pages = page_sizes(path, tmp_path / "_".join(key))
+        assert set(pages) == {(595, 842)}, (key, set(pages))        # A4, either way
         assert len(pages) >= len(load_workbook(path).worksheets), key
 
 

@@ -1,0 +1,27 @@
+"""Render a workbook as LibreOffice prints it (for the A4 tests, marked slow; skipped where
+LibreOffice or poppler-utils are not installed)."""
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+
+import pytest
+
+#: Skip marker of the rendering tests.
+needs_office = pytest.mark.skipif(
+    shutil.which("soffice") is None or shutil.which("pdfinfo") is None,
+    reason="LibreOffice or poppler-utils not installed")
+
+
+def page_sizes(xlsx, outdir):
+    """The pages of ``xlsx`` converted to PDF by LibreOffice in ``outdir``: a list of
+    (short side, long side) in points, one per page (A4 is (595, 842))."""
+    outdir.mkdir(parents=True, exist_ok=True)
+    subprocess.run(["soffice", "--headless", "--convert-to", "pdf", "--outdir", str(outdir),
+                    str(xlsx)], check=True, capture_output=True, timeout=300)
+    pdf = next(outdir.glob("*.pdf"))
+    info = subprocess.run(["pdfinfo", "-f", "1", "-l", "10000", str(pdf)], check=True,
+                          capture_output=True, text=True).stdout
+    pages = re.findall(r"Page\s+\d+ size:\s+([\d.]+) x ([\d.]+) pts", info)
+    return [tuple(sorted((round(float(w)), round(float(h))))) for w, h in pages]
