@@ -53,13 +53,14 @@ class StudentTable:
 
 
 def parse_mapping(items) -> dict:
-    """``["T, Н=T_N", "α=alpha_deg"]`` → {"T, Н": "T_N", "α": "alpha_deg"} (the CLI's
-    ``--map``); the last ``=`` splits, so a header may contain "=" itself."""
+    """``["T, Н=T_N", "α=alpha_deg"]`` → {"T, Н": "T_N", "α": "alpha_deg"}: a column
+    mapping, student's header = our column; the last ``=`` splits, so a header may
+    contain "=" itself.  Problems name the argument ``mapping``."""
     out, problems = {}, []
     for item in items or ():
         head, sep, key = str(item).rpartition("=")
         if not sep or not head.strip() or not key.strip():
-            problems.append(Problem("--map", f"got {item!r}; write STUDENT_HEADER=our_column"))
+            problems.append(Problem("mapping", f"got {item!r}; write STUDENT_HEADER=our_column"))
             continue
         out[head.strip()] = key.strip()
     if problems:
@@ -121,8 +122,6 @@ def read_student_table(path, key, known, mapping=None) -> StudentTable:
     SpecError
         The file is missing, or no sheet/CSV has the key column.
     """
-    import pandas as pd
-
     path = Path(path)
     mapping = dict(mapping or {})
     if not path.is_file():
@@ -166,7 +165,7 @@ def read_student_table(path, key, known, mapping=None) -> StudentTable:
         if not frames:
             raise SpecError(Problem(str(path), f"no sheet has a column {key!r} in its first "
                                     f"{_HEADER_SCAN_ROWS} rows (our workbook layout), and "
-                                    "none was mapped to it with --map HEADER=" + key))
+                                    "no header was mapped to it (a mapping HEADER=" + key + ")"))
         data = _join(frames, key, path)
         sheets = cells.pop("_sheets")
         # rows of later sheets are matched by key: re-point their cells
@@ -182,7 +181,7 @@ def read_student_table(path, key, known, mapping=None) -> StudentTable:
     if key not in header:
         raise SpecError(Problem(str(path), f"no column {key!r}; columns: "
                                 + ", ".join(rows[0] if rows else [])
-                                + f" (map one with --map HEADER={key})"))
+                                + f" (map one: a mapping HEADER={key})"))
     df, _, ignored = _frame(header, rows[1:], key, known, {})
     return StudentTable(df, {}, path, ignored)
 

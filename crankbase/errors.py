@@ -49,6 +49,15 @@ class SpecError(CrankdynError):
     def lines(self) -> list[str]:
         return [str(p) for p in self.problems]
 
+    def renamed(self, names: dict):
+        """The same error with the problems' keys renamed by ``names`` (``{"positions":
+        "--plans"}``): a command line names its options where the library names its
+        arguments (the library never names a command-line option)."""
+        new = type(self).__new__(type(self))
+        SpecError.__init__(new, [Problem(names.get(p.key, p.key), p.message)
+                                 for p in self.problems])
+        return new
+
 
 class AssemblyError(CrankdynError):
     """The linkage cannot be assembled, or its crank cannot turn fully.

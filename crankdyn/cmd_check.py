@@ -40,6 +40,15 @@ def add_parser(sub):
 
 
 def run(args) -> int:
+    from crankbase.errors import SpecError
+
+    try:
+        return _run(args)
+    except SpecError as exc:            # the library's argument → this command's option
+        raise exc.renamed({"mapping": "--map"}) from None
+
+
+def _run(args) -> int:
     from pathlib import Path
 
     from crankbase.checking import (compare, mark_workbook, parse_mapping,

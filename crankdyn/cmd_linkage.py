@@ -105,7 +105,20 @@ def _plan_options(args):
     return positions, scales
 
 
+#: The library's argument names in its problems → this command's options.
+OPTIONS = {"positions": "--plans", "size": "--sheet"}
+
+
 def run(args) -> int:
+    from crankbase.errors import SpecError
+
+    try:
+        return _run(args)
+    except SpecError as exc:
+        raise exc.renamed(OPTIONS) from None
+
+
+def _run(args) -> int:
     import warnings
 
     import linkage

@@ -213,7 +213,7 @@ def test_altered_cells_are_flagged_exactly(tmp_path, capsys, form):
     assert "T_N            WRONG 2 of" in text and "M_Nm           right" in text
 
 
-def test_check_csv_with_a_column_mapping(petrol_report, tmp_path):
+def test_check_csv_with_a_column_mapping(petrol_report, tmp_path, capsys):
     df = pd.read_csv(petrol_report / "petrol-vaz2106_forces.csv")
     student = df[["alpha_deg", "T_N", "K_N"]].rename(columns={"alpha_deg": "α",
                                                               "T_N": "T, Н"})
@@ -227,8 +227,27 @@ def test_check_csv_with_a_column_mapping(petrol_report, tmp_path):
     bad = check[~check["ok"]]
     assert bad[["alpha_deg", "column"]].values.tolist() == [[df["alpha_deg"][2], "T_N"]]
     assert not list(out.glob("*.xlsx"))                  # no workbook for a CSV
-    with pytest.raises(SpecError, match="--map"):
-        parse_mapping(["no-equals-sign"])
+    with pytest.raises(SpecError, match="^mapping: got 'no-equals-sign'"):
+        parse_mapping(["no-equals-sign"])             # the library names its argument
+    capsys.readouterr()
+    code, _ = _check(tmp_path, PETROL, path, "--map", "no-equals-sign")
+    assert code == 2                                   # the CLI names its option
+    assert capsys.readouterr().err.splitlines() == [
+        "crankdyn check: error: --map: got 'no-equals-sign'; write STUDENT_HEADER=our_column"]
+
+
+def test_library_never_names_a_command_line_option():
+    """No library package's messages name a CLI option (``--plans``, ``--map`` …): the
+    CLI renames the argument a problem names (SpecError.renamed)."""
+    import re
+    from pathlib import Path
+    root = Path(__file__).resolve().parents[1]
+    for pkg in ("crankbase", "linkage", "engine", "dynamics", "plans"):
+        for f in (root / pkg).rglob("*.py"):
+            for n, line in enumerate(f.read_text().splitlines(), 1):
+                code = line.split("#")[0]
+                if re.search(r"[\"'(\s]--[a-z]", code) and '``' not in code:
+                    raise AssertionError(f"{f.relative_to(root)}:{n}: {line.strip()}")
 
 
 @pytest.mark.parametrize("lang", ["ru", "en"])
