@@ -1,7 +1,7 @@
 """``crankdyn synth``: synthesis of a crank-rocker by the transmission angle (ККМ-φ0).
 
     crankdyn synth --phi0 30 [--l2 L2 --l3 L3 | --l1 L1 | --l2 L2 --mu-min DEG]
-                   [--ground M] -o DIR
+                   [--ground M] [--lang ru|en] -o DIR
 
 Writes, named after the design (``<name>``: ``--name``, default ``kkm-<φ0>``, so that two
 designs in one folder never mix), the chosen mechanism (``<name>_mechanism.csv``, printed
@@ -10,6 +10,9 @@ too), the paper's Table 1 for that φ0 (``<name>_table1.csv``, and the workbook
 ``--ground`` a spec TOML for ``crankdyn linkage`` (``<name>.toml``), and the plots
 ``<name>_region``, ``_mu_min`` and ``_transmission_angle`` (PNG and SVG).  Every input
 is checked before anything is written; bad input prints one line per problem and exits 2.
+``--lang`` (default ru) is the language of the plots, the workbook (its title, sheet names
+and the values that are words; both header rows, Russian and English, stay) and the
+terminal summary; English output holds no Cyrillic letter (the family is KKM-φ0).
 numpy, pandas, matplotlib and openpyxl are imported inside :func:`run` only.
 """
 from __future__ import annotations
@@ -57,6 +60,11 @@ def add_parser(sub):
                         "with --ground)")
     p.add_argument("-o", "--output", required=True, metavar="DIR", help="output folder")
     p.add_argument("--no-plots", action="store_true", help="write the tables only")
+    p.add_argument("--lang", choices=("ru", "en"), default="ru",
+                   help="language of the plots, the workbook's titles, sheet names and "
+                        "words, and the terminal summary: ru (the paper's Russian terms, "
+                        "ККМ-φ0; default) or en (English, no Cyrillic: KKM-φ0). The "
+                        "workbook keeps its Russian and English header rows in both")
     p.set_defaults(func=run)
     return p
 
@@ -191,12 +199,15 @@ def run(args) -> int:
         from linkage import synthesis_plots as plots
 
         family = syn.right_angle_family(design.l1, phi0) if design is not None else None
-        figures["region"] = plots.plot_region(region, design, family=family).figure
+        lang = args.lang
+        figures["region"] = plots.plot_region(region, design, family=family,
+                                              lang=lang).figure
         figures["mu_min"] = plots.plot_mu_min_curves(syn.mu_min_curves(phi0), design,
-                                                     mu_required=v["mu_min"]).figure
+                                                     mu_required=v["mu_min"],
+                                                     lang=lang).figure
         if design is not None:
             figures["transmission_angle"] = plots.plot_transmission_angle(
-                phi, mu_turn["mu_deg"].to_numpy(), design).figure
+                phi, mu_turn["mu_deg"].to_numpy(), design, lang=lang).figure
 
     # ---- write (all files appear together, or none)
     written = []
@@ -206,26 +217,17 @@ def run(args) -> int:
         return stage / name
     with staged_output(args.output, unit=stem) as stage:
         write_csv(table, put(f"{stem}_table1.csv"))
-        rep.write_workbook(put(f"{stem}_synthesis.xlsx"), table, phi0, mech)
+        rep.write_workbook(put(f"{stem}_synthesis.xlsx"), table, phi0, mech, lang=args.lang)
         if design is not None:
             write_csv(mech, put(f"{stem}_mechanism.csv"))
             write_csv(mu_turn, put(f"{stem}_transmission_angle.csv"))
         if spec is not None:
-            header = (f"ККМ-{phi0:g}°: crank-rocker with μ = 90° at φ = {phi0:g}° from the "
-                      f"line of centres (ground along +x)\n"
-                      f"written by crankdyn synth; λ1 = {design.l1!r}, λ2 = {design.l2!r}, "
-                      f"λ3 = {design.l3!r}, μmin = {design.mu_min_deg:.6g}°\n"
-                      f"massless links, no loads: add [links.*] and [[load]] for forces")
+            header = rep.toml_header(design, args.lang)
             rep.write_toml(spec, put(f"{stem}.toml"), header)
         for name, fig in figures.items():
             save_figure(fig, stage / f"{stem}_{name}", dpi=150, tight=True)
             written.extend(f"{stem}_{name}.{ext}" for ext in ("png", "svg"))
 
-    reg = region
-    print(f"ККМ-{phi0:g}°: region of existence 0 < λ1 ≤ {reg.l1_max:.4f}, point d = "
-          f"({reg.d[0]:.4f}, {reg.d[1]:.4f}); Table 1: {len(table)} rows")
-    if design is not None:
-        for line in rep.summary_lines(design, v["ground"]):
-            print(line)
-    print(f"written to {args.output}: {', '.join(written)}")
+    lines = rep.summary_lines(region, table, design, v["ground"], args.lang)
+    print("\n".join([*lines, rep.written_line(args.output, written, args.lang)]))
     return 0

@@ -415,6 +415,8 @@ class ExistenceRegion:
         The point d, where both intersections coincide (λ1 = λ1max). [-]
     kolchin_line : str
         Which of Kolchin's lines carries the curve (eq. (3), or (1)–(2) for φ0 > 90°).
+    kolchin_numbers : tuple of int
+        The numbers of those lines in the paper: ``(3,)``, or ``(1, 2)`` for φ0 > 90°.
     kkm5_l2, kkm5_l3, kkm7_l2, kkm7_l3 : ndarray or None
         For φ0 < 90°, the segments where the family coincides with ККМ-5 (λ3 = sin φ0,
         λ1 + λ2 = cos φ0: crank and coupler in one line at φ0) and with ККМ-7 (λ2 = sin φ0,
@@ -437,6 +439,7 @@ class ExistenceRegion:
     kkm5_l3: np.ndarray | None = field(default=None, repr=False)
     kkm7_l2: np.ndarray | None = field(default=None, repr=False)
     kkm7_l3: np.ndarray | None = field(default=None, repr=False)
+    kolchin_numbers: tuple = (3,)
 
     def contains(self, l2, l3):
         """True where (λ2, λ3) is inside the region or within :data:`TOL` of it."""
@@ -522,13 +525,13 @@ def existence_region(phi0_deg=30.0, n=400) -> ExistenceRegion:
     l3 = np.concatenate([arc_l3, curve_l3[::-1][1:]])
     d = (float(pts[-1, 0, 0]), float(pts[-1, 0, 1]))
     line = ("1 + λ1 = λ2 + λ3 (eq. 3)" if c >= 0 else "1 − λ1 = ±(λ2 − λ3) (eq. 1–2)")
-    kw = {}
+    kw = {"kolchin_numbers": (3,) if c >= 0 else (1, 2)}
     if c > 0:
         # ККМ-5: λ3 = sin φ0, λ2 = cos φ0 − λ1, from the unit arc (λ1 = 0) to the boundary
         # line 1 + λ1 = λ2 + λ3, i.e. λ2 = (1 + cos φ0 − sin φ0)/2.  ККМ-7 is its mirror.
         # Both segments are non-degenerate because sin φ0 + cos φ0 > 1 on (0°, 90°).
         seg = np.linspace(c, (1.0 + c - s) / 2.0, 50)
-        kw = dict(kkm5_l2=seg, kkm5_l3=np.full_like(seg, s),
+        kw.update(kkm5_l2=seg, kkm5_l3=np.full_like(seg, s),
                   kkm7_l2=np.full_like(seg, s), kkm7_l3=seg.copy())
     return ExistenceRegion(phi0, top, l2, l3, arc_l2, arc_l3, curve_l1, curve_l2, curve_l3,
                            d, line, **kw)

@@ -6,9 +6,14 @@ Compute first, then plot: every function here only draws arrays computed by
 matplotlib's object-oriented API only (``Figure``, never ``pyplot``), imported inside
 the functions; works headless.  Each ``plot_*`` draws on ``ax`` when given (else on a new
 :class:`~matplotlib.figure.Figure`'s) and returns the Axes (``ax.figure`` for the figure),
-like the helpers of :mod:`linkage.plots`.  Labels use the English textbook symbols and
-name the family KKM-φ0 (the paper's ККМ-φ0, transliterated: no Cyrillic in English
-figures).
+like the helpers of :mod:`linkage.plots`.
+
+``lang="ru"`` labels with the paper's own Russian terms (область существования ККМ-30°,
+дуга abc, кривая cda, прямые Колчина, шатун λ2 …); ``lang="en"`` with English ones and
+no Cyrillic letter (the family is named KKM-φ0, the paper's ККМ-φ0 transliterated).  Every
+number is formatted once and put into the words of either language.  Curves differ by
+line style (dash pattern, width, marker), not by colour only, so they can be told apart
+in black-and-white print; the curves of Fig. 3 carry their numbers 1…9, as in the paper.
 """
 from __future__ import annotations
 
@@ -17,6 +22,88 @@ import numpy as np
 from crankbase.tolerances import SAME_ANGLE_DEG
 
 __all__ = ["plot_region", "plot_mu_min_curves", "plot_transmission_angle"]
+
+#: The words of the figures; numbers come in already formatted ({l1}, {phi0} …).
+_TEXT = {
+    "en": {
+        "kkm": "KKM-{phi0}°",
+        "region_title": "Region of existence of {kkm} (μ = 90° at φ0 = {phi0}°), "
+                        "λ1max = {l1max}",
+        "fill": "region of existence of {kkm}",
+        "arc": "arc abc: unit circle (λ1 = 0)",
+        "curve": "curve cda (μmin = 0) on Kolchin's {line} {nums}",
+        "line": "line", "lines": "lines",
+        "kolchin": "Kolchin's line ({n}): {formula} for λ1 = {l1}",
+        "family": "family arc for λ1 = {l1} (R = {R})",
+        "kkm5": "{kkm} → KKM-5 (λ3 = sin φ0)",
+        "kkm7": "{kkm} → KKM-7 (λ2 = sin φ0)",
+        "chosen": "chosen mechanism: λ1 = {l1}, λ2 = {l2}, λ3 = {l3}",
+        "coupler": "coupler λ2 = l2/l0  [–]",
+        "rocker": "rocker λ3 = l3/l0  [–]",
+        "crank": "crank λ1 = l1/l0  [–]",
+        "mu_title": "{kkm}: μmin over λ1 at constant λ2 (eq. 16)",
+        "required": "required μmin ≥ {mu}°",
+        "curve_n": "{i}: λ2 = {l2}",
+        "chosen_mu": "chosen mechanism: λ1 = {l1},\nλ2 = {l2}, μmin = {mu}°",
+        "mu_min_axis": "minimum transmission angle μmin  [°]",
+        "mu_phi": "transmission angle μ(φ)",
+        "right": "μ = 90° at φ = {a}° and {b}°",
+        "min_at": "μmin = {mu}° at φ = {where}",
+        "two": "{a}° and {b}°",
+        "phi_axis": "crank angle φ from the line of centres  [°]",
+        "mu_axis": "transmission angle μ  [°]",
+        "ta_title": "{kkm}: λ1 = {l1}, λ2 = {l2}, λ3 = {l3}",
+    },
+    "ru": {
+        "kkm": "ККМ-{phi0}°",
+        "region_title": "Область существования {kkm} (μ = 90° при φ0 = {phi0}°), "
+                        "λ1max = {l1max}",
+        "fill": "область существования {kkm}",
+        "arc": "дуга abc: окружность единичного радиуса (λ1 = 0)",
+        "curve": "кривая cda (μmin = 0) на {line} Колчина {nums}",
+        "line": "прямой", "lines": "прямых",
+        "kolchin": "прямая Колчина ({n}): {formula} при λ1 = {l1}",
+        "family": "дуга семейства при λ1 = {l1} (R = {R})",
+        "kkm5": "{kkm} → ККМ-5 (λ3 = sin φ0)",
+        "kkm7": "{kkm} → ККМ-7 (λ2 = sin φ0)",
+        "chosen": "выбранный механизм: λ1 = {l1}, λ2 = {l2}, λ3 = {l3}",
+        "coupler": "шатун λ2 = l2/l0  [–]",
+        "rocker": "коромысло λ3 = l3/l0  [–]",
+        "crank": "кривошип λ1 = l1/l0  [–]",
+        "mu_title": "{kkm}: минимальный угол передачи μmin в функции λ1 при λ2 = const "
+                    "(ур. 16)",
+        "required": "требуемый μmin ≥ {mu}°",
+        "curve_n": "{i}: λ2 = {l2}",
+        "chosen_mu": "выбранный механизм: λ1 = {l1},\nλ2 = {l2}, μmin = {mu}°",
+        "mu_min_axis": "минимальный угол передачи μmin  [°]",
+        "mu_phi": "угол передачи μ(φ)",
+        "right": "μ = 90° при φ = {a}° и {b}°",
+        "min_at": "μmin = {mu}° при φ = {where}",
+        "two": "{a}° и {b}°",
+        "phi_axis": "угол поворота кривошипа φ от линии центров  [°]",
+        "mu_axis": "угол передачи μ  [°]",
+        "ta_title": "{kkm}: λ1 = {l1}, λ2 = {l2}, λ3 = {l3}",
+    },
+}
+
+#: Kolchin's three lines (Sereda 2016, eq. (1)–(3)) as λ3 = k λ2 + b(λ1): number,
+#: formula, slope k, intercept b(λ1), dash pattern (thin grey lines, told apart by dash).
+_KOLCHIN = ((1, "1 − λ1 = λ2 − λ3", 1.0, lambda lam: -(1.0 - lam), (0, (8, 3))),
+            (2, "1 − λ1 = λ3 − λ2", 1.0, lambda lam: 1.0 - lam, (0, (2.5, 2))),
+            (3, "1 + λ1 = λ2 + λ3", -1.0, lambda lam: 1.0 + lam, (0, (8, 3, 2, 3))))
+
+#: Dash patterns of the nine curves of Fig. 3 (with their numbers on the curves, as in
+#: the paper, they are told apart without colour).
+_CURVE_DASHES = ("-", (0, (7, 2)), (0, (1, 1.5)), (0, (7, 2, 1.5, 2)), (0, (12, 2.5)),
+                 (0, (3, 2)), (0, (7, 2, 1.5, 2, 1.5, 2)), (0, (12, 2, 3, 2)),
+                 (0, (1.5, 1.5, 4.5, 1.5)))
+
+
+def _text(lang):
+    try:
+        return _TEXT[lang]
+    except KeyError:
+        raise ValueError(f"lang: got {lang!r}; one of 'en', 'ru'") from None
 
 
 def _axes(ax, size):
@@ -28,7 +115,7 @@ def _axes(ax, size):
     return fig, fig.add_subplot()
 
 
-def plot_region(region, design=None, kolchin_l1=None, family=None, ax=None):
+def plot_region(region, design=None, kolchin_l1=None, family=None, ax=None, lang="en"):
     """The region of existence of the ККМ-φ0 family in the (λ2, λ3) plane (Fig. 2).
 
     Parameters
@@ -44,39 +131,45 @@ def plot_region(region, design=None, kolchin_l1=None, family=None, ax=None):
     family : linkage.synthesis.FamilyArc, optional
         The family's admissible arc for the chosen λ1 (drawn dotted).
     ax : matplotlib.axes.Axes, optional
+    lang : {"en", "ru"}
+        Language of the labels.
 
     Returns
     -------
     matplotlib.axes.Axes
+
+    References
+    ----------
+    .. [1] Sereda (2016), Fig. 2, eq. (1)–(3), (6).
     """
-    fig, ax = _axes(ax, (6.4, 8.2))
-    phi0 = region.phi0_deg
-    ax.fill(region.l2, region.l3, color="tab:blue", alpha=0.12, lw=0,
-            label=f"region of existence of KKM-{phi0:g}°")
-    ax.plot(region.arc_l2, region.arc_l3, color="k", lw=1.6,
-            label="arc abc: unit circle (λ1 = 0)")
-    ax.plot(region.curve_l2, region.curve_l3, color="tab:blue", lw=2.0,
-            label=f"curve cda: μmin = 0 on {region.kolchin_line}")
+    T = _text(lang)
+    fig, ax = _axes(ax, (6.4, 8.4))
     lam = kolchin_l1 if kolchin_l1 is not None else (design.l1 if design is not None
                                                      else region.l1_max)
+    n = {"phi0": f"{region.phi0_deg:g}", "l1max": f"{region.l1_max:.4f}",
+         "lam": f"{lam:.4g}"}
+    n["kkm"] = T["kkm"].format(**n)
+    ax.fill(region.l2, region.l3, color="tab:blue", alpha=0.12, lw=0,
+            label=T["fill"].format(**n))
+    ax.plot(region.arc_l2, region.arc_l3, color="k", lw=1.2, label=T["arc"])
+    nums = region.kolchin_numbers
+    ax.plot(region.curve_l2, region.curve_l3, color="tab:blue", lw=2.8,
+            label=T["curve"].format(line=T["line" if len(nums) == 1 else "lines"],
+                                    nums="–".join(f"({k})" for k in nums)))
     hi = max(1.05, float(np.max(region.l2)) * 1.08)
     t = np.array([0.0, hi])
-    # Kolchin's lines as λ3 = k·λ2 + b, each with its own dash pattern and legend entry
-    lines = (("(1) 1 − λ1 = λ2 − λ3", 1.0, -(1 - lam), (0, (6, 3))),
-             ("(2) 1 − λ1 = λ3 − λ2", 1.0, 1 - lam, (0, (2, 2))),
-             ("(3) 1 + λ1 = λ2 + λ3", -1.0, 1 + lam, (0, (8, 3, 2, 3))))
-    for i, (txt, k, b, dash) in enumerate(lines):
-        ax.plot(t, k * t + b, color="0.3", lw=1.0, ls=dash,
-                label=f"Kolchin's line {txt}" + (f", λ1 = {lam:.4g}" if i == 0 else ""))
+    for num, formula, k, b, dash in _KOLCHIN:
+        label = T["kolchin"].format(n=num, l1=n["lam"], formula=formula)
+        ax.plot(t, k * t + b(lam), color="0.3", lw=1.0, ls=dash, label=label)
     if family is not None:
-        ax.plot(family.l2, family.l3, color="tab:green", lw=1.4, ls=":",
-                label=f"family arc for λ1 = {family.l1:.4g} (R = {family.radius:.4f})")
+        ax.plot(family.l2, family.l3, color="tab:green", lw=1.8, ls=(0, (1, 1.6)),
+                label=T["family"].format(l1=f"{family.l1:.4g}", R=f"{family.radius:.4f}"))
     if region.kkm5_l2 is not None:
-        ax.plot(region.kkm5_l2, region.kkm5_l3, color="tab:orange", lw=2.2,
-                label=f"KKM-{phi0:g}° → KKM-5 (λ3 = sin φ0)")
-        ax.plot(region.kkm7_l2, region.kkm7_l3, color="tab:purple", lw=2.2,
-                label=f"KKM-{phi0:g}° → KKM-7 (λ2 = sin φ0)")
-    # the letters of the paper's figure
+        ax.plot(region.kkm5_l2, region.kkm5_l3, color="tab:orange", lw=3.0, ls="-",
+                solid_capstyle="butt", label=T["kkm5"].format(**n))
+        ax.plot(region.kkm7_l2, region.kkm7_l3, color="tab:purple", lw=3.0,
+                ls=(0, (4, 1, 1, 1)), label=T["kkm7"].format(**n))
+    # the letters of the paper's figure (Latin in both languages, as in the paper)
     mid = len(region.arc_l2) // 2
     marks = {"a": (1.0, 0.0, (6, 4)), "b": (region.arc_l2[mid], region.arc_l3[mid], (5, 5)),
              "c": (0.0, 1.0, (5, 5)), "d": (*region.d, (-14, -12))}
@@ -85,23 +178,75 @@ def plot_region(region, design=None, kolchin_l1=None, family=None, ax=None):
         ax.annotate(name, (x, y), textcoords="offset points", xytext=off,
                     fontsize=11, fontstyle="italic")
     if design is not None:
-        ax.plot([design.l2], [design.l3], "o", color="tab:red", ms=7, zorder=5,
-                label=f"chosen: λ1 = {design.l1:.4f}, λ2 = {design.l2:.4f}, "
-                      f"λ3 = {design.l3:.4f}")
+        ax.plot([design.l2], [design.l3], "o", color="tab:red", mec="k", mew=0.8, ms=7,
+                zorder=5, label=T["chosen"].format(l1=f"{design.l1:.4f}",
+                                                   l2=f"{design.l2:.4f}",
+                                                   l3=f"{design.l3:.4f}"))
     ax.set_xlim(0, hi)
     ax.set_ylim(0, hi)
     ax.set_aspect("equal")
-    ax.set_xlabel("coupler λ2 = l2/l0  [–]")
-    ax.set_ylabel("rocker λ3 = l3/l0  [–]")
-    ax.set_title(f"Region of existence of KKM-{phi0:g}° (μ = 90° at φ0 = {phi0:g}°), "
-                 f"λ1max = {region.l1_max:.4f}", fontsize=10)
+    ax.set_xlabel(T["coupler"])
+    ax.set_ylabel(T["rocker"])
+    ax.set_title(T["region_title"].format(**n), fontsize=10)
     ax.grid(True, lw=0.4, alpha=0.5)
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.09), fontsize=8, ncols=1,
-              frameon=False)
+              frameon=False, handlelength=3.2)
     return ax
 
 
-def plot_mu_min_curves(curves, design=None, mu_required=None, ax=None):
+def _even(p, step):
+    """The finite points of the polyline ``p`` (n, 2), resampled every ``step`` along its
+    length (so that steep parts are as densely covered as flat ones).  Layout only."""
+    p = p[np.all(np.isfinite(p), axis=1)]
+    if len(p) < 2:
+        return p
+    s = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(p, axis=0).T))])
+    t = np.linspace(0.0, s[-1], max(2, int(s[-1] / step) + 1))
+    return np.column_stack([np.interp(t, s, p[:, 0]), np.interp(t, s, p[:, 1])])
+
+
+def _label_curves(ax, xs, ys, names, avoid, fontsize=8, step=0.02, label_in=0.12):
+    """Write ``names[i]`` on curve i where it is farthest from every other curve, from
+    the polylines ``avoid`` (a list of (x, y) arrays) and from the labels already placed
+    (like contour labels): a white box over its own curve only.  Distances in inches of
+    the axes, the curves resampled every ``step`` inches, a label counted ``label_in``
+    wide.  Layout only, no physics."""
+    fig = ax.figure
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    pos = ax.get_position()
+    w = pos.width * fig.get_figwidth()        # axes size in inches (before the layout:
+    h = pos.height * fig.get_figheight()      # the aspect is what matters)
+
+    def inches(x, y):
+        return (np.asarray(x) - x0) / (x1 - x0) * w, (np.asarray(y) - y0) / (y1 - y0) * h
+
+    pts = [_even(np.column_stack(inches(x, y)), step) for x, y in zip(xs, ys)]
+    extra = np.concatenate([np.empty((0, 2))] + [_even(np.column_stack(inches(x, y)), step)
+                                                 for x, y in avoid])
+    placed = []
+    texts = []
+    for i, (p, name) in enumerate(zip(pts, names)):
+        # candidates away from the frame (the box must fit inside the axes)
+        ok = ((p[:, 0] > 0.04 * w) & (p[:, 0] < 0.96 * w) & (p[:, 1] > 0.08 * h)
+              & (p[:, 1] < 0.92 * h))
+        cand = p[ok] if ok.any() else p
+        others = np.concatenate([q for j, q in enumerate(pts) if j != i] + [extra])
+        d = np.sqrt(((cand[:, None, :] - others[None, :, :]) ** 2).sum(-1)).min(axis=1)
+        if placed:          # another label counts as an obstacle of its own size
+            q = np.array(placed)
+            d = np.minimum(d, np.sqrt(((cand[:, None, :] - q[None, :, :]) ** 2).sum(-1))
+                           .min(axis=1) - label_in)
+        k = int(np.argmax(d))
+        placed.append(cand[k])
+        x = x0 + cand[k, 0] / w * (x1 - x0)
+        y = y0 + cand[k, 1] / h * (y1 - y0)
+        texts.append(ax.text(x, y, name, fontsize=fontsize, ha="center", va="center",
+                             zorder=6, bbox=dict(boxstyle="round,pad=0.15", fc="white",
+                                                 ec="none", alpha=0.9)))
+    return texts
+
+
+def plot_mu_min_curves(curves, design=None, mu_required=None, ax=None, lang="en"):
     """μmin over λ1 at constant λ2 (the paper's Fig. 3).
 
     Parameters
@@ -112,37 +257,54 @@ def plot_mu_min_curves(curves, design=None, mu_required=None, ax=None):
     mu_required : float, optional
         A required minimum, drawn as a horizontal line. [deg]
     ax : matplotlib.axes.Axes, optional
+    lang : {"en", "ru"}
+        Language of the labels.
 
     Returns
     -------
     matplotlib.axes.Axes
+
+    References
+    ----------
+    .. [1] Sereda (2016), eq. (16) and Fig. 3 (curves 1–9: λ2 = 0.1 … 0.9).
     """
-    fig, ax = _axes(ax, (9.0, 5.0))
-    if mu_required is not None:
-        ax.axhline(mu_required, color="tab:red", lw=0.9, ls="--",
-                   label=f"required μmin ≥ {mu_required:g}°")
+    T = _text(lang)
+    fig, ax = _axes(ax, (9.0, 5.2))
+    kkm = T["kkm"].format(phi0=f"{curves.phi0_deg:g}")
     import matplotlib as mpl
 
     colors = mpl.colormaps["tab10"].colors
-    for i, (l2, mu) in enumerate(zip(curves.l2, curves.mu_min_deg)):
-        ax.plot(curves.l1, mu, color=colors[i % 10], lw=1.5, label=f"{i + 1}: λ2 = {l2:.2f}")
-    if design is not None:
-        ax.plot([design.l1], [design.mu_min_deg], "o", color="tab:red", ms=7, zorder=5,
-                label=f"chosen: λ1 = {design.l1:.4f},\nλ2 = {design.l2:.3f}, "
-                      f"μmin = {design.mu_min_deg:.2f}°")
-    ax.set_xlim(0, float(curves.l1[-1]) * 1.04)
+    xmax = float(curves.l1[-1]) * 1.04
+    ax.set_xlim(0, xmax)
     ax.set_ylim(0, 92)
+    avoid = []
+    if mu_required is not None:
+        ax.axhline(mu_required, color="tab:red", lw=1.0, ls=(0, (5, 2)),
+                   label=T["required"].format(mu=f"{mu_required:g}"))
+        avoid.append((np.array([0.0, xmax]), np.full(2, float(mu_required))))
+    for i, (l2, mu) in enumerate(zip(curves.l2, curves.mu_min_deg)):
+        ax.plot(curves.l1, mu, color=colors[i % 10], lw=1.5,
+                ls=_CURVE_DASHES[i % len(_CURVE_DASHES)],
+                label=T["curve_n"].format(i=i + 1, l2=f"{l2:.2f}"))
+    if design is not None:
+        ax.plot([design.l1], [design.mu_min_deg], "o", color="tab:red", mec="k", mew=0.8,
+                ms=7, zorder=5, label=T["chosen_mu"].format(
+                    l1=f"{design.l1:.4f}", l2=f"{design.l2:.3f}",
+                    mu=f"{design.mu_min_deg:.2f}"))
+        avoid.append((np.array([design.l1]), np.array([design.mu_min_deg])))
     ax.set_yticks(np.arange(0, 91, 10))
-    ax.set_xlabel("crank λ1 = l1/l0  [–]")
-    ax.set_ylabel("minimum transmission angle μmin  [°]")
-    ax.set_title(f"KKM-{curves.phi0_deg:g}°: μmin over λ1 at constant λ2 (eq. 16)",
-                 fontsize=10)
+    ax.set_xlabel(T["crank"])
+    ax.set_ylabel(T["mu_min_axis"])
+    ax.set_title(T["mu_title"].format(kkm=kkm), fontsize=10)
     ax.grid(True, lw=0.4, alpha=0.5)
-    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False,
+              handlelength=3.6)
+    _label_curves(ax, [curves.l1] * len(curves.l2), list(curves.mu_min_deg),
+                  [str(i + 1) for i in range(len(curves.l2))], avoid)
     return ax
 
 
-def plot_transmission_angle(phi_deg, mu_deg, design, ax=None):
+def plot_transmission_angle(phi_deg, mu_deg, design, ax=None, lang="en"):
     """μ over a full crank turn of the chosen mechanism (eq. (12)).
 
     Parameters
@@ -154,34 +316,44 @@ def plot_transmission_angle(phi_deg, mu_deg, design, ax=None):
     design : linkage.synthesis.Design
         For φ0, μmin and where (marked), and the title.
     ax : matplotlib.axes.Axes, optional
+    lang : {"en", "ru"}
+        Language of the labels.
 
     Returns
     -------
     matplotlib.axes.Axes
+
+    References
+    ----------
+    .. [1] Sereda (2016), eq. (12)–(13).
     """
+    T = _text(lang)
     fig, ax = _axes(ax, (7.2, 4.4))
     d = design
-    ax.plot(phi_deg, mu_deg, color="tab:blue", lw=1.8, label="μ(φ)")
+    n = {"phi0": f"{d.phi0_deg:g}", "phi0b": f"{360 - d.phi0_deg:g}",
+         "mu": f"{d.mu_min_deg:.2f}", "at": f"{d.mu_min_at_deg:g}",
+         "l1": f"{d.l1:.4f}", "l2": f"{d.l2:.4f}", "l3": f"{d.l3:.4f}"}
+    n["kkm"] = T["kkm"].format(**n)
+    ax.plot(phi_deg, mu_deg, color="tab:blue", lw=1.8, label=T["mu_phi"])
     ax.axhline(90.0, color="0.5", lw=0.8, ls=":")
     for p in (d.phi0_deg, 360.0 - d.phi0_deg):
-        ax.plot([p], [90.0], "o", color="tab:green", ms=6, zorder=5)
-    ax.plot([], [], "o", color="tab:green", label=f"μ = 90° at φ = {d.phi0_deg:g}° and "
-                                                   f"{360 - d.phi0_deg:g}°")
-    ats = [d.mu_min_at_deg] if abs(d.phi0_deg - 90.0) > SAME_ANGLE_DEG else [0.0, 180.0, 360.0]
+        ax.plot([p], [90.0], "o", color="tab:green", mec="k", mew=0.6, ms=6, zorder=5)
+    ax.plot([], [], "o", color="tab:green", mec="k", mew=0.6,
+            label=T["right"].format(a=n["phi0"], b=n["phi0b"]))
+    off90 = abs(d.phi0_deg - 90.0) > SAME_ANGLE_DEG
+    ats = [d.mu_min_at_deg] if off90 else [0.0, 180.0, 360.0]
     if d.mu_min_at_deg == 0.0 and 360.0 not in ats:
         ats.append(360.0)
-    where = (f"{d.mu_min_at_deg:g}°" if abs(d.phi0_deg - 90.0) > SAME_ANGLE_DEG
-             else "0° and 180°")
-    ax.plot(ats, [d.mu_min_deg] * len(ats), "v", color="tab:red", ms=7, zorder=5,
-            label=f"μmin = {d.mu_min_deg:.2f}° at φ = {where}")
+    where = f"{n['at']}°" if off90 else T["two"].format(a="0", b="180")
+    ax.plot(ats, [d.mu_min_deg] * len(ats), "v", color="tab:red", mec="k", mew=0.6, ms=7,
+            zorder=5, label=T["min_at"].format(mu=n["mu"], where=where))
     ax.set_xlim(0, 360)
     ax.set_xticks(np.arange(0, 361, 30))
     ax.set_ylim(0, 95)
     ax.set_yticks(np.arange(0, 91, 15))
-    ax.set_xlabel("crank angle φ from the line of centres  [°]")
-    ax.set_ylabel("transmission angle μ  [°]")
-    ax.set_title(f"KKM-{d.phi0_deg:g}°: λ1 = {d.l1:.4f}, λ2 = {d.l2:.4f}, "
-                 f"λ3 = {d.l3:.4f}", fontsize=10)
+    ax.set_xlabel(T["phi_axis"])
+    ax.set_ylabel(T["mu_axis"])
+    ax.set_title(T["ta_title"].format(**n), fontsize=10)
     ax.grid(True, lw=0.4, alpha=0.5)
     ax.legend(loc="lower left", fontsize=8, framealpha=0.92)
     return ax

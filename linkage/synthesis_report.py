@@ -16,8 +16,9 @@ from crankbase.tolerances import ROUNDOFF_RTOL
 
 from . import synthesis as syn
 
-__all__ = ["table1", "mechanism_table", "format_deg_min", "summary_lines",
-           "write_workbook", "dumps_toml", "write_toml"]
+__all__ = ["table1", "mechanism_table", "format_deg_min", "summary_lines", "written_line",
+           "grashof_text", "method_text", "toml_header", "write_workbook", "dumps_toml",
+           "write_toml"]
 
 
 def format_deg_min(deg) -> str:
@@ -106,19 +107,165 @@ def mechanism_table(design, ground_m=None):
     return pd.DataFrame([row])
 
 
-def summary_lines(design, ground_m=None) -> list[str]:
-    """Human-readable lines describing the chosen mechanism (for the terminal)."""
+#: Words of the terminal summary, the workbook and the spec header: (ru, en).  The
+#: numbers are formatted once and put into the words of either language.
+_WORDS = {
+    "kkm": ("ККМ-{phi0}°", "KKM-{phi0}°"),
+    "region": ("{kkm}: область существования 0 < λ1 ≤ {l1max}, точка d = ({dx}, {dy}); "
+               "таблица 1: {rows}",
+               "{kkm}: region of existence 0 < λ1 ≤ {l1max}, point d = ({dx}, {dy}); "
+               "Table 1: {rows}"),
+    "design": ("{kkm} (μ = 90° при φ0 = {phi0}°), {method}",
+               "{kkm} (μ = 90° at φ0 = {phi0}°), {method}"),
+    "mu": ("  μmin = {mu}° ({dm}) при φ = {at}°;  μ(φ0) = {mu0}°",
+           "  μmin = {mu}° ({dm}) at φ = {at}°;  μ(φ0) = {mu0}°"),
+    "grashof": ("  Тип по Грасгофу: {t}", "  Grashof type: {t}"),
+    "lengths": ("  длины: кривошип {l1} м, шатун {l2} м, коромысло {l3} м, стойка {l0} м",
+                "  lengths: crank {l1} m, coupler {l2} m, rocker {l3} m, ground {l0} m"),
+    "written": ("записано в {out}: {files}", "written to {out}: {files}"),
+    "toml": ("{kkm}: кривошипно-коромысловый механизм с μ = 90° при φ = {phi0}° от линии "
+             "центров (стойка вдоль +x)\n"
+             "записано командой crankdyn synth; λ1 = {l1}, λ2 = {l2}, λ3 = {l3}, "
+             "μmin = {mu}°\n"
+             "звенья без масс, нагрузок нет: для сил добавьте [links.*] и [[load]]",
+             "{kkm}: crank-rocker with μ = 90° at φ = {phi0}° from the line of centres "
+             "(ground along +x)\n"
+             "written by crankdyn synth; λ1 = {l1}, λ2 = {l2}, λ3 = {l3}, μmin = {mu}°\n"
+             "massless links, no loads: add [links.*] and [[load]] for forces"),
+    "t1_title": ("Таблица 1. {kkm}: координаты точек пересечения с прямой Н. И. Колчина",
+                 "Table 1. {kkm}: points where the family meets Kolchin's line"),
+    "t1_sheet": ("Таблица 1", "table1"),
+    "mech_sheet": ("Механизм", "mechanism"),
+    "mech_title": ("{kkm}: выбранный механизм", "{kkm}: the chosen mechanism"),
+    "value": ("значение", "value"),
+}
+
+#: The Grashof types (linkage.fourbar.GrashofType values) in words: (ru, en).
+_GRASHOF = {
+    "crank-rocker": ("кривошипно-коромысловый", "crank-rocker"),
+    "double-crank": ("двухкривошипный", "double-crank"),
+    "double-rocker": ("двухкоромысловый", "double-rocker"),
+    "change-point": ("переходный (звенья могут встать в одну линию: особое положение)",
+                     "change-point (the links can become collinear: a dead position)"),
+    "non-Grashof": ("не удовлетворяет условию Грасгофа (ни одно звено не проворачивается)",
+                    "non-Grashof (no link turns fully)"),
+}
+
+#: The design tasks (linkage.synthesis's Design.method) in words: (ru, en).
+_METHOD = {
+    "given": ("заданы λ1, λ2, λ3", "given λ1, λ2, λ3"),
+    "given l2, l3": ("заданы λ2, λ3; λ1 по ур. (6)", "given λ2, λ3; λ1 from eq. (6)"),
+    "given l1, l2 = l3": ("задано λ1; λ2 = λ3 по ур. (6)", "given λ1; λ2 = λ3 from eq. (6)"),
+    "mu_min": ("заданы λ2 и μmin ≥ {mu}°", "given λ2 and μmin ≥ {mu}°"),
+    "step": ("; λ1 округлено в меньшую сторону до кратного {step}",
+             "; λ1 rounded down to a multiple of {step}"),
+}
+_MU_METHOD = re.compile(r"^given l2 and mu_min >= (\S+) deg"
+                        r"(?:, l1 rounded down to a multiple of (\S+))?$")
+
+
+def _lang(lang) -> int:
+    """0 for ru, 1 for en (the index into the (ru, en) word pairs)."""
+    if lang not in ("ru", "en"):
+        raise ValueError(f"lang: got {lang!r}; one of 'en', 'ru'")
+    return 0 if lang == "ru" else 1
+
+
+def _rows(n: int, lang) -> str:
+    """``n`` rows in words (Russian plural forms: 1 строка, 2 строки, 5 строк)."""
+    if lang == "en":
+        return f"{n} row" + ("" if n == 1 else "s")
+    tail = n % 100
+    if 11 <= tail <= 14:
+        word = "строк"
+    else:
+        word = {1: "строка", 2: "строки", 3: "строки", 4: "строки"}.get(n % 10, "строк")
+    return f"{n} {word}"
+
+
+def grashof_text(grashof, lang="en") -> str:
+    """The Grashof type in words of ``lang``.
+
+    Parameters
+    ----------
+    grashof : linkage.fourbar.GrashofType or str
+    lang : {"en", "ru"}
+    """
+    i = _lang(lang)
+    pair = _GRASHOF.get(str(grashof))
+    return pair[i] if pair else str(grashof)
+
+
+def method_text(method, lang="en") -> str:
+    """The design task (:attr:`linkage.synthesis.Design.method`) in words of ``lang``;
+    the numbers in it are copied as they are (the same text in both languages).  An
+    unknown task is returned unchanged."""
+    i = _lang(lang)
+    if method in _METHOD:
+        return _METHOD[method][i]
+    m = _MU_METHOD.match(str(method))
+    if m is None:
+        return str(method)
+    text = _METHOD["mu_min"][i].format(mu=m.group(1))
+    if m.group(2) is not None:
+        text += _METHOD["step"][i].format(step=m.group(2))
+    return text
+
+
+def summary_lines(region, table, design=None, ground_m=None, lang="en") -> list[str]:
+    """The terminal summary of a synthesis, wholly in ``lang`` (ru: the paper's Russian
+    terms; en: no Cyrillic letter, the family named KKM-φ0).  Every number is formatted
+    once, the same in both languages.
+
+    Parameters
+    ----------
+    region : linkage.synthesis.ExistenceRegion
+    table : pandas.DataFrame
+        Table 1 (:func:`table1`); only its number of rows is printed.
+    design : linkage.synthesis.Design, optional
+        The chosen mechanism.
+    ground_m : float, optional
+        Adds the absolute lengths. [m]
+    lang : {"en", "ru"}
+    """
+    i = _lang(lang)
+    W = {k: v[i] for k, v in _WORDS.items()}
+    n = {"phi0": f"{region.phi0_deg:g}", "l1max": f"{region.l1_max:.4f}",
+         "dx": f"{region.d[0]:.4f}", "dy": f"{region.d[1]:.4f}",
+         "rows": _rows(len(table), lang)}
+    n["kkm"] = W["kkm"].format(**n)
+    out = [W["region"].format(**n)]
+    if design is None:
+        return out
     d = design
-    out = [f"ККМ-{d.phi0_deg:g}° (μ = 90° at φ0 = {d.phi0_deg:g}°), {d.method}",
-           f"  λ1 = {d.l1:.4f}   λ2 = {d.l2:.4f}   λ3 = {d.l3:.4f}   (λ0 = 1)",
-           f"  μmin = {d.mu_min_deg:.4f}° ({format_deg_min(d.mu_min_deg)}) at φ = "
-           f"{d.mu_min_at_deg:g}°;  μ(φ0) = {d.mu_at_phi0_deg:.9g}°",
-           f"  Grashof type: {d.grashof}"]
+    out += [W["design"].format(kkm=n["kkm"], phi0=f"{d.phi0_deg:g}",
+                               method=method_text(d.method, lang)),
+            f"  λ1 = {d.l1:.4f}   λ2 = {d.l2:.4f}   λ3 = {d.l3:.4f}   (λ0 = 1)",
+            W["mu"].format(mu=f"{d.mu_min_deg:.4f}", dm=format_deg_min(d.mu_min_deg),
+                           at=f"{d.mu_min_at_deg:g}", mu0=f"{d.mu_at_phi0_deg:.9g}"),
+            W["grashof"].format(t=grashof_text(d.grashof, lang))]
     if ground_m is not None:
         crank, coupler, rocker, ground = d.lengths_m(ground_m)
-        out.append(f"  lengths: crank {crank:.6g} m, coupler {coupler:.6g} m, "
-                   f"rocker {rocker:.6g} m, ground {ground:.6g} m")
+        out.append(W["lengths"].format(l1=f"{crank:.6g}", l2=f"{coupler:.6g}",
+                                       l3=f"{rocker:.6g}", l0=f"{ground:.6g}"))
     return out
+
+
+def written_line(out, files, lang="en") -> str:
+    """The last line of the terminal summary: the folder and the files written."""
+    return _WORDS["written"][_lang(lang)].format(out=out, files=", ".join(files))
+
+
+def toml_header(design, lang="en") -> str:
+    """The comment lines over the spec TOML that ``crankdyn synth --ground`` writes.
+
+    The lengths are written in their shortest round-trip form (``repr``), as in the spec.
+    """
+    i = _lang(lang)
+    d = design
+    return _WORDS["toml"][i].format(kkm=_WORDS["kkm"][i].format(phi0=f"{d.phi0_deg:g}"),
+                                    phi0=f"{d.phi0_deg:g}", l1=repr(d.l1), l2=repr(d.l2),
+                                    l3=repr(d.l3), mu=f"{d.mu_min_deg:.6g}")
 
 
 # --------------------------------------------------------------------------- workbook
@@ -139,9 +286,12 @@ _MECH_LABELS = {
     "coupler_m": ("Шатун l2, м", "coupler_m"),
     "rocker_m": ("Коромысло l3, м", "rocker_m"),
 }
+_MECH_HEADER = ("Параметр", "quantity")
+#: Values of the mechanism sheet that are words, and their translation.
+_MECH_WORDS = {"grashof": grashof_text, "method": method_text}
 
 
-def write_workbook(path, table, phi0_deg, mechanism=None) -> None:
+def write_workbook(path, table, phi0_deg, mechanism=None, lang="en") -> None:
     """Write Table 1 (and the chosen mechanism) to an .xlsx workbook, atomically.
 
     Parameters
@@ -151,30 +301,39 @@ def write_workbook(path, table, phi0_deg, mechanism=None) -> None:
     table : pandas.DataFrame
         From :func:`table1`.
     phi0_deg : float
-        For the title. [deg]
+        For the titles. [deg]
     mechanism : pandas.DataFrame, optional
-        From :func:`mechanism_table`; written to a second sheet ``mechanism``.
+        From :func:`mechanism_table`; written to a second sheet.
+    lang : {"en", "ru"}
+        Language of the titles, the sheet names (ru ``Таблица 1``, ``Механизм``; en
+        ``table1``, ``mechanism``) and the values that are words (Grashof type, design
+        task).  The two header rows, Russian and English, are the same in both.
 
     Notes
     -----
-    Sheet ``table1``: row 1 the title, row 2 Russian headers, row 3 English headers
-    (the column names of the CSV), data from row 4.  Sheet ``mechanism``: one quantity
-    per row: Russian label, English name, value.
+    Table 1 sheet: row 1 the title, row 2 Russian headers, row 3 English headers (the
+    column names of the CSV), data from row 4.  Mechanism sheet: row 1 the title, row 2
+    the headers, then one quantity per row: Russian label, English name, value.
     """
     from openpyxl import Workbook
     from openpyxl.styles import Alignment, Font
 
     from crankbase.output import atomic_path, ensure_finite, full_precision_xlsx
 
+    i = _lang(lang)
+    W = {k: v[i] for k, v in _WORDS.items()}
+    kkm = W["kkm"].format(phi0=f"{phi0_deg:g}")
     ensure_finite(table, "Table 1")
     if mechanism is not None:
         ensure_finite(mechanism, "mechanism")
     wb = Workbook()
     ws = wb.active
-    ws.title = "table1"
-    ws.append([f"Таблица 1 / Table 1. ККМ-{phi0_deg:g}°: точки пересечения с прямой "
-               f"Н. И. Колчина / intersections with Kolchin's line"])
+    ws.title = W["t1_sheet"]
+    ws.append([W["t1_title"].format(kkm=kkm)])
     ws["A1"].font = Font(bold=True)
+    ws["A1"].alignment = Alignment(wrap_text=True, vertical="top")
+    ws.merge_cells("A1:D1")                    # the title wraps over the four columns
+    ws.row_dimensions[1].height = 32
     for hdr in _T1_HEADERS:
         ws.append(list(hdr))
     for cell in (*ws[2], *ws[3]):
@@ -187,23 +346,34 @@ def write_workbook(path, table, phi0_deg, mechanism=None) -> None:
             cell.number_format = "0.0000"
     for col, width in zip("ABCD", (14, 14, 14, 12)):
         ws.column_dimensions[col].width = width
+    sheets = [(ws, "1:3")]
     if mechanism is not None:
-        wm = wb.create_sheet("mechanism")
-        wm.append(["Параметр", "quantity", "value"])
-        for cell in wm[1]:
+        wm = wb.create_sheet(W["mech_sheet"])
+        wm.append([W["mech_title"].format(kkm=kkm)])
+        wm["A1"].font = Font(bold=True)
+        wm.append([*_MECH_HEADER, W["value"]])
+        for cell in wm[2]:
             cell.font = Font(bold=True)
+        width_c = 44
         for key, value in mechanism.iloc[0].items():
             ru, en = _MECH_LABELS.get(key, (key, key))
             v = value.item() if hasattr(value, "item") else value
+            if key in _MECH_WORDS:
+                v = _MECH_WORDS[key](v, lang)
             wm.append([ru, en, v])
+            if isinstance(v, str) and len(v) > width_c:
+                c = wm.cell(wm.max_row, 3)
+                c.alignment = Alignment(wrap_text=True, vertical="top")
+                lines = -(-len(v) * 105 // (100 * width_c))          # ceil(len·1.05/width)
+                wm.row_dimensions[wm.max_row].height = 15 * lines
+                for cell in wm[wm.max_row][:2]:
+                    cell.alignment = Alignment(vertical="top")
         wm.column_dimensions["A"].width = 36
         wm.column_dimensions["B"].width = 18
-        wm.column_dimensions["C"].width = 40
+        wm.column_dimensions["C"].width = width_c
+        sheets.append((wm, "1:2"))
     # print: A4 portrait, one page wide, header rows repeated on every page
-    for sheet, titles in ((ws, "1:3"), (wb["mechanism"] if mechanism is not None else None,
-                                        "1:1")):
-        if sheet is None:
-            continue
+    for sheet, titles in sheets:
         sheet.page_setup.paperSize = sheet.PAPERSIZE_A4
         sheet.page_setup.orientation = "portrait"
         sheet.sheet_properties.pageSetUpPr.fitToPage = True

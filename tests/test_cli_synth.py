@@ -3,6 +3,7 @@ temporary folder, read the CSV, the workbook and the spec TOML back."""
 from __future__ import annotations
 
 import math
+import re
 import subprocess
 import sys
 import time
@@ -89,18 +90,19 @@ def test_table1_csv_and_workbook(tmp_path):
     assert (t1["mu_min_deg"] == 0).all()
 
     wb = load_workbook(out / "kkm-30_synthesis.xlsx", read_only=True)
-    assert wb.sheetnames == ["table1", "mechanism"]
-    rows = list(wb["table1"].iter_rows(values_only=True))
-    assert "Таблица 1" in rows[0][0]
+    assert wb.sheetnames == ["Таблица 1", "Механизм"]          # --lang ru, the default
+    rows = list(wb["Таблица 1"].iter_rows(values_only=True))
+    assert rows[0][0].startswith("Таблица 1. ККМ-30°")
     assert rows[1][:3] == ("Длина λ1", "Длина λ2", "Длина λ3")
     assert rows[2][:3] == ("crank λ1", "coupler λ2", "rocker λ3")
     data = np.array([r[:4] for r in rows[3:]], dtype=float)
     np.testing.assert_array_equal(data, t1.to_numpy())          # full precision
-    mech = {r[1]: r[2] for r in wb["mechanism"].iter_rows(min_row=2, values_only=True)}
+    mech = {r[1]: r[2] for r in wb["Механизм"].iter_rows(min_row=3, values_only=True)}
     # seed 004, example 1 to Fig. 2: λ2 = 0.70, λ3 = 0.60 → λ1 = 0.09; μmin = 66°2′
     assert round(mech["crank l1"], 2) == 0.09
     assert mech["mu_min_deg"] == pytest.approx(66 + 2 / 60, abs=0.5 / 60)
-    assert mech["grashof"] == "crank-rocker"
+    assert mech["grashof"] == "кривошипно-коромысловый"
+    assert mech["method"] == "заданы λ2, λ3; λ1 по ур. (6)"
     csv = pd.read_csv(out / "kkm-30_mechanism.csv").iloc[0]
     assert mech["crank l1"] == csv["l1"] and mech["mu_min_deg"] == csv["mu_min_deg"]
 
@@ -125,7 +127,7 @@ def test_region_only_and_other_phi0(tmp_path):
     np.testing.assert_allclose((t1["l2"] - t1["l3"]).abs(), 1 - t1["l1"], atol=1e-12)
     assert t1["l1"].iloc[-1] == 1.0
     wb = load_workbook(out / "kkm-120_synthesis.xlsx", read_only=True)
-    assert wb.sheetnames == ["table1"]
+    assert wb.sheetnames == ["Таблица 1"]
 
 
 def test_rerun_replaces_outputs(tmp_path):
@@ -216,8 +218,10 @@ def test_synth_help_mentions_the_modes(capsys):
     with pytest.raises(SystemExit):
         main(["synth", "--help"])
     text = capsys.readouterr().out
-    for opt in ("--phi0", "--l1", "--l2", "--l3", "--mu-min", "--ground", "--output"):
+    for opt in ("--phi0", "--l1", "--l2", "--l3", "--mu-min", "--ground", "--output",
+                "--lang"):
         assert opt in text
+    assert "{ru,en}" in text and "default" in text.split("--lang")[1]
 
 
 def test_toml_writer_round_trip():
@@ -233,3 +237,124 @@ def test_toml_writer_round_trip():
     assert tomllib.loads(text) == spec
     with pytest.raises(ValueError, match="not finite"):
         dumps_toml({"a": math.inf})
+
+
+# ----------------------------------------------------------------------- --lang ru|en
+CYRILLIC = re.compile("[\u0400-\u04FF]")
+NUMBER = re.compile(r"\d+(?:\.\d+)?")
+PAPER = ["--phi0", "30", "--l2", "0.9", "--mu-min", "40", "--l1-step", "0.01", "--ground",
+         "0.5"]
+
+
+@pytest.fixture(scope="module")
+def both(tmp_path_factory):
+    """The paper's example (seed 004, example 2 to Fig. 3) run in both languages into one
+    folder name each: {lang: (folder, printed lines)}."""
+    import contextlib
+    import io
+
+    out = {}
+    for lang in ("ru", "en"):
+        d = tmp_path_factory.mktemp("synth") / "out"
+        buf = io.StringIO()
+        with contextlib.redirect_stdout(buf):
+            assert main(["synth", *PAPER, "-o", str(d), "--lang", lang]) == 0
+        out[lang] = (d, buf.getvalue().splitlines())
+    return out
+
+
+def test_default_language_is_russian(tmp_path, capsys):
+    assert run(["--l1", "0.146", "--no-plots"], tmp_path / "o") == 0
+    printed = capsys.readouterr().out
+    assert printed.startswith("ККМ-30°: область существования")
+    assert "Тип по Грасгофу: кривошипно-коромысловый" in printed
+
+
+def test_terminal_summary_speaks_the_report_language(both):
+    ru, en = both["ru"][1], both["en"][1]
+    assert not CYRILLIC.search("\n".join(en)), [ln for ln in en if CYRILLIC.search(ln)]
+    assert en[0].startswith("KKM-30°: region of existence 0 < λ1 ≤ 0.1896")
+    assert "  Grashof type: crank-rocker" in en
+    assert "  lengths: crank 0.04 m, coupler 0.45 m, rocker 0.120246 m, ground 0.5 m" in en
+    assert en[-1].startswith(f"written to {both['en'][0]}: kkm-30_table1.csv, ")
+    assert ru[0].startswith("ККМ-30°: область существования 0 < λ1 ≤ 0.1896")
+    assert "  Тип по Грасгофу: кривошипно-коромысловый" in ru
+    assert "  длины: кривошип 0.04 м, шатун 0.45 м, коромысло 0.120246 м, стойка 0.5 м" in ru
+    assert ru[-1].startswith(f"записано в {both['ru'][0]}: kkm-30_table1.csv, ")
+    # no English word in the Russian summary (file names and the paper's μmin, λ1max aside)
+    words = set(re.findall(r"[A-Za-z]{2,}", "\n".join(ru[:-1])))
+    assert words <= {"min", "max"}, words
+    # the numbers are formatted once: the same in both (the folders' names aside);
+    # seed 004: λ1 = 0.08, λ3 = 0.24 (0.2405), μmin 46°16′ with λ3 rounded (46°24′ exact)
+    assert sorted(NUMBER.findall("\n".join(ru[:-1]))) == sorted(
+        NUMBER.findall("\n".join(en[:-1])))
+    assert "  λ1 = 0.0800   λ2 = 0.9000   λ3 = 0.2405   (λ0 = 1)" in ru
+    assert any("46°24′" in ln for ln in ru) and any("46°24′" in ln for ln in en)
+
+
+def test_files_and_numbers_identical_in_both_languages(both):
+    (d_ru, _), (d_en, _) = both["ru"], both["en"]
+    names = sorted(p.name for p in d_ru.iterdir())
+    assert names == sorted(p.name for p in d_en.iterdir())
+    for name in names:
+        if name.endswith(".csv"):                   # tables: language-neutral, identical
+            assert (d_ru / name).read_bytes() == (d_en / name).read_bytes(), name
+    m = pd.read_csv(d_en / "kkm-30_mechanism.csv").iloc[0]
+    assert m["l1"] == 0.08 and round(m["l3"], 2) == 0.24           # seed 004, Fig. 3
+    # the spec TOML: same numbers, comments in the report language
+    t_ru = (d_ru / "kkm-30.toml").read_text(encoding="utf-8")
+    t_en = (d_en / "kkm-30.toml").read_text(encoding="utf-8")
+    assert tomllib.loads(t_ru) == tomllib.loads(t_en)
+    assert not CYRILLIC.search(t_en)
+    assert t_ru.startswith("# ККМ-30°: кривошипно-коромысловый механизм")
+
+
+def _cells(path):
+    wb = load_workbook(path)
+    return wb, [(ws.title, c.coordinate, c.value) for ws in wb.worksheets
+                for row in ws.iter_rows() for c in row if c.value is not None]
+
+
+def test_workbook_in_the_report_language_keeps_both_header_rows(both):
+    from linkage.synthesis_report import _MECH_HEADER, _MECH_LABELS, _T1_HEADERS
+
+    wb_ru, ru = _cells(both["ru"][0] / "kkm-30_synthesis.xlsx")
+    wb_en, en = _cells(both["en"][0] / "kkm-30_synthesis.xlsx")
+    assert wb_ru.sheetnames == ["Таблица 1", "Механизм"]
+    assert wb_en.sheetnames == ["table1", "mechanism"]
+    for wb in (wb_ru, wb_en):            # the two header rows, Russian then English
+        rows = [[c.value for c in r] for r in wb.worksheets[0].iter_rows(min_row=2,
+                                                                         max_row=3)]
+        assert rows == [list(h) for h in _T1_HEADERS]
+        assert [c.value for c in wb.worksheets[1][2]][:2] == list(_MECH_HEADER)
+    # English: Cyrillic only in the Russian header row and the Russian label column
+    russian = set(_T1_HEADERS[0]) | {ru_ for ru_, _ in _MECH_LABELS.values()} | {
+        _MECH_HEADER[0]}
+    bad = [(s, at, v) for s, at, v in en
+           if isinstance(v, str) and CYRILLIC.search(v) and v not in russian]
+    assert not bad, bad
+    assert not any(CYRILLIC.search(name) for name in wb_en.sheetnames)
+    mech_en = {r[1].value: r[2].value for r in wb_en["mechanism"].iter_rows(min_row=3)}
+    mech_ru = {r[1].value: r[2].value for r in wb_ru["Механизм"].iter_rows(min_row=3)}
+    assert mech_en["grashof"] == "crank-rocker"
+    assert mech_ru["grashof"] == "кривошипно-коромысловый"
+    assert mech_en["method"] == ("given λ2 and μmin ≥ 40°; λ1 rounded down to a multiple "
+                                 "of 0.01")
+    assert mech_ru["method"].startswith("заданы λ2 и μmin ≥ 40°")
+    assert wb_ru.worksheets[0]["A1"].value.startswith("Таблица 1. ККМ-30°")
+    assert wb_en.worksheets[0]["A1"].value.startswith("Table 1. KKM-30°")
+    # every number in the same cell in both languages, at full precision
+    num_ru = [(at, v) for _, at, v in ru if isinstance(v, (int, float))]
+    num_en = [(at, v) for _, at, v in en if isinstance(v, (int, float))]
+    assert num_ru == num_en and len(num_ru) > 28
+    assert mech_en["rocker l3"] == pd.read_csv(both["en"][0] / "kkm-30_mechanism.csv")[
+        "l3"].iloc[0]
+
+
+def test_plot_files_in_both_languages(both):
+    """The SVGs carry their texts: Russian terms in ru, no Cyrillic letter in en."""
+    for name in PLOTS:
+        ru = (both["ru"][0] / f"kkm-30_{name}.svg").read_text(encoding="utf-8")
+        en = (both["en"][0] / f"kkm-30_{name}.svg").read_text(encoding="utf-8")
+        assert not CYRILLIC.search(en), name
+        assert "ККМ-30°" in ru and "KKM-30°" in en, name

@@ -8,6 +8,7 @@ mechanisms, checked through the kinematic core (to_spec → load_spec → analyz
 from __future__ import annotations
 
 import math
+import re
 import subprocess
 import sys
 import warnings
@@ -427,3 +428,214 @@ def test_right_angle_family_arc():
     np.testing.assert_allclose(arc.l3_of(arc.l2[1:-1]), arc.l3[1:-1], rtol=1e-12)
     with pytest.raises(SynthesisError, match="l1"):
         right_angle_family(0.0, 30.0)
+
+
+# --------------------------------------------------------------------------- languages
+CYRILLIC = re.compile("[\u0400-\u04FF]")
+NUMBER = re.compile(r"\d+(?:\.\d+)?")
+
+
+def _numbers(text):
+    """Every number of a text, sorted (the word order differs between the languages)."""
+    return sorted(NUMBER.findall(text))
+
+
+def _paper_example():
+    # seed 004, example 2 to Fig. 3: λ2 = 0.90, μmin ≥ 40°, λ1 read off Fig. 3 to 0.01
+    return design_for_mu_min(0.90, 40.0, 30.0, l1_step=0.01)
+
+
+def test_summary_lines_in_both_languages():
+    from linkage import synthesis_report as rep
+
+    d = _paper_example()
+    reg, table = existence_region(30.0), rep.table1(30.0)
+    ru = "\n".join(rep.summary_lines(reg, table, d, 0.5, lang="ru"))
+    en = "\n".join(rep.summary_lines(reg, table, d, 0.5, lang="en"))
+    for text in (ru, en):
+        # seed 004: λ1 = 0.08, λ3 = 0.24 (0.2405 unrounded); λ1max = 0.1896, d = 0.5948
+        assert "λ1 = 0.0800" in text and "λ3 = 0.2405" in text and "0.1896" in text
+        assert "(0.5948, 0.5948)" in text and "46°24′" in text
+    assert not CYRILLIC.search(en), CYRILLIC.findall(en)
+    for term in ("KKM-30°: region of existence", "KKM-30° (μ = 90° at φ0 = 30°)",
+                 "given λ2 and μmin ≥ 40°; λ1 rounded down to a multiple of 0.01",
+                 "Grashof type: crank-rocker", "Table 1: 7 rows",
+                 "lengths: crank 0.04 m, coupler 0.45 m, rocker 0.120246 m, ground 0.5 m"):
+        assert term in en, term
+    for term in ("ККМ-30°: область существования", "ККМ-30° (μ = 90° при φ0 = 30°)",
+                 "заданы λ2 и μmin ≥ 40°; λ1 округлено в меньшую сторону до кратного 0.01",
+                 "Тип по Грасгофу: кривошипно-коромысловый", "таблица 1: 7 строк",
+                 "длины: кривошип 0.04 м, шатун 0.45 м, коромысло 0.120246 м, стойка 0.5 м"):
+        assert term in ru, term
+    # the Russian summary has no English word (μmin, λ1max: the paper's symbols)
+    assert set(re.findall(r"[A-Za-z]{2,}", ru)) <= {"min", "max"}, ru
+    assert _numbers(ru) == _numbers(en)
+    # the region alone: one line
+    assert rep.summary_lines(reg, table, lang="ru") == [ru.splitlines()[0]]
+
+
+def test_words_of_the_design_tasks_and_grashof_types():
+    from linkage import synthesis_report as rep
+
+    tasks = [design_from_l2_l3(0.70, 0.60, 30.0).method, design_equal_l2_l3(0.146, 30.0).method,
+             design_for_mu_min(0.90, 40.0, 30.0).method, _paper_example().method,
+             syn.design(*[0.1, *kolchin_line_points(0.1, 30.0)[0]], 30.0).method]
+    for method in tasks:
+        ru, en = rep.method_text(method, "ru"), rep.method_text(method, "en")
+        assert ru != method and en != method, method          # every task is translated
+        assert CYRILLIC.search(ru) and not CYRILLIC.search(en), (ru, en)
+        assert _numbers(ru) == _numbers(en), (ru, en, method)
+    ru, en = (rep.method_text(_paper_example().method, lang) for lang in ("ru", "en"))
+    assert ru == "заданы λ2 и μmin ≥ 40°; λ1 округлено в меньшую сторону до кратного 0.01"
+    assert en == "given λ2 and μmin ≥ 40°; λ1 rounded down to a multiple of 0.01"
+    assert rep.method_text("by hand", "ru") == "by hand"       # unknown: unchanged
+    for t in GrashofType:
+        ru, en = rep.grashof_text(t, "ru"), rep.grashof_text(t, "en")
+        assert CYRILLIC.search(ru) and not CYRILLIC.search(en) and en.startswith(t.value)
+    assert rep.grashof_text(GrashofType.CRANK_ROCKER, "ru") == "кривошипно-коромысловый"
+    with pytest.raises(ValueError, match="lang"):
+        rep.grashof_text("crank-rocker", "de")
+
+
+def test_russian_plural_of_rows():
+    from linkage.synthesis_report import _rows
+
+    assert [_rows(n, "ru") for n in (1, 2, 5, 11, 21, 22, 112)] == [
+        "1 строка", "2 строки", "5 строк", "11 строк", "21 строка", "22 строки", "112 строк"]
+    assert [_rows(n, "en") for n in (1, 7)] == ["1 row", "7 rows"]
+
+
+def test_toml_header_in_both_languages():
+    import tomllib
+
+    from linkage import synthesis_report as rep
+
+    d = _paper_example()
+    ru, en = rep.toml_header(d, "ru"), rep.toml_header(d, "en")
+    assert "ККМ-30°: кривошипно-коромысловый механизм" in ru and "KKM-30°: crank-rocker" in en
+    assert not CYRILLIC.search(en)
+    assert _numbers(ru) == _numbers(en)
+    assert f"λ3 = {d.l3!r}" in ru and f"λ3 = {d.l3!r}" in en    # the spec's own digits
+    text = rep.dumps_toml(d.to_spec(0.5), ru)
+    assert tomllib.loads(text)["mechanism"]["rocker"] == 0.5 * d.l3
+
+
+def _plot_texts(ax):
+    out = [t.get_text() for t in ax.texts]
+    out += [ax.get_title(), ax.get_xlabel(), ax.get_ylabel()]
+    leg = ax.get_legend()
+    if leg is not None:
+        out += [t.get_text() for t in leg.get_texts()]
+    return out
+
+
+def _figures(lang, phi0=30.0, design=None, mu_required=40.0):
+    from linkage import synthesis_plots as sp
+
+    d = design if design is not None else _paper_example()
+    phi = np.arange(0.0, 361.0)
+    return {"region": sp.plot_region(existence_region(phi0), d,
+                                     family=right_angle_family(d.l1, phi0), lang=lang),
+            "mu_min": sp.plot_mu_min_curves(syn.mu_min_curves(phi0), d,
+                                            mu_required=mu_required, lang=lang),
+            "transmission_angle": sp.plot_transmission_angle(
+                phi, transmission_angle_deg(phi, d.l1, d.l2, d.l3), d, lang=lang)}
+
+
+#: The paper's own Russian terms (seed 004, Sereda 2016) each Russian figure carries.
+RU_TERMS = {
+    "region": ("Область существования ККМ-30°", "область существования ККМ-30°",
+               "дуга abc", "кривая cda (μmin = 0)", "прямой Колчина (3)",
+               "прямая Колчина (1)", "прямая Колчина (2)", "прямая Колчина (3)",
+               "дуга семейства", "ККМ-30° → ККМ-5", "ККМ-30° → ККМ-7", "выбранный механизм",
+               "шатун λ2", "коромысло λ3"),
+    "mu_min": ("ККМ-30°: минимальный угол передачи μmin в функции λ1 при λ2 = const",
+               "требуемый μmin ≥ 40°", "выбранный механизм", "кривошип λ1",
+               "минимальный угол передачи μmin", "9: λ2 = 0.90"),
+    "transmission_angle": ("угол передачи μ(φ)", "μ = 90° при φ = 30° и 330°",
+                           "μmin = 46.39° при φ = 180°", "угол поворота кривошипа φ",
+                           "угол передачи μ"),
+}
+EN_TERMS = {
+    "region": ("Region of existence of KKM-30°", "arc abc", "curve cda (μmin = 0)",
+               "Kolchin's line (1)", "Kolchin's line (2)", "Kolchin's line (3)",
+               "family arc", "KKM-30° → KKM-5", "KKM-30° → KKM-7", "chosen mechanism",
+               "coupler λ2", "rocker λ3"),
+    "mu_min": ("KKM-30°: μmin over λ1 at constant λ2", "required μmin ≥ 40°",
+               "chosen mechanism", "crank λ1", "9: λ2 = 0.90"),
+    "transmission_angle": ("transmission angle μ(φ)", "μ = 90° at φ = 30° and 330°",
+                           "μmin = 46.39° at φ = 180°", "crank angle φ"),
+}
+
+
+def test_plots_speak_the_report_language_with_the_same_numbers():
+    ru, en = _figures("ru"), _figures("en")
+    for key in ru:
+        t_ru = "\n".join(_plot_texts(ru[key]))
+        t_en = "\n".join(_plot_texts(en[key]))
+        assert not CYRILLIC.search(t_en), (key, CYRILLIC.findall(t_en))
+        for term in RU_TERMS[key]:
+            assert term in t_ru, (key, term)
+        for term in EN_TERMS[key]:
+            assert term in t_en, (key, term)
+        assert _numbers(t_ru) == _numbers(t_en), key
+    with pytest.raises(ValueError, match="lang"):
+        _figures("de")
+
+
+def test_region_plot_for_phi0_above_90_names_kolchin_lines_1_2():
+    d = design_equal_l2_l3(0.3, 120.0)
+    reg = existence_region(120.0)
+    assert reg.kolchin_numbers == (1, 2) and existence_region(30.0).kolchin_numbers == (3,)
+    from linkage import synthesis_plots as sp
+
+    for lang, want in (("ru", "на прямых Колчина (1)–(2)"),
+                       ("en", "on Kolchin's lines (1)–(2)")):
+        texts = "\n".join(_plot_texts(sp.plot_region(reg, d, lang=lang)))
+        assert want in texts, texts
+
+
+def _style(line):
+    """What tells a curve apart in black-and-white print: dash pattern, width, marker."""
+    dashes = getattr(line, "_unscaled_dash_pattern", None)
+    return (line.get_linestyle(), str(dashes), line.get_linewidth(), line.get_marker())
+
+
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_curves_differ_by_line_style_not_by_colour_only(lang):
+    from matplotlib.lines import Line2D
+
+    for key, ax in _figures(lang).items():
+        handles = [h for h in ax.get_legend().legend_handles if isinstance(h, Line2D)]
+        styles = [_style(h) for h in handles]
+        assert len(set(styles)) == len(styles), (key, styles)
+        labelled = [ln for ln in ax.lines if not ln.get_label().startswith("_")]
+        assert len({_style(ln) for ln in labelled}) == len(labelled), key
+
+
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_fig3_curves_carry_their_numbers_without_overlap(lang):
+    """Each curve of Fig. 3 is numbered on the figure (as in the paper): the numbers 1…9,
+    each inside the axes, no two label boxes overlapping, no box on the chosen point."""
+    ax = _figures(lang)["mu_min"]
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    canvas = FigureCanvasAgg(ax.figure)
+    canvas.draw()                                             # the final layout
+    r = canvas.get_renderer()
+    labels = [t for t in ax.texts if t.get_text().isdigit()]
+    assert [t.get_text() for t in labels] == [str(i) for i in range(1, 10)]
+    boxes = [t.get_window_extent(r) for t in labels]
+    frame = ax.get_window_extent(r)
+    for i, b in enumerate(boxes):
+        assert frame.x0 <= b.x0 and b.x1 <= frame.x1 and frame.y0 <= b.y0 and b.y1 <= frame.y1
+        for c in boxes[i + 1:]:
+            assert not b.overlaps(c), (labels[i].get_text(), b, c)
+    chosen = ax.transData.transform([[_paper_example().l1, _paper_example().mu_min_deg]])[0]
+    assert not any(b.contains(*chosen) for b in boxes)
+    # every number sits on its own curve: the curve passes through the label's box
+    curves = syn.mu_min_curves(30.0)
+    for t, mu in zip(labels, curves.mu_min_deg):
+        x, y = t.get_position()
+        ok = np.isfinite(mu)
+        assert np.interp(x, curves.l1[ok], mu[ok]) == pytest.approx(y, abs=2.0), t.get_text()

@@ -43,9 +43,11 @@ def runs(tmp_path_factory):
         assert main(["linkage", "--example", ex, "-o", str(d), "--no-plots",
                      "--lang", "en"]) == 0
         out[("linkage", ex, "en")] = next(d.glob("*.xlsx"))
-    d = tmp_path_factory.mktemp("synth")
-    assert main(["synth", "--phi0", "30", "--l1", "0.15", "-o", str(d), "--no-plots"]) == 0
-    out[("synth",)] = next(d.glob("*.xlsx"))
+    for lang in ("ru", "en"):
+        d = tmp_path_factory.mktemp(f"synth_{lang}")
+        assert main(["synth", "--phi0", "30", "--l1", "0.15", "--ground", "0.4", "-o",
+                     str(d), "--no-plots", "--lang", lang]) == 0
+        out[("synth", lang)] = next(d.glob("*.xlsx"))
     return out
 
 
@@ -120,6 +122,30 @@ def test_english_workbooks_have_no_cyrillic(runs):
             for name in z.namelist():
                 if name.startswith("xl/charts/"):
                     assert not CYRILLIC.search(z.read(name).decode()), (key, name)
+
+
+def test_english_synthesis_workbook_has_cyrillic_only_in_its_russian_headers(runs):
+    """The synthesis workbook keeps a Russian and an English header row in both languages
+    (and a Russian and an English name of each quantity); everything else of the English
+    one (title, sheet names, the Grashof type, the design task) has no Cyrillic letter,
+    the Russian one names the family ККМ-30° and its sheets in Russian."""
+    from linkage.synthesis_report import _MECH_HEADER, _MECH_LABELS, _T1_HEADERS
+
+    russian = set(_T1_HEADERS[0]) | {r for r, _ in _MECH_LABELS.values()} | {_MECH_HEADER[0]}
+    en = load_workbook(runs[("synth", "en")])
+    bad = [(s, at, v) for s, at, v in _strings(en) if CYRILLIC.search(v) and v not in russian]
+    assert not bad, bad
+    ru = load_workbook(runs[("synth", "ru")])
+    assert ru.sheetnames == ["Таблица 1", "Механизм"] and en.sheetnames == ["table1",
+                                                                           "mechanism"]
+    text = "\n".join(v for _, _, v in _strings(ru))
+    for term in ("ККМ-30°", "Н. И. Колчина", "выбранный механизм", "кривошипно-коромысловый",
+                 "задано λ1; λ2 = λ3 по ур. (6)", "значение"):
+        assert term in text, term
+    # the same numbers in the same cells
+    nums = [[(c.coordinate, c.value) for ws in wb.worksheets for row in ws.iter_rows()
+             for c in row if isinstance(c.value, (int, float))] for wb in (ru, en)]
+    assert nums[0] == nums[1]
 
 
 def test_russian_workbooks_carry_every_textbook_symbol(runs):
@@ -347,7 +373,7 @@ def test_workbooks_render_on_a4_pages(runs, tmp_path):
     and every sheet yields at least one page."""
     chosen = [("engine", "petrol", "ru", "seed"), ("engine", "diesel", "en", "kolchin"),
               ("linkage", "ratchet"), ("linkage", "press", "en"),
-              ("synth",)]                                 # every layout, each language
+              ("synth", "ru"), ("synth", "en")]           # every layout, each language
     for key in chosen:
         path = runs[key]
         pages = page_sizes(path, tmp_path / "_".join(key))
