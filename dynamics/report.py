@@ -8,24 +8,25 @@ __all__ = ["summary_rows", "summary_lines", "build_workbook", "column_label"]
 
 
 #: Labels of the summary rows: key → (Russian textbook symbol or words, English).  The
-#: Russian symbols are those of the plots (Jп, Mд, Mс, ΔT for the change of kinetic
-#: energy, Jм for the flywheel, ωср for the mean speed).
+#: symbols are those of the plots: Russian Jп, Mд, Mс, ΔT for the change of kinetic
+#: energy, Jм for the flywheel, ωср for the mean speed; English Jred, Md, Mc, ΔE, JF, ωm
+#: (Greek letters, no Cyrillic).
 _ROWS = {
-    "w_max": ("ωmax", "omega_max"),
-    "w_min": ("ωmin", "omega_min"),
-    "w_m": ("ωср = (ωmax + ωmin)/2", "omega_m = (max + min)/2"),
-    "w_t": ("ω средняя по времени", "time-mean omega"),
-    "delta": ("δ", "delta"),
-    "dT": ("ΔTmax", "dE_max"),
-    "JF": ("Jм (маховик)", "J_F (flywheel)"),
+    "w_max": ("ωmax", "ωmax"),
+    "w_min": ("ωmin", "ωmin"),
+    "w_m": ("ωср = (ωmax + ωmin)/2", "ωm = (ωmax + ωmin)/2"),
+    "w_t": ("ω средняя по времени", "time-mean ω"),
+    "delta": ("δ", "δ"),
+    "dT": ("ΔTmax", "ΔEmax"),
+    "JF": ("Jм (маховик)", "JF (flywheel)"),
     "cycle": ("время цикла", "cycle time"),
-    "Mc": ("Mс = const", "M_c (constant)"),
-    "Md": ("Mд = const", "M_d (constant)"),
-    "delta_asked": ("δ заданный", "delta asked"),
-    "dT_const": ("ΔTmax при ω = const", "dE_max at constant speed"),
-    "Jc": ("Jc (среднее Jп за цикл)", "J_c (cycle mean of J_red)"),
-    "J_classic": ("Jм = ΔTmax/(δ ωср²) − Jc", "J_F classic = dE/(delta w_m²) - J_c"),
-    "J_exact": ("Jм точный", "J_F exact"),
+    "Mc": ("Mс = const", "Mc (constant)"),
+    "Md": ("Mд = const", "Md (constant)"),
+    "delta_asked": ("δ заданный", "δ asked"),
+    "dT_const": ("ΔTmax при ω = const", "ΔEmax at constant speed"),
+    "Jc": ("Jc (среднее Jп за цикл)", "Jc (cycle mean of Jred)"),
+    "J_classic": ("Jм = ΔTmax/(δ ωср²) − Jc", "JF classic = ΔEmax/(δ ωm²) − Jc"),
+    "J_exact": ("Jм точный", "JF exact"),
     "startup": ("время разгона", "start-up time"),
 }
 
