@@ -253,6 +253,9 @@ def _symbol_table(ws, r, lang, bold, body):
     whose two forms differ."""
     from engine.symbols import correspondence
 
+    from openpyxl.worksheet.pagebreak import Break
+
+    ws.row_breaks.append(Break(id=r - 1))      # the table starts a page, with its title
     ru = lang == "ru"
     title = ("Обозначения русского и английского отчётов" if ru
              else "Symbols of this report (the Russian report and the README list the "
