@@ -79,8 +79,8 @@ def run(args) -> int:
 
     from dynamics.rotor import plot_mr_polygon, rotor_balance
 
-    from crankbase.output import (check_not_input, ensure_finite, safe_name, staged_output,
-                                  write_csv)
+    from crankbase.output import (check_not_input, ensure_finite, safe_name, save_figure,
+                                  staged_output, write_csv)
 
     from .cmd_dynamics import report_stale, written_line
 
@@ -102,8 +102,7 @@ def run(args) -> int:
     with staged_output(out, inputs=[spec_path], unit=f"balance:{name}") as stage:
         write_csv(table, stage / names[0])
         write_csv(res.shares, stage / names[1])
-        fig.savefig(stage / names[2], dpi=110)
-        fig.savefig(stage / names[3])
+        save_figure(fig, stage / f"{name}_rotor_polygons")
     fig.clear()
     print("\n".join(rotor_lines(res, table, args.lang)
                     + [written_line(csvs, 1, out, args.lang)]))
@@ -169,8 +168,8 @@ def _run_linkage(args, spec_path, out):
 
     from dynamics.shaking import mechanism_balance, plot_shaking_force, plot_shaking_locus
 
-    from crankbase.output import (check_not_input, ensure_finite, safe_name, staged_output,
-                                  write_csv)
+    from crankbase.output import (check_not_input, ensure_finite, safe_name, save_figure,
+                                  staged_output, write_csv)
 
     from .cmd_dynamics import report_stale, written_line
 
@@ -194,8 +193,7 @@ def _run_linkage(args, spec_path, out):
         write_csv(res.counterweights, stage / csvs[0])
         write_csv(table, stage / csvs[1])
         for key, fig in figs.items():
-            fig.savefig(stage / f"{name}_{key}.png", dpi=110)
-            fig.savefig(stage / f"{name}_{key}.svg")
+            save_figure(fig, stage / f"{name}_{key}")
     for fig in figs.values():
         fig.clear()
     print("\n".join(linkage_lines(res, args.lang)

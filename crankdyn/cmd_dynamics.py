@@ -75,7 +75,7 @@ def run(args) -> int:
     from dynamics.spec import load_dynamics_spec, run_job
 
     from crankbase.output import (check_not_input, ensure_finite, full_precision_xlsx,
-                                  safe_name, staged_output, write_csv)
+                                  safe_name, save_figure, staged_output, write_csv)
 
     from .cmd_engine import output_names
 
@@ -108,8 +108,7 @@ def run(args) -> int:
         with full_precision_xlsx():
             wb.save(stage / xlsx)
         for key, fig in figs.items():
-            fig.savefig(stage / f"{plots[key]}.png", dpi=110)
-            fig.savefig(stage / f"{plots[key]}.svg")
+            save_figure(fig, stage / plots[key])
     for fig in figs.values():
         fig.clear()
 

@@ -30,7 +30,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from crankbase.output import safe_name
+from crankbase.output import safe_name, save_figure
 
 from .drawing import layout_sheets, position_figure, sheet_figure, title_fields
 from .dxf import write_dxf
@@ -99,10 +99,9 @@ def write_plans(result, plans, folder, *, name=None, lang="ru", sheet="A1",
     sheets = layout_sheets(result, plans, lang, sheet, fields)   # raises before writing
     for pp in plans:
         fig = position_figure(pp, lang)
-        fig.savefig(folder / f"{stem}_plans_{pp.tag}.svg")
-        fig.savefig(folder / f"{stem}_plans_{pp.tag}.pdf")
+        save_figure(fig, folder / f"{stem}_plans_{pp.tag}", formats=("svg", "pdf"))
         if previews:
-            fig.savefig(folder / f"{stem}_plans_{pp.tag}.png", dpi=150)
+            save_figure(fig, folder / f"{stem}_plans_{pp.tag}", formats=("png",), dpi=150)
     _csv(plans_table(plans), folder / f"{stem}_plans.csv")
     _csv(lever_table(plans), folder / f"{stem}_lever.csv")
     _csv(lever_forces_table(plans), folder / f"{stem}_lever_forces.csv")

@@ -178,7 +178,7 @@ def test_one_set_of_english_symbols():
         return (math.replace("$", "").replace("\\Delta ", "Δ").replace("_", "")
                 .replace("{", "").replace("}", ""))
     for key, ru_en_what in SYMBOLS.items():
-        assert plain(math_symbol(key)) == ru_en_what[1].replace(" ", " ")
+        assert plain(math_symbol(key)) == ru_en_what[1], key
         assert to_english(ru_en_what[0]) == ru_en_what[1], key
     keys = dict(p="p_gas", dPg="dPg", Pj="Pj", P="P", S="S", N="N", K="K", T="T", M="M",
                 R="R", Kr="Kr", Osh="pole_R")
