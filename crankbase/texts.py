@@ -1,0 +1,170 @@
+"""The one text layer: every word that crankdyn shows, keyed, in every language.
+
+Words live in gettext catalogues, one folder per language and one ``.po`` file per area
+(``crankbase/locale/<lang>/<area>.po``: ``common``, ``engine``, ``linkage``, ``dynamics``,
+``errors`` …; a key's first dotted part names its area: ``engine.summary.title`` lives in
+``engine.po``).  The ``msgid`` is the key, the ``msgstr`` the text in that language; the
+English catalogue is the reference, and every other language must hold every one of its
+keys (a test checks this, and that each translation uses the same ``{fields}``).  A text
+is a :meth:`str.format` template: numbers are passed in and formatted by the template, so
+a translator controls word order.
+
+Plural forms are gettext's: an entry with ``msgid_plural`` has one ``msgstr[i]`` per form
+of its language, chosen by the ``Plural-Forms`` rule in the catalogue's header (Russian has
+three: «1 график», «3 графика», «22 графика», «5 графиков»).  The catalogues are read with
+Babel and looked up through the standard library's :class:`gettext.GNUTranslations`.
+
+Adding a language is filling a catalogue, not changing code: copy ``locale/en`` to
+``locale/<lang>``, set the header's ``Language`` and ``Plural-Forms``, translate every
+``msgstr``; the language is offered (:func:`languages`) once its catalogue is complete.
+
+Examples
+--------
+>>> from crankbase.texts import texts
+>>> t = texts("ru")
+>>> t.n("common.plots", 22)
+'22 графика'
+>>> texts("en").n("common.plots", 1)
+'1 plot'
+"""
+from __future__ import annotations
+
+import functools
+import io
+import re
+import string
+from pathlib import Path
+
+__all__ = ["Texts", "texts", "languages", "catalogue_languages", "check_lang", "keys",
+           "LOCALE_DIR", "REFERENCE"]
+
+#: Folder of the catalogues (shipped as package data of ``crankbase``).
+LOCALE_DIR = Path(__file__).resolve().parent / "locale"
+
+#: The reference language: every other catalogue must hold every one of its keys.
+REFERENCE = "en"
+
+
+class Texts:
+    """The texts of one language.
+
+    Call it with a key and the template's fields: ``t("common.wrote", files="a.csv",
+    folder="out")``; :meth:`n` chooses a plural form by a count.  A key missing from this
+    language's catalogue falls back to the reference language (English); a key missing
+    there too is a programming error (:class:`KeyError`).
+    """
+
+    def __init__(self, lang: str, translations, keys: frozenset, fallback=None):
+        self.lang = lang
+        self._tr = translations
+        self._keys = keys
+        self._fallback = fallback
+
+    def _source(self, key):
+        if key in self._keys:
+            return self
+        if self._fallback is not None and key in self._fallback._keys:
+            return self._fallback
+        raise KeyError(f"text key {key!r} is in no catalogue ({self.lang}, {REFERENCE})")
+
+    def __call__(self, key: str, /, **fields) -> str:
+        src = self._source(key)
+        template = src._tr.gettext(key)
+        return template.format(**fields) if fields else template
+
+    def n(self, key: str, count, /, **fields) -> str:
+        """The plural form of ``key`` for ``count`` (passed to the template as ``n``)."""
+        src = self._source(key)
+        template = src._tr.ngettext(key, key, int(count))
+        return template.format(n=count, **fields)
+
+    def has(self, key: str) -> bool:
+        """Whether this language's own catalogue (not the fallback) holds ``key``."""
+        return key in self._keys
+
+    def __repr__(self):
+        return f"Texts({self.lang!r}, {len(self._keys)} keys)"
+
+
+def catalogue_languages() -> tuple[str, ...]:
+    """Every language with a catalogue folder, complete or not."""
+    return tuple(sorted(p.name for p in LOCALE_DIR.iterdir()
+                        if p.is_dir() and any(p.glob("*.po"))))
+
+
+@functools.lru_cache(maxsize=None)
+def _catalogue(lang: str):
+    """``(GNUTranslations, keys)`` of one language: every ``.po`` of its folder read with
+    Babel, compiled in memory and loaded by :mod:`gettext`."""
+    import gettext
+
+    from babel.messages.catalog import Catalog
+    from babel.messages.mofile import write_mo
+    from babel.messages.pofile import read_po
+
+    folder = LOCALE_DIR / lang
+    files = sorted(folder.glob("*.po"))
+    if not files:
+        raise KeyError(lang)
+    merged = None
+    for path in files:
+        with path.open("rb") as fh:
+            cat = read_po(fh, locale=None, domain=path.stem)
+        if merged is None:
+            merged = Catalog(locale=None, domain="crankdyn")
+            # the header (plural rule) of the first file; every file of a language has
+            # the same one (a test checks it)
+            merged.mime_headers = cat.mime_headers
+        for msg in cat:
+            if msg.id and not msg.fuzzy:
+                if msg.id in merged:
+                    area = path.stem
+                    raise ValueError(f"{lang}/{area}.po: key {msg.id!r} is also in another "
+                                     f"file of {lang}")
+                merged[msg.id] = msg
+    buf = io.BytesIO()
+    write_mo(buf, merged)
+    buf.seek(0)
+    keys = frozenset(m.id if isinstance(m.id, str) else m.id[0] for m in merged if m.id)
+    return gettext.GNUTranslations(buf), keys
+
+
+@functools.lru_cache(maxsize=None)
+def texts(lang: str = "ru") -> Texts:
+    """The :class:`Texts` of ``lang`` (a :func:`catalogue_languages` code), cached."""
+    if lang not in catalogue_languages():
+        check_lang(lang)
+    tr, keys = _catalogue(lang)
+    fallback = None if lang == REFERENCE else texts(REFERENCE)
+    return Texts(lang, tr, keys, fallback)
+
+
+def keys(lang: str = REFERENCE) -> frozenset:
+    """Every key of ``lang``'s own catalogue."""
+    return _catalogue(lang)[1]
+
+
+@functools.lru_cache(maxsize=None)
+def languages() -> tuple[str, ...]:
+    """The languages offered for reports: those whose catalogue holds every key of the
+    reference catalogue (Russian first, the default of the course projects)."""
+    ref = keys(REFERENCE)
+    done = [lang for lang in catalogue_languages() if ref <= keys(lang)]
+    return tuple(sorted(done, key=lambda code: (code != "ru", code != "en", code)))
+
+
+def check_lang(lang, key: str = "lang") -> str:
+    """``lang`` if it is an offered language, else a :class:`~crankbase.errors.SpecError`
+    naming ``key``, the value and the valid choices."""
+    offered = languages()
+    if lang in offered:
+        return lang
+    from .errors import Problem, SpecError
+
+    raise SpecError(Problem(key, f"got {lang!r}; must be one of {', '.join(offered)}"))
+
+
+def fields(template: str) -> set[str]:
+    """The names of a template's ``{fields}`` (for the catalogue checks)."""
+    return {re.split(r"[.\[]", f)[0] for _, f, _, _ in string.Formatter().parse(template)
+            if f is not None}

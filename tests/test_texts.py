@@ -1,0 +1,145 @@
+"""The one text layer (crankbase.texts): every key in every language, the same fields,
+plural forms by each language's own rule, and every key the code uses in the catalogue."""
+from __future__ import annotations
+
+import ast
+import re
+from pathlib import Path
+
+import pytest
+from babel.messages.pofile import read_po
+
+from crankbase import texts as T
+from crankbase.errors import SpecError
+
+ROOT = Path(__file__).resolve().parent.parent
+LIBRARIES = ("crankbase", "linkage", "engine", "dynamics", "plans", "crankdyn")
+
+
+def _entries(lang):
+    """{key: (is_plural, [templates])} of every .po file of ``lang``."""
+    out = {}
+    for path in sorted((T.LOCALE_DIR / lang).glob("*.po")):
+        with path.open("rb") as fh:
+            cat = read_po(fh)
+        for m in cat:
+            if not m.id:
+                continue
+            key = m.id[0] if isinstance(m.id, (tuple, list)) else m.id
+            strings = list(m.string) if isinstance(m.string, (tuple, list)) else [m.string]
+            assert key not in out, f"{lang}: key {key!r} twice"
+            out[key] = (m.pluralizable, strings, path.stem)
+    return out
+
+
+def test_russian_and_english_hold_the_same_keys():
+    en, ru = _entries("en"), _entries("ru")
+    assert set(en) == set(ru), (sorted(set(en) - set(ru)), sorted(set(ru) - set(en)))
+
+
+@pytest.mark.parametrize("lang", T.catalogue_languages())
+def test_every_translation_is_complete_and_uses_the_english_fields(lang):
+    en, other = _entries("en"), _entries(lang)
+    assert set(other) <= set(en), f"{lang}: keys not in en: {sorted(set(other) - set(en))}"
+    for key, (plural, strings, area) in other.items():
+        assert key.split(".")[0] == area, f"{lang}: {key} belongs in {key.split('.')[0]}.po"
+        e_plural, e_strings, _ = en[key]
+        assert plural == e_plural, f"{lang}: {key}: plural in one language only"
+        want = set().union(*(T.fields(s) for s in e_strings))
+        for s in strings:
+            assert s, f"{lang}: {key}: empty text"
+            assert T.fields(s) == want, f"{lang}: {key}: fields {T.fields(s)} != {want}"
+
+
+@pytest.mark.parametrize("lang", T.catalogue_languages())
+def test_each_language_has_one_plural_rule_and_the_right_number_of_forms(lang):
+    rules = set()
+    for path in (T.LOCALE_DIR / lang).glob("*.po"):
+        with path.open("rb") as fh:
+            cat = read_po(fh)
+        rules.add(cat.plural_forms)
+        for m in cat:
+            if m.id and m.pluralizable:
+                assert len(m.string) == cat.num_plurals, (path.name, m.id)
+    assert len(rules) == 1, f"{lang}: different Plural-Forms headers {rules}"
+
+
+@pytest.mark.parametrize("n, want", [(1, "1 график"), (2, "2 графика"), (4, "4 графика"),
+                                     (5, "5 графиков"), (11, "11 графиков"),
+                                     (12, "12 графиков"), (21, "21 график"),
+                                     (22, "22 графика"), (25, "25 графиков"),
+                                     (101, "101 график"), (111, "111 графиков")])
+def test_russian_plural_agreement(n, want):
+    # The Russian rule (1 / 2–4 / 5–20, by the last one or two digits), the gettext
+    # manual's "Plural forms" example for Russian.
+    assert T.texts("ru").n("common.plots", n) == want
+
+
+def test_english_plural_and_rows():
+    assert T.texts("en").n("common.plots", 1) == "1 plot"
+    assert T.texts("en").n("common.plots", 0) == "0 plots"
+    assert T.texts("ru").n("common.rows", 3) == "3 строки"
+
+
+def test_offered_languages_are_complete_russian_first():
+    offered = T.languages()
+    assert offered[:2] == ("ru", "en")
+    ref = T.keys("en")
+    for lang in offered:
+        assert ref <= T.keys(lang)
+
+
+def test_unknown_language_is_a_spec_error_naming_the_choices():
+    with pytest.raises(SpecError, match=r"lang: got 'de'; must be one of ru, en"):
+        T.texts("de")
+
+
+def test_a_missing_key_is_a_key_error_and_an_incomplete_language_falls_back(tmp_path,
+                                                                           monkeypatch):
+    with pytest.raises(KeyError):
+        T.texts("en")("common.no_such_key")
+    # a new language with one key translated: the rest falls back to English
+    for lang in ("en", "ru"):
+        (tmp_path / lang).mkdir()
+        for p in (T.LOCALE_DIR / lang).glob("*.po"):
+            (tmp_path / lang / p.name).write_bytes(p.read_bytes())
+    (tmp_path / "xx").mkdir()
+    (tmp_path / "xx" / "common.po").write_text(
+        'msgid ""\nmsgstr ""\n"Language: xx\\n"\n"Plural-Forms: nplurals=1; plural=0;\\n"\n'
+        '\nmsgid "common.none"\nmsgstr "nada"\n', encoding="utf-8")
+    monkeypatch.setattr(T, "LOCALE_DIR", tmp_path)
+    for f in (T._catalogue, T.texts, T.languages):
+        f.cache_clear()
+    try:
+        xx = T.texts("xx")
+        assert xx("common.none") == "nada"
+        assert xx.n("common.plots", 2) == "2 plots"          # English fallback
+        assert "xx" not in T.languages()                     # not offered until complete
+    finally:
+        monkeypatch.undo()
+        for f in (T._catalogue, T.texts, T.languages):
+            f.cache_clear()
+
+
+_CALL = re.compile(r"""(?:\bt|\btx|\.n|texts\([^()]*\))\(\s*["']([a-z]+\.[A-Za-z0-9_.]+)["']""")
+
+
+def test_every_key_the_code_uses_is_in_the_catalogue():
+    """Every literal key passed to a Texts object (``t("…")``, ``t.n("…", n)``) in the
+    library code exists in the reference catalogue."""
+    known = T.keys("en")
+    missing = []
+    for pkg in LIBRARIES + ("templates",):
+        for path in (ROOT / pkg).rglob("*.py"):
+            for key in _CALL.findall(path.read_text(encoding="utf-8")):
+                if key not in known:
+                    missing.append(f"{path.relative_to(ROOT)}: {key}")
+    assert not missing, missing
+
+
+def test_the_catalogues_ship_with_the_package():
+    text = (ROOT / "pyproject.toml").read_text(encoding="utf-8")
+    assert '"crankbase" = ["locale/*/*.po"]' in text
+    tree = ast.parse((ROOT / "crankbase" / "texts.py").read_text(encoding="utf-8"))
+    assert tree  # the module parses; the catalogue folder is beside it
+    assert (T.LOCALE_DIR / "ru" / "common.po").is_file()
