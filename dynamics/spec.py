@@ -124,7 +124,8 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
                             default=0.0, ge=0)
         problems = list(ck.problems)
         try:
-            espec = engine.load_spec(rest, base_dir=base_dir)
+            study = engine.load(rest, base_dir=base_dir)     # the physics and the crank train
+            espec = study.spec
         except SpecError as exc:
             raise SpecError(problems + exc.problems) from None
         if problems:
@@ -133,7 +134,8 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
             raise SpecError(Problem("dynamics.driving", f"got {settings.driving!r}; an "
                                     "engine drives itself: the resisting moment is the "
                                     "constant one (driving = \"constant\")"))
-        model = engine_model(espec, steps=settings.steps or 1440, J_extra_kgm2=J_extra)
+        model = engine_model(espec, steps=settings.steps or 1440, J_extra_kgm2=J_extra,
+                             train=study.train)
         if settings.omega_mean is not None:
             model.omega_nominal = settings.omega_mean
         kind = "engine"
