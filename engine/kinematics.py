@@ -36,25 +36,54 @@ import numpy as np
 
 from linkage.groups import LinkMotion, RRPSolution, crank, rrp
 
-__all__ = ["PistonKinematics", "crank_slider", "guide_direction", "piston_travel"]
+__all__ = ["PistonKinematics", "crank_slider", "cylinder_axis_angle", "guide_direction",
+           "piston_travel"]
 
 
-def guide_direction(bank=0.0):
+def cylinder_axis_angle(bank, deg=False):
+    """Direction angle of a cylinder axis (from the crankshaft axis towards TDC) in the
+    engine's linkage frame, counter-clockwise from +x: 90° + γ.
+
+    The one place of the rule "bank γ from the vertical, + in the direction of rotation";
+    a crank throw at angle δ from the vertical points the same way (δ in place of γ).
+
+    Parameters
+    ----------
+    bank : float or array_like
+        γ (or δ), + in the direction of rotation. [rad], or [deg] with ``deg=True``
+    deg : bool
+        Angles in degrees (in and out).
+
+    Returns
+    -------
+    float or ndarray
+        π/2 + γ [rad] (90° + γ [deg]).
+    """
+    return (90.0 if deg else np.pi / 2) + bank
+
+
+def guide_direction(bank=0.0, deg=False):
     """Unit vector u of a cylinder axis (from the crankshaft axis towards TDC) in the
     linkage frame, as a complex number.
 
     Parameters
     ----------
-    bank : float
+    bank : float or array_like
         Cylinder axis angle from the engine's vertical +y, + in the direction of
-        rotation. [rad]
+        rotation. [rad], or [deg] with ``deg=True``
+    deg : bool
+        ``bank`` in degrees.
 
     Returns
     -------
-    complex
-        u = exp(i(π/2 + γ)). [-]
+    complex or complex ndarray
+        u = exp(i(π/2 + γ)) (:func:`cylinder_axis_angle`). [-]
     """
-    return complex(np.exp(1j * (np.pi / 2 + bank)))
+    if deg:
+        u = np.exp(1j * np.radians(cylinder_axis_angle(bank, deg=True)))
+    else:
+        u = np.exp(1j * cylinder_axis_angle(bank))
+    return complex(u) if np.ndim(u) == 0 else u
 
 
 def piston_travel(R, L, offset=0.0):
@@ -150,7 +179,7 @@ def crank_slider(alpha, R, L, omega, *, bank=0.0, offset=0.0, phase=0.0) -> Pist
     quantities are used only in the tests, as the independent check.
     """
     alpha = np.asarray(alpha, dtype=float) - phase
-    guide = np.pi / 2 + bank
+    guide = cylinder_axis_angle(bank)
     link2 = crank(guide + alpha, omega, 0.0, R)
     A = link2.point(R)
     sol = rrp(A, L, 0j, guide, offset, +1)
