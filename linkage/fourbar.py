@@ -38,7 +38,7 @@ from crankbase.tolerances import ROTATABILITY_RTOL, ROUNDOFF_RTOL
 
 __all__ = ["GeometryError", "GrashofType", "SliderCrankType", "grashof",
            "rotatability_residuals", "rotatability_margin", "crank_turns_fully",
-           "slider_crank_type", "transmission_angle", "transmission_angle_deg",
+           "slider_rotatability_margin", "slider_crank_type", "transmission_angle", "transmission_angle_deg",
            "min_transmission_angle_deg", "min_transmission_angle_slider_deg"]
 
 
@@ -71,7 +71,8 @@ class SliderCrankType(str, enum.Enum):
 
     #: L > r + |e|.
     ROTATABLE = "rotatable"
-    #: L = r + |e| (within ROUNDOFF_RTOL): the rod stands perpendicular to the guide once.
+    #: L = r + |e| (within the rotatability tolerance): the rod stands perpendicular to
+    #: the guide once.
     CHANGE_POINT = "change-point"
     #: L < r + |e|: the crank cannot turn fully.
     NON_ROTATABLE = "non-rotatable"
@@ -216,6 +217,16 @@ def grashof(l1, l2, l3, l0=1.0) -> GrashofType:
             GrashofType.DOUBLE_ROCKER, GrashofType.DOUBLE_ROCKER)[shortest]
 
 
+def slider_rotatability_margin(crank, rod, offset=0.0):
+    """The rotatability rule of a crank-slider: (L − r − |e|)/r, ≥ 0 when the crank turns
+    fully (the rod reaches the guide line from every crank position); within
+    ±``ROTATABILITY_RTOL`` a change point, which counts as turning fully.  [-]
+
+    The same tolerance as :func:`rotatability_margin`; ``CrankSlider.check_rotatable``
+    tests each side, L − r − e and L − r + e, against it."""
+    return (rod - (crank + abs(offset))) / crank
+
+
 def slider_crank_type(crank, rod, offset=0.0) -> SliderCrankType:
     """Whether the crank of a crank-slider turns fully.
 
@@ -229,11 +240,12 @@ def slider_crank_type(crank, rod, offset=0.0) -> SliderCrankType:
     Returns
     -------
     SliderCrankType
-        ``ROTATABLE`` if L > r + |e|, ``CHANGE_POINT`` if equal within ``ROUNDOFF_RTOL``
-        of r + L + |e|, else ``NON_ROTATABLE`` [1]_.
+        ``ROTATABLE`` if L > r + |e|, ``CHANGE_POINT`` if equal within the rotatability
+        tolerance (:func:`slider_rotatability_margin` within ±``ROTATABILITY_RTOL``),
+        else ``NON_ROTATABLE`` [1]_.
     """
-    margin = rod - (crank + abs(offset))
-    if abs(margin) <= ROUNDOFF_RTOL * (crank + rod + abs(offset)):
+    margin = slider_rotatability_margin(crank, rod, offset)
+    if abs(margin) <= ROTATABILITY_RTOL:
         return SliderCrankType.CHANGE_POINT
     return SliderCrankType.ROTATABLE if margin > 0 else SliderCrankType.NON_ROTATABLE
 

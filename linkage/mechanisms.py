@@ -342,7 +342,9 @@ class CrankSlider(_CrankMechanism):
 
     def check_rotatable(self, tol=ROTATABILITY_RTOL):
         """Raise :class:`AssemblyError` unless the crank can turn fully
-        (|offset − y_A| ≤ L in guide coordinates for every crank angle)."""
+        (|offset − y_A| ≤ L in guide coordinates for every crank angle): the rule of
+        :func:`linkage.fourbar.slider_rotatability_margin` on each side of the guide,
+        (L − r ∓ e)/r ≥ −``tol``."""
         l1, L, e = self.l1, self.l2, self.offset
         gam = self.guide_angle
         bad, ends = [], []

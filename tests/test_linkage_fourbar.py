@@ -168,3 +168,24 @@ def test_one_rotatability_rule_for_grashof_mechanisms_and_synthesis(eps, turns):
                 mech.check_rotatable()
             with pytest.raises(GeometryError):
                 min_transmission_angle_deg(l1 * scale, l2 * scale, l3 * scale, scale)
+
+
+@pytest.mark.parametrize("eps, turns", [(-5e-10, True), (5e-10, True), (-3e-9, False),
+                                        (3e-9, True)])
+@pytest.mark.parametrize("e", [0.012, -0.012])
+def test_one_rotatability_rule_for_the_crank_slider(eps, turns, e):
+    """slider_crank_type and CrankSlider.check_rotatable agree: L = r + |e| + eps·r."""
+    from linkage.fourbar import SliderCrankType, slider_crank_type
+    from linkage.mechanisms import AssemblyError, CrankSlider
+
+    r = 0.05
+    L = r + abs(e) + eps * r
+    kind = slider_crank_type(r, L, e)
+    assert (kind is not SliderCrankType.NON_ROTATABLE) is turns
+    assert (kind is SliderCrankType.CHANGE_POINT) is (abs(eps) < 1e-9)
+    mech = CrankSlider(r, L, 0.4, e)
+    if turns:
+        mech.check_rotatable()
+    else:
+        with pytest.raises(AssemblyError):
+            mech.check_rotatable()
