@@ -27,6 +27,6 @@ __all__ = ["load", "load_spec", "analyze", "force_table", "summarize", "table_an
            "fine_angles", "COLUMNS", "EngineSpec", "TableSettings", "EngineStudy",
            "CycleSpec", "PressureTable", "EngineSpecError", "EngineResult", "EngineSummary",
            "Extreme", "gas_pressure", "indicated_mean_pressure", "crank_slider",
-           "crank_pin_forces", "crank_pin_resultant", "read_pressure_csv", "CrankTrain", "Counterweight", "Layout",
-           "layout", "analyze_engine", "EngineTrainResult", "EngineTrainSummary",
+           "crank_pin_forces", "crank_pin_resultant", "read_pressure_csv", "CrankTrain",
+           "Counterweight", "Layout", "layout", "analyze_engine", "EngineTrainResult", "EngineTrainSummary",
            "FlywheelResult"]
