@@ -28,5 +28,5 @@ __all__ = ["load", "load_spec", "analyze", "force_table", "summarize", "table_an
            "CycleSpec", "PressureTable", "EngineSpecError", "EngineResult", "EngineSummary",
            "Extreme", "gas_pressure", "indicated_mean_pressure", "crank_slider",
            "crank_pin_forces", "crank_pin_resultant", "read_pressure_csv", "CrankTrain",
-           "Counterweight", "Layout", "layout", "analyze_engine", "EngineTrainResult", "EngineTrainSummary",
-           "FlywheelResult"]
+           "Counterweight", "Layout", "layout", "analyze_engine", "EngineTrainResult",
+           "EngineTrainSummary", "FlywheelResult"]
