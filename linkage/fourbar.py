@@ -38,8 +38,8 @@ from crankbase.tolerances import ROTATABILITY_RTOL, ROUNDOFF_RTOL
 
 __all__ = ["GeometryError", "GrashofType", "SliderCrankType", "grashof",
            "rotatability_residuals", "rotatability_margin", "crank_turns_fully",
-           "slider_rotatability_margin", "slider_crank_type", "transmission_angle", "transmission_angle_deg",
-           "min_transmission_angle_deg", "min_transmission_angle_slider_deg"]
+           "slider_rotatability_margin", "slider_crank_type", "transmission_angle",
+           "transmission_angle_deg", "min_transmission_angle_deg", "min_transmission_angle_slider_deg"]
 
 
 class GeometryError(SpecError):
