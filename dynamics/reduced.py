@@ -392,10 +392,11 @@ def engine_model(spec, *, steps=1440, J_extra_kgm2=0.0, train=None) -> ReducedMo
     ReducedModel
         ``J_kgm2`` = Σ_j [m_j (v_j/ω)² + m_ш.к R²] + Σ_throws m_к R² + J_extra (the
         two-mass model of the engine's rod, as in the force table; m_к once per throw);
-        ``dJ_dphi_kgm2`` = Σ 2 m_j (v/ω)(j/ω²) (exact kinematics at constant ω); ``M_drive_Nm`` the gas torque Σ Mкр(ΔPг) from the
-        engine's own crank-pin force routine with the gas force alone (the piston's inertia
-        torque is the −½ω² dJ/dφ term of the equation of motion); no resisting moment (a
-        constant one is added by :func:`dynamics.motion.steady_motion`).
+        ``dJ_dphi_kgm2`` = Σ 2 m_j (v/ω)(j/ω²) (exact kinematics at constant ω);
+        ``M_drive_Nm`` the gas torque Σ Mкр(ΔPг) from the engine's own crank-pin force
+        routine with the gas force alone (the piston's inertia torque is the
+        −½ω² dJ/dφ term of the equation of motion); no resisting moment (a constant one
+        is added by :func:`dynamics.motion.steady_motion`).
         ``extra["layout"]`` is the :class:`engine.train.Layout` used.
 
     Notes
