@@ -39,7 +39,8 @@ from crankbase.validation import angles_argument, step_argument
 from linkage.groups import Wrench, dot, driver_reactions, link_wrench, rrp_reactions
 
 from .indicator import gas_pressure, indicated_mean_pressure, theoretical_mean_pressure
-from .kinematics import PistonKinematics, crank_slider
+from .kinematics import (PistonKinematics, acceleration_orders, crank_slider,
+                         two_term_acceleration)
 from .result import EngineResult, EngineSummary, Extreme
 from .spec import EngineSpec, EngineSpecError, TableSettings
 
@@ -121,63 +122,6 @@ def gas_force(p, p0, area):
         ΔPг. [N]  ([1]_, domain brief § 5.)
     """
     return (np.asarray(p, float) - p0) * area
-
-
-def acceleration_orders(alpha, lam, k=0.0, amplitude=1.0):
-    """The first- and second-order terms of the textbook piston acceleration.
-
-    Parameters
-    ----------
-    alpha : array_like
-        Crank angle from TDC. [rad]
-    lam : float
-        λ = R/Lш. [-]
-    k : float
-        Relative piston-pin offset e/R (sign in :mod:`engine.kinematics`); 0 for the
-        central mechanism. [-]
-    amplitude : float
-        Factor of both terms (Rω² for the acceleration, mj·Rω² for the inertia forces).
-
-    Returns
-    -------
-    first, second : ndarray
-        amplitude·(cos α + kλ sin α) and amplitude·λ·cos 2α: j = Rω²(first + second)
-        with amplitude 1 ([1]_; the offset term from √(L² − (R sin α − e)²) ≈
-        L − (R sin α − e)²/(2L)).
-    """
-    alpha = np.asarray(alpha, float)
-    first = np.cos(alpha)
-    if k:
-        first = first + k * lam * np.sin(alpha)
-    return amplitude * first, amplitude * lam * np.cos(2.0 * alpha)
-
-
-def two_term_acceleration(alpha, R, lam, omega, k=0.0):
-    """Textbook two-term piston acceleration j = Rω²(cos α + λ cos 2α + kλ sin α), + towards
-    the crank axis.
-
-    Parameters
-    ----------
-    alpha : array_like
-        Crank angle from TDC. [rad]
-    R : float
-        Crank radius. [m]
-    lam : float
-        λ = R/Lш. [-]
-    omega : float
-        Crank angular velocity. [rad/s]
-    k : float
-        Relative piston-pin offset e/R (sign in :mod:`engine.kinematics`); 0 for the
-        central mechanism. [-]
-
-    Returns
-    -------
-    ndarray
-        j. [m/s²]  ([1]_: the terms of the exact j up to the first order in λ, the sum of
-        :func:`acceleration_orders`.)
-    """
-    first, second = acceleration_orders(alpha, lam, k)
-    return R * omega ** 2 * (first + second)
 
 
 def inertia_force(mj, j):

@@ -37,7 +37,7 @@ import numpy as np
 from linkage.groups import LinkMotion, RRPSolution, crank, rrp
 
 __all__ = ["PistonKinematics", "crank_slider", "cylinder_axis_angle", "guide_direction",
-           "piston_travel"]
+           "piston_travel", "acceleration_orders", "two_term_acceleration"]
 
 
 def cylinder_axis_angle(bank, deg=False):
@@ -104,6 +104,63 @@ def piston_travel(R, L, offset=0.0):
     if offset == 0:
         return 2.0 * R
     return float(np.sqrt((L + R) ** 2 - offset ** 2) - np.sqrt((L - R) ** 2 - offset ** 2))
+
+
+def acceleration_orders(alpha, lam, k=0.0, amplitude=1.0):
+    """The first- and second-order terms of the textbook piston acceleration.
+
+    Parameters
+    ----------
+    alpha : array_like
+        Crank angle from TDC. [rad]
+    lam : float
+        λ = R/Lш. [-]
+    k : float
+        Relative piston-pin offset e/R (sign in :mod:`engine.kinematics`); 0 for the
+        central mechanism. [-]
+    amplitude : float
+        Factor of both terms (Rω² for the acceleration, mj·Rω² for the inertia forces).
+
+    Returns
+    -------
+    first, second : ndarray
+        amplitude·(cos α + kλ sin α) and amplitude·λ·cos 2α: j = Rω²(first + second)
+        with amplitude 1 (Kolchin & Demidov [1]_; the offset term from √(L² − (R sin α − e)²) ≈
+        L − (R sin α − e)²/(2L)).
+    """
+    alpha = np.asarray(alpha, float)
+    first = np.cos(alpha)
+    if k:
+        first = first + k * lam * np.sin(alpha)
+    return amplitude * first, amplitude * lam * np.cos(2.0 * alpha)
+
+
+def two_term_acceleration(alpha, R, lam, omega, k=0.0):
+    """Textbook two-term piston acceleration j = Rω²(cos α + λ cos 2α + kλ sin α), + towards
+    the crank axis.
+
+    Parameters
+    ----------
+    alpha : array_like
+        Crank angle from TDC. [rad]
+    R : float
+        Crank radius. [m]
+    lam : float
+        λ = R/Lш. [-]
+    omega : float
+        Crank angular velocity. [rad/s]
+    k : float
+        Relative piston-pin offset e/R (sign in :mod:`engine.kinematics`); 0 for the
+        central mechanism. [-]
+
+    Returns
+    -------
+    ndarray
+        j. [m/s²]  ([1]_: the terms of the exact j up to the first order in λ, the sum of
+        :func:`acceleration_orders`.)
+    """
+    first, second = acceleration_orders(alpha, lam, k)
+    return R * omega ** 2 * (first + second)
 
 
 @dataclass

@@ -58,9 +58,9 @@ import numpy as np
 from crankbase.errors import Problem
 from crankbase.tolerances import BALANCED_RTOL, ROUNDOFF_RTOL, SAME_ANGLE_DEG, snap_roundoff
 
-from .forces import (PLOT_STEP_DEG, acceleration_orders, analyze, force_table,
-                     indicated_power, two_term_acceleration)
-from .kinematics import crank_slider, cylinder_axis_angle, guide_direction
+from .forces import PLOT_STEP_DEG, analyze, force_table, indicated_power
+from .kinematics import (acceleration_orders, crank_slider, cylinder_axis_angle,
+                         guide_direction, two_term_acceleration)
 from .spec import (ARRANGEMENTS, COUNTERWEIGHT_DESIGNS, Counterweight, CrankTrain, EngineSpec,
                    EngineSpecError, TableSettings)
 
