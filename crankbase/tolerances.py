@@ -27,7 +27,9 @@ def snap_roundoff(values, scale):
 
 #: Relative margin of the Grashof / rotatability inequalities within which a mechanism
 #: counts as a change-point (folding) one: lengths read from a spec in mm with ~10
-#: significant digits agree to about this, and the synthesis region boundary uses it too.
+#: significant digits agree to about this.  The one rule that uses it is
+#: linkage.fourbar.rotatability_margin (distance to the boundary over √2·ground), called by
+#: grashof, the mechanisms' check_rotatable and the synthesis region.
 ROTATABILITY_RTOL = 1e-9
 
 #: A link rate (ω of the output, slider speed) below this fraction of its scale counts as

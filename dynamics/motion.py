@@ -37,12 +37,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from engine.train import FlywheelResult, flywheel
+
 from ._base import MotionError, Problem, SpecError
 
 __all__ = ["MotionResult", "steady_motion", "FlywheelResult", "size_flywheel",
            "motor_steady_motion", "motor_startup", "StartupResult", "check_delta",
            "linkage_forces", "true_motion_forces", "engine_true_motion_forces",
-           "classic_flywheel"]
+           "classic_flywheel", "classic_flywheel_result"]
 
 
 def _cumtrapz(y, x):
@@ -226,43 +228,24 @@ def steady_motion(model, omega_mean=None, *, J_flywheel=0.0, driving="constant")
         constant_role=role)
 
 
-@dataclass
-class FlywheelResult:
-    """Flywheel for a required δ.
-
-    Attributes
-    ----------
-    delta : float
-        Asked δ.
-    dW_max : float
-        ΔW_max of the classic estimate: swing of ∫(M_d − M_c − ½ω_m² dJ/dφ)dφ, the
-        turning-moment diagram at constant speed (see :func:`classic_flywheel`). [J]
-    J_c : float
-        The constant inertia the classic estimate subtracts: the cycle mean of J_red.
-        [kg·m²]
-    J_classic : float
-        ΔW_max/(δ ω_m²) − J_c (may be ≤ 0: no flywheel needed by that estimate). [kg·m²]
-    J_exact : float
-        The flywheel that gives exactly δ with the variable J_red (0 when the machine is
-        already within δ without one). [kg·m²]
-    motion : MotionResult
-        The motion with ``J_exact``.
-    """
-
-    delta: float
-    dW_max: float
-    J_c: float
-    J_classic: float
-    J_exact: float
-    motion: MotionResult
-
-
 def size_flywheel(model, delta, omega_mean=None, *, driving="constant") -> FlywheelResult:
     """Flywheel on the main shaft for the coefficient of speed fluctuation ``delta``.
 
-    Classic: :func:`classic_flywheel`.  Exact: brentq on δ(J_F) − δ with the energy-form
-    solution (δ decreases monotonically with J_F).
+    Classic: :func:`classic_flywheel_result`.  Exact: brentq on δ(J_F) − δ with the
+    energy-form solution (δ decreases monotonically with J_F).
+
+    Returns
+    -------
+    FlywheelResult
+        The one flywheel type (:class:`engine.train.FlywheelResult`): ``delta`` the asked
+        δ; ``dW_max`` ΔW_max of the classic estimate, the swing of
+        ∫(M_d − M_c − ½ω_m² dJ/dφ)dφ; ``J_c`` the cycle mean of J_red; ``J_classic``
+        ΔW_max/(δ ω_m²) − J_c (may be ≤ 0); ``J_exact`` the flywheel that gives exactly δ
+        with the variable J_red (0 when the machine is already within δ); ``motion`` the
+        motion with ``J_exact``.
     """
+    from dataclasses import replace
+
     from scipy.optimize import brentq
 
     check_delta(delta)
@@ -270,9 +253,10 @@ def size_flywheel(model, delta, omega_mean=None, *, driving="constant") -> Flywh
     m0 = steady_motion(model, wm, J_flywheel=0.0, driving=driving) \
         if _feasible(model, wm, 0.0, driving) else None
     base = model.with_constant_drive()[0] if driving == "constant" else model
-    dW, Jc, J_classic = classic_flywheel(base, delta, wm)
+    fw = classic_flywheel_result(base, delta, wm)
+    dW, J_classic = fw.dW_max, fw.J_classic
     if m0 is not None and m0.delta <= delta:
-        return FlywheelResult(delta, dW, Jc, J_classic, 0.0, m0)
+        return replace(fw, J_exact=0.0, motion=m0)
 
     def f(JF):
         return steady_motion(model, wm, J_flywheel=JF, driving=driving).delta - delta
@@ -293,25 +277,32 @@ def size_flywheel(model, delta, omega_mean=None, *, driving="constant") -> Flywh
                 break
         lo = mid
     JF = brentq(f, lo, hi, xtol=1e-12 * hi, rtol=1e-12)
-    return FlywheelResult(delta, dW, Jc, J_classic, float(JF),
-                          steady_motion(model, wm, J_flywheel=JF, driving=driving))
+    return replace(fw, J_exact=float(JF),
+                   motion=steady_motion(model, wm, J_flywheel=JF, driving=driving))
 
 
-def classic_flywheel(model, delta, omega_mean):
-    """The classic flywheel estimate ``(ΔW_max, J_c, J_F)``.
-
-    ΔW_max is the swing of the work of the turning-moment diagram at the constant speed
-    ω_m, M_d − M_c − ½ω_m² dJ/dφ (the inertia torque of the variable part of J_red
-    included, as in the engine's total torque Mкр of gas and inertia forces); J_c is the
-    cycle mean of J_red, the constant part the estimate treats as already there; then
-    J_F = ΔW_max/(δ ω_m²) − J_c (Khurmi & Gupta eq. 16.8; seed 001 §11.4).  For a
-    constant J_red it is exact; ≤ 0 means no flywheel is needed by this estimate.
+def classic_flywheel_result(model, delta, omega_mean) -> FlywheelResult:
+    """The classic flywheel estimate as a :class:`FlywheelResult` (without the exact
+    flywheel): :func:`engine.train.flywheel` of the swing ΔW_max of the turning-moment
+    diagram at the constant speed ω_m, M_d − M_c − ½ω_m² dJ/dφ (the inertia torque of the
+    variable part of J_red included, as in the engine's total torque Mкр of gas and
+    inertia forces), with J_c the cycle mean of J_red, the constant part the estimate
+    treats as already there: J_F = ΔW_max/(δ ω_m²) − J_c (Khurmi & Gupta eq. 16.8; seed
+    001 §11.4).  For a constant J_red it is exact; ≤ 0 means no flywheel is needed by
+    this estimate.
     """
     # ∫½ω_m² dJ/dφ dφ = ½ω_m² (J − J(0)) exactly; W_net is exact for the diagrams
     W = model.W_net_J - 0.5 * omega_mean ** 2 * (model.J_kgm2 - model.J_kgm2[0])
     dW = float(np.ptp(W))
     Jc = float(np.mean(model.J_kgm2[:-1]))
-    return dW, Jc, dW / (delta * omega_mean ** 2) - Jc
+    return flywheel(dW, float(omega_mean), delta, J_c=Jc)
+
+
+def classic_flywheel(model, delta, omega_mean):
+    """The classic flywheel estimate ``(ΔW_max, J_c, J_F)`` of
+    :func:`classic_flywheel_result` as a tuple."""
+    fw = classic_flywheel_result(model, delta, omega_mean)
+    return fw.dW_max, fw.J_c, fw.J_classic
 
 
 def _feasible(model, wm, JF, driving):
@@ -660,7 +651,7 @@ def engine_true_motion_forces(model, motion: MotionResult):
     """
     import engine
     import pandas as pd
-    from engine.forces import inertia_force
+    from engine.forces import crank_pin_resultant, inertia_force
 
     spec = model.source
     a_deg = motion.table["phi_deg"].to_numpy()
@@ -677,7 +668,7 @@ def engine_true_motion_forces(model, motion: MotionResult):
         f = engine.crank_pin_forces(mech, P, spec.L)
         Kr = spec.Kr * (omega / spec.omega) ** 2        # Kr.ш ∝ ω²
         return {"j_m_s2": j, "Pj_N": Pj, "P_N": P, "T_N": f["T"], "K_N": f["K"],
-                "M_Nm": f["M"], "R_N": np.hypot(f["T"], f["K"] + Kr)}
+                "M_Nm": f["M"], "R_N": crank_pin_resultant(f["T"], f["K"], Kr)[0]}
 
     true = run(w, e)
     const = run(np.full_like(w, motion.omega_mean), np.zeros_like(w))

@@ -369,54 +369,75 @@ def linkage_model(spec, *, steps=720, phi0_deg=None, drive_power=False) -> Reduc
 # --------------------------------------------------------------------------- engine
 
 
-def engine_model(spec, *, steps=1440, J_extra_kgm2=0.0) -> ReducedModel:
+def engine_model(spec, *, steps=1440, J_extra_kgm2=0.0, train=None) -> ReducedModel:
     """The reduced model of a (multi-cylinder) engine of :mod:`engine`.
 
     Parameters
     ----------
     spec : EngineSpec
-        From :func:`engine.load_spec` (its ``cylinders`` fire evenly: every
-        cycle/cylinders degrees, cylinder k at α − k·cycle/i).
+        From :func:`engine.load_spec`.
     steps : int
         Grid intervals over the cycle (720° four-stroke, 360° two-stroke).
     J_extra_kgm2 : float
         Crankshaft and other rotating parts not in the spec's masses. [kg·m²]
+    train : CrankTrain, optional
+        The crank train of the spec file (:func:`engine.load` gives it: arrangement,
+        vee angle, firing order, throw angles).  Every cylinder's phase φ_j and bank
+        angle γ_j are those of its layout, :func:`engine.train.layout` (the one place
+        they are computed).  Default: the inline engine of the spec's cylinders firing
+        evenly (the textbook firing order, else 1…i), cylinder phases k·cycle/i.
 
     Returns
     -------
     ReducedModel
-        ``J_kgm2`` = Σ_k [m_j (v_k/ω)² + (m_ш.к + m_кр) R²] + J_extra (the two-mass model
-        of the engine's rod, as in the force table); ``dJ_dphi_kgm2`` = Σ 2 m_j (v/ω)(j/ω²)
-        (exact kinematics at constant ω); ``M_drive_Nm`` the gas torque Σ Mкр(ΔPг) from the
-        engine's own crank-pin force routine with the gas force alone (the piston's inertia
-        torque is the −½ω² dJ/dφ term of the equation of motion); no resisting moment (a
-        constant one is added by :func:`dynamics.motion.steady_motion`).
+        ``J_kgm2`` = Σ_j [m_j (v_j/ω)² + m_ш.к R²] + Σ_throws m_к R² + J_extra (the
+        two-mass model of the engine's rod, as in the force table; m_к once per throw);
+        ``dJ_dphi_kgm2`` = Σ 2 m_j (v/ω)(j/ω²) (exact kinematics at constant ω);
+        ``M_drive_Nm`` the gas torque Σ Mкр(ΔPг) from the engine's own crank-pin force
+        routine with the gas force alone (the piston's inertia torque is the
+        −½ω² dJ/dφ term of the equation of motion); no resisting moment (a constant one
+        is added by :func:`dynamics.motion.steady_motion`).
+        ``extra["layout"]`` is the :class:`engine.train.Layout` used.
+
+    Notes
+    -----
+    Cylinder j is the one-cylinder model at α_j = θ − φ_j on its own axis (bank γ_j,
+    :func:`engine.kinematics.crank_slider`); its throw only fixes φ_j (through the
+    layout), since the rotating masses give the same m·R² on any throw.  The cylinders
+    are summed in the order of their phases (the order of firing from cylinder 1).
     """
     import engine
+    from engine.train import CrankTrain, default_firing_order, layout
 
     cyc = spec.cycle_deg
     i = int(spec.cylinders)
+    if train is None:
+        order = default_firing_order("inline", i) if spec.strokes == 4 else None
+        train = CrankTrain(firing_order=order or tuple(range(1, i + 1)))
+    lay = layout(spec, train)
     phi = _grid(math.radians(cyc), steps)
     theta = np.degrees(phi)
     Mgas, vr, ar = [], [], []
-    for k in range(i):       # cylinder k lags k·cycle/i behind cylinder 1 (even firing)
-        phase = k * cyc / i
-        tab = engine.force_table(spec, theta, phase_deg=phase)
-        mech = engine.crank_slider(phi, spec.R, spec.L, spec.omega,
+    for j in np.argsort(lay.phase_deg, kind="stable"):     # in the order of the phases
+        phase, bank = float(lay.phase_deg[j]), float(lay.bank_deg[j])
+        tab = engine.force_table(spec, theta, bank_deg=bank, phase_deg=phase)
+        mech = engine.crank_slider(phi, spec.R, spec.L, spec.omega, bank=math.radians(bank),
                                    offset=spec.pin_offset, phase=math.radians(phase))
         Mgas.append(engine.crank_pin_forces(mech, tab["dPg_N"].to_numpy(), spec.L)["M"])
         vr.append(tab["v_m_s"].to_numpy() / spec.omega)            # dx/dφ [m]
         ar.append(tab["j_m_s2"].to_numpy() / spec.omega ** 2)       # d²x/dφ² [m]
     Mgas, vr, ar = np.array(Mgas), np.array(vr), np.array(ar)
-    m_rot = spec.m_rod_rot + (spec.m_crank_rot or 0.0)
-    J = np.sum(spec.mj * vr * vr + m_rot * spec.R ** 2, axis=0) + J_extra_kgm2
+    J = np.sum(spec.mj * vr * vr + spec.m_rod_rot * spec.R ** 2, axis=0)
+    if spec.m_crank_rot:                  # mк once per throw of the layout (vee: a pair)
+        J = J + len(lay.throw_angles_deg) * spec.m_crank_rot * spec.R ** 2
+    J = J + J_extra_kgm2
     dJ = np.sum(2.0 * spec.mj * vr * ar, axis=0)
     Md = np.sum(Mgas, axis=0)
     Wd = np.concatenate([[0.0], np.cumsum(0.5 * (Md[1:] + Md[:-1]) * np.diff(phi))])
     zero = np.zeros_like(phi)
     return ReducedModel(spec.name, phi, J, dJ, Md, zero.copy(), Wd, zero.copy(),
                         math.radians(cyc), omega_nominal=spec.omega, source=spec,
-                        extra={"cylinders": i, "cycle_deg": cyc})
+                        extra={"cylinders": i, "cycle_deg": cyc, "layout": lay})
 
 
 # --------------------------------------------------------------------------- chains

@@ -124,7 +124,8 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
                             default=0.0, ge=0)
         problems = list(ck.problems)
         try:
-            espec = engine.load_spec(rest, base_dir=base_dir)
+            study = engine.load(rest, base_dir=base_dir)     # the physics and the crank train
+            espec = study.spec
         except SpecError as exc:
             raise SpecError(problems + exc.problems) from None
         if problems:
@@ -133,7 +134,8 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
             raise SpecError(Problem("dynamics.driving", f"got {settings.driving!r}; an "
                                     "engine drives itself: the resisting moment is the "
                                     "constant one (driving = \"constant\")"))
-        model = engine_model(espec, steps=settings.steps or 1440, J_extra_kgm2=J_extra)
+        model = engine_model(espec, steps=settings.steps or 1440, J_extra_kgm2=J_extra,
+                             train=study.train)
         if settings.omega_mean is not None:
             model.omega_nominal = settings.omega_mean
         kind = "engine"
@@ -297,13 +299,16 @@ def _motor_flywheel(model, motor, delta):
     exact by brentq on the periodic solution with the motor."""
     from scipy.optimize import brentq
 
-    from .motion import FlywheelResult, classic_flywheel, motor_steady_motion
+    from dataclasses import replace
+
+    from .motion import classic_flywheel_result, motor_steady_motion
 
     m0 = motor_steady_motion(model, motor)
     const, _ = model.with_constant_drive()
-    dW, Jc, J_classic = classic_flywheel(const, delta, m0.omega_mean)
+    fw = classic_flywheel_result(const, delta, m0.omega_mean)
+    Jc, J_classic = fw.J_c, fw.J_classic
     if m0.delta <= delta:
-        return FlywheelResult(delta, dW, Jc, J_classic, 0.0, m0)
+        return replace(fw, J_exact=0.0, motion=m0)
 
     cache = {}
 
@@ -330,4 +335,4 @@ def _motor_flywheel(model, motor, delta):
         while f(hi) > 0:
             hi *= 2.0
         JF = brentq(f, 0.0, hi, xtol=1e-9 * hi, rtol=1e-9)
-    return FlywheelResult(delta, dW, Jc, J_classic, float(JF), motion(JF))
+    return replace(fw, J_exact=float(JF), motion=motion(JF))

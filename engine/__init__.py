@@ -13,8 +13,8 @@ every cylinder of the :class:`CrankTrain` (inline, vee, boxer; firing order, thr
 gives the total torque, its uniformity, the flywheel and the free forces and moments with
 their balance, as an :class:`EngineTrainResult`.
 """
-from .forces import (COLUMNS, analyze, crank_pin_forces, fine_angles, force_table,
-                     summarize, table_angles)
+from .forces import (COLUMNS, analyze, crank_pin_forces, crank_pin_resultant, fine_angles,
+                     force_table, summarize, table_angles)
 from .indicator import CycleSpec, PressureTable, gas_pressure, indicated_mean_pressure
 from .kinematics import crank_slider
 from .result import EngineResult, EngineSummary, Extreme
@@ -27,6 +27,6 @@ __all__ = ["load", "load_spec", "analyze", "force_table", "summarize", "table_an
            "fine_angles", "COLUMNS", "EngineSpec", "TableSettings", "EngineStudy",
            "CycleSpec", "PressureTable", "EngineSpecError", "EngineResult", "EngineSummary",
            "Extreme", "gas_pressure", "indicated_mean_pressure", "crank_slider",
-           "crank_pin_forces", "read_pressure_csv", "CrankTrain", "Counterweight", "Layout",
-           "layout", "analyze_engine", "EngineTrainResult", "EngineTrainSummary",
-           "FlywheelResult"]
+           "crank_pin_forces", "crank_pin_resultant", "read_pressure_csv", "CrankTrain",
+           "Counterweight", "Layout", "layout", "analyze_engine", "EngineTrainResult",
+           "EngineTrainSummary", "FlywheelResult"]

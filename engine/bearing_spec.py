@@ -32,8 +32,8 @@ from crankbase.validation import Checker
 
 from .bearings import (Crankshaft, CrankshaftLoads, big_end_load, crank_pin_load,
                        crankshaft_loads, piston_pin_load)
-from .forces import _psi
-from .rodmodel import RigidRod, _parts, compare_rod_models, rod_options
+from .forces import crank_pin_resultant
+from .rodmodel import RigidRod, compare_rod_models, mass_parts, rod_options
 from .wear import DEFAULT_HALF_ANGLE_DEG, WearDiagram, wear_diagram
 
 __all__ = ["BEARING_KEYS", "BearingOptions", "bearing_options", "check_tables",
@@ -161,7 +161,7 @@ NOTE_NO_PISTON_MASS = ("piston-pin load not computed: give the masses as parts "
 def piston_mass(spec, rod: RigidRod | None = None):
     """mп: ``piston_group_kg`` (or per area) when the masses are given as parts, else the
     rigid rod's, else None (the piston-pin load then needs it). [kg]"""
-    parts = _parts(spec)
+    parts = mass_parts(spec)
     if parts is not None:
         return parts[0]
     return rod.m_piston if rod is not None else None
@@ -209,8 +209,9 @@ def rod_bearing_table(table, spec, m_piston, phase_deg=0.0):
     a = table["alpha_deg"].to_numpy()
     along, across = big_end_load(table["K_N"], table["T_N"], table["Kr_N"], a - phase_deg,
                                  table["beta_deg"])
+    R_be, angle = crank_pin_resultant(across, along)     # the same rule in the rod frame
     out = dict(alpha_deg=a, Rbe_along_N=along, Rbe_across_N=across,
-               Rbe_N=np.hypot(along, across), Rbe_angle_deg=_psi(across, along))
+               Rbe_N=R_be, Rbe_angle_deg=angle)
     if m_piston is not None and spec.mj > 0:
         j_used = -table["Pj_N"].to_numpy() / spec.mj
         ax, side, mag = piston_pin_load(table["dPg_N"], j_used, m_piston, table["N_N"])

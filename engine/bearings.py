@@ -57,7 +57,8 @@ from crankbase.errors import Problem, SpecError
 from crankbase.tolerances import ROUNDOFF_RTOL
 from linkage.groups import dot
 
-from .forces import _psi
+from .forces import crank_pin_resultant, load_angle_deg
+from .kinematics import guide_direction
 
 __all__ = ["crank_unit", "to_engine_frame", "to_crank_frame", "cylinder_alpha",
            "crank_pin_load", "lever_rule", "journal_loads", "journal_torques",
@@ -85,7 +86,7 @@ def crank_unit(delta_deg):
     complex ndarray
         ``exp(i(90° + δ))``.
     """
-    return np.exp(1j * np.radians(90.0 + np.asarray(delta_deg, float)))
+    return guide_direction(np.asarray(delta_deg, float), deg=True)
 
 
 def to_engine_frame(K, T, delta_deg):
@@ -505,9 +506,9 @@ def crankshaft_loads(theta_deg, shaft: Crankshaft, pin_K, pin_T, R, omega, cycle
     pins = {"alpha_deg": th}
     pin_stats = []
     for k in range(nt):
-        Rk = np.hypot(pin_K[k], pin_T[k])
+        Rk, psi = crank_pin_resultant(pin_T[k], pin_K[k])
         pins.update({f"K_{k + 1}_N": pin_K[k], f"T_{k + 1}_N": pin_T[k],
-                     f"R_{k + 1}_N": Rk, f"psi_{k + 1}_deg": _psi(pin_T[k], pin_K[k])})
+                     f"R_{k + 1}_N": Rk, f"psi_{k + 1}_deg": psi})
         pin_stats.append(load_stats(th, Rk, cycle_deg))
     jr = {"alpha_deg": th}
     j_stats = []
@@ -517,7 +518,7 @@ def crankshaft_loads(theta_deg, shaft: Crankshaft, pin_K, pin_T, R, omega, cycle
         Rj = np.abs(Q[j])
         jr.update({f"X_{j + 1}_N": Q[j].real, f"Y_{j + 1}_N": Q[j].imag,
                    f"K_{j + 1}_N": Kj, f"T_{j + 1}_N": Tj, f"R_{j + 1}_N": Rj,
-                   f"psi_{j + 1}_deg": _psi(Tj, Kj)})
+                   f"psi_{j + 1}_deg": load_angle_deg(Tj, Kj)})
         j_stats.append(load_stats(th, Rj, cycle_deg))
     tq = {"alpha_deg": th}
     t_stats = []

@@ -39,13 +39,15 @@ from crankbase.validation import angles_argument, step_argument
 from linkage.groups import Wrench, dot, driver_reactions, link_wrench, rrp_reactions
 
 from .indicator import gas_pressure, indicated_mean_pressure, theoretical_mean_pressure
-from .kinematics import PistonKinematics, crank_slider
+from .kinematics import (PistonKinematics, acceleration_orders, crank_slider,
+                         two_term_acceleration)
 from .result import EngineResult, EngineSummary, Extreme
 from .spec import EngineSpec, EngineSpecError, TableSettings
 
-__all__ = ["COLUMNS", "table_angles", "fine_angles", "gas_force", "two_term_acceleration",
-           "inertia_force", "crank_pin_forces", "force_table", "summarize", "analyze",
-           "SUMMARY_QUANTITIES", "PLOT_STEP_DEG"]
+__all__ = ["COLUMNS", "table_angles", "fine_angles", "gas_force", "acceleration_orders",
+           "two_term_acceleration", "inertia_force", "crank_pin_forces",
+           "crank_pin_resultant", "load_angle_deg", "indicated_power", "force_table",
+           "summarize", "analyze", "SUMMARY_QUANTITIES", "PLOT_STEP_DEG"]
 
 #: Columns of the force table, in order (units in the names).
 COLUMNS = ("alpha_deg", "p_gas_MPa", "dPg_N", "Pj_N", "P_N", "beta_deg", "N_N", "S_N",
@@ -122,37 +124,6 @@ def gas_force(p, p0, area):
     return (np.asarray(p, float) - p0) * area
 
 
-def two_term_acceleration(alpha, R, lam, omega, k=0.0):
-    """Textbook two-term piston acceleration j = Rω²(cos α + λ cos 2α + kλ sin α), + towards
-    the crank axis.
-
-    Parameters
-    ----------
-    alpha : array_like
-        Crank angle from TDC. [rad]
-    R : float
-        Crank radius. [m]
-    lam : float
-        λ = R/Lш. [-]
-    omega : float
-        Crank angular velocity. [rad/s]
-    k : float
-        Relative piston-pin offset e/R (sign in :mod:`engine.kinematics`); 0 for the
-        central mechanism. [-]
-
-    Returns
-    -------
-    ndarray
-        j. [m/s²]  ([1]_: the terms of the exact j up to the first order in λ; the offset
-        term kλ sin α follows from √(L² − (R sin α − e)²) ≈ L − (R sin α − e)²/(2L).)
-    """
-    alpha = np.asarray(alpha, float)
-    j = np.cos(alpha) + lam * np.cos(2.0 * alpha)
-    if k:
-        j = j + k * lam * np.sin(alpha)
-    return R * omega ** 2 * j
-
-
 def inertia_force(mj, j):
     """Inertia force of the reciprocating masses Pj = −mj·j, + towards the crank axis.
 
@@ -171,18 +142,27 @@ def inertia_force(mj, j):
     return -mj * np.asarray(j, float)
 
 
-def crank_pin_forces(mech: PistonKinematics, P, L):
+def crank_pin_forces(mech: PistonKinematics, P, L, rod=None):
     """Rod force on the crank pin and side force from the RRP dyad's kinetostatics.
+
+    The one routine for both rod models: the textbook two-mass rod (``rod`` None: a
+    massless rod and a massless piston carrying P) and the rigid rod
+    (:class:`engine.rodmodel.RigidRod`: the rod with its mass, J and centre of mass, the
+    piston group with its mass mп, P the gas force alone).
 
     Parameters
     ----------
     mech : PistonKinematics
         Kinematics (:func:`engine.kinematics.crank_slider`).
     P : array_like
-        Total piston force ΔPг + Pj, + towards the crank axis, applied to a massless
-        piston. [N]
+        Force on the piston along the cylinder axis, + towards the crank axis [N]: the
+        total ΔPг + Pj of the two-mass model (``rod`` None), the gas force ΔPг with a
+        rigid rod (the inertia of the rod and of the piston then come from their masses).
     L : float
         Rod length. [m]
+    rod : RigidRod, optional
+        Anything with ``mass`` [kg], ``inertia`` J about the centre of mass [kg·m²], ``cg``
+        (centre of mass from the crank pin along the rod) [m] and ``m_piston`` [kg].
 
     Returns
     -------
@@ -196,9 +176,11 @@ def crank_pin_forces(mech: PistonKinematics, P, L):
 
     Notes
     -----
-    Forces dyad first, then the driver (domain brief § 1): ``rrp_reactions`` with a
-    massless rod (W3 = 0) and the piston loaded by −P·u (u, the dyad's guide direction:
-    the cylinder axis from the crank axis towards TDC) gives R23 at A and the guide's normal force R14 = R14n·iu.  Then
+    Forces dyad first, then the driver (domain brief § 1): ``rrp_reactions`` with the
+    rod's wrench (W3 = 0 for the massless rod; else its d'Alembert inertia by
+    ``link_wrench``) and the piston loaded by −P·u (u, the dyad's guide direction: the
+    cylinder axis from the crank axis towards TDC; plus the piston's inertia with a
+    rigid rod) gives R23 at A and the guide's normal force R14 = R14n·iu.  Then
     S = R32 = −R23; in the crank frame (e₂ from O to A) K = S·(−e₂), T = S·(ie₂);
     Sш = S·(A − B)/|AB|; N = R41·(−iu) = R14n; and ``driver_reactions`` with a massless
     crank gives Mкр = −Mур = (OA × S).
@@ -207,8 +189,13 @@ def crank_pin_forces(mech: PistonKinematics, P, L):
     u = sol.link4.e                                # the dyad's own guide: the cylinder axis
     zB = sol.B.z
     zero = np.zeros(zB.shape)
-    W3 = Wrench(zero + 0j, zero, zB)               # massless rod without loads
-    W4 = link_wrench(sol.link4, forces=[(-np.asarray(P, float) * u, zB)])
+    load = [(-np.asarray(P, float) * u, zB)]
+    if rod is None:
+        W3 = Wrench(zero + 0j, zero, zB)           # massless rod without loads
+        W4 = link_wrench(sol.link4, forces=load)
+    else:
+        W3 = link_wrench(sol.link3, mass=rod.mass, inertia=rod.inertia, cg=rod.cg)
+        W4 = link_wrench(sol.link4, mass=rod.m_piston, forces=load)
     reac = rrp_reactions(sol, L, W3, W4)
     S32 = -reac.RA
     e2 = mech.crank.e
@@ -217,6 +204,68 @@ def crank_pin_forces(mech: PistonKinematics, P, L):
     drv = driver_reactions(mech.crank, A, S32, W2)
     return dict(S32=S32, S=dot(S32, -sol.link3.e), K=dot(S32, -e2), T=dot(S32, 1j * e2),
                 N=reac.RG_n, M=-drv.M_drive, reactions=reac)
+
+
+def load_angle_deg(across, along):
+    """Direction of a load in a frame: atan2(across, along) in degrees, in (−180°, 180°]
+    (−180° from rounding → 180°).
+
+    Parameters
+    ----------
+    across, along : array_like
+        The load's components across and along the frame's reference direction (for the
+        crank pin: T and K + Kr.ш). [N]
+
+    Returns
+    -------
+    ndarray
+        Ψ. [deg]
+    """
+    psi = np.degrees(np.arctan2(across, along))
+    return np.where(psi <= -180.0 + SAME_ANGLE_DEG, psi + 360.0, psi)
+
+
+def crank_pin_resultant(T, K, Kr=None):
+    """The load on the crank pin and its direction in the crank frame.
+
+    Parameters
+    ----------
+    T : array_like
+        Tangential force, + in the direction of rotation. [N]
+    K : array_like
+        Radial force, + towards the crank axis. [N]
+    Kr : array_like or float, optional
+        Kr.ш = −mш.к·R·ω², the rod's rotating mass (none for a rigid rod, whose K and T
+        already hold its inertia). [N]
+
+    Returns
+    -------
+    R, psi : ndarray
+        Rшш = √(T² + (K + Kr.ш)²) [N] and Ψ = atan2(T, K + Kr.ш) [deg]: 0° along the
+        crank towards the crank axis, + towards the direction of rotation, in
+        (−180°, 180°] [1]_.
+    """
+    Kt = K if Kr is None else K + Kr
+    return np.hypot(T, Kt), load_angle_deg(T, Kt)
+
+
+def indicated_power(p_i, Vh, speed_rpm, strokes, cylinders=1):
+    """Indicated power Ni = pi·Vh·i·n/(30·τ) [W] ([1]_).
+
+    Parameters
+    ----------
+    p_i : float
+        Indicated mean pressure. [Pa]
+    Vh : float
+        Displacement of one cylinder. [m³]
+    speed_rpm : float
+        n. [rpm]
+    strokes : int
+        τ, 4 or 2.
+    cylinders : int
+        i.
+    """
+    return p_i * Vh * cylinders * speed_rpm / (30.0 * strokes)
 
 
 def force_table(spec, alpha_deg=None, *, settings=None, bank_deg=0.0, phase_deg=0.0):
@@ -259,8 +308,8 @@ def force_table(spec, alpha_deg=None, *, settings=None, bank_deg=0.0, phase_deg=
     pin offset).  ``"exact"``: Pj = −mj·j with j the exact piston acceleration of the RRP
     dyad.  In both modes Pj enters the dyad as an external force on a massless piston
     (the same loads as a piston of mass mj in exact mode); the rod is massless, its mass
-    being split into mj and mш.к.  Kr.ш = −mш.к·R·ω²; Rшш = √(T² + (K + Kr.ш)²);
-    Ψ = atan2(T, K + Kr.ш).
+    being split into mj and mш.к.  Kr.ш = −mш.к·R·ω²; Rшш = √(T² + (K + Kr.ш)²) and
+    Ψ = atan2(T, K + Kr.ш) by :func:`crank_pin_resultant`.
     """
     import pandas as pd
 
@@ -275,9 +324,8 @@ def force_table(spec, alpha_deg=None, *, settings=None, bank_deg=0.0, phase_deg=
     # round-off residues of exact zeros (v and β at TDC) become 0 before Rшш and Ψ
     block = np.column_stack(cols)
     snap_roundoff(block, _column_scales(block))
-    T, Kt = block[:, _COL["T_N"]], block[:, _COL["K_N"]] + block[:, _COL["Kr_N"]]
-    block[:, _COL["R_N"]] = np.hypot(T, Kt)
-    block[:, _COL["psi_deg"]] = _psi(T, Kt)
+    block[:, _COL["R_N"]], block[:, _COL["psi_deg"]] = crank_pin_resultant(
+        block[:, _COL["T_N"]], block[:, _COL["K_N"]], block[:, _COL["Kr_N"]])
     return pd.DataFrame(block, columns=list(COLUMNS))
 
 
@@ -313,12 +361,6 @@ def _cylinder_forces(spec, alpha_deg, settings, bank_deg, phase_deg):
     f = crank_pin_forces(mech, P, spec.L)
     f.update(theta_deg=theta, mech=mech, p=p, dPg=dPg, Pj=Pj, P=P)
     return f
-
-
-def _psi(T, Kt):
-    """Ψ = atan2(T, K + Kr.ш) in degrees, in (−180°, 180°] (−180° from rounding → 180°)."""
-    psi = np.degrees(np.arctan2(T, Kt))
-    return np.where(psi <= -180.0 + SAME_ANGLE_DEG, psi + 360.0, psi)
 
 
 #: Columns whose max and min the summary reports (P, Sш, N, K, T, Mкр, Rшш).
@@ -369,7 +411,7 @@ def summarize(table, spec) -> EngineSummary:
         M_mean_Nm=_cycle_mean(a, table["M_Nm"].to_numpy(), cyc), R_mean_N=R_mean,
         chi=ext["R_N"].max / R_mean if R_mean > 0 else float("nan"),
         pi_MPa=pi / 1e6,
-        power_i_kW=pi * spec.Vh * spec.speed_rpm / (30.0 * spec.strokes) * 1e-3,
+        power_i_kW=indicated_power(pi, spec.Vh, spec.speed_rpm, spec.strokes) * 1e-3,
         pi_theory_MPa=(theoretical_mean_pressure(spec.cycle) / 1e6
                        if spec.cycle is not None else None))
 

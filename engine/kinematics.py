@@ -36,25 +36,54 @@ import numpy as np
 
 from linkage.groups import LinkMotion, RRPSolution, crank, rrp
 
-__all__ = ["PistonKinematics", "crank_slider", "guide_direction", "piston_travel"]
+__all__ = ["PistonKinematics", "crank_slider", "cylinder_axis_angle", "guide_direction",
+           "piston_travel", "acceleration_orders", "two_term_acceleration"]
 
 
-def guide_direction(bank=0.0):
+def cylinder_axis_angle(bank, deg=False):
+    """Direction angle of a cylinder axis (from the crankshaft axis towards TDC) in the
+    engine's linkage frame, counter-clockwise from +x: 90° + γ.
+
+    The one place of the rule "bank γ from the vertical, + in the direction of rotation";
+    a crank throw at angle δ from the vertical points the same way (δ in place of γ).
+
+    Parameters
+    ----------
+    bank : float or array_like
+        γ (or δ), + in the direction of rotation. [rad], or [deg] with ``deg=True``
+    deg : bool
+        Angles in degrees (in and out).
+
+    Returns
+    -------
+    float or ndarray
+        π/2 + γ [rad] (90° + γ [deg]).
+    """
+    return (90.0 if deg else np.pi / 2) + bank
+
+
+def guide_direction(bank=0.0, deg=False):
     """Unit vector u of a cylinder axis (from the crankshaft axis towards TDC) in the
     linkage frame, as a complex number.
 
     Parameters
     ----------
-    bank : float
+    bank : float or array_like
         Cylinder axis angle from the engine's vertical +y, + in the direction of
-        rotation. [rad]
+        rotation. [rad], or [deg] with ``deg=True``
+    deg : bool
+        ``bank`` in degrees.
 
     Returns
     -------
-    complex
-        u = exp(i(π/2 + γ)). [-]
+    complex or complex ndarray
+        u = exp(i(π/2 + γ)) (:func:`cylinder_axis_angle`). [-]
     """
-    return complex(np.exp(1j * (np.pi / 2 + bank)))
+    if deg:
+        u = np.exp(1j * np.radians(cylinder_axis_angle(bank, deg=True)))
+    else:
+        u = np.exp(1j * cylinder_axis_angle(bank))
+    return complex(u) if np.ndim(u) == 0 else u
 
 
 def piston_travel(R, L, offset=0.0):
@@ -75,6 +104,63 @@ def piston_travel(R, L, offset=0.0):
     if offset == 0:
         return 2.0 * R
     return float(np.sqrt((L + R) ** 2 - offset ** 2) - np.sqrt((L - R) ** 2 - offset ** 2))
+
+
+def acceleration_orders(alpha, lam, k=0.0, amplitude=1.0):
+    """The first- and second-order terms of the textbook piston acceleration.
+
+    Parameters
+    ----------
+    alpha : array_like
+        Crank angle from TDC. [rad]
+    lam : float
+        λ = R/Lш. [-]
+    k : float
+        Relative piston-pin offset e/R (sign in :mod:`engine.kinematics`); 0 for the
+        central mechanism. [-]
+    amplitude : float
+        Factor of both terms (Rω² for the acceleration, mj·Rω² for the inertia forces).
+
+    Returns
+    -------
+    first, second : ndarray
+        amplitude·(cos α + kλ sin α) and amplitude·λ·cos 2α: j = Rω²(first + second)
+        with amplitude 1 (Kolchin & Demidov [1]_; the offset term from √(L² − (R sin α − e)²) ≈
+        L − (R sin α − e)²/(2L)).
+    """
+    alpha = np.asarray(alpha, float)
+    first = np.cos(alpha)
+    if k:
+        first = first + k * lam * np.sin(alpha)
+    return amplitude * first, amplitude * lam * np.cos(2.0 * alpha)
+
+
+def two_term_acceleration(alpha, R, lam, omega, k=0.0):
+    """Textbook two-term piston acceleration j = Rω²(cos α + λ cos 2α + kλ sin α), + towards
+    the crank axis.
+
+    Parameters
+    ----------
+    alpha : array_like
+        Crank angle from TDC. [rad]
+    R : float
+        Crank radius. [m]
+    lam : float
+        λ = R/Lш. [-]
+    omega : float
+        Crank angular velocity. [rad/s]
+    k : float
+        Relative piston-pin offset e/R (sign in :mod:`engine.kinematics`); 0 for the
+        central mechanism. [-]
+
+    Returns
+    -------
+    ndarray
+        j. [m/s²]  ([1]_: the terms of the exact j up to the first order in λ, the sum of
+        :func:`acceleration_orders`.)
+    """
+    first, second = acceleration_orders(alpha, lam, k)
+    return R * omega ** 2 * (first + second)
 
 
 @dataclass
@@ -150,7 +236,7 @@ def crank_slider(alpha, R, L, omega, *, bank=0.0, offset=0.0, phase=0.0) -> Pist
     quantities are used only in the tests, as the independent check.
     """
     alpha = np.asarray(alpha, dtype=float) - phase
-    guide = np.pi / 2 + bank
+    guide = cylinder_axis_angle(bank)
     link2 = crank(guide + alpha, omega, 0.0, R)
     A = link2.point(R)
     sol = rrp(A, L, 0j, guide, offset, +1)

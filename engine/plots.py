@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from crankbase.errors import Problem
+from .kinematics import guide_direction
 from .symbols import math_symbol, sym
 
 __all__ = ["plot_indicator", "plot_pressure", "plot_piston_forces", "plot_nkt",
@@ -623,7 +624,7 @@ def plot_crankshaft(result, ax=None, lang="ru"):
     g1 = float(lay.bank_deg[0])
     banks = sorted(set(zip(cyl["bank"], cyl["bank_angle_deg"])))
     for b, gam in banks:
-        d = np.exp(1j * np.radians(90 + gam))
+        d = guide_direction(gam, deg=True)
         ax.plot([0, 1.55 * d.real], [0, 1.55 * d.imag], color="0.45", lw=1.0, ls="--")
         ax.annotate(t["bank"].format(b=b), (1.72 * d.real, 1.72 * d.imag), ha="center",
                     va="center", fontsize=9, color="0.3")
@@ -634,7 +635,7 @@ def plot_crankshaft(result, ax=None, lang="ru"):
     for k, tau in enumerate(lay.throw_angles_deg):
         groups.setdefault(round(tau % 360.0, 6), []).append(k)
     for g, (tau, ks) in enumerate(sorted(groups.items())):
-        d = np.exp(1j * np.radians(90 + g1 + tau))
+        d = guide_direction(g1 + tau, deg=True)
         members = ", ".join(str(c) for k in ks
                             for c in cyl["cylinder"][cyl["throw"] == k + 1])
         ax.annotate("", xy=(d.real, d.imag), xytext=(0, 0),

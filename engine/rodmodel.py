@@ -42,13 +42,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from linkage.groups import Wrench, dot, driver_reactions, link_wrench, rrp_reactions
-
-from .forces import _psi, force_table
+from .forces import crank_pin_forces, crank_pin_resultant, force_table
 from .kinematics import crank_slider
 
 __all__ = ["RigidRod", "rod_options", "rigid_rod_forces", "RodModelComparison",
-           "compare_rod_models", "ROD_MODELS", "ROD_KEYS"]
+           "compare_rod_models", "mass_parts", "ROD_MODELS", "ROD_KEYS"]
 
 ROD_MODELS = ("two-mass", "rigid")
 ROD_KEYS = ("model", "inertia_kg_m2", "mass_kg", "cg_from_big_end_mm")
@@ -71,7 +69,7 @@ class RigidRod:
         return self.mass * self.cg * (L - self.cg)
 
 
-def _parts(spec):
+def mass_parts(spec):
     """(piston group mass, rod mass) when [masses] gives them as parts, else None."""
     src = spec.mass_source
     if "piston_group_kg" in src:
@@ -131,7 +129,7 @@ def _rigid(c, t, spec):
     b_mm = c.number(t, "cg_from_big_end_mm", "rod", required=False, gt=0)
     if spec is None:
         return None
-    parts = _parts(spec)
+    parts = mass_parts(spec)
     L = spec.L
     if m is None and "mass_kg" not in t:
         if parts is None:
@@ -190,29 +188,18 @@ def rigid_rod_forces(alpha_deg, R, L, omega, dPg, rod: RigidRod, offset=0.0):
 
     Notes
     -----
-    Kinematics I(1,2) → RRP(3,4) by :func:`engine.kinematics.crank_slider` (exact);
-    loads by :func:`linkage.groups.link_wrench`: the rod with mass m, J and centre of mass
-    at b on A→B; the piston with mass mп and the gas force −ΔPг·u at B; reactions by
-    :func:`linkage.groups.rrp_reactions`; the crank's torque by
-    :func:`linkage.groups.driver_reactions` with a massless crank [2]_.
+    Kinematics I(1,2) → RRP(3,4) by :func:`engine.kinematics.crank_slider` (exact); the
+    forces by the engine's one crank-pin routine :func:`engine.forces.crank_pin_forces`
+    with the rod: the rod with mass m, J and centre of mass at b on A→B, the piston with
+    mass mп and the gas force −ΔPг·u at B, the dyad's and the driver's reactions [2]_;
+    R and ψ by :func:`engine.forces.crank_pin_resultant`.
     """
     a = np.radians(np.asarray(alpha_deg, float))
     mech = crank_slider(a, R, L, omega, offset=offset)
-    sol = mech.dyad
-    u = sol.link4.e                          # the guide: the cylinder axis towards TDC
-    zB = sol.B.z
-    W3 = link_wrench(sol.link3, mass=rod.mass, inertia=rod.inertia, cg=rod.cg)
-    W4 = link_wrench(sol.link4, mass=rod.m_piston,
-                     forces=[(-np.asarray(dPg, float) * u, zB)])
-    reac = rrp_reactions(sol, L, W3, W4)
-    S32 = -reac.RA
-    e2 = mech.crank.e
-    zero = np.zeros(a.shape)
-    W2 = Wrench(zero + 0j, zero, mech.crank.origin.z)
-    drv = driver_reactions(mech.crank, sol.link3.origin.z, S32, W2)
-    K, T = dot(S32, -e2), dot(S32, 1j * e2)
-    return dict(K=K, T=T, R=np.hypot(K, T), psi=_psi(T, K), M=-drv.M_drive,
-                N=reac.RG_n, S=dot(S32, -sol.link3.e))
+    f = crank_pin_forces(mech, dPg, L, rod=rod)
+    K, T = f["K"], f["T"]
+    R_pin, psi = crank_pin_resultant(T, K)
+    return dict(K=K, T=T, R=R_pin, psi=psi, M=f["M"], N=f["N"], S=f["S"])
 
 
 @dataclass

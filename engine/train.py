@@ -58,8 +58,9 @@ import numpy as np
 from crankbase.errors import Problem
 from crankbase.tolerances import BALANCED_RTOL, ROUNDOFF_RTOL, SAME_ANGLE_DEG, snap_roundoff
 
-from .forces import PLOT_STEP_DEG, analyze, force_table, two_term_acceleration
-from .kinematics import crank_slider
+from .forces import PLOT_STEP_DEG, analyze, force_table, indicated_power
+from .kinematics import (acceleration_orders, crank_slider, cylinder_axis_angle,
+                         guide_direction, two_term_acceleration)
 from .spec import (ARRANGEMENTS, COUNTERWEIGHT_DESIGNS, Counterweight, CrankTrain, EngineSpec,
                    EngineSpecError, TableSettings)
 
@@ -375,7 +376,7 @@ def cylinder_torques(spec, lay, theta_deg, columns=("M_Nm",), base=None):
 def _throw_direction(lay, theta_rad, tau_deg):
     """Unit vector (complex) of a direction fixed on the crankshaft at τ from throw 1."""
     g1 = math.radians(float(lay.bank_deg[0]))
-    return np.exp(1j * (np.pi / 2 + g1 + theta_rad[None, :]
+    return np.exp(1j * (cylinder_axis_angle(g1) + theta_rad[None, :]
                         + np.radians(np.asarray(tau_deg, float))[:, None]))
 
 
@@ -432,7 +433,7 @@ def counterweights_for(spec, lay, train):
         # forward-rotating first-order force and moment, as mass·radius in the crank frame
         A = spec.mj * R                          # per cylinder, ×ω² gives the force
         phi = np.radians(lay.phase_deg)
-        u = np.exp(1j * (np.pi / 2 + np.radians(lay.bank_deg)))
+        u = guide_direction(np.radians(lay.bank_deg))
         g1 = math.radians(float(lay.bank_deg[0]))
         # F1_fwd = ω²·(A/2)·Σ e^{−iφ}u; a mass·radius c at angle ψ gives ω²·i·e^{iγ1}·c
         # cos α + kλ sin α = Re[(1 − ikλ)e^{iα}]: the pin offset turns the forward part
@@ -470,11 +471,12 @@ def free_forces(spec, lay, theta_deg, counterweights=(), Pj=None):
     w2 = spec.omega ** 2
     R, lam, k = spec.R, spec.lam, spec.k_offset
     alpha = theta[None, :] - np.radians(lay.phase_deg)[:, None]
-    u = np.exp(1j * (np.pi / 2 + np.radians(lay.bank_deg)))[:, None]
+    u = guide_direction(np.radians(lay.bank_deg))[:, None]
     zc = (lay.z - lay.z_centre)[:, None]
     A = spec.mj * R * w2
-    f1 = A * (np.cos(alpha) + k * lam * np.sin(alpha)) * u
-    f2 = A * lam * np.cos(2 * alpha) * u
+    first, second = acceleration_orders(alpha, lam, k, amplitude=A)
+    f1 = first * u
+    f2 = second * u
     if Pj is None:
         if spec.acceleration == "exact":
             j = crank_slider(alpha.ravel(), R, spec.L, spec.omega,
@@ -539,34 +541,59 @@ def excess_work(theta_deg, M):
 
 @dataclass(frozen=True)
 class FlywheelResult:
-    """The classic flywheel estimate (:func:`flywheel`). SI units."""
+    """A flywheel for a coefficient of speed fluctuation δ (:func:`flywheel`): the one
+    result type of the engine's estimate (:func:`analyze_engine`) and of a machine's
+    (:func:`dynamics.motion.size_flywheel`, which adds the exact flywheel and its
+    motion). SI units.
 
-    L_excess_J: float          #: Lизб, the largest swing of ∫(M − Mср)dθ [J]
+    Attributes ``dW_max`` (= ``L_excess_J``) and ``J_classic`` (= ``J_flywheel_kgm2``)
+    are the names :mod:`dynamics` reports them under.
+    """
+
+    L_excess_J: float          #: Lизб = ΔW_max, the largest swing of ∫(M − Mср)dθ [J]
     delta: float               #: δ = (ωmax − ωmin)/ωср [-]
     J0_kgm2: float             #: J0 = Lизб/(δω²), all rotating parts [kg·m²]
-    share: float               #: Jм/J0 [-]
-    J_flywheel_kgm2: float     #: Jм = share·J0 [kg·m²]
+    share: float | None        #: Jм/J0 when the flywheel is that share of J0 [-]
+    J_flywheel_kgm2: float     #: Jм = share·J0, or J0 − J_c [kg·m²]
     mD2_kgm2: float            #: flywheel moment mм·Dср² = 4·Jм [kg·m²]
-    diameter_m: float | None   #: mean rim diameter Dср, when given [m]
-    mass_kg: float | None      #: mм = 4Jм/Dср² [kg]
-    rim_speed_m_s: float | None  #: peripheral speed π·Dср·n/60 [m/s]
+    diameter_m: float | None = None   #: mean rim diameter Dср, when given [m]
+    mass_kg: float | None = None      #: mм = 4Jм/Dср² [kg]
+    rim_speed_m_s: float | None = None  #: peripheral speed π·Dср·n/60 [m/s]
+    J_c: float = 0.0           #: inertia already on the shaft, subtracted from J0 [kg·m²]
+    J_exact: float | None = None  #: the flywheel giving exactly δ with a variable J_red
+    motion: object = None      #: the motion with ``J_exact`` (dynamics.MotionResult)
+
+    @property
+    def dW_max(self) -> float:
+        """ΔW_max = Lизб. [J]"""
+        return self.L_excess_J
+
+    @property
+    def J_classic(self) -> float:
+        """The classic estimate J0 − J_c (or share·J0); ≤ 0: no flywheel needed. [kg·m²]"""
+        return self.J_flywheel_kgm2
 
 
-def flywheel(L_excess, omega, delta, share=0.85, diameter=None):
-    """Flywheel from the excess work: J0 = Lизб/(δ·ω²), Jм = share·J0, mм·Dср² = 4·Jм.
+def flywheel(L_excess, omega, delta, share=0.85, diameter=None, *, J_c=None):
+    """Flywheel from the excess work: J0 = Lизб/(δ·ω²), then Jм = share·J0 (the engine,
+    Kolchin) or Jм = J0 − J_c (a machine whose own inertia J_c is known); mм·Dср² = 4·Jм.
 
     Parameters
     ----------
     L_excess : float
-        Lизб. [J]
+        Lизб (ΔW_max). [J]
     omega : float
         Mean angular velocity. [rad/s]
     delta : float
         Coefficient of cyclic irregularity. [-]
     share : float
-        Jм/J0 (Kolchin: the flywheel carries 0.8…0.9 of J0) [1]_. [-]
+        Jм/J0 (Kolchin: the flywheel carries 0.8…0.9 of J0) [1]_; not used with ``J_c``.
+        [-]
     diameter : float, optional
         Mean diameter of the rim Dср (the rim taken as a thin ring, J = m(D/2)²). [m]
+    J_c : float, optional
+        The constant inertia already on the shaft (the cycle mean of J_red): then
+        Jм = J0 − J_c (Khurmi & Gupta eq. 16.8; may be ≤ 0). [kg·m²]
 
     Returns
     -------
@@ -582,12 +609,16 @@ def flywheel(L_excess, omega, delta, share=0.85, diameter=None):
     if not (isinstance(delta, (int, float)) and math.isfinite(delta) and 0 < delta <= 1):
         raise _bad("delta", f"got {delta!r}; must be > 0 and <= 1")
     J0 = L_excess / (delta * omega ** 2)
-    Jm = share * J0
+    if J_c is None:
+        Jm, Jc = share * J0, 0.0
+    else:
+        Jm, Jc, share = J0 - J_c, float(J_c), None
     mass = speed = None
     if diameter is not None:
         mass = 4.0 * Jm / diameter ** 2
         speed = diameter * omega / 2.0
-    return FlywheelResult(L_excess, delta, J0, share, Jm, 4.0 * Jm, diameter, mass, speed)
+    return FlywheelResult(L_excess, delta, J0, share, Jm, 4.0 * Jm, diameter, mass, speed,
+                          J_c=Jc)
 
 
 # ------------------------------------------------------------------------ the pipeline
@@ -787,7 +818,7 @@ def analyze_engine(spec, train, settings=None, *, fine_step_deg=None) -> EngineT
     i_max, i_min = int(np.argmax(M_total)), int(np.argmin(M_total))
     pi = one.summary.pi_MPa * 1e6
     Mi = pi * spec.Vh * n / (math.pi * spec.strokes)
-    Ni = pi * spec.Vh * n * spec.speed_rpm / (30.0 * spec.strokes)
+    Ni = indicated_power(pi, spec.Vh, spec.speed_rpm, spec.strokes, n)
     eta = train.mechanical_efficiency
     fw = None
     if train.delta is not None:

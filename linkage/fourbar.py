@@ -3,6 +3,10 @@
 One home for the geometry that the mechanisms (:mod:`linkage.mechanisms`), the analysis
 summary (:mod:`linkage.analysis`) and the synthesis (:mod:`linkage.synthesis`) share:
 
+* :func:`rotatability_margin` (:func:`rotatability_residuals`, :func:`crank_turns_fully`):
+  the one rotatability rule with its one tolerance
+  (:data:`crankbase.tolerances.ROTATABILITY_RTOL`), used by :func:`grashof`, the
+  mechanisms' ``check_rotatable`` and the synthesis region;
 * :func:`grashof`: Grashof type of a four-bar (:class:`GrashofType`);
   :func:`slider_crank_type`: the same question for a crank-slider (rod vs crank + |e|);
 * :func:`transmission_angle`: μ from the directions of the two links that meet at the
@@ -33,8 +37,9 @@ from crankbase.errors import Problem, SpecError
 from crankbase.tolerances import ROTATABILITY_RTOL, ROUNDOFF_RTOL
 
 __all__ = ["GeometryError", "GrashofType", "SliderCrankType", "grashof",
-           "slider_crank_type", "transmission_angle", "transmission_angle_deg",
-           "min_transmission_angle_deg", "min_transmission_angle_slider_deg"]
+           "rotatability_residuals", "rotatability_margin", "crank_turns_fully",
+           "slider_rotatability_margin", "slider_crank_type", "transmission_angle",
+           "transmission_angle_deg", "min_transmission_angle_deg", "min_transmission_angle_slider_deg"]
 
 
 class GeometryError(SpecError):
@@ -52,7 +57,7 @@ class GrashofType(str, enum.Enum):
     DOUBLE_CRANK = "double-crank"
     #: s + l < p + q and the coupler or the rocker is the shortest link.
     DOUBLE_ROCKER = "double-rocker"
-    #: s + l = p + q (within ROUNDOFF_RTOL): the links can become collinear.
+    #: s + l = p + q (within the rotatability tolerance): the links can become collinear.
     CHANGE_POINT = "change-point"
     #: s + l > p + q: no link turns fully (triple rocker).
     NON_GRASHOF = "non-Grashof"
@@ -66,7 +71,8 @@ class SliderCrankType(str, enum.Enum):
 
     #: L > r + |e|.
     ROTATABLE = "rotatable"
-    #: L = r + |e| (within ROUNDOFF_RTOL): the rod stands perpendicular to the guide once.
+    #: L = r + |e| (within the rotatability tolerance): the rod stands perpendicular to
+    #: the guide once.
     CHANGE_POINT = "change-point"
     #: L < r + |e|: the crank cannot turn fully.
     NON_ROTATABLE = "non-rotatable"
@@ -76,7 +82,8 @@ class SliderCrankType(str, enum.Enum):
 
 
 # --------------------------------------------------------------------------- validation
-def _fmt(value) -> str:
+def fmt_value(value) -> str:
+    """A value for an error message: the number, or the first bad ones of an array."""
     a = np.asarray(value)
     if a.ndim == 0:
         return repr(float(a)) if a.dtype.kind in "fiub" else repr(value)
@@ -84,7 +91,8 @@ def _fmt(value) -> str:
     return f"an array ({a.size} values)" if bad.size > 4 else repr(bad.tolist())
 
 
-def _as_float(name, value, problems):
+def as_float(name, value, problems):
+    """``value`` as a float array, or None with a problem recorded under ``name``."""
     try:
         a = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
@@ -93,11 +101,11 @@ def _as_float(name, value, problems):
     return a
 
 
-def _lengths(problems, **named):
+def positive_lengths(problems, **named):
     """Convert lengths to float arrays; record every non-finite or non-positive one."""
     out = {}
     for name, value in named.items():
-        a = _as_float(name, value, problems)
+        a = as_float(name, value, problems)
         if a is None:
             continue
         bad = ~np.isfinite(a) | (a <= 0)
@@ -114,6 +122,52 @@ def _raise(problems):
 
 
 # --------------------------------------------------------------------------- Grashof
+def rotatability_residuals(l1, l2, l3, l0=1.0, crank_rocker=False):
+    """Residuals of the conditions for the crank to turn fully, ≥ 0 when they hold.
+
+    The dyad closes at every crank angle when |λ2 − λ3| ≤ |AC| ≤ λ2 + λ3 over the whole
+    range of |AC|, |λ0 − λ1| … λ0 + λ1: Grashof's s + l ≤ p + q with the crank or the
+    ground shortest.  With ``crank_rocker`` the crank must also be the shorter of crank
+    and ground (λ0 − λ1 in place of |λ0 − λ1|): Kolchin's three inequalities,
+    eq. (1)–(3) of Sereda [2]_, the region of the crank-rockers.
+
+    Parameters
+    ----------
+    l1, l2, l3, l0 : float or array_like
+        Crank, coupler, rocker and ground lengths (one unit). [-] or [m]
+    crank_rocker : bool
+        The crank-rocker region (crank shorter than the ground).
+
+    Returns
+    -------
+    tuple of three
+        (λ2 + λ3 − λ0 − λ1, d − (λ2 − λ3), d − (λ3 − λ2)) with d = |λ0 − λ1| (or λ0 − λ1),
+        in the unit of the lengths.
+    """
+    d = (l0 - l1) if crank_rocker else np.abs(l0 - l1)
+    return (l2 + l3 - l0 - l1, d - (l2 - l3), d - (l3 - l2))
+
+
+def rotatability_margin(l1, l2, l3, l0=1.0, crank_rocker=False):
+    """The one rotatability rule: the signed distance, in the plane of (λ2, λ3) over the
+    ground, to the nearest boundary of the crank's full turn.
+
+    Returns
+    -------
+    float or ndarray
+        min(:func:`rotatability_residuals`)/(√2·λ0): ≥ 0 when the crank turns fully;
+        within ±``ROTATABILITY_RTOL`` of 0 a change-point mechanism (the links can become
+        collinear), which counts as turning fully.  [-]
+    """
+    r = rotatability_residuals(l1, l2, l3, l0, crank_rocker)
+    return np.minimum(np.minimum(r[0], r[1]), r[2]) / (math.sqrt(2.0) * l0)
+
+
+def crank_turns_fully(l1, l2, l3, l0=1.0, crank_rocker=False):
+    """True where :func:`rotatability_margin` ≥ −``ROTATABILITY_RTOL``."""
+    return rotatability_margin(l1, l2, l3, l0, crank_rocker) >= -ROTATABILITY_RTOL
+
+
 def grashof(l1, l2, l3, l0=1.0) -> GrashofType:
     """Grashof type of the four-bar with crank ``l1``, coupler ``l2``, rocker ``l3``,
     ground ``l0``.
@@ -128,10 +182,11 @@ def grashof(l1, l2, l3, l0=1.0) -> GrashofType:
     -------
     GrashofType
         With s the shortest, l the longest and p, q the other two links:
-        ``NON_GRASHOF`` if s + l > p + q; ``CHANGE_POINT`` if s + l = p + q within
-        ``ROUNDOFF_RTOL`` relative; otherwise ``CRANK_ROCKER`` (crank shortest),
-        ``DOUBLE_CRANK`` (ground shortest) or ``DOUBLE_ROCKER`` (coupler or rocker
-        shortest).
+        ``CHANGE_POINT`` if s + l = p + q within the rotatability tolerance
+        (|p + q − s − l| ≤ √2·``ROTATABILITY_RTOL``·λ0, the rule of
+        :func:`rotatability_margin`); ``NON_GRASHOF`` if s + l > p + q beyond it;
+        otherwise ``CRANK_ROCKER`` (crank shortest), ``DOUBLE_CRANK`` (ground shortest)
+        or ``DOUBLE_ROCKER`` (coupler or rocker shortest).
 
     Raises
     ------
@@ -141,24 +196,35 @@ def grashof(l1, l2, l3, l0=1.0) -> GrashofType:
     References
     ----------
     .. [1] Grashof's criterion s + l ≤ p + q [1]_ (module references); with λ0 = 1 and the
-       crank shortest it is equivalent to Kolchin's three inequalities, eq. (1)–(3) of [2]_.
+       crank shortest it is equivalent to Kolchin's three inequalities, eq. (1)–(3) of [2]_
+       (then p + q − s − l is the smallest of :func:`rotatability_residuals`).
     """
     problems = []
-    named = _lengths(problems, l1=l1, l2=l2, l3=l3, l0=l0)
+    named = positive_lengths(problems, l1=l1, l2=l2, l3=l3, l0=l0)
     for name, a in named.items():
         if a.ndim != 0:
-            problems.append(Problem(name, f"must be a single number, got {_fmt(a)}"))
+            problems.append(Problem(name, f"must be a single number, got {fmt_value(a)}"))
     _raise(problems)
     links = [float(named[k]) for k in ("l0", "l1", "l2", "l3")]
     s, p, q, l = sorted(links)
-    lhs, rhs = s + l, p + q
-    if abs(lhs - rhs) <= ROUNDOFF_RTOL * max(lhs, rhs):
+    margin = (p + q - s - l) / (math.sqrt(2.0) * links[0])
+    if abs(margin) <= ROTATABILITY_RTOL:
         return GrashofType.CHANGE_POINT
-    if lhs > rhs:
+    if margin < 0:
         return GrashofType.NON_GRASHOF
     shortest = links.index(s)  # unique: equal shortest links cannot be strictly Grashof
     return (GrashofType.DOUBLE_CRANK, GrashofType.CRANK_ROCKER,
             GrashofType.DOUBLE_ROCKER, GrashofType.DOUBLE_ROCKER)[shortest]
+
+
+def slider_rotatability_margin(crank, rod, offset=0.0):
+    """The rotatability rule of a crank-slider: (L − r − |e|)/r, ≥ 0 when the crank turns
+    fully (the rod reaches the guide line from every crank position); within
+    ±``ROTATABILITY_RTOL`` a change point, which counts as turning fully.  [-]
+
+    The same tolerance as :func:`rotatability_margin`; ``CrankSlider.check_rotatable``
+    tests each side, L − r − e and L − r + e, against it."""
+    return (rod - (crank + abs(offset))) / crank
 
 
 def slider_crank_type(crank, rod, offset=0.0) -> SliderCrankType:
@@ -174,11 +240,12 @@ def slider_crank_type(crank, rod, offset=0.0) -> SliderCrankType:
     Returns
     -------
     SliderCrankType
-        ``ROTATABLE`` if L > r + |e|, ``CHANGE_POINT`` if equal within ``ROUNDOFF_RTOL``
-        of r + L + |e|, else ``NON_ROTATABLE`` [1]_.
+        ``ROTATABLE`` if L > r + |e|, ``CHANGE_POINT`` if equal within the rotatability
+        tolerance (:func:`slider_rotatability_margin` within ±``ROTATABILITY_RTOL``),
+        else ``NON_ROTATABLE`` [1]_.
     """
-    margin = rod - (crank + abs(offset))
-    if abs(margin) <= ROUNDOFF_RTOL * (crank + rod + abs(offset)):
+    margin = slider_rotatability_margin(crank, rod, offset)
+    if abs(margin) <= ROTATABILITY_RTOL:
         return SliderCrankType.CHANGE_POINT
     return SliderCrankType.ROTATABLE if margin > 0 else SliderCrankType.NON_ROTATABLE
 
@@ -225,9 +292,8 @@ def _acute_deg(cos_mu, ok=True):
 
 def _assembles(phi_deg, l1, l2, l3, l0=1.0):
     """True where the dyad closes: |λ2 − λ3| ≤ |AC| ≤ λ2 + λ3 within √2·ROTATABILITY_RTOL·λ0,
-    |AC| the diagonal from the crank pin to the rocker pivot.  (The residual of
-    λ2 + λ3 ≥ |AC| over √2 is the distance to that line in the (λ2, λ3) plane: the
-    synthesis region's tolerance.)"""
+    |AC| the diagonal from the crank pin to the rocker pivot: the rule of
+    :func:`rotatability_margin` at one crank angle."""
     phi = np.radians(phi_deg)
     ac = np.sqrt(np.maximum(l0 ** 2 + l1 ** 2 - 2.0 * l0 * l1 * np.cos(phi), 0.0))
     tol = math.sqrt(2.0) * ROTATABILITY_RTOL * l0
@@ -263,8 +329,8 @@ def transmission_angle_deg(phi_deg, l1, l2, l3, l0=1.0):
     .. [1] [2]_ (module references), eq. (4)–(5) and (12).
     """
     problems = []
-    n = _lengths(problems, l1=l1, l2=l2, l3=l3, l0=l0)
-    phi = _as_float("phi_deg", phi_deg, problems)
+    n = positive_lengths(problems, l1=l1, l2=l2, l3=l3, l0=l0)
+    phi = as_float("phi_deg", phi_deg, problems)
     if phi is not None and not np.all(np.isfinite(phi)):
         problems.append(Problem("phi_deg", "must be finite crank angles [deg]"))
     _raise(problems)
@@ -272,7 +338,7 @@ def transmission_angle_deg(phi_deg, l1, l2, l3, l0=1.0):
     return _acute_deg(_cos_mu(*args), _assembles(*args))
 
 
-def _mu_min_on_line_of_centres(l1, l2, l3, l0):
+def mu_min_on_line_of_centres(l1, l2, l3, l0):
     """(μmin [deg], φ [deg]: 0 or 180, 180 on a tie) from the two positions on the line of
     centres, where cos μ, monotonic in cos φ, takes its extremes."""
     m0 = _acute_deg(_cos_mu(0.0, l1, l2, l3, l0))
@@ -303,8 +369,8 @@ def min_transmission_angle_deg(l1, l2, l3, l0=1.0):
     Raises
     ------
     GeometryError
-        A length is not positive, or the crank cannot turn fully (the linkage does not
-        assemble at φ = 0° or 180°, beyond √2·ROTATABILITY_RTOL·λ0).
+        A length is not positive, or the crank cannot turn fully
+        (:func:`crank_turns_fully`).
 
     References
     ----------
@@ -312,16 +378,16 @@ def min_transmission_angle_deg(l1, l2, l3, l0=1.0):
        φ = 180° for the ККМ-30° family.
     """
     problems = []
-    n = _lengths(problems, l1=l1, l2=l2, l3=l3, l0=l0)
+    n = positive_lengths(problems, l1=l1, l2=l2, l3=l3, l0=l0)
     _raise(problems)
     args = (n["l1"], n["l2"], n["l3"], n["l0"])
-    bad = ~(_assembles(0.0, *args) & _assembles(180.0, *args))
+    bad = ~crank_turns_fully(*args)
     if np.any(bad):
         raise GeometryError(Problem(
             "l1, l2, l3", f"the crank cannot turn fully (linkage not assemblable at φ = 0° "
-                          f"or 180°): l1={_fmt(n['l1'])}, l2={_fmt(n['l2'])}, "
-                          f"l3={_fmt(n['l3'])}, l0={_fmt(n['l0'])}"))
-    mu, where = _mu_min_on_line_of_centres(*args)
+                          f"or 180°): l1={fmt_value(n['l1'])}, l2={fmt_value(n['l2'])}, "
+                          f"l3={fmt_value(n['l3'])}, l0={fmt_value(n['l0'])}"))
+    mu, where = mu_min_on_line_of_centres(*args)
     if mu.ndim == 0:
         return float(mu), float(where)
     return mu, where

@@ -71,7 +71,7 @@ def stroke_cycle(mech, spec, ext) -> StrokeCycle:
     with np.errstate(divide="ignore", invalid="ignore"):
         ek = mech.kinematics(np.array([ext.phi_start, ext.phi_end]), spec.omega, 0.0)
     c = mech.output_coordinate(ek)
-    return StrokeCycle(mech._working_sign(spec.working_stroke), float(c[0]), float(c[1]),
+    return StrokeCycle(mech.working_sign(spec.working_stroke), float(c[0]), float(c[1]),
                        rocker, at_rest)
 
 
@@ -142,7 +142,7 @@ def external_loads(spec, mech, kin, cycle: StrokeCycle):
             moments[ld.link].append(ld.moment)
         else:
             if rate is None:
-                rate, coord = mech._output_rate(kin), mech.output_coordinate(kin)
+                rate, coord = mech.output_rate(kin), mech.output_coordinate(kin)
             value = resistance(ld.resistance, ld.stroke, ld.span, rate, coord, cycle)
             res = res + value
             if cycle.rocker:

@@ -139,8 +139,8 @@ class _CrankMechanism:
             return None
         phis = np.array(phis)
         kin = self.kinematics(phis, float(rotation_sign), 0.0)
-        acc = self._output_rate(kin, second=True)
-        sign_work = self._working_sign(working)
+        acc = self.output_rate(kin, second=True)
+        sign_work = self.working_sign(working)
         starts = np.flatnonzero(acc * sign_work > 0)
         if len(starts) != 1:  # degenerate (change point at an extreme)
             starts = [int(np.argmax(acc * sign_work))]
@@ -149,7 +149,9 @@ class _CrankMechanism:
         work = float(_wrap((p1 - p0) * rotation_sign))
         return Extremes(p0, p1, work)
 
-    def _working_sign(self, working):
+    def working_sign(self, working):
+        """+1 or −1: the sign of the output's rate during the working stroke
+        (``working``: "ccw", "cw" for a rocker, "away", "toward" for a slider)."""
         return {"ccw": 1, "cw": -1, "away": self.assembly, "toward": -self.assembly}[working]
 
     def _collinear_extreme(self, candidates, folded):
@@ -212,7 +214,7 @@ class CrankRocker(_CrankMechanism):
     def min_transmission_angle(self):
         """(μmin [deg], absolute crank angle of μmin [deg] in [0, 360)) over a full turn,
         closed form on the line of centres (:mod:`linkage.fourbar`)."""
-        mu, at = fourbar._mu_min_on_line_of_centres(self.l1, self.l2, self.l3, self.l0)
+        mu, at = fourbar.mu_min_on_line_of_centres(self.l1, self.l2, self.l3, self.l0)
         return float(mu), _deg360(float(at) + math.degrees(self.ground_angle))
 
     def _cos_limits(self):
@@ -225,19 +227,22 @@ class CrankRocker(_CrankMechanism):
     def check_rotatable(self, tol=ROTATABILITY_RTOL):
         """Raise :class:`AssemblyError` unless the crank can turn fully.
 
-        The dyad assembles where ``|l2 − l3| ≤ |AC| ≤ l2 + l3``; the crank angles where it
-        does not are reported (closed form).  A mechanism within ``tol`` (relative, in
-        cos(φ − γ)) of the limit counts as a change-point mechanism and is accepted, the
-        same margin :mod:`linkage.synthesis` uses for its region's boundary.
+        The rule is :func:`linkage.fourbar.rotatability_margin` (the dyad assembles where
+        ``|l2 − l3| ≤ |AC| ≤ l2 + l3``): a mechanism within ``tol`` of the limit counts as
+        a change-point mechanism and is accepted, the same rule and margin as
+        :func:`linkage.fourbar.grashof` and the synthesis region's boundary.  The crank
+        angles where the dyad does not assemble are reported (closed form).
         """
+        far, near, near2 = fourbar.rotatability_residuals(self.l1, self.l2, self.l3, self.l0)
+        scale = math.sqrt(2.0) * self.l0
         c_near, c_far = self._cos_limits()
         gam = self.ground_angle
         bad, ends = [], []
-        if c_near < 1 - tol:  # |AC| too short around φ = γ
+        if min(near, near2) / scale < -tol:  # |AC| too short around φ = γ
             h = math.acos(max(-1.0, c_near))
             bad.append(f"|AC| < |AB − CB| for crank angles {_intervals_deg(gam - h, gam + h)}")
             ends += [math.degrees(gam - h) % 360, math.degrees(gam + h) % 360]
-        if c_far > -1 + tol:  # |AC| too long around φ = γ + π
+        if far / scale < -tol:  # |AC| too long around φ = γ + π
             h = math.acos(min(1.0, c_far))
             bad.append(f"|AC| > |AB| + |CB| for crank angles "
                        f"{_intervals_deg(gam + h, gam + TWO_PI - h)}")
@@ -249,11 +254,12 @@ class CrankRocker(_CrankMechanism):
 
     def singular_angles(self, tol=ROTATABILITY_RTOL):
         """Crank angles [rad] where all four joints are collinear (change point)."""
-        c_near, c_far = self._cos_limits()
+        far, near, near2 = fourbar.rotatability_residuals(self.l1, self.l2, self.l3, self.l0)
+        scale = math.sqrt(2.0) * self.l0
         out = []
-        if abs(c_near - 1.0) <= tol:
+        if abs(min(near, near2)) / scale <= tol:
             out.append(float(_wrap(self.ground_angle)))
-        if abs(c_far + 1.0) <= tol:
+        if abs(far) / scale <= tol:
             out.append(float(_wrap(self.ground_angle + math.pi)))
         return out
 
@@ -274,7 +280,8 @@ class CrankRocker(_CrankMechanism):
             out.extend(self._collinear_extreme(cands, folded))
         return out
 
-    def _output_rate(self, kin, second=False):
+    def output_rate(self, kin, second=False):
+        """The rocker's ω4 [rad/s] (its ε4 [rad/s²] with ``second``)."""
         d = kin["dyad"]
         return d.link4.eps if second else d.link4.omega
 
@@ -335,7 +342,9 @@ class CrankSlider(_CrankMechanism):
 
     def check_rotatable(self, tol=ROTATABILITY_RTOL):
         """Raise :class:`AssemblyError` unless the crank can turn fully
-        (|offset − y_A| ≤ L in guide coordinates for every crank angle)."""
+        (|offset − y_A| ≤ L in guide coordinates for every crank angle): the rule of
+        :func:`linkage.fourbar.slider_rotatability_margin` on each side of the guide,
+        (L − r ∓ e)/r ≥ −``tol``."""
         l1, L, e = self.l1, self.l2, self.offset
         gam = self.guide_angle
         bad, ends = [], []
@@ -376,7 +385,9 @@ class CrankSlider(_CrankMechanism):
             out.extend(self._collinear_extreme(cands, folded))
         return out
 
-    def _output_rate(self, kin, second=False):
+    def output_rate(self, kin, second=False):
+        """The slider's speed along the guide [m/s] (its acceleration [m/s²] with
+        ``second``)."""
         d = kin["dyad"]
         return d.a if second else d.v
 

@@ -51,8 +51,9 @@ import numpy as np
 from crankbase.errors import Problem
 from crankbase.tolerances import DEGENERATE_QUADRATIC_ATOL, ROTATABILITY_RTOL, ROUNDOFF_RTOL
 
-from .fourbar import (GeometryError, GrashofType, _as_float, _fmt, _lengths, grashof,
-                      min_transmission_angle_deg, transmission_angle_deg)
+from .fourbar import (GeometryError, GrashofType, as_float, fmt_value, grashof,
+                      min_transmission_angle_deg, positive_lengths, rotatability_margin,
+                      transmission_angle_deg)
 
 __all__ = [
     "TOL", "SynthesisError", "GrashofType", "grashof",
@@ -80,12 +81,12 @@ class SynthesisError(GeometryError):
 
 # --------------------------------------------------------------------------- validation
 def _phi0(problems, phi0_deg, name="phi0_deg"):
-    a = _as_float(name, phi0_deg, problems)
+    a = as_float(name, phi0_deg, problems)
     if a is None:
         return None
     if a.ndim != 0 or not math.isfinite(float(a)) or not 0.0 < float(a) < 180.0:
         problems.append(Problem(name, f"must be a crank angle strictly between 0° and 180°, "
-                                      f"got {_fmt(phi0_deg)}"))
+                                      f"got {fmt_value(phi0_deg)}"))
         return None
     return float(a)
 
@@ -96,34 +97,25 @@ def _raise(problems):
 
 
 def _scalar(name, value, problems):
-    a = _as_float(name, value, problems)
+    a = as_float(name, value, problems)
     if a is None:
         return None
     if a.ndim != 0:
-        problems.append(Problem(name, f"must be a single number, got {_fmt(value)}"))
+        problems.append(Problem(name, f"must be a single number, got {fmt_value(value)}"))
         return None
     return float(a)
 
 
-def _kolchin_residuals(l1, l2, l3):
-    """Residuals of Kolchin's inequalities, eq. (3), (1), (2): all ≥ 0 inside."""
-    return (l2 + l3 - 1.0 - l1, 1.0 - l1 - (l2 - l3), 1.0 - l1 - (l3 - l2))
-
-
 def _kolchin_margin(l1, l2, l3):
     """Signed distance in the (λ2, λ3) plane to the nearest of Kolchin's lines for this
-    λ1: ≥ 0 for a crank-rocker or change point (the smallest residual over √2)."""
-    r = _kolchin_residuals(l1, l2, l3)
-    return np.minimum(np.minimum(r[0], r[1]), r[2]) / math.sqrt(2.0)
+    λ1: ≥ 0 for a crank-rocker or change point (:func:`linkage.fourbar.rotatability_margin`
+    of the crank-rocker region, ground 1)."""
+    return rotatability_margin(l1, l2, l3, 1.0, crank_rocker=True)
 
 
 def _type_with_tol(l1, l2, l3) -> GrashofType:
-    """:func:`grashof`, with mechanisms within :data:`TOL` of Kolchin's lines counted as
-    change points (the region's boundary, eq. (3) / (1)–(2))."""
-    t = grashof(l1, l2, l3)
-    if t is GrashofType.NON_GRASHOF and float(_kolchin_margin(l1, l2, l3)) >= -TOL:
-        return GrashofType.CHANGE_POINT
-    return t
+    """:func:`grashof` (its change-point band is the region's boundary band, :data:`TOL`)."""
+    return grashof(l1, l2, l3)
 
 
 # --------------------------------------------------------------------------- the family
@@ -304,14 +296,14 @@ def kolchin_line_points(l1, phi0_deg=30.0):
     """
     problems = []
     phi0 = _phi0(problems, phi0_deg)
-    l1a = _as_float("l1", l1, problems)
+    l1a = as_float("l1", l1, problems)
     _raise(problems)
     top = l1_max(phi0)
     bad = ~np.isfinite(l1a) | (l1a < 0.0) | (l1a > top + TOL)
     if np.any(bad):
         raise SynthesisError(Problem(
             "l1", f"must lie in 0 … λ1max = {top:.6g} for φ0 = {phi0:g}°, "
-                  f"got {_fmt(l1a[bad] if l1a.ndim else l1a)}"))
+                  f"got {fmt_value(l1a[bad] if l1a.ndim else l1a)}"))
     l1a = np.minimum(l1a, top)
     S, D = _boundary_sd(l1a, _c(phi0))
     big, small = (S + D) / 2.0, (S - D) / 2.0
@@ -590,7 +582,7 @@ def mu_min_curves(phi0_deg=30.0, l2=tuple(np.round(np.arange(1, 10) / 10.0, 2)),
     """
     problems = []
     phi0 = _phi0(problems, phi0_deg)
-    l2a = _lengths(problems, l2=l2).get("l2")
+    l2a = positive_lengths(problems, l2=l2).get("l2")
     _raise(problems)
     l2a = np.atleast_1d(l2a)
     c = _c(phi0)
@@ -701,7 +693,7 @@ def design(l1, l2, l3, phi0_deg=30.0, method="given") -> Design:
     problems = []
     phi0 = _phi0(problems, phi0_deg)
     vals = [_scalar(k, v, problems) for k, v in (("l1", l1), ("l2", l2), ("l3", l3))]
-    _lengths(problems, **{k: v for k, v in zip(("l1", "l2", "l3"), vals) if v is not None})
+    positive_lengths(problems, **{k: v for k, v in zip(("l1", "l2", "l3"), vals) if v is not None})
     _raise(problems)
     l1, l2, l3 = vals
     c = _c(phi0)
@@ -752,7 +744,7 @@ def crank_length_for_right_angle(l2, l3, phi0_deg=30.0) -> float:
     problems = []
     phi0 = _phi0(problems, phi0_deg)
     l2f, l3f = _scalar("l2", l2, problems), _scalar("l3", l3, problems)
-    _lengths(problems, **{k: v for k, v in (("l2", l2f), ("l3", l3f)) if v is not None})
+    positive_lengths(problems, **{k: v for k, v in (("l2", l2f), ("l3", l3f)) if v is not None})
     _raise(problems)
     c = _c(phi0)
     best, r_minus, r_plus = (float(v) for v in _smallest_admissible_root(l2f, l3f, c))
@@ -820,7 +812,7 @@ def design_equal_l2_l3(l1, phi0_deg=30.0) -> Design:
     phi0 = _phi0(problems, phi0_deg)
     l1f = _scalar("l1", l1, problems)
     if l1f is not None:
-        _lengths(problems, l1=l1f)
+        positive_lengths(problems, l1=l1f)
     _raise(problems)
     top = l1_max(phi0)
     if l1f > top + TOL:
@@ -870,7 +862,7 @@ def design_for_mu_min(l2, mu_min_deg, phi0_deg=30.0, l1_step=None) -> Design:
     phi0 = _phi0(problems, phi0_deg)
     l2f = _scalar("l2", l2, problems)
     if l2f is not None:
-        _lengths(problems, l2=l2f)
+        positive_lengths(problems, l2=l2f)
     mu = _scalar("mu_min_deg", mu_min_deg, problems)
     if mu is not None and not (math.isfinite(mu) and 0.0 <= mu < 90.0):
         problems.append(Problem("mu_min_deg", f"must be an angle in 0 ≤ μmin < 90°, got {mu_min_deg!r}"))
@@ -947,7 +939,7 @@ def to_spec(l1, l2, l3, ground_m, **mechanism) -> dict:
     problems = []
     vals = {k: _scalar(k, v, problems) for k, v in
             (("l1", l1), ("l2", l2), ("l3", l3), ("ground_m", ground_m))}
-    _lengths(problems, **{k: v for k, v in vals.items() if v is not None})
+    positive_lengths(problems, **{k: v for k, v in vals.items() if v is not None})
     _raise(problems)
     g = vals["ground_m"]
     mech = {

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from .errors import PlanError, Problem
 from .layout import (CAP_EM, FONT, H_LABEL, H_POINT, S_MAIN, S_THIN, Arrow, Block, Circle,
-                     Line, Sheet, Text, _arrow_parts, diagram_block, lever_block,
+                     Line, Sheet, Text, arrow_parts, diagram_block, lever_block,
                      positions_block, text_width)
 
 __all__ = ["position_blocks", "position_figure", "layout_sheets", "sheet_figure",
@@ -73,7 +73,7 @@ def render_items(ax, items):
             ax.plot([it.p1.real, it.p2.real], [it.p1.imag, it.p2.imag], color="k", lw=lw,
                     solid_capstyle="butt", **kw)
         elif isinstance(it, Arrow):
-            head = _arrow_parts(it.p1, it.p2)
+            head = arrow_parts(it.p1, it.p2)
             if head is None:
                 continue
             lw = WIDTH.get(it.layer, S_MAIN) * PT
@@ -331,14 +331,14 @@ def sheet_figure(sheet):
 
 def check_no_overlap(items, pad=0.0):
     """Pairs of texts whose boxes overlap (for the tests and a self-check)."""
-    from .layout import _boxes_overlap, _text_box
+    from .layout import boxes_overlap, text_box
 
     texts = [t for t in items if isinstance(t, Text)]
-    boxes = [_text_box(t) for t in texts]
+    boxes = [text_box(t) for t in texts]
     out = []
     for a in range(len(boxes)):
         for b in range(a + 1, len(boxes)):
-            if _boxes_overlap(boxes[a], boxes[b], pad):
+            if boxes_overlap(boxes[a], boxes[b], pad):
                 out.append((texts[a].text, texts[b].text))
     return out
 

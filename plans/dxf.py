@@ -24,7 +24,7 @@ application ``CRANKDYN``, so a CAD user (and the tests) can match it with ``plan
 """
 from __future__ import annotations
 
-from .layout import Arrow, Circle, Line, Text, _arrow_parts
+from .layout import Arrow, Circle, Line, Text, arrow_parts
 
 __all__ = ["sheet_dxf", "write_dxf", "LAYERS", "APPID"]
 
@@ -66,7 +66,7 @@ def sheet_dxf(sheet, names=None):
             msp.add_line((it.p1.real, it.p1.imag), (it.p2.real, it.p2.imag),
                          dxfattribs={"layer": it.layer})
         elif isinstance(it, Arrow):
-            head = _arrow_parts(it.p1, it.p2)
+            head = arrow_parts(it.p1, it.p2)
             if head is None:
                 continue
             line = msp.add_line((it.p1.real, it.p1.imag), (it.p2.real, it.p2.imag),

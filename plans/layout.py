@@ -114,7 +114,8 @@ def text_width(text: str, height: float) -> float:
     return max(ext.x1, 0.0) + 0.1 * height
 
 
-def _text_box(t: Text):
+def text_box(t: Text):
+    """Bounding box (x0, y0, x1, y1) of a text on the sheet. [mm]"""
     w = text_width(t.text, t.height)
     h = t.height * 1.25
     x = t.at.real - {"left": 0.0, "center": w / 2, "right": w}[t.ha]
@@ -122,7 +123,8 @@ def _text_box(t: Text):
     return (x, y - 0.15 * t.height, x + w, y + h)
 
 
-def _boxes_overlap(a, b, pad=0.4):
+def boxes_overlap(a, b, pad=0.4):
+    """True when the boxes ``a`` and ``b`` (x0, y0, x1, y1) come closer than ``pad``. [mm]"""
     return not (a[2] + pad <= b[0] or b[2] + pad <= a[0] or a[3] + pad <= b[1]
                 or b[3] + pad <= a[1])
 
@@ -160,19 +162,19 @@ class _Placer:
         best, best_score = None, None
         for at in candidates:
             t = Text(at, text, height)
-            box = _text_box(t)
-            score = sum(_boxes_overlap(box, b) for b in self.boxes) * 1000
+            box = text_box(t)
+            score = sum(boxes_overlap(box, b) for b in self.boxes) * 1000
             score += sum(_seg_hits_box(p1, p2, box) for p1, p2 in self.segments)
             if score == 0:
                 best = t
                 break
             if best_score is None or score < best_score:
                 best, best_score = t, score
-        self.boxes.append(_text_box(best))
+        self.boxes.append(text_box(best))
         return best
 
 
-def _arrow_parts(p1, p2):
+def arrow_parts(p1, p2):
     """Arrowhead triangle (3 points) of a vector p1→p2, or None for a null vector."""
     d = p2 - p1
     L = abs(d)
@@ -271,7 +273,7 @@ def _items_bbox(items):
             xs += [it.p1.real, it.p2.real]
             ys += [it.p1.imag, it.p2.imag]
         elif isinstance(it, Text):
-            b = _text_box(it)
+            b = text_box(it)
             xs += [b[0], b[2]]
             ys += [b[1], b[3]]
         elif isinstance(it, Circle):

@@ -106,3 +106,62 @@ def test_every_error_class_is_in_the_hierarchy():
     for cls in classes:
         if issubclass(cls, Exception):
             assert issubclass(cls, errors.CrankdynError), cls
+
+
+def _private_uses(path: pathlib.Path) -> list[str]:
+    """Every private name (``_x``, not a dunder) of another project module that ``path``
+    uses: ``from X import _x`` (absolute or relative) and ``M._x`` / ``pkg.M._x`` where
+    ``M`` was bound by an import of a project module."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    project = set(LIBRARIES) | {"crankdyn"}
+
+    def private(name):
+        return name.startswith("_") and not name.startswith("__")
+
+    out, modules = [], set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom):
+            ours = node.level > 0 or (node.module or "").split(".")[0] in project
+            if not ours:
+                continue
+            for a in node.names:
+                if private(a.name):
+                    out.append(f"line {node.lineno}: from {'.' * node.level}"
+                               f"{node.module or ''} import {a.name}")
+                else:                  # may be a module (from linkage import fourbar)
+                    modules.add(a.asname or a.name)
+        elif isinstance(node, ast.Import):
+            for a in node.names:
+                if a.name.split(".")[0] in project:
+                    modules.add(a.asname or a.name.split(".")[0])
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Attribute) and private(node.attr):
+            base = node.value
+            while isinstance(base, ast.Attribute):
+                base = base.value
+            if isinstance(base, ast.Name) and base.id in modules:
+                out.append(f"line {node.lineno}: {ast.unparse(node)}")
+    return out
+
+
+@pytest.mark.parametrize("package", LIBRARIES)
+def test_no_private_name_crosses_modules(package):
+    """A module's private helpers (``_x``) stay in it: another module that needs one
+    calls a public function (engine.forces.crank_pin_resultant, not forces._psi)."""
+    bad = {str(p.relative_to(ROOT)): u for p in sorted((ROOT / package).rglob("*.py"))
+           if (u := _private_uses(p))}
+    assert not bad, bad
+
+
+def test_the_private_name_scan_finds_both_forms(tmp_path):
+    """The scan catches the two forms (a test of the test, so it cannot pass vacuously)."""
+    src = tmp_path / "m.py"
+    src.write_text("from .forces import _psi, force_table\n"
+                   "from linkage import fourbar\nimport engine.rodmodel as rm\n"
+                   "import numpy as np\n"
+                   "x = fourbar._mu(1) + rm._parts(2) + np._private + force_table.__doc__\n"
+                   "def _own():\n    return _own\n", encoding="utf-8")
+    found = _private_uses(src)
+    assert len(found) == 3, found
+    assert any("_psi" in f for f in found) and any("fourbar._mu" in f for f in found)
+    assert any("rm._parts" in f for f in found)

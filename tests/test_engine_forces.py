@@ -551,3 +551,110 @@ def test_random_placed_cylinders(c):
     beta = np.arcsin(spec.lam * (np.sin(np.radians(theta - c["phase"])) - spec.k_offset))
     np.testing.assert_allclose(t["N_N"], t["P_N"] * np.tan(beta), rtol=1e-9, atol=1e-9 * sc)
     np.testing.assert_allclose(t["S_N"], t["P_N"] / np.cos(beta), rtol=1e-9, atol=1e-9 * sc)
+
+
+# ------------------------------------------------ the one place of each formula (#19)
+
+def test_crank_pin_resultant_values_and_signs():
+    """Rшш = √(T² + (K + Kr.ш)²), Ψ = atan2(T, K + Kr.ш): a 3-4-5 triangle in each
+    quadrant catches a swapped argument or a lost sign; −180° from rounding is 180°."""
+    from engine.forces import crank_pin_resultant
+
+    T = np.array([3.0, 3.0, -3.0, -3.0, 0.0])
+    K = np.array([10.0, -2.0, -2.0, 10.0, -1.0])
+    R, psi = crank_pin_resultant(T, K, -6.0)            # K + Kr = 4, −8, −8, 4, −7
+    np.testing.assert_allclose(R, [5.0, math.hypot(3, 8), math.hypot(3, 8), 5.0, 7.0])
+    np.testing.assert_allclose(psi, [36.86989764584402, 180 - 20.556045219583467,
+                                     -180 + 20.556045219583467, -36.86989764584402, 180.0])
+    R0, psi0 = crank_pin_resultant(-0.0, -1.0)           # no Kr: a rigid rod's own K
+    assert R0 == 1.0 and psi0 == 180.0
+
+
+def test_acceleration_orders_sum_to_the_two_term_acceleration():
+    from engine.forces import acceleration_orders
+
+    a = np.radians(np.arange(0.0, 360.0, 7.5))
+    lam, k, R, w = 0.28, 0.05, 0.043, 500.0
+    first, second = acceleration_orders(a, lam, k)
+    np.testing.assert_allclose(first, np.cos(a) + k * lam * np.sin(a), rtol=1e-15)
+    np.testing.assert_allclose(second, lam * np.cos(2 * a), rtol=1e-15, atol=1e-16)
+    np.testing.assert_allclose(R * w ** 2 * (first + second),
+                               two_term_acceleration(a, R, lam, w, k), rtol=1e-14)
+    f1, f2 = acceleration_orders(a, lam, k, amplitude=3.0)
+    np.testing.assert_allclose(f1, 3.0 * first, rtol=1e-15)
+    np.testing.assert_allclose(f2, 3.0 * second, rtol=1e-15)
+    # at α = 90° the first order is the offset term kλ, the second −λ
+    f, s = acceleration_orders(math.pi / 2, lam, k)
+    assert f == pytest.approx(k * lam) and s == pytest.approx(-lam)
+
+
+def test_indicated_power_of_one_cylinder_and_of_the_engine():
+    """Ni = pi·Vh·i·n/(30·τ): 1 MPa in 0.5 L at 6000 rpm, four-stroke, 4 cylinders =
+    100 kW; the engine's Ni is i times the one-cylinder summary's."""
+    from engine.forces import indicated_power
+
+    assert indicated_power(1e6, 0.5e-3, 6000.0, 4, 4) == pytest.approx(100e3, rel=1e-15)
+    assert indicated_power(1e6, 0.5e-3, 6000.0, 2) == pytest.approx(50e3, rel=1e-15)
+    spec = make(cylinders=4)
+    res = engine.analyze_engine(spec, engine.CrankTrain())
+    assert res.summary.Ni_kW == pytest.approx(4 * res.cylinder.summary.power_i_kW, rel=1e-14)
+
+
+def test_cylinder_axis_direction_is_one_rule():
+    """γ = 0 is the vertical +y; + in the direction of rotation (counter-clockwise):
+    γ = +90° points to −x.  Radians and degrees, scalars and arrays agree."""
+    from engine.bearings import crank_unit
+    from engine.kinematics import cylinder_axis_angle
+
+    assert guide_direction(0.0) == pytest.approx(1j)
+    assert guide_direction(math.pi / 2) == pytest.approx(-1.0)
+    assert guide_direction(90.0, deg=True) == pytest.approx(-1.0)
+    assert isinstance(guide_direction(0.3), complex)
+    g = np.array([-45.0, 0.0, 30.0, 90.0])
+    np.testing.assert_allclose(guide_direction(g, deg=True), guide_direction(np.radians(g)),
+                               atol=1e-15)
+    np.testing.assert_array_equal(crank_unit(g), guide_direction(g, deg=True))
+    assert cylinder_axis_angle(30.0, deg=True) == 120.0
+    # the kinematics' guide is this direction
+    mech = crank_slider(np.array([0.1]), 0.04, 0.15, 100.0, bank=0.5)
+    assert complex(mech.dyad.link4.e[0]) == pytest.approx(guide_direction(0.5))
+
+
+def test_one_crank_pin_routine_for_both_rod_models():
+    """crank_pin_forces with a rigid rod of no mass and a massless piston is the
+    two-mass path exactly; with mass, it is engine.rodmodel.rigid_rod_forces."""
+    from engine.rodmodel import RigidRod, rigid_rod_forces
+
+    spec = make("exact")
+    a_deg = np.arange(0.0, 720.0, 5.0)
+    a = np.radians(a_deg)
+    mech = crank_slider(a, spec.R, spec.L, spec.omega)
+    P = 1e4 * np.sin(a) + 3e3
+    two = crank_pin_forces(mech, P, spec.L)
+    none = crank_pin_forces(mech, P, spec.L, rod=RigidRod(0.0, spec.L / 3, 0.0, 0.0))
+    for key in ("K", "T", "N", "S", "M"):
+        np.testing.assert_allclose(none[key], two[key], rtol=0, atol=1e-9 * np.max(np.abs(P)))
+    rod = RigidRod(0.8, 0.04, 3e-3, 0.5)
+    rg = rigid_rod_forces(a_deg, spec.R, spec.L, spec.omega, P, rod)
+    f = crank_pin_forces(mech, P, spec.L, rod=rod)
+    for key in ("K", "T", "N", "S", "M"):
+        np.testing.assert_array_equal(rg[key], f[key])
+    assert np.max(np.abs(f["K"] - two["K"])) > 100.0     # the rod's inertia is in it
+
+
+def test_one_flywheel_type_and_function():
+    """dynamics imports engine.train's FlywheelResult and flywheel(): the engine's
+    Jм = share·J0 and a machine's J_F = ΔW_max/(δω²) − J_c from the same J0."""
+    import dynamics
+    from dynamics import motion
+    from engine.train import FlywheelResult, flywheel
+
+    assert dynamics.FlywheelResult is FlywheelResult is motion.FlywheelResult
+    assert engine.FlywheelResult is FlywheelResult
+    e = flywheel(900.0, 300.0, 0.01, 0.8, 0.3)
+    assert e.J0_kgm2 == pytest.approx(900.0 / (0.01 * 300.0 ** 2))
+    assert e.J_flywheel_kgm2 == pytest.approx(0.8 * e.J0_kgm2) and e.J_c == 0.0
+    assert e.mass_kg == pytest.approx(4 * e.J_flywheel_kgm2 / 0.09)
+    m = flywheel(900.0, 300.0, 0.01, J_c=0.4)
+    assert m.J_classic == pytest.approx(e.J0_kgm2 - 0.4) and m.share is None
+    assert m.dW_max == 900.0 and m.J_exact is None

@@ -40,10 +40,13 @@ def test_grashof_types(lengths, kind):
 
 
 def test_grashof_change_point_tolerance():
-    # s + l = p + q within 1e-12 relative is a change point
+    # s + l = p + q within √2·ROTATABILITY_RTOL·λ0 (the one rotatability rule) is a
+    # change point: 0.3·1e-9 off is inside the band, 0.3·1e-8 outside
     assert grashof(0.3 * (1 + 1e-13), 0.7, 0.6) is GrashofType.CHANGE_POINT
-    assert grashof(0.3 * (1 + 1e-9), 0.7, 0.6) is GrashofType.NON_GRASHOF
-    assert grashof(0.3 * (1 - 1e-9), 0.7, 0.6) is GrashofType.CRANK_ROCKER
+    assert grashof(0.3 * (1 + 1e-9), 0.7, 0.6) is GrashofType.CHANGE_POINT
+    assert grashof(0.3 * (1 - 1e-9), 0.7, 0.6) is GrashofType.CHANGE_POINT
+    assert grashof(0.3 * (1 + 1e-8), 0.7, 0.6) is GrashofType.NON_GRASHOF
+    assert grashof(0.3 * (1 - 1e-8), 0.7, 0.6) is GrashofType.CRANK_ROCKER
     assert str(GrashofType.CRANK_ROCKER) == "crank-rocker"
     assert set(GrashofType.__members__) == {"CRANK_ROCKER", "DOUBLE_CRANK", "DOUBLE_ROCKER",
                                             "CHANGE_POINT", "NON_GRASHOF"}
@@ -132,3 +135,57 @@ def test_analysis_summary_uses_the_closed_form(mech):
     at = linkage.analyze(data, crank_angles_deg=[s.mu_min_phi_deg]).kinematics["mu_deg"][0]
     assert at == pytest.approx(s.mu_min_deg, abs=1e-9)
     assert 0.0 <= s.mu_min_phi_deg < 360.0
+
+
+@pytest.mark.parametrize("eps, turns", [(-3e-9, True), (-1e-9, True), (1e-9, True),
+                                        (3e-9, False)])
+def test_one_rotatability_rule_for_grashof_mechanisms_and_synthesis(eps, turns):
+    """One rule, one tolerance: a crank-rocker pushed past Kolchin's line
+    λ2 + λ3 = 1 + λ1 by eps (λ1 = 0.3 + eps) is accepted or refused alike by
+    fourbar.crank_turns_fully, grashof (change point), CrankRocker.check_rotatable,
+    min_transmission_angle_deg and the synthesis margin; the band is
+    √2·ROTATABILITY_RTOL on the residual (|eps| = 1e-9 is inside it, 3e-9 outside)."""
+    from crankbase.tolerances import ROTATABILITY_RTOL
+    from linkage import synthesis
+    from linkage.mechanisms import AssemblyError, CrankRocker
+
+    l1, l2, l3 = 0.3 + eps, 0.7, 0.6            # s + l − p − q = eps (s = λ1, l = λ0 = 1)
+    margin = fourbar.rotatability_margin(l1, l2, l3)
+    assert margin == pytest.approx(-eps / math.sqrt(2.0), abs=1e-15)
+    assert bool(fourbar.crank_turns_fully(l1, l2, l3)) is turns
+    assert (grashof(l1, l2, l3) in (GrashofType.CHANGE_POINT, GrashofType.CRANK_ROCKER)) \
+        is turns
+    if abs(margin) <= ROTATABILITY_RTOL:
+        assert grashof(l1, l2, l3) is GrashofType.CHANGE_POINT
+    assert bool(synthesis._kolchin_margin(l1, l2, l3) >= -synthesis.TOL) is turns
+    for scale, gamma in ((1.0, 0.0), (250.0, 0.7)):        # any unit, any ground angle
+        mech = CrankRocker(l1 * scale, l2 * scale, l3 * scale, scale, gamma)
+        if turns:
+            mech.check_rotatable()
+            min_transmission_angle_deg(l1 * scale, l2 * scale, l3 * scale, scale)
+        else:
+            with pytest.raises(AssemblyError):
+                mech.check_rotatable()
+            with pytest.raises(GeometryError):
+                min_transmission_angle_deg(l1 * scale, l2 * scale, l3 * scale, scale)
+
+
+@pytest.mark.parametrize("eps, turns", [(-5e-10, True), (5e-10, True), (-3e-9, False),
+                                        (3e-9, True)])
+@pytest.mark.parametrize("e", [0.012, -0.012])
+def test_one_rotatability_rule_for_the_crank_slider(eps, turns, e):
+    """slider_crank_type and CrankSlider.check_rotatable agree: L = r + |e| + eps·r."""
+    from linkage.fourbar import SliderCrankType, slider_crank_type
+    from linkage.mechanisms import AssemblyError, CrankSlider
+
+    r = 0.05
+    L = r + abs(e) + eps * r
+    kind = slider_crank_type(r, L, e)
+    assert (kind is not SliderCrankType.NON_ROTATABLE) is turns
+    assert (kind is SliderCrankType.CHANGE_POINT) is (abs(eps) < 1e-9)
+    mech = CrankSlider(r, L, 0.4, e)
+    if turns:
+        mech.check_rotatable()
+    else:
+        with pytest.raises(AssemblyError):
+            mech.check_rotatable()

@@ -243,7 +243,7 @@ def test_region_boundary_has_dead_positions():
             at = 180.0 if phi0 <= 90 else 0.0
             assert abs(fourbar._cos_mu(at, l1, l2, l3)) == pytest.approx(1.0, abs=1e-12)
             assert grashof(l1, l2, l3) is GrashofType.CHANGE_POINT or \
-                min(syn._kolchin_residuals(l1, l2, l3)) > -1e-12
+                min(fourbar.rotatability_residuals(l1, l2, l3, crank_rocker=True)) > -1e-12
         np.testing.assert_allclose(np.hypot(reg.arc_l2, reg.arc_l3), 1.0, atol=1e-15)
         assert np.all(reg.contains(reg.l2[1:-1], reg.l3[1:-1]))
         assert reg.l2[0] == reg.l2[-1] and reg.l3[0] == reg.l3[-1]   # closed
