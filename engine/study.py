@@ -23,6 +23,7 @@ Examples
 """
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from pathlib import Path
 from types import MappingProxyType
@@ -57,7 +58,7 @@ class BearingReport:
 
     analysis: object
     pin_wear: tuple
-    tables: object
+    tables: Mapping
     plot_names: tuple
 
 
@@ -91,7 +92,7 @@ class EngineReport:
     cylinder: object
     whole: object
     bearings: BearingReport | None
-    tables: object
+    tables: Mapping
     name: str
     plot_names: tuple
     source: Path | None = None

@@ -119,7 +119,8 @@ def bearing_lines(analysis, pin_wear, lang: str = "ru") -> list[str]:
     ps, js, ts = L.pin_stats[kp - 1], L.journal_stats[jm - 1], L.torque_stats[jt - 1]
     lines = [
         t("engine.summary.crank_pins", k=kp, max=ps.max_N, alpha=ps.alpha_max_deg,
-          mean=ps.mean_N, chi=ps.chi, holes=", ".join(f"{w.oil_hole_deg:g}" for w in pin_wear)),
+          mean=ps.mean_N, chi=ps.chi,
+          holes=", ".join(f"{w.oil_hole_deg:g}" for w in pin_wear)),
         t("engine.summary.main_journals", k=jm, max=js.max_N, mean=js.mean_N, chi=js.chi,
           holes=", ".join(f"{w.oil_hole_deg:g}" for w in analysis.journal_wear)),
         t("engine.summary.journal_torques", k=jt, max=ts["max_Nm"], min=ts["min_Nm"],

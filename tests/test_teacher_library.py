@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import re
 
-import numpy as np
 import pandas as pd
 import pytest
 
@@ -29,7 +28,8 @@ def test_run_variants_reports_each_row_and_the_summary(tmp_path):
     assert sorted(seen) == [("A", 2), ("B", 2)]
     assert [o.ok for o in run.outcomes] == [True, False]
     bad = run.failures[0]
-    assert bad.variant.row == 3 and bad.problems[0].startswith("row 3 (B): engine.bore_mm: got -5")
+    assert bad.variant.row == 3
+    assert bad.problems[0].startswith("row 3 (B): engine.bore_mm: got -5")
     assert not bad.kept_earlier and not (tmp_path / "out" / "B").exists()
     # the record is the variant's own result, computed directly
     study = engine.load(PETROL)
