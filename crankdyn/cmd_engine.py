@@ -102,7 +102,8 @@ def run(args) -> int:
 
 
 #: The library's argument names → this command's options (in problems of bad input).
-OPTION_NAMES = {"step": "--step", "form": "--form", "lang": "--lang", "out": "-o"}
+OPTION_NAMES = {"step": "--step", "form": "--form", "lang": "--lang", "out": "-o",
+                "jobs": "--jobs"}
 
 
 def with_options(study, step=None, form=None):

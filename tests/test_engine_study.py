@@ -258,3 +258,15 @@ def test_the_readme_example_runs_as_written(tmp_path, monkeypatch, capsys):
     assert "whole engine: 4 cylinders inline" in printed
     assert "petrol-vaz2106.xlsx, 22 plots (PNG, SVG) in out" in printed
     assert (tmp_path / "out" / "petrol-vaz2106_crankpins.csv").is_file()
+
+
+def test_the_command_line_names_its_options_where_the_library_names_arguments(tmp_path,
+                                                                             capsys):
+    from crankdyn.cli import main
+
+    assert main(["engine", "--example", "-o", str(tmp_path / "o"), "--step", "0"]) == 2
+    assert capsys.readouterr().err.splitlines() == [
+        "crankdyn engine: error: --step: got 0.0; must be a number > 0 and <= 720"]
+    with pytest.raises(SpecError, match="^step: got 0.0"):
+        engine.run_study(example_path("petrol_vaz2106.toml"), step=0.0)
+    assert not (tmp_path / "o").exists()
