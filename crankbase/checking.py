@@ -10,19 +10,28 @@ hand-drawn diagram is good to a few per cent); ``atol``, unless given, is
 :data:`crankbase.tolerances.CHECK_ATOL_OF_SCALE` times the largest magnitude of the
 computed column, so a value near a zero crossing (T at α = 0) is judged against the
 scale of its column instead of against zero.
+
+The whole check is two calls: :func:`check_table` (a :class:`CheckSide` from the calculation
+package — ``engine.check.check_side(study)``, ``linkage.check.check_side(spec)`` — and the
+student's file → a :class:`CheckResult`) and :func:`write_check` (``check.csv`` and the
+marked copy, as one unit); :meth:`CheckResult.summary_lines` is the verdict in the report's
+language (``check.po``).
 """
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Callable
 
 import numpy as np
 
 from .errors import Problem, SpecError
+from .texts import texts
 from .tolerances import CHECK_ATOL_OF_SCALE, CHECK_RTOL
 
 __all__ = ["StudentTable", "read_student_table", "parse_mapping", "compare", "verdicts",
-           "mark_workbook", "CHECK_COLUMNS"]
+           "mark_workbook", "CHECK_COLUMNS", "CheckSide", "CheckResult", "CheckFiles",
+           "check_table", "write_check"]
 
 #: Columns of check.csv (``alpha_deg`` is replaced by the table's key column).
 CHECK_COLUMNS = ("column", "student", "computed", "deviation", "ok")
@@ -256,21 +265,21 @@ def compare(student: StudentTable, computed, key, rtol=None, atol=None):
 
 def verdicts(check, key, lang="en"):
     """One line per column: all rows right, or how many are wrong and where."""
+    t = texts(lang)
+    keyname = {"alpha_deg": t("check.key_alpha"), "position": t("check.key_position")
+               }.get(key, key)
     lines = []
     for col, g in check.groupby("column", sort=False):
         bad = g[~g["ok"]]
         dev = g["deviation"].abs().max()
-        keyname = {"alpha_deg": "α", "position": "position" if lang == "en" else "положение"}[key]
         where = ", ".join(f"{v:g}" if isinstance(v, float) else str(v)
                           for v in bad[key].tolist()[:8]) + (" …" if len(bad) > 8 else "")
-        if lang == "ru":
-            lines.append(f"  {col:14s} " + ("верно" if bad.empty else
-                         f"НЕВЕРНО {len(bad)} из {len(g)} ({keyname} = {where})")
-                         + (f";  max |отклонение| = {dev:.4g}" if np.isfinite(dev) else ""))
-        else:
-            lines.append(f"  {col:14s} " + ("right" if bad.empty else
-                         f"WRONG {len(bad)} of {len(g)} ({keyname} = {where})")
-                         + (f";  max |deviation| = {dev:.4g}" if np.isfinite(dev) else ""))
+        line = (t("check.verdict.right", column=col) if bad.empty else
+                t("check.verdict.wrong", column=col, wrong=len(bad), total=len(g),
+                  key=keyname, where=where))
+        if np.isfinite(dev):
+            line += t("check.verdict.deviation", deviation=dev)
+        lines.append(line)
     return lines
 
 
@@ -283,6 +292,7 @@ def mark_workbook(student: StudentTable, check, dst, lang="en") -> int:
 
     from .output import atomic_path
 
+    t = texts(lang)
     wb = load_workbook(student.source)
     red = PatternFill("solid", fgColor="FF7C80")
     n = 0
@@ -293,12 +303,171 @@ def mark_workbook(student: StudentTable, check, dst, lang="en") -> int:
         cell = wb[loc[0]][loc[1]]
         cell.fill = red
         right = f"{rec.computed:.6g}" if np.isfinite(rec.computed) else "—"
-        text = (f"верно: {right}" if lang == "ru" else f"right value: {right}")
+        text = t("check.comment.right", value=right)
         if rec.deviation is not None and np.isfinite(rec.deviation):
-            text += (f" (отклонение {rec.deviation:+.4g})" if lang == "ru"
-                     else f" (deviation {rec.deviation:+.4g})")
+            text += t("check.comment.deviation", deviation=rec.deviation)
         cell.comment = Comment(text, "crankdyn check", width=220, height=60)
         n += 1
     with atomic_path(dst) as tmp:
         wb.save(tmp)
     return n
+
+
+@dataclass(frozen=True)
+class CheckSide:
+    """The computed side of a check, as a calculation package gives it.
+
+    Attributes
+    ----------
+    key : str
+        The row key column (``alpha_deg``, ``position``).
+    columns : tuple of str
+        Every column a student's table may hold (others are ignored and listed).
+    rows : callable
+        ``rows(keys)`` → the computed table at the student's keys (a list, in their
+        order): one row per key, every column.
+    numeric_key : bool
+        The keys must be numbers (crank angles); a text or empty key is refused.
+    """
+
+    key: str
+    columns: tuple
+    rows: Callable
+    numeric_key: bool = False
+
+
+@dataclass(frozen=True)
+class CheckResult:
+    """A student's table checked (:func:`check_table`).
+
+    Attributes
+    ----------
+    student : StudentTable
+    table : pandas.DataFrame
+        :func:`compare`'s table (with ``row_index``, the row of the student's table).
+    key : str
+    rtol : float
+        The relative tolerance used.
+    """
+
+    student: StudentTable
+    table: object
+    key: str
+    rtol: float
+
+    @property
+    def n_wrong(self) -> int:
+        return int((~self.table["ok"]).sum())
+
+    @property
+    def ok(self) -> bool:
+        return self.n_wrong == 0
+
+    def summary_lines(self, lang: str = "ru", written=None) -> list[str]:
+        """The verdict in ``lang``: rows and columns checked, a line per column, the
+        columns not checked and, given :func:`write_check`'s :class:`CheckFiles`, the
+        result with the files written."""
+        t = texts(lang)
+        cols = int(self.table["column"].nunique())
+        lines = [t("check.head", student=self.student.source.name,
+                   rows=t.n("common.rows", len(self.student.data)),
+                   columns=t.n("check.columns_checked", cols), rtol=self.rtol)]
+        lines += verdicts(self.table, self.key, lang)
+        if self.student.ignored:
+            lines.append(t("check.ignored", columns=", ".join(self.student.ignored)))
+        if written is not None:
+            n = self.n_wrong
+            tail = (t("check.tail.right", path=str(written.check_csv)) if not n else
+                    t.n("check.tail.wrong", n, path=str(written.check_csv)))
+            if written.marked is not None:
+                tail += t.n("check.tail.marked", written.n_marked, path=str(written.marked))
+            lines.append(tail)
+        return lines
+
+
+@dataclass(frozen=True)
+class CheckFiles:
+    """What :func:`write_check` wrote: ``check.csv``, the marked copy of a workbook (None
+    for a CSV) and the number of cells marked in it."""
+
+    check_csv: Path
+    marked: Path | None
+    n_marked: int = 0
+
+    @property
+    def paths(self) -> tuple:
+        return (self.check_csv,) + ((self.marked,) if self.marked is not None else ())
+
+
+def check_table(side: CheckSide, student_path, rtol=None, atol=None,
+                mapping=None) -> CheckResult:
+    """Check a student's table against the computed one.
+
+    Parameters
+    ----------
+    side : CheckSide
+        The computed side (``engine.check.check_side``, ``linkage.check.check_side``).
+    student_path : str or Path
+        The student's table (:func:`read_student_table`).
+    rtol, atol : float, optional
+        Tolerances (:func:`compare`): 0 <= rtol < 1, atol >= 0.
+    mapping : dict or list of str, optional
+        Student header → our column (a list of ``"HEADER=column"`` is parsed).
+
+    Returns
+    -------
+    CheckResult
+
+    Raises
+    ------
+    SpecError
+        Bad tolerances or mapping (named ``rtol``, ``atol``, ``mapping``; all at once), an
+        unreadable table, or keys that are not numbers where numbers are due.
+    """
+    problems = []
+    if rtol is not None and not (isinstance(rtol, (int, float)) and 0 <= rtol < 1):
+        problems.append(Problem("rtol", f"got {rtol:g}; must be >= 0 and < 1"
+                                if isinstance(rtol, (int, float)) else f"got {rtol!r}"))
+    if atol is not None and not (isinstance(atol, (int, float)) and atol >= 0):
+        problems.append(Problem("atol", f"got {atol:g}; must be >= 0"
+                                if isinstance(atol, (int, float)) else f"got {atol!r}"))
+    if mapping is not None and not isinstance(mapping, dict):
+        try:
+            mapping = parse_mapping(mapping)
+        except SpecError as exc:
+            problems += exc.problems
+    if problems:
+        raise SpecError(problems)
+    student_path = Path(student_path)
+    student = read_student_table(student_path, side.key, side.columns, mapping)
+    keys = student.data[side.key]
+    if side.numeric_key:
+        bad = [k for k in keys if not isinstance(k, float) or k != k]
+        if bad:
+            raise SpecError(f"{student_path}: {side.key} must be numbers; got {bad[:5]}")
+    computed = side.rows(keys.tolist())
+    table = compare(student, computed, side.key, rtol, atol)
+    return CheckResult(student, table, side.key, CHECK_RTOL if rtol is None else float(rtol))
+
+
+def write_check(result: CheckResult, out, lang: str = "ru", inputs=()) -> CheckFiles:
+    """Write ``out/check.csv`` (``key, column, student, computed, deviation, ok``) and, for
+    a workbook, ``out/<student>_checked.xlsx`` (every wrong cell red, with a comment
+    carrying the right value, in ``lang``), as one unit.  ``inputs``: files no output may
+    overwrite (the student's table is always one)."""
+    from .output import check_not_input, safe_name, staged_output, write_csv
+    from .texts import check_lang
+
+    check_lang(lang)
+    out = Path(out)
+    student = result.student
+    inputs = [*inputs, student.source]
+    marked = (out / f"{safe_name(student.source.stem, 'student')}_checked.xlsx"
+              if student.cells else None)
+    check_csv = out / "check.csv"
+    check_not_input([check_csv] + ([marked] if marked else []), inputs)
+    with staged_output(out, inputs=inputs) as stage:
+        write_csv(result.table.drop(columns=["row_index"]), stage / check_csv.name)
+        n_marked = (mark_workbook(student, result.table, stage / marked.name, lang)
+                    if marked else 0)
+    return CheckFiles(check_csv, marked, n_marked)

@@ -40,81 +40,31 @@ def add_parser(sub):
 
 
 def run(args) -> int:
-    from crankbase.errors import SpecError
-
-    try:
-        return _run(args)
-    except SpecError as exc:            # the library's argument → this command's option
-        raise exc.renamed({"mapping": "--map"}) from None
-
-
-def _run(args) -> int:
     from pathlib import Path
 
-    from crankbase.checking import (compare, mark_workbook, parse_mapping,
-                                    read_student_table, verdicts)
+    from crankbase.checking import check_table, write_check
     from crankbase.errors import SpecError
-    from crankbase.output import check_not_input, safe_name, staged_output, write_csv
     from crankbase.validation import read_toml
 
-    problems = []
-    if args.rtol is not None and not (0 <= args.rtol < 1):
-        problems.append(f"--rtol: got {args.rtol:g}; must be >= 0 and < 1")
-    if args.atol is not None and not args.atol >= 0:
-        problems.append(f"--atol: got {args.atol:g}; must be >= 0")
-    mapping = parse_mapping(args.map)
-    if problems:
-        raise SpecError(problems)
-    spec_path, student_path, out = Path(args.spec), Path(args.student), Path(args.output)
-    raw, _ = read_toml(spec_path)
-    if "engine" in raw:
-        import engine
-        from engine.check import KEY, computed_rows, known_columns
+    spec_path, student_path = Path(args.spec), Path(args.student)
+    try:
+        raw, _ = read_toml(spec_path)
+        if "engine" in raw:
+            import engine
+            from engine.check import check_side
 
-        study = engine.load(spec_path)
-        spec = study.spec
-        student = read_student_table(student_path, KEY, known_columns(), mapping)
-        keys = student.data[KEY]
-        bad = [k for k in keys if not isinstance(k, float) or k != k]
-        if bad:
-            raise SpecError(f"{student_path}: {KEY} must be numbers; got {bad[:5]}")
-        computed = computed_rows(spec, study.settings, keys.to_numpy(float))
-    elif "mechanism" in raw:
-        import linkage
-        from linkage.check import KEY, computed_rows, computed_table
+            side = check_side(engine.load(spec_path))
+        elif "mechanism" in raw:
+            import linkage
+            from linkage.check import check_side
 
-        table = computed_table(linkage.load_spec(spec_path))
-        student = read_student_table(student_path, KEY, set(table.columns), mapping)
-        computed = computed_rows(table, student.data[KEY].tolist())
-    else:
-        raise SpecError(f"{spec_path}: neither an engine spec ([engine]) nor a linkage "
-                        "spec ([mechanism])")
-    check = compare(student, computed, KEY, args.rtol, args.atol)
-    checked = out / f"{safe_name(student_path.stem, 'student')}_checked.xlsx"
-    outputs = [out / "check.csv"] + ([checked] if student.cells else [])
-    check_not_input(outputs, [spec_path, student_path])
-    with staged_output(out, inputs=[spec_path, student_path]) as stage:
-        write_csv(check.drop(columns=["row_index"]), stage / "check.csv")
-        n_marked = (mark_workbook(student, check, stage / checked.name, args.lang)
-                    if student.cells else 0)
-    ru = args.lang == "ru"
-    n_bad = int((~check["ok"]).sum())
-    cols = check["column"].nunique()
-    head = (f"{student_path.name}: {len(student.data)} строк, {cols} столбцов проверено "
-            f"(rtol = {args.rtol if args.rtol is not None else 0.02:g})" if ru else
-            f"{student_path.name}: {len(student.data)} rows, {cols} columns checked "
-            f"(rtol = {args.rtol if args.rtol is not None else 0.02:g})")
-    print(head)
-    print("\n".join(verdicts(check, KEY, args.lang)))
-    if student.ignored:
-        print(("  не проверены (неизвестные столбцы): " if ru else
-               "  not checked (unknown columns): ") + ", ".join(student.ignored))
-    tail = (f"итог: {'всё верно' if not n_bad else f'неверных значений: {n_bad}'}; "
-            f"{out / 'check.csv'}" if ru else
-            f"verdict: {'all right' if not n_bad else f'{n_bad} wrong values'}; "
-            f"{out / 'check.csv'}")
-    if student.cells:
-        tail += (f", {checked} (отмечено ячеек: {n_marked})" if ru
-                 else f", {checked} ({n_marked} cells marked)")
-    print(tail)
-    return 1 if n_bad else 0
+            side = check_side(linkage.load_spec(spec_path))
+        else:
+            raise SpecError(f"{spec_path}: neither an engine spec ([engine]) nor a linkage "
+                            "spec ([mechanism])")
+        result = check_table(side, student_path, args.rtol, args.atol, args.map)
+        written = write_check(result, Path(args.output), args.lang, inputs=[spec_path])
+    except SpecError as exc:            # the library's arguments → this command's options
+        raise exc.renamed({"mapping": "--map", "rtol": "--rtol", "atol": "--atol"}) from None
+    print("\n".join(result.summary_lines(args.lang, written)))
+    return 0 if result.ok else 1

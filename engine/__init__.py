@@ -12,6 +12,12 @@ The whole engine (:mod:`engine.train`): ``analyze_engine(spec, train, settings)`
 every cylinder of the :class:`CrankTrain` (inline, vee, boxer; firing order, throws) and
 gives the total torque, its uniformity, the flywheel and the free forces and moments with
 their balance, as an :class:`EngineTrainResult`.
+
+The whole study in two calls (:mod:`engine.study`, pvlib's ModelChain pattern):
+``run_study(study, bearings=False, step=None, form=None)`` computes one cylinder, the whole
+engine, Table 2 and the bearing loads into a frozen :class:`EngineReport` (its ``tables``,
+``summary_lines(lang)``); ``write_report(report, out, lang)`` writes the CSVs, the workbook
+and the figures as one unit and returns the :class:`ReportFiles` written.
 """
 from .forces import (COLUMNS, analyze, crank_pin_forces, crank_pin_resultant, fine_angles,
                      force_table, summarize, table_angles)
@@ -20,6 +26,7 @@ from .kinematics import crank_slider
 from .result import EngineResult, EngineSummary, Extreme
 from .spec import (Counterweight, CrankTrain, EngineSpec, EngineSpecError, EngineStudy,
                    TableSettings, load, load_spec, read_pressure_csv)
+from .study import EngineReport, ReportFiles, run_study, write_report
 from .train import (EngineTrainResult, EngineTrainSummary, FlywheelResult, Layout,
                     analyze_engine, layout)
 
@@ -29,4 +36,5 @@ __all__ = ["load", "load_spec", "analyze", "force_table", "summarize", "table_an
            "Extreme", "gas_pressure", "indicated_mean_pressure", "crank_slider",
            "crank_pin_forces", "crank_pin_resultant", "read_pressure_csv", "CrankTrain",
            "Counterweight", "Layout", "layout", "analyze_engine", "EngineTrainResult",
-           "EngineTrainSummary", "FlywheelResult"]
+           "EngineTrainSummary", "FlywheelResult", "run_study", "write_report",
+           "EngineReport", "ReportFiles"]

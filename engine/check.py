@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["KEY", "known_columns", "computed_rows"]
+__all__ = ["KEY", "known_columns", "computed_rows", "check_side"]
 
 #: The row key of an engine table.
 KEY = "alpha_deg"
@@ -40,3 +40,15 @@ def computed_rows(spec, settings, alpha_deg):
         for c in p.columns:
             out.setdefault(c, p[c].to_numpy())
     return pd.DataFrame(out)[known_columns()]
+
+
+def check_side(study):
+    """The engine's side of :func:`crankbase.checking.check_table` for an
+    :class:`~engine.EngineStudy`: Table 2 (either form) and the force table at the
+    student's crank angles."""
+    from functools import partial
+
+    from crankbase.checking import CheckSide
+
+    return CheckSide(KEY, tuple(known_columns()),
+                     partial(computed_rows, study.spec, study.settings), numeric_key=True)

@@ -6,8 +6,10 @@ and one column per spec key as a dotted path (``engine.bore_mm``, ``masses.rod_k
 the base value.  A cell is read as a TOML value when it is one (``79``, ``0.275``,
 ``true``, ``[372, 375]``, ``"text"``) and as text otherwise.  Every problem of a row is
 reported with its row number (as a spreadsheet shows it: the header is row 1) and key; a
-bad row never stops the good ones.  Reports are written by the CLI
-(``crankdyn engine --variants``); this module reads, applies and summarises only.
+bad row never stops the good ones.  :func:`run_variants` runs the whole batch (one
+complete report per variant through :func:`engine.run_study` and
+:func:`engine.write_report`, a summary table side by side, the problems of the bad rows);
+``crankdyn engine --variants`` is this call with a progress bar.
 """
 from __future__ import annotations
 
@@ -20,7 +22,8 @@ from pathlib import Path
 from crankbase.errors import Problem, SpecError
 
 __all__ = ["VariantRow", "read_variants", "parse_cell", "apply_variant", "load_variant",
-           "SUMMARY_FIELDS", "summary_record", "NAME_COLUMNS"]
+           "SUMMARY_FIELDS", "summary_record", "NAME_COLUMNS", "run_variants",
+           "VariantOutcome", "VariantsRun", "write_summary", "SUMMARY_FILES"]
 
 #: Column names that name a variant (case-insensitive), in order of preference.
 NAME_COLUMNS = ("variant", "name")
@@ -203,3 +206,244 @@ def summary_record(variant: str, spec, summary) -> dict:
         alpha_T_max_deg=s.T_N.alpha_max_deg, T_min_N=s.T_N.min, M_mean_Nm=s.M_mean_Nm,
         R_max_N=s.R_N.max, alpha_R_max_deg=s.R_N.alpha_max_deg, R_mean_N=s.R_mean_N,
         chi=s.chi, pi_MPa=s.pi_MPa, power_i_kW=s.power_i_kW)
+
+
+#: The files of a variants run beside the variants' folders.
+SUMMARY_FILES = ("variants_summary.csv", "variants_summary.xlsx", "variants_errors.csv")
+
+
+@dataclass(frozen=True)
+class VariantOutcome:
+    """What became of one variant of a :func:`run_variants` batch.
+
+    Attributes
+    ----------
+    variant : VariantRow
+    folder : Path
+        Its report folder (``<out>/<variant as a file stem>``).
+    record : dict or None
+        Its :func:`summary_record` when its report was written.
+    problems : tuple of str
+        Every problem of a bad row (``row N (variant): key: problem``); empty when written.
+    kept_earlier : bool
+        The row is bad and its folder holds an earlier report, which was not replaced.
+    """
+
+    variant: VariantRow
+    folder: Path
+    record: dict | None = None
+    problems: tuple = ()
+    kept_earlier: bool = False
+
+    @property
+    def ok(self) -> bool:
+        return not self.problems
+
+
+@dataclass(frozen=True)
+class VariantsRun:
+    """A whole variants batch (:func:`run_variants`).
+
+    Attributes
+    ----------
+    folder : Path
+    outcomes : tuple of VariantOutcome
+        One per row, in the table's order.
+    summary_csv, summary_xlsx : Path
+    errors_csv : Path or None
+        ``variants_errors.csv`` when a row failed.
+    """
+
+    folder: Path
+    outcomes: tuple
+    summary_csv: Path
+    summary_xlsx: Path
+    errors_csv: Path | None = None
+
+    @property
+    def records(self) -> list:
+        """The summary records of the variants written, in the table's order."""
+        return [o.record for o in self.outcomes if o.ok]
+
+    @property
+    def failures(self) -> list:
+        """The outcomes of the bad rows, in the table's order."""
+        return [o for o in self.outcomes if not o.ok]
+
+    def summary_lines(self, lang: str = "ru") -> list[str]:
+        """How many variants were written and failed (the failed rows), and the summary
+        table, in ``lang``."""
+        from crankbase.texts import texts
+
+        t = texts(lang)
+        bad = self.failures
+        rows = "" if not bad else t.n("variants.summary.failed_rows", len(bad),
+                                      rows=", ".join(str(o.variant.row) for o in bad))
+        return [t.n("variants.summary.result", len(self.outcomes),
+                    written=len(self.outcomes) - len(bad), folder=str(self.folder),
+                    failed=len(bad), rows=rows),
+                t("variants.summary.table", path=str(self.summary_xlsx))]
+
+
+def _one_variant(task) -> VariantOutcome:
+    """Validate one variant and write its complete report.  A module-level function, so
+    that a process pool can run it."""
+    from crankbase.errors import CrankdynError
+
+    from .study import run_study, write_report
+
+    base, v, base_dir, inputs, folder, lang, step, form, bearings, drawing = task
+    try:
+        study = load_variant(base, v, base_dir)
+        report = run_study(study, bearings=bearings, step=step, form=form,
+                           source=apply_variant(base, v))
+        write_report(report, folder, lang, drawing=drawing, inputs=inputs)
+    except CrankdynError as exc:
+        lines = exc.lines() or [str(exc)]
+        return VariantOutcome(v, folder, problems=tuple(
+            ln if ln.startswith("row ") else f"row {v.row} ({v.variant}): {ln}"
+            for ln in lines), kept_earlier=folder.exists())
+    return VariantOutcome(v, folder, summary_record(v.variant, report.study.spec,
+                                                    report.cylinder.summary))
+
+
+def run_variants(base, variants, out, lang: str = "ru", step=None, form=None,
+                 bearings: bool = False, drawing: bool = False, jobs: int = 1,
+                 progress=None) -> VariantsRun:
+    """One complete engine report per variant, and the summary table.
+
+    Parameters
+    ----------
+    base : str or Path
+        The base engine spec file.
+    variants : str or Path
+        The variants table (:func:`read_variants`).
+    out : str or Path
+        The output folder: each good variant's report goes into ``out/<variant>/``
+        (:func:`engine.write_report`), the summary into ``out/variants_summary.csv`` and
+        ``.xlsx``, the problems of bad rows into ``out/variants_errors.csv``.
+    lang : {"ru", "en"}, default "ru"
+    step, form, bearings, drawing
+        As :func:`engine.run_study` and :func:`engine.write_report`, for every variant.
+    jobs : int, default 1
+        Reports written at a time (separate processes when more than one).
+    progress : callable, optional
+        Called as ``progress(outcome, total)`` with each :class:`VariantOutcome` as it is
+        done (in the order done) and the number of variants.
+
+    Returns
+    -------
+    VariantsRun
+        A bad row does not stop the others: its problems are in its outcome.
+
+    Raises
+    ------
+    SpecError
+        The table cannot be read, two variants would share a folder, or ``jobs`` is not a
+        whole number >= 1 (nothing written).
+    OutputError
+        A summary file would overwrite an input.
+    """
+    from crankbase.output import check_not_input, safe_name
+    from crankbase.texts import check_lang
+    from crankbase.validation import read_toml
+
+    check_lang(lang)
+    if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1:
+        raise SpecError(Problem("jobs", f"got {jobs!r}; must be a whole number >= 1"))
+    base_path, variants_path, out = Path(base), Path(variants), Path(out)
+    base_dict, base_dir = read_toml(base_path)
+    rows = read_variants(variants_path)
+    folders, clash = {}, []
+    for v in rows:
+        f = safe_name(v.variant, "variant")
+        if f in folders:
+            clash.append(f"row {v.row} ({v.variant}): folder {f!r} is also the folder of "
+                         f"row {folders[f].row} ({folders[f].variant}); rename one")
+        folders[f] = v
+    if clash:
+        raise SpecError(clash)
+    check_not_input([out / name for name in SUMMARY_FILES], [base_path, variants_path])
+
+    inputs = (base_path, variants_path)
+    tasks = [(base_dict, v, base_dir, inputs, out / folder, lang, step, form, bearings,
+              drawing) for folder, v in folders.items()]
+    done = []
+    if jobs == 1:
+        for task in tasks:
+            done.append(_one_variant(task))
+            if progress is not None:
+                progress(done[-1], len(tasks))
+    else:
+        import multiprocessing
+        from concurrent.futures import ProcessPoolExecutor, as_completed
+
+        with ProcessPoolExecutor(max_workers=jobs,
+                                 mp_context=multiprocessing.get_context("spawn")) as pool:
+            for fut in as_completed([pool.submit(_one_variant, t) for t in tasks]):
+                done.append(fut.result())
+                if progress is not None:
+                    progress(done[-1], len(tasks))
+    outcomes = tuple(sorted(done, key=lambda o: o.variant.row))     # the table's order
+    paths = write_summary(out, [o.record for o in outcomes if o.ok],
+                          [(o.variant, o.problems) for o in outcomes if not o.ok], lang)
+    return VariantsRun(out, outcomes, *paths)
+
+
+def write_summary(out, records, failures, lang: str = "ru"):
+    """``variants_summary.csv`` and ``.xlsx`` (and ``variants_errors.csv`` when rows
+    failed: ``failures`` as ``(VariantRow, problem lines)``), each written atomically; an
+    errors file of an earlier run is removed when none failed.  Returns the three paths
+    (the errors file None when none failed)."""
+    import pandas as pd
+
+    from crankbase.output import atomic_path, full_precision_xlsx, write_csv
+    from crankbase.texts import texts
+
+    t = texts(lang)
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    df = pd.DataFrame(records, columns=list(SUMMARY_FIELDS))
+    summary_csv, summary_xlsx, errors = (out / name for name in SUMMARY_FILES)
+    write_csv(df, summary_csv)
+    if failures:
+        err = pd.DataFrame([(v.row, v.variant, ln) for v, lines in failures for ln in lines],
+                           columns=["row", "variant", "problem"])
+        write_csv(err, errors)
+    elif errors.exists():
+        errors.unlink()
+
+    from openpyxl import Workbook
+    from openpyxl.styles import Alignment, Font, PatternFill
+
+    wb = Workbook()
+    ws = wb.active
+    ws.title = "variants"
+    ws["A1"] = t("variants.workbook.title")
+    ws["A1"].font = Font(bold=True, size=12)
+    for j, name in enumerate(df.columns, start=1):
+        c = ws.cell(3, j, name)
+        c.font = Font(bold=True)
+        c.fill = PatternFill("solid", fgColor="DDE4EE")
+        c.alignment = Alignment(horizontal="center", wrap_text=True)
+        ws.column_dimensions[c.column_letter].width = max(10, len(name) + 2)
+    for i, row in enumerate(df.itertuples(index=False), start=4):
+        for j, val in enumerate(row, start=1):
+            c = ws.cell(i, j, val.item() if hasattr(val, "item") else val)
+            if isinstance(val, str):
+                c.data_type = "s"
+            elif j > 2:
+                c.number_format = "0.000" if abs(val) < 100 else "0"
+    ws.row_dimensions[3].height = 30
+    ws.freeze_panes = "B4"
+    ws.print_title_rows = "3:3"
+    ws.print_title_cols = "A:A"
+    ws.page_setup.paperSize = ws.PAPERSIZE_A4
+    ws.page_setup.orientation = "landscape"
+    ws.sheet_properties.pageSetUpPr.fitToPage = True
+    width = sum(max(10, len(n) + 2) for n in df.columns)
+    ws.page_setup.fitToWidth = max(1, -(-width // 190))   # ≤ 190 width units a page
+    ws.page_setup.fitToHeight = 0
+    with atomic_path(summary_xlsx) as tmp, full_precision_xlsx():
+        wb.save(tmp)
+    return summary_csv, summary_xlsx, errors if failures else None

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["KEY", "computed_table", "computed_rows"]
+__all__ = ["KEY", "computed_table", "computed_rows", "check_side"]
 
 #: The row key of a linkage table.
 KEY = "position"
@@ -38,3 +38,14 @@ def computed_rows(table, positions):
     out = pd.DataFrame(data, columns=num.columns)
     out.insert(0, KEY, list(positions))
     return out
+
+
+def check_side(spec):
+    """The linkage's side of :func:`crankbase.checking.check_table` for a linkage spec:
+    the course tables by position number."""
+    from functools import partial
+
+    from crankbase.checking import CheckSide
+
+    table = computed_table(spec)
+    return CheckSide(KEY, tuple(table.columns), partial(computed_rows, table))
