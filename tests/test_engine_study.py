@@ -20,15 +20,6 @@ from crankbase.resources import example_path
 from engine.study import ReportFiles
 from engine.summary import summary_lines, written_line
 
-#: The snapshot of main's CLI outputs before the study layer (the lead's refactoring
-#: baseline); the comparison is skipped where it is not available.
-BASELINE = Path(os.environ.get("CRANKDYN_BASELINE", "/work/baseline_snapshot"))
-#: snapshot folder: (example file, run_study options) as the snapshot's CLI runs.
-RUNS = {"engine_petrol": ("petrol_vaz2106.toml", dict(bearings=True)),
-        "engine_diesel": ("diesel_d240.toml", dict(bearings=True)),
-        "engine_six": ("petrol_bmw_m54.toml", dict(bearings=True)),
-        "engine_v8": ("diesel_kamaz740.toml", dict(bearings=True)),
-        "engine_petrol_kolchin": ("petrol_vaz2106.toml", dict(form="kolchin"))}
 CYRILLIC = re.compile("[\u0400-\u04ff]")
 
 
@@ -48,19 +39,6 @@ def v8():
 
 
 # ------------------------------------------------------------------------ the tables
-@pytest.mark.skipif(not BASELINE.is_dir(), reason="no baseline snapshot on this machine")
-@pytest.mark.parametrize("run", sorted(RUNS))
-def test_tables_equal_the_baseline_csvs_bit_for_bit(run, tmp_path):
-    example, options = RUNS[run]
-    report = _report(example, **options)
-    want = sorted(p.name for p in (BASELINE / run).glob("*.csv"))
-    assert sorted(report.file_names[n] for n in report.tables) == want
-    for short, df in report.tables.items():
-        write_csv(df, tmp_path / short)
-        assert (tmp_path / short).read_bytes() == \
-            (BASELINE / run / report.file_names[short]).read_bytes(), (run, short)
-
-
 def test_report_holds_the_typed_results(petrol):
     """The tables are the results' own frames, in the order written; the whole engine
     sums the cylinder (4 cylinders: Mкр.ср of the engine = 4 × that of one cylinder)."""
