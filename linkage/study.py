@@ -287,7 +287,7 @@ def write_report(report: LinkageReport, out, lang="ru", formats=("png",),
     from .report import write_csvs, write_workbook
 
     check_lang(lang)
-    out = Path(out)
+    folder, out = out, Path(out)
     name = report.name
     figures = {}
     if report.full is not None:
@@ -337,7 +337,7 @@ def write_report(report: LinkageReport, out, lang="ru", formats=("png",),
             path.unlink()
         if not path.exists():
             removed.append(path)
-    return WrittenReport(out, files, removed, sheets)
+    return WrittenReport(folder, files, removed, sheets)
 
 
 def _number(value, fmt, scale=0.0):
