@@ -85,7 +85,8 @@ def run(args) -> int:
 
 def _run(args) -> int:
     from crankbase.errors import SpecError
-    from linkage.study import notice_lines, run_study, summary_lines, write_report
+    from linkage.study import notice_lines, summary_lines, write_report
+    from plans.study import run_study
 
     if args.example:
         from .examples import find_example

@@ -175,7 +175,8 @@ def write_csvs(result, folder):
     write_csv(result.forces, folder / "forces.csv")
 
 
-#: Every text of the workbook and the terminal summary, by language (one place).
+#: The texts of the workbook by language (the terminal's words and the cycle geometry's
+#: are the catalogue's, crankbase/locale/<lang>/linkage.po).
 _TEXT = {
     "en": {
         "sheets": {"inputs": "inputs", "positions": "positions", "velocities": "velocities",

@@ -1,45 +1,40 @@
 """The linkage study: one call runs the whole study of a mechanism spec, another writes it.
 
 The layer between the library's pieces and a command line (pvlib's ``ModelChain`` is the
-model): :func:`run_study` loads the spec, analyses the plan of positions, the full turn
-for the plots and, when asked, the graphical method (velocity and acceleration plans,
-force polygons, Zhukovsky's lever; :mod:`plans`) and a student's measured segments, and
-returns a :class:`LinkageReport` holding every result and table, without writing
-anything; :func:`write_report` writes it (CSV files, the workbook, the plots, the plans'
-drawings) into a folder as one report unit, and :func:`summary_lines` is the terminal
+model): :func:`run_study` loads the spec, analyses the plan of positions and the full
+turn for the plots and returns a :class:`LinkageReport` holding every result and table,
+without writing anything; :func:`write_report` writes it (CSV files, the workbook, the
+plots) into a folder as one report unit, and :func:`summary_lines` is the terminal
 summary in the report's language (words from ``crankbase/locale/<lang>/linkage.po``).
+
+The graphical method sits one layer up (:mod:`plans` imports :mod:`linkage`, never the
+other way): :func:`plans.study.run_study` is the same call with the plans of chosen
+positions, a student's measured segments and the plans' scales; its report is a
+:class:`LinkageReport` that also writes and summarises the plans (through the hooks
+:meth:`LinkageReport.write_more` and :meth:`LinkageReport.more_lines`).
 ``crankdyn linkage`` is these three calls.
 
 Examples
 --------
 >>> from crankbase.resources import example_path
 >>> from linkage.study import run_study
->>> report = run_study(example_path("ratchet.toml"), plans=[5, 11], plots=False)
->>> sorted(report.tables())[:2]
+>>> report = run_study(example_path("ratchet.toml"), plots=False)
+>>> sorted(report.tables())
 ['ratchet-drive_forces.csv', 'ratchet-drive_kinematics.csv']
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from crankbase.errors import Problem, SpecError
 
 __all__ = ["LinkageReport", "WrittenReport", "run_study", "write_report", "summary_lines",
-           "notice_lines", "written_line", "PLOTS", "SHEETS"]
+           "notice_lines", "written_line", "check_step", "PLOTS"]
 
 #: File stems of every plot a report may hold (``<name>_<stem>.png``;
 #: :func:`linkage.plots.all_figures`).
 PLOTS = ("plan", "velocities", "accelerations", "driving_moment", "transmission_angle")
-
-#: Drawing sheet sizes of the graphical method (landscape).
-SHEETS = ("A1", "A3")
-
-#: Scale arguments of :func:`run_study` → the plans they fix (:func:`plans.build_plans`).
-_SCALES = (("mu_v", ("velocity",)), ("mu_a", ("acceleration",)),
-           ("mu_f", ("force_dyad", "force_crank")), ("mu_lever", ("lever",)))
-
 
 @dataclass
 class LinkageReport:
@@ -54,16 +49,10 @@ class LinkageReport:
         The full turn at ``step`` for the plots (None: no plots).
     step : float
         Crank-angle step of the full turn. [deg]
-    plans : list of plans.PositionPlans or None
-        The graphical method at the chosen positions (None: not asked).
-    sheet : str
-        Drawing sheet size of the plans, ``"A1"`` or ``"A3"``.
-    measured : pandas.DataFrame or None
-        A student's measured segments (:func:`plans.tables.read_measurements`).
     warnings : list of str
         The analysis' warnings (singular positions), in English.
-    source, measured_source : Path or None
-        The spec and measurements files (inputs a report may never overwrite).
+    source : Path or None
+        The spec file (an input a report may never overwrite).
     name : str
         File stem of every output (the mechanism's name, :func:`crankbase.output.safe_name`).
     """
@@ -72,34 +61,29 @@ class LinkageReport:
     result: object
     full: object = None
     step: float = 1.0
-    plans: list | None = None
-    sheet: str = "A1"
-    measured: object = None
     warnings: list = field(default_factory=list)
     source: Path | None = None
-    measured_source: Path | None = None
     name: str = "linkage"
 
     def tables(self) -> dict:
         """Every CSV table of the report by its file name (``<name>_kinematics.csv``,
-        ``<name>_forces.csv``; with plans ``<name>_plans.csv``, ``_lever.csv``,
-        ``_lever_forces.csv``, ``_student_table.csv`` and with measurements
-        ``_plan_errors.csv``): the numbers :func:`write_report` writes, bit for bit."""
+        ``<name>_forces.csv``): the numbers :func:`write_report` writes, bit for bit."""
         n = self.name
-        out = {f"{n}_kinematics.csv": self.result.kinematics,
-               f"{n}_forces.csv": self.result.forces}
-        if self.plans is not None:
-            from plans.tables import (error_table, lever_forces_table, lever_table,
-                                      plans_table, student_table)
+        return {f"{n}_kinematics.csv": self.result.kinematics,
+                f"{n}_forces.csv": self.result.forces}
 
-            st = student_table(self.plans)
-            out.update({f"{n}_plans.csv": plans_table(self.plans),
-                        f"{n}_lever.csv": lever_table(self.plans),
-                        f"{n}_lever_forces.csv": lever_forces_table(self.plans),
-                        f"{n}_student_table.csv": st})
-            if self.measured is not None:
-                out[f"{n}_plan_errors.csv"] = error_table(st, self.measured)
-        return out
+    def inputs(self) -> list:
+        """The input files of the study (no output may overwrite one)."""
+        return [self.source] if self.source is not None else []
+
+    def write_more(self, stage, lang, previews) -> tuple:
+        """Hook of a study one layer up (the plans): write its files into the staging
+        folder ``stage``; returns ``(file names in order, drawing sheets)``."""
+        return [], 0
+
+    def more_lines(self, lang, written=None) -> list:
+        """Hook of a study one layer up: its lines of the terminal summary."""
+        return []
 
     def max_driving_moment(self):
         """``(M, position, phi_deg)`` of the largest |Mb| over the positions (M signed
@@ -128,29 +112,23 @@ class WrittenReport:
     sheets: int = 0
 
 
-def _positions(plans, problems):
-    """Position numbers from ``"all"``, ``"5,11"`` or an iterable of ints."""
-    if isinstance(plans, str):
-        text = plans.strip()
-        if text.lower() == "all":
-            return "all"
-        parts = [p.strip() for p in text.split(",")]
-    else:
-        parts = list(plans)
-    out = []
-    for part in parts:
-        ok = (part.isdigit() and int(part) >= 1) if isinstance(part, str) else (
-            isinstance(part, int) and not isinstance(part, bool) and part >= 1)
-        if not ok:
-            problems.append(Problem("plans", f"got {part!r}; give position numbers >= 1 "
-                                             "separated by commas (e.g. 5,11) or 'all'"))
-        elif int(part) not in out:
-            out.append(int(part))
-    return out
+def check_step(step) -> float:
+    """The full turn's step [deg], 0 < step <= 30 and not too many rows; else a
+    :class:`SpecError` naming ``step``."""
+    from crankbase.validation import rows_problem
+
+    if isinstance(step, bool) or not isinstance(step, (int, float)) \
+            or not (0 < step <= 30):
+        raise SpecError(Problem("step", f"got {step:g}; must be > 0 and <= 30 degrees"
+                                if isinstance(step, (int, float)) else
+                                f"got {step!r}; must be > 0 and <= 30 degrees"))
+    too_many = rows_problem(360.0 / step + 1, "step")
+    if too_many:
+        raise SpecError([too_many])
+    return float(step)
 
 
-def run_study(spec, *, step=1.0, plots=True, plans=None, sheet="A1", measured=None,
-              mu_v=None, mu_a=None, mu_f=None, mu_lever=None) -> LinkageReport:
+def run_study(spec, *, step=1.0, plots=True) -> LinkageReport:
     """Run the whole study of a linkage spec; write nothing.
 
     Parameters
@@ -161,16 +139,6 @@ def run_study(spec, *, step=1.0, plots=True, plans=None, sheet="A1", measured=No
         Crank-angle step of the full turn for the plots, 0 < step <= 30. [deg]
     plots : bool
         Analyse the full turn (the plots); False: the tables only.
-    plans : "all", str or iterable of int, optional
-        Positions of the graphical method (``[5, 11]``, ``"5,11"``, ``"all"``).
-    sheet : {"A1", "A3"}
-        Drawing sheet size of the plans.
-    measured : str, Path or DataFrame, optional
-        A student's measured segments (:func:`plans.tables.read_measurements`); with
-        ``plans`` only.
-    mu_v, mu_a, mu_f, mu_lever : float, optional
-        Fixed scales of the velocity plan [(m/s)/mm], the acceleration plan [(m/s²)/mm],
-        the force polygons [N/mm] and the lever's forces [N/mm] (default: round scales).
 
     Returns
     -------
@@ -179,76 +147,28 @@ def run_study(spec, *, step=1.0, plots=True, plans=None, sheet="A1", measured=No
     Raises
     ------
     SpecError
-        Every problem of the arguments at once, each naming its argument (``step``,
-        ``plans``, ``sheet``, ``mu_v`` …; ``positions`` and ``size`` from the plans), then
-        those of the spec.
+        A bad ``step`` (naming it), then every problem of the spec.
+
+    See Also
+    --------
+    plans.study.run_study : the same with the graphical method.
     """
     import warnings
 
     import linkage
     from crankbase.output import safe_name
-    from crankbase.validation import rows_problem
 
     from .analysis import SingularPositionWarning
 
-    if isinstance(step, bool) or not isinstance(step, (int, float)) \
-            or not (0 < step <= 30):
-        raise SpecError(Problem("step", f"got {step:g}; must be > 0 and <= 30 degrees"
-                                if isinstance(step, (int, float)) else
-                                f"got {step!r}; must be > 0 and <= 30 degrees"))
-    too_many = rows_problem(360.0 / step + 1, "step")
-    if too_many:
-        raise SpecError([too_many])
-    scale_args = {"mu_v": mu_v, "mu_a": mu_a, "mu_f": mu_f, "mu_lever": mu_lever}
-    problems = []
-    positions = scales = None
-    if plans is not None:
-        positions = _positions(plans, problems)
-        if sheet not in SHEETS:
-            problems.append(Problem("sheet", f"got {sheet!r}; valid: {', '.join(SHEETS)}"))
-        scales = {}
-        for arg, kinds in _SCALES:
-            value = scale_args[arg]
-            if value is None:
-                continue
-            if not (isinstance(value, (int, float)) and 0 < value < math.inf):
-                problems.append(Problem(arg, f"got {value:g}; must be a positive number"
-                                        if isinstance(value, (int, float)) else
-                                        f"got {value!r}; must be a positive number"))
-            for k in kinds:
-                scales[k] = value
-    else:
-        given = [a for a in ("measured",) if measured is not None] + [
-            a for a, v in scale_args.items() if v is not None]
-        problems += [Problem(a, "only with plans (the graphical method)") for a in given]
-    if problems:
-        raise SpecError(problems)
-
+    step = check_step(step)
     source = None if isinstance(spec, dict) or hasattr(spec, "kind") else Path(spec)
     spec = linkage.load_spec(spec)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", SingularPositionWarning)
         result = linkage.analyze(spec)
-    plan_list = table = None
-    measured_source = None
-    if plans is not None:
-        import plans as plans_pkg
-        from plans.drawing import title_fields
-        from plans.tables import read_measurements
-
-        title_fields(spec)                                   # [drawing] keys checked
-        plan_list = plans_pkg.build_plans(result, positions, scales=scales)
-        if measured is not None:
-            if hasattr(measured, "columns"):
-                table = measured
-            else:
-                measured_source = Path(measured)
-                table = read_measurements(measured)
     full = linkage.full_turn(spec, step) if plots else None
-    return LinkageReport(spec=spec, result=result, full=full, step=float(step),
-                         plans=plan_list, sheet=sheet, measured=table,
+    return LinkageReport(spec=spec, result=result, full=full, step=step,
                          warnings=[str(w.message) for w in caught], source=source,
-                         measured_source=measured_source,
                          name=safe_name(spec.name, "linkage"))
 
 
@@ -294,7 +214,7 @@ def write_report(report: LinkageReport, out, lang="ru", formats=("png",),
         from .plots import all_figures
 
         figures = all_figures(report.result, report.full, lang=lang)
-    inputs = [p for p in (report.source, report.measured_source) if p is not None]
+    inputs = report.inputs()
     stale = [p for p in (out / f"{name}_{s}.{e}" for s in PLOTS for e in formats
                          if s not in figures) if p.exists()]
     files = []
@@ -309,21 +229,8 @@ def write_report(report: LinkageReport, out, lang="ru", formats=("png",),
         files += [f"{name}_kinematics.csv", f"{name}_forces.csv"]
         write_workbook(report.result, stage / f"{name}.xlsx", lang=lang)
         files.append(f"{name}.xlsx")
-        if report.plans is not None:
-            from plans.report import write_plans
-
-            before = set(stage.iterdir())
-            info = write_plans(report.result, report.plans, stage, name=name, lang=lang,
-                               sheet=report.sheet, measurements=report.measured,
-                               previews=report.full is not None)
-            sheets = info["sheets"]
-            from plans.report import output_names
-
-            made = {p.name for p in set(stage.iterdir()) - before}
-            listed = output_names(name, [pp.tag for pp in report.plans], sheets,
-                                  report.measured is not None, report.full is not None)
-            files += [f for f in listed if f in made]
-            files += sorted(made - set(listed))
+        more, sheets = report.write_more(stage, lang, report.full is not None)
+        files += more
         for stem, fig in figures.items():
             save_figure(fig, stage / f"{name}_{stem}", formats=formats, dpi=dpi)
             files += [f"{name}_{stem}.{e}" for e in formats]
@@ -351,8 +258,7 @@ def summary_lines(report: LinkageReport, lang="ru", written=None) -> list:
     of positions (``-> folder`` when ``written``, a :class:`WrittenReport`, is given), the
     cycle geometry (:func:`linkage.report.summary_lines`), the largest driving moment over
     the positions, with plans the Zhukovsky lever against the kinetostatics per position
-    (and the plan method's error when segments were measured), and with ``written`` the
-    files written.  Every number is formatted once, the same in both languages; the words
+    (:meth:`LinkageReport.more_lines`), and with ``written`` the files written.  Every number is formatted once, the same in both languages; the words
     are the catalogue's (``linkage.po``, ``plans.po``)."""
     from crankbase.texts import texts
 
@@ -379,19 +285,7 @@ def summary_lines(report: LinkageReport, lang="ru", written=None) -> list:
         where = "" if pos is None else t("linkage.summary.at_position", pos=pos)
         lines.append("  " + t("linkage.summary.max_moment", M=_number(M, ".2f"),
                               where=where, phi=_number(phi, ".2f")))
-    if report.plans is not None:
-        from plans.report import summary_lines as plan_lines
-
-        if written is not None:
-            sheets = written.sheets
-        else:
-            from plans.drawing import layout_sheets, title_fields
-
-            sheets = len(layout_sheets(report.result, report.plans, lang, report.sheet,
-                                       title_fields(spec)))
-        errors = (report.tables()[f"{report.name}_plan_errors.csv"]
-                  if report.measured is not None else None)
-        lines += plan_lines(report.plans, report.sheet, sheets, lang, errors=errors)
+    lines += report.more_lines(lang, written)
     if written is not None:
         lines.append(written_line(written, lang))
     return lines

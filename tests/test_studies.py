@@ -60,7 +60,8 @@ def _english_words(text, allowed):
 ])
 def test_linkage_study_gives_the_cli_tables_and_writes_what_it_lists(example, argv, kw,
                                                                      tmp_path, monkeypatch):
-    from linkage.study import run_study, summary_lines, write_report
+    from linkage.study import summary_lines, write_report
+    from plans.study import run_study
 
     cli = tmp_path / "cli"
     stdout, _ = _cli(["linkage", str(example_path(example)), "-o", str(cli), "--no-plots",
@@ -78,8 +79,28 @@ def test_linkage_study_gives_the_cli_tables_and_writes_what_it_lists(example, ar
         str(cli), str(out)).splitlines()
 
 
+def test_linkage_study_without_plans_writes_its_plots(tmp_path):
+    """linkage.study alone (no plans): the tables, the workbook and the five plots."""
+    from linkage.study import PLOTS, run_study, summary_lines, write_report
+
+    report = run_study(example_path("press.toml"), step=5.0)
+    assert len(report.full.kinematics) == 73                  # 0…360° every 5°
+    written = write_report(report, tmp_path / "o", lang="en")
+    files = sorted(p.name for p in (tmp_path / "o").iterdir() if p.name != MANIFEST)
+    assert sorted(written.files) == files
+    assert {f"crank-press_{p}.png" for p in PLOTS} <= set(files)
+    assert summary_lines(report, "en", written)[-1].endswith(
+        f"crank-press.xlsx, 5 images (PNG) in {tmp_path / 'o'}")
+    # a rerun without plots removes this mechanism's plots, and says so
+    again = write_report(run_study(example_path("press.toml"), plots=False), tmp_path / "o")
+    assert sorted(p.name for p in again.removed) == sorted(f"crank-press_{p}.png"
+                                                           for p in PLOTS)
+    assert not list((tmp_path / "o").glob("*.png"))
+
+
 def test_linkage_summary_in_both_languages_with_plural_forms(tmp_path):
-    from linkage.study import run_study, summary_lines, write_report
+    from linkage.study import summary_lines, write_report
+    from plans.study import run_study
 
     report = run_study(example_path("ratchet.toml"), plots=False, plans=[5, 11])
     written = write_report(report, tmp_path / "o", lang="ru")
@@ -97,7 +118,8 @@ def test_linkage_summary_in_both_languages_with_plural_forms(tmp_path):
 
 
 def test_linkage_measured_segments_are_written_and_listed(tmp_path):
-    from linkage.study import run_study, summary_lines, write_report
+    from linkage.study import summary_lines, write_report
+    from plans.study import run_study
 
     measured = tmp_path / "m.csv"
     measured.write_text("position,segment,length_mm\n5,pb,50\n", encoding="utf-8")
@@ -115,7 +137,8 @@ def test_linkage_measured_segments_are_written_and_listed(tmp_path):
 def test_massless_mechanism_prints_no_negative_zero():
     """A massless, unloaded mechanism: Mb is ±0.0 at every position; the summary says
     0.00, never -0.00."""
-    from linkage.study import run_study, summary_lines
+    from linkage.study import summary_lines
+    from plans.study import run_study
 
     spec = {"mechanism": {"kind": "crank-rocker", "name": "bare", "crank": 0.1,
                           "coupler": 0.4, "rocker": 0.3, "ground": 0.45, "omega_rad_s": 5.0},
@@ -141,7 +164,7 @@ def test_format_snapped():
 
 def test_linkage_study_arguments_are_named_and_renamed_by_the_cli(tmp_path, capsys):
     from crankbase.errors import SpecError
-    from linkage.study import run_study
+    from plans.study import run_study
 
     with pytest.raises(SpecError) as exc:
         run_study(example_path("ratchet.toml"), plans="0,x", sheet="A4", mu_a=-2.0)
