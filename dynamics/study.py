@@ -173,7 +173,7 @@ def write_report(report: DynamicsReport, out, lang="ru",
     OutputError
         A table holds a non-finite number, or an output is an input file.
     """
-    from crankbase.errors import SpecError
+    from crankbase.errors import Problem, SpecError
     from crankbase.output import (check_not_input, ensure_finite, full_precision_xlsx,
                                   save_figure, staged_output, write_csv)
     from crankbase.texts import check_lang
@@ -184,7 +184,7 @@ def write_report(report: DynamicsReport, out, lang="ru",
     check_lang(lang)
     out = Path(out)
     if out.exists() and not out.is_dir():
-        raise SpecError(f"-o: {out} exists and is not a folder")
+        raise SpecError(Problem("out", f"{out} exists and is not a folder"))
     tables = report.tables()
     what = {"motion.csv": "motion table", "forces_true_motion.csv":
             "forces under the true motion", "startup.csv": "start-up"}
