@@ -25,6 +25,20 @@ def snap_roundoff(values, scale):
     values[np.abs(values) <= ROUNDOFF_RTOL * np.asarray(scale, float)] = 0.0
     return values
 
+def format_snapped(value, fmt: str, scale=0.0) -> str:
+    """``value`` formatted by ``fmt`` (``".2f"``) for a report, never as a negative zero:
+    round-off below ROUNDOFF_RTOL·``scale`` is snapped to 0 (:func:`snap_roundoff`), and a
+    value that the format rounds to zero is written without its sign ("0.00", not
+    "-0.00", for a massless mechanism's −1e-17 N·m)."""
+    import numpy as np
+
+    x = float(snap_roundoff(np.array([float(value)]), scale)[0])
+    text = format(x, fmt)
+    if text.startswith("-") and not any(c in "123456789" for c in text.split("e")[0]):
+        text = text[1:]
+    return text
+
+
 #: Relative margin of the Grashof / rotatability inequalities within which a mechanism
 #: counts as a change-point (folding) one: lengths read from a spec in mm with ~10
 #: significant digits agree to about this.  The one rule that uses it is

@@ -25,17 +25,6 @@ import sys
 EXAMPLES = {"flywheel": "flywheel_seed.toml", "press": "press_dynamics.toml",
             "petrol": "petrol_dynamics.toml", "hoist": "hoist_machine.toml"}
 
-MOTION_COLUMNS = ["phi_deg", "J_red_kgm2", "dJ_red_dphi_kgm2", "M_drive_Nm", "M_resist_Nm",
-                  "omega_rad_s", "eps_rad_s2", "t_s", "phi_rad", "W_J", "E_J"]
-
-#: Tables a run can write (``<name>_<table>``).
-TABLES = ("motion.csv", "forces_true_motion.csv", "startup.csv")
-
-#: The unnamed outputs of crankdyn versions before the files were named after the spec.
-LEGACY_NAMES = ("motion.csv", "forces_true_motion.csv", "startup.csv") + tuple(
-    f"{p}.{e}" for p in ("inertia", "moments", "wittenbauer", "omega", "startup", "forces")
-    for e in ("png", "svg"))
-
 
 def add_parser(subparsers):
     p = subparsers.add_parser(
@@ -64,103 +53,24 @@ def run(args) -> int:
     from pathlib import Path
 
     from crankbase.errors import SpecError
+    from dynamics.study import notice_lines, run_study, summary_lines, write_report
 
     spec_path = _spec_path(args, EXAMPLES, "dynamics")
     out = Path(args.output)
     if out.exists() and not out.is_dir():
         raise SpecError(f"-o: {out} exists and is not a folder")
-
-    from dynamics.plots import PLOT_NAMES, dynamics_figures
-    from dynamics.report import build_workbook, summary_lines
-    from dynamics.spec import load_dynamics_spec, run_job
-
-    from crankbase.output import (check_not_input, ensure_finite, full_precision_xlsx,
-                                  safe_name, save_figure, staged_output, write_csv)
-
-    from .cmd_engine import output_names
-
-    job = load_dynamics_spec(spec_path)
-    res = run_job(job)
-    extra = [c for c in res["motion"].table.columns if c not in MOTION_COLUMNS]
-    motion = res["motion"].table[MOTION_COLUMNS + extra]
-    ensure_finite(motion, "motion table")
-    tables = {"motion.csv": motion}
-    if res["forces"] is not None:
-        ensure_finite(res["forces"], "forces under the true motion")
-        tables["forces_true_motion.csv"] = res["forces"]   # linkage or engine cylinder 1
-    if res["startup"] is not None:
-        ensure_finite(res["startup"].table, "start-up")
-        tables["startup.csv"] = res["startup"].table
-    name = safe_name(job.model.name, "machine")
-    wb = build_workbook(res, args.lang, name=job.model.name)
-    figs = dynamics_figures(res, args.lang)
-    files = output_names(name, list(tables))
-    xlsx = f"{name}_dynamics.xlsx"
-    plots = output_names(name, list(figs))
-    names = list(files.values()) + [xlsx] + [f"{p}.{e}" for p in plots.values()
-                                             for e in ("png", "svg")]
-    check_not_input([out / n for n in names], [spec_path])
-    stale = stale_outputs(out, name, list(TABLES) + [
-        f"{p}.{e}" for p in PLOT_NAMES for e in ("png", "svg")], names)
-    with staged_output(out, inputs=[spec_path], unit=f"dynamics:{name}") as stage:
-        for key, df in tables.items():
-            write_csv(df, stage / files[key])
-        with full_precision_xlsx():
-            wb.save(stage / xlsx)
-        for key, fig in figs.items():
-            save_figure(fig, stage / plots[key])
-    for fig in figs.values():
-        fig.clear()
-
-    lines = summary_lines(res, job.model.name, job.kind, job.settings.driving, args.lang)
-    lines.append(written_line(list(files.values()) + [xlsx], len(figs), out, args.lang))
-    print("\n".join(lines))
-    report_stale("dynamics", stale, out, args.lang)
+    report = run_study(spec_path)
+    written = write_report(report, out, lang=args.lang)
+    print("\n".join(summary_lines(report, args.lang, written)))
+    print_notices("dynamics", notice_lines(written, args.lang))
     return 0
 
 
-def stale_outputs(out, name, whats, written):
-    """Files ``<name>_<what>`` of an earlier run in ``out`` that this run does not write
-    (``whats``: every output the command can write; ``written``: this run's names)."""
-    from pathlib import Path
-
-    out = Path(out)
-    return [out / f"{name}_{w}" for w in whats
-            if f"{name}_{w}" not in written and (out / f"{name}_{w}").is_file()]
-
-
-def report_stale(command, stale, out, lang, legacy=LEGACY_NAMES):
-    """After a run: remove the ``stale`` files of this spec an earlier run wrote and this
-    one did not (the report swap removes those its manifest lists; any other copy goes
-    too), and say so on stderr; name the unnamed outputs of an older crankdyn
-    (``legacy``) still in ``out``, which are left alone.  In the report's language."""
-    import contextlib
-    from pathlib import Path
-
-    ru = lang == "ru"
-    for path in stale:
-        with contextlib.suppress(FileNotFoundError):
-            path.unlink()
-        print(f"crankdyn {command}: " + (f"удалён {path} (файл прежнего расчёта по той же "
-                                        f"спецификации, теперь не записывается)" if ru else
-                                        f"removed {path} (an earlier run's output for this "
-                                        f"spec, not written now)"), file=sys.stderr)
-    old = [n for n in legacy if (Path(out) / n).is_file()]
-    if old:
-        print(f"crankdyn {command}: " + (
-            "в папке остались файлы прежней версии программы, названные без имени "
-            "спецификации (не тронуты): " if ru else "the folder still holds unnamed outputs of an older "
-            "crankdyn (left alone): ") + ", ".join(old), file=sys.stderr)
-
-
-def written_line(files, n_plots, out, lang):
-    """The last line of a terminal summary: the files written, in ``lang``."""
-    if lang == "ru":
-        return (f"записано: {', '.join(files)}"
-                + (f", графиков: {n_plots} (PNG, SVG)" if n_plots else "") + f" в {out}")
-    return (f"wrote {', '.join(files)}"
-            + (f", {n_plots} plot{'s' if n_plots > 1 else ''} (PNG, SVG)" if n_plots
-               else "") + f" in {out}")
+def print_notices(command, lines):
+    """The library's notices (stale files removed, old outputs left) on stderr, each
+    after the command's name."""
+    for line in lines:
+        print(f"crankdyn {command}: {line}", file=sys.stderr)
 
 
 def _spec_path(args, examples, what):

@@ -20,8 +20,6 @@ import sys
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
 EXAMPLES = {"ratchet": "ratchet.toml", "press": "press.toml"}
 
-#: File stems of every plot ``crankdyn linkage`` may draw (linkage.plots.all_figures).
-PLOTS = ("plan", "velocities", "accelerations", "driving_moment", "transmission_angle")
 
 
 def add_parser(sub):
@@ -70,43 +68,10 @@ def add_parser(sub):
     return p
 
 
-def _plan_options(args):
-    """Check the plan options; return (positions, scales).  One problem per line."""
-    from crankbase.errors import SpecError
-
-    problems = []
-    text = args.plans.strip()
-    positions = "all" if text.lower() == "all" else []
-    if positions != "all":
-        for part in text.split(","):
-            part = part.strip()
-            if not part.isdigit() or int(part) < 1:
-                problems.append(f"--plans: got {part!r}; give position numbers >= 1 "
-                                "separated by commas (e.g. 5,11) or 'all'")
-            elif int(part) not in positions:
-                positions.append(int(part))
-    if args.sheet not in ("A1", "A3"):
-        problems.append(f"--sheet: got {args.sheet!r}; valid: A1, A3")
-    if args.lang not in ("ru", "en"):
-        problems.append(f"--lang: got {args.lang!r}; valid: ru, en")
-    scales = {}
-    for opt, kinds, value in (("--mu-v", ("velocity",), args.mu_v),
-                              ("--mu-a", ("acceleration",), args.mu_a),
-                              ("--mu-f", ("force_dyad", "force_crank"), args.mu_f),
-                              ("--mu-lever", ("lever",), args.mu_lever)):
-        if value is None:
-            continue
-        if not (value > 0 and value < float("inf")):
-            problems.append(f"{opt}: got {value:g}; must be a positive number")
-        for k in kinds:
-            scales[k] = value
-    if problems:
-        raise SpecError(problems)
-    return positions, scales
-
-
 #: The library's argument names in its problems → this command's options.
-OPTIONS = {"positions": "--plans", "size": "--sheet"}
+OPTIONS = {"positions": "--plans", "size": "--sheet", "plans": "--plans", "sheet": "--sheet",
+           "step": "--step", "measured": "--measured", "mu_v": "--mu-v", "mu_a": "--mu-a",
+           "mu_f": "--mu-f", "mu_lever": "--mu-lever"}
 
 
 def run(args) -> int:
@@ -119,104 +84,23 @@ def run(args) -> int:
 
 
 def _run(args) -> int:
-    import warnings
-
-    import linkage
-    from crankbase.output import safe_name, save_figure, staged_output
-    from linkage.analysis import SingularPositionWarning
     from crankbase.errors import SpecError
-    from linkage.report import (kind_text, summary_lines, text, warning_text, write_csvs,
-                                write_workbook)
-    from pandas import isna as pd_isna
+    from linkage.study import notice_lines, summary_lines, write_report
+    from plans.study import run_study
 
     if args.example:
         from .examples import find_example
         spec_path = find_example(args.example, EXAMPLES, "linkage")
     else:
         spec_path = args.spec
-    if not (0 < args.step <= 30):
-        raise SpecError([f"--step: got {args.step:g}; must be > 0 and <= 30 degrees"])
-    from crankbase.validation import rows_problem
-    if rows_problem(360.0 / args.step + 1, "--step"):
-        raise SpecError([rows_problem(360.0 / args.step + 1, "--step")])
-    plan_opts = None
-    if args.plans is not None:
-        plan_opts = _plan_options(args)
-    elif (args.measured or args.mu_v or args.mu_a or args.mu_f
-          or args.mu_lever is not None):
+    if args.plans is None and (args.measured or args.mu_v or args.mu_a or args.mu_f
+                               or args.mu_lever is not None):
         raise SpecError(["--measured, --mu-v, --mu-a, --mu-f, --mu-lever: only with --plans"])
-    spec = linkage.load_spec(spec_path)
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", SingularPositionWarning)
-        result = linkage.analyze(spec)
-    plan_list = measured = None
-    if plan_opts is not None:
-        import plans as plans_pkg
-        from plans.drawing import title_fields
-        from plans.tables import read_measurements
-
-        title_fields(spec)                                   # [drawing] keys checked
-        plan_list = plans_pkg.build_plans(result, plan_opts[0], scales=plan_opts[1])
-        if args.measured:
-            measured = read_measurements(args.measured)
-    full = linkage.full_turn(spec, args.step) if not args.no_plots else None
-    figures = {}
-    if full is not None:
-        from linkage.plots import all_figures
-        figures = all_figures(result, full, lang=args.lang)
-    from pathlib import Path
-
-    name = safe_name(spec.name, "linkage")
-    inputs = [spec_path] + ([args.measured] if args.measured else [])
-    stale = [p for p in (Path(args.output) / f"{name}_{s}.png" for s in PLOTS
-                         if s not in figures) if p.exists()]
-    # every file is named after the mechanism (the plans' too): other mechanisms' reports
-    # in the folder stay
-    with staged_output(args.output, inputs=inputs, unit=name) as stage:
-        if plan_list is not None:
-            from plans.report import write_plans
-
-            info = write_plans(result, plan_list, stage, name=name, lang=args.lang,
-                               sheet=args.sheet, measurements=measured,
-                               previews=not args.no_plots)
-        before = set(stage.iterdir())
-        write_csvs(result, stage)
-        for csv in sorted(set(stage.iterdir()) - before):   # named after the mechanism
-            csv.rename(stage / f"{name}_{csv.name}")
-        write_workbook(result, stage / f"{name}.xlsx", lang=args.lang)
-        for stem, fig in figures.items():
-            save_figure(fig, stage / f"{name}_{stem}", formats=("png",), dpi=120)
-    # plots of this mechanism from an earlier run that this run did not draw are stale
-    # (the report swap removes those it wrote itself; any other copy goes too)
-    t = text(args.lang)
-    for path in stale:
-        if path.exists():
-            path.unlink()
-        if not path.exists():
-            print(t["removed"].format(path=path), file=sys.stderr)
-    for w in caught:
-        print(t["warning_line"].format(w=warning_text(w.message, args.lang)),
-              file=sys.stderr)
-    statics = t["statics"] if spec.omega == 0 else ""
-    print(t["run"].format(name=spec.name, kind=kind_text(spec.kind, args.lang),
-                          statics=statics, n=len(result.kinematics), out=args.output))
-    for label, value, unit in summary_lines(result, args.lang):
-        v = f"{value:.4f}" if isinstance(value, float) else str(value)
-        print(f"  {label}: {v} {unit}".rstrip())
-    m = result.forces["M_drive_Nm"].abs()
-    if m.notna().any():
-        i = int(m.idxmax())
-        pos = result.forces["position"].iat[i]
-        where = "" if pd_isna(pos) else t["at_pos"].format(pos=pos)
-        print("  " + t["max_M"].format(M=result.forces["M_drive_Nm"].iat[i], where=where,
-                                       phi=result.forces["phi_deg"].iat[i]))
-    if plan_list is not None:
-        print("  " + t["plans"].format(n=len(plan_list), sheets=info["sheets"],
-                                       size=args.sheet))
-        for pp in plan_list:
-            L = pp.lever
-            print("    " + t["lever"].format(tag=pp.tag, lever=L.M_lever_Nm,
-                                             kin=L.M_kinetostatic_Nm,
-                                             diff=L.difference_percent,
-                                             Fb=L.balancing_force_N))
+    report = run_study(spec_path, step=args.step, plots=not args.no_plots, plans=args.plans,
+                       sheet=args.sheet, measured=args.measured, mu_v=args.mu_v,
+                       mu_a=args.mu_a, mu_f=args.mu_f, mu_lever=args.mu_lever)
+    written = write_report(report, args.output, lang=args.lang)
+    for line in notice_lines(report, written, args.lang):
+        print(f"crankdyn linkage: {line}", file=sys.stderr)
+    print("\n".join(summary_lines(report, args.lang, written)))
     return 0

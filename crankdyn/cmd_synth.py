@@ -24,7 +24,7 @@ MODES = {
     frozenset({"l2", "l3"}): "l2_l3",
     frozenset({"l1"}): "l1",
     frozenset({"l2", "mu_min"}): "mu_min",
-}
+}   # the same as linkage.synthesis_study.MODES (not imported: the CLI loads lazily)
 OPTION = {"l1": "--l1", "l2": "--l2", "l3": "--l3", "mu_min": "--mu-min"}
 
 
@@ -132,7 +132,8 @@ def _validate(args):
 
 #: Python argument names of linkage.synthesis → the options that set them.
 ARG_OPTION = {"l1": "--l1", "l2": "--l2", "l3": "--l3", "mu_min_deg": "--mu-min",
-              "l1_step": "--l1-step", "phi0_deg": "--phi0", "ground_m": "--ground"}
+              "mu_min": "--mu-min", "l1_step": "--l1-step", "phi0_deg": "--phi0",
+              "ground_m": "--ground", "omega": "--omega"}
 
 
 def _as_options(exc):
@@ -147,87 +148,19 @@ def _as_options(exc):
 
 
 def run(args) -> int:
-    import numpy as np
-    import pandas as pd
-
-    from crankbase.output import ensure_finite, safe_name, save_figure, staged_output, write_csv
-    from linkage import synthesis as syn
-    from linkage import synthesis_report as rep
     from crankbase.errors import SpecError
+    from linkage.synthesis_study import run_study, summary_lines, write_report
 
     v, mode, problems = _validate(args)
     if problems:
         raise SpecError(problems)
-    phi0 = v["phi0"]
-
-    # ---- compute everything first (any SynthesisError leaves the output untouched)
-    design = None
+    # compute everything first (a problem leaves the output untouched)
     try:
-        if mode == "l2_l3":
-            design = syn.design_from_l2_l3(v["l2"], v["l3"], phi0)
-        elif mode == "l1":
-            design = syn.design_equal_l2_l3(v["l1"], phi0)
-        elif mode == "mu_min":
-            design = syn.design_for_mu_min(v["l2"], v["mu_min"], phi0,
-                                           l1_step=v["l1_step"])
-    except syn.SynthesisError as exc:
+        report = run_study(v["phi0"], l1=v["l1"], l2=v["l2"], l3=v["l3"], mu_min=v["mu_min"],
+                           l1_step=v["l1_step"], ground=v["ground"], name=args.name,
+                           omega=v["omega"], plots=not args.no_plots)
+    except SpecError as exc:
         raise _as_options(exc) from None
-    region = syn.existence_region(phi0)
-    table = rep.table1(phi0)
-    ensure_finite(table, "Table 1")
-    mech = None
-    spec = None
-    spec_name = args.name if args.name is not None else f"kkm-{phi0:g}"
-    stem = safe_name(spec_name, "kkm")
-    phi = np.arange(0.0, 361.0, 1.0)
-    mu_turn = None
-    if design is not None:
-        mech = rep.mechanism_table(design, v["ground"])
-        ensure_finite(mech, "mechanism")
-        mu_turn = pd.DataFrame({"phi_deg": phi, "mu_deg": syn.transmission_angle_deg(
-            phi, design.l1, design.l2, design.l3)})
-        ensure_finite(mu_turn, "transmission angle")
-        if v["ground"] is not None:
-            extra = {"name": spec_name}
-            if v["omega"] is not None:
-                extra["omega_rad_s"] = v["omega"]
-            spec = design.to_spec(v["ground"], **extra)
-            import linkage
-            linkage.load_spec(spec)   # the core must accept what we write
-    figures = {}
-    if not args.no_plots:
-        from linkage import synthesis_plots as plots
-
-        family = syn.right_angle_family(design.l1, phi0) if design is not None else None
-        lang = args.lang
-        figures["region"] = plots.plot_region(region, design, family=family,
-                                              lang=lang).figure
-        figures["mu_min"] = plots.plot_mu_min_curves(syn.mu_min_curves(phi0), design,
-                                                     mu_required=v["mu_min"],
-                                                     lang=lang).figure
-        if design is not None:
-            figures["transmission_angle"] = plots.plot_transmission_angle(
-                phi, mu_turn["mu_deg"].to_numpy(), design, lang=lang).figure
-
-    # ---- write (all files appear together, or none)
-    written = []
-
-    def put(name):
-        written.append(name)
-        return stage / name
-    with staged_output(args.output, unit=stem) as stage:
-        write_csv(table, put(f"{stem}_table1.csv"))
-        rep.write_workbook(put(f"{stem}_synthesis.xlsx"), table, phi0, mech, lang=args.lang)
-        if design is not None:
-            write_csv(mech, put(f"{stem}_mechanism.csv"))
-            write_csv(mu_turn, put(f"{stem}_transmission_angle.csv"))
-        if spec is not None:
-            header = rep.toml_header(design, args.lang)
-            rep.write_toml(spec, put(f"{stem}.toml"), header)
-        for name, fig in figures.items():
-            save_figure(fig, stage / f"{stem}_{name}", dpi=150, tight=True)
-            written.extend(f"{stem}_{name}.{ext}" for ext in ("png", "svg"))
-
-    lines = rep.summary_lines(region, table, design, v["ground"], args.lang)
-    print("\n".join([*lines, rep.written_line(args.output, written, args.lang)]))
+    written = write_report(report, args.output, lang=args.lang)
+    print("\n".join(summary_lines(report, args.lang, written)))
     return 0

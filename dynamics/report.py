@@ -7,39 +7,19 @@ import math
 __all__ = ["summary_rows", "summary_lines", "build_workbook", "column_label"]
 
 
-#: Labels of the summary rows: key → (Russian textbook symbol or words, English).  The
-#: symbols are those of the plots: Russian Jп, Mд, Mс, ΔT for the change of kinetic
-#: energy, Jм for the flywheel, ωср for the mean speed; English Jred, Md, Mc, ΔE, JF, ωm
-#: (Greek letters, no Cyrillic).
-_ROWS = {
-    "w_max": ("ωmax", "ωmax"),
-    "w_min": ("ωmin", "ωmin"),
-    "w_m": ("ωср = (ωmax + ωmin)/2", "ωm = (ωmax + ωmin)/2"),
-    "w_t": ("ω средняя по времени", "time-mean ω"),
-    "delta": ("δ", "δ"),
-    "dT": ("ΔTmax", "ΔEmax"),
-    "JF": ("Jм (маховик)", "JF (flywheel)"),
-    "cycle": ("время цикла", "cycle time"),
-    "Mc": ("Mс = const", "Mc (constant)"),
-    "Md": ("Mд = const", "Md (constant)"),
-    "delta_asked": ("δ заданный", "δ asked"),
-    "dT_const": ("ΔTmax при ω = const", "ΔEmax at constant speed"),
-    "Jc": ("Jc (среднее Jп за цикл)", "Jc (cycle mean of Jred)"),
-    "J_classic": ("Jм = ΔTmax/(δ ωср²) − Jc", "JF classic = ΔEmax/(δ ωm²) − Jc"),
-    "J_exact": ("Jм точный", "JF exact"),
-    "startup": ("время разгона", "start-up time"),
-}
-
-#: Units: key → (ru, en).
-_UNIT = {"rad_s": ("рад/с", "rad/s"), "J": ("Дж", "J"), "kgm2": ("кг·м²", "kg·m²"),
-         "s": ("с", "s"), "Nm": ("Н·м", "N·m"), "1": ("-", "-")}
+#: Units of the summary rows: key → catalogue key (``dynamics.unit.<key>``).  The
+#: labels are ``dynamics.row.<key>`` (Russian Jп, Mд, Mс, ΔT, Jм, ωср; English Jred, Md,
+#: Mc, ΔE, JF, ωm: the symbols of the plots; no Cyrillic in English).
+_UNIT_KEYS = ("rad_s", "J", "kgm2", "s", "Nm", "1")
 
 
-def summary_rows(result: dict, lang="en"):
+def summary_rows(result, lang="en"):
     """(label, value, unit) rows of the summary, in the report language (``"ru"``: the
     Russian textbook symbols; ``"en"``: English, no Cyrillic letter); the same rows and
-    values in both."""
-    i = 0 if lang == "ru" else 1
+    values in both.  Words from the catalogue (``dynamics.po``)."""
+    from crankbase.texts import texts
+
+    t = texts(lang)
     m, fly = result["motion"], result["flywheel"]
     keys = [("w_max", m.omega_max, "rad_s"), ("w_min", m.omega_min, "rad_s"),
             ("w_m", m.omega_mean, "rad_s"), ("w_t", m.omega_time_mean, "rad_s"),
@@ -56,32 +36,35 @@ def summary_rows(result: dict, lang="en"):
                  ("J_exact", fly.J_exact, "kgm2")]
     if result.get("startup") is not None:
         keys.append(("startup", result["startup"].t_steady, "s"))
-    return [(_ROWS[k][i], float(v), _UNIT[u][i]) for k, v, u in keys]
+    return [(t(f"dynamics.row.{k}"), float(v), t(f"dynamics.unit.{u}")) for k, v, u in keys]
 
 
-#: Words of the terminal summary's first line: (ru, en).
-_KIND = {"machine": ("машина, заданная приведёнными величинами", "machine"),
-         "linkage": ("рычажный механизм", "linkage"),
-         "engine": ("поршневой двигатель", "engine")}
-_DRIVING = {"constant": ("движущий момент постоянный", "driving constant"),
-            "table": ("движущий момент по таблице", "driving table"),
-            "motor": ("привод от электродвигателя", "driving motor")}
-
-
-def summary_lines(result: dict, name: str, kind: str, driving: str, lang="en"):
+def summary_lines(result, name=None, kind=None, driving=None, lang="en"):
     """The terminal summary of a dynamics run in ``lang``: the machine (``name``,
-    ``kind``: machine, linkage or engine; ``driving``: constant, table or motor), the grid,
-    then one line per row of :func:`summary_rows`.  Every number is formatted once, the
-    same in both languages; ru speaks Russian with the textbook symbols, en has no
-    Cyrillic letter."""
-    i = 0 if lang == "ru" else 1
+    ``kind``: machine, linkage or engine; ``driving``: constant, table or motor; taken
+    from ``result`` when it is a :class:`dynamics.study.DynamicsReport`), the grid, then
+    one line per row of :func:`summary_rows`, then what the run assumed (an engine spec
+    without a [dynamics] δ).  Every number is formatted once, the same in both languages
+    (a round-off zero never as −0); ru speaks Russian with the textbook symbols, en has
+    no Cyrillic letter."""
+    from crankbase.texts import texts
+    from crankbase.tolerances import format_snapped
+
+    t = texts(lang)
+    name = name if name is not None else result.name
+    kind = kind if kind is not None else result.kind
+    driving = driving if driving is not None else result.driving
     m = result["motion"]
-    points = f"{len(m.table)}"
     span = f"{float(m.table['phi_rad'].iloc[-1]) * 180.0 / math.pi:g}"
-    grid = (f"узлов сетки {points} на {span}°", f"{points} grid points over {span} deg")[i]
-    lines = [f"{name}: {_KIND[kind][i]}, {_DRIVING[driving][i]}, {grid}"]
-    lines += [f"  {label:<36} {value:14.6g} {unit}"
+    grid = t("dynamics.summary.grid", points=len(m.table), span=span)
+    lines = [t("dynamics.summary.head", name=name, kind=t(f"dynamics.kind.{kind}"),
+               driving=t(f"dynamics.driving.{driving}"), grid=grid)]
+    lines += [f"  {label:<36} {format_snapped(value, '14.6g'):>14} {unit}"
               for label, value, unit in summary_rows(result, lang)]
+    for note in getattr(result, "notes", ()):
+        fly = result["flywheel"]
+        lines.append("  " + t(f"dynamics.note.{note}",
+                              delta=f"{fly.delta:g}" if fly is not None else ""))
     return lines
 
 

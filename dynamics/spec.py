@@ -25,7 +25,7 @@ spec, each with a ``[dynamics]`` section (see the README for every key).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from ._base import Checker, MotionError, Problem, SpecError, read_toml
 
@@ -61,6 +61,9 @@ class DynamicsJob:
     model: object        # ReducedModel (without the table drive)
     settings: DynamicsSettings
     source: str | None
+    #: What the run assumed (``"delta_from_flywheel"``, ``"no_flywheel"``: an engine spec
+    #: without a [dynamics] delta or flywheel), said in the summary.
+    notes: tuple = ()
 
 
 def _settings(ck, dyn, period_deg, engine=False):
@@ -112,6 +115,7 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
     data, base_dir = read_toml(path_or_dict)
     src = None if isinstance(path_or_dict, dict) else str(path_or_dict)
     ck = Checker()
+    notes = ()
     dyn = ck.table(data, "dynamics", required=False)
     if "engine" in data:
         import engine
@@ -124,18 +128,23 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
                             default=0.0, ge=0)
         problems = list(ck.problems)
         try:
-            study = engine.load(rest, base_dir=base_dir)     # the physics and the crank train
-            espec = study.spec
+            estudy = engine.load(rest, base_dir=base_dir)
         except SpecError as exc:
             raise SpecError(problems + exc.problems) from None
         if problems:
             raise SpecError(problems)
+        espec = estudy.spec
+        fw_delta = getattr(estudy.train, "delta", None)
+        if settings.delta is None and settings.flywheel is None:   # #23: [flywheel] delta
+            notes = ("delta_from_flywheel",) if fw_delta is not None else ("no_flywheel",)
+            if fw_delta is not None and fw_delta < 1:
+                settings = replace(settings, delta=float(fw_delta))
         if settings.driving != "constant":
             raise SpecError(Problem("dynamics.driving", f"got {settings.driving!r}; an "
                                     "engine drives itself: the resisting moment is the "
                                     "constant one (driving = \"constant\")"))
         model = engine_model(espec, steps=settings.steps or 1440, J_extra_kgm2=J_extra,
-                             train=study.train)
+                             train=estudy.train)
         if settings.omega_mean is not None:
             model.omega_nominal = settings.omega_mean
         kind = "engine"
@@ -244,7 +253,7 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
         # the table's angles are the angle turned from the start of the cycle
         model = model.with_drive(model.M_drive_Nm + pl(model.phi),
                                  model.W_drive_J + pl.integral(0.0, model.phi))
-    return DynamicsJob(kind, model, settings, src)
+    return DynamicsJob(kind, model, settings, src, notes)
 
 
 def run_job(job: DynamicsJob):
@@ -253,9 +262,11 @@ def run_job(job: DynamicsJob):
 
     Returns
     -------
-    dict
+    dynamics.study.DynamicsReport
         ``motion`` (MotionResult), ``flywheel`` (FlywheelResult or None), ``startup``
-        (StartupResult or None), ``forces`` (DataFrame or None), ``model``.
+        (StartupResult or None), ``forces`` (DataFrame or None), ``model``, the name,
+        kind and driving; read as a mapping too (``report["motion"]``), as before.
+        Written by :func:`dynamics.study.write_report`.
     """
     from .motion import (Motor, engine_true_motion_forces, motor_startup,
                          motor_steady_motion, size_flywheel, steady_motion,
@@ -289,8 +300,11 @@ def run_job(job: DynamicsJob):
         forces = true_motion_forces(model, motion)
     elif job.kind == "engine":
         forces = engine_true_motion_forces(model, motion)
-    return {"model": model, "motion": motion, "flywheel": fly, "startup": startup,
-            "forces": forces}
+    from .results import DynamicsReport
+
+    return DynamicsReport(name=model.name, kind=job.kind, driving=s.driving, model=model,
+                          motion=motion, flywheel=fly, startup=startup, forces=forces,
+                          settings=s, source=job.source, notes=tuple(job.notes))
 
 
 def _motor_flywheel(model, motor, delta):

@@ -175,7 +175,8 @@ def write_csvs(result, folder):
     write_csv(result.forces, folder / "forces.csv")
 
 
-#: Every text of the workbook and the terminal summary, by language (one place).
+#: The texts of the workbook by language (the terminal's words and the cycle geometry's
+#: are the catalogue's, crankbase/locale/<lang>/linkage.po).
 _TEXT = {
     "en": {
         "sheets": {"inputs": "inputs", "positions": "positions", "velocities": "velocities",
@@ -187,29 +188,6 @@ _TEXT = {
         "warning": "warning", "conventions": "conventions",
         "ext_head": ("quantity", "unit", "column"), "extreme": "extreme {i}",
         "ext_labels": {"working start": "working start", "working end": "working end"},
-        "kind": {"crank-rocker": "crank-rocker", "crank-slider": "crank-slider"},
-        "grashof_label": "Grashof type",
-        "rotatable_label": "Grashof type",
-        "grashof": {"crank-rocker": "crank-rocker", "double-crank": "double-crank",
-                    "double-rocker": "double-rocker", "change-point": "change-point",
-                    "non-Grashof": "non-Grashof", "rotatable": "rotatable",
-                    "non-rotatable": "non-rotatable"},
-        "cycle": {
-            "phi_ws": "crank angle, working-stroke start (position 1)",
-            "phi_we": "crank angle, working-stroke end",
-            "phi_w": "crank rotation in the working stroke",
-            "phi_i": "crank rotation in the idle stroke",
-            "K": "time-ratio coefficient K = φwork/φidle",
-            "th_ws": "rocker angle at working-stroke start",
-            "th_we": "rocker angle at working-stroke end",
-            "swing": "rocker swing",
-            "s_ws": "slider position at working-stroke start",
-            "s_we": "slider position at working-stroke end",
-            "stroke": "slider stroke",
-            "mu": "minimum transmission angle μmin",
-            "mu_phi": "crank angle of μmin",
-            "singular": "singular crank angles (change point)",
-        },
         "conv": (
             "SI units; angles in degrees, counter-clockwise from +x; O at the origin.",
             "Rij = force of link i on link j (1 ground, 2 crank, 3 coupler/rod, "
@@ -225,17 +203,6 @@ _TEXT = {
             "Row 3 of every table sheet holds the CSV column names (the same in the "
             "Russian report).",
         ),
-        # terminal
-        "run": "{name} ({kind}{statics}): {n} positions -> {out}",
-        "statics": "; statics, ω = 0",
-        "max_M": "max |Mb| at the positions: {M:.2f} N·m ({where}φ = {phi:.2f}°)",
-        "at_pos": "position {pos}, ",
-        "plans": "plans of {n} position(s) on {sheets} {size} sheet(s); Zhukovsky lever "
-                 "against the kinetostatics:",
-        "lever": "position {tag}: Mb lever {lever:.4f} N·m, kinetostatics {kin:.4f} N·m, "
-                 "difference {diff:.1e} %; Fb = {Fb:.3f} N at A ⟂ OA",
-        "removed": "crankdyn linkage: removed {path} (an earlier run's plot, not drawn now)",
-        "warning_line": "crankdyn linkage: warning: {w}",
     },
     "ru": {
         "sheets": {"inputs": "Исходные данные", "positions": "Положения",
@@ -250,33 +217,6 @@ _TEXT = {
         "extreme": "крайнее положение {i}",
         "ext_labels": {"working start": "начало рабочего хода",
                        "working end": "конец рабочего хода"},
-        "kind": {"crank-rocker": "кривошипно-коромысловый механизм",
-                 "crank-slider": "кривошипно-ползунный механизм"},
-        "grashof_label": "Тип механизма по Грасгофу",
-        "rotatable_label": "Проворачиваемость кривошипа",
-        "grashof": {"crank-rocker": "кривошипно-коромысловый",
-                    "double-crank": "двухкривошипный",
-                    "double-rocker": "двухкоромысловый",
-                    "change-point": "переходный (s + l = p + q)",
-                    "non-Grashof": "не удовлетворяет условию Грасгофа (трёхкоромысловый)",
-                    "rotatable": "кривошип проворачивается полностью",
-                    "non-rotatable": "кривошип не проворачивается полностью"},
-        "cycle": {
-            "phi_ws": "угол кривошипа в начале рабочего хода (положение 1)",
-            "phi_we": "угол кривошипа в конце рабочего хода",
-            "phi_w": "угол поворота кривошипа за рабочий ход φр.х",
-            "phi_i": "угол поворота кривошипа за холостой ход φх.х",
-            "K": "коэффициент изменения средней скорости выходного звена K = φр.х/φх.х",
-            "th_ws": "угол коромысла в начале рабочего хода",
-            "th_we": "угол коромысла в конце рабочего хода",
-            "swing": "угол размаха коромысла",
-            "s_ws": "положение ползуна в начале рабочего хода",
-            "s_we": "положение ползуна в конце рабочего хода",
-            "stroke": "ход ползуна",
-            "mu": "минимальный угол передачи μmin",
-            "mu_phi": "угол кривошипа при μmin",
-            "singular": "особые углы кривошипа (переходное положение)",
-        },
         "conv": (
             "Единицы СИ; углы в градусах, против часовой стрелки от оси +x; "
             "точка O в начале координат.",
@@ -293,86 +233,109 @@ _TEXT = {
             "В строке 3 каждого листа с таблицей: имена столбцов CSV (те же, что в "
             "английском отчёте).",
         ),
-        "run": "{name} ({kind}{statics}), положений: {n} -> {out}",
-        "statics": "; статика, ω = 0",
-        "max_M": "max |Mур| в положениях: {M:.2f} Н·м ({where}φ = {phi:.2f}°)",
-        "at_pos": "положение {pos}, ",
-        "plans": "планы скоростей, ускорений и сил для положений: {n}; листов {size}: "
-                 "{sheets}; рычаг Жуковского и кинетостатика:",
-        "lever": "положение {tag}: Mур по рычагу {lever:.4f} Н·м, по кинетостатике "
-                 "{kin:.4f} Н·м, расхождение {diff:.1e} %; Fур = {Fb:.3f} Н в точке A ⟂ OA",
-        "removed": "crankdyn linkage: удалён {path} (график прежнего запуска, теперь не "
-                   "строится)",
-        "warning_line": "crankdyn linkage: предупреждение: {w}",
     },
 }
 
 
 def text(lang: str) -> dict:
-    """The report's texts in ``lang`` ("ru" or "en"): sheet titles, labels, the terminal
-    lines of ``crankdyn linkage`` (one table for the workbook and the terminal)."""
+    """The workbook's texts in ``lang`` ("ru" or "en"): sheet titles, labels, conventions
+    (the terminal's words and the cycle geometry's are the catalogue's,
+    ``crankbase/locale/<lang>/linkage.po``)."""
     _check_lang(lang)
     return _TEXT[lang]
 
 
 def summary_lines(result, lang: str = "ru"):
     """The cycle geometry as (label, value, unit) rows for the inputs sheet and the
-    terminal, in the report's language (the Grashof type in words of that language)."""
-    t = text(lang)
-    c, u = t["cycle"], (lambda unit: unit_text(unit, lang))
+    terminal, in the report's language (the Grashof type in words of that language;
+    words from the catalogue ``linkage.po``)."""
+    from crankbase.texts import texts
+
+    _check_lang(lang)
+    t = texts(lang)
+
+    def c(key):
+        return t(f"linkage.cycle.{key}")
+
+    def u(unit):
+        return unit_text(unit, lang)
+
     s = result.summary
-    label = t["grashof_label" if s.kind == "crank-rocker" else "rotatable_label"]
-    rows = [(label, t["grashof"].get(str(s.grashof), str(s.grashof)), "")]
+    label = t("linkage.cycle.grashof") if s.kind == "crank-rocker" else t(
+        "linkage.cycle.rotatable")
+    rows = [(label, grashof_text(s.grashof, lang), "")]
     if s.has_extremes:
-        rows += [(c["phi_ws"], s.phi_working_start_deg, "°"),
-                 (c["phi_we"], s.phi_working_end_deg, "°"),
-                 (c["phi_w"], s.working_crank_angle_deg, "°"),
-                 (c["phi_i"], s.idle_crank_angle_deg, "°"),
-                 (c["K"], s.time_ratio, "")]
+        rows += [(c("phi_ws"), s.phi_working_start_deg, "°"),
+                 (c("phi_we"), s.phi_working_end_deg, "°"),
+                 (c("phi_w"), s.working_crank_angle_deg, "°"),
+                 (c("phi_i"), s.idle_crank_angle_deg, "°"),
+                 (c("K"), s.time_ratio, "")]
         if s.swing_deg is not None:
-            rows += [(c["th_ws"], s.theta4_working_start_deg, "°"),
-                     (c["th_we"], s.theta4_working_end_deg, "°"),
-                     (c["swing"], s.swing_deg, "°")]
+            rows += [(c("th_ws"), s.theta4_working_start_deg, "°"),
+                     (c("th_we"), s.theta4_working_end_deg, "°"),
+                     (c("swing"), s.swing_deg, "°")]
         else:
-            rows += [(c["s_ws"], s.s4_working_start_m, u("m")),
-                     (c["s_we"], s.s4_working_end_m, u("m")),
-                     (c["stroke"], s.stroke_m, u("m"))]
-    rows += [(c["mu"], s.mu_min_deg, "°"),
-             (c["mu_phi"], s.mu_min_phi_deg, "°")]
+            rows += [(c("s_ws"), s.s4_working_start_m, u("m")),
+                     (c("s_we"), s.s4_working_end_m, u("m")),
+                     (c("stroke"), s.stroke_m, u("m"))]
+    rows += [(c("mu"), s.mu_min_deg, "°"),
+             (c("mu_phi"), s.mu_min_phi_deg, "°")]
     if s.singular_phi_deg:
-        rows.append((c["singular"], ", ".join(f"{a:.6g}" for a in s.singular_phi_deg), "°"))
+        rows.append((c("singular"), ", ".join(f"{a:.6g}" for a in s.singular_phi_deg), "°"))
     return rows
 
 
-#: The analysis' warnings (linkage.analysis, in English) in Russian: pattern → text.
-_WARNINGS_RU = (
+#: The Grashof types and rotatability (linkage.fourbar) → their catalogue keys.
+_GRASHOF_KEYS = {"crank-rocker": "crank_rocker", "double-crank": "double_crank",
+                 "double-rocker": "double_rocker", "change-point": "change_point",
+                 "non-Grashof": "non_grashof", "rotatable": "rotatable",
+                 "non-rotatable": "non_rotatable"}
+
+
+def grashof_text(grashof, lang: str = "ru") -> str:
+    """The Grashof type (or a crank-slider's rotatability) in words of ``lang``; an
+    unknown one as it is."""
+    from crankbase.texts import texts
+
+    key = _GRASHOF_KEYS.get(str(grashof))
+    return texts(lang)(f"linkage.grashof.{key}") if key else str(grashof)
+
+
+#: The analysis' warnings (linkage.analysis, in English) → catalogue keys.
+_WARNINGS = (
     (re.compile(r"change-point mechanism: singular position\(s\) at crank angle (.+?) "
                 r"\(links collinear; the output's motion is indeterminate there\)"),
-     "механизм с переходным положением: особые положения при угле кривошипа {0} "
-     "(звенья на одной прямой, движение выходного звена не определено)"),
+     "linkage.warning.change_point"),
     (re.compile(r"requested crank angles include a singular position; its velocities, "
                 r"accelerations and forces are not finite"),
-     "заданные углы кривошипа включают особое положение: скорости, ускорения и силы в "
-     "нём не определены (ячейки пусты)"),
+     "linkage.warning.singular_requested"),
 )
 
 
 def warning_text(message, lang: str = "ru") -> str:
     """An analysis warning (:attr:`AnalysisResult.warnings`) in the report's language;
     a message without a translation is returned as it is."""
+    from crankbase.texts import texts
+
     message = str(message)
-    if text(lang) is _TEXT["ru"]:
-        for pattern, ru in _WARNINGS_RU:
-            m = pattern.fullmatch(message)
-            if m:
-                return ru.format(*m.groups())
+    if lang == "en":
+        return message
+    _check_lang(lang)
+    for pattern, key in _WARNINGS:
+        m = pattern.fullmatch(message)
+        if m:
+            return texts(lang)(key, angles=m.group(1)) if m.groups() else texts(lang)(key)
     return message
 
 
 def kind_text(kind: str, lang: str = "ru") -> str:
     """The mechanism's kind in words (``"crank-rocker"`` → «кривошипно-коромысловый
     механизм» in ru)."""
-    return text(lang)["kind"].get(kind, kind)
+    from crankbase.texts import texts
+
+    _check_lang(lang)
+    key = {"crank-rocker": "crank_rocker", "crank-slider": "crank_slider"}.get(kind)
+    return texts(lang)(f"linkage.kind.{key}") if key else kind
 
 
 def _spec_rows(raw, prefix=""):

@@ -111,18 +111,6 @@ def mechanism_table(design, ground_m=None):
 #: numbers are formatted once and put into the words of either language.
 _WORDS = {
     "kkm": ("ККМ-{phi0}°", "KKM-{phi0}°"),
-    "region": ("{kkm}: область существования 0 < λ1 ≤ {l1max}, точка d = ({dx}, {dy}); "
-               "таблица 1: {rows}",
-               "{kkm}: region of existence 0 < λ1 ≤ {l1max}, point d = ({dx}, {dy}); "
-               "Table 1: {rows}"),
-    "design": ("{kkm} (μ = 90° при φ0 = {phi0}°), {method}",
-               "{kkm} (μ = 90° at φ0 = {phi0}°), {method}"),
-    "mu": ("  μmin = {mu}° ({dm}) при φ = {at}°;  μ(φ0) = {mu0}°",
-           "  μmin = {mu}° ({dm}) at φ = {at}°;  μ(φ0) = {mu0}°"),
-    "grashof": ("  Тип по Грасгофу: {t}", "  Grashof type: {t}"),
-    "lengths": ("  длины: кривошип {l1} м, шатун {l2} м, коромысло {l3} м, стойка {l0} м",
-                "  lengths: crank {l1} m, coupler {l2} m, rocker {l3} m, ground {l0} m"),
-    "written": ("записано в {out}: {files}", "written to {out}: {files}"),
     "toml": ("{kkm}: кривошипно-коромысловый механизм с μ = 90° при φ = {phi0}° от линии "
              "центров (стойка вдоль +x)\n"
              "записано командой crankdyn synth; λ1 = {l1}, λ2 = {l2}, λ3 = {l3}, "
@@ -140,26 +128,13 @@ _WORDS = {
     "value": ("значение", "value"),
 }
 
-#: The Grashof types (linkage.fourbar.GrashofType values) in words: (ru, en).
-_GRASHOF = {
-    "crank-rocker": ("кривошипно-коромысловый", "crank-rocker"),
-    "double-crank": ("двухкривошипный", "double-crank"),
-    "double-rocker": ("двухкоромысловый", "double-rocker"),
-    "change-point": ("переходный (звенья могут встать в одну линию: особое положение)",
-                     "change-point (the links can become collinear: a dead position)"),
-    "non-Grashof": ("не удовлетворяет условию Грасгофа (ни одно звено не проворачивается)",
-                    "non-Grashof (no link turns fully)"),
-}
+#: The Grashof types (linkage.fourbar.GrashofType values) → catalogue keys (synth.po).
+_GRASHOF = {"crank-rocker": "crank_rocker", "double-crank": "double_crank",
+            "double-rocker": "double_rocker", "change-point": "change_point",
+            "non-Grashof": "non_grashof"}
 
-#: The design tasks (linkage.synthesis's Design.method) in words: (ru, en).
-_METHOD = {
-    "given": ("заданы λ1, λ2, λ3", "given λ1, λ2, λ3"),
-    "given l2, l3": ("заданы λ2, λ3; λ1 по ур. (6)", "given λ2, λ3; λ1 from eq. (6)"),
-    "given l1, l2 = l3": ("задано λ1; λ2 = λ3 по ур. (6)", "given λ1; λ2 = λ3 from eq. (6)"),
-    "mu_min": ("заданы λ2 и μmin ≥ {mu}°", "given λ2 and μmin ≥ {mu}°"),
-    "step": ("; λ1 округлено в меньшую сторону до кратного {step}",
-             "; λ1 rounded down to a multiple of {step}"),
-}
+#: The design tasks (linkage.synthesis's Design.method) → catalogue keys (synth.po).
+_METHOD = {"given": "given", "given l2, l3": "given_l2_l3", "given l1, l2 = l3": "given_l1"}
 _MU_METHOD = re.compile(r"^given l2 and mu_min >= (\S+) deg"
                         r"(?:, l1 rounded down to a multiple of (\S+))?$")
 
@@ -171,16 +146,16 @@ def _lang(lang) -> int:
     return 0 if lang == "ru" else 1
 
 
+def _texts(lang):
+    from crankbase.texts import texts
+
+    _lang(lang)
+    return texts(lang)
+
+
 def _rows(n: int, lang) -> str:
-    """``n`` rows in words (Russian plural forms: 1 строка, 2 строки, 5 строк)."""
-    if lang == "en":
-        return f"{n} row" + ("" if n == 1 else "s")
-    tail = n % 100
-    if 11 <= tail <= 14:
-        word = "строк"
-    else:
-        word = {1: "строка", 2: "строки", 3: "строки", 4: "строки"}.get(n % 10, "строк")
-    return f"{n} {word}"
+    """``n`` rows in words (plural forms of the language: 1 строка, 2 строки, 5 строк)."""
+    return _texts(lang).n("common.rows", n)
 
 
 def grashof_text(grashof, lang="en") -> str:
@@ -191,31 +166,31 @@ def grashof_text(grashof, lang="en") -> str:
     grashof : linkage.fourbar.GrashofType or str
     lang : {"en", "ru"}
     """
-    i = _lang(lang)
-    pair = _GRASHOF.get(str(grashof))
-    return pair[i] if pair else str(grashof)
+    t = _texts(lang)
+    key = _GRASHOF.get(str(grashof))
+    return t(f"synth.grashof.{key}") if key else str(grashof)
 
 
 def method_text(method, lang="en") -> str:
     """The design task (:attr:`linkage.synthesis.Design.method`) in words of ``lang``;
     the numbers in it are copied as they are (the same text in both languages).  An
     unknown task is returned unchanged."""
-    i = _lang(lang)
+    t = _texts(lang)
     if method in _METHOD:
-        return _METHOD[method][i]
+        return t(f"synth.method.{_METHOD[method]}")
     m = _MU_METHOD.match(str(method))
     if m is None:
         return str(method)
-    text = _METHOD["mu_min"][i].format(mu=m.group(1))
+    text = t("synth.method.mu_min", mu=m.group(1))
     if m.group(2) is not None:
-        text += _METHOD["step"][i].format(step=m.group(2))
+        text += t("synth.method.step", step=m.group(2))
     return text
 
 
 def summary_lines(region, table, design=None, ground_m=None, lang="en") -> list[str]:
     """The terminal summary of a synthesis, wholly in ``lang`` (ru: the paper's Russian
     terms; en: no Cyrillic letter, the family named KKM-φ0).  Every number is formatted
-    once, the same in both languages.
+    once, the same in both languages; the words are the catalogue's (``synth.po``).
 
     Parameters
     ----------
@@ -228,32 +203,31 @@ def summary_lines(region, table, design=None, ground_m=None, lang="en") -> list[
         Adds the absolute lengths. [m]
     lang : {"en", "ru"}
     """
-    i = _lang(lang)
-    W = {k: v[i] for k, v in _WORDS.items()}
+    t = _texts(lang)
     n = {"phi0": f"{region.phi0_deg:g}", "l1max": f"{region.l1_max:.4f}",
          "dx": f"{region.d[0]:.4f}", "dy": f"{region.d[1]:.4f}",
          "rows": _rows(len(table), lang)}
-    n["kkm"] = W["kkm"].format(**n)
-    out = [W["region"].format(**n)]
+    n["kkm"] = t("synth.summary.kkm", phi0=n["phi0"])
+    out = [t("synth.summary.region", **n)]
     if design is None:
         return out
     d = design
-    out += [W["design"].format(kkm=n["kkm"], phi0=f"{d.phi0_deg:g}",
-                               method=method_text(d.method, lang)),
+    out += [t("synth.summary.design", kkm=n["kkm"], phi0=f"{d.phi0_deg:g}",
+              method=method_text(d.method, lang)),
             f"  λ1 = {d.l1:.4f}   λ2 = {d.l2:.4f}   λ3 = {d.l3:.4f}   (λ0 = 1)",
-            W["mu"].format(mu=f"{d.mu_min_deg:.4f}", dm=format_deg_min(d.mu_min_deg),
-                           at=f"{d.mu_min_at_deg:g}", mu0=f"{d.mu_at_phi0_deg:.9g}"),
-            W["grashof"].format(t=grashof_text(d.grashof, lang))]
+            t("synth.summary.mu", mu=f"{d.mu_min_deg:.4f}", dm=format_deg_min(d.mu_min_deg),
+              at=f"{d.mu_min_at_deg:g}", mu0=f"{d.mu_at_phi0_deg:.9g}"),
+            t("synth.summary.grashof", t=grashof_text(d.grashof, lang))]
     if ground_m is not None:
         crank, coupler, rocker, ground = d.lengths_m(ground_m)
-        out.append(W["lengths"].format(l1=f"{crank:.6g}", l2=f"{coupler:.6g}",
-                                       l3=f"{rocker:.6g}", l0=f"{ground:.6g}"))
+        out.append(t("synth.summary.lengths", l1=f"{crank:.6g}", l2=f"{coupler:.6g}",
+                     l3=f"{rocker:.6g}", l0=f"{ground:.6g}"))
     return out
 
 
 def written_line(out, files, lang="en") -> str:
     """The last line of the terminal summary: the folder and the files written."""
-    return _WORDS["written"][_lang(lang)].format(out=out, files=", ".join(files))
+    return _texts(lang)("synth.summary.written", out=out, files=", ".join(files))
 
 
 def toml_header(design, lang="en") -> str:

@@ -37,7 +37,7 @@ from .dxf import write_dxf
 from .tables import (error_table, lever_forces_table, lever_table, plans_table,
                      student_table)
 
-__all__ = ["write_plans", "output_names"]
+__all__ = ["write_plans", "output_names", "summary_lines"]
 
 
 def _csv(df, path):
@@ -124,3 +124,37 @@ def write_plans(result, plans, folder, *, name=None, lang="ru", sheet="A1",
     for k, sh in enumerate(sheets):
         write_dxf(sh, sheet_file(k, "dxf"))
     return {"sheets": len(sheets), "errors": errors, "name": stem}
+
+
+def summary_lines(plans, size, sheets, lang="ru", errors=None):
+    """The graphical method's lines of the terminal summary in ``lang``: the positions
+    and drawing sheets, then per position Mb by Zhukovsky's lever against the
+    kinetostatics and the balancing force at A; with ``errors``
+    (:func:`plans.tables.error_table`) the largest error of the plan method.  Words from
+    the catalogue (``plans.po``); every number formatted once, the same in both
+    languages, never as a negative zero."""
+    import numpy as np
+
+    from crankbase.texts import texts
+    from crankbase.tolerances import format_snapped
+
+    t = texts(lang)
+    lines = ["  " + t("plans.summary.plans",
+                      positions=t.n("plans.summary.positions", len(plans)),
+                      sheets=t.n("plans.summary.sheets", sheets, size=size))]
+    for pp in plans:
+        L = pp.lever
+        scale = max(abs(L.M_lever_Nm), abs(L.M_kinetostatic_Nm))
+        lines.append("    " + t("plans.summary.lever", tag=pp.tag,
+                                 lever=format_snapped(L.M_lever_Nm, ".4f", scale),
+                                 kin=format_snapped(L.M_kinetostatic_Nm, ".4f", scale),
+                                 diff=format_snapped(L.difference_percent, ".1e"),
+                                 Fb=format_snapped(L.balancing_force_N, ".3f")))
+    if errors is not None and len(errors):
+        err = errors["error_percent"].to_numpy(float)
+        if np.isfinite(err).any():
+            i = int(np.nanargmax(np.abs(err)))
+            lines.append("  " + t.n("plans.summary.measured", len(errors),
+                                    err=format_snapped(err[i], ".2f"),
+                                    pos=errors["position"].iat[i]))
+    return lines
