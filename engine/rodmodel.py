@@ -46,121 +46,14 @@ from linkage.groups import Wrench, dot, driver_reactions, link_wrench, rrp_react
 
 from .forces import _psi, force_table
 from .kinematics import crank_slider
+from .spec.inputs import ROD_KEYS, ROD_MODELS, RigidRod, mass_parts, rod_options
 
 __all__ = ["RigidRod", "rod_options", "rigid_rod_forces", "RodModelComparison",
            "compare_rod_models", "ROD_MODELS", "ROD_KEYS"]
 
-ROD_MODELS = ("two-mass", "rigid")
-ROD_KEYS = ("model", "inertia_kg_m2", "mass_kg", "cg_from_big_end_mm")
-
-
-@dataclass(frozen=True)
-class RigidRod:
-    """A rigid rod and the piston group (SI).
-
-    ``mass`` m [kg], ``cg`` b: centre of mass from the crank pin along the rod [m],
-    ``inertia`` J about the centre of mass [kg·m²], ``m_piston`` mп [kg]."""
-
-    mass: float
-    cg: float
-    inertia: float
-    m_piston: float
-
-    def two_mass_inertia(self, L):
-        """J of the two-mass rod with this mass and centre of mass: m·a·b. [kg·m²]"""
-        return self.mass * self.cg * (L - self.cg)
-
-
-def _parts(spec):
-    """(piston group mass, rod mass) when [masses] gives them as parts, else None."""
-    src = spec.mass_source
-    if "piston_group_kg" in src:
-        return float(src["piston_group_kg"]), float(src["rod_kg"])
-    if "piston_group_kg_m2" in src:
-        return (float(src["piston_group_kg_m2"]) * spec.area,
-                float(src["rod_kg_m2"]) * spec.area)
-    return None
-
-
-def rod_options(table, spec=None, checker=None):
-    """Read the ``[rod]`` table: ``("two-mass", None)`` or ``("rigid", RigidRod)``.
-
-    Parameters
-    ----------
-    table : dict or None
-        The ``[rod]`` table of the spec file (None or {} when absent).
-    spec : EngineSpec, optional
-        The engine, for the defaults and the checks that need it (mass, centre of mass,
-        piston mass); without it only the keys and their ranges are checked and the
-        rigid rod is not built (``("rigid", None)``).
-    checker : Checker, optional
-        Problems are added to it (else a :class:`SpecError` is raised).
-
-    Raises
-    ------
-    SpecError
-        Naming every bad key of ``[rod]`` (unknown key, bad model, missing or
-        non-positive J, a centre of mass off the rod, a negative piston mass).
-    """
-    from crankbase.validation import Checker
-
-    c = checker if checker is not None else Checker()
-    n0 = len(c.problems)
-    t = table if table is not None else {}
-    out = ("two-mass", None)
-    if not isinstance(t, dict):
-        c.add("rod", f"must be a table, got {t!r}")
-        t = {}
-    c.unknown(t, ROD_KEYS, "rod")
-    model = c.choice(t, "model", ROD_MODELS, "rod", required=False, default="two-mass")
-    if model != "rigid":
-        for k in t:
-            if k != "model" and k in ROD_KEYS:
-                c.add(f"rod.{k}", 'only used with model = "rigid"')
-    else:
-        out = ("rigid", _rigid(c, t, spec))
-    if checker is None:
-        c.raise_if_any()
-    return out if len(c.problems) == n0 else ("two-mass", None)
-
-
-def _rigid(c, t, spec):
-    J = c.number(t, "inertia_kg_m2", "rod", gt=0,
-                 what="the rod's moment of inertia about its centre of mass [kg·m²]")
-    m = c.number(t, "mass_kg", "rod", required=False, gt=0)
-    b_mm = c.number(t, "cg_from_big_end_mm", "rod", required=False, gt=0)
-    if spec is None:
-        return None
-    parts = _parts(spec)
-    L = spec.L
-    if m is None and "mass_kg" not in t:
-        if parts is None:
-            c.add("rod.mass_kg", "missing; needed for the rigid rod when [masses] gives "
-                                 "reciprocating_kg and rod_rotating_kg")
-        else:
-            m = parts[1]
-    b = None
-    if b_mm is not None:
-        if not b_mm < L * 1e3:
-            c.add("rod.cg_from_big_end_mm", f"got {b_mm:g}; the centre of mass must lie "
-                                            f"on the rod, 0 < b < Lш = {L * 1e3:g} mm")
-        else:
-            b = b_mm / 1e3
-    elif m is not None:
-        small = m - spec.m_rod_rot
-        if not 0 < small < m:
-            c.add("rod.mass_kg", f"got {m:g} kg; must exceed the rotating part mш.к = "
-                                 f"{spec.m_rod_rot:g} kg (or give cg_from_big_end_mm)")
-        else:
-            b = L * small / m
-    if m is None or b is None or J is None:
-        return None
-    mp = parts[0] if parts is not None else spec.mj - (m - spec.m_rod_rot)
-    if mp < 0:
-        c.add("rod.mass_kg", f"got {m:g} kg: the piston mass mj − (m − mш.к) = "
-                             f"{mp:g} kg would be negative")
-        return None
-    return RigidRod(float(m), float(b), float(J), float(mp))
+# The reading of [rod] (RigidRod, rod_options) lives with the other spec inputs, which
+# import no calculation (engine.spec.inputs); kept importable from here.
+_parts = mass_parts
 
 
 def rigid_rod_forces(alpha_deg, R, L, omega, dPg, rod: RigidRod, offset=0.0):
