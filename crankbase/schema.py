@@ -180,9 +180,9 @@ class Key:
         return conv(value)
 
     # ---- the reference
-    def range_text(self) -> str:
+    def range_text(self, lang: str = "en") -> str:
         """The allowed values as the reference shows them (``(0, 1)``, ``≥ 1``,
-        ``'two-term', 'exact'``)."""
+        ``'two-term', 'exact'``; a list: how many numbers, each in its range)."""
         if self.kind == "choice" or self.kind == "bool":
             return ", ".join(_literal(c) for c in (self.choices or (True, False)))
         lo = (f"({self.gt:g}" if self.gt is not None else
@@ -198,13 +198,21 @@ class Key:
         else:
             text = ""
         if self.kind == "numbers":
-            n = (f"{self.length}" if self.length else
-                 f"{self.min_length or 0}…{self.max_length or MAX_ROWS:,}")
-            return f"{n} × {text}" if text else n
+            from .texts import texts
+
+            t = texts(lang)
+            n = (t.n("spec.range.exactly", self.length) if self.length else
+                 t.n("spec.range.at_most", self.max_length or MAX_ROWS))
+            return f"{n}, {text}" if text else n
         return text
 
-    def default_text(self) -> str:
+    def default_text(self, lang: str = "en") -> str:
+        """The default as the reference shows it ("" when none)."""
         if self.shown_default is not None:
+            if self.shown_default.startswith("spec."):
+                from .texts import texts
+
+                return texts(lang)(self.shown_default)
             return self.shown_default
         if self.default is None or self.default == ():
             return ""
@@ -508,13 +516,13 @@ def markdown_reference(lang: str = "en", schemas=None) -> str:
                 req = (t("spec.required.yes") if k.required is True else
                        t("spec.required.cond") if k.required else t("spec.required.no"))
                 sym = k.symbol_text(lang)
-                label = k.label(lang) + (f" {sym}" if sym and sym not in k.label(lang)
-                                         else "")
+                label = k.label(lang) + (f" {sym}" if sym and sym not in
+                                         k.label(lang).split() else "")
                 meaning = f"{label}: {k.help(lang)}"
                 type_key = f"spec.type.{k.kind}"
                 lines.append("| " + " | ".join(_cell(c) for c in (
                     f"`{k.name}`", t(type_key), k.unit_text(lang),
-                    k.range_text(), k.default_text(), req, meaning)) + " |")
+                    k.range_text(lang), k.default_text(lang), req, meaning)) + " |")
             lines.append("")
     return "\n".join(lines).rstrip() + "\n"
 
@@ -570,5 +578,9 @@ def main(argv=None) -> int:
 
 
 if __name__ == "__main__":      # pragma: no cover
-    raise SystemExit(main())
+    # run the imported module's main: the schema modules' Tables are instances of
+    # crankbase.schema's classes, not of this __main__ copy's
+    from crankbase.schema import main as _main
+
+    raise SystemExit(_main())
 

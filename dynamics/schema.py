@@ -22,7 +22,7 @@ DYNAMICS = Table("dynamics", (
     Key("delta", gt=0, lt=1, symbol=True),
     Key("flywheel_kgm2", ge=0, unit="kg·m²", symbol=True),
     Key("omega_mean_rad_s", gt=0, unit="rad/s", symbol=True),
-    Key("steps", "integer", ge=36, le=MAX_STEPS, shown_default="1440 (720 for a linkage)"),
+    Key("steps", "integer", ge=36, le=MAX_STEPS, shown_default="spec.default.steps"),
     Key("J_engine_extra_kgm2", ge=0, unit="kg·m²", default=0.0),
 ))
 

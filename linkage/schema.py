@@ -42,7 +42,7 @@ MECHANISM = Table("mechanism", (
 LINK = Table("links.<link>", (
     Key("mass_kg", ge=0, unit="kg", default=0.0, symbol=True),
     Key("inertia_kg_m2", ge=0, unit="kg·m²", default=0.0, symbol=True),
-    Key("cg", "numbers", length=2, shown_default="the link's middle", **M),
+    Key("cg", "numbers", length=2, shown_default="spec.default.link_middle", **M),
     Key("points", "points", **M),
 ))
 
