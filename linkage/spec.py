@@ -15,8 +15,8 @@ from crankbase.errors import SpecError
 from crankbase.schema import SpecReader
 from crankbase.validation import read_toml, rows_problem
 
-from .schema import ANALYSIS, KINDS, LINK, LINK_NAMES, LINKS, LOAD, MECHANISM, SCHEMA
-from .schema import WORKING_STROKES
+from .schema import (ANALYSIS, KINDS, LINK, LINK_NAMES, LOAD, MECHANISM, SCHEMA,
+                     WORKING_STROKES)
 
 __all__ = ["LinkSpec", "LoadSpec", "MechanismSpec", "load_spec", "LINK_NAMES", "KINDS"]
 

@@ -272,7 +272,7 @@ def test_array_of_tables_is_bounded_and_typed():
 
 # ------------------------------------------------------------------ the README
 def test_readme_spec_reference_is_generated_from_the_schema():
-    # regenerate with: python -m crankbase.schema --update-readme
+    # regenerate with: python -m crankbase.schema update-readme
     assert S.readme_reference(ROOT / "README.md") == S.readme_block()
 
 
