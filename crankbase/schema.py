@@ -335,6 +335,22 @@ class Schema:
             node = node.child(p)
         return node
 
+    def key(self, path: str) -> Key:
+        """The key at a dotted ``path`` (``"engine.bore_mm"``, ``"pressure.cycle.n1"``)."""
+        table, _, name = path.rpartition(".")
+        return self.table(table).key(name)
+
+    def describe(self, path: str, lang: str = "en") -> dict:
+        """Everything a form or a sheet shows of the key at ``path``, in ``lang``:
+        ``label``, ``help``, ``symbol``, ``unit``, ``range``, ``default`` (text) and
+        ``required`` (True, False or "cond"), e.g. for the Inputs sheets of the workbook
+        templates: ``engine.schema.SCHEMA.describe("engine.bore_mm", "ru")``."""
+        k = self.key(path)
+        return {"key": k.name, "label": k.label(lang), "help": k.help(lang),
+                "symbol": k.symbol_text(lang), "unit": k.unit_text(lang),
+                "range": k.range_text(lang), "default": k.default_text(lang),
+                "required": k.required}
+
 
 class SpecReader(Checker):
     """The one validator of spec files: reads tables and keys by their schema.

@@ -284,3 +284,13 @@ def test_reference_rows_carry_type_unit_range_default():
     assert "| `n1` | number |  | (1, 2) |  | yes |" in md
     ru = S.markdown_reference("ru")
     assert "| `bore_mm` | число | мм | > 0 |  | да | диаметр цилиндра D:" in ru
+
+
+def test_describe_gives_a_keys_words_for_the_sheets():
+    d = engine.schema.SCHEMA.describe("engine.bore_mm", "ru")
+    assert d == {"key": "bore_mm", "label": "диаметр цилиндра", "help": "диаметр цилиндра",
+                 "symbol": "D", "unit": "мм", "range": "> 0", "default": "",
+                 "required": True}
+    en = engine.schema.SCHEMA.describe("pressure.cycle.n1", "en")
+    assert (en["label"], en["range"]) == ("compression polytropic exponent", "(1, 2)")
+    assert engine.schema.SCHEMA.describe("masses.rod_kg", "ru")["symbol"] == "mш"

@@ -28,6 +28,7 @@ import contextlib
 import contextvars
 import math
 from dataclasses import dataclass, field
+from numbers import Integral
 from pathlib import Path
 
 from crankbase.errors import Problem, SpecError
@@ -142,7 +143,7 @@ class EngineSpec:
         def bad(key, msg):
             problems.append(Problem(key, msg))
 
-        if isinstance(self.cylinders, bool) or not isinstance(self.cylinders, int) \
+        if isinstance(self.cylinders, bool) or not isinstance(self.cylinders, Integral) \
                 or not 1 <= self.cylinders <= MAX_CYLINDERS:
             bad("cylinders", f"got {self.cylinders!r:.40}; must be a whole number from 1 "
                              f"to {MAX_CYLINDERS}")
