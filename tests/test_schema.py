@@ -278,8 +278,8 @@ def test_readme_spec_reference_is_generated_from_the_schema():
 
 def test_reference_rows_carry_type_unit_range_default():
     md = S.markdown_reference("en")
-    assert ("| `bore_mm` | number | mm | > 0 |  | yes | cylinder bore D: diameter of the "
-            "cylinder |") in md
+    assert ("| `bore_mm` | number | mm | > 0 |  | yes | cylinder bore D: inner diameter of "
+            "the cylinder; sets the piston area Ap = πD²/4 |") in md
     assert "| `cylinders` | integer |  | [1, 24] | 1 | no |" in md
     assert "| `n1` | number |  | (1, 2) |  | yes |" in md
     ru = S.markdown_reference("ru")
@@ -288,7 +288,8 @@ def test_reference_rows_carry_type_unit_range_default():
 
 def test_describe_gives_a_keys_words_for_the_sheets():
     d = engine.schema.SCHEMA.describe("engine.bore_mm", "ru")
-    assert d == {"key": "bore_mm", "label": "диаметр цилиндра", "help": "диаметр цилиндра",
+    assert d == {"key": "bore_mm", "label": "диаметр цилиндра",
+                 "help": "внутренний диаметр цилиндра; задаёт площадь поршня Fп = πD²/4",
                  "symbol": "D", "unit": "мм", "range": "> 0", "default": "",
                  "required": True}
     en = engine.schema.SCHEMA.describe("pressure.cycle.n1", "en")
