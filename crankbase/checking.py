@@ -175,7 +175,7 @@ def read_student_table(path, key, known, mapping=None) -> StudentTable:
             raise SpecError(Problem(str(path), f"no sheet has a column {key!r} in its first "
                                     f"{_HEADER_SCAN_ROWS} rows (our workbook layout), and "
                                     "no header was mapped to it (a mapping HEADER=" + key + ")"))
-        data = _join(frames, key, path)
+        data = join_words(frames, key, path)
         sheets = cells.pop("_sheets")
         # rows of later sheets are matched by key: re-point their cells
         return StudentTable(data, _repoint(cells, frames, data, key, sheets), path, ignored)
@@ -195,7 +195,7 @@ def read_student_table(path, key, known, mapping=None) -> StudentTable:
     return StudentTable(df, {}, path, ignored)
 
 
-def _join(frames, key, path):
+def join_words(frames, key, path):
     out = frames[0]
     for f in frames[1:]:
         out = out.merge(f, on=key, how="left", sort=False)
@@ -456,7 +456,7 @@ def write_check(result: CheckResult, out, lang: str = "ru", inputs=()) -> CheckF
     carrying the right value, in ``lang``), as one unit.  ``inputs``: files no output may
     overwrite (the student's table is always one)."""
     from .output import check_not_input, safe_name, staged_output, write_csv
-    from .texts import check_lang
+    from .validation import check_lang
 
     check_lang(lang)
     out = Path(out)

@@ -4,28 +4,80 @@ Every error is a :class:`CrankdynError`, itself a :class:`ValueError` subclass, 
 generically.  A :class:`SpecError` carries *all* the problems found in one spec at once,
 each naming the key path, the bad value and what would be valid; the CLI prints them one
 per line and exits with status 2.
+
+A :class:`Problem` may carry a text key of the ``errors`` catalogue and its fields
+(:class:`Text`); :meth:`SpecError.lines` then renders it in the run's language
+(``lines("ru")``), English by default (``str(error)`` is always English).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
-__all__ = ["Problem", "SpecError", "AssemblyError", "OutputError", "CrankdynError"]
+__all__ = ["Problem", "Text", "SpecError", "AssemblyError", "OutputError", "CrankdynError"]
 
 
 class CrankdynError(ValueError):
     """Base class of every error crankdyn raises on bad input."""
 
-    def lines(self) -> list[str]:
+    def lines(self, lang: str = "en") -> list[str]:
         """The message as a list of one-line problems (for the CLI)."""
         return [line for line in str(self).splitlines() if line.strip()]
 
 
 @dataclass(frozen=True)
-class Problem:
-    """One problem in a spec: where (dotted key path), what was given, what is valid."""
+class Text:
+    """A keyed text of the catalogues (``crankbase/locale/<lang>/<area>.po``) with its
+    fields, rendered in a language on demand; a field may itself be a :class:`Text`
+    (``valid=Text("errors.bound.gt", bound=0)``) or a tuple of them (joined by ``; ``)."""
 
     key: str
-    message: str
+    fields: dict = field(default_factory=dict, compare=False, hash=False)
+
+    def render(self, lang: str = "en") -> str:
+        from .texts import texts
+
+        t = texts(lang)
+        return t(self.key, **{k: _render(v, lang) for k, v in self.fields.items()})
+
+    def __str__(self) -> str:
+        return self.render("en")
+
+
+def _render(value, lang):
+    if isinstance(value, Text):
+        return value.render(lang)
+    if isinstance(value, list) and value and all(isinstance(v, Text) for v in value):
+        return "; ".join(v.render(lang) for v in value)
+    return value
+
+
+@dataclass(frozen=True)
+class Problem:
+    """One problem in a spec: where (dotted key path), what was given, what is valid.
+
+    ``message`` is the English text; ``text``, when given, is the same problem as a
+    keyed :class:`Text` of the ``errors`` catalogue, so that :meth:`render` can give it in
+    another language (``message`` is then derived from it when left empty)."""
+
+    key: str
+    message: str = ""
+    text: Text | None = field(default=None, compare=False)
+
+    def __post_init__(self):
+        if not self.message and self.text is not None:
+            object.__setattr__(self, "message", self.text.render("en"))
+
+    @classmethod
+    def keyed(cls, key: str, text_key: str, /, **fields) -> "Problem":
+        """A problem of ``key`` told by the catalogue text ``text_key`` with ``fields``."""
+        return cls(key, text=Text(text_key, fields))
+
+    def render(self, lang: str = "en") -> str:
+        """The problem in ``lang`` (English, or a problem without a text key: its
+        ``message``)."""
+        msg = self.message if self.text is None or lang == "en" \
+            else self.text.render(lang)
+        return f"{self.key}: {msg}" if self.key else msg
 
     def __str__(self) -> str:
         return f"{self.key}: {self.message}" if self.key else self.message
@@ -46,15 +98,17 @@ class SpecError(CrankdynError):
         self.problems = [p if isinstance(p, Problem) else Problem("", str(p)) for p in problems]
         super().__init__("\n".join(str(p) for p in self.problems))
 
-    def lines(self) -> list[str]:
-        return [str(p) for p in self.problems]
+    def lines(self, lang: str = "en") -> list[str]:
+        """One line per problem, in ``lang`` where the problem has a text key (else its
+        English message)."""
+        return [p.render(lang) for p in self.problems]
 
     def renamed(self, names: dict):
         """The same error with the problems' keys renamed by ``names`` (``{"positions":
         "--plans"}``): a command line names its options where the library names its
         arguments (the library never names a command-line option)."""
         new = type(self).__new__(type(self))
-        SpecError.__init__(new, [Problem(names.get(p.key, p.key), p.message)
+        SpecError.__init__(new, [Problem(names.get(p.key, p.key), p.message, p.text)
                                  for p in self.problems])
         return new
 

@@ -35,7 +35,7 @@ import re
 import string
 from pathlib import Path
 
-__all__ = ["Texts", "texts", "languages", "catalogue_languages", "check_lang", "keys",
+__all__ = ["Texts", "texts", "languages", "catalogue_languages", "keys",
            "LOCALE_DIR", "REFERENCE"]
 
 #: Folder of the catalogues (shipped as package data of ``crankbase``).
@@ -131,9 +131,12 @@ def _catalogue(lang: str):
 
 @functools.lru_cache(maxsize=None)
 def texts(lang: str = "ru") -> Texts:
-    """The :class:`Texts` of ``lang`` (a :func:`catalogue_languages` code), cached."""
+    """The :class:`Texts` of ``lang`` (a :func:`catalogue_languages` code), cached.  A
+    language given by a user is checked first with
+    :func:`crankbase.validation.check_lang` (a :class:`~crankbase.errors.SpecError`)."""
     if lang not in catalogue_languages():
-        check_lang(lang)
+        raise KeyError(f"no text catalogue for language {lang!r}; there are: "
+                       + ", ".join(catalogue_languages()))
     tr, keys = _catalogue(lang)
     fallback = None if lang == REFERENCE else texts(REFERENCE)
     return Texts(lang, tr, keys, fallback)
@@ -151,17 +154,6 @@ def languages() -> tuple[str, ...]:
     ref = keys(REFERENCE)
     done = [lang for lang in catalogue_languages() if ref <= keys(lang)]
     return tuple(sorted(done, key=lambda code: (code != "ru", code != "en", code)))
-
-
-def check_lang(lang, key: str = "lang") -> str:
-    """``lang`` if it is an offered language, else a :class:`~crankbase.errors.SpecError`
-    naming ``key``, the value and the valid choices."""
-    offered = languages()
-    if lang in offered:
-        return lang
-    from .errors import Problem, SpecError
-
-    raise SpecError(Problem(key, f"got {lang!r}; must be one of {', '.join(offered)}"))
 
 
 def fields(template: str) -> set[str]:

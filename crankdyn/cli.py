@@ -56,7 +56,7 @@ def main(argv=None) -> int:
     try:
         return int(args.func(args) or 0)
     except CrankdynError as exc:  # the project's own errors only: anything else is a bug
-        for line in exc.lines() or [repr(exc)]:
+        for line in exc.lines(getattr(args, "lang", None) or "en") or [repr(exc)]:
             print(f"crankdyn {args.command}: error: {line}", file=sys.stderr)
         return 2
     except BrokenPipeError:  # e.g. `crankdyn ... | head`

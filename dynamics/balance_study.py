@@ -127,7 +127,7 @@ def write_report(report: BalanceReport, out, lang="ru",
     ``lang``; bad numbers write nothing."""
     from crankbase.output import (check_not_input, ensure_finite, save_figure,
                                   staged_output, write_csv)
-    from crankbase.texts import check_lang
+    from crankbase.validation import check_lang
 
     check_lang(lang)
     out = Path(out)

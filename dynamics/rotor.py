@@ -34,7 +34,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ._base import Checker, Problem, SpecError, read_toml
+from ._base import Problem, SpecError, read_toml
 
 __all__ = ["RotorSpec", "RotorBalance", "balance_rotor", "load_rotor_spec", "rotor_balance",
            "plot_mr_polygon"]
@@ -215,8 +215,6 @@ def balance_rotor(mr_gmm, angle_deg, z_mm=None, planes_mm=(0.0,), *,
                         initial_moment_gmm2=float(abs(tot_m0)), planes_mm=planes)
 
 
-_ROTOR_KEYS = ("name", "planes_mm", "correction_radius_mm", "mass")
-_MASS_KEYS = ("mr_gmm", "m_g", "r_mm", "angle_deg", "z_mm")
 
 
 def load_rotor_spec(path_or_dict) -> RotorSpec:
@@ -236,41 +234,38 @@ def load_rotor_spec(path_or_dict) -> RotorSpec:
     if isinstance(path_or_dict, RotorSpec):
         return path_or_dict
     data, _ = read_toml(path_or_dict)
-    ck = Checker()
-    ck.unknown(data, ["rotor"])
-    rot = ck.table(data, "rotor")
-    ck.unknown(rot, _ROTOR_KEYS, "rotor")
-    name = ck.string(rot, "name", "rotor", required=False, default="rotor")
-    planes = ck.numbers(rot, "planes_mm", "rotor", min_length=1, default=None)
+    from crankbase.schema import SpecReader
+
+    from .schema import ROTOR, ROTOR_MASS, ROTOR_SCHEMA
+
+    ck = SpecReader()
+    ck.top(data, ROTOR_SCHEMA)
+    rot = ck.sub(data, ROTOR)
+    name = ck.get(rot, ROTOR, "name")
+    planes = ck.get(rot, ROTOR, "planes_mm")
     if planes is not None and len(planes) > 2:
         ck.add("rotor.planes_mm", f"got {len(planes)} planes; give one (static balancing) "
                                   "or two (dynamic balancing)")
         planes = None
-    radius = ck.number(rot, "correction_radius_mm", "rotor", required=False, gt=0)
-    masses = rot.get("mass", [])
-    if not isinstance(masses, list) or not masses:
-        ck.add("rotor.mass", "missing; give at least one [[rotor.mass]] with mr_gmm (or m_g "
-                             "and r_mm) and angle_deg")
-        masses = []
+    radius = ck.get(rot, ROTOR, "correction_radius_mm")
     mr, ang, zz = [], [], []
     need_z = planes is not None and len(planes) == 2
-    for i, m in enumerate(masses):
-        path = f"rotor.mass[{i}]"
-        if not isinstance(m, dict):
-            ck.add(path, f"must be a table, got {m!r}")
-            continue
-        ck.unknown(m, _MASS_KEYS, path)
+    for path, m in ck.rows(rot, ROTOR_MASS):
+
+        def get(key, **kw):
+            return ck.get(m, ROTOR_MASS, key, path=path, **kw)
+
         if "mr_gmm" in m and ("m_g" in m or "r_mm" in m):
             ck.add(path, "give either mr_gmm or m_g with r_mm, not both")
             value = None
         elif "mr_gmm" in m:
-            value = ck.number(m, "mr_gmm", path, ge=0)
+            value = get("mr_gmm", required=True)
         else:
-            mg = ck.number(m, "m_g", path, ge=0, what="mr_gmm, or m_g with r_mm,")
-            rr = ck.number(m, "r_mm", path, ge=0, what="r_mm with m_g")
+            mg = get("m_g", required=True)
+            rr = get("r_mm", required=True)
             value = None if mg is None or rr is None else mg * rr
-        a = ck.number(m, "angle_deg", path)
-        z = ck.number(m, "z_mm", path, required=need_z, default=None)
+        a = get("angle_deg")
+        z = get("z_mm", required=need_z)
         mr.append(value)
         ang.append(a)
         zz.append(z)

@@ -27,15 +27,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
-from ._base import Checker, MotionError, Problem, SpecError, read_toml
+from crankbase.schema import SpecReader
+
+from ._base import MotionError, Problem, SpecError, read_toml
+from .schema import DYNAMICS, ELEMENT, MACHINE, MOMENT
 
 __all__ = ["DynamicsSettings", "DynamicsJob", "load_dynamics_spec"]
 
-_DYN_KEYS = ("driving", "phi_deg", "M_Nm", "motor_start_torque_Nm", "motor_sync_speed_rad_s",
-             "delta", "flywheel_kgm2", "omega_mean_rad_s", "steps", "J_engine_extra_kgm2")
-_MACHINE_KEYS = ("name", "J_red_kgm2", "omega_mean_rad_s", "period_deg", "moment", "element")
-_ELEMENT_KEYS = ("J_kgm2", "speed_ratio", "m_kg", "velocity_ratio_m")
-_MOMENT_KEYS = ("role", "phi_deg", "M_Nm")
+_ELEMENT_KEYS = ELEMENT.names
 
 
 @dataclass(frozen=True)
@@ -67,22 +66,26 @@ class DynamicsJob:
 
 
 def _settings(ck, dyn, period_deg, engine=False):
-    ck.unknown(dyn, _DYN_KEYS, "dynamics")
+    """The ``[dynamics]`` table ``dyn`` (its unknown keys already reported by
+    :meth:`SpecReader.sub`)."""
     if not engine and "J_engine_extra_kgm2" in dyn:
         ck.add("dynamics.J_engine_extra_kgm2", "only for an engine spec ([engine])")
-    driving = ck.choice(dyn, "driving", ("constant", "table", "motor"), "dynamics",
-                        required=False, default="constant")
+
+    def get(key, **kw):
+        return ck.get(dyn, DYNAMICS, key, **kw)
+
+    driving = get("driving")
     phi = M = M0 = w0 = None
     if driving == "table":
-        phi = ck.numbers(dyn, "phi_deg", "dynamics", min_length=1)
-        M = ck.numbers(dyn, "M_Nm", "dynamics", min_length=1)
+        phi = get("phi_deg", required=True)
+        M = get("M_Nm", required=True)
     else:
         for k in ("phi_deg", "M_Nm"):
             if k in dyn:
                 ck.add(f"dynamics.{k}", 'only with driving = "table"')
     if driving == "motor":
-        M0 = ck.number(dyn, "motor_start_torque_Nm", "dynamics", gt=0)
-        w0 = ck.number(dyn, "motor_sync_speed_rad_s", "dynamics", gt=0)
+        M0 = get("motor_start_torque_Nm", required=True)
+        w0 = get("motor_sync_speed_rad_s", required=True)
         if "omega_mean_rad_s" in dyn:
             ck.add("dynamics.omega_mean_rad_s", "the motor's characteristic sets the speed; "
                                                 "remove it with driving = \"motor\"")
@@ -90,14 +93,13 @@ def _settings(ck, dyn, period_deg, engine=False):
         for k in ("motor_start_torque_Nm", "motor_sync_speed_rad_s"):
             if k in dyn:
                 ck.add(f"dynamics.{k}", 'only with driving = "motor"')
-    delta = ck.number(dyn, "delta", "dynamics", required=False, gt=0, lt=1)
-    fly = ck.number(dyn, "flywheel_kgm2", "dynamics", required=False, ge=0)
+    delta = get("delta")
+    fly = get("flywheel_kgm2")
     if "delta" in dyn and "flywheel_kgm2" in dyn:
         ck.add("dynamics", "give either delta (the flywheel is sized) or flywheel_kgm2 (its "
                            "motion is found), not both")
-    wm = ck.number(dyn, "omega_mean_rad_s", "dynamics", required=False, gt=0)
-    steps = ck.number(dyn, "steps", "dynamics", required=False, integer=True, ge=36,
-                      le=200000)
+    wm = get("omega_mean_rad_s")
+    steps = get("steps")
     return DynamicsSettings(driving, tuple(phi) if phi else None, tuple(M) if M else None,
                             M0, w0, delta, fly, wm, steps)
 
@@ -114,9 +116,9 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
 
     data, base_dir = read_toml(path_or_dict)
     src = None if isinstance(path_or_dict, dict) else str(path_or_dict)
-    ck = Checker()
+    ck = SpecReader()
     notes = ()
-    dyn = ck.table(data, "dynamics", required=False)
+    dyn = ck.sub(data, DYNAMICS)
     if "engine" in data:
         import engine
 
@@ -124,8 +126,7 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
 
         rest = {k: v for k, v in data.items() if k != "dynamics"}
         settings = _settings(ck, dyn, 720.0, engine=True)
-        J_extra = ck.number(dyn, "J_engine_extra_kgm2", "dynamics", required=False,
-                            default=0.0, ge=0)
+        J_extra = ck.get(dyn, DYNAMICS, "J_engine_extra_kgm2")
         problems = list(ck.problems)
         try:
             estudy = engine.load(rest, base_dir=base_dir)
@@ -150,32 +151,24 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
         kind = "engine"
         period = 720.0 if espec.strokes == 4 else 360.0
     elif "machine" in data:
-        ck.unknown(data, ["machine", "dynamics"])
-        mach = ck.table(data, "machine")
-        ck.unknown(mach, _MACHINE_KEYS, "machine")
-        name = ck.string(mach, "name", "machine", required=False, default="machine")
-        elements = mach.get("element", [])
-        J = ck.number(mach, "J_red_kgm2", "machine", gt=0, required=not elements,
-                      default=0.0)
-        if not isinstance(elements, list):
-            ck.add("machine.element", "must be a list of tables ([[machine.element]])")
-            elements = []
+        from .schema import SCHEMA
+
+        ck.top(data, SCHEMA)
+        mach = ck.sub(data, MACHINE)
+        name = ck.get(mach, MACHINE, "name")
+        elements = ck.rows(mach, ELEMENT)
+        J = ck.get(mach, MACHINE, "J_red_kgm2", required=not elements)
         rot, trans = ([], []), ([], [])
-        for i, el in enumerate(elements):
-            path = f"machine.element[{i}]"
-            if not isinstance(el, dict):
-                ck.add(path, f"must be a table, got {el!r}")
-                continue
-            ck.unknown(el, _ELEMENT_KEYS, path)
+        for path, el in elements:
             if "J_kgm2" in el or "speed_ratio" in el:
-                Jk = ck.number(el, "J_kgm2", path, ge=0)
-                rk = ck.number(el, "speed_ratio", path)
+                Jk = ck.get(el, ELEMENT, "J_kgm2", path=path, required=True)
+                rk = ck.get(el, ELEMENT, "speed_ratio", path=path, required=True)
                 if Jk is not None and rk is not None:
                     rot[0].append(Jk)
                     rot[1].append(rk)
             if "m_kg" in el or "velocity_ratio_m" in el:
-                mk = ck.number(el, "m_kg", path, ge=0)
-                vk = ck.number(el, "velocity_ratio_m", path)
+                mk = ck.get(el, ELEMENT, "m_kg", path=path, required=True)
+                vk = ck.get(el, ELEMENT, "velocity_ratio_m", path=path, required=True)
                 if mk is not None and vk is not None:
                     trans[0].append(mk)
                     trans[1].append(vk)
@@ -190,24 +183,13 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
             except SpecError as exc:
                 ck.problems.extend(Problem("machine.element", p.message)
                                    for p in exc.problems)
-        wm = ck.number(mach, "omega_mean_rad_s", "machine", required=False, gt=0)
-        period = ck.number(mach, "period_deg", "machine", required=False, default=360.0,
-                           gt=0)
-        moments = mach.get("moment", [])
-        if not isinstance(moments, list) or not moments:
-            ck.add("machine.moment", "missing; give at least one [[machine.moment]] with "
-                                     "role, phi_deg and M_Nm")
-            moments = []
+        wm = ck.get(mach, MACHINE, "omega_mean_rad_s")
+        period = ck.get(mach, MACHINE, "period_deg")
         parsed = []
-        for i, mt in enumerate(moments):
-            path = f"machine.moment[{i}]"
-            if not isinstance(mt, dict):
-                ck.add(path, f"must be a table, got {mt!r}")
-                continue
-            ck.unknown(mt, _MOMENT_KEYS, path)
-            role = ck.choice(mt, "role", ("drive", "resist"), path)
-            phi = ck.numbers(mt, "phi_deg", path, min_length=1)
-            M = ck.numbers(mt, "M_Nm", path, min_length=1)
+        for path, mt in ck.rows(mach, MOMENT):
+            role = ck.get(mt, MOMENT, "role", path=path)
+            phi = ck.get(mt, MOMENT, "phi_deg", path=path)
+            M = ck.get(mt, MOMENT, "M_Nm", path=path)
             if role and phi is not None and M is not None and period:
                 try:
                     parsed.append((role, PiecewiseLinear(phi, M, period, key=path)))

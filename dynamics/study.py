@@ -96,7 +96,7 @@ def write_report(report: DynamicsReport, out, lang="ru",
     from crankbase.errors import Problem, SpecError
     from crankbase.output import (check_not_input, ensure_finite, full_precision_xlsx,
                                   save_figure, staged_output, write_csv)
-    from crankbase.texts import check_lang
+    from crankbase.validation import check_lang
 
     from .plots import PLOT_NAMES, dynamics_figures
     from .report import build_workbook

@@ -1,7 +1,8 @@
 """Bearing loads, wear diagrams and the rod model of a one-cylinder engine spec.
 
-Reads the optional spec tables ``[bearings]`` and ``[rod]`` (:mod:`engine.rodmodel`;
-:func:`read_bearing_inputs`, their keys checked by :func:`engine.load` too) and composes :mod:`engine.bearings`, :mod:`engine.wear` and :mod:`engine.rodmodel` on the
+Takes the optional spec tables ``[bearings]`` and ``[rod]`` as read by :func:`engine.load`
+(``study.bearings``, :mod:`engine.spec.inputs`; :func:`read_bearing_inputs` reads just
+them) and composes :mod:`engine.bearings`, :mod:`engine.wear` and :mod:`engine.rodmodel` on the
 force table of :func:`engine.force_table` into one typed result,
 :class:`BearingAnalysis`.  (A multi-cylinder crank train feeds the same array functions
 with its own layout.)
@@ -28,101 +29,35 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from crankbase.validation import Checker
+from crankbase.schema import SpecReader
+from crankbase.validation import read_toml
 
 from .bearings import (Crankshaft, CrankshaftLoads, big_end_load, crank_pin_load,
                        crankshaft_loads, piston_pin_load)
 from .forces import crank_pin_resultant
-from .rodmodel import RigidRod, compare_rod_models, mass_parts, rod_options
-from .wear import DEFAULT_HALF_ANGLE_DEG, WearDiagram, wear_diagram
+from .rodmodel import RigidRod, compare_rod_models
+from .spec import EngineSpecError
+from .spec.inputs import (BEARING_KEYS, BearingInputs, BearingOptions, bearing_options,
+                          mass_parts, read_tables)
+from .wear import WearDiagram, wear_diagram
 
 __all__ = ["BEARING_KEYS", "BearingOptions", "bearing_options", "check_tables",
            "BearingInputs", "read_bearing_inputs", "BearingAnalysis", "bearing_analysis",
            "wear_table", "rod_bearing_table", "piston_mass"]
 
-BEARING_KEYS = ("wear_half_angle_deg", "journal_positions_mm", "counterweight_kg_mm",
-                "counterweight_angle_deg")
-
-#: Default distance of each main journal from the crank-pin centre when none is given:
-#: only the ratio matters for the lever rule (symmetric: one half each). [m]
-_DEFAULT_HALF_SPAN = 0.05
-
-
-@dataclass(frozen=True)
-class BearingOptions:
-    """``[bearings]`` in SI: half-angle [deg], journal positions [m], counterweight
-    m·r [kg·m] and angle [deg]; ``given``: the keys the spec gave."""
-
-    wear_half_angle_deg: float = DEFAULT_HALF_ANGLE_DEG
-    journal_positions: tuple = (-_DEFAULT_HALF_SPAN, _DEFAULT_HALF_SPAN)
-    counterweight_mr: float = 0.0
-    counterweight_angle_deg: float = 180.0
-    given: tuple = ()
-
-
-def bearing_options(table, checker=None):
-    """Validated :class:`BearingOptions` from the ``[bearings]`` table (None: defaults)."""
-    c = checker if checker is not None else Checker()
-    t = table if table is not None else {}
-    if not isinstance(t, dict):
-        c.add("bearings", f"must be a table, got {t!r}")
-        t = {}
-    c.unknown(t, BEARING_KEYS, "bearings")
-    h = c.number(t, "wear_half_angle_deg", "bearings", required=False,
-                 default=DEFAULT_HALF_ANGLE_DEG, gt=0, le=180)
-    zj = c.numbers(t, "journal_positions_mm", "bearings", required=False, length=2)
-    if zj is not None and not zj[0] <= 0 <= zj[1]:
-        c.add("bearings.journal_positions_mm",
-              f"got {zj}; the two journals must lie on either side of the crank pin "
-              "(first <= 0 <= second, relative to the crank-pin centre)")
-        zj = None
-    if zj is not None and zj[0] == zj[1]:
-        c.add("bearings.journal_positions_mm", f"got {zj}; the journals must differ")
-        zj = None
-    mr = c.number(t, "counterweight_kg_mm", "bearings", required=False, default=0.0,
-                  ge=0)
-    ang = c.number(t, "counterweight_angle_deg", "bearings", required=False,
-                   default=180.0, ge=-360, le=360)
-    if checker is None:
-        c.raise_if_any()
-    return BearingOptions(
-        h if h is not None else DEFAULT_HALF_ANGLE_DEG,
-        tuple(x / 1e3 for x in zj) if zj else (-_DEFAULT_HALF_SPAN, _DEFAULT_HALF_SPAN),
-        (mr or 0.0) / 1e3, ang if ang is not None else 180.0,
-        tuple(k for k in t if k in BEARING_KEYS))
-
-
 def check_tables(c, data):
-    """Check the keys of ``[bearings]``, ``[rod]`` and ``[pressure] firing_tdc_deg`` of a
-    spec file's dict, adding the problems to the checker ``c`` (called by
-    :func:`engine.load`, so that every problem of a file is reported at once)."""
-    if "bearings" in data:
-        bearing_options(data["bearings"], c)
-    if "rod" in data:
-        rod_options(data["rod"], None, c)
-    pr = data.get("pressure")
-    if isinstance(pr, dict) and "firing_tdc_deg" in pr and not (
-            isinstance(pr.get("file"), str) and pr["file"].lower().endswith(".ind")):
-        c.add("pressure.firing_tdc_deg", "only used with a Diesel-RK file = \"....ind\"")
-
-
-@dataclass(frozen=True)
-class BearingInputs:
-    """The inputs of the bearing calculation beside the engine spec.
-
-    ``options``: :class:`BearingOptions`; ``rod_model``: "two-mass" or "rigid"; ``rod``:
-    the :class:`~engine.rodmodel.RigidRod` (None for the two-mass rod); ``asked``: the
-    spec file has a ``[bearings]`` or ``[rod]`` table.
-    """
-
-    options: BearingOptions = BearingOptions()
-    rod_model: str = "two-mass"
-    rod: RigidRod | None = None
-    asked: bool = False
+    """Check the keys of ``[bearings]`` and ``[rod]`` of a spec file's dict, adding the
+    problems to the checker ``c`` (:func:`engine.load` reads them itself, into
+    ``study.bearings``)."""
+    read_tables(c, data)
 
 
 def read_bearing_inputs(path_or_dict, spec):
     """The ``[bearings]`` and ``[rod]`` tables of a spec file, for its loaded engine.
+
+    :func:`engine.load` reads them with the rest of the file (``study.bearings``); this
+    reads just these two tables, for ``spec`` (which may differ from the file's, e.g. a
+    variant made with :func:`dataclasses.replace`).
 
     Parameters
     ----------
@@ -140,17 +75,11 @@ def read_bearing_inputs(path_or_dict, spec):
     EngineSpecError
         Every problem of the two tables.
     """
-    from crankbase.validation import read_toml
-
-    from .spec import EngineSpecError
-
     data, _ = read_toml(path_or_dict)
-    c = Checker()
-    opt = bearing_options(data.get("bearings"), c)
-    model, rod = rod_options(data.get("rod"), spec, c)
-    if c.problems:
-        raise EngineSpecError(c.problems)
-    return BearingInputs(opt, model, rod, "bearings" in data or "rod" in data)
+    c = SpecReader()
+    inputs = read_tables(c, data, spec)
+    c.raise_if_any(EngineSpecError)
+    return inputs
 
 
 #: The note of a bearing analysis whose piston mass is unknown (the piston-pin load needs it).

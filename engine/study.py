@@ -181,16 +181,6 @@ def with_options(study, step=None, form=None):
     return replace(study, settings=settings)
 
 
-def _bearing_inputs(study, source):
-    """The ``[bearings]``/``[rod]`` inputs of the study.  The one place that reads them:
-    from the spec file or dict the study was loaded from (no source: none given)."""
-    from .bearing_spec import BearingInputs, read_bearing_inputs
-
-    if source is None:
-        return BearingInputs()
-    return read_bearing_inputs(source, study.spec)
-
-
 def run_study(study, *, bearings: bool = False, step=None, form=None,
               source=None) -> EngineReport:
     """Compute a whole engine report: one cylinder, the whole engine, Table 2 and, when
@@ -210,9 +200,9 @@ def run_study(study, *, bearings: bool = False, step=None, form=None,
     form : {"seed", "kolchin"}, optional
         Table 2's form, overriding ``[table] form``.
     source : str, Path or dict, optional
-        The spec file or dict the study was loaded from: its ``[bearings]`` and ``[rod]``
-        tables are read from it (without it, the defaults: journals by the spec, the
-        two-mass rod), and a file is an input no output may overwrite.
+        The spec file the study was loaded from: an input that no output may overwrite.
+        (The ``[bearings]`` and ``[rod]`` tables come with the study, ``study.bearings``,
+        read once by :func:`engine.load`.)
 
     Returns
     -------
@@ -238,7 +228,7 @@ def run_study(study, *, bearings: bool = False, step=None, form=None,
         study = load(study)
     study = with_options(study, step, form)
     spec, settings = study.spec, study.settings
-    b_inputs = _bearing_inputs(study, source)
+    b_inputs = study.bearings          # [bearings] and [rod], read once by engine.load
     whole = analyze_engine(spec, study.train, settings)
     result = whole.cylinder
     table = result.table
@@ -357,7 +347,7 @@ def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "s
     import matplotlib
 
     from crankbase.output import check_not_input, save_figure, staged_output, write_csv
-    from crankbase.texts import check_lang
+    from crankbase.validation import check_lang
 
     from .bearing_plots import BEARING_PLOT_NAMES
     from .drawing import DRAWING_NAMES, drawing_figures

@@ -345,7 +345,7 @@ def run_variants(base, variants, out, lang: str = "ru", step=None, form=None,
         A summary file would overwrite an input.
     """
     from crankbase.output import check_not_input, safe_name
-    from crankbase.texts import check_lang
+    from crankbase.validation import check_lang
     from crankbase.validation import read_toml
 
     check_lang(lang)

@@ -12,25 +12,19 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 
 from crankbase.errors import SpecError
-from crankbase.validation import MAX_ROWS, Checker, read_toml, rows_problem
+from crankbase.schema import SpecReader
+from crankbase.validation import read_toml, rows_problem
+
+from .schema import (ANALYSIS, KINDS, LINK, LINK_NAMES, LOAD, MECHANISM, SCHEMA,
+                     WORKING_STROKES)
 
 __all__ = ["LinkSpec", "LoadSpec", "MechanismSpec", "load_spec", "LINK_NAMES", "KINDS"]
 
-KINDS = ("crank-rocker", "crank-slider")
-#: Link names per kind, in the textbook numbering 2, 3, 4.
-LINK_NAMES = {"crank-rocker": ("crank", "coupler", "rocker"),
-              "crank-slider": ("crank", "coupler", "slider")}
 #: Link number of each name.
 LINK_NUMBER = {"crank": 2, "coupler": 3, "rocker": 4, "slider": 4}
 #: Point names the core reports itself; extra points must not reuse them.
 RESERVED_POINTS = ("O", "A", "B", "C", "S2", "S3", "S4")
 
-_MECH_KEYS = ("kind", "name", "crank", "coupler", "rocker", "ground", "ground_angle_deg",
-              "offset", "assembly", "omega_rad_s", "epsilon_rad_s2", "gravity_m_s2")
-_LINK_KEYS = ("mass_kg", "inertia_kg_m2", "cg", "points")
-_LOAD_KEYS = ("link", "at", "force_N", "moment_Nm", "resistance_Nm", "resistance_N",
-              "stroke", "span_deg", "span_m")
-_ANALYSIS_KEYS = ("positions", "crank_angles_deg", "working_stroke")
 _POINT_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9]*$")
 
 
@@ -135,41 +129,39 @@ def load_spec(path_or_dict) -> MechanismSpec:
         return path_or_dict
     data, _ = read_toml(path_or_dict)
     source = None if isinstance(path_or_dict, dict) else str(path_or_dict)
-    ck = Checker()
+    ck = SpecReader()
     # "drawing": the title block fields of the plans sheet, checked by plans.drawing
-    ck.unknown(data, ("mechanism", "links", "load", "analysis", "drawing"))
+    ck.top(data, SCHEMA)
 
-    m = ck.table(data, "mechanism")
-    ck.unknown(m, _MECH_KEYS, "mechanism")
-    kind = ck.choice(m, "kind", KINDS, "mechanism")
-    name = ck.name(m, "name", "mechanism", default="mechanism")
-    crank = ck.number(m, "crank", "mechanism", gt=0, divisor=True,
-                      what="the crank length |OA| in m")
-    coupler = ck.number(m, "coupler", "mechanism", gt=0, divisor=True,
-                        what="the coupler (rod) length |AB| in m")
+    m = ck.sub(data, MECHANISM)
+
+    def mech(key, **kw):
+        return ck.get(m, MECHANISM, key, **kw)
+
+    kind = mech("kind")
+    name = mech("name")
+    crank = mech("crank")
+    coupler = mech("coupler")
     rocker = ground = None
     if kind == "crank-rocker":
-        rocker = ck.number(m, "rocker", "mechanism", gt=0, divisor=True,
-                           what="the rocker length |CB| in m")
-        ground = ck.number(m, "ground", "mechanism", gt=0, divisor=True,
-                           what="the ground length |OC| in m")
+        rocker = mech("rocker", required=True)
+        ground = mech("ground", required=True)
         if "offset" in m:
             ck.add("mechanism.offset", "applies to a crank-slider only; remove it")
     elif kind == "crank-slider":
         for key in ("rocker", "ground"):
             if key in m:
                 ck.add(f"mechanism.{key}", "applies to a crank-rocker only; remove it")
-    ground_angle = ck.number(m, "ground_angle_deg", "mechanism", required=False, default=0.0)
-    offset = ck.number(m, "offset", "mechanism", required=False, default=0.0)
-    assembly = ck.choice(m, "assembly", (1, -1), "mechanism", required=False, default=1)
-    omega = ck.number(m, "omega_rad_s", "mechanism",
-                      what="the crank angular velocity in rad/s (+ ccw; 0 = statics)")
-    epsilon = ck.number(m, "epsilon_rad_s2", "mechanism", required=False, default=0.0)
-    gravity = ck.number(m, "gravity_m_s2", "mechanism", required=False, default=9.81, ge=0)
+    ground_angle = mech("ground_angle_deg")
+    offset = mech("offset")
+    assembly = mech("assembly")
+    omega = mech("omega_rad_s")
+    epsilon = mech("epsilon_rad_s2")
+    gravity = mech("gravity_m_s2")
 
     lengths = {"crank": crank, "coupler": coupler, "rocker": rocker}
     link_names = LINK_NAMES.get(kind, ())
-    lt = ck.table(data, "links", required=False)
+    lt = ck.table(data, "links", required=False)     # its keys: the link names (below)
     links = {}
     for lname in lt:
         if lname not in link_names:
@@ -178,13 +170,12 @@ def load_spec(path_or_dict) -> MechanismSpec:
     point_names = set()
     for lname in link_names:
         path = f"links.{lname}"
-        t = ck.table(lt, lname, "links", required=False)
-        ck.unknown(t, _LINK_KEYS, path)
-        mass = ck.number(t, "mass_kg", path, required=False, default=0.0, ge=0)
-        inertia = ck.number(t, "inertia_kg_m2", path, required=False, default=0.0, ge=0)
+        t = ck.sub(lt, LINK, path=path, required=False)
+        mass = ck.get(t, LINK, "mass_kg", path=path)
+        inertia = ck.get(t, LINK, "inertia_kg_m2", path=path)
         cg = None
         if "cg" in t:
-            xy = ck.numbers(t, "cg", path, length=2)
+            xy = ck.get(t, LINK, "cg", path=path, required=True)
             cg = complex(*xy) if xy else None
         if cg is None:
             cg = _default_cg(kind, lname, lengths) if lengths.get(lname) or lname == "slider" \
@@ -212,19 +203,14 @@ def load_spec(path_or_dict) -> MechanismSpec:
                                 inertia if inertia is not None else 0.0, cg,
                                 MappingProxyType(pts))
 
-    raw_loads = data.get("load", [])
-    if not isinstance(raw_loads, list):
-        ck.add("load", "must be an array of tables ([[load]])")
-        raw_loads = []
     loads, resistance_paths = [], []
     output = "rocker" if kind == "crank-rocker" else "slider"
-    for i, t in enumerate(raw_loads):
-        path = f"load[{i}]"
-        if not isinstance(t, dict):
-            ck.add(path, f"must be a table, got {t!r}")
-            continue
-        ck.unknown(t, _LOAD_KEYS, path)
-        link = ck.choice(t, "link", link_names, path) if link_names else None
+    for path, t in ck.rows(data, LOAD):
+
+        def get(key, **kw):
+            return ck.get(t, LOAD, key, path=path, **kw)
+
+        link = get("link", choices=link_names) if link_names else None
         which = [k for k in ("force_N", "moment_Nm", "resistance_Nm", "resistance_N") if k in t]
         if len(which) != 1:
             ck.add(path, "needs exactly one of force_N, moment_Nm, resistance_Nm (rocker), "
@@ -233,10 +219,10 @@ def load_spec(path_or_dict) -> MechanismSpec:
         key = which[0]
         at = 0j
         if "at" in t:
-            xy = ck.numbers(t, "at", path, length=2)
+            xy = get("at")
             at = complex(*xy) if xy else 0j
         if key == "force_N":
-            f = ck.numbers(t, "force_N", path, length=2)
+            f = get("force_N", required=True)
             for k in ("stroke", "span_deg", "span_m"):
                 if k in t:
                     ck.add(f"{path}.{k}", "applies to a resistance only")
@@ -244,7 +230,7 @@ def load_spec(path_or_dict) -> MechanismSpec:
                 loads.append(LoadSpec(link, "force", at=at, force=complex(*f)))
             continue
         if key == "moment_Nm":
-            mval = ck.number(t, "moment_Nm", path)
+            mval = get("moment_Nm", required=True)
             for k in ("at", "stroke", "span_deg", "span_m"):
                 if k in t:
                     ck.add(f"{path}.{k}", "does not apply to a moment; remove it")
@@ -258,16 +244,15 @@ def load_spec(path_or_dict) -> MechanismSpec:
             continue
         if link is not None and link != output:
             ck.add(f"{path}.link", f"a resistance acts on the output link {output!r}, got {link!r}")
-        r = ck.number(t, key, path, ge=0)
-        stroke = ck.choice(t, "stroke", ("working", "idle", "both"), path, required=False,
-                           default="working")
+        r = get(key, required=True)
+        stroke = get("stroke")
         span_key = "span_deg" if output == "rocker" else "span_m"
         other = "span_m" if output == "rocker" else "span_deg"
         if other in t:
             ck.add(f"{path}.{other}", f"use {span_key} for a {output}")
         if "at" in t:
             ck.add(f"{path}.at", "a resistance acts at the output link's pin; remove 'at'")
-        span = ck.number(t, span_key, path, required=False, default=None, gt=0)
+        span = get(span_key)
         if span is not None and span_key == "span_deg":
             span = math.radians(span)
         if r is not None:
@@ -275,23 +260,21 @@ def load_spec(path_or_dict) -> MechanismSpec:
                                   stroke=stroke or "working", span=span))
             resistance_paths.append(f"{path}.{key}")
 
-    a = ck.table(data, "analysis", required=False)
-    ck.unknown(a, _ANALYSIS_KEYS, "analysis")
-    positions = ck.number(a, "positions", "analysis", required=False, integer=True, ge=1)
+    a = ck.sub(data, ANALYSIS)
+    positions = ck.get(a, ANALYSIS, "positions", le=None, default=None)
     if positions is not None and rows_problem(positions, "analysis.positions"):
         ck.problems.append(rows_problem(positions, "analysis.positions"))
         positions = None
     angles = None
     if "crank_angles_deg" in a:
-        angles = ck.numbers(a, "crank_angles_deg", "analysis", min_length=1,
-                            max_length=MAX_ROWS)
+        angles = ck.get(a, ANALYSIS, "crank_angles_deg", required=True)
         angles = tuple(angles) if angles else None
         if "positions" in a:
             ck.add("analysis", "give either positions or crank_angles_deg, not both")
     elif "positions" not in a:
         positions = 12
-    strokes = ("ccw", "cw") if kind == "crank-rocker" else ("away", "toward")
-    working = ck.choice(a, "working_stroke", strokes, "analysis", required=False)
+    strokes = WORKING_STROKES.get(kind, WORKING_STROKES["crank-slider"])
+    working = ck.get(a, ANALYSIS, "working_stroke", choices=strokes)
     needs = []
     if positions is not None and "crank_angles_deg" not in a:
         needs.append("positions" + ("" if "positions" in a else " (12 by default)"))

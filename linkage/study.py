@@ -202,7 +202,7 @@ def write_report(report: LinkageReport, out, lang="ru", formats=("png",),
     WrittenReport
     """
     from crankbase.output import save_figure, staged_output
-    from crankbase.texts import check_lang
+    from crankbase.validation import check_lang
 
     from .report import write_csvs, write_workbook
 

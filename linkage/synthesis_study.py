@@ -218,7 +218,7 @@ def write_report(report: SynthesisReport, out, lang="ru",
     spec ``<stem>.toml``, and the plots ``<stem>_region``, ``_mu_min``,
     ``_transmission_angle`` in ``formats``; all files appear together, or none."""
     from crankbase.output import save_figure, staged_output, write_csv
-    from crankbase.texts import check_lang
+    from crankbase.validation import check_lang
 
     from . import synthesis_report as rep
 

@@ -139,7 +139,13 @@ def test_bad_items_listed_with_a_cap():
 
 def test_cli_steps_refused_before_work(tmp_path, capsys):
     assert main(["engine", "--example", "--step", "1e-6", "-o", str(tmp_path / "o")]) == 2
-    assert main(["linkage", "--example", "--step", "1e-6", "-o", str(tmp_path / "o")]) == 2
+    assert capsys.readouterr().err.strip() == (     # the default: a Russian run
+        "crankdyn engine: error: --step: дало бы строк: 720,000,002; допускается не более "
+        "100,000")
+    assert main(["engine", "--example", "--step", "1e-6", "-o", str(tmp_path / "o"),
+                 "--lang", "en"]) == 2
+    assert main(["linkage", "--example", "--step", "1e-6", "-o", str(tmp_path / "o"),
+                 "--lang", "en"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert err == ["crankdyn engine: error: --step: would make 720,000,002 rows; at most "
                    "100,000 are allowed",

@@ -296,8 +296,11 @@ def test_bad_input_exit_2_one_line_per_problem_nothing_written(case, tmp_path, c
 
 
 def test_missing_spec_file(tmp_path, capsys):
-    assert main(["linkage", str(tmp_path / "nope.toml"), "-o", str(tmp_path / "o")]) == 2
+    assert main(["linkage", str(tmp_path / "nope.toml"), "-o", str(tmp_path / "o"),
+                 "--lang", "en"]) == 2
     assert "does not exist" in capsys.readouterr().err
+    assert main(["linkage", str(tmp_path / "nope.toml"), "-o", str(tmp_path / "o")]) == 2
+    assert "файл задания не существует" in capsys.readouterr().err   # the default: ru
     assert not (tmp_path / "o").exists()
 
 
@@ -323,7 +326,7 @@ def test_cli_subprocess_help_and_error_no_traceback(tmp_path):
     bad = tmp_path / "bad.toml"
     bad.write_text("[mechanism\n")
     r = subprocess.run([sys.executable, "-m", "crankdyn", "linkage", str(bad), "-o",
-                        str(tmp_path / "o")], capture_output=True, text=True)
+                        str(tmp_path / "o"), "--lang", "en"], capture_output=True, text=True)
     assert r.returncode == 2
     assert "not valid TOML" in r.stderr and "Traceback" not in r.stderr
 

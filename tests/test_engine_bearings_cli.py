@@ -161,7 +161,7 @@ def test_bad_bearing_keys_exit_2_and_write_nothing(tmp_path, capsys):
     spec_path = tmp_path / "bad.toml"
     spec_path.write_text(_toml(d))
     out = tmp_path / "o"
-    assert main(["engine", str(spec_path), "-o", str(out)]) == 2
+    assert main(["engine", str(spec_path), "-o", str(out), "--lang", "en"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert any("bearings.wear_half_angle_deg: got 200" in e for e in err)
     assert any("rod.inertia_kg_m2: missing" in e for e in err)

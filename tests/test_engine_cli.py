@@ -398,10 +398,16 @@ def test_bad_input_via_subprocess_has_no_traceback(tmp_path):
     spec = tmp_path / "spec.toml"
     spec.write_text(GOOD.replace("rod_ratio = 0.27", "rod_ratio = 1.5"))
     r = subprocess.run([sys.executable, "-m", "crankdyn", "engine", str(spec), "-o",
-                        str(tmp_path / "out")], capture_output=True, text=True)
+                        str(tmp_path / "out"), "--lang", "en"], capture_output=True,
+                       text=True)
     assert r.returncode == 2
     assert r.stderr.strip().splitlines() == [
         "crankdyn engine: error: engine.rod_ratio: got 1.5; must be > 0 and < 1"]
+    # a Russian run (the default) tells the same problem in Russian
+    r = subprocess.run([sys.executable, "-m", "crankdyn", "engine", str(spec), "-o",
+                        str(tmp_path / "out")], capture_output=True, text=True)
+    assert r.stderr.strip().splitlines() == [
+        "crankdyn engine: error: engine.rod_ratio: получено 1.5; должно быть > 0 и < 1"]
     assert not (tmp_path / "out").exists()
 
 

@@ -80,17 +80,18 @@ def test_options_and_the_bearings_switch():
 
 
 def test_a_bearings_table_in_the_source_asks_for_the_bearings():
-    """A spec dict with [bearings]: the bearing loads without asking; the same study
-    without its source has none (the defaults)."""
+    """A spec dict with [bearings]: the bearing loads without asking (the study carries
+    the table, read once by engine.load); the same engine without it has none."""
     d = tomllib.loads(example_path("diesel_d240.toml").read_text())
     d["pressure"]["file"] = str(example_path("diesel_d240_indicator.csv"))
     d["bearings"] = dict(wear_half_angle_deg=45.0)
     study = engine.load(d)
-    asked = engine.run_study(study, source=d)
+    asked = engine.run_study(study)
     assert asked.bearings is not None
     assert asked.bearings.analysis.options.wear_half_angle_deg == 45.0
     assert "+/-45 deg" in "\n".join(asked.summary_lines("en"))
-    assert engine.run_study(study).bearings is None
+    del d["bearings"]
+    assert engine.run_study(engine.load(d)).bearings is None
 
 
 # ------------------------------------------------------------------------ the writing
@@ -242,9 +243,13 @@ def test_the_command_line_names_its_options_where_the_library_names_arguments(tm
                                                                              capsys):
     from crankdyn.cli import main
 
-    assert main(["engine", "--example", "-o", str(tmp_path / "o"), "--step", "0"]) == 2
+    assert main(["engine", "--example", "-o", str(tmp_path / "o"), "--step", "0",
+                 "--lang", "en"]) == 2
     assert capsys.readouterr().err.splitlines() == [
         "crankdyn engine: error: --step: got 0.0; must be a number > 0 and <= 720"]
+    assert main(["engine", "--example", "-o", str(tmp_path / "o"), "--step", "0"]) == 2
+    assert capsys.readouterr().err.splitlines() == [     # the report's language, ru
+        "crankdyn engine: error: --step: получено 0.0; должно быть числом > 0 и <= 720"]
     with pytest.raises(SpecError, match="^step: got 0.0"):
         engine.run_study(example_path("petrol_vaz2106.toml"), step=0.0)
     assert not (tmp_path / "o").exists()

@@ -90,7 +90,11 @@ def test_offered_languages_are_complete_russian_first():
 
 
 def test_unknown_language_is_a_spec_error_naming_the_choices():
+    from crankbase.validation import check_lang
+
     with pytest.raises(SpecError, match=r"lang: got 'de'; must be one of ru, en"):
+        check_lang("de")
+    with pytest.raises(KeyError, match="no text catalogue for language 'de'"):
         T.texts("de")
 
 

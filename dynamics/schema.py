@@ -1,0 +1,72 @@
+"""Every key of the dynamics and rotor spec files, declared once
+(:mod:`crankbase.schema`); the words are in the ``spec`` catalogue.
+"""
+from __future__ import annotations
+
+from crankbase.schema import ArrayOfTables, Key, Schema, Table
+
+__all__ = ["SCHEMA", "SCHEMAS", "ROTOR_SCHEMA", "DYNAMICS", "MACHINE", "ELEMENT", "MOMENT",
+           "ROTOR", "ROTOR_MASS", "DRIVINGS"]
+
+#: How the machine is driven ([dynamics] driving).
+DRIVINGS = ("constant", "table", "motor")
+#: Most grid intervals over the period ([dynamics] steps).
+MAX_STEPS = 200_000
+
+DYNAMICS = Table("dynamics", (
+    Key("driving", "choice", choices=DRIVINGS, default="constant"),
+    Key("phi_deg", "numbers", min_length=1, unit="deg", required="cond", symbol=True),
+    Key("M_Nm", "numbers", min_length=1, unit="N·m", required="cond", symbol=True),
+    Key("motor_start_torque_Nm", gt=0, unit="N·m", required="cond", symbol=True),
+    Key("motor_sync_speed_rad_s", gt=0, unit="rad/s", required="cond", symbol=True),
+    Key("delta", gt=0, lt=1, symbol=True),
+    Key("flywheel_kgm2", ge=0, unit="kg·m²", symbol=True),
+    Key("omega_mean_rad_s", gt=0, unit="rad/s", symbol=True),
+    Key("steps", "integer", ge=36, le=MAX_STEPS, shown_default="spec.default.steps"),
+    Key("J_engine_extra_kgm2", ge=0, unit="kg·m²", default=0.0),
+))
+
+ELEMENT = ArrayOfTables("machine.element", (
+    Key("J_kgm2", ge=0, unit="kg·m²", required="cond", symbol=True),
+    Key("speed_ratio", required="cond"),
+    Key("m_kg", ge=0, unit="kg", required="cond", symbol=True),
+    Key("velocity_ratio_m", unit="m", required="cond"),
+))
+
+MOMENT = ArrayOfTables("machine.moment", (
+    Key("role", "choice", choices=("drive", "resist"), required=True),
+    Key("phi_deg", "numbers", min_length=1, unit="deg", required=True, symbol=True),
+    Key("M_Nm", "numbers", min_length=1, unit="N·m", required=True, symbol=True),
+), required=True, min_items=1)
+
+MACHINE = Table("machine", (
+    Key("name", "string", default="machine"),
+    Key("J_red_kgm2", gt=0, unit="kg·m²", required="cond", default=0.0, symbol=True),
+    Key("omega_mean_rad_s", gt=0, unit="rad/s", symbol=True),
+    Key("period_deg", gt=0, unit="deg", default=360.0),
+    ELEMENT,
+    MOMENT,
+), required=True)
+
+ROTOR_MASS = ArrayOfTables("rotor.mass", (
+    Key("mr_gmm", ge=0, unit="g·mm", required="cond"),
+    Key("m_g", ge=0, unit="g", required="cond"),
+    Key("r_mm", ge=0, unit="mm", required="cond"),
+    Key("angle_deg", unit="deg", required=True),
+    Key("z_mm", unit="mm", required="cond"),
+), required=True, min_items=1)
+
+ROTOR = Table("rotor", (
+    Key("name", "string", default="rotor"),
+    Key("planes_mm", "numbers", min_length=1, unit="mm", required=True),
+    Key("correction_radius_mm", gt=0, unit="mm"),
+    ROTOR_MASS,
+), required=True)
+
+#: The dynamics spec file (``crankdyn dynamics``): ``[machine]`` + ``[dynamics]``, or a
+#: linkage or engine spec with ``[dynamics]``.
+SCHEMA = Schema("dynamics", (DYNAMICS, MACHINE))
+#: The rotor spec file (``crankdyn balance``).
+ROTOR_SCHEMA = Schema("rotor", (ROTOR,))
+#: Both, in the order of the README.
+SCHEMAS = (SCHEMA, ROTOR_SCHEMA)

@@ -1,0 +1,96 @@
+"""The indicator diagram computed from the thermal calculation: ``[pressure.cycle]``.
+
+:func:`read_cycle` reads the table through the schema (:data:`engine.schema.CYCLE`) and
+checks what joins its keys (pz above pc, ρ below ε, the roundings apart);
+:func:`check_rounded_peak` checks the rounded peak against the expansion line once the
+rod ratio is known.
+"""
+from __future__ import annotations
+
+from ..indicator import JOIN_AFTER_PEAK_DEG, CycleSpec, sharp_cycle_pressure
+from ..schema import CYCLE, ROUNDING_DEFAULTS
+
+__all__ = ["read_cycle", "check_rounded_peak"]
+
+
+def check_rounded_peak(c, cyc, lam, k):
+    """The real (rounded) diagram lies inside the theoretical one: its peak
+    peak_factor·pz must not rise above the expansion line at the peak angle, and must be
+    the maximum (the line where the rounding rejoins it must be lower)."""
+    a = 360.0 + cyc.peak_after_tdc_deg
+    line = float(sharp_cycle_pressure([a], cyc, lam, k=k)[0])
+    peak = cyc.peak_factor * cyc.pz
+    if peak > line:
+        c.add("pressure.cycle.peak_factor",
+              f"the rounded peak peak_factor·pz = {peak / 1e6:.4g} MPa at {a:g}° lies above "
+              f"the expansion line there ({line / 1e6:.4g} MPa); lower peak_factor or "
+              f"peak_after_tdc_deg")
+        return
+    join = a + JOIN_AFTER_PEAK_DEG
+    after = float(sharp_cycle_pressure([join], cyc, lam, k=k)[0])
+    if after >= peak:
+        c.add("pressure.cycle.peak_factor",
+              f"the expansion line at {join:g}° ({after / 1e6:.4g} MPa), where the rounded "
+              f"curve rejoins it, is not below the rounded peak ({peak / 1e6:.4g} MPa): the "
+              f"isobaric part (ρ) is too long for the rounding; raise peak_factor or "
+              f"peak_after_tdc_deg")
+
+
+def read_cycle(c, cy, strokes):
+    """A :class:`~engine.CycleSpec` from the ``[pressure.cycle]`` dict ``cy`` (None on a
+    problem, recorded in the :class:`~crankbase.schema.SpecReader` ``c``)."""
+    path = "pressure.cycle"
+
+    def get(key, **kw):
+        return c.get(cy, CYCLE, key, **kw)
+
+    kind = get("kind")
+    if strokes != 4:
+        c.add(path, "a computed diagram is available for four-stroke engines only; "
+                    "give a pressure table for a two-stroke engine")
+    eps = get("compression_ratio")
+    pa = get("pa_MPa")
+    pr = get("pr_MPa")
+    n1 = get("n1")
+    n2 = get("n2")
+    if "pz_MPa" in cy and "lambda_z" in cy:
+        c.add(f"{path}.pz_MPa", "give either pz_MPa or lambda_z, not both")
+        pz = lz = None
+    elif "lambda_z" in cy:
+        lz = get("lambda_z", required=True)
+        pz = None
+    else:
+        pz = get("pz_MPa", required=True)
+        lz = None
+    if kind == "diesel":
+        rho = get("rho", required=True)
+    else:
+        if "rho" in cy:
+            c.add(f"{path}.rho", "only used with kind = \"diesel\"")
+        rho = 1.0
+    rounding = get("rounding")
+    opts = {k: get(k) for k in ROUNDING_DEFAULTS}
+    opts["advance_deg"] = get("advance_deg")
+    if None in (kind, eps, pa, pr, n1, n2, rho) or (pz is None and lz is None) \
+            or None in (v for k, v in opts.items() if k != "advance_deg"):
+        return None
+    cyc = CycleSpec(kind=kind, compression_ratio=eps, pa=pa * 1e6, pr=pr * 1e6, n1=n1,
+                    n2=n2, pz_input=None if pz is None else pz * 1e6, lambda_z_input=lz,
+                    rho=rho, rounding=rounding, **opts)
+    if pz is not None and cyc.pz < cyc.pc:
+        c.add(f"{path}.pz_MPa", f"got {pz:g}; must be >= the compression pressure "
+                                f"pc = pa·ε^n1 = {cyc.pc / 1e6:.4g} MPa")
+        return None
+    if kind == "diesel" and rho >= eps:
+        c.add(f"{path}.rho", f"got {rho:g}; must be < compression_ratio {eps:g}")
+        return None
+    if rounding and (360 + opts["peak_after_tdc_deg"] + JOIN_AFTER_PEAK_DEG
+                     > 540 - opts["exhaust_opening_deg"]):
+        c.add(f"{path}.exhaust_opening_deg", "the combustion rounding (peak_after_tdc_deg "
+              f"+ {JOIN_AFTER_PEAK_DEG:g}°) and the exhaust rounding overlap; reduce them")
+        return None
+    if rounding and opts["peak_factor"] * cyc.pz < opts["pc_factor"] * cyc.pc:
+        c.add(f"{path}.peak_factor", "the rounded peak peak_factor·pz must not be below "
+                                     "pc_factor·pc")
+        return None
+    return cyc
