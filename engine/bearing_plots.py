@@ -186,13 +186,9 @@ def plot_wear(diagram, ax=None, lang="ru", note=True):
         ax.text(tx, ty, f"{ang}°", ha="center", va="center", fontsize=7, color="0.3")
     hole = diagram.oil_hole_deg
     hx, hy = _xy(hole, 1.0)
-    tx, ty = _xy(hole + 14.0, 1.36)
-    ax.annotate(f"{t['hole']}\n{hole:g}°", xy=(hx, hy), xytext=(tx, ty),
-                ha="center", va="center", fontsize=9, color="C3",
-                bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.85),
-                arrowprops=dict(arrowstyle="-|>", color="C3", lw=1.4))
     ax.plot([0, 0.62 * hx], [0, 0.62 * hy], color="C3", lw=1.0, ls="--")
     ax.plot([0], [0], "ko", ms=3)
+    ax.plot([hx], [hy], marker=(3, 0, 180 - hole), ms=7, color="C3", ls="none")
     ox, oy = _xy(0.0, 1.42)
     ax.annotate("", xy=(ox, oy - 0.08), xytext=(ox, oy + 0.12),
                 arrowprops=dict(arrowstyle="-|>", color="0.3", lw=1.0))
@@ -204,12 +200,39 @@ def plot_wear(diagram, ax=None, lang="ru", note=True):
     ax.set_ylim(-1.65, 1.65)
     ax.axis("off")
     ax.set_title(t["wear"].format(name=f"{t['names'].get(kind, kind)} {num}"), fontsize=11)
+    _hole_label(ax, f"{t['hole']} {hole:g}°", hole)
     if not note:
         return ax
     text = t["wear_note"].format(h=diagram.half_angle_deg, zero=t["axis"].get(kind, ""))
     ax.text(0.5, -0.02, text,
             transform=ax.transAxes, ha="center", va="top", fontsize=7.5, color="0.3")
     return ax
+
+
+def _hole_label(ax, text, hole):
+    """The oil hole's name outside the ring of angle labels, in the hole's direction (as
+    near as it is free): never over the wear, the circle or a label."""
+    from .plot_labels import Obstacles, place_label, renderer_of
+
+    r = renderer_of(ax.figure)
+    ax.apply_aspect()
+    tr = ax.transData.transform
+    bb = ax.get_window_extent()
+    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+    for txt in ax.texts:
+        e = txt.get_window_extent(r)
+        obs.boxes.append((e.x0, e.y0, e.x1, e.y1))
+    for line in ax.lines:
+        obs.add_line(tr(line.get_xydata()))
+    for ann in ax.texts:
+        if getattr(ann, "arrow_patch", None) is not None:
+            obs.add_segment(tr(ann.xy), tr(ann.xyann))
+    anchor = tr([_xy(hole, 1.1)])[0]
+    normal = np.array(_xy(hole, 1.0)) * (1, 1)
+    t = place_label(ax, obs, anchor, text, normal=normal, gaps_pt=(6, 10, 16, 24),
+                    fontsize=8.5, color="C3", gid="oil-hole")
+    if t is None:                  # no room beside the ring: under the title
+        ax.set_title(ax.get_title() + f"\n{text}", fontsize=10)
 
 
 def plot_journal_torques(result, ax=None, lang="ru"):
@@ -270,14 +293,13 @@ def plot_big_end(result, ax=None, lang="ru"):
     ax.plot(x, y, color="C0", lw=1.2)
     labels = np.arange(0.0, _cycle(result.loads), 30.0)
     lx, ly = np.interp(labels, a, x), np.interp(labels, a, y)
-    ax.plot(lx, ly, "o", ms=3, color="C0")
-    for ang, u, v in zip(labels, lx, ly):
-        ax.annotate(f"{ang:g}", (u, v), xytext=(3, 3), textcoords="offset points",
-                    fontsize=7, color="0.25")
+    ax.plot(lx, ly, "o", ms=3, color="C0", gid="alpha-marker")
     ax.plot([0], [0], "ks", ms=4)
     ax.axhline(0, color="k", lw=0.7)
     ax.axvline(0, color="k", lw=0.7)
     ax.set_aspect("equal", adjustable="datalim")
+    from .plots import label_alpha_points
+    label_alpha_points(ax, x, y, a, labels, lx, ly, ms=3)
     ax.set_xlabel(t["across"])
     ax.set_ylabel(t["along"])
     ax.grid(True, lw=0.4, alpha=0.6)

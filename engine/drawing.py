@@ -47,8 +47,8 @@ def _grid(ax, x0, x1, y0, y1):
     for step, lw, c in ((1, 0.15, "#f2b8a0"), (5, 0.3, "#e8926e"), (10, 0.5, "#d9683f")):
         xs = np.arange(np.ceil(x0 / step) * step, x1 + 1e-9, step)
         ys = np.arange(np.ceil(y0 / step) * step, y1 + 1e-9, step)
-        ax.vlines(xs, y0, y1, lw=lw, color=c, zorder=0)
-        ax.hlines(ys, x0, x1, lw=lw, color=c, zorder=0)
+        ax.vlines(xs, y0, y1, lw=lw, color=c, zorder=0, gid="paper-grid")
+        ax.hlines(ys, x0, x1, lw=lw, color=c, zorder=0, gid="paper-grid")
     ax.set_xlim(x0, x1)
     ax.set_ylim(y0, y1)
     ax.tick_params(labelsize=6, length=2)

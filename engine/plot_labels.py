@@ -71,6 +71,10 @@ class Obstacles:
     boxes: list = field(default_factory=list)
     segments: list = field(default_factory=list)
     curve: np.ndarray = field(default_factory=lambda: np.empty((0, 2)))
+    #: Lines no label may cross (the curve itself when ``curve_hard``, axis lines …),
+    #: resampled like the curve.
+    lines: np.ndarray = field(default_factory=lambda: np.empty((0, 2)))
+    curve_hard: bool = True
 
     def add_marker(self, xy, size_px):
         h = 0.5 * size_px
@@ -86,29 +90,44 @@ class Obstacles:
             return False
         if any(_overlap(b, o) for o in self.boxes):
             return False
-        return not any(_segment_hits_box(p, q, b) for p, q in self.segments)
+        if any(_segment_hits_box(p, q, b) for p, q in self.segments):
+            return False
+        if len(self.lines) and _count_inside(self.lines, b):
+            return False
+        return not (self.curve_hard and self.curve_cost(b))
+
+    def add_line(self, xy_px, step_px=1.0):
+        """A polyline no label may cross (an axis line, another curve)."""
+        pts = _resample(xy_px, step_px)
+        self.lines = np.concatenate([self.lines, pts]) if len(self.lines) else pts
 
     def set_curve(self, xy_px, step_px=2.0):
         """The polyline to avoid, resampled so that its vertices lie at most ``step_px``
         apart (a fast stretch of the curve, few vertices far apart, still counts where
         it crosses a box)."""
-        xy = np.asarray(xy_px, float)
-        if len(xy) < 2:
-            self.curve = xy.reshape(-1, 2)
-            return
-        seg = np.hypot(*np.diff(xy, axis=0).T)
-        s = np.concatenate([[0.0], np.cumsum(seg)])
-        t = np.linspace(0.0, s[-1], max(int(np.ceil(s[-1] / step_px)) + 1, len(xy)))
-        self.curve = np.column_stack([np.interp(t, s, xy[:, 0]), np.interp(t, s, xy[:, 1])])
+        self.curve = _resample(xy_px, step_px)
 
     def curve_cost(self, box):
         """Number of the curve's (resampled) vertices inside ``box``."""
-        if not len(self.curve):
-            return 0
-        c = self.curve
-        inside = ((c[:, 0] > box[0]) & (c[:, 0] < box[2]) & (c[:, 1] > box[1])
-                  & (c[:, 1] < box[3]))
-        return int(inside.sum())
+        return _count_inside(self.curve, box) if len(self.curve) else 0
+
+
+def _resample(xy_px, step_px):
+    """The polyline with vertices at most ``step_px`` apart."""
+    xy = np.asarray(xy_px, float).reshape(-1, 2)
+    xy = xy[np.all(np.isfinite(xy), axis=1)]
+    if len(xy) < 2:
+        return xy
+    seg = np.hypot(*np.diff(xy, axis=0).T)
+    s = np.concatenate([[0.0], np.cumsum(seg)])
+    t = np.linspace(0.0, s[-1], max(int(np.ceil(s[-1] / step_px)) + 1, len(xy)))
+    return np.column_stack([np.interp(t, s, xy[:, 0]), np.interp(t, s, xy[:, 1])])
+
+
+def _count_inside(c, box):
+    inside = ((c[:, 0] > box[0]) & (c[:, 0] < box[2]) & (c[:, 1] > box[1])
+              & (c[:, 1] < box[3]))
+    return int(inside.sum())
 
 
 def _box_at(anchor, direction, size, gap):
@@ -122,15 +141,20 @@ def _box_at(anchor, direction, size, gap):
     return (cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2)
 
 
+#: Gaps [pt] tried when none of the given ones leaves a free place.
+_FAR = (4, 8, 14, 22, 32, 46, 64, 90)
+
+
 def place_label(ax, obstacles, anchor_px, text, normal=(0.0, 1.0), gaps_pt=(3, 6, 10, 15),
-                pad_px=1.5, curve_weight=4.0, gid=None, **text_kw):
+                pad_px=1.5, curve_weight=4.0, gid=None, far=True, **text_kw):
     """Put ``text`` near the display point ``anchor_px`` where it covers nothing.
 
     Directions tried: ±``normal`` first, then turned by ±30°, ±60°, ±90°, ±135°; gaps
     ``gaps_pt`` points from the anchor.  Among the places whose box (padded by
     ``pad_px``) clears every obstacle, the one with the least cost (curve points covered
     × ``curve_weight`` + gap + turn) wins.  The label is drawn centred on its box and its
-    box is added to the obstacles.
+    box is added to the obstacles.  With ``far``, a label that finds no free place
+    near is tried farther out (to 90 pt) before it is left out.
 
     Returns
     -------
@@ -155,6 +179,10 @@ def place_label(ax, obstacles, anchor_px, text, normal=(0.0, 1.0), gaps_pt=(3, 6
                         + abs(turn) / 30.0 + (0 if side > 0 else 0.5))
                 if best is None or cost < best[0]:
                     best = (cost, box)
+    if best is None and far and max(gaps_pt) < _FAR[-1]:
+        # nowhere near: try farther out before giving up
+        return place_label(ax, obstacles, anchor_px, text, normal, _FAR, pad_px,
+                           curve_weight, gid, far=False, **text_kw)
     if best is None:
         return None
     box = best[1]
@@ -185,6 +213,6 @@ def label_points(ax, obstacles, xy_px, texts, normals, order, merge_px=3.0, **kw
     placed, thinned = [], []
     for i, members in groups:
         text = "/".join(texts[j] for j in members)
-        t = place_label(ax, obstacles, xy_px[i], text, normals[i], **kw)
+        t = place_label(ax, obstacles, xy_px[i], text, normals[i], far=False, **kw)
         (placed.append(t) if t is not None else thinned.append(text))
     return placed, thinned

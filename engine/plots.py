@@ -274,7 +274,7 @@ def _polar_labels(ax, T, K, kr, lt, lk, angles, ext, R, a, pole_name, r_name, un
     """Place the pole names, the Rшш max/min texts and the α labels of the polar diagram
     so that no label covers another label, a marker or an arrow (measured with the
     renderer; see :mod:`engine.plot_labels`)."""
-    from .plot_labels import Obstacles, label_points, place_label, renderer_of
+    from .plot_labels import Obstacles, place_label, renderer_of
 
     fig = ax.figure
     renderer_of(fig)
@@ -292,6 +292,9 @@ def _polar_labels(ax, T, K, kr, lt, lk, angles, ext, R, a, pole_name, r_name, un
     obs.add_marker(osh, 6 * px + 1)
     for idx, _, _ in ext:
         obs.add_segment(osh, curve[idx])
+    # the axes T = 0 and K = 0 cross the whole frame: no label on them
+    obs.add_line([(bb.x0, o[1]), (bb.x1, o[1])])
+    obs.add_line([(o[0], bb.y0), (o[0], bb.y1)])
     # pole names first, then Rшш max/min, then α labels (multiples of 90° first)
     place_label(ax, obs, o, "O", normal=(-1, -1), fontsize=11, weight="bold",
                 gid="polar-label")
@@ -305,7 +308,16 @@ def _polar_labels(ax, T, K, kr, lt, lk, angles, ext, R, a, pole_name, r_name, un
                     f"(α = {a[idx]:g}°)", normal=away if name == "max" else (1, 0),
                     fontsize=9, color=col, gid="polar-label", curve_weight=25.0,
                     gaps_pt=(4, 8, 14, 22, 32, 46, 64))      # off the curve, even if farther
-    # α labels: normal of the curve at each point, pointing away from the curve's centre
+    _alpha_labels(ax, obs, curve, pts, a, angles)
+
+
+def _alpha_labels(ax, obs, curve, pts, a, angles):
+    """The α labels of a polar diagram: each off the curve along its normal (away from
+    the curve's centre), multiples of 90° first; points closer than a label's height share
+    one label ("240/600"); a label with no free place is left out."""
+    from .plot_labels import label_points
+
+    px = ax.figure.dpi / 72.0
     d = np.gradient(curve, axis=0)
     tx = np.interp(angles, a, d[:, 0])
     ty = np.interp(angles, a, d[:, 1])
@@ -317,6 +329,37 @@ def _polar_labels(ax, T, K, kr, lt, lk, angles, ext, R, a, pole_name, r_name, un
     texts = [f"{x:g}" for x in angles]
     label_points(ax, obs, pts, texts, normals, order, merge_px=1.4 * 7 * px,
                  fontsize=7, color="0.15", gid="alpha-label")
+
+
+def label_alpha_points(ax, x, y, a, angles, lx, ly, ms=3.0):
+    """Label the α markers (``lx``, ``ly`` at ``angles``) of a curve (``x``, ``y`` over
+    ``a``) drawn on ``ax`` with its axes lines x = 0 and y = 0: the limits are frozen and
+    every label is placed clear of the curve, the axes lines, the markers and the other
+    labels (:func:`_alpha_labels`)."""
+    from .plot_labels import Obstacles, renderer_of
+
+    fig = ax.figure
+    renderer_of(fig)
+    ax.margins(0.07)
+    ax.autoscale_view()
+    ax.apply_aspect()
+    ax.set_xlim(ax.get_xlim())
+    ax.set_ylim(ax.get_ylim())
+    ax.set_autoscale_on(False)
+    tr = ax.transData.transform
+    bb = ax.get_window_extent()
+    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+    curve = tr(np.column_stack([x, y]))
+    obs.set_curve(curve)
+    pts = tr(np.column_stack([lx, ly]))
+    px = fig.dpi / 72.0
+    for p in pts:
+        obs.add_marker(p, ms * px + 1)
+    o = tr([(0.0, 0.0)])[0]
+    obs.add_marker(o, 5 * px + 1)
+    obs.add_line([(bb.x0, o[1]), (bb.x1, o[1])])
+    obs.add_line([(o[0], bb.y0), (o[0], bb.y1)])
+    _alpha_labels(ax, obs, curve, pts, np.asarray(a, float), np.asarray(angles, float))
 
 
 def _diagram_points(ax, result, x_of, lang):
