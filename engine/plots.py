@@ -102,10 +102,12 @@ def plot_indicator(result, ax=None, lang="ru"):
         ax.plot(spec.Vc * 1e3 + sw, p, color="C0", lw=1.4)
         ax.set_xlabel(t["V"])
         vc, va = spec.Vc * 1e3, (spec.Vc + spec.Vh) * 1e3
-        for v, lab in ((vc, t["tdc"]), (va, t["bdc"])):
+        for v, lab, side in ((vc, t["tdc"], 1), (va, t["bdc"], -1)):
             ax.axvline(v, color="0.5", lw=0.7, ls="--")
+            # TDC right of its line, BDC left of its (the frame is close on the right)
             ax.annotate(lab, (v, 1.0), xycoords=("data", "axes fraction"),
-                        xytext=(2, -12), textcoords="offset points", fontsize=8)
+                        xytext=(2 * side, -12), textcoords="offset points", fontsize=8,
+                        ha="left" if side > 0 else "right")
         ax.set_xlim(0, va * 1.05)
     else:
         ax.plot(sw, p, color="C0", lw=1.4)
@@ -512,11 +514,11 @@ def plot_total_torque(result, ax=None, lang="ru"):
                 label=t["cyl"].format(n=n) if j == 0 else None, gid="context")
     ax.plot(th, c["M_total_Nm"].to_numpy(), color="C0", lw=1.6, label=t["Mtot"])
     ax.axhline(s.M_mean_Nm, color="C3", ls="--", lw=1.1, label=t["mean"].format(v=s.M_mean_Nm))
-    for v, a, key, off in ((s.M_max_Nm, s.alpha_M_max_deg, "Mmax", (6, 4)),
-                           (s.M_min_Nm, s.alpha_M_min_deg, "Mmin", (6, -12))):
-        ax.plot([a], [v], "o", color="C3", ms=4)
-        ax.annotate(t[key].format(v=v, a=a), (a, v), xytext=off, textcoords="offset points",
-                    fontsize=8, color="C3")
+    # max and min marked on the curve and named in the legend (below the axes): a text
+    # beside the point would be cut at the edge or crossed by the cylinders' curves
+    for v, a, key, mk in ((s.M_max_Nm, s.alpha_M_max_deg, "Mmax", "^"),
+                          (s.M_min_Nm, s.alpha_M_min_deg, "Mmin", "v")):
+        ax.plot([a], [v], mk, color="C3", ms=6, ls="none", label=t[key].format(v=v, a=a))
     _theta_axis(ax, result.layout.cycle_deg, t)
     ax.set_ylabel(t["M"])
     # below the axes: the curves fill the whole plot, a legend inside would cover them
@@ -540,14 +542,39 @@ def plot_excess_work(result, ax=None, lang="ru"):
     x = th[i] if abs(th[i] - th[k]) > 20 else th[i] + 20
     ax.annotate("", xy=(x, w[i]), xytext=(x, w[k]),
                 arrowprops=dict(arrowstyle="<->", color="C3", lw=1.2))
-    right = x > 0.75 * result.layout.cycle_deg
-    ax.annotate(t["L"].format(v=result.summary.L_excess_J), (x, (w[i] + w[k]) / 2),
-                xytext=(-6 if right else 6, 0), textcoords="offset points", color="C3",
-                fontsize=9, ha="right" if right else "left", va="center")
     _theta_axis(ax, result.layout.cycle_deg, t)
     ax.set_ylabel(t["work"])
     ax.set_title(f"{t['wt']}: {result.cylinder.spec.name}")
+    _free_label(ax, t["L"].format(v=result.summary.L_excess_J), (x, (w[i] + w[k]) / 2),
+                normal=(1, 0), color="C3", fontsize=9)
     return ax
+
+
+def _free_label(ax, text, xy, normal=(1, 0), **kw):
+    """Put ``text`` near the data point ``xy`` where no drawn line, arrow or text of
+    ``ax`` crosses it (the limits are frozen first); when there is no such place, the text
+    goes into the title."""
+    from .plot_labels import Obstacles, place_label, renderer_of
+
+    r = renderer_of(ax.figure)
+    ax.autoscale_view()
+    ax.apply_aspect()
+    ax.set_xlim(ax.get_xlim())
+    ax.set_ylim(ax.get_ylim())
+    ax.set_autoscale_on(False)
+    tr = ax.transData.transform
+    bb = ax.get_window_extent()
+    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+    for line in ax.lines:
+        obs.add_line(line.get_transform().transform(line.get_xydata()))
+    for txt in ax.texts:
+        if txt.get_text():
+            e = txt.get_window_extent(r)
+            obs.boxes.append((e.x0, e.y0, e.x1, e.y1))
+        if getattr(txt, "arrow_patch", None) is not None:
+            obs.add_segment(tr(txt.xy), tr(txt.xyann))
+    if place_label(ax, obs, tr(xy), text, normal=normal, **kw) is None:
+        ax.set_title(f"{ax.get_title()}\n{text}")
 
 
 def _min_extent(result, kind):
@@ -665,34 +692,39 @@ def plot_crankshaft(result, ax=None, lang="ru"):
     cyl = lay.cylinders
     g1 = float(lay.bank_deg[0])
     banks = sorted(set(zip(cyl["bank"], cyl["bank_angle_deg"])))
-    for b, gam in banks:
-        d = np.exp(1j * np.radians(90 + gam))
-        ax.plot([0, 1.55 * d.real], [0, 1.55 * d.imag], color="0.45", lw=1.0, ls="--")
-        ax.annotate(t["bank"].format(b=b), (1.72 * d.real, 1.72 * d.imag), ha="center",
-                    va="center", fontsize=9, color="0.3")
+    ax.set_xlim(-1.9, 1.9)
+    ax.set_ylim(-1.9, 1.9)
+    ax.set_aspect("equal")
     from matplotlib.patches import Circle
 
     ax.add_patch(Circle((0, 0), 1.0, fill=False, color="0.8", lw=0.8))
+    ends = []                                    # (tip, text, colour, fontsize)
+    for b, gam in banks:
+        d = np.exp(1j * np.radians(90 + gam))
+        ax.plot([0, 1.55 * d.real], [0, 1.55 * d.imag], color="0.45", lw=1.0, ls="--")
+        ends.append((1.55 * d, t["bank"].format(b=b), "0.3", 9))
     groups = {}                                  # throws at the same angle: one label
     for k, tau in enumerate(lay.throw_angles_deg):
         groups.setdefault(round(tau % 360.0, 6), []).append(k)
+    arrows = []
     for g, (tau, ks) in enumerate(sorted(groups.items())):
         d = np.exp(1j * np.radians(90 + g1 + tau))
         members = ", ".join(str(c) for k in ks
                             for c in cyl["cylinder"][cyl["throw"] == k + 1])
         ax.annotate("", xy=(d.real, d.imag), xytext=(0, 0),
                     arrowprops=dict(arrowstyle="-|>", color=f"C{g % 10}", lw=2.2))
+        arrows.append(d)
         label = t["throw"].format(k=", ".join(str(k + 1) for k in ks), c=members)
-        ax.annotate(label, (1.2 * d.real, 1.2 * d.imag), ha="center", va="center",
-                    fontsize=8, color=f"C{g % 10}")
-    ax.annotate("", xy=(-0.35, 0.18), xytext=(0.35, 0.18),
+        ends.append((d, label, f"C{g % 10}", 8))
+    # the sense of rotation: an arc arrow round the shaft axis, counter-clockwise over
+    # the top (a quadratic Bézier from (0.35, 0.18) to (−0.35, 0.18))
+    s_ = np.linspace(0.0, 1.0, 40)[:, None]
+    p0, c1, p2 = np.array([0.35, 0.18]), np.array([0.0, 0.53]), np.array([-0.35, 0.18])
+    arc = (1 - s_) ** 2 * p0 + 2 * s_ * (1 - s_) * c1 + s_ ** 2 * p2
+    ax.annotate("", xy=tuple(p2), xytext=tuple(p0),
                 arrowprops=dict(arrowstyle="-|>", connectionstyle="arc3,rad=0.5",
                                 color="k", lw=1.0))
-    ax.text(0, 0.36, t["rot"], ha="center", fontsize=8)
     ax.plot([0], [0], "ko", ms=4)
-    ax.set_xlim(-1.9, 1.9)
-    ax.set_ylim(-1.9, 1.9)
-    ax.set_aspect("equal")
     ax.set_xticks([])
     ax.set_yticks([])
     order = "-".join(str(c) for c in lay.firing_order)
@@ -700,6 +732,30 @@ def plot_crankshaft(result, ax=None, lang="ru"):
     ax.set_xlabel(t["order"].format(o=order) + "\n" + t["throws"].format(t=throws),
                   fontsize=9)
     ax.set_title(f"{t['crank']}: {result.cylinder.spec.name}", fontsize=10)
+    # every label where no arrow, line or other label crosses it
+    from .plot_labels import Obstacles, place_label, renderer_of
+
+    renderer_of(ax.figure)
+    ax.apply_aspect()
+    tr = ax.transData.transform
+    bb = ax.get_window_extent()
+    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+    for line in ax.lines:
+        obs.add_line(tr(line.get_xydata()))
+    phi = np.linspace(0, 2 * np.pi, 200)
+    obs.add_line(tr(np.column_stack([np.cos(phi), np.sin(phi)])))
+    obs.add_line(tr(arc))
+    o = tr([(0.0, 0.0)])[0]
+    for d in arrows:
+        obs.add_segment(o, tr([(d.real, d.imag)])[0])
+    obs.add_marker(o, 8)
+    for d, label, col, fs in ends:
+        at = tr([(d.real, d.imag)])[0]
+        if place_label(ax, obs, at, label, normal=at - o, gaps_pt=(3, 6, 10, 15),
+                       color=col, fontsize=fs) is None:
+            ax.set_title(ax.get_title() + f"\n{label}", fontsize=9)
+    top = tr([(0.0, 0.53)])[0]
+    place_label(ax, obs, top, t["rot"], normal=(0, 1), fontsize=8)
     return ax
 
 

@@ -141,9 +141,9 @@ def _shaking():
 #: Every bundled example: how its figures are built, and whether they are saved with a
 #: tight bounding box (``crankdyn synth``: the edge is the content's).
 EXAMPLES = {
-    "engine-petrol": (lambda: _engine("petrol_vaz2106.toml"), True),
-    "engine-diesel": (lambda: _engine("diesel_d240.toml"), True),
-    "engine-six": (lambda: _engine("petrol_bmw_m54.toml"), True),
+    "engine-petrol": (lambda: _engine("petrol_vaz2106.toml", bearings=True), True),
+    "engine-diesel": (lambda: _engine("diesel_d240.toml", bearings=True), True),
+    "engine-six": (lambda: _engine("petrol_bmw_m54.toml", bearings=True), True),
     "engine-v8": (lambda: _engine("diesel_kamaz740.toml", bearings=True), True),
     "linkage-ratchet": (lambda: _linkage("ratchet.toml"), True),
     "linkage-press": (lambda: _linkage("press.toml"), True),
