@@ -47,7 +47,7 @@ def texts_of(fig, renderer):
         if not ax.get_visible():
             continue
         for axis in (ax.xaxis, ax.yaxis):
-            if not axis.get_visible():
+            if not ax.axison or not axis.get_visible():
                 continue
             for tick in axis._update_ticks():            # the ticks Agg draws
                 for lab in (tick.label1, tick.label2):
@@ -76,9 +76,15 @@ def texts_of(fig, renderer):
 
 
 def _resample(xy, step):
-    """Points along the polyline ``xy`` at most ``step`` px apart."""
-    xy = np.asarray(xy, float)
-    xy = xy[np.all(np.isfinite(xy), axis=1)]
+    """Points along the polyline ``xy`` at most ``step`` px apart (a non-finite point
+    breaks the line, as it does when drawn)."""
+    xy = np.asarray(xy, float).reshape(-1, 2)
+    bad = ~np.all(np.isfinite(xy), axis=1)
+    if bad.any():
+        parts = np.split(xy, np.flatnonzero(bad))
+        parts = [_resample(p[np.all(np.isfinite(p), axis=1)], step) for p in parts]
+        parts = [p for p in parts if len(p)]
+        return np.concatenate(parts) if parts else np.empty((0, 2))
     if len(xy) < 2:
         return xy
     seg = np.hypot(*np.diff(xy, axis=0).T)

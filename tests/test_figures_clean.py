@@ -53,7 +53,7 @@ def _bearing_analysis(name, study, whole):
                            counterweights=cw, inputs=inputs)
 
 
-def _linkage(name):
+def _linkage(name, sizes=("A1",)):
     import linkage
     import plans
     from linkage.plots import all_figures
@@ -68,7 +68,7 @@ def _linkage(name):
         figs = dict(all_figures(result, full, lang=lang))
         for pp in plan_list:
             figs[f"plans_{pp.tag}"] = position_figure(pp, lang)
-        for size in ("A1", "A3"):
+        for size in sizes:
             for k, sh in enumerate(layout_sheets(result, plan_list, lang, size)):
                 figs[f"sheet_{size}_{k + 1}"] = sheet_figure(sh)
         return figs
@@ -146,7 +146,7 @@ EXAMPLES = {
     "engine-six": (lambda: _engine("petrol_bmw_m54.toml", bearings=True), True),
     "engine-v8": (lambda: _engine("diesel_kamaz740.toml", bearings=True), True),
     "linkage-ratchet": (lambda: _linkage("ratchet.toml"), True),
-    "linkage-press": (lambda: _linkage("press.toml"), True),
+    "linkage-press": (lambda: _linkage("press.toml", ("A1", "A3")), True),
     "synth": (_synth, False),
     "dynamics-flywheel": (lambda: _dynamics("flywheel_seed.toml"), True),
     "dynamics-press": (lambda: _dynamics("press_dynamics.toml"), True),
