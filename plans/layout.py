@@ -156,7 +156,7 @@ class _Placer:
         self.segments = list(segments)
         self.boxes = []
 
-    def place(self, candidates, text, height):
+    def place(self, candidates, text, height, _far=False):
         best, best_score = None, None
         for at in candidates:
             t = Text(at, text, height)
@@ -168,6 +168,13 @@ class _Placer:
                 break
             if best_score is None or score < best_score:
                 best, best_score = t, score
+        if best_score and not _far:
+            # nothing free near: look around the first candidates, farther out (a thin
+            # polygon near a dead position leaves no room beside its vectors)
+            more = [c + r * complex(math.cos(math.radians(k)), math.sin(math.radians(k)))
+                    for c in candidates[:6] for r in (4.0, 8.0, 12.0, 18.0)
+                    for k in range(0, 360, 30)]
+            return self.place(list(candidates) + more, text, height, _far=True)
         self.boxes.append(_text_box(best))
         return best
 
@@ -420,6 +427,7 @@ def positions_block(result, chosen, lang="ru", longest_mm=220.0) -> Block:
         a0, a1 = 2 * math.pi * k / n, 2 * math.pi * (k + 1) / n
         items.append(Line(r * complex(math.cos(a0), math.sin(a0)),
                           r * complex(math.cos(a1), math.sin(a1)), "DASHED"))
+        segs.append((items[-1].p1, items[-1].p2))      # no number on the crank circle
     for z, name in [(0j, "O")] + ([(C / mu, "C")] if C is not None else []):
         items.append(Circle(z, 1.2, "MAIN"))
         items.append(Line(z - 3 - 3j, z + 3 - 3j, "MAIN"))
