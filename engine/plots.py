@@ -34,37 +34,17 @@ SYMBOLS = {
     "en": dict({k: math_symbol(v) for k, v in _PLOT_KEYS.items()}, Fx="$A_{p} x$"),
 }
 
-_TXT = {
-    "ru": dict(alpha="α, ° п.к.в.", p="pг, МПа", V="V, л", Vs="Fп·x, л (от ВМТ)",
-               force="Сила, кН", torque="Mкр, Н·м", Rk="Rшш, кН",
-               ind="Индикаторная диаграмма", pV="p–V", pa="p–α",
-               fP="Силы по оси цилиндра", fNKT="Силы N, K, T",
-               tq="Крутящий момент одного цилиндра", polar="Полярная диаграмма нагрузки "
-               "на шатунную шейку", dev="Развёрнутая диаграмма нагрузки на шатунную шейку",
-               T="T, кН", K="K, кН",
-               frame="система координат кривошипа: кривошип вверх от оси вала O, "
-                     "вращение по часовой стрелке; +T вправо, +K вниз (к оси вала)",
-               tdc="ВМТ", bdc="НМТ", sub=".ср", kN="кН", N="Н", Nm="Н·м", MPa="МПа",
-               poles="O – полюс силы Sш (T, K), Oш – полюс силы Rшш"),
-    "en": dict(alpha="α, crank deg", p="$p_g$, MPa", V="V, l", Vs="$A_p x$, l (from TDC)",
-               force="Force, kN", torque="$M$, N·m", Rk="$R_{cp}$, kN",
-               ind="Indicator diagram", pV="p–V", pa="p–α",
-               fP="Forces along the cylinder axis", fNKT="Forces N, K, T",
-               tq="Torque of one cylinder", polar="Polar diagram of the crank-pin load",
-               dev="Developed diagram of the crank-pin load", T="$T$, kN", K="$K$, kN",
-               frame="crank-fixed frame: crank up from the shaft axis O, rotation "
-                     "clockwise; +T to the right, +K downwards (towards the shaft axis)",
-               tdc="TDC", bdc="BDC", sub=" mean", kN="kN", N="N", Nm="N·m", MPa="MPa",
-               poles="O – pole of the rod force S (T, K), $O_r$ – pole of the crank-pin "
-                     "load $R_{cp}$"),
-}
 
 
 def _texts(lang):
-    if lang not in _TXT:
+    """The words of the cylinder's plots in ``lang`` (the ``plot.engine.*`` texts) and its
+    symbols."""
+    if lang not in LANGS:
         from .spec import EngineSpecError
         raise EngineSpecError(Problem("lang", f"got {lang!r}; valid: {', '.join(LANGS)}"))
-    return dict(_TXT[lang], sym=SYMBOLS[lang])
+    from crankbase.plot_texts import plot_words
+
+    return dict(plot_words(lang, "engine"), sym=SYMBOLS[lang])
 
 
 def _axes(ax, figsize=(10, 5.6), **margins):
@@ -437,7 +417,7 @@ def figures(result, lang="ru"):
     ax1, ax2 = fig.subplots(1, 2)
     plot_indicator(result, ax1, lang)
     plot_pressure(result, ax2, lang)
-    pi = "pi" if lang == "ru" else "$p_i$"
+    pi = t["pi"]
     fig.suptitle(f"{t['ind']}: {result.spec.name};  {pi} = {result.summary.pi_MPa:.3f} "
                  f"{t['MPa']}")
     out = {"indicator": fig}
@@ -453,44 +433,14 @@ def figures(result, lang="ru"):
 TRAIN_PLOT_NAMES = ("torque_total", "excess_work", "free_force_locus", "free_moment_locus",
                     "free_forces", "free_moments", "crankshaft")
 
-_TRAIN_TXT = {
-    "ru": dict(theta="θ, ° п.к.в. (угол поворота коленчатого вала, α цилиндра 1)",
-               M="Mкр, Н·м", Mtot="Mкр суммарный", cyl="цилиндры 1…{n} (по отдельности)",
-               mean="Mкр.ср = {v:.1f} Н·м", tq="Суммарный крутящий момент",
-               work="∫(Mкр − Mкр.ср)dθ, Дж", wt="Избыточная работа", L="Lизб = {v:.1f} Дж",
-               Fx="Fx, кН", Fy="Fy, кН", Mx="Mx, Н·м", My="My, Н·м",
-               Floc="Свободная сила (годограф за оборот)",
-               Mloc="Свободный момент (годограф за оборот)",
-               Fa="Свободная сила по углу", Ma="Свободный момент по углу",
-               before="без противовесов", after="с противовесами",
-               force="сила, кН", moment="момент, Н·м",
-               crank="Схема коленчатого вала (вид со стороны маховика)",
-               bank="ряд {b}", throw="колено {k}: цил. {c}", order="порядок работы: {o}",
-               rot="вращение", throws="углы колен от 1-го по вращению: {t}",
-               side="Схема вдоль вала (z от цилиндра 1, мм)", cw="противовес",
-               Mmax="max {v:.0f} Н·м ({a:g}°)", Mmin="min {v:.0f} Н·м ({a:g}°)"),
-    "en": dict(theta="θ, crank deg (crankshaft angle, α of cylinder 1)",
-               M="$M$, N·m", Mtot="total torque $M$", cyl="cylinders 1…{n} (each)",
-               mean="$M_{{mean}}$ = {v:.1f} N·m", tq="Total engine torque",
-               work="∫($M$ − $M_{mean}$)dθ, J", wt="Excess work",
-               L="$L_{{exc}}$ = {v:.1f} J",
-               Fx="$F_x$, kN", Fy="$F_y$, kN", Mx="$M_x$, N·m", My="$M_y$, N·m",
-               Floc="Free force (locus over one revolution)",
-               Mloc="Free moment (locus over one revolution)",
-               Fa="Free force over the crank angle", Ma="Free moment over the crank angle",
-               before="without counterweights", after="with counterweights",
-               force="force, kN", moment="moment, N·m",
-               crank="Crankshaft (seen from the flywheel end)",
-               bank="bank {b}", throw="throw {k}: cyl. {c}", order="firing order: {o}",
-               rot="rotation", throws="throw angles from throw 1, in rotation: {t}",
-               side="Along the crankshaft (z from cylinder 1, mm)", cw="counterweight",
-               Mmax="max {v:.0f} N·m ({a:g}°)", Mmin="min {v:.0f} N·m ({a:g}°)"),
-}
 
 
 def _ttexts(lang):
+    """The words of the whole engine's plots (``plot.train.*``)."""
     _texts(lang)
-    return _TRAIN_TXT[lang]
+    from crankbase.plot_texts import plot_words
+
+    return plot_words(lang, "train")
 
 
 def _theta_axis(ax, cycle, t):

@@ -41,67 +41,15 @@ _GREY = "#9a9a9a"
 #: Dash patterns and markers of successive curves (told apart in black-and-white print).
 _STYLES = [dict(ls="-", marker=None), dict(ls="--", marker=None), dict(ls="-.", marker=None)]
 
-_TEXT = {
-    "en": {
-        "phi": "crank angle φ [°]", "phi1": "crank rotation from position 1, φ − φ1 [°]",
-        "position": "position", "working": "working stroke",
-        "omega3_c": "ω3 (coupler)", "omega4": "ω4 (rocker)", "omega3_r": "ω3 (rod)",
-        "v4": "v4 (slider)", "eps3_c": "ε3 (coupler)", "eps4": "ε4 (rocker)",
-        "eps3_r": "ε3 (rod)", "a4": "a4 (slider)",
-        "ang_vel": "angular velocity [rad/s]", "ang_acc": "angular acceleration [rad/s²]",
-        "w3": "ω3 [rad/s]", "e3": "ε3 [rad/s²]", "v4_unit": "v4 [m/s]", "a4_unit": "a4 [m/s²]",
-        "vel_title": "{name}: angular velocities",
-        "vel_title_s": "{name}: rod angular velocity and slider velocity",
-        "acc_title": "{name}: angular accelerations",
-        "acc_title_s": "{name}: rod angular acceleration and slider acceleration",
-        "Md": "Mb, balancing (driving) moment on the crank", "Mr": "Mr, resistance on the rocker",
-        "moment": "moment [N·m]", "Md_title": "{name}: balancing moment Mb (+ ccw)",
-        "plan_pts": "plan positions", "mu": "μ", "mu_axis": "transmission angle μ [°]",
-        "mu_title": "{name}: transmission angle", "mu_min": "μmin = {v:.2f}°",
-        "path": "path of {p}", "guide": "guide", "other": "other extreme position",
-        "pos1": "position 1 (working-stroke start)",
-        "first": "first crank angle given, φ = {v:.4g}°",
-        "x": "x [m]", "y": "y [m]", "statics": "statics", "ccw": "ccw", "cw": "cw",
-        "plan_title": "{name}: plan of positions ({kind}, ω = {w:g} rad/s, {turn})",
-        "kind": {"crank-rocker": "crank-rocker", "crank-slider": "crank-slider"},
-        "thinned": "{k} of {n} rows drawn (1 in {every})",
-    },
-    "ru": {
-        "phi": "угол поворота кривошипа φ [°]",
-        "phi1": "поворот кривошипа от положения 1, φ − φ1 [°]",
-        "position": "положение", "working": "рабочий ход",
-        "omega3_c": "ω3 (шатун)", "omega4": "ω4 (коромысло)", "omega3_r": "ω3 (шатун)",
-        "v4": "v4 (ползун)", "eps3_c": "ε3 (шатун)", "eps4": "ε4 (коромысло)",
-        "eps3_r": "ε3 (шатун)", "a4": "a4 (ползун)",
-        "ang_vel": "угловая скорость [рад/с]", "ang_acc": "угловое ускорение [рад/с²]",
-        "w3": "ω3 [рад/с]", "e3": "ε3 [рад/с²]", "v4_unit": "v4 [м/с]", "a4_unit": "a4 [м/с²]",
-        "vel_title": "{name}: угловые скорости",
-        "vel_title_s": "{name}: угловая скорость шатуна и скорость ползуна",
-        "acc_title": "{name}: угловые ускорения",
-        "acc_title_s": "{name}: угловое ускорение шатуна и ускорение ползуна",
-        "Md": "Mур, уравновешивающий момент на кривошипе",
-        "Mr": "Mпс, момент сопротивления на коромысле",
-        "moment": "момент [Н·м]", "Md_title": "{name}: уравновешивающий момент Mур (+ против ч. с.)",
-        "plan_pts": "положения плана", "mu": "μ", "mu_axis": "угол передачи μ [°]",
-        "mu_title": "{name}: угол передачи", "mu_min": "μmin = {v:.2f}°",
-        "path": "траектория {p}", "guide": "направляющая", "other": "второе крайнее положение",
-        "pos1": "положение 1 (начало рабочего хода)",
-        "first": "первый заданный угол, φ = {v:.4g}°",
-        "x": "x [м]", "y": "y [м]", "statics": "статика", "ccw": "против часовой стрелки",
-        "cw": "по часовой стрелке",
-        "plan_title": "{name}: план положений ({kind}, ω = {w:g} рад/с, {turn})",
-        "kind": {"crank-rocker": "кривошипно-коромысловый механизм",
-                 "crank-slider": "кривошипно-ползунный механизм"},
-        "thinned": "показано {k} из {n} строк (каждая {every}-я)",
-    },
-}
 
 
 def _text(lang):
-    try:
-        return _TEXT[lang]
-    except KeyError:
-        raise ValueError(f"lang: got {lang!r}; one of 'en', 'ru'") from None
+    """The words of these plots in ``lang`` (``plot.linkage.*``)."""
+    if lang not in ("en", "ru"):
+        raise ValueError(f"lang: got {lang!r}; one of 'en', 'ru'")
+    from crankbase.plot_texts import plot_words
+
+    return plot_words(lang, "linkage")
 
 
 def _axes(ax, w=8.0, h=5.0):

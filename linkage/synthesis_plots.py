@@ -24,67 +24,6 @@ from crankbase.tolerances import SAME_ANGLE_DEG
 __all__ = ["plot_region", "plot_mu_min_curves", "plot_transmission_angle"]
 
 #: The words of the figures; numbers come in already formatted ({l1}, {phi0} …).
-_TEXT = {
-    "en": {
-        "kkm": "KKM-{phi0}°",
-        "region_title": "Region of existence of {kkm} (μ = 90° at φ0 = {phi0}°), "
-                        "λ1max = {l1max}",
-        "fill": "region of existence of {kkm}",
-        "arc": "arc abc: unit circle (λ1 = 0)",
-        "curve": "curve cda (μmin = 0) on Kolchin's {line} {nums}",
-        "line": "line", "lines": "lines",
-        "kolchin": "Kolchin's line ({n}): {formula} for λ1 = {l1}",
-        "family": "family arc for λ1 = {l1} (R = {R})",
-        "kkm5": "{kkm} → KKM-5 (λ3 = sin φ0)",
-        "kkm7": "{kkm} → KKM-7 (λ2 = sin φ0)",
-        "chosen": "chosen mechanism: λ1 = {l1}, λ2 = {l2}, λ3 = {l3}",
-        "coupler": "coupler λ2 = l2/l0  [–]",
-        "rocker": "rocker λ3 = l3/l0  [–]",
-        "crank": "crank λ1 = l1/l0  [–]",
-        "mu_title": "{kkm}: μmin over λ1 at constant λ2 (eq. 16)",
-        "required": "required μmin ≥ {mu}°",
-        "curve_n": "{i}: λ2 = {l2}",
-        "chosen_mu": "chosen mechanism: λ1 = {l1},\nλ2 = {l2}, μmin = {mu}°",
-        "mu_min_axis": "minimum transmission angle μmin  [°]",
-        "mu_phi": "transmission angle μ(φ)",
-        "right": "μ = 90° at φ = {a}° and {b}°",
-        "min_at": "μmin = {mu}° at φ = {where}",
-        "two": "{a}° and {b}°",
-        "phi_axis": "crank angle φ from the line of centres  [°]",
-        "mu_axis": "transmission angle μ  [°]",
-        "ta_title": "{kkm}: λ1 = {l1}, λ2 = {l2}, λ3 = {l3}",
-    },
-    "ru": {
-        "kkm": "ККМ-{phi0}°",
-        "region_title": "Область существования {kkm} (μ = 90° при φ0 = {phi0}°), "
-                        "λ1max = {l1max}",
-        "fill": "область существования {kkm}",
-        "arc": "дуга abc: окружность единичного радиуса (λ1 = 0)",
-        "curve": "кривая cda (μmin = 0) на {line} Колчина {nums}",
-        "line": "прямой", "lines": "прямых",
-        "kolchin": "прямая Колчина ({n}): {formula} при λ1 = {l1}",
-        "family": "дуга семейства при λ1 = {l1} (R = {R})",
-        "kkm5": "{kkm} → ККМ-5 (λ3 = sin φ0)",
-        "kkm7": "{kkm} → ККМ-7 (λ2 = sin φ0)",
-        "chosen": "выбранный механизм: λ1 = {l1}, λ2 = {l2}, λ3 = {l3}",
-        "coupler": "шатун λ2 = l2/l0  [–]",
-        "rocker": "коромысло λ3 = l3/l0  [–]",
-        "crank": "кривошип λ1 = l1/l0  [–]",
-        "mu_title": "{kkm}: минимальный угол передачи μmin в функции λ1 при λ2 = const "
-                    "(ур. 16)",
-        "required": "требуемый μmin ≥ {mu}°",
-        "curve_n": "{i}: λ2 = {l2}",
-        "chosen_mu": "выбранный механизм: λ1 = {l1},\nλ2 = {l2}, μmin = {mu}°",
-        "mu_min_axis": "минимальный угол передачи μmin  [°]",
-        "mu_phi": "угол передачи μ(φ)",
-        "right": "μ = 90° при φ = {a}° и {b}°",
-        "min_at": "μmin = {mu}° при φ = {where}",
-        "two": "{a}° и {b}°",
-        "phi_axis": "угол поворота кривошипа φ от линии центров  [°]",
-        "mu_axis": "угол передачи μ  [°]",
-        "ta_title": "{kkm}: λ1 = {l1}, λ2 = {l2}, λ3 = {l3}",
-    },
-}
 
 #: Kolchin's three lines (Sereda 2016, eq. (1)–(3)) as λ3 = k λ2 + b(λ1): number,
 #: formula, slope k, intercept b(λ1), dash pattern (thin grey lines, told apart by dash).
@@ -100,10 +39,12 @@ _CURVE_DASHES = ("-", (0, (7, 2)), (0, (1, 1.5)), (0, (7, 2, 1.5, 2)), (0, (12, 
 
 
 def _text(lang):
-    try:
-        return _TEXT[lang]
-    except KeyError:
-        raise ValueError(f"lang: got {lang!r}; one of 'en', 'ru'") from None
+    """The words of these plots in ``lang`` (``plot.synth.*``)."""
+    if lang not in ("en", "ru"):
+        raise ValueError(f"lang: got {lang!r}; one of 'en', 'ru'")
+    from crankbase.plot_texts import plot_words
+
+    return plot_words(lang, "synth")
 
 
 def _axes(ax, size):

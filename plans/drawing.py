@@ -15,11 +15,19 @@ from .layout import (CAP_EM, FONT, H_LABEL, H_POINT, S_MAIN, S_THIN, Arrow, Bloc
                      positions_block, text_width)
 
 __all__ = ["position_blocks", "position_figure", "layout_sheets", "sheet_figure",
-           "render_items", "SHEETS", "title_fields", "TITLE_KEYS"]
+           "render_items", "SHEETS", "FORMATS", "title_fields", "TITLE_KEYS",
+           "frame_items", "fit_format"]
 
 PT = 72.0 / 25.4            # points per mm
 #: Sheet sizes, landscape (ГОСТ 2.301). [mm]
 SHEETS = {"A1": (841.0, 594.0), "A3": (420.0, 297.0)}
+#: The main formats of ГОСТ 2.301 (short side, long side). [mm]
+FORMATS = {"A4": (210.0, 297.0), "A3": (297.0, 420.0), "A2": (420.0, 594.0),
+           "A1": (594.0, 841.0)}
+#: The frame's margins (ГОСТ 2.104: 20 mm at the binding edge, 5 mm elsewhere) and the
+#: title block (form 1). [mm]
+FRAME_LEFT, FRAME_OTHER = 20.0, 5.0
+TITLE_BLOCK = (185.0, 55.0)
 #: Widths of the lines of each layer. [mm]
 WIDTH = {"FRAME": S_MAIN, "MAIN": S_MAIN, "VECTORS": S_MAIN, "LEVER": S_MAIN,
          "THIN": S_THIN, "DASHED": S_THIN, "TITLE": S_THIN, "TEXT": S_THIN}
@@ -310,16 +318,41 @@ def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
         sheets.append(sh)
     for k, sh in enumerate(sheets):
         sh.number, sh.count = k + 1, len(sheets)
-        frame = [Line(0j, complex(W, 0), "THIN"), Line(complex(W, 0), complex(W, H), "THIN"),
-                 Line(complex(W, H), complex(0, H), "THIN"), Line(complex(0, H), 0j, "THIN")]
-        fx0, fy0, fx1, fy1 = 20.0, 5.0, W - 5.0, H - 5.0
-        frame += [Line(complex(fx0, fy0), complex(fx1, fy0), "FRAME"),
-                  Line(complex(fx1, fy0), complex(fx1, fy1), "FRAME"),
-                  Line(complex(fx1, fy1), complex(fx0, fy1), "FRAME"),
-                  Line(complex(fx0, fy1), complex(fx0, fy0), "FRAME")]
-        sh.items = frame + _title_block_items(tb_left, 5.0, fields, sh.number, sh.count,
-                                              lang) + sh.items
+        sh.items = frame_items(W, H, fields, sh.number, sh.count, lang) + sh.items
     return sheets
+
+
+def frame_items(W, H, fields, number=1, count=1, lang="ru"):
+    """The sheet's edge (thin), its frame (ГОСТ 2.104: 20 mm from the left edge, 5 mm
+    from the others) and the title block (form 1, 185 × 55 mm, lower right corner) of a
+    ``W`` × ``H`` mm sheet, as layout items."""
+    frame = [Line(0j, complex(W, 0), "THIN"), Line(complex(W, 0), complex(W, H), "THIN"),
+             Line(complex(W, H), complex(0, H), "THIN"), Line(complex(0, H), 0j, "THIN")]
+    fx0, fy0, fx1, fy1 = FRAME_LEFT, FRAME_OTHER, W - FRAME_OTHER, H - FRAME_OTHER
+    frame += [Line(complex(fx0, fy0), complex(fx1, fy0), "FRAME"),
+              Line(complex(fx1, fy0), complex(fx1, fy1), "FRAME"),
+              Line(complex(fx1, fy1), complex(fx0, fy1), "FRAME"),
+              Line(complex(fx0, fy1), complex(fx0, fy0), "FRAME")]
+    return frame + _title_block_items(fx1 - TITLE_BLOCK[0], fy0, fields, number, count,
+                                      lang)
+
+
+def fit_format(width, height, gap=GAP):
+    """The smallest ГОСТ 2.301 format (A4 … A1, portrait or landscape) whose frame holds a
+    ``width`` × ``height`` mm drawing above the title block: ``(name, W, H)``.
+
+    Raises
+    ------
+    PlanError
+        The drawing is larger than A1's field.
+    """
+    for name, (a, b) in FORMATS.items():
+        for W, H in ((a, b), (b, a)):
+            if (width <= W - FRAME_LEFT - FRAME_OTHER - 2 * gap
+                    and height <= H - 2 * FRAME_OTHER - TITLE_BLOCK[1] - 2 * gap):
+                return name, W, H
+    raise PlanError(Problem("size", f"a drawing of {width:.0f} × {height:.0f} mm does not "
+                            "fit an A1 sheet; choose a coarser scale"))
 
 
 def sheet_figure(sheet):
