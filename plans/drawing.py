@@ -224,13 +224,12 @@ def _title_block_items(x0, y0, fields, number, count, lang):
     ln(155, 15, 155, 20)
     ln(140, 20, 140, 35, "THIN")
     ln(145, 20, 145, 35, "THIN")
-    ru = lang == "ru"
-    heads = (["Изм.", "Лист", "№ докум.", "Подп.", "Дата"] if ru else
-             ["Rev.", "Sheet", "Doc. No.", "Sign.", "Date"])
+    from .layout import _words
+    w = _words(lang)["tb"]
+    heads = [w["rev"], w["sheet"], w["doc"], w["sign"], w["date"]]
     for (xa, xb), s in zip(((0, 7), (7, 17), (17, 40), (40, 55), (55, 65)), heads):
         tx((xa + xb) / 2, 32.5, s, cell=xb - xa)
-    roles = (["Разраб.", "Пров.", "Т.контр.", "", "Н.контр.", "Утв."] if ru else
-             ["Drawn", "Checked", "Tech.", "", "Norm.", "Appr."])
+    roles = [w["drawn"], w["checked"], w["tech"], "", w["norm"], w["approved"]]
     names = [fields["developer"], fields["checker"], fields["tech_control"], "",
              fields["norm_control"], fields["approver"]]
     for k, (role, name) in enumerate(zip(roles, names)):
@@ -243,14 +242,13 @@ def _title_block_items(x0, y0, fields, number, count, lang):
     tx(100, 27.5, fields["title"], h=5.0, cell=70)
     tx(100, 7.5, fields["material"], h=5.0, cell=70)
     for (xa, xb), s in zip(((135, 150), (150, 167), (167, 185)),
-                           (["Лит.", "Масса", "Масштаб"] if ru else
-                            ["Lit.", "Mass", "Scale"])):
+                           (w["letter"], w["mass"], w["scale"])):
         tx((xa + xb) / 2, 37.5, s, cell=xb - xa)
     tx(142.5, 27.5, fields["letter"], h=H_POINT, cell=15)
     tx(158.5, 27.5, fields["mass"], h=H_POINT, cell=17)
     tx(176, 27.5, fields["scale"], h=H_POINT, cell=18)
-    tx(136, 17.5, f"{'Лист' if ru else 'Sheet'} {number}", ha="left", cell=19)
-    tx(156, 17.5, f"{'Листов' if ru else 'Sheets'} {count}", ha="left", cell=29)
+    tx(136, 17.5, w["sheet_n"].format(n=number), ha="left", cell=19)
+    tx(156, 17.5, w["sheets_n"].format(n=count), ha="left", cell=29)
     tx(160, 7.5, fields["organization"], h=H_POINT, cell=50)
     return items
 

@@ -229,19 +229,11 @@ def vector_label(v, lang):
     return kind + point.translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
 
 
-_TITLES = {
-    "velocity": ("План скоростей", "Velocity diagram"),
-    "acceleration": ("План ускорений", "Acceleration diagram"),
-    "force_dyad": ("План сил группы II(3,4)", "Force polygon of the dyad II(3,4)"),
-    "force_crank": ("План сил начального звена", "Force polygon of the crank"),
-    "lever": ("Рычаг Жуковского", "Zhukovsky's lever"),
-    "positions": ("План положений", "Plan of positions"),
-}
-_SCALE_UNIT = {"velocity": ("(м/с)/мм", "(m/s)/mm"), "acceleration": ("(м/с²)/мм", "(m/s²)/mm"),
-               "force_dyad": ("Н/мм", "N/mm"), "force_crank": ("Н/мм", "N/mm"),
-               "positions": ("м/мм", "m/mm")}
-_MU = {"velocity": "μV", "acceleration": "μa", "force_dyad": "μF", "force_crank": "μF",
-       "positions": "μl"}
+def _words(lang):
+    """The words of the plans drawings in ``lang`` (``plot.plans.*``)."""
+    from crankbase.plot_texts import plot_words
+
+    return plot_words(lang, "plans")
 
 
 def fmt(x, lang, digits=4):
@@ -253,7 +245,7 @@ def fmt(x, lang, digits=4):
 
 def _where(pp, lang):
     if pp.position is not None:
-        return (f"пол. {pp.position}" if lang == "ru" else f"position {pp.position}")
+        return _words(lang)["where"].format(n=pp.position)
     return f"φ = {fmt(pp.phi_deg, lang)}°"
 
 
@@ -312,10 +304,8 @@ def diagram_block(pp, kind, lang="ru") -> Block:
         lab = vector_label(v, lang)
         items.append(placer.place(_label_candidates(v.start, v.end), lab, H_LABEL))
     bbox = _items_bbox(items)
-    title, mu, unit = (_TITLES[kind][0 if lang == "ru" else 1], _MU[kind],
-                       _SCALE_UNIT[kind][0 if lang == "ru" else 1])
-    if lang == "en":
-        mu = {"μV": "kv", "μa": "ka", "μF": "kF"}[mu]
+    w = _words(lang)
+    title, mu, unit = w["title"][kind], w["mu"][kind], w["unit"][kind]
     lines = [(title, H_TITLE),
              (f"{_where(pp, lang)}, {mu} = {fmt(plan.scale, lang)} {unit}", H_POINT)]
     return _titled(items, bbox, lines, f"{pp.tag}:{kind}")
@@ -351,28 +341,20 @@ def lever_block(pp, lang="ru") -> Block:
         items.append(placer.place(cands, v.label(lang), H_LABEL))
     bbox = _items_bbox(items)
     x0, y0, x1, y1 = bbox
-    if lang == "ru":
-        res = [f"Mур (рычаг) = {fmt(L.M_lever_Nm, lang, 6)} Н·м, "
-               f"Fур = {fmt(L.balancing_force_N, lang, 6)} Н",
-               f"Mур (кинетостатика) = {fmt(L.M_kinetostatic_Nm, lang, 6)} Н·м, "
-               f"Fур = {fmt(L.F_kinetostatic_N, lang, 6)} Н",
-               f"δ = {L.difference_percent:.2e} %".replace(".", ",")]
-    else:
-        res = [f"Mb (lever) = {fmt(L.M_lever_Nm, lang, 6)} N·m, "
-               f"Fb = {fmt(L.balancing_force_N, lang, 6)} N",
-               f"Mb (kinetostatics) = {fmt(L.M_kinetostatic_Nm, lang, 6)} N·m, "
-               f"Fb = {fmt(L.F_kinetostatic_N, lang, 6)} N",
-               f"difference = {L.difference_percent:.2e} %"]
+    w = _words(lang)
+    d = f"{L.difference_percent:.2e}"
+    res = [w["lever_M"].format(M=fmt(L.M_lever_Nm, lang, 6),
+                               F=fmt(L.balancing_force_N, lang, 6)),
+           w["kinetostatic_M"].format(M=fmt(L.M_kinetostatic_Nm, lang, 6),
+                                      F=fmt(L.F_kinetostatic_N, lang, 6)),
+           w["difference"].format(d=d.replace(".", ",") if lang == "ru" else d)]
     y = y0 - 3.0
     for line in res:
         items.append(Text(complex(x0, y), line, H_LABEL, "TEXT", "left", "top"))
         y -= H_LABEL * 1.7
     bbox = _items_bbox(items)
-    title = _TITLES["lever"][0 if lang == "ru" else 1]
-    mu = "μF" if lang == "ru" else "kF"
-    unit = _SCALE_UNIT["force_crank"][0 if lang == "ru" else 1]
-    note = ("план скоростей, повёрнутый на 90° по ч. с." if lang == "ru" else
-            "velocity diagram turned 90° clockwise")
+    title, mu, unit, note = w["title"]["lever"], w["mu"]["lever"], w["unit"]["lever"], \
+        w["turned"]
     return _titled(items, bbox, [(title, H_TITLE),
                                  (f"{_where(pp, lang)}, {mu} = {fmt(L.scale, lang)} {unit}",
                                   H_POINT),
@@ -453,9 +435,8 @@ def positions_block(result, chosen, lang="ru", longest_mm=220.0) -> Block:
         items.append(placer.place([z - 6 + 2j, z + 6 + 2j, z - 6 - 1j, z + 6 - 1j], name,
                                   H_POINT))
     bbox = _items_bbox(items)
-    title = _TITLES["positions"][0 if lang == "ru" else 1]
-    mul = "μl" if lang == "ru" else "kl"
-    unit = _SCALE_UNIT["positions"][0 if lang == "ru" else 1]
+    w = _words(lang)
+    title, mul, unit = w["title"]["positions"], w["mu"]["positions"], w["unit"]["positions"]
     return _titled(items, bbox, [(title, H_TITLE), (f"{mul} = {fmt(mu, lang)} {unit}", H_POINT)],
                    "positions")
 
