@@ -304,16 +304,39 @@ def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
         raise PlanError([Problem("size", f"{size}: '{t}' does not fit the sheet's field "
                                  f"({x1 - x0:.0f} × {y1 - y0:.0f} mm); use A1 or a coarser "
                                  "scale") for t in too_big])
+    # a teacher grades one position at a time: a sheet holds the diagrams of one position,
+    # or of two when both fit together (the plan of positions joins the first sheet); a
+    # position too large for one sheet goes on as many of its own as it needs
+    corner = (tb_left - GAP, tb_top + GAP)
     sheets = []
-    rest = blocks
-    while rest:
-        placed, rest = _pack(rest, x0, y0, x1, y1, (tb_left - GAP, tb_top + GAP))
+
+    def sheet_of(group):
+        placed, rest = _pack(group, x0, y0, x1, y1, corner)
         if not placed:   # pragma: no cover - guarded by too_big
             raise PlanError(Problem("size", f"{size}: cannot place '{rest[0].title}'"))
         sh = Sheet(W, H)
         for b, dz in placed:
             sh.items += b.moved(dz)
+            sh.blocks.append(b.key)
         sheets.append(sh)
+        return rest
+
+    def fits_together(group):
+        return not _pack(group, x0, y0, x1, y1, corner)[1]
+
+    group, count = blocks[:1], 0                       # the plan of positions
+    for k in range(len(plans)):
+        mine = blocks[1 + 5 * k: 6 + 5 * k]
+        if count < 2 and fits_together(group + mine):
+            group, count = group + mine, count + 1
+            continue
+        while group:
+            group = sheet_of(group)
+        group, count = mine, 1
+        while not fits_together(group):                # a position over several sheets
+            group = sheet_of(group)
+    while group:
+        group = sheet_of(group)
     for k, sh in enumerate(sheets):
         sh.number, sh.count = k + 1, len(sheets)
         sh.items = frame_items(W, H, fields, sh.number, sh.count, lang) + sh.items

@@ -449,3 +449,5 @@ class Sheet:
     items: list = field(default_factory=list)
     number: int = 1
     count: int = 1
+    #: Keys of the diagrams on the sheet (``"<tag>:velocity"``, ``"positions"`` …).
+    blocks: list = field(default_factory=list)
