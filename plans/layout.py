@@ -308,7 +308,26 @@ def diagram_block(pp, kind, lang="ru") -> Block:
     title, mu, unit = w["title"][kind], w["mu"][kind], w["unit"][kind]
     lines = [(title, H_TITLE),
              (f"{_where(pp, lang)}, {mu} = {fmt(plan.scale, lang)} {unit}", H_POINT)]
+    if kind.startswith("force") and _degenerate(plan.vectors):
+        lines.append((w["degenerate"], H_LABEL))
     return _titled(items, bbox, lines, f"{pp.tag}:{kind}")
+
+
+def _degenerate(vectors, ratio=0.06):
+    """A force polygon near a dead position: its vectors' extent across is under
+    ``ratio`` of its extent along (a sliver whose labels crowd along one line)."""
+    import numpy as np
+
+    z = np.array([p for v in vectors for p in (v.start, v.end)], complex)
+    if len(z) < 2:
+        return False
+    z = z - z.mean()
+    # principal directions of the points: the extents along and across
+    m = np.array([[np.mean(z.real ** 2), np.mean(z.real * z.imag)],
+                  [np.mean(z.real * z.imag), np.mean(z.imag ** 2)]])
+    _, vec = np.linalg.eigh(m)
+    along = z * complex(vec[0, 1], -vec[1, 1])
+    return float(np.ptp(along.imag)) < ratio * max(float(np.ptp(along.real)), 1e-9)
 
 
 def lever_block(pp, lang="ru") -> Block:
