@@ -304,39 +304,57 @@ def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
         raise PlanError([Problem("size", f"{size}: '{t}' does not fit the sheet's field "
                                  f"({x1 - x0:.0f} × {y1 - y0:.0f} mm); use A1 or a coarser "
                                  "scale") for t in too_big])
-    # a teacher grades one position at a time: a sheet holds the diagrams of one position,
-    # or of two when both fit together (the plan of positions joins the first sheet); a
-    # position too large for one sheet goes on as many of its own as it needs
+    # a teacher grades one position at a time: a sheet holds one position's diagrams, or
+    # two positions side by side, each in its half (the plan of positions joins the
+    # first); a position too large for one sheet goes on as many of its own as it needs
     corner = (tb_left - GAP, tb_top + GAP)
+    xm = (x0 + x1) / 2
     sheets = []
 
-    def sheet_of(group):
-        placed, rest = _pack(group, x0, y0, x1, y1, corner)
-        if not placed:   # pragma: no cover - guarded by too_big
-            raise PlanError(Problem("size", f"{size}: cannot place '{rest[0].title}'"))
+    def pack(group, xa, xb):
+        return _pack(group, xa, y0, xb, y1, corner)
+
+    def fits_in(group, xa, xb):
+        return not pack(group, xa, xb)[1]
+
+    def make(parts):
+        """A sheet of ``parts`` [(blocks, x from, x to)]; returns the blocks left over."""
         sh = Sheet(W, H)
-        for b, dz in placed:
-            sh.items += b.moved(dz)
-            sh.blocks.append(b.key)
+        left = []
+        for group, xa, xb in parts:
+            placed, rest = pack(group, xa, xb)
+            if not placed:   # pragma: no cover - guarded by too_big
+                raise PlanError(Problem("size", f"{size}: cannot place '{rest[0].title}'"))
+            for b, dz in placed:
+                sh.items += b.moved(dz)
+                sh.blocks.append(b.key)
+            left += rest
         sheets.append(sh)
-        return rest
+        return left
 
-    def fits_together(group):
-        return not _pack(group, x0, y0, x1, y1, corner)[1]
-
-    group, count = blocks[:1], 0                       # the plan of positions
-    for k in range(len(plans)):
+    pending = blocks[:1]                               # the plan of positions
+    k = 0
+    while k < len(plans):
         mine = blocks[1 + 5 * k: 6 + 5 * k]
-        if count < 2 and fits_together(group + mine):
-            group, count = group + mine, count + 1
-            continue
-        while group:
-            group = sheet_of(group)
-        group, count = mine, 1
-        while not fits_together(group):                # a position over several sheets
-            group = sheet_of(group)
-    while group:
-        group = sheet_of(group)
+        nxt = blocks[6 + 5 * k: 11 + 5 * k]
+        if fits_in(pending + mine, x0, x1):
+            if nxt and fits_in(pending + mine, x0, xm) and fits_in(nxt, xm, x1):
+                make([(pending + mine, x0, xm), (nxt, xm, x1)])
+                k += 2
+            else:
+                make([(pending + mine, x0, x1)])
+                k += 1
+            pending = []
+        elif pending:                                  # the plan of positions alone
+            while pending:
+                pending = make([(pending, x0, x1)])
+        else:                                          # one position over several sheets
+            rest = mine
+            while rest:
+                rest = make([(rest, x0, x1)])
+            k += 1
+    while pending:
+        pending = make([(pending, x0, x1)])
     for k, sh in enumerate(sheets):
         sh.number, sh.count = k + 1, len(sheets)
         sh.items = frame_items(W, H, fields, sh.number, sh.count, lang) + sh.items

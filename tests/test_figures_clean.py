@@ -2,6 +2,7 @@
 bundled example, in both languages, built through the library's plot functions (no file
 written) and checked by :func:`figure_check.figure_problems`: texts against texts, against
 the figure's edge and against the drawn lines."""
+import re
 import sys
 from pathlib import Path
 
@@ -157,6 +158,27 @@ EXAMPLES = {
 }
 
 
+CYRILLIC = re.compile("[\u0400-\u04FF]")
+MATH = re.compile(r"\$[^$]*\$")
+
+
+def _word_problems(fig, lang):
+    """Words no figure may show: a literal underscore outside mathtext ("M_d": #23), and
+    in English a Cyrillic letter."""
+    from matplotlib.text import Text
+
+    out = []
+    for t in fig.findobj(Text):
+        s = t.get_text()
+        if not s or not t.get_visible():
+            continue
+        if "_" in MATH.sub("", s):
+            out.append(f"literal underscore: {s!r}")
+        if lang == "en" and CYRILLIC.search(s):
+            out.append(f"Cyrillic in an English figure: {s!r}")
+    return out
+
+
 @pytest.fixture(scope="module", params=list(EXAMPLES))
 def example(request):
     make, edge = EXAMPLES[request.param]
@@ -171,5 +193,6 @@ def test_nothing_overlaps_nothing_is_cut(example, lang):
     found = []
     for stem, fig in figs.items():
         found += [f"{name} [{lang}] {stem}: {p}" for p in figure_problems(fig, edge=edge)]
+        found += [f"{name} [{lang}] {stem}: {p}" for p in _word_problems(fig, lang)]
         fig.clear()
     assert not found, "\n".join(found[:60]) + f"\n({len(found)} problems)"
