@@ -45,19 +45,19 @@ def _paper(width_mm, height_mm, spec, lang):
     left, right, bottom, top = _MARGIN_MM
     name, W, H = fit_format(width_mm + left + right, height_mm + bottom + top)
     fig = Figure(figsize=(W / 25.4, H / 25.4))
-    sheet = fig.add_axes((0, 0, 1, 1))
+    # the drawing in the middle of the field above the title block (the first axes)
+    x_free = W - 20.0 - 5.0
+    y_free = H - 10.0 - 55.0
+    x0 = 20.0 + (x_free - (width_mm + left + right)) / 2 + left
+    y0 = 5.0 + 55.0 + (y_free - (height_mm + bottom + top)) / 2 + bottom
+    ax = fig.add_axes([x0 / W, y0 / H, width_mm / W, height_mm / H])
+    sheet = fig.add_axes((0, 0, 1, 1), zorder=-1)       # frame and title block, beneath
     sheet.set_xlim(0, W)
     sheet.set_ylim(0, H)
     sheet.set_axis_off()
     fields = {k: "" for k in TITLE_KEYS}
     fields.update(title=spec.name, scale="1:1")
     render_items(sheet, frame_items(W, H, fields, 1, 1, lang))
-    # the drawing in the middle of the field above the title block
-    x_free = W - 20.0 - 5.0
-    y_free = H - 10.0 - 55.0
-    x0 = 20.0 + (x_free - (width_mm + left + right)) / 2 + left
-    y0 = 5.0 + 55.0 + (y_free - (height_mm + bottom + top)) / 2 + bottom
-    ax = fig.add_axes([x0 / W, y0 / H, width_mm / W, height_mm / H])
     fig.format_name = name
     return fig, ax
 

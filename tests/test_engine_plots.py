@@ -127,7 +127,7 @@ def test_drawings_are_on_a_gost_format_at_the_stated_scale(name):
     for stem, fig in drawing_figures(result, "ru").items():
         w, h = (float(v) * 25.4 for v in fig.get_size_inches())
         assert tuple(sorted((round(w, 6), round(h, 6)))) in GOST_FORMATS, (stem, w, h)
-        ax = fig.axes[-1]                                 # the drawing (the sheet first)
+        ax = fig.axes[0]                                  # the drawing, then the sheet
         pos = ax.get_position()
         x0, x1 = ax.get_xlim()
         y0, y1 = sorted(ax.get_ylim())
@@ -139,7 +139,7 @@ def test_drawings_are_on_a_gost_format_at_the_stated_scale(name):
                                                      else "N_N")
         np.testing.assert_allclose(curve, result.curves[col].to_numpy() / mu_p)
         # the frame and the title block of the plans sheet: its edge is the sheet's
-        sheet = fig.axes[0]
+        sheet = fig.axes[1]
         assert sheet.get_xlim()[1] == pytest.approx(w)
         assert any(t.get_text() == result.spec.name for t in sheet.texts)
         fig.clear()
