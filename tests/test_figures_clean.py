@@ -196,3 +196,33 @@ def test_nothing_overlaps_nothing_is_cut(example, lang):
         found += [f"{name} [{lang}] {stem}: {p}" for p in _word_problems(fig, lang)]
         fig.clear()
     assert not found, "\n".join(found[:60]) + f"\n({len(found)} problems)"
+
+
+def test_the_check_finds_each_kind_of_fault():
+    """The checker itself: two texts on top of each other, a text over a curve, an axis
+    line through a text, a text cut at the edge; a clean figure has none."""
+    from matplotlib.figure import Figure
+
+    def fig_with(draw):
+        fig = Figure(figsize=(4, 3))
+        ax = fig.add_axes((0.15, 0.15, 0.8, 0.75))
+        ax.set_xlim(0, 10)
+        ax.set_ylim(0, 10)
+        draw(ax)
+        return fig
+
+    clean = fig_with(lambda ax: (ax.plot([0, 10], [1, 1]), ax.text(5, 5, "free")))
+    assert figure_problems(clean) == []
+    both = fig_with(lambda ax: (ax.text(5, 5, "one"), ax.text(5.1, 5.05, "two")))
+    assert any(p.startswith("overlap") for p in figure_problems(both))
+    curve = fig_with(lambda ax: (ax.plot([0, 10], [5.1, 5.1]),
+                                 ax.text(5, 5, "label", va="center")))
+    assert any(p.startswith("crossed") for p in figure_problems(curve))
+    axis = fig_with(lambda ax: (ax.axvline(5.2), ax.text(5, 5, "label", va="center")))
+    assert any("crossed" in p for p in figure_problems(axis))
+    edge = fig_with(lambda ax: ax.annotate("far too long a text for this small figure",
+                                           (9, 9)))
+    assert any(p.startswith("cut") for p in figure_problems(edge))
+    gap = fig_with(lambda ax: (ax.plot([0, 4, float("nan"), 6, 10], [5.1] * 5),
+                               ax.text(5, 5, "x", va="center")))
+    assert figure_problems(gap) == []                  # a broken line under a label
