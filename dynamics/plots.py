@@ -1,6 +1,7 @@
 """Plots of the machine dynamics (matplotlib OO API; each draws on a given Axes and returns
 it).  They only consume computed results.  ``lang="ru"`` uses the Russian textbook
-symbols (Jп, Mд, Mс, ΔT, ω, δ), ``lang="en"`` the English ones (J_red, M_d, M_c, ΔE)."""
+symbols (Jп, Mд, Mс, ΔT, ω, δ), ``lang="en"`` the English ones set as mathtext (Jred, Md,
+Mc, ΔE); the words are the ``plot.dynamics.*`` texts (:mod:`crankbase.plot_texts`)."""
 from __future__ import annotations
 
 import numpy as np
@@ -12,28 +13,15 @@ __all__ = ["plot_inertia", "plot_moments", "plot_wittenbauer", "plot_omega", "pl
 #: for a linkage or an engine), in order.
 PLOT_NAMES = ("inertia", "moments", "wittenbauer", "omega", "startup", "forces_true_motion")
 
-_T = {
-    "ru": {"phi": "φ, °", "J": "Jп, кг·м²", "dJ": "dJп/dφ, кг·м²", "Md": "Mд", "Mc": "Mс",
-           "M": "M, Н·м", "dE": "ΔT, Дж", "w": "ω, рад/с", "t": "t, с",
-           "t_J": "Приведённый момент инерции", "t_M": "Приведённые моменты",
-           "t_W": "Диаграмма энергомасс (Виттенбауэр)", "t_w": "Угловая скорость звена "
-           "приведения", "t_s": "Разгон из состояния покоя", "wmax": "ωmax", "wmin": "ωmin",
-           "wm": "ωср", "true": "при истинном движении", "const": "при ω = const",
-           "t_F": "Уравновешивающий момент Mур", "Mur": "Mур, Н·м", "steady": "уст. режим",
-           "R12": "R12, Н", "t_R": "Реакция в опоре кривошипа R12",
-           "Mkr": "Mкр, Н·м", "t_Mkr": "Крутящий момент цилиндра Mкр",
-           "Rpin": "Rшш, Н", "t_Rpin": "Нагрузка на шатунную шейку Rшш"},
-    "en": {"phi": "φ [deg]", "J": "J_red [kg·m²]", "dJ": "dJ_red/dφ [kg·m²]", "Md": "M_d",
-           "Mc": "M_c", "M": "M [N·m]", "dE": "ΔE [J]", "w": "ω [rad/s]", "t": "t [s]",
-           "t_J": "Reduced moment of inertia", "t_M": "Reduced moments",
-           "t_W": "Energy–inertia (Wittenbauer) diagram", "t_w": "Speed of the crank",
-           "t_s": "Start-up from rest", "wmax": "ω_max", "wmin": "ω_min", "wm": "ω_m",
-           "true": "true motion", "const": "ω = const", "t_F": "Balancing (driving) moment",
-           "Mur": "M_b [N·m]", "steady": "steady band", "R12": "R12 [N]",
-           "t_R": "Crank bearing reaction R12", "Mkr": "M [N·m]",
-           "t_Mkr": "Torque of cylinder 1", "Rpin": "$R_{cp}$ [N]",
-           "t_Rpin": "Crank-pin load of cylinder 1"},
-}
+
+
+def _words(lang):
+    """The words of the dynamics plots in ``lang`` (``plot.dynamics.*``)."""
+    from crankbase.plot_texts import plot_words
+
+    if lang not in ("ru", "en"):
+        raise KeyError(lang)
+    return plot_words(lang, "dynamics")
 
 
 def _ax(ax, size=(7, 4)):
@@ -50,7 +38,7 @@ def _phi(motion):
 
 def plot_inertia(motion, ax=None, lang="en"):
     """J_red(φ) (with the flywheel) and dJ_red/dφ on a twin axis."""
-    L = _T[lang]
+    L = _words(lang)
     ax = _ax(ax)
     x = _phi(motion)
     ax.plot(x, motion.table["J_red_kgm2"], "k-", lw=1.5, label=L["J"].split(",")[0].split(" [")[0])
@@ -70,7 +58,7 @@ def plot_inertia(motion, ax=None, lang="en"):
 
 def plot_moments(motion, ax=None, lang="en"):
     """The reduced driving and resisting moments over the cycle."""
-    L = _T[lang]
+    L = _words(lang)
     ax = _ax(ax)
     x = _phi(motion)
     ax.plot(x, motion.table["M_drive_Nm"], "k-", lw=1.5, label=L["Md"])
@@ -87,7 +75,7 @@ def plot_moments(motion, ax=None, lang="en"):
 def plot_wittenbauer(motion, ax=None, lang="en"):
     """ΔE = ∫(M_d − M_c)dφ against J_red: the energy–inertia curve; the steady motion's
     ω_max and ω_min are the slopes tan ψ = ω²/2 of its two tangents (drawn dashed)."""
-    L = _T[lang]
+    L = _words(lang)
     ax = _ax(ax, (6, 5))
     J = motion.table["J_red_kgm2"].to_numpy()
     W = motion.table["W_J"].to_numpy()
@@ -116,7 +104,7 @@ def plot_wittenbauer(motion, ax=None, lang="en"):
 
 def plot_omega(motion, ax=None, lang="en"):
     """ω(φ) with the ω_max, ω_min and ω_m lines and δ in the title."""
-    L = _T[lang]
+    L = _words(lang)
     ax = _ax(ax)
     x = _phi(motion)
     ax.plot(x, motion.table["omega_rad_s"], "k-", lw=1.5, label="ω")
@@ -135,7 +123,7 @@ def plot_omega(motion, ax=None, lang="en"):
 
 def plot_startup(startup, motion=None, ax=None, lang="en"):
     """ω(t) from rest, with the steady band ω_min…ω_max."""
-    L = _T[lang]
+    L = _words(lang)
     ax = _ax(ax)
     t = startup.table
     ax.plot(t["t_s"], t["omega_rad_s"], "k-", lw=1.2, label="ω(t)")
@@ -151,7 +139,7 @@ def plot_startup(startup, motion=None, ax=None, lang="en"):
 
 def plot_true_forces(forces, column="M_drive_Nm", ax=None, lang="en"):
     """A force column of the core under the true motion against constant speed."""
-    L = _T[lang]
+    L = _words(lang)
     ax = _ax(ax)
     x = forces["phi_deg" if "phi_deg" in forces else "alpha_deg"].to_numpy()
     order = np.argsort(np.mod(x, 360.0)) if "phi_deg" in forces else np.arange(len(x))

@@ -216,10 +216,10 @@ _L = {"ru": {"phi": "φ, °", "F": "Fин, Н", "b": "до уравновеши�
              "a": "после уравновешивания", "t": "Главный вектор сил инерции",
              "loc": "Годограф главного вектора сил инерции", "x": "Fx, Н", "y": "Fy, Н",
              "zero": "после уравновешивания: Fин = 0"},
-      "en": {"phi": "φ [deg]", "F": "F_sh [N]", "b": "before balancing",
+      "en": {"phi": "φ [deg]", "F": "$F_{sh}$ [N]", "b": "before balancing",
              "a": "after balancing", "t": "Shaking force", "loc": "Shaking force locus",
-             "x": "F_x [N]", "y": "F_y [N]",
-             "zero": "after balancing: F_sh = 0"}}
+             "x": "$F_x$ [N]", "y": "$F_y$ [N]",
+             "zero": "after balancing: $F_{sh}$ = 0"}}
 
 
 def plot_shaking_force(result: BalanceResult, ax=None, lang="en"):

@@ -12,53 +12,22 @@ from __future__ import annotations
 
 import numpy as np
 
+from .symbols import sym
+
 __all__ = ["plot_pin_polar", "plot_journal_polar", "plot_developed_loads", "plot_wear",
            "plot_journal_torques",
            "plot_rod_model", "plot_big_end", "plot_piston_pin", "bearing_figures",
            "BEARING_PLOT_NAMES"]
 
-_TXT = {
-    "ru": dict(pin="Полярная диаграмма нагрузки на шатунную шейку {k}",
-               journal="Полярная диаграмма нагрузки на коренную шейку {k}",
-               frame_j="(система координат кривошипа {k})",
-               T="T, кН", K="K, кН", R="R, кН", kN="кН", Nm="Н·м",
-               wear="Диаграмма износа: {name}", hole="масляное отверстие",
-               wear_note="износ ∝ ∫R dα по дуге ±{h:g}°;\nсистема координат кривошипа: "
-                         "0° — {zero}, углы по направлению вращения (по часовой)",
-               axis={"pin": "к оси вала O", "journal": "от кривошипа (кривошип — 180°)"},
-               tq="Крутящие моменты, передаваемые коренными шейками",
-               dev="Развёрнутые диаграммы нагрузок", dev_pin="шатунная шейка",
-               dev_j="коренная шейка",
-               Mj="Mк.ш {j}", M="Mк.ш, Н·м", alpha="α, ° п.к.в.",
-               rod="Жёсткий шатун минус двухмассовая модель",
-               dN="ΔT, ΔK, ΔRшш, Н", exact="обе модели с точной кинематикой",
-               kgm2="кг·м²", dM="ΔMкр = ΔT·R, Н·м",
-               be="Нагрузка на подшипник нижней головки шатуна (система шатуна)",
-               along="вдоль шатуна (+ к поршневому пальцу), кН", across="поперёк, кН",
-               pp="Нагрузка на поршневой палец", Pp="Pп = ΔPг + Pj.п", N="N",
-               Ppm="|Rп.п|", mean="ср", names={"pin": "шатунная шейка",
-                                                "journal": "коренная шейка"}),
-    "en": dict(pin="Polar diagram of the load on crank pin {k}",
-               journal="Polar diagram of the load on main journal {k}",
-               frame_j="(crank frame of throw {k})",
-               T="T, kN", K="K, kN", R="R, kN", kN="kN", Nm="N·m",
-               wear="Wear diagram: {name}", hole="oil hole",
-               wear_note="wear ∝ ∫R dα over an arc of ±{h:g}°;\ncrank frame: 0° {zero}, "
-                         "angles in the direction of rotation (clockwise)",
-               axis={"pin": "towards the shaft axis O",
-                     "journal": "away from the crank (the crank at 180°)"},
-               tq="Torques carried by the main journals",
-               dev="Developed load diagrams", dev_pin="crank pin", dev_j="main journal",
-               Mj="M journal {j}", M="M, N·m", alpha="α, crank deg",
-               rod="Rigid rod minus the two-mass model",
-               dN="ΔT, ΔK, ΔR, N", exact="both with exact kinematics",
-               kgm2="kg·m²", dM="ΔM = ΔT·R, N·m",
-               be="Load on the big-end bearing (rod frame)",
-               along="along the rod (+ towards the piston pin), kN", across="across, kN",
-               pp="Load on the piston pin", Pp="Pp = ΔPg + Pj,piston", N="N",
-               Ppm="|Rpp|", mean="mean", names={"pin": "crank pin",
-                                                "journal": "main journal"}),
-}
+
+def _words(lang):
+    """The words of the bearing plots in ``lang`` (``plot.bearing.*``)."""
+    from crankbase.plot_texts import plot_words
+
+    from .plots import engine_words
+    engine_words(lang)                                   # an unknown language: a spec error
+    return plot_words(lang, "bearing")
+
 
 #: Line styles told apart in black-and-white print.
 _STYLES = [dict(ls="-", marker=None), dict(ls="--", marker=None), dict(ls="-.", marker=None),
@@ -88,10 +57,10 @@ def _polar(ax, a, T, K, R, title, lang, stats, cycle, Kr=0.0):
     load's magnitude from the result's table (the plot computes no load). [N]"""
     from .plots import draw_polar
 
-    t = _TXT[lang]
+    t = _words(lang)
     draw_polar(ax, a, np.asarray(T) * 1e-3, (np.asarray(K) - Kr) * 1e-3,
                np.asarray(R) * 1e-3, Kr * 1e-3, cycle,
-               None if Kr == 0.0 else "Oш" if lang == "ru" else "Or",
+               None if Kr == 0.0 else sym("pole_R", lang),
                "R", t["kN"])
     ax.set_xlabel(t["T"])
     ax.set_ylabel(t["K"])
@@ -110,7 +79,7 @@ def plot_pin_polar(result, ax=None, lang="ru", throw=1, short=False):
     p = loads.crankpins
     cyc = _cycle(loads)
     kr = 0.0 if loads.Kr_throw is None else float(loads.Kr_throw[throw - 1])
-    t = _TXT[lang]
+    t = _words(lang)
     title = f"{t['dev_pin']} {throw}" if short else t["pin"].format(k=throw)
     return _polar(ax, p["alpha_deg"].to_numpy(), p[f"T_{throw}_N"], p[f"K_{throw}_N"],
                   p[f"R_{throw}_N"], title, lang, loads.pin_stats[throw - 1], cyc, kr)
@@ -123,7 +92,7 @@ def plot_journal_polar(result, ax=None, lang="ru", journal=1, short=False):
     ax = _axes(ax)
     j = loads.journals
     k = loads.shaft.frame_throw()[journal - 1] + 1
-    t = _TXT[lang]
+    t = _words(lang)
     title = (f"{t['dev_j']} {journal} " if short else t["journal"].format(k=journal) + " ") \
         + t["frame_j"].format(k=k)
     return _polar(ax, j["alpha_deg"].to_numpy(), j[f"T_{journal}_N"], j[f"K_{journal}_N"],
@@ -139,7 +108,7 @@ def plot_developed_loads(result, ax=None, lang="ru", which="journals"):
     """Developed diagrams R(α) of every crank pin (``which="pins"``) or main journal, with
     their cycle means (thin lines of the same style)."""
     loads = getattr(result, "loads", result)
-    t = _TXT[lang]
+    t = _words(lang)
     ax = _axes(ax, (10, 6.4), bottom=0.27)
     df = loads.crankpins if which == "pins" else loads.journals
     stats = loads.pin_stats if which == "pins" else loads.journal_stats
@@ -167,7 +136,7 @@ def plot_wear(diagram, ax=None, lang="ru", note=True):
     """Wear diagram on the journal's circle: the wear drawn inwards from the circle
     (depth ∝ wear, the largest at 40 % of the radius), the oil-hole direction marked;
     ``note``: the method and the frame written under it (a grid writes it once)."""
-    t = _TXT[lang]
+    t = _words(lang)
     ax = _axes(ax, (7, 7.4))
     phi = np.append(diagram.phi_deg, diagram.phi_deg[0] + 360.0)
     w = np.append(diagram.wear, diagram.wear[0])
@@ -186,13 +155,9 @@ def plot_wear(diagram, ax=None, lang="ru", note=True):
         ax.text(tx, ty, f"{ang}°", ha="center", va="center", fontsize=7, color="0.3")
     hole = diagram.oil_hole_deg
     hx, hy = _xy(hole, 1.0)
-    tx, ty = _xy(hole + 14.0, 1.36)
-    ax.annotate(f"{t['hole']}\n{hole:g}°", xy=(hx, hy), xytext=(tx, ty),
-                ha="center", va="center", fontsize=9, color="C3",
-                bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.85),
-                arrowprops=dict(arrowstyle="-|>", color="C3", lw=1.4))
     ax.plot([0, 0.62 * hx], [0, 0.62 * hy], color="C3", lw=1.0, ls="--")
     ax.plot([0], [0], "ko", ms=3)
+    ax.plot([hx], [hy], marker=(3, 0, 180 - hole), ms=7, color="C3", ls="none")
     ox, oy = _xy(0.0, 1.42)
     ax.annotate("", xy=(ox, oy - 0.08), xytext=(ox, oy + 0.12),
                 arrowprops=dict(arrowstyle="-|>", color="0.3", lw=1.0))
@@ -204,6 +169,7 @@ def plot_wear(diagram, ax=None, lang="ru", note=True):
     ax.set_ylim(-1.65, 1.65)
     ax.axis("off")
     ax.set_title(t["wear"].format(name=f"{t['names'].get(kind, kind)} {num}"), fontsize=11)
+    _hole_label(ax, f"{t['hole']} {hole:g}°", hole)
     if not note:
         return ax
     text = t["wear_note"].format(h=diagram.half_angle_deg, zero=t["axis"].get(kind, ""))
@@ -212,10 +178,36 @@ def plot_wear(diagram, ax=None, lang="ru", note=True):
     return ax
 
 
+def _hole_label(ax, text, hole):
+    """The oil hole's name outside the ring of angle labels, in the hole's direction (as
+    near as it is free): never over the wear, the circle or a label."""
+    from .plot_labels import Obstacles, place_label, renderer_of
+
+    r = renderer_of(ax.figure)
+    ax.apply_aspect()
+    tr = ax.transData.transform
+    bb = ax.get_window_extent()
+    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+    for txt in ax.texts:
+        e = txt.get_window_extent(r)
+        obs.boxes.append((e.x0, e.y0, e.x1, e.y1))
+    for line in ax.lines:
+        obs.add_line(tr(line.get_xydata()))
+    for ann in ax.texts:
+        if getattr(ann, "arrow_patch", None) is not None:
+            obs.add_segment(tr(ann.xy), tr(ann.xyann))
+    anchor = tr([_xy(hole, 1.1)])[0]
+    normal = np.array(_xy(hole, 1.0)) * (1, 1)
+    t = place_label(ax, obs, anchor, text, normal=normal, gaps_pt=(6, 10, 16, 24),
+                    fontsize=8.5, color="C3", gid="oil-hole")
+    if t is None:                  # no room beside the ring: under the title
+        ax.set_title(ax.get_title() + f"\n{text}", fontsize=10)
+
+
 def plot_journal_torques(result, ax=None, lang="ru"):
     """Torques carried by the main journals over the crank angle, one line style each."""
     loads = getattr(result, "loads", result)
-    t = _TXT[lang]
+    t = _words(lang)
     ax = _axes(ax, (10, 6.0), bottom=0.2)
     df = loads.journal_torques
     a = df["alpha_deg"].to_numpy()
@@ -236,12 +228,12 @@ def plot_journal_torques(result, ax=None, lang="ru"):
 
 def plot_rod_model(comparison, ax=None, lang="ru"):
     """ΔT, ΔK, ΔRшш (rigid − two-mass) over α; the right axis reads ΔT as ΔMкр = ΔT·R."""
-    t = _TXT[lang]
+    t = _words(lang)
     ax = _axes(ax, (10, 5.6), right=0.9)
     df = comparison.table
     a = df["alpha_deg"].to_numpy()
     for col, lab, st in (("dT_N", "ΔT", _STYLES[0]), ("dK_N", "ΔK", _STYLES[1]),
-                         ("dR_N", "ΔRшш" if lang == "ru" else "ΔR", _STYLES[2])):
+                         ("dR_N", f"Δ{sym('R', lang)}", _STYLES[2])):
         ax.plot(a, df[col], color="k", lw=1.1, label=lab, **st)
     ax.axhline(0, color="k", lw=0.6)
     ax.set_xlim(a[0], a[-1])
@@ -262,7 +254,7 @@ def plot_rod_model(comparison, ax=None, lang="ru"):
 
 def plot_big_end(result, ax=None, lang="ru"):
     """Polar diagram of the big-end bearing load in the rod frame."""
-    t = _TXT[lang]
+    t = _words(lang)
     ax = _axes(ax)
     df = result.rod_bearings
     x, y = df["Rbe_across_N"].to_numpy() * 1e-3, df["Rbe_along_N"].to_numpy() * 1e-3
@@ -270,14 +262,13 @@ def plot_big_end(result, ax=None, lang="ru"):
     ax.plot(x, y, color="C0", lw=1.2)
     labels = np.arange(0.0, _cycle(result.loads), 30.0)
     lx, ly = np.interp(labels, a, x), np.interp(labels, a, y)
-    ax.plot(lx, ly, "o", ms=3, color="C0")
-    for ang, u, v in zip(labels, lx, ly):
-        ax.annotate(f"{ang:g}", (u, v), xytext=(3, 3), textcoords="offset points",
-                    fontsize=7, color="0.25")
+    ax.plot(lx, ly, "o", ms=3, color="C0", gid="alpha-marker")
     ax.plot([0], [0], "ks", ms=4)
     ax.axhline(0, color="k", lw=0.7)
     ax.axvline(0, color="k", lw=0.7)
     ax.set_aspect("equal", adjustable="datalim")
+    from .plots import label_alpha_points
+    label_alpha_points(ax, x, y, a, labels, lx, ly, ms=3)
     ax.set_xlabel(t["across"])
     ax.set_ylabel(t["along"])
     ax.grid(True, lw=0.4, alpha=0.6)
@@ -287,7 +278,7 @@ def plot_big_end(result, ax=None, lang="ru"):
 
 def plot_piston_pin(result, ax=None, lang="ru"):
     """Piston-pin load over α: axial Pп, side N and magnitude."""
-    t = _TXT[lang]
+    t = _words(lang)
     ax = _axes(ax, (10, 5.6))
     df = result.rod_bearings
     a = df["alpha_deg"].to_numpy()
@@ -360,7 +351,7 @@ def bearing_figures(analysis, lang="ru"):
         which="pins")
     fig("developed_journals", plot_developed_loads, analysis, size=(10, 6.4), bottom=0.27)
     pins, jw = _wears(analysis.pin_wear), _wears(analysis.journal_wear)
-    t = _TXT[lang]
+    t = _words(lang)
     for stem, diagrams, kind in (("wear_pins", pins, "pin"), ("wear_journals", jw, "journal")):
         grid(stem, len(diagrams), (4.8, 5.0),
              lambda ax, k, d=diagrams: plot_wear(d[k - 1], ax=ax, lang=lang, note=False))

@@ -2,9 +2,11 @@
 
 A student transfers Table 2 onto millimetre paper: forces at μP [N/mm] (``table.
 force_scale_N_per_mm``), crank angles at μα [°/mm].  These figures are drawn 1:1 in
-millimetres of that drawing — the figure is exactly as large as the drawing, the axes are
-labelled in mm, with a millimetre grid (1 mm, 5 mm and 10 mm lines) — so a PDF printed at
-100 % lies on the student's sheet, and the scales are stated in the title.  They only
+millimetres of that drawing — each on a sheet of a ГОСТ 2.301 format (A4 … A1, the
+smallest that holds it) with the frame and title block of the plans sheet, the axes
+labelled in mm, with a millimetre grid in neutral greys under the curves (1 mm, 5 mm and
+10 mm lines) — so a PDF printed at 100 % is the student's sheet, and the scales are stated
+in the title.  They only
 consume a computed force table; nothing is computed here but the division by the scales.
 matplotlib object-oriented API.
 """
@@ -30,25 +32,51 @@ def default_mu_alpha(spec):
     return spec.cycle_deg / ALPHA_AXIS_MM
 
 
-def _paper(width_mm, height_mm):
-    """A figure exactly ``width_mm`` × ``height_mm`` of drawing plus margins, and an axes
-    whose data units are millimetres of the drawing."""
+def _paper(width_mm, height_mm, spec, lang):
+    """A sheet of a ГОСТ 2.301 format (A4 … A1, either orientation, the smallest that
+    holds it) with its frame and title block (:func:`plans.drawing.frame_items`, the
+    plans sheet's), and an axes of ``width_mm`` × ``height_mm`` above the title block
+    whose data units are millimetres of the drawing (1 data unit = 1 mm of paper).
+    The figure is exactly the sheet's size, so the PDF prints at 100 %."""
     from matplotlib.figure import Figure
 
+    from plans.drawing import TITLE_KEYS, fit_format, frame_items, render_items
+
     left, right, bottom, top = _MARGIN_MM
-    W, H = width_mm + left + right, height_mm + bottom + top
+    name, W, H = fit_format(width_mm + left + right, height_mm + bottom + top)
     fig = Figure(figsize=(W / 25.4, H / 25.4))
-    ax = fig.add_axes([left / W, bottom / H, width_mm / W, height_mm / H])
+    # the drawing in the middle of the field above the title block (the first axes)
+    x_free = W - 20.0 - 5.0
+    y_free = H - 10.0 - 55.0
+    x0 = 20.0 + (x_free - (width_mm + left + right)) / 2 + left
+    y0 = 5.0 + 55.0 + (y_free - (height_mm + bottom + top)) / 2 + bottom
+    ax = fig.add_axes([x0 / W, y0 / H, width_mm / W, height_mm / H])
+    sheet = fig.add_axes((0, 0, 1, 1), zorder=-1)       # frame and title block, beneath
+    sheet.set_xlim(0, W)
+    sheet.set_ylim(0, H)
+    sheet.set_axis_off()
+    fields = {k: "" for k in TITLE_KEYS}
+    fields.update(title=spec.name, scale="1:1")
+    render_items(sheet, frame_items(W, H, fields, 1, 1, lang))
+    fig.format_name = name
     return fig, ax
+
+
+def _words(lang):
+    """The words of the drawings in ``lang`` (``plot.drawing.*``)."""
+    from crankbase.plot_texts import plot_words
+
+    return plot_words(lang, "drawing")
 
 
 def _grid(ax, x0, x1, y0, y1):
     """Millimetre paper: lines every 1 mm (thin), 5 mm and 10 mm (darker)."""
-    for step, lw, c in ((1, 0.15, "#f2b8a0"), (5, 0.3, "#e8926e"), (10, 0.5, "#d9683f")):
+    # neutral greys under the curves (an orange grid hid the orange dashed Pj)
+    for step, lw, c in ((1, 0.15, "#e4e4e4"), (5, 0.3, "#c8c8c8"), (10, 0.5, "#a8a8a8")):
         xs = np.arange(np.ceil(x0 / step) * step, x1 + 1e-9, step)
         ys = np.arange(np.ceil(y0 / step) * step, y1 + 1e-9, step)
-        ax.vlines(xs, y0, y1, lw=lw, color=c, zorder=0)
-        ax.hlines(ys, x0, x1, lw=lw, color=c, zorder=0)
+        ax.vlines(xs, y0, y1, lw=lw, color=c, zorder=0, gid="paper-grid")
+        ax.hlines(ys, x0, x1, lw=lw, color=c, zorder=0, gid="paper-grid")
     ax.set_xlim(x0, x1)
     ax.set_ylim(y0, y1)
     ax.tick_params(labelsize=6, length=2)
@@ -71,7 +99,7 @@ def plot_drawing_forces(result, lang="ru", cols=("dPg_N", "Pj_N", "P_N"), mu_alp
     ys = [table[c].to_numpy() / mu_p for c in cols]
     y0, y1 = _extent(np.concatenate(ys))
     width = spec.cycle_deg / mu_a
-    fig, ax = _paper(width + 10, y1 - y0)
+    fig, ax = _paper(width + 10, y1 - y0, spec, lang)
     _grid(ax, -5, width + 5, y0, y1)
     names = {"dPg_N": sym("dPg", lang), "Pj_N": "Pj", "P_N": "P", "N_N": "N", "K_N": "K",
              "T_N": "T"}
@@ -79,14 +107,12 @@ def plot_drawing_forces(result, lang="ru", cols=("dPg_N", "Pj_N", "P_N"), mu_alp
         ax.plot(x, y, label=names.get(c, c), **LINE_STYLES[k])
     ax.axhline(0, color="k", lw=0.6)
     ax.set_xticks(np.arange(0, width + 1e-9, 30.0 / mu_a if mu_a < 2 else 90.0 / mu_a))
-    mm = "мм" if lang == "ru" else "mm"
-    ax.set_xlabel(f"α / μα, {mm}", fontsize=7)
-    ax.set_ylabel(f"F / μP, {mm}", fontsize=7)
+    t = _words(lang)
+    ax.set_xlabel(f"α / μα, {t['mm']}", fontsize=7)
+    ax.set_ylabel(f"F / μP, {t['mm']}", fontsize=7)
     ax.legend(fontsize=7, loc="upper right")
-    unit_p, unit_a = ("Н/мм", "°/мм") if lang == "ru" else ("N/mm", "deg/mm")
-    ax.set_title(f"{spec.name}: μP = {mu_p:g} {unit_p}, μα = {mu_a:g} {unit_a} "
-                 + ("(масштаб 1:1, печатать в 100 %)" if lang == "ru"
-                    else "(scale 1:1, print at 100 %)"), fontsize=8, loc="left")
+    ax.set_title(f"{spec.name}: μP = {mu_p:g} {t['N_mm']}, μα = {mu_a:g} {t['deg_mm']} "
+                 + t["print"], fontsize=8, loc="left")
     return fig
 
 
@@ -100,7 +126,7 @@ def plot_drawing_polar(result, lang="ru"):
     kr = spec.Kr / mu_p
     x0, x1 = _extent(np.r_[T, 0.0])
     y0, y1 = _extent(np.r_[K, 0.0, -kr])
-    fig, ax = _paper(x1 - x0, y1 - y0)
+    fig, ax = _paper(x1 - x0, y1 - y0, spec, lang)
     _grid(ax, x0, x1, y0, y1)
     ax.invert_yaxis()
     ax.plot(T, K, color="#0072B2", lw=1.0)
@@ -114,13 +140,11 @@ def plot_drawing_polar(result, lang="ru"):
     angles = np.arange(0, spec.cycle_deg, 30.0)
     a = table["alpha_deg"].to_numpy()
     ax.plot(np.interp(angles, a, T), np.interp(angles, a, K), "o", ms=1.8, color="#0072B2")
-    mm = "мм" if lang == "ru" else "mm"
-    ax.set_xlabel(f"T / μP, {mm}", fontsize=7)
-    ax.set_ylabel(f"K / μP, {mm}", fontsize=7)
-    unit_p = "Н/мм" if lang == "ru" else "N/mm"
-    ax.set_title(f"{spec.name}: μP = {mu_p:g} {unit_p} "
-                 + ("(масштаб 1:1, печатать в 100 %)" if lang == "ru"
-                    else "(scale 1:1, print at 100 %)"), fontsize=8, loc="left")
+    t = _words(lang)
+    ax.set_xlabel(f"T / μP, {t['mm']}", fontsize=7)
+    ax.set_ylabel(f"K / μP, {t['mm']}", fontsize=7)
+    ax.set_title(f"{spec.name}: μP = {mu_p:g} {t['N_mm']} " + t["print"], fontsize=8,
+                 loc="left")
     return fig
 
 

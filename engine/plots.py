@@ -35,37 +35,17 @@ SYMBOLS = {
     "en": dict({k: math_symbol(v) for k, v in _PLOT_KEYS.items()}, Fx="$A_{p} x$"),
 }
 
-_TXT = {
-    "ru": dict(alpha="α, ° п.к.в.", p="pг, МПа", V="V, л", Vs="Fп·x, л (от ВМТ)",
-               force="Сила, кН", torque="Mкр, Н·м", Rk="Rшш, кН",
-               ind="Индикаторная диаграмма", pV="p–V", pa="p–α",
-               fP="Силы по оси цилиндра", fNKT="Силы N, K, T",
-               tq="Крутящий момент одного цилиндра", polar="Полярная диаграмма нагрузки "
-               "на шатунную шейку", dev="Развёрнутая диаграмма нагрузки на шатунную шейку",
-               T="T, кН", K="K, кН",
-               frame="система координат кривошипа: кривошип вверх от оси вала O, "
-                     "вращение по часовой стрелке; +T вправо, +K вниз (к оси вала)",
-               tdc="ВМТ", bdc="НМТ", sub=".ср", kN="кН", N="Н", Nm="Н·м", MPa="МПа",
-               poles="O – полюс силы Sш (T, K), Oш – полюс силы Rшш"),
-    "en": dict(alpha="α, crank deg", p="$p_g$, MPa", V="V, l", Vs="$A_p x$, l (from TDC)",
-               force="Force, kN", torque="$M$, N·m", Rk="$R_{cp}$, kN",
-               ind="Indicator diagram", pV="p–V", pa="p–α",
-               fP="Forces along the cylinder axis", fNKT="Forces N, K, T",
-               tq="Torque of one cylinder", polar="Polar diagram of the crank-pin load",
-               dev="Developed diagram of the crank-pin load", T="$T$, kN", K="$K$, kN",
-               frame="crank-fixed frame: crank up from the shaft axis O, rotation "
-                     "clockwise; +T to the right, +K downwards (towards the shaft axis)",
-               tdc="TDC", bdc="BDC", sub=" mean", kN="kN", N="N", Nm="N·m", MPa="MPa",
-               poles="O – pole of the rod force S (T, K), $O_r$ – pole of the crank-pin "
-                     "load $R_{cp}$"),
-}
 
 
-def _texts(lang):
-    if lang not in _TXT:
+def engine_words(lang):
+    """The words of the cylinder's plots in ``lang`` (the ``plot.engine.*`` texts) and its
+    symbols."""
+    if lang not in LANGS:
         from .spec import EngineSpecError
         raise EngineSpecError(Problem("lang", f"got {lang!r}; valid: {', '.join(LANGS)}"))
-    return dict(_TXT[lang], sym=SYMBOLS[lang])
+    from crankbase.plot_texts import plot_words
+
+    return dict(plot_words(lang, "engine"), sym=SYMBOLS[lang])
 
 
 def _axes(ax, figsize=(10, 5.6), **margins):
@@ -94,7 +74,7 @@ def _alpha_axis(ax, spec, t):
 def plot_indicator(result, ax=None, lang="ru"):
     """Indicator diagram p–V of the result's gas pressure (V = Vc + Fп·x when ε is known,
     else the swept volume Fп·x). Returns the Axes."""
-    t = _texts(lang)
+    t = engine_words(lang)
     ax = _axes(ax, (6, 5))
     spec, c = result.spec, result.curves
     p = c["p_gas_MPa"].to_numpy()
@@ -103,10 +83,12 @@ def plot_indicator(result, ax=None, lang="ru"):
         ax.plot(spec.Vc * 1e3 + sw, p, color="C0", lw=1.4)
         ax.set_xlabel(t["V"])
         vc, va = spec.Vc * 1e3, (spec.Vc + spec.Vh) * 1e3
-        for v, lab in ((vc, t["tdc"]), (va, t["bdc"])):
+        for v, lab, side in ((vc, t["tdc"], 1), (va, t["bdc"], -1)):
             ax.axvline(v, color="0.5", lw=0.7, ls="--")
+            # TDC right of its line, BDC left of its (the frame is close on the right)
             ax.annotate(lab, (v, 1.0), xycoords=("data", "axes fraction"),
-                        xytext=(2, -12), textcoords="offset points", fontsize=8)
+                        xytext=(2 * side, -12), textcoords="offset points", fontsize=8,
+                        ha="left" if side > 0 else "right")
         ax.set_xlim(0, va * 1.05)
     else:
         ax.plot(sw, p, color="C0", lw=1.4)
@@ -130,7 +112,7 @@ def plot_indicator(result, ax=None, lang="ru"):
 
 def plot_pressure(result, ax=None, lang="ru"):
     """Gas pressure over α with its peak marked. Returns the Axes."""
-    t = _texts(lang)
+    t = engine_words(lang)
     ax = _axes(ax, (6, 5))
     c = result.curves
     p = c["p_gas_MPa"].to_numpy()
@@ -163,7 +145,7 @@ def _lines(ax, table, cols, labels, scale=1e-3):
 
 def plot_piston_forces(result, ax=None, lang="ru"):
     """ΔPг, Pj and P over α. Returns the Axes."""
-    t = _texts(lang)
+    t = engine_words(lang)
     ax = _axes(ax)
     y = t["sym"]
     _lines(ax, result.curves, ("dPg_N", "Pj_N", "P_N"),
@@ -176,7 +158,7 @@ def plot_piston_forces(result, ax=None, lang="ru"):
 
 def plot_nkt(result, ax=None, lang="ru"):
     """N, K and T over α. Returns the Axes."""
-    t = _texts(lang)
+    t = engine_words(lang)
     ax = _axes(ax)
     y = t["sym"]
     _lines(ax, result.curves, ("N_N", "K_N", "T_N"), (y["N"], y["K"], y["T"]))
@@ -188,7 +170,7 @@ def plot_nkt(result, ax=None, lang="ru"):
 
 def plot_torque(result, ax=None, lang="ru"):
     """Mкр over α with its cycle mean. Returns the Axes."""
-    t = _texts(lang)
+    t = engine_words(lang)
     ax = _axes(ax)
     c = result.curves
     M = t["sym"]["M"]
@@ -215,7 +197,7 @@ def plot_polar(result, ax=None, lang="ru"):
     point).  +T to the right, +K downwards (towards the shaft axis), equal aspect, α
     labels every 30°, Rшш max and min marked.
     """
-    t = _texts(lang)
+    t = engine_words(lang)
     ax = _axes(ax, (9, 9.8), left=0.09, right=0.97, bottom=0.12, top=0.95)
     spec, c = result.spec, result.curves
     y = t["sym"]
@@ -275,7 +257,7 @@ def _polar_labels(ax, T, K, kr, lt, lk, angles, ext, R, a, pole_name, r_name, un
     """Place the pole names, the Rшш max/min texts and the α labels of the polar diagram
     so that no label covers another label, a marker or an arrow (measured with the
     renderer; see :mod:`engine.plot_labels`)."""
-    from .plot_labels import Obstacles, label_points, place_label, renderer_of
+    from .plot_labels import Obstacles, place_label, renderer_of
 
     fig = ax.figure
     renderer_of(fig)
@@ -293,6 +275,9 @@ def _polar_labels(ax, T, K, kr, lt, lk, angles, ext, R, a, pole_name, r_name, un
     obs.add_marker(osh, 6 * px + 1)
     for idx, _, _ in ext:
         obs.add_segment(osh, curve[idx])
+    # the axes T = 0 and K = 0 cross the whole frame: no label on them
+    obs.add_line([(bb.x0, o[1]), (bb.x1, o[1])])
+    obs.add_line([(o[0], bb.y0), (o[0], bb.y1)])
     # pole names first, then Rшш max/min, then α labels (multiples of 90° first)
     place_label(ax, obs, o, "O", normal=(-1, -1), fontsize=11, weight="bold",
                 gid="polar-label")
@@ -306,7 +291,16 @@ def _polar_labels(ax, T, K, kr, lt, lk, angles, ext, R, a, pole_name, r_name, un
                     f"(α = {a[idx]:g}°)", normal=away if name == "max" else (1, 0),
                     fontsize=9, color=col, gid="polar-label", curve_weight=25.0,
                     gaps_pt=(4, 8, 14, 22, 32, 46, 64))      # off the curve, even if farther
-    # α labels: normal of the curve at each point, pointing away from the curve's centre
+    _alpha_labels(ax, obs, curve, pts, a, angles)
+
+
+def _alpha_labels(ax, obs, curve, pts, a, angles):
+    """The α labels of a polar diagram: each off the curve along its normal (away from
+    the curve's centre), multiples of 90° first; points closer than a label's height share
+    one label ("240/600"); a label with no free place is left out."""
+    from .plot_labels import label_points
+
+    px = ax.figure.dpi / 72.0
     d = np.gradient(curve, axis=0)
     tx = np.interp(angles, a, d[:, 0])
     ty = np.interp(angles, a, d[:, 1])
@@ -318,6 +312,37 @@ def _polar_labels(ax, T, K, kr, lt, lk, angles, ext, R, a, pole_name, r_name, un
     texts = [f"{x:g}" for x in angles]
     label_points(ax, obs, pts, texts, normals, order, merge_px=1.4 * 7 * px,
                  fontsize=7, color="0.15", gid="alpha-label")
+
+
+def label_alpha_points(ax, x, y, a, angles, lx, ly, ms=3.0):
+    """Label the α markers (``lx``, ``ly`` at ``angles``) of a curve (``x``, ``y`` over
+    ``a``) drawn on ``ax`` with its axes lines x = 0 and y = 0: the limits are frozen and
+    every label is placed clear of the curve, the axes lines, the markers and the other
+    labels (:func:`_alpha_labels`)."""
+    from .plot_labels import Obstacles, renderer_of
+
+    fig = ax.figure
+    renderer_of(fig)
+    ax.margins(0.07)
+    ax.autoscale_view()
+    ax.apply_aspect()
+    ax.set_xlim(ax.get_xlim())
+    ax.set_ylim(ax.get_ylim())
+    ax.set_autoscale_on(False)
+    tr = ax.transData.transform
+    bb = ax.get_window_extent()
+    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+    curve = tr(np.column_stack([x, y]))
+    obs.set_curve(curve)
+    pts = tr(np.column_stack([lx, ly]))
+    px = fig.dpi / 72.0
+    for p in pts:
+        obs.add_marker(p, ms * px + 1)
+    o = tr([(0.0, 0.0)])[0]
+    obs.add_marker(o, 5 * px + 1)
+    obs.add_line([(bb.x0, o[1]), (bb.x1, o[1])])
+    obs.add_line([(o[0], bb.y0), (o[0], bb.y1)])
+    _alpha_labels(ax, obs, curve, pts, np.asarray(a, float), np.asarray(angles, float))
 
 
 def _diagram_points(ax, result, x_of, lang):
@@ -360,7 +385,7 @@ def _diagram_points(ax, result, x_of, lang):
 
 def plot_developed(result, ax=None, lang="ru"):
     """Developed diagram Rшш(α) with its cycle mean, max and min marked. Returns the Axes."""
-    t = _texts(lang)
+    t = engine_words(lang)
     ax = _axes(ax)
     c = result.curves
     a = c["alpha_deg"].to_numpy()
@@ -387,13 +412,13 @@ def figures(result, lang="ru"):
     indicator diagram (p–V beside p–α) and one figure per other plot."""
     from matplotlib.figure import Figure
 
-    t = _texts(lang)
+    t = engine_words(lang)
     fig = Figure(figsize=(11, 5))
     fig.subplots_adjust(left=0.065, right=0.98, bottom=0.11, top=0.86, wspace=0.2)
     ax1, ax2 = fig.subplots(1, 2)
     plot_indicator(result, ax1, lang)
     plot_pressure(result, ax2, lang)
-    pi = "pi" if lang == "ru" else "$p_i$"
+    pi = t["pi"]
     fig.suptitle(f"{t['ind']}: {result.spec.name};  {pi} = {result.summary.pi_MPa:.3f} "
                  f"{t['MPa']}")
     out = {"indicator": fig}
@@ -409,44 +434,14 @@ def figures(result, lang="ru"):
 TRAIN_PLOT_NAMES = ("torque_total", "excess_work", "free_force_locus", "free_moment_locus",
                     "free_forces", "free_moments", "crankshaft")
 
-_TRAIN_TXT = {
-    "ru": dict(theta="θ, ° п.к.в. (угол поворота коленчатого вала, α цилиндра 1)",
-               M="Mкр, Н·м", Mtot="Mкр суммарный", cyl="цилиндры 1…{n} (по отдельности)",
-               mean="Mкр.ср = {v:.1f} Н·м", tq="Суммарный крутящий момент",
-               work="∫(Mкр − Mкр.ср)dθ, Дж", wt="Избыточная работа", L="Lизб = {v:.1f} Дж",
-               Fx="Fx, кН", Fy="Fy, кН", Mx="Mx, Н·м", My="My, Н·м",
-               Floc="Свободная сила (годограф за оборот)",
-               Mloc="Свободный момент (годограф за оборот)",
-               Fa="Свободная сила по углу", Ma="Свободный момент по углу",
-               before="без противовесов", after="с противовесами",
-               force="сила, кН", moment="момент, Н·м",
-               crank="Схема коленчатого вала (вид со стороны маховика)",
-               bank="ряд {b}", throw="колено {k}: цил. {c}", order="порядок работы: {o}",
-               rot="вращение", throws="углы колен от 1-го по вращению: {t}",
-               side="Схема вдоль вала (z от цилиндра 1, мм)", cw="противовес",
-               Mmax="max {v:.0f} Н·м ({a:g}°)", Mmin="min {v:.0f} Н·м ({a:g}°)"),
-    "en": dict(theta="θ, crank deg (crankshaft angle, α of cylinder 1)",
-               M="$M$, N·m", Mtot="total torque $M$", cyl="cylinders 1…{n} (each)",
-               mean="$M_{{mean}}$ = {v:.1f} N·m", tq="Total engine torque",
-               work="∫($M$ − $M_{mean}$)dθ, J", wt="Excess work",
-               L="$L_{{exc}}$ = {v:.1f} J",
-               Fx="$F_x$, kN", Fy="$F_y$, kN", Mx="$M_x$, N·m", My="$M_y$, N·m",
-               Floc="Free force (locus over one revolution)",
-               Mloc="Free moment (locus over one revolution)",
-               Fa="Free force over the crank angle", Ma="Free moment over the crank angle",
-               before="without counterweights", after="with counterweights",
-               force="force, kN", moment="moment, N·m",
-               crank="Crankshaft (seen from the flywheel end)",
-               bank="bank {b}", throw="throw {k}: cyl. {c}", order="firing order: {o}",
-               rot="rotation", throws="throw angles from throw 1, in rotation: {t}",
-               side="Along the crankshaft (z from cylinder 1, mm)", cw="counterweight",
-               Mmax="max {v:.0f} N·m ({a:g}°)", Mmin="min {v:.0f} N·m ({a:g}°)"),
-}
 
 
 def _ttexts(lang):
-    _texts(lang)
-    return _TRAIN_TXT[lang]
+    """The words of the whole engine's plots (``plot.train.*``)."""
+    engine_words(lang)
+    from crankbase.plot_texts import plot_words
+
+    return plot_words(lang, "train")
 
 
 def _theta_axis(ax, cycle, t):
@@ -470,11 +465,11 @@ def plot_total_torque(result, ax=None, lang="ru"):
                 label=t["cyl"].format(n=n) if j == 0 else None, gid="context")
     ax.plot(th, c["M_total_Nm"].to_numpy(), color="C0", lw=1.6, label=t["Mtot"])
     ax.axhline(s.M_mean_Nm, color="C3", ls="--", lw=1.1, label=t["mean"].format(v=s.M_mean_Nm))
-    for v, a, key, off in ((s.M_max_Nm, s.alpha_M_max_deg, "Mmax", (6, 4)),
-                           (s.M_min_Nm, s.alpha_M_min_deg, "Mmin", (6, -12))):
-        ax.plot([a], [v], "o", color="C3", ms=4)
-        ax.annotate(t[key].format(v=v, a=a), (a, v), xytext=off, textcoords="offset points",
-                    fontsize=8, color="C3")
+    # max and min marked on the curve and named in the legend (below the axes): a text
+    # beside the point would be cut at the edge or crossed by the cylinders' curves
+    for v, a, key, mk in ((s.M_max_Nm, s.alpha_M_max_deg, "Mmax", "^"),
+                          (s.M_min_Nm, s.alpha_M_min_deg, "Mmin", "v")):
+        ax.plot([a], [v], mk, color="C3", ms=6, ls="none", label=t[key].format(v=v, a=a))
     _theta_axis(ax, result.layout.cycle_deg, t)
     ax.set_ylabel(t["M"])
     # below the axes: the curves fill the whole plot, a legend inside would cover them
@@ -498,14 +493,39 @@ def plot_excess_work(result, ax=None, lang="ru"):
     x = th[i] if abs(th[i] - th[k]) > 20 else th[i] + 20
     ax.annotate("", xy=(x, w[i]), xytext=(x, w[k]),
                 arrowprops=dict(arrowstyle="<->", color="C3", lw=1.2))
-    right = x > 0.75 * result.layout.cycle_deg
-    ax.annotate(t["L"].format(v=result.summary.L_excess_J), (x, (w[i] + w[k]) / 2),
-                xytext=(-6 if right else 6, 0), textcoords="offset points", color="C3",
-                fontsize=9, ha="right" if right else "left", va="center")
     _theta_axis(ax, result.layout.cycle_deg, t)
     ax.set_ylabel(t["work"])
     ax.set_title(f"{t['wt']}: {result.cylinder.spec.name}")
+    _free_label(ax, t["L"].format(v=result.summary.L_excess_J), (x, (w[i] + w[k]) / 2),
+                normal=(1, 0), color="C3", fontsize=9)
     return ax
+
+
+def _free_label(ax, text, xy, normal=(1, 0), **kw):
+    """Put ``text`` near the data point ``xy`` where no drawn line, arrow or text of
+    ``ax`` crosses it (the limits are frozen first); when there is no such place, the text
+    goes into the title."""
+    from .plot_labels import Obstacles, place_label, renderer_of
+
+    r = renderer_of(ax.figure)
+    ax.autoscale_view()
+    ax.apply_aspect()
+    ax.set_xlim(ax.get_xlim())
+    ax.set_ylim(ax.get_ylim())
+    ax.set_autoscale_on(False)
+    tr = ax.transData.transform
+    bb = ax.get_window_extent()
+    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+    for line in ax.lines:
+        obs.add_line(line.get_transform().transform(line.get_xydata()))
+    for txt in ax.texts:
+        if txt.get_text():
+            e = txt.get_window_extent(r)
+            obs.boxes.append((e.x0, e.y0, e.x1, e.y1))
+        if getattr(txt, "arrow_patch", None) is not None:
+            obs.add_segment(tr(txt.xy), tr(txt.xyann))
+    if place_label(ax, obs, tr(xy), text, normal=normal, **kw) is None:
+        ax.set_title(f"{ax.get_title()}\n{text}")
 
 
 def _min_extent(result, kind):
@@ -623,34 +643,39 @@ def plot_crankshaft(result, ax=None, lang="ru"):
     cyl = lay.cylinders
     g1 = float(lay.bank_deg[0])
     banks = sorted(set(zip(cyl["bank"], cyl["bank_angle_deg"])))
-    for b, gam in banks:
-        d = guide_direction(gam, deg=True)
-        ax.plot([0, 1.55 * d.real], [0, 1.55 * d.imag], color="0.45", lw=1.0, ls="--")
-        ax.annotate(t["bank"].format(b=b), (1.72 * d.real, 1.72 * d.imag), ha="center",
-                    va="center", fontsize=9, color="0.3")
+    ax.set_xlim(-1.9, 1.9)
+    ax.set_ylim(-1.9, 1.9)
+    ax.set_aspect("equal")
     from matplotlib.patches import Circle
 
     ax.add_patch(Circle((0, 0), 1.0, fill=False, color="0.8", lw=0.8))
+    ends = []                                    # (tip, text, colour, fontsize)
+    for b, gam in banks:
+        d = guide_direction(gam, deg=True)
+        ax.plot([0, 1.55 * d.real], [0, 1.55 * d.imag], color="0.45", lw=1.0, ls="--")
+        ends.append((1.55 * d, t["bank"].format(b=b), "0.3", 9))
     groups = {}                                  # throws at the same angle: one label
     for k, tau in enumerate(lay.throw_angles_deg):
         groups.setdefault(round(tau % 360.0, 6), []).append(k)
+    arrows = []
     for g, (tau, ks) in enumerate(sorted(groups.items())):
         d = guide_direction(g1 + tau, deg=True)
         members = ", ".join(str(c) for k in ks
                             for c in cyl["cylinder"][cyl["throw"] == k + 1])
         ax.annotate("", xy=(d.real, d.imag), xytext=(0, 0),
                     arrowprops=dict(arrowstyle="-|>", color=f"C{g % 10}", lw=2.2))
+        arrows.append(d)
         label = t["throw"].format(k=", ".join(str(k + 1) for k in ks), c=members)
-        ax.annotate(label, (1.2 * d.real, 1.2 * d.imag), ha="center", va="center",
-                    fontsize=8, color=f"C{g % 10}")
-    ax.annotate("", xy=(-0.35, 0.18), xytext=(0.35, 0.18),
+        ends.append((d, label, f"C{g % 10}", 8))
+    # the sense of rotation: an arc arrow round the shaft axis, counter-clockwise over
+    # the top (a quadratic Bézier from (0.35, 0.18) to (−0.35, 0.18))
+    s_ = np.linspace(0.0, 1.0, 40)[:, None]
+    p0, c1, p2 = np.array([0.35, 0.18]), np.array([0.0, 0.53]), np.array([-0.35, 0.18])
+    arc = (1 - s_) ** 2 * p0 + 2 * s_ * (1 - s_) * c1 + s_ ** 2 * p2
+    ax.annotate("", xy=tuple(p2), xytext=tuple(p0),
                 arrowprops=dict(arrowstyle="-|>", connectionstyle="arc3,rad=0.5",
                                 color="k", lw=1.0))
-    ax.text(0, 0.36, t["rot"], ha="center", fontsize=8)
     ax.plot([0], [0], "ko", ms=4)
-    ax.set_xlim(-1.9, 1.9)
-    ax.set_ylim(-1.9, 1.9)
-    ax.set_aspect("equal")
     ax.set_xticks([])
     ax.set_yticks([])
     order = "-".join(str(c) for c in lay.firing_order)
@@ -658,6 +683,30 @@ def plot_crankshaft(result, ax=None, lang="ru"):
     ax.set_xlabel(t["order"].format(o=order) + "\n" + t["throws"].format(t=throws),
                   fontsize=9)
     ax.set_title(f"{t['crank']}: {result.cylinder.spec.name}", fontsize=10)
+    # every label where no arrow, line or other label crosses it
+    from .plot_labels import Obstacles, place_label, renderer_of
+
+    renderer_of(ax.figure)
+    ax.apply_aspect()
+    tr = ax.transData.transform
+    bb = ax.get_window_extent()
+    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+    for line in ax.lines:
+        obs.add_line(tr(line.get_xydata()))
+    phi = np.linspace(0, 2 * np.pi, 200)
+    obs.add_line(tr(np.column_stack([np.cos(phi), np.sin(phi)])))
+    obs.add_line(tr(arc))
+    o = tr([(0.0, 0.0)])[0]
+    for d in arrows:
+        obs.add_segment(o, tr([(d.real, d.imag)])[0])
+    obs.add_marker(o, 8)
+    for d, label, col, fs in ends:
+        at = tr([(d.real, d.imag)])[0]
+        if place_label(ax, obs, at, label, normal=at - o, gaps_pt=(3, 6, 10, 15),
+                       color=col, fontsize=fs) is None:
+            ax.set_title(ax.get_title() + f"\n{label}", fontsize=9)
+    top = tr([(0.0, 0.53)])[0]
+    place_label(ax, obs, top, t["rot"], normal=(0, 1), fontsize=8)
     return ax
 
 

@@ -41,64 +41,15 @@ _GREY = "#9a9a9a"
 #: Dash patterns and markers of successive curves (told apart in black-and-white print).
 _STYLES = [dict(ls="-", marker=None), dict(ls="--", marker=None), dict(ls="-.", marker=None)]
 
-_TEXT = {
-    "en": {
-        "phi": "crank angle φ [°]", "phi1": "crank rotation from position 1, φ − φ1 [°]",
-        "position": "position", "working": "working stroke",
-        "omega3_c": "ω3 (coupler)", "omega4": "ω4 (rocker)", "omega3_r": "ω3 (rod)",
-        "v4": "v4 (slider)", "eps3_c": "ε3 (coupler)", "eps4": "ε4 (rocker)",
-        "eps3_r": "ε3 (rod)", "a4": "a4 (slider)",
-        "ang_vel": "angular velocity [rad/s]", "ang_acc": "angular acceleration [rad/s²]",
-        "w3": "ω3 [rad/s]", "e3": "ε3 [rad/s²]", "v4_unit": "v4 [m/s]", "a4_unit": "a4 [m/s²]",
-        "vel_title": "{name}: angular velocities",
-        "vel_title_s": "{name}: rod angular velocity and slider velocity",
-        "acc_title": "{name}: angular accelerations",
-        "acc_title_s": "{name}: rod angular acceleration and slider acceleration",
-        "Md": "Mb, balancing (driving) moment on the crank", "Mr": "Mr, resistance on the rocker",
-        "moment": "moment [N·m]", "Md_title": "{name}: balancing moment Mb (+ ccw)",
-        "plan_pts": "plan positions", "mu": "μ", "mu_axis": "transmission angle μ [°]",
-        "mu_title": "{name}: transmission angle", "mu_min": "μmin = {v:.2f}°",
-        "path": "path of {p}", "guide": "guide", "other": "other extreme position",
-        "pos1": "position 1 (working-stroke start)",
-        "first": "first crank angle given, φ = {v:.4g}°",
-        "x": "x [m]", "y": "y [m]", "statics": "statics", "ccw": "ccw", "cw": "cw",
-        "plan_title": "{name}: plan of positions ({kind}, ω = {w:g} rad/s, {turn})",
-        "thinned": "{k} of {n} rows drawn (1 in {every})",
-    },
-    "ru": {
-        "phi": "угол поворота кривошипа φ [°]",
-        "phi1": "поворот кривошипа от положения 1, φ − φ1 [°]",
-        "position": "положение", "working": "рабочий ход",
-        "omega3_c": "ω3 (шатун)", "omega4": "ω4 (коромысло)", "omega3_r": "ω3 (шатун)",
-        "v4": "v4 (ползун)", "eps3_c": "ε3 (шатун)", "eps4": "ε4 (коромысло)",
-        "eps3_r": "ε3 (шатун)", "a4": "a4 (ползун)",
-        "ang_vel": "угловая скорость [рад/с]", "ang_acc": "угловое ускорение [рад/с²]",
-        "w3": "ω3 [рад/с]", "e3": "ε3 [рад/с²]", "v4_unit": "v4 [м/с]", "a4_unit": "a4 [м/с²]",
-        "vel_title": "{name}: угловые скорости",
-        "vel_title_s": "{name}: угловая скорость шатуна и скорость ползуна",
-        "acc_title": "{name}: угловые ускорения",
-        "acc_title_s": "{name}: угловое ускорение шатуна и ускорение ползуна",
-        "Md": "Mур, уравновешивающий момент на кривошипе",
-        "Mr": "Mпс, момент сопротивления на коромысле",
-        "moment": "момент [Н·м]", "Md_title": "{name}: уравновешивающий момент Mур (+ против ч. с.)",
-        "plan_pts": "положения плана", "mu": "μ", "mu_axis": "угол передачи μ [°]",
-        "mu_title": "{name}: угол передачи", "mu_min": "μmin = {v:.2f}°",
-        "path": "траектория {p}", "guide": "направляющая", "other": "второе крайнее положение",
-        "pos1": "положение 1 (начало рабочего хода)",
-        "first": "первый заданный угол, φ = {v:.4g}°",
-        "x": "x [м]", "y": "y [м]", "statics": "статика", "ccw": "против часовой стрелки",
-        "cw": "по часовой стрелке",
-        "plan_title": "{name}: план положений ({kind}, ω = {w:g} рад/с, {turn})",
-        "thinned": "показано {k} из {n} строк (каждая {every}-я)",
-    },
-}
 
 
 def _text(lang):
-    try:
-        return _TEXT[lang]
-    except KeyError:
-        raise ValueError(f"lang: got {lang!r}; one of 'en', 'ru'") from None
+    """The words of these plots in ``lang`` (``plot.linkage.*``)."""
+    if lang not in ("en", "ru"):
+        raise ValueError(f"lang: got {lang!r}; one of 'en', 'ru'")
+    from crankbase.plot_texts import plot_words
+
+    return plot_words(lang, "linkage")
 
 
 def _axes(ax, w=8.0, h=5.0):
@@ -275,42 +226,87 @@ def plot_plan(result, ax=None, lang="en", *, full=None):
         g0, g1 = (lo + 1j * spec.offset) * u, (hi + 1j * spec.offset) * u
         ax.plot([g0.real, g1.real], [g0.imag, g1.imag], color="k", lw=1.2, label=t["guide"])
     every = max(1, -(-len(k) // MAX_PLAN_POSITIONS))
+    numbers = []                        # (row, its number), labelled once all is drawn
     for i in range(0, len(k), every):
         lw, col = (2.2, "C0") if i == 0 else (0.9, _GREY)
         _draw_links(ax, k, i, zO, zC, lw, col)
         label = k["position"].iat[i]
         label = str(label) if label is not None and not _isna(label) else \
             f"{k['phi_deg'].iat[i]:.0f}°"
-        # B's labels: positions where the output moves one way on one side, the
-        # return on the other, so the two strokes' labels do not overprint.
-        rate = k["omega4_rad_s" if spec.kind == "crank-rocker" else "v4_m_s"].iat[i]
-        b_off = (5, 2) if rate >= 0 else (-12, 2)
-        for P, off in (("A", (3, 3)), ("B", b_off)):
-            x, y = k[f"{P}_x_m"].iat[i], k[f"{P}_y_m"].iat[i]
-            ax.annotate(label, (x, y), fontsize=7, color="C0" if i == 0 else "0.3",
-                        textcoords="offset points", xytext=off)
+        numbers.append((i, label))
     if result.extremes is not None:
         _draw_links(ax, result.extremes, 1, zO, zC, 2.0, "C3", ls="--")
         ax.plot([], [], color="C3", ls="--", lw=2.0, label=t["other"])
     numbered = k["position"].notna().all() and len(k) and result.summary.has_extremes
     ax.plot([], [], color="C0", lw=2.2,
             label=t["pos1"] if numbered else t["first"].format(v=k["phi_deg"].iat[0]))
-    for z, name in ((zO, "O"), (zC, "C")):
-        if z is None:
-            continue
+    pivots = [(z, name) for z, name in ((zO, "O"), (zC, "C")) if z is not None]
+    for z, name in pivots:
         ax.plot(z.real, z.imag, marker="^", ms=11, color="k", mfc="w", zorder=5)
-        ax.annotate(name, (z.real, z.imag), textcoords="offset points", xytext=(-12, -14))
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel(t["x"])
     ax.set_ylabel(t["y"])
     turn = t["statics"] if spec.omega == 0 else t["ccw"] if spec.omega > 0 else t["cw"]
-    title = t["plan_title"].format(name=spec.name, kind=spec.kind, w=spec.omega, turn=turn)
+    import textwrap
+
+    title = "\n".join(textwrap.wrap(t["plan_title"].format(
+        name=spec.name, kind=t["kind"].get(spec.kind, spec.kind), w=spec.omega, turn=turn),
+        72))
     if every > 1:
         title += "\n" + t["thinned"].format(k=-(-len(k) // every), n=len(k), every=every)
     ax.set_title(title)
     ax.grid(True, lw=0.3, alpha=0.5)
     ax.legend(loc="upper left", fontsize=7, framealpha=0.85)
+    _plan_labels(ax, k, numbers, pivots)
     return ax
+
+
+def _plan_labels(ax, k, numbers, pivots):
+    """The position numbers at A and at B and the pivots' names, each where no link,
+    path or other label crosses it; positions whose points (nearly) coincide share one
+    label ("12/1"), a label with no free place is left out."""
+    from crankbase.plot_labels import Obstacles, label_points, place_label, renderer_of
+
+    fig = ax.figure
+    renderer_of(fig)
+    if fig.get_layout_engine() is not None:
+        fig.draw_without_rendering()              # the final axes box
+    ax.apply_aspect()
+    ax.set_xlim(ax.get_xlim())
+    ax.set_ylim(ax.get_ylim())
+    ax.set_autoscale_on(False)
+    tr = ax.transData.transform
+    bb = ax.get_window_extent()
+    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+    for line in ax.lines:
+        xy = tr(line.get_xydata())
+        if line.get_linestyle() not in ("None", "none", "", " "):
+            obs.add_line(xy)
+        if line.get_marker() not in (None, "None", "none", ""):
+            for p in xy:
+                if np.all(np.isfinite(p)):
+                    obs.add_marker(p, line.get_markersize() * fig.dpi / 72 + 1)
+    for patch in ax.patches:
+        obs.add_line(patch.get_transform().transform_path(patch.get_path()).vertices)
+    leg = ax.get_legend()
+    if leg is not None:
+        e = leg.get_window_extent()
+        obs.boxes.append((e.x0, e.y0, e.x1, e.y1))
+    o = tr([(pivots[0][0].real, pivots[0][0].imag)])[0]
+    for z, name in pivots:
+        p = tr([(z.real, z.imag)])[0]
+        place_label(ax, obs, p, name, normal=(-1, -1), fontsize=9)
+    texts = [lab for _, lab in numbers]
+    order = list(range(len(numbers)))           # position 1 first
+    for P in ("A", "B"):
+        pts = tr(np.column_stack([[k[f"{P}_x_m"].iat[i] for i, _ in numbers],
+                                  [k[f"{P}_y_m"].iat[i] for i, _ in numbers]]))
+        normals = pts - (o if P == "A" else pts.mean(axis=0))
+        placed, _ = label_points(ax, obs, pts, texts, normals, order,
+                                 merge_px=7 * fig.dpi / 72, fontsize=7, color="0.3")
+        for lab in placed:
+            if lab.get_text().split("/")[0] == texts[0]:
+                lab.set_color("C0")
 
 
 def _isna(v):

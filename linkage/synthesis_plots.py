@@ -24,67 +24,6 @@ from crankbase.tolerances import SAME_ANGLE_DEG
 __all__ = ["plot_region", "plot_mu_min_curves", "plot_transmission_angle"]
 
 #: The words of the figures; numbers come in already formatted ({l1}, {phi0} …).
-_TEXT = {
-    "en": {
-        "kkm": "KKM-{phi0}°",
-        "region_title": "Region of existence of {kkm} (μ = 90° at φ0 = {phi0}°), "
-                        "λ1max = {l1max}",
-        "fill": "region of existence of {kkm}",
-        "arc": "arc abc: unit circle (λ1 = 0)",
-        "curve": "curve cda (μmin = 0) on Kolchin's {line} {nums}",
-        "line": "line", "lines": "lines",
-        "kolchin": "Kolchin's line ({n}): {formula} for λ1 = {l1}",
-        "family": "family arc for λ1 = {l1} (R = {R})",
-        "kkm5": "{kkm} → KKM-5 (λ3 = sin φ0)",
-        "kkm7": "{kkm} → KKM-7 (λ2 = sin φ0)",
-        "chosen": "chosen mechanism: λ1 = {l1}, λ2 = {l2}, λ3 = {l3}",
-        "coupler": "coupler λ2 = l2/l0  [–]",
-        "rocker": "rocker λ3 = l3/l0  [–]",
-        "crank": "crank λ1 = l1/l0  [–]",
-        "mu_title": "{kkm}: μmin over λ1 at constant λ2 (eq. 16)",
-        "required": "required μmin ≥ {mu}°",
-        "curve_n": "{i}: λ2 = {l2}",
-        "chosen_mu": "chosen mechanism: λ1 = {l1},\nλ2 = {l2}, μmin = {mu}°",
-        "mu_min_axis": "minimum transmission angle μmin  [°]",
-        "mu_phi": "transmission angle μ(φ)",
-        "right": "μ = 90° at φ = {a}° and {b}°",
-        "min_at": "μmin = {mu}° at φ = {where}",
-        "two": "{a}° and {b}°",
-        "phi_axis": "crank angle φ from the line of centres  [°]",
-        "mu_axis": "transmission angle μ  [°]",
-        "ta_title": "{kkm}: λ1 = {l1}, λ2 = {l2}, λ3 = {l3}",
-    },
-    "ru": {
-        "kkm": "ККМ-{phi0}°",
-        "region_title": "Область существования {kkm} (μ = 90° при φ0 = {phi0}°), "
-                        "λ1max = {l1max}",
-        "fill": "область существования {kkm}",
-        "arc": "дуга abc: окружность единичного радиуса (λ1 = 0)",
-        "curve": "кривая cda (μmin = 0) на {line} Колчина {nums}",
-        "line": "прямой", "lines": "прямых",
-        "kolchin": "прямая Колчина ({n}): {formula} при λ1 = {l1}",
-        "family": "дуга семейства при λ1 = {l1} (R = {R})",
-        "kkm5": "{kkm} → ККМ-5 (λ3 = sin φ0)",
-        "kkm7": "{kkm} → ККМ-7 (λ2 = sin φ0)",
-        "chosen": "выбранный механизм: λ1 = {l1}, λ2 = {l2}, λ3 = {l3}",
-        "coupler": "шатун λ2 = l2/l0  [–]",
-        "rocker": "коромысло λ3 = l3/l0  [–]",
-        "crank": "кривошип λ1 = l1/l0  [–]",
-        "mu_title": "{kkm}: минимальный угол передачи μmin в функции λ1 при λ2 = const "
-                    "(ур. 16)",
-        "required": "требуемый μmin ≥ {mu}°",
-        "curve_n": "{i}: λ2 = {l2}",
-        "chosen_mu": "выбранный механизм: λ1 = {l1},\nλ2 = {l2}, μmin = {mu}°",
-        "mu_min_axis": "минимальный угол передачи μmin  [°]",
-        "mu_phi": "угол передачи μ(φ)",
-        "right": "μ = 90° при φ = {a}° и {b}°",
-        "min_at": "μmin = {mu}° при φ = {where}",
-        "two": "{a}° и {b}°",
-        "phi_axis": "угол поворота кривошипа φ от линии центров  [°]",
-        "mu_axis": "угол передачи μ  [°]",
-        "ta_title": "{kkm}: λ1 = {l1}, λ2 = {l2}, λ3 = {l3}",
-    },
-}
 
 #: Kolchin's three lines (Sereda 2016, eq. (1)–(3)) as λ3 = k λ2 + b(λ1): number,
 #: formula, slope k, intercept b(λ1), dash pattern (thin grey lines, told apart by dash).
@@ -100,10 +39,12 @@ _CURVE_DASHES = ("-", (0, (7, 2)), (0, (1, 1.5)), (0, (7, 2, 1.5, 2)), (0, (12, 
 
 
 def _text(lang):
-    try:
-        return _TEXT[lang]
-    except KeyError:
-        raise ValueError(f"lang: got {lang!r}; one of 'en', 'ru'") from None
+    """The words of these plots in ``lang`` (``plot.synth.*``)."""
+    if lang not in ("en", "ru"):
+        raise ValueError(f"lang: got {lang!r}; one of 'en', 'ru'")
+    from crankbase.plot_texts import plot_words
+
+    return plot_words(lang, "synth")
 
 
 def _axes(ax, size):
@@ -205,13 +146,16 @@ def _even(p, step):
     return np.column_stack([np.interp(t, s, p[:, 0]), np.interp(t, s, p[:, 1])])
 
 
-def _label_curves(ax, xs, ys, names, avoid, fontsize=8, step=0.02, label_in=0.12):
+def _label_curves(ax, xs, ys, names, avoid, fontsize=8, step=0.02, label_in=0.12,
+                  lines=None):
     """Write ``names[i]`` on curve i where it is farthest from every other curve, from
     the polylines ``avoid`` (a list of (x, y) arrays) and from the labels already placed
     (like contour labels): a white box over its own curve only.  Distances in inches of
     the axes, the curves resampled every ``step`` inches, a label counted ``label_in``
     wide.  Layout only, no physics."""
     fig = ax.figure
+    if lines is not None and fig.get_layout_engine() is not None:
+        fig.draw_without_rendering()           # the final axes box (constrained layout)
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
     pos = ax.get_position()
     w = pos.width * fig.get_figwidth()        # axes size in inches (before the layout:
@@ -243,7 +187,31 @@ def _label_curves(ax, xs, ys, names, avoid, fontsize=8, step=0.02, label_in=0.12
         texts.append(ax.text(x, y, name, fontsize=fontsize, ha="center", va="center",
                              zorder=6, bbox=dict(boxstyle="round,pad=0.15", fc="white",
                                                  ec="none", alpha=0.9)))
+    if lines is not None:
+        _break_lines(ax, lines, texts)
     return texts
+
+
+def _break_lines(ax, lines, texts, pad_px=2.5):
+    """Break each curve where its label sits (as inline contour labels do): the line's
+    points inside the label's box are left out, so no line runs under a label."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    fig = ax.figure
+    r = (fig.canvas if hasattr(fig.canvas, "get_renderer") else FigureCanvasAgg(fig)
+         ).get_renderer()
+    for line, text in zip(lines, texts):
+        bb = text.get_window_extent(r).padded(pad_px)
+        x, y = (np.asarray(v, float) for v in line.get_data())
+        # resample so that the gap is cut where the box is, not at the nearest vertices
+        keep = np.isfinite(x) & np.isfinite(y)
+        xy = ax.transData.transform(np.column_stack([x[keep], y[keep]]))
+        xy = _even(xy, 1.0)
+        inside = (xy[:, 0] > bb.x0) & (xy[:, 0] < bb.x1) & (xy[:, 1] > bb.y0) & \
+            (xy[:, 1] < bb.y1)
+        data = ax.transData.inverted().transform(xy)
+        data[inside] = np.nan
+        line.set_data(data[:, 0], data[:, 1])
 
 
 def plot_mu_min_curves(curves, design=None, mu_required=None, ax=None, lang="en"):
@@ -282,8 +250,9 @@ def plot_mu_min_curves(curves, design=None, mu_required=None, ax=None, lang="en"
         ax.axhline(mu_required, color="tab:red", lw=1.0, ls=(0, (5, 2)),
                    label=T["required"].format(mu=f"{mu_required:g}"))
         avoid.append((np.array([0.0, xmax]), np.full(2, float(mu_required))))
+    lines = []
     for i, (l2, mu) in enumerate(zip(curves.l2, curves.mu_min_deg)):
-        ax.plot(curves.l1, mu, color=colors[i % 10], lw=1.5,
+        lines += ax.plot(curves.l1, mu, color=colors[i % 10], lw=1.5,
                 ls=_CURVE_DASHES[i % len(_CURVE_DASHES)],
                 label=T["curve_n"].format(i=i + 1, l2=f"{l2:.2f}"))
     if design is not None:
@@ -300,7 +269,7 @@ def plot_mu_min_curves(curves, design=None, mu_required=None, ax=None, lang="en"
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False,
               handlelength=3.6)
     _label_curves(ax, [curves.l1] * len(curves.l2), list(curves.mu_min_deg),
-                  [str(i + 1) for i in range(len(curves.l2))], avoid)
+                  [str(i + 1) for i in range(len(curves.l2))], avoid, lines=lines)
     return ax
 
 

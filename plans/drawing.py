@@ -15,11 +15,19 @@ from .layout import (CAP_EM, FONT, H_LABEL, H_POINT, S_MAIN, S_THIN, Arrow, Bloc
                      positions_block, text_width)
 
 __all__ = ["position_blocks", "position_figure", "layout_sheets", "sheet_figure",
-           "render_items", "SHEETS", "title_fields", "TITLE_KEYS"]
+           "render_items", "SHEETS", "FORMATS", "title_fields", "TITLE_KEYS",
+           "frame_items", "fit_format"]
 
 PT = 72.0 / 25.4            # points per mm
 #: Sheet sizes, landscape (ГОСТ 2.301). [mm]
 SHEETS = {"A1": (841.0, 594.0), "A3": (420.0, 297.0)}
+#: The main formats of ГОСТ 2.301 (short side, long side). [mm]
+FORMATS = {"A4": (210.0, 297.0), "A3": (297.0, 420.0), "A2": (420.0, 594.0),
+           "A1": (594.0, 841.0)}
+#: The frame's margins (ГОСТ 2.104: 20 mm at the binding edge, 5 mm elsewhere) and the
+#: title block (form 1). [mm]
+FRAME_LEFT, FRAME_OTHER = 20.0, 5.0
+TITLE_BLOCK = (185.0, 55.0)
 #: Widths of the lines of each layer. [mm]
 WIDTH = {"FRAME": S_MAIN, "MAIN": S_MAIN, "VECTORS": S_MAIN, "LEVER": S_MAIN,
          "THIN": S_THIN, "DASHED": S_THIN, "TITLE": S_THIN, "TEXT": S_THIN}
@@ -216,13 +224,12 @@ def _title_block_items(x0, y0, fields, number, count, lang):
     ln(155, 15, 155, 20)
     ln(140, 20, 140, 35, "THIN")
     ln(145, 20, 145, 35, "THIN")
-    ru = lang == "ru"
-    heads = (["Изм.", "Лист", "№ докум.", "Подп.", "Дата"] if ru else
-             ["Rev.", "Sheet", "Doc. No.", "Sign.", "Date"])
+    from .layout import plan_words
+    w = plan_words(lang)["tb"]
+    heads = [w["rev"], w["sheet"], w["doc"], w["sign"], w["date"]]
     for (xa, xb), s in zip(((0, 7), (7, 17), (17, 40), (40, 55), (55, 65)), heads):
         tx((xa + xb) / 2, 32.5, s, cell=xb - xa)
-    roles = (["Разраб.", "Пров.", "Т.контр.", "", "Н.контр.", "Утв."] if ru else
-             ["Drawn", "Checked", "Tech.", "", "Norm.", "Appr."])
+    roles = [w["drawn"], w["checked"], w["tech"], "", w["norm"], w["approved"]]
     names = [fields["developer"], fields["checker"], fields["tech_control"], "",
              fields["norm_control"], fields["approver"]]
     for k, (role, name) in enumerate(zip(roles, names)):
@@ -235,14 +242,13 @@ def _title_block_items(x0, y0, fields, number, count, lang):
     tx(100, 27.5, fields["title"], h=5.0, cell=70)
     tx(100, 7.5, fields["material"], h=5.0, cell=70)
     for (xa, xb), s in zip(((135, 150), (150, 167), (167, 185)),
-                           (["Лит.", "Масса", "Масштаб"] if ru else
-                            ["Lit.", "Mass", "Scale"])):
+                           (w["letter"], w["mass"], w["scale"])):
         tx((xa + xb) / 2, 37.5, s, cell=xb - xa)
     tx(142.5, 27.5, fields["letter"], h=H_POINT, cell=15)
     tx(158.5, 27.5, fields["mass"], h=H_POINT, cell=17)
     tx(176, 27.5, fields["scale"], h=H_POINT, cell=18)
-    tx(136, 17.5, f"{'Лист' if ru else 'Sheet'} {number}", ha="left", cell=19)
-    tx(156, 17.5, f"{'Листов' if ru else 'Sheets'} {count}", ha="left", cell=29)
+    tx(136, 17.5, w["sheet_n"].format(n=number), ha="left", cell=19)
+    tx(156, 17.5, w["sheets_n"].format(n=count), ha="left", cell=29)
     tx(160, 7.5, fields["organization"], h=H_POINT, cell=50)
     return items
 
@@ -298,28 +304,94 @@ def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
         raise PlanError([Problem("size", f"{size}: '{t}' does not fit the sheet's field "
                                  f"({x1 - x0:.0f} × {y1 - y0:.0f} mm); use A1 or a coarser "
                                  "scale") for t in too_big])
+    # a teacher grades one position at a time: a sheet holds one position's diagrams, or
+    # two positions side by side, each in its half (the plan of positions joins the
+    # first); a position too large for one sheet goes on as many of its own as it needs
+    corner = (tb_left - GAP, tb_top + GAP)
+    xm = (x0 + x1) / 2
     sheets = []
-    rest = blocks
-    while rest:
-        placed, rest = _pack(rest, x0, y0, x1, y1, (tb_left - GAP, tb_top + GAP))
-        if not placed:   # pragma: no cover - guarded by too_big
-            raise PlanError(Problem("size", f"{size}: cannot place '{rest[0].title}'"))
+
+    def pack(group, xa, xb):
+        return _pack(group, xa, y0, xb, y1, corner)
+
+    def fits_in(group, xa, xb):
+        return not pack(group, xa, xb)[1]
+
+    def make(parts):
+        """A sheet of ``parts`` [(blocks, x from, x to)]; returns the blocks left over."""
         sh = Sheet(W, H)
-        for b, dz in placed:
-            sh.items += b.moved(dz)
+        left = []
+        for group, xa, xb in parts:
+            placed, rest = pack(group, xa, xb)
+            if not placed:   # pragma: no cover - guarded by too_big
+                raise PlanError(Problem("size", f"{size}: cannot place '{rest[0].title}'"))
+            for b, dz in placed:
+                sh.items += b.moved(dz)
+                sh.blocks.append(b.key)
+            left += rest
         sheets.append(sh)
+        return left
+
+    pending = blocks[:1]                               # the plan of positions
+    k = 0
+    while k < len(plans):
+        mine = blocks[1 + 5 * k: 6 + 5 * k]
+        nxt = blocks[6 + 5 * k: 11 + 5 * k]
+        if fits_in(pending + mine, x0, x1):
+            if nxt and fits_in(pending + mine, x0, xm) and fits_in(nxt, xm, x1):
+                make([(pending + mine, x0, xm), (nxt, xm, x1)])
+                k += 2
+            else:
+                make([(pending + mine, x0, x1)])
+                k += 1
+            pending = []
+        elif pending:                                  # the plan of positions alone
+            while pending:
+                pending = make([(pending, x0, x1)])
+        else:                                          # one position over several sheets
+            rest = mine
+            while rest:
+                rest = make([(rest, x0, x1)])
+            k += 1
+    while pending:
+        pending = make([(pending, x0, x1)])
     for k, sh in enumerate(sheets):
         sh.number, sh.count = k + 1, len(sheets)
-        frame = [Line(0j, complex(W, 0), "THIN"), Line(complex(W, 0), complex(W, H), "THIN"),
-                 Line(complex(W, H), complex(0, H), "THIN"), Line(complex(0, H), 0j, "THIN")]
-        fx0, fy0, fx1, fy1 = 20.0, 5.0, W - 5.0, H - 5.0
-        frame += [Line(complex(fx0, fy0), complex(fx1, fy0), "FRAME"),
-                  Line(complex(fx1, fy0), complex(fx1, fy1), "FRAME"),
-                  Line(complex(fx1, fy1), complex(fx0, fy1), "FRAME"),
-                  Line(complex(fx0, fy1), complex(fx0, fy0), "FRAME")]
-        sh.items = frame + _title_block_items(tb_left, 5.0, fields, sh.number, sh.count,
-                                              lang) + sh.items
+        sh.items = frame_items(W, H, fields, sh.number, sh.count, lang) + sh.items
     return sheets
+
+
+def frame_items(W, H, fields, number=1, count=1, lang="ru"):
+    """The sheet's edge (thin), its frame (ГОСТ 2.104: 20 mm from the left edge, 5 mm
+    from the others) and the title block (form 1, 185 × 55 mm, lower right corner) of a
+    ``W`` × ``H`` mm sheet, as layout items."""
+    frame = [Line(0j, complex(W, 0), "THIN"), Line(complex(W, 0), complex(W, H), "THIN"),
+             Line(complex(W, H), complex(0, H), "THIN"), Line(complex(0, H), 0j, "THIN")]
+    fx0, fy0, fx1, fy1 = FRAME_LEFT, FRAME_OTHER, W - FRAME_OTHER, H - FRAME_OTHER
+    frame += [Line(complex(fx0, fy0), complex(fx1, fy0), "FRAME"),
+              Line(complex(fx1, fy0), complex(fx1, fy1), "FRAME"),
+              Line(complex(fx1, fy1), complex(fx0, fy1), "FRAME"),
+              Line(complex(fx0, fy1), complex(fx0, fy0), "FRAME")]
+    return frame + _title_block_items(fx1 - TITLE_BLOCK[0], fy0, fields, number, count,
+                                      lang)
+
+
+def fit_format(width, height, gap=GAP):
+    """The smallest ГОСТ 2.301 format (A4 … A1, portrait or landscape) whose frame holds a
+    ``width`` × ``height`` mm drawing above the title block: ``(name, W, H)``.
+
+    Raises
+    ------
+    PlanError
+        The drawing is larger than A1's field.
+    """
+    for name, (a, b) in FORMATS.items():
+        for W, H in ((a, b), (b, a)):
+            if (width <= W - FRAME_LEFT - FRAME_OTHER - 2 * gap
+                    and height <= H - 2 * FRAME_OTHER - TITLE_BLOCK[1] - 2 * gap):
+                return name, W, H
+    raise PlanError(Problem("size", f"a drawing of {width:.0f} × {height:.0f} mm does not "
+                            "fit an A1 sheet; choose a coarser scale"))
 
 
 def sheet_figure(sheet):

@@ -158,7 +158,7 @@ class _Placer:
         self.segments = list(segments)
         self.boxes = []
 
-    def place(self, candidates, text, height):
+    def place(self, candidates, text, height, _far=False):
         best, best_score = None, None
         for at in candidates:
             t = Text(at, text, height)
@@ -170,6 +170,13 @@ class _Placer:
                 break
             if best_score is None or score < best_score:
                 best, best_score = t, score
+        if best_score and not _far:
+            # nothing free near: look around the first candidates, farther out (a thin
+            # polygon near a dead position leaves no room beside its vectors)
+            more = [c + r * complex(math.cos(math.radians(k)), math.sin(math.radians(k)))
+                    for c in candidates[:6] for r in (4.0, 8.0, 12.0, 18.0)
+                    for k in range(0, 360, 30)]
+            return self.place(list(candidates) + more, text, height, _far=True)
         self.boxes.append(text_box(best))
         return best
 
@@ -224,19 +231,11 @@ def vector_label(v, lang):
     return kind + point.translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
 
 
-_TITLES = {
-    "velocity": ("План скоростей", "Velocity diagram"),
-    "acceleration": ("План ускорений", "Acceleration diagram"),
-    "force_dyad": ("План сил группы II(3,4)", "Force polygon of the dyad II(3,4)"),
-    "force_crank": ("План сил начального звена", "Force polygon of the crank"),
-    "lever": ("Рычаг Жуковского", "Zhukovsky's lever"),
-    "positions": ("План положений", "Plan of positions"),
-}
-_SCALE_UNIT = {"velocity": ("(м/с)/мм", "(m/s)/mm"), "acceleration": ("(м/с²)/мм", "(m/s²)/mm"),
-               "force_dyad": ("Н/мм", "N/mm"), "force_crank": ("Н/мм", "N/mm"),
-               "positions": ("м/мм", "m/mm")}
-_MU = {"velocity": "μV", "acceleration": "μa", "force_dyad": "μF", "force_crank": "μF",
-       "positions": "μl"}
+def plan_words(lang):
+    """The words of the plans drawings in ``lang`` (``plot.plans.*``)."""
+    from crankbase.plot_texts import plot_words
+
+    return plot_words(lang, "plans")
 
 
 def fmt(x, lang, digits=4):
@@ -248,7 +247,7 @@ def fmt(x, lang, digits=4):
 
 def _where(pp, lang):
     if pp.position is not None:
-        return (f"пол. {pp.position}" if lang == "ru" else f"position {pp.position}")
+        return plan_words(lang)["where"].format(n=pp.position)
     return f"φ = {fmt(pp.phi_deg, lang)}°"
 
 
@@ -307,13 +306,30 @@ def diagram_block(pp, kind, lang="ru") -> Block:
         lab = vector_label(v, lang)
         items.append(placer.place(_label_candidates(v.start, v.end), lab, H_LABEL))
     bbox = _items_bbox(items)
-    title, mu, unit = (_TITLES[kind][0 if lang == "ru" else 1], _MU[kind],
-                       _SCALE_UNIT[kind][0 if lang == "ru" else 1])
-    if lang == "en":
-        mu = {"μV": "kv", "μa": "ka", "μF": "kF"}[mu]
+    w = plan_words(lang)
+    title, mu, unit = w["title"][kind], w["mu"][kind], w["unit"][kind]
     lines = [(title, H_TITLE),
              (f"{_where(pp, lang)}, {mu} = {fmt(plan.scale, lang)} {unit}", H_POINT)]
+    if kind.startswith("force") and _degenerate(plan.vectors):
+        lines.append((w["degenerate"], H_LABEL))
     return _titled(items, bbox, lines, f"{pp.tag}:{kind}")
+
+
+def _degenerate(vectors, ratio=0.06):
+    """A force polygon near a dead position: its vectors' extent across is under
+    ``ratio`` of its extent along (a sliver whose labels crowd along one line)."""
+    import numpy as np
+
+    z = np.array([p for v in vectors for p in (v.start, v.end)], complex)
+    if len(z) < 2:
+        return False
+    z = z - z.mean()
+    # principal directions of the points: the extents along and across
+    m = np.array([[np.mean(z.real ** 2), np.mean(z.real * z.imag)],
+                  [np.mean(z.real * z.imag), np.mean(z.imag ** 2)]])
+    _, vec = np.linalg.eigh(m)
+    along = z * complex(vec[0, 1], -vec[1, 1])
+    return float(np.ptp(along.imag)) < ratio * max(float(np.ptp(along.real)), 1e-9)
 
 
 def lever_block(pp, lang="ru") -> Block:
@@ -346,28 +362,20 @@ def lever_block(pp, lang="ru") -> Block:
         items.append(placer.place(cands, v.label(lang), H_LABEL))
     bbox = _items_bbox(items)
     x0, y0, x1, y1 = bbox
-    if lang == "ru":
-        res = [f"Mур (рычаг) = {fmt(L.M_lever_Nm, lang, 6)} Н·м, "
-               f"Fур = {fmt(L.balancing_force_N, lang, 6)} Н",
-               f"Mур (кинетостатика) = {fmt(L.M_kinetostatic_Nm, lang, 6)} Н·м, "
-               f"Fур = {fmt(L.F_kinetostatic_N, lang, 6)} Н",
-               f"δ = {L.difference_percent:.2e} %".replace(".", ",")]
-    else:
-        res = [f"Mb (lever) = {fmt(L.M_lever_Nm, lang, 6)} N·m, "
-               f"Fb = {fmt(L.balancing_force_N, lang, 6)} N",
-               f"Mb (kinetostatics) = {fmt(L.M_kinetostatic_Nm, lang, 6)} N·m, "
-               f"Fb = {fmt(L.F_kinetostatic_N, lang, 6)} N",
-               f"difference = {L.difference_percent:.2e} %"]
+    w = plan_words(lang)
+    d = f"{L.difference_percent:.2e}"
+    res = [w["lever_M"].format(M=fmt(L.M_lever_Nm, lang, 6),
+                               F=fmt(L.balancing_force_N, lang, 6)),
+           w["kinetostatic_M"].format(M=fmt(L.M_kinetostatic_Nm, lang, 6),
+                                      F=fmt(L.F_kinetostatic_N, lang, 6)),
+           w["difference"].format(d=d.replace(".", ",") if lang == "ru" else d)]
     y = y0 - 3.0
     for line in res:
         items.append(Text(complex(x0, y), line, H_LABEL, "TEXT", "left", "top"))
         y -= H_LABEL * 1.7
     bbox = _items_bbox(items)
-    title = _TITLES["lever"][0 if lang == "ru" else 1]
-    mu = "μF" if lang == "ru" else "kF"
-    unit = _SCALE_UNIT["force_crank"][0 if lang == "ru" else 1]
-    note = ("план скоростей, повёрнутый на 90° по ч. с." if lang == "ru" else
-            "velocity diagram turned 90° clockwise")
+    title, mu, unit, note = w["title"]["lever"], w["mu"]["lever"], w["unit"]["lever"], \
+        w["turned"]
     return _titled(items, bbox, [(title, H_TITLE),
                                  (f"{_where(pp, lang)}, {mu} = {fmt(L.scale, lang)} {unit}",
                                   H_POINT),
@@ -422,6 +430,7 @@ def positions_block(result, chosen, lang="ru", longest_mm=220.0) -> Block:
         a0, a1 = 2 * math.pi * k / n, 2 * math.pi * (k + 1) / n
         items.append(Line(r * complex(math.cos(a0), math.sin(a0)),
                           r * complex(math.cos(a1), math.sin(a1)), "DASHED"))
+        segs.append((items[-1].p1, items[-1].p2))      # no number on the crank circle
     for z, name in [(0j, "O")] + ([(C / mu, "C")] if C is not None else []):
         items.append(Circle(z, 1.2, "MAIN"))
         items.append(Line(z - 3 - 3j, z + 3 - 3j, "MAIN"))
@@ -447,9 +456,8 @@ def positions_block(result, chosen, lang="ru", longest_mm=220.0) -> Block:
         items.append(placer.place([z - 6 + 2j, z + 6 + 2j, z - 6 - 1j, z + 6 - 1j], name,
                                   H_POINT))
     bbox = _items_bbox(items)
-    title = _TITLES["positions"][0 if lang == "ru" else 1]
-    mul = "μl" if lang == "ru" else "kl"
-    unit = _SCALE_UNIT["positions"][0 if lang == "ru" else 1]
+    w = plan_words(lang)
+    title, mul, unit = w["title"]["positions"], w["mu"]["positions"], w["unit"]["positions"]
     return _titled(items, bbox, [(title, H_TITLE), (f"{mul} = {fmt(mu, lang)} {unit}", H_POINT)],
                    "positions")
 
@@ -462,3 +470,5 @@ class Sheet:
     items: list = field(default_factory=list)
     number: int = 1
     count: int = 1
+    #: Keys of the diagrams on the sheet (``"<tag>:velocity"``, ``"positions"`` …).
+    blocks: list = field(default_factory=list)

@@ -493,7 +493,8 @@ def test_workbook_symbols_units_and_numbers_in_both_languages(lang_runs):
 def test_column_label_is_the_one_table():
     """column_label(col, lang) gives every symbol; the English set is the one the
     English plots and plan drawings use (Mb, Mr, Fr, Fi, Mi), without Cyrillic."""
-    from linkage.plots import _TEXT as PLOT_TEXT
+    from linkage.plots import _text
+    PLOT_TEXT = {lang: _text(lang) for lang in ("en", "ru")}     # the plot.linkage.* texts
     from linkage.report import column_label, unit_text
 
     assert column_label("M_drive_Nm", "ru") == ("Mур", "Н·м")

@@ -118,7 +118,7 @@ def test_a_fully_balanced_locus_is_marked(results):
     """After a full force balance the locus is a point: drawn as a marker at the origin
     and said so in the legend (a zero-length dashed curve would show nothing)."""
     mech = results[2]
-    for lang, text in (("en", "F_sh = 0"), ("ru", "Fин = 0")):
+    for lang, text in (("en", "$F_{sh}$ = 0"), ("ru", "Fин = 0")):
         ax = plot_shaking_locus(mech, Figure().add_subplot(), lang)
         labels = [t.get_text() for t in ax.get_legend().get_texts()]
         assert any(text in lab for lab in labels), labels

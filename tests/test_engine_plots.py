@@ -4,6 +4,7 @@ import re
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 from matplotlib.figure import Figure
 from matplotlib.text import Text
@@ -104,3 +105,41 @@ def test_train_figures_both_languages(whole):
     # the loci: before and after the counterweights
     labels = [line.get_label() for line in en["free_moment_locus"].axes[0].lines]
     assert "with counterweights" in labels and "without counterweights" in labels
+
+
+# ------------------------------------------------- drawings on standard paper (issue #23)
+
+GOST_FORMATS = {(210.0, 297.0), (297.0, 420.0), (420.0, 594.0), (594.0, 841.0)}
+
+
+@pytest.mark.parametrize("name", ["petrol_vaz2106.toml", "diesel_kamaz740.toml"])
+def test_drawings_are_on_a_gost_format_at_the_stated_scale(name):
+    """Every --drawing figure is exactly an A4 … A1 sheet (ГОСТ 2.301, either
+    orientation), and its drawing is 1:1: one data unit of the axes is one millimetre of
+    paper, and a force F is drawn F/μP mm from the axis (μP as the title states)."""
+    import engine
+    from crankbase.resources import example_path
+    from engine.drawing import drawing_figures
+
+    study = engine.load(example_path(name))
+    result = engine.analyze(study.spec, study.settings)
+    mu_p = result.settings.force_scale
+    for stem, fig in drawing_figures(result, "ru").items():
+        w, h = (float(v) * 25.4 for v in fig.get_size_inches())
+        assert tuple(sorted((round(w, 6), round(h, 6)))) in GOST_FORMATS, (stem, w, h)
+        ax = fig.axes[0]                                  # the drawing, then the sheet
+        pos = ax.get_position()
+        x0, x1 = ax.get_xlim()
+        y0, y1 = sorted(ax.get_ylim())
+        assert pos.width * w / (x1 - x0) == pytest.approx(1.0, rel=1e-9), stem
+        assert pos.height * h / (y1 - y0) == pytest.approx(1.0, rel=1e-9), stem
+        assert f"μP = {mu_p:g}" in ax.get_title(loc="left")
+        curve = ax.lines[0].get_ydata()
+        col = "K_N" if stem == "drawing_polar" else ("dPg_N" if stem.endswith("_P")
+                                                     else "N_N")
+        np.testing.assert_allclose(curve, result.curves[col].to_numpy() / mu_p)
+        # the frame and the title block of the plans sheet: its edge is the sheet's
+        sheet = fig.axes[1]
+        assert sheet.get_xlim()[1] == pytest.approx(w)
+        assert any(t.get_text() == result.spec.name for t in sheet.texts)
+        fig.clear()

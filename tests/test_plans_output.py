@@ -355,3 +355,37 @@ def test_massless_unloaded_mechanism_draws(tmp_path):
     info = write_plans(res, pps, tmp_path, previews=False)
     assert info["sheets"] == 1 and (tmp_path / "bare_sheet.dxf").is_file()
     assert pps[0].lever.balancing_force_N == 0 and pps[0].lever.F_kinetostatic_N == 0
+
+
+# ------------------------------------------- one position at a time on the sheets (#23)
+
+def _sheet_positions(sh):
+    """The positions whose diagrams a sheet holds, from its vectors' names."""
+    from plans.layout import Arrow
+
+    return {it.name.split(":")[0] for it in sh.items if isinstance(it, Arrow) and it.name}
+
+
+@pytest.mark.parametrize("example, size", [("press.toml", "A1"), ("press.toml", "A3"),
+                                           ("ratchet.toml", "A1")])
+def test_each_sheet_holds_one_or_two_positions(example, size):
+    """A teacher grades one position at a time: every sheet holds the diagrams of one
+    position or of two, a position's diagrams lie on consecutive sheets, and on A1 all
+    five diagrams of a position lie on one sheet."""
+    spec = linkage.load_spec(example_path(example))
+    result = linkage.analyze(spec)
+    plan_list = plans.build_plans(result, "all")
+    sheets = drawing.layout_sheets(result, plan_list, "ru", size)
+    where = {}
+    for k, sh in enumerate(sheets):
+        tags = _sheet_positions(sh)
+        assert tags == {b.split(":")[0] for b in sh.blocks if b != "positions"}
+        assert 1 <= len(tags) <= 2 or sh.blocks == ["positions"], (k + 1, sorted(tags))
+        for tag in tags:
+            where.setdefault(tag, []).append(k)
+    assert set(where) == {pp.tag for pp in plan_list}
+    for tag, ks in where.items():
+        assert ks == list(range(ks[0], ks[-1] + 1)), (tag, ks)
+        if size == "A1":
+            assert len(ks) == 1, (tag, ks)
+    assert "positions" in sheets[0].blocks

@@ -64,5 +64,8 @@ def test_drawing_option_writes_the_one_to_one_pdfs(tmp_path):
                     "petrol-vaz2106_drawing_polar.pdf"]
     head = (tmp_path / pdfs[1]).read_bytes()
     box = re.search(rb"/MediaBox\s*\[\s*0\s+0\s+([\d.]+)\s+([\d.]+)", head)
-    # 240 mm of α axis + 10 mm + margins (30 mm) = 280 mm wide, at 72 pt per inch
-    assert float(box.group(1)) == pytest.approx(280 / 25.4 * 72, abs=0.01)
+    # a ГОСТ 2.301 sheet (A4 … A1, either orientation), printable at 100 % (#23): the
+    # 280 mm wide drawing of the forces (240 mm of α axis + 10 mm + margins 30 mm) and
+    # the title block need A2 portrait, 420 × 594 mm, at 72 pt per inch
+    w, h = (float(box.group(k)) / 72 * 25.4 for k in (1, 2))
+    assert (w, h) == (pytest.approx(420.0, abs=0.01), pytest.approx(594.0, abs=0.01))

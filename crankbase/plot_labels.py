@@ -1,0 +1,219 @@
+"""Collision-free text labels for point markers on a plot (matplotlib, headless).
+
+Used by the polar load diagram and the linkage plan of positions to label the crank
+angle α at its points: each label is measured with the figure's renderer, tried at offsets along the curve's normal (both
+sides, several distances, then rotated directions) and put at the first place where its
+box clears every label already placed, every marker and every arrow; a label that finds
+no free place is left out ("thinned"), and points that fall on the same spot share one
+label ("240/600").  Nothing here computes physics; it only places text.
+
+matplotlib is imported by the caller (this module is imported from the plot modules
+only).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+__all__ = ["Obstacles", "renderer_of", "text_size", "place_label", "label_points"]
+
+
+def renderer_of(fig):
+    """The Agg renderer of ``fig`` (attaching an Agg canvas to a bare ``Figure``)."""
+    if not hasattr(fig.canvas, "get_renderer"):
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+        FigureCanvasAgg(fig)
+    return fig.canvas.get_renderer()
+
+
+def text_size(fig, text, **kw):
+    """(width, height) of ``text`` in display pixels as the renderer draws it."""
+    r = renderer_of(fig)
+    t = fig.text(0, 0, text, **kw)
+    bb = t.get_window_extent(r)
+    t.remove()
+    return bb.width, bb.height
+
+
+def _overlap(a, b):
+    """Axis-aligned boxes (x0, y0, x1, y1) intersect (touching counts as apart)."""
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def _segment_hits_box(p, q, box):
+    """The segment p–q crosses or lies in the box (Liang–Barsky clipping)."""
+    x0, y0, x1, y1 = box
+    dx, dy = q[0] - p[0], q[1] - p[1]
+    t0, t1 = 0.0, 1.0
+    for pk, qk in ((-dx, p[0] - x0), (dx, x1 - p[0]), (-dy, p[1] - y0), (dy, y1 - p[1])):
+        if pk == 0:
+            if qk < 0:
+                return False
+            continue
+        t = qk / pk
+        if pk < 0:
+            t0 = max(t0, t)
+        else:
+            t1 = min(t1, t)
+        if t0 > t1:
+            return False
+    return True
+
+
+@dataclass
+class Obstacles:
+    """What a label must not cover, in display pixels: boxes (markers, placed labels),
+    segments (arrows), the frame it must stay inside, and a polyline it should avoid
+    (the curve itself: a soft cost, not a hard rule)."""
+
+    frame: tuple
+    boxes: list = field(default_factory=list)
+    segments: list = field(default_factory=list)
+    curve: np.ndarray = field(default_factory=lambda: np.empty((0, 2)))
+    #: Lines no label may cross (the curve itself when ``curve_hard``, axis lines …),
+    #: resampled like the curve.
+    lines: np.ndarray = field(default_factory=lambda: np.empty((0, 2)))
+    curve_hard: bool = True
+
+    def add_marker(self, xy, size_px):
+        h = 0.5 * size_px
+        self.boxes.append((xy[0] - h, xy[1] - h, xy[0] + h, xy[1] + h))
+
+    def add_segment(self, p, q):
+        self.segments.append((tuple(p), tuple(q)))
+
+    def free(self, box, pad):
+        b = (box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad)
+        f = self.frame
+        if b[0] < f[0] or b[1] < f[1] or b[2] > f[2] or b[3] > f[3]:
+            return False
+        if any(_overlap(b, o) for o in self.boxes):
+            return False
+        if any(_segment_hits_box(p, q, b) for p, q in self.segments):
+            return False
+        if len(self.lines) and _count_inside(self.lines, b):
+            return False
+        return not (self.curve_hard and self.curve_cost(b))
+
+    def add_line(self, xy_px, step_px=1.0):
+        """A polyline no label may cross (an axis line, another curve)."""
+        pts = _resample(xy_px, step_px)
+        self.lines = np.concatenate([self.lines, pts]) if len(self.lines) else pts
+
+    def set_curve(self, xy_px, step_px=2.0):
+        """The polyline to avoid, resampled so that its vertices lie at most ``step_px``
+        apart (a fast stretch of the curve, few vertices far apart, still counts where
+        it crosses a box)."""
+        self.curve = _resample(xy_px, step_px)
+
+    def curve_cost(self, box):
+        """Number of the curve's (resampled) vertices inside ``box``."""
+        return _count_inside(self.curve, box) if len(self.curve) else 0
+
+
+def _resample(xy_px, step_px):
+    """The polyline with vertices at most ``step_px`` apart."""
+    xy = np.asarray(xy_px, float).reshape(-1, 2)
+    xy = xy[np.all(np.isfinite(xy), axis=1)]
+    if len(xy) < 2:
+        return xy
+    seg = np.hypot(*np.diff(xy, axis=0).T)
+    s = np.concatenate([[0.0], np.cumsum(seg)])
+    t = np.linspace(0.0, s[-1], max(int(np.ceil(s[-1] / step_px)) + 1, len(xy)))
+    return np.column_stack([np.interp(t, s, xy[:, 0]), np.interp(t, s, xy[:, 1])])
+
+
+def _count_inside(c, box):
+    inside = ((c[:, 0] > box[0]) & (c[:, 0] < box[2]) & (c[:, 1] > box[1])
+              & (c[:, 1] < box[3]))
+    return int(inside.sum())
+
+
+def _box_at(anchor, direction, size, gap):
+    """Box of a text of ``size`` whose nearest edge is ``gap`` px from ``anchor`` along
+    the unit ``direction``: the box centre lies on the ray, pushed out by the half-extent
+    of the box in that direction."""
+    w, h = size
+    ux, uy = direction
+    half = 0.5 * (w * abs(ux) + h * abs(uy))
+    cx, cy = anchor[0] + ux * (gap + half), anchor[1] + uy * (gap + half)
+    return (cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2)
+
+
+#: Gaps [pt] tried when none of the given ones leaves a free place.
+_FAR = (4, 8, 14, 22, 32, 46, 64, 90)
+
+
+def place_label(ax, obstacles, anchor_px, text, normal=(0.0, 1.0), gaps_pt=(3, 6, 10, 15),
+                pad_px=1.5, curve_weight=4.0, gid=None, far=True, **text_kw):
+    """Put ``text`` near the display point ``anchor_px`` where it covers nothing.
+
+    Directions tried: ±``normal`` first, then turned by ±30°, ±60°, ±90°, ±135°; gaps
+    ``gaps_pt`` points from the anchor.  Among the places whose box (padded by
+    ``pad_px``) clears every obstacle, the one with the least cost (curve points covered
+    × ``curve_weight`` + gap + turn) wins.  The label is drawn centred on its box and its
+    box is added to the obstacles.  With ``far``, a label that finds no free place
+    near is tried farther out (to 90 pt) before it is left out.
+
+    Returns
+    -------
+    matplotlib.text.Text or None
+        None when no free place exists (the label is thinned out).
+    """
+    fig = ax.figure
+    size = text_size(fig, text, **text_kw)
+    px_per_pt = fig.dpi / 72.0
+    n = np.asarray(normal, float)
+    n = n / (np.hypot(*n) or 1.0)
+    best = None
+    for turn in (0, 30, -30, 60, -60, 90, -90, 135, -135, 180):
+        for side in (1.0, -1.0):
+            c, s = np.cos(np.radians(turn)), np.sin(np.radians(turn))
+            d = side * np.array([c * n[0] - s * n[1], s * n[0] + c * n[1]])
+            for gap in gaps_pt:
+                box = _box_at(anchor_px, d, size, gap * px_per_pt)
+                if not obstacles.free(box, pad_px):
+                    continue
+                cost = (curve_weight * obstacles.curve_cost(box) + gap
+                        + abs(turn) / 30.0 + (0 if side > 0 else 0.5))
+                if best is None or cost < best[0]:
+                    best = (cost, box)
+    if best is None and far and max(gaps_pt) < _FAR[-1]:
+        # nowhere near: try farther out before giving up
+        return place_label(ax, obstacles, anchor_px, text, normal, _FAR, pad_px,
+                           curve_weight, gid, far=False, **text_kw)
+    if best is None:
+        return None
+    box = best[1]
+    inv = ax.transData.inverted()
+    centre = inv.transform(((box[0] + box[2]) / 2, (box[1] + box[3]) / 2))
+    t = ax.text(centre[0], centre[1], text, ha="center", va="center", gid=gid, **text_kw)
+    obstacles.boxes.append(box)
+    return t
+
+
+def label_points(ax, obstacles, xy_px, texts, normals, order, merge_px=3.0, **kw):
+    """Label many points: points closer than ``merge_px`` share one label (texts joined
+    by "/"), labels are placed in ``order`` (most important first) by :func:`place_label`.
+
+    Returns
+    -------
+    (placed, thinned) : list of Text, list of str
+    """
+    xy_px = np.asarray(xy_px, float)
+    groups, taken = [], np.zeros(len(xy_px), bool)
+    for i in order:
+        if taken[i]:
+            continue
+        near = np.flatnonzero(np.hypot(*(xy_px - xy_px[i]).T) < merge_px)
+        near = [j for j in near if not taken[j]]
+        taken[near] = True
+        groups.append((i, sorted(near)))
+    placed, thinned = [], []
+    for n, (i, members) in enumerate(groups):
+        text = "/".join(texts[j] for j in members)
+        # the first (most important) label is looked for farther out too
+        t = place_label(ax, obstacles, xy_px[i], text, normals[i], far=n == 0, **kw)
+        (placed.append(t) if t is not None else thinned.append(text))
+    return placed, thinned

@@ -1,0 +1,210 @@
+"""One automatic check of a figure's words: nothing overlaps, nothing is cut (issue #23).
+
+:func:`figure_problems` draws a figure with Agg (no file) and measures, in display pixels,
+
+* every visible text (titles, axis labels, tick labels, legend texts, annotations, texts
+  of drawings) against every other text: their boxes must not overlap;
+* every text against the figure's edge: its box must lie inside the figure (a text
+  drawn clipped by its axes must lie inside the clip box);
+* every text against the drawn lines of its figure: the curves and straight lines of the
+  axes (``Line2D``), arrows (``FancyArrowPatch``), the edges of drawn shapes and line
+  collections, and the axes' own frame lines: the lines are sampled along their display
+  paths (every pixel or so) and no sample may fall inside a text's box.
+
+A ``margin_px`` lets a box touch what it does not cover (the ink of a glyph does not
+fill its box).  Line collections with ``gid="paper-grid"`` (the millimetre grid of the
+drawings, drawn under everything, like the grid lines of the axes) are background, not
+lines.  This is a test tool (tests import it), not part of the library.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["figure_problems", "texts_of", "line_samples"]
+
+BACKGROUND_GIDS = {"paper-grid"}
+
+
+def texts_of(fig, renderer):
+    """``[(label, Bbox, Text)]`` of every visible, non-empty text the figure draws."""
+    from matplotlib.text import Annotation, Text
+
+    out = []
+    seen = set()
+
+    def add(t, where):
+        if id(t) in seen or not t.get_visible() or not t.get_text().strip():
+            return
+        seen.add(id(t))
+        if t.axes is not None and not t.axes.get_visible():
+            return
+        bb = Text.get_window_extent(t, renderer)
+        if bb.width <= 0 or bb.height <= 0:
+            return
+        out.append((f"{where}: {t.get_text()!r}", bb, t))
+
+    for ax in fig.axes:
+        if not ax.get_visible():
+            continue
+        for axis in (ax.xaxis, ax.yaxis):
+            if not ax.axison or not axis.get_visible():
+                continue
+            for tick in axis._update_ticks():            # the ticks Agg draws
+                for lab in (tick.label1, tick.label2):
+                    if lab.get_visible():
+                        add(lab, "tick")
+            add(axis.label, "axis label")
+            add(axis.offsetText, "offset")
+        for t in (ax.title, ax._left_title, ax._right_title):
+            add(t, "title")
+        for t in ax.texts:
+            add(t, "annotation" if isinstance(t, Annotation) else "text")
+        leg = ax.get_legend()
+        if leg is not None and leg.get_visible():
+            for t in leg.get_texts():
+                add(t, "legend")
+            if leg.get_title().get_text():
+                add(leg.get_title(), "legend title")
+    for t in fig.texts:
+        add(t, "figure text")
+    for leg in fig.legends:
+        for t in leg.get_texts():
+            add(t, "figure legend")
+    if getattr(fig, "_suptitle", None) is not None:
+        add(fig._suptitle, "suptitle")
+    return out
+
+
+def _resample(xy, step):
+    """Points along the polyline ``xy`` at most ``step`` px apart (a non-finite point
+    breaks the line, as it does when drawn)."""
+    xy = np.asarray(xy, float).reshape(-1, 2)
+    bad = ~np.all(np.isfinite(xy), axis=1)
+    if bad.any():
+        parts = np.split(xy, np.flatnonzero(bad))
+        parts = [_resample(p[np.all(np.isfinite(p), axis=1)], step) for p in parts]
+        parts = [p for p in parts if len(p)]
+        return np.concatenate(parts) if parts else np.empty((0, 2))
+    if len(xy) < 2:
+        return xy
+    seg = np.hypot(*np.diff(xy, axis=0).T)
+    s = np.concatenate([[0.0], np.cumsum(seg)])
+    if s[-1] == 0:
+        return xy[:1]
+    n = int(min(max(np.ceil(s[-1] / step) + 1, len(xy)), 200000))
+    t = np.linspace(0.0, s[-1], n)
+    return np.column_stack([np.interp(t, s, xy[:, 0]), np.interp(t, s, xy[:, 1])])
+
+
+def _path_points(path, transform, step):
+    """Display points along a path (each sub-path sampled separately; curves as their
+    polygons)."""
+    pts = []
+    path = transform.transform_path(path)
+    for poly in path.to_polygons(closed_only=False):
+        pts.append(_resample(poly, step))
+    return np.concatenate(pts) if pts else np.empty((0, 2))
+
+
+def _clip(points, artist):
+    """The points inside the artist's clip box (what Agg draws of a clipped line)."""
+    box = artist.get_clip_box() if artist.get_clip_on() else None
+    if box is None or not len(points):
+        return points
+    x, y = points[:, 0], points[:, 1]
+    return points[(x >= box.x0 - 0.5) & (x <= box.x1 + 0.5) & (y >= box.y0 - 0.5)
+                  & (y <= box.y1 + 0.5)]
+
+
+def line_samples(fig, step=1.0):
+    """``[(label, points)]``: display points along every drawn line of the figure."""
+    from matplotlib.collections import LineCollection
+    from matplotlib.text import Annotation
+
+    out = []
+    for ax in fig.axes:
+        if not ax.get_visible():
+            continue
+        for line in ax.lines:
+            if not line.get_visible() or line.get_linestyle() in ("None", "", " ", "none"):
+                continue
+            if line.get_alpha() == 0 or line.get_linewidth() <= 0:
+                continue
+            pts = _path_points(line.get_path(), line.get_transform(), step)
+            out.append((f"line {line.get_label()!r}", _clip(pts, line)))
+        for p in ax.patches:
+            if not p.get_visible() or p.get_linewidth() <= 0:
+                continue
+            ec = p.get_edgecolor()
+            if ec is None or ec[3] == 0:
+                continue
+            pts = _path_points(p.get_path(), p.get_transform(), step)
+            out.append((f"{type(p).__name__} edge", _clip(pts, p)))
+        for t in ax.texts:
+            if isinstance(t, Annotation) and t.arrow_patch is not None and t.get_visible():
+                ap = t.arrow_patch
+                pts = _path_points(ap.get_path(), ap.get_transform(), step)
+                out.append((f"arrow of {t.get_text()!r}", pts))
+        for c in ax.collections:
+            if not isinstance(c, LineCollection) or not c.get_visible():
+                continue
+            if c.get_gid() in BACKGROUND_GIDS:
+                continue
+            tr = c.get_transform()
+            pts = [_path_points(p, tr, step) for p in c.get_paths()]
+            if pts:
+                out.append(("line collection", _clip(np.concatenate(pts), c)))
+        if ax.axison:
+            for name, sp in ax.spines.items():
+                if sp.get_visible():
+                    pts = _path_points(sp.get_path(), sp.get_transform(), step)
+                    out.append((f"axes frame ({name})", pts))
+    return out
+
+
+def _inside(points, bb, m):
+    x, y = points[:, 0], points[:, 1]
+    return (x > bb.x0 + m) & (x < bb.x1 - m) & (y > bb.y0 + m) & (y < bb.y1 - m)
+
+
+def figure_problems(fig, margin_px=1.5, line_margin_px=2.0, edge=True):
+    """Every overlap and cut of ``fig``'s texts, as readable strings (empty: clean).
+
+    Parameters
+    ----------
+    margin_px : float
+        Two text boxes may overlap by this much (their glyphs' ink does not fill them).
+    line_margin_px : float
+        A line may enter a text box by this much at its border.
+    edge : bool
+        Check the texts against the figure's edge (False for a figure saved with a tight
+        bounding box, whose edge is its content's).
+    """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    r = canvas.get_renderer()
+    texts = texts_of(fig, r)
+    problems = []
+    W, H = fig.bbox.width, fig.bbox.height
+    m = margin_px
+    for i, (name, bb, t) in enumerate(texts):
+        if edge and (bb.x0 < -0.5 or bb.y0 < -0.5 or bb.x1 > W + 0.5 or bb.y1 > H + 0.5):
+            problems.append(f"cut by the figure's edge: {name}")
+        if t.get_clip_on() and t.get_clip_box() is not None:
+            cb = t.get_clip_box()
+            if bb.x0 < cb.x0 - m or bb.x1 > cb.x1 + m or bb.y0 < cb.y0 - m or bb.y1 > cb.y1 + m:
+                problems.append(f"cut by its axes: {name}")
+        for other, ob, _ in texts[:i]:
+            if (min(bb.x1, ob.x1) - max(bb.x0, ob.x0) > m
+                    and min(bb.y1, ob.y1) - max(bb.y0, ob.y0) > m):
+                problems.append(f"overlap: {name} and {other}")
+    for lname, pts in line_samples(fig):
+        if not len(pts):
+            continue
+        for name, bb, _ in texts:
+            n = int(_inside(pts, bb, line_margin_px).sum())
+            if n:
+                problems.append(f"crossed: {name} by {lname} ({n} px)")
+    return problems

@@ -1,0 +1,228 @@
+"""Nothing overlaps, nothing is cut (issue #23): every figure the tool draws for every
+bundled example, in both languages, built through the library's plot functions (no file
+written) and checked by :func:`figure_check.figure_problems`: texts against texts, against
+the figure's edge and against the drawn lines."""
+import re
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from crankbase.resources import example_path
+
+pytest.importorskip("matplotlib")
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from figure_check import figure_problems  # noqa: E402
+
+LANGS = ("ru", "en")
+
+
+def _engine(name, bearings=False, drawing=True):
+    import engine
+    from engine.plots import figures, train_figures
+
+    study = engine.load(example_path(name))
+    whole = engine.analyze_engine(study.spec, study.train, study.settings)
+
+    def build(lang):
+        figs = {**figures(whole.cylinder, lang), **train_figures(whole, lang)}
+        if drawing:
+            from engine.drawing import drawing_figures
+            figs.update(drawing_figures(whole.cylinder, lang))
+        if bearings:
+            from engine.bearing_plots import bearing_figures
+            figs.update(bearing_figures(_bearing_analysis(name, study, whole), lang))
+        return figs
+    return build
+
+
+def _bearing_analysis(name, study, whole):
+    """The bearing analysis the CLI draws (``engine --bearings``), on the fine grid."""
+    from engine.bearing_spec import bearing_analysis, read_bearing_inputs
+    from engine.train_bearings import engine_bearings, layout_cylinders
+
+    spec = study.spec
+    inputs = read_bearing_inputs(example_path(name), spec)
+    fine = whole.cylinder.curves
+    lay = whole.layout
+    if lay.n == 1:
+        return bearing_analysis(spec, fine, inputs)
+    cyl, tau, zt = layout_cylinders(lay)
+    cw = [(c.z, c.mr, c.angle_deg) for c in whole.summary.counterweights]
+    return engine_bearings(spec, fine["alpha_deg"].to_numpy(), cyl, tau, zt,
+                           counterweights=cw, inputs=inputs)
+
+
+def _linkage(name, sizes=("A1",)):
+    import linkage
+    import plans
+    from linkage.plots import all_figures
+    from plans.drawing import layout_sheets, position_figure, sheet_figure
+
+    spec = linkage.load_spec(example_path(name))
+    result = linkage.analyze(spec)
+    full = linkage.full_turn(spec, 5.0)
+    plan_list = plans.build_plans(result, "all")
+
+    def build(lang):
+        figs = dict(all_figures(result, full, lang=lang))
+        for pp in plan_list:
+            figs[f"plans_{pp.tag}"] = position_figure(pp, lang)
+        for size in sizes:
+            for k, sh in enumerate(layout_sheets(result, plan_list, lang, size)):
+                figs[f"sheet_{size}_{k + 1}"] = sheet_figure(sh)
+        return figs
+    return build
+
+
+def _synth():
+    from linkage import synthesis as syn
+    from linkage import synthesis_plots as plots
+
+    phi0 = 30.0
+    design = syn.design_for_mu_min(0.9, 40.0, phi0, l1_step=0.01)
+    region = syn.existence_region(phi0)
+    family = syn.right_angle_family(design.l1, phi0)
+    phi = np.arange(0.0, 361.0, 1.0)
+    mu = syn.transmission_angle_deg(phi, design.l1, design.l2, design.l3)
+
+    def build(lang):
+        return {"region": plots.plot_region(region, design, family=family,
+                                            lang=lang).figure,
+                "mu_min": plots.plot_mu_min_curves(syn.mu_min_curves(phi0), design,
+                                                   mu_required=40.0, lang=lang).figure,
+                "transmission_angle": plots.plot_transmission_angle(
+                    phi, mu, design, lang=lang).figure}
+    return build
+
+
+def _dynamics(name):
+    from dynamics.plots import dynamics_figures
+    from dynamics.spec import load_dynamics_spec, run_job
+
+    res = run_job(load_dynamics_spec(example_path(name)))
+    return lambda lang: dynamics_figures(res, lang)
+
+
+def _rotor():
+    from matplotlib.figure import Figure
+
+    from dynamics.rotor import plot_mr_polygon, rotor_balance
+
+    res = rotor_balance(example_path("rotor_two_plane.toml"))
+
+    def build(lang):
+        n = len(res.corrections)
+        fig = Figure(figsize=(5.2 * n, 5.2), layout="constrained")
+        for k in range(n):
+            plot_mr_polygon(res, k, fig.add_subplot(1, n, k + 1), lang=lang)
+        return {"rotor_polygons": fig}
+    return build
+
+
+def _shaking():
+    from matplotlib.figure import Figure
+
+    from dynamics.shaking import mechanism_balance, plot_shaking_force, plot_shaking_locus
+
+    res = mechanism_balance(example_path("ratchet_balance.toml"))
+
+    def build(lang):
+        figs = {}
+        for key, fn, size in (("shaking_force", plot_shaking_force, (7.5, 4.2)),
+                              ("shaking_locus", plot_shaking_locus, (6, 6))):
+            fig = Figure(figsize=size, layout="constrained")
+            fn(res, fig.add_subplot(), lang=lang)
+            figs[key] = fig
+        return figs
+    return build
+
+
+#: Every bundled example: how its figures are built, and whether they are saved with a
+#: tight bounding box (``crankdyn synth``: the edge is the content's).
+EXAMPLES = {
+    "engine-petrol": (lambda: _engine("petrol_vaz2106.toml", bearings=True), True),
+    "engine-diesel": (lambda: _engine("diesel_d240.toml", bearings=True), True),
+    "engine-six": (lambda: _engine("petrol_bmw_m54.toml", bearings=True), True),
+    "engine-v8": (lambda: _engine("diesel_kamaz740.toml", bearings=True), True),
+    "linkage-ratchet": (lambda: _linkage("ratchet.toml"), True),
+    "linkage-press": (lambda: _linkage("press.toml", ("A1", "A3")), True),
+    "synth": (_synth, False),
+    "dynamics-flywheel": (lambda: _dynamics("flywheel_seed.toml"), True),
+    "dynamics-press": (lambda: _dynamics("press_dynamics.toml"), True),
+    "dynamics-petrol": (lambda: _dynamics("petrol_dynamics.toml"), True),
+    "dynamics-hoist": (lambda: _dynamics("hoist_machine.toml"), True),
+    "balance-rotor": (_rotor, True),
+    "balance-ratchet": (_shaking, True),
+}
+
+
+CYRILLIC = re.compile("[\u0400-\u04FF]")
+MATH = re.compile(r"\$[^$]*\$")
+
+
+def _word_problems(fig, lang):
+    """Words no figure may show: a literal underscore outside mathtext ("M_d": #23), and
+    in English a Cyrillic letter."""
+    from matplotlib.text import Text
+
+    out = []
+    for t in fig.findobj(Text):
+        s = t.get_text()
+        if not s or not t.get_visible():
+            continue
+        if "_" in MATH.sub("", s):
+            out.append(f"literal underscore: {s!r}")
+        if lang == "en" and CYRILLIC.search(s):
+            out.append(f"Cyrillic in an English figure: {s!r}")
+    return out
+
+
+@pytest.fixture(scope="module", params=list(EXAMPLES))
+def example(request):
+    make, edge = EXAMPLES[request.param]
+    return request.param, make(), edge
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_nothing_overlaps_nothing_is_cut(example, lang):
+    name, build, edge = example
+    figs = build(lang)
+    assert figs
+    found = []
+    for stem, fig in figs.items():
+        found += [f"{name} [{lang}] {stem}: {p}" for p in figure_problems(fig, edge=edge)]
+        found += [f"{name} [{lang}] {stem}: {p}" for p in _word_problems(fig, lang)]
+        fig.clear()
+    assert not found, "\n".join(found[:60]) + f"\n({len(found)} problems)"
+
+
+def test_the_check_finds_each_kind_of_fault():
+    """The checker itself: two texts on top of each other, a text over a curve, an axis
+    line through a text, a text cut at the edge; a clean figure has none."""
+    from matplotlib.figure import Figure
+
+    def fig_with(draw):
+        fig = Figure(figsize=(4, 3))
+        ax = fig.add_axes((0.15, 0.15, 0.8, 0.75))
+        ax.set_xlim(0, 10)
+        ax.set_ylim(0, 10)
+        draw(ax)
+        return fig
+
+    clean = fig_with(lambda ax: (ax.plot([0, 10], [1, 1]), ax.text(5, 5, "free")))
+    assert figure_problems(clean) == []
+    both = fig_with(lambda ax: (ax.text(5, 5, "one"), ax.text(5.1, 5.05, "two")))
+    assert any(p.startswith("overlap") for p in figure_problems(both))
+    curve = fig_with(lambda ax: (ax.plot([0, 10], [5.1, 5.1]),
+                                 ax.text(5, 5, "label", va="center")))
+    assert any(p.startswith("crossed") for p in figure_problems(curve))
+    axis = fig_with(lambda ax: (ax.axvline(5.2), ax.text(5, 5, "label", va="center")))
+    assert any("crossed" in p for p in figure_problems(axis))
+    edge = fig_with(lambda ax: ax.annotate("far too long a text for this small figure",
+                                           (9, 9)))
+    assert any(p.startswith("cut") for p in figure_problems(edge))
+    gap = fig_with(lambda ax: (ax.plot([0, 4, float("nan"), 6, 10], [5.1] * 5),
+                               ax.text(5, 5, "x", va="center")))
+    assert figure_problems(gap) == []                  # a broken line under a label
