@@ -81,6 +81,8 @@ def write_csv(df, path) -> None:
 STAGE_PREFIX = ".crankdyn-stage."
 COMMIT_NAME = ".crankdyn-commit"
 MANIFEST_NAME = ".crankdyn-report.json"
+#: The lock file of a run in progress (see :func:`_lock`); deleted by the run at its end.
+LOCK_NAME = ".crankdyn-lock"
 _OBSOLETE_NAME = ".obsolete.json"
 
 
@@ -96,8 +98,14 @@ def _output_error(exc: OSError, what: str, path=None) -> OutputError:
 
 
 def _process_start(pid: int):
-    """Start time of a process (clock ticks since boot, from /proc), or None when the
-    process does not exist; ``""`` when it exists but /proc is not available."""
+    """Start time of a process, or None when the process does not exist; ``""`` when it
+    exists but its start time cannot be read.
+
+    Linux: clock ticks since boot from ``/proc/<pid>/stat``; Windows: the creation time
+    from ``GetProcessTimes``; elsewhere (macOS, BSD: no /proc) ``os.kill(pid, 0)`` tells
+    only whether the process exists."""
+    if os.name == "nt":
+        return _process_start_windows(pid)
     try:
         with open(f"/proc/{pid}/stat", "rb") as f:
             stat = f.read()
@@ -111,14 +119,46 @@ def _process_start(pid: int):
 
 
 def _process_start_without_proc(pid: int):
-    """``None`` if no process ``pid`` exists, else ``""`` (start time unknown)."""
+    """``None`` if no process ``pid`` exists, else ``""`` (start time unknown).  POSIX
+    only: on Windows ``os.kill(pid, 0)`` would terminate the process."""
     try:
         os.kill(pid, 0)
     except ProcessLookupError:
         return None
     except PermissionError:
         pass
+    except OSError:
+        return ""
     return ""
+
+
+def _process_start_windows(pid: int):
+    """Windows: the creation time of process ``pid`` (100 ns units since 1601, as text),
+    None when no such process is running, ``""`` when it exists but cannot be queried."""
+    import ctypes
+    from ctypes import wintypes
+
+    kernel32 = ctypes.WinDLL("kernel32", use_last_error=True)
+    kernel32.OpenProcess.restype = wintypes.HANDLE
+    kernel32.OpenProcess.argtypes = (wintypes.DWORD, wintypes.BOOL, wintypes.DWORD)
+    query_limited_information, error_invalid_parameter, still_active = 0x1000, 87, 259
+    handle = kernel32.OpenProcess(query_limited_information, False, pid)
+    if not handle:
+        # no such process (ERROR_INVALID_PARAMETER); any other error (access denied):
+        # it exists but belongs to someone else
+        return None if ctypes.get_last_error() == error_invalid_parameter else ""
+    try:
+        code = wintypes.DWORD()
+        if kernel32.GetExitCodeProcess(handle, ctypes.byref(code)) and \
+                code.value != still_active:
+            return None                 # exited; the handle only keeps its record alive
+        times = [wintypes.FILETIME() for _ in range(4)]
+        if not kernel32.GetProcessTimes(handle, *(ctypes.byref(t) for t in times)):
+            return ""
+        created = times[0]
+        return str((created.dwHighDateTime << 32) | created.dwLowDateTime)
+    finally:
+        kernel32.CloseHandle(handle)
 
 
 def _stage_is_dead(name: str) -> bool:
@@ -146,6 +186,9 @@ def _sha256(path: Path) -> str:
 
 
 def _fsync_dir(path: Path) -> None:
+    """Flush a folder's entries (the renames in it) to disk where the system allows it:
+    POSIX opens a folder read-only and fsyncs it; Windows cannot open a folder as a file
+    (PermissionError) and needs no such step, NTFS journals its metadata: a no-op."""
     try:
         fd = os.open(path, os.O_RDONLY)
     except OSError:
@@ -218,10 +261,30 @@ def recover_output(directory) -> None:
     """Bring an output folder back to one complete report: finish a replacement that a
     killed run had begun (``.crankdyn-commit``) and delete the staging folders of runs that
     no longer exist.  Every run does this first, holding the folder's lock; call it
-    yourself only while no crankdyn run writes into ``directory``."""
+    yourself only while no crankdyn run writes into ``directory``.  The lock file a killed
+    run left (``.crankdyn-lock``) is deleted too, unless a run holds it."""
+    directory = Path(directory)
+    _recover(directory)
+    _remove_stale_lock(directory)
+
+
+def _remove_stale_lock(directory: Path) -> None:
+    """Delete the lock file of a killed run if no run holds it (taken without waiting)."""
+    from filelock import FileLock, Timeout
+
+    if not (directory / LOCK_NAME).is_file():
+        return
+    lock = FileLock(directory / LOCK_NAME, thread_local=False)
+    try:
+        lock.acquire(blocking=False)
+    except (Timeout, OSError):
+        return
+    _unlock(lock, directory)
+
+
+def _recover(directory: Path) -> None:
     import shutil
 
-    directory = Path(directory)
     commit = directory / COMMIT_NAME
     if commit.is_dir():
         if (commit / MANIFEST_NAME).exists():
@@ -254,29 +317,43 @@ def _make_folder(directory: Path) -> list[Path]:
 
 
 def _lock(directory: Path):
-    """An exclusive lock on the output folder (flock on the folder itself, held until the
-    returned descriptor is closed); None where the file system has no locks.
+    """An exclusive lock on the output folder: a :class:`filelock.FileLock` on the hidden
+    file ``.crankdyn-lock`` inside it (``flock`` on POSIX, ``LockFileEx`` on Windows),
+    held until :func:`_unlock`; None where the file system has no locks.
 
-    A run that fails removes a folder it created; a run that waited for that folder's
-    lock then finds the path gone or a new folder there, and retries on the new one."""
-    import fcntl
+    :func:`_unlock` deletes the lock file while still holding it, so no run leaves it
+    behind; a waiter that then obtains the lock on the deleted file sees that (filelock
+    checks the link count, this function checks the file is there) and locks anew.  A
+    run that fails removes a folder it created; a run that waited for that folder's lock
+    then finds the path gone or a new folder there, and retries on the new one."""
+    from filelock import FileLock
 
+    path = directory / LOCK_NAME
     for _ in range(100):
         _make_folder(directory.absolute())
-        fd = os.open(directory, os.O_RDONLY | os.O_DIRECTORY)
+        lock = FileLock(path, thread_local=False)
         try:
-            fcntl.flock(fd, fcntl.LOCK_EX)
-        except OSError:         # e.g. a network file system without flock
-            os.close(fd)
+            lock.acquire()
+        except FileNotFoundError:   # the folder was removed by a failed run meanwhile
+            continue
+        except NotImplementedError:  # a file system without locks of any kind
             return None
-        try:
-            same = os.path.samestat(os.fstat(fd), os.stat(directory))
-        except FileNotFoundError:
-            same = False
-        if same:
-            return fd
-        os.close(fd)
+        if path.is_file():
+            return lock
+        lock.release()
     raise OutputError(f"output folder {directory}: keeps being removed by another run")
+
+
+def _unlock(lock, directory: Path) -> None:
+    """Release the lock of :func:`_lock` and delete its file (first, while the lock is
+    still held, where the system allows: POSIX; Windows refuses to delete an open file,
+    and filelock deletes it on release there)."""
+    path = directory / LOCK_NAME
+    with contextlib.suppress(OSError):
+        os.unlink(path)
+    lock.release()
+    with contextlib.suppress(OSError):
+        os.unlink(path)
 
 
 def _in_unit(name: str, unit, info=None) -> bool:
@@ -344,7 +421,8 @@ def staged_output(directory, inputs=(), unit=None):
 
     Protocol (documented in the README, section "Output folders"):
 
-    1. ``directory`` (and missing parents) is created and locked (``flock`` on the folder)
+    1. ``directory`` (and missing parents) is created and locked (a ``filelock`` lock on
+       the hidden file ``.crankdyn-lock`` in it, deleted again at the end of the run)
        for the rest of the call, so concurrent runs into one folder take turns and the
        folder ends with the complete report of the last one;
     2. :func:`recover_output` finishes a replacement a killed run had begun and deletes
@@ -379,10 +457,11 @@ def staged_output(directory, inputs=(), unit=None):
     except OSError as exc:
         raise _output_error(exc, "cannot create the output folder", directory) from None
     stage = lock = None
+    failed = False
     try:
         try:
             lock = _lock(directory)
-            recover_output(directory)
+            _recover(directory)
             start = _process_start(os.getpid()) or "0"
             stage = Path(tempfile.mkdtemp(prefix=f"{STAGE_PREFIX}{os.getpid()}.{start}.",
                                           dir=directory))
@@ -399,15 +478,25 @@ def staged_output(directory, inputs=(), unit=None):
         except OSError as exc:
             raise _output_error(exc, "cannot replace the report in", directory) from None
     except BaseException:
+        failed = True
         if stage is not None:
             shutil.rmtree(stage, ignore_errors=True)
-        for p in reversed(created):          # a failed run leaves no folder behind
+        if lock is not None:     # the folder must be empty to go (POSIX: still locked)
             with contextlib.suppress(OSError):
-                p.rmdir()
+                os.unlink(directory / LOCK_NAME)
+        _remove_folders(created)             # a failed run leaves no folder behind
         raise
     finally:
         if lock is not None:
-            os.close(lock)
+            _unlock(lock, directory)
+            if failed:                       # Windows: empty only after the release
+                _remove_folders(created)
+
+
+def _remove_folders(created) -> None:
+    for p in reversed(created):
+        with contextlib.suppress(OSError):
+            p.rmdir()
 
 
 @contextlib.contextmanager
