@@ -17,7 +17,7 @@ from .errors import OutputError
 
 __all__ = ["atomic_path", "staged_output", "recover_output", "verify_report", "read_manifest",
            "write_csv", "check_not_input", "ensure_finite", "full_precision_xlsx",
-           "safe_name", "save_figure", "OutputError", "MANIFEST_NAME"]
+           "safe_name", "save_figure", "OutputError", "MANIFEST_NAME", "WINDOWS_RESERVED"]
 
 
 @contextlib.contextmanager
@@ -526,16 +526,32 @@ def full_precision_xlsx():
         _writer.safe_string = original
 
 
+#: Device names Windows reserves, with any extension and in any case (``con.xlsx``,
+#: ``Aux_forces.csv`` is fine, ``nul.v2.csv`` is not): the stem before the first dot.
+WINDOWS_RESERVED = frozenset(
+    ["CON", "PRN", "AUX", "NUL", "CONIN$", "CONOUT$"]
+    + [f"{dev}{i}" for dev in ("COM", "LPT") for i in (*"123456789", "\u00b9", "\u00b2",
+                                                       "\u00b3")])
+
+
 def safe_name(name: str, default: str = "report", max_bytes: int = 160) -> str:
-    """A file-name stem from a spec's name: letters (any script), digits, ``_``, ``.`` and
-    ``-`` kept, every other run of characters replaced by ``_``; ``default`` if nothing is
-    left; cut to at most ``max_bytes`` bytes of UTF-8 (at a character boundary), so the
-    file name fits any common file system.  The full name stays inside the report."""
+    """A file-name stem from a spec's name, valid on Windows, macOS and Linux alike:
+    letters (any script), digits, ``_``, ``.`` and ``-`` kept, every other run of
+    characters (spaces, control characters, ``<>:"/\\|?*``) replaced by ``_``; no leading
+    or trailing dot or ``_``; ``default`` if nothing is left; cut to at most ``max_bytes``
+    bytes of UTF-8 (at a character boundary), so the file name fits any common file
+    system.  A name Windows reserves for a device (:data:`WINDOWS_RESERVED`: ``CON``,
+    ``nul``, ``COM1``, ``lpt9.v2`` ...) gets ``_`` after its first part (``CON_``,
+    ``nul_``, ``lpt9_.v2``).  The full name stays inside the report."""
     import re
 
     stem = re.sub(r"[^\w.-]+", "_", name).strip("._") or default
-    cut = stem.encode("utf-8")[:max_bytes].decode("utf-8", "ignore").rstrip("._")
-    return cut or default
+    cut = stem.encode("utf-8")[:max_bytes].decode("utf-8", "ignore").rstrip("._") \
+        or default
+    first, dot, rest = cut.partition(".")
+    if first.upper() in WINDOWS_RESERVED:
+        cut = f"{first}_{dot}{rest}"
+    return cut
 
 
 def save_figure(fig, stem, formats=("png", "svg"), dpi=110, tight=False) -> list[Path]:

@@ -38,11 +38,11 @@ def run_cli(*argv):
                                         ("diesel", "ru"), ("diesel", "en"), ("six", "en"),
                                         ("v8", "ru"), ("v8", "en")],
                 ids=lambda p: "-".join(p))
-def run(request, tmp_path_factory):
+def run(request, cli_report):
     name, lang = request.param
-    out = tmp_path_factory.mktemp(f"{name}_{lang}")
-    assert run_cli("--example", name, "-o", out, "--lang", lang) == 0
-    return name, lang, out
+    rep = cli_report("engine", "--example", name, "--lang", lang)   # shared, read-only
+    assert rep.rc == 0
+    return name, lang, rep.folder
 
 
 def test_outputs_exist(run):
@@ -271,13 +271,14 @@ def test_readme_states_the_symbol_table():
         assert f"| {en} | {ru} | {what} |" in readme
 
 
-def test_terminal_summary_speaks_the_report_language(tmp_path, capsys):
+def test_terminal_summary_speaks_the_report_language(cli_report):
     """The whole engine and its bearings (V8: flywheel, counterweights, every line) print
     in the report's language: no English word in a Russian run, no Cyrillic letter in an
     English one."""
     import re
-    assert run_cli("--example", "v8", "-o", tmp_path / "ru", "--bearings") == 0
-    text = capsys.readouterr().out
+    rep = cli_report("engine", "--example", "v8", "--bearings")      # shared, read-only
+    assert rep.rc == 0
+    text = rep.out
     for word in ("двигатель: 8 цил., V-образный, порядок работы 1-5-4-2-6-3-7-8",
                  "противовес", "маховик", "шатунные шейки", "коренные шейки", "дуги износа"):
         assert word in text
@@ -285,9 +286,9 @@ def test_terminal_summary_speaks_the_report_language(tmp_path, capsys):
     assert "diesel-kamaz740_journals.csv" in written
     words = set(re.findall(r"[A-Za-z]{3,}", summary.replace("diesel-kamaz740", "")))
     assert words <= {"max", "min"}, words
-    assert run_cli("--example", "v8", "-o", tmp_path / "en", "--bearings",
-                   "--lang", "en") == 0
-    text = capsys.readouterr().out
+    rep = cli_report("engine", "--example", "v8", "--bearings", "--lang", "en")
+    assert rep.rc == 0
+    text = rep.out
     assert not re.search("[\u0400-\u04ff]", text), text
     for word in ("whole engine: 8 cylinders vee", "counterweight", "most loaded"):
         assert word in text

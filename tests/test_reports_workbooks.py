@@ -18,21 +18,25 @@ from crankdyn.cli import main
 from engine.table2 import coefficients, table2, table2_columns
 
 CYRILLIC = re.compile("[\u0400-\u04FF]")
+EXAMPLES = {"petrol": "petrol_vaz2106.toml", "diesel": "diesel_d240.toml"}
 RUSSIAN_SYMBOLS = ("ΔPг", "Pj", "Sш", "Mкр", "Kr.ш", "Rшш", "Ψ", "Lш", "Fп", "mш.к", "pг",
                    "β", "α", "μP", "Mкр.ср", "Rшш.ср", "vп.ср")
 
 
 @pytest.fixture(scope="module")
-def runs(tmp_path_factory):
+def runs(tmp_path_factory, cli_report):
     """Every workbook the CLI writes: engine (both examples × languages × forms),
-    linkage (two examples), synthesis."""
+    linkage (two examples), synthesis.  The engine reports in the seed's form, the
+    examples' own ([table] form absent), are the session's shared ones."""
     out = {}
     for ex in ("petrol", "diesel"):
         for lang in ("ru", "en"):
             for form in ("seed", "kolchin"):
-                d = tmp_path_factory.mktemp(f"{ex}_{lang}_{form}")
-                assert main(["engine", "--example", ex, "-o", str(d), "--lang", lang,
-                             "--form", form]) == 0
+                study = engine.load(example_path(EXAMPLES[ex]))
+                own = () if study.settings.form == form else ("--form", form)
+                rep = cli_report("engine", "--example", ex, "--lang", lang, *own)
+                assert rep.rc == 0
+                d = rep.folder
                 out[("engine", ex, lang, form)] = next(d.glob("*.xlsx"))
                 out[("table2", ex, lang, form)] = next(d.glob("*_table2.csv"))
     for ex in ("ratchet", "press"):
