@@ -270,11 +270,11 @@ def recover_output(directory) -> None:
 
 def _remove_stale_lock(directory: Path) -> None:
     """Delete the lock file of a killed run if no run holds it (taken without waiting)."""
-    from filelock import FileLock, Timeout
+    from filelock import Timeout
 
     if not (directory / LOCK_NAME).is_file():
         return
-    lock = FileLock(directory / LOCK_NAME, thread_local=False)
+    lock = _filelock()(directory / LOCK_NAME, thread_local=False)
     try:
         lock.acquire(blocking=False)
     except (Timeout, OSError):
@@ -316,6 +316,18 @@ def _make_folder(directory: Path) -> list[Path]:
     return created
 
 
+def _filelock():
+    """:class:`filelock.FileLock`: ``LockFileEx`` on Windows, ``flock`` on POSIX; where
+    Python has no :mod:`fcntl` (an unusual POSIX build) filelock falls back to a lock by
+    exclusive creation of the file, and its warning about that is not ours to print."""
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.filterwarnings("ignore", "only soft file lock is available")
+        from filelock import FileLock
+    return FileLock
+
+
 def _lock(directory: Path):
     """An exclusive lock on the output folder: a :class:`filelock.FileLock` on the hidden
     file ``.crankdyn-lock`` inside it (``flock`` on POSIX, ``LockFileEx`` on Windows),
@@ -326,8 +338,7 @@ def _lock(directory: Path):
     checks the link count, this function checks the file is there) and locks anew.  A
     run that fails removes a folder it created; a run that waited for that folder's lock
     then finds the path gone or a new folder there, and retries on the new one."""
-    from filelock import FileLock
-
+    FileLock = _filelock()
     path = directory / LOCK_NAME
     for _ in range(100):
         _make_folder(directory.absolute())

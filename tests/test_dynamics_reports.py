@@ -43,22 +43,17 @@ def _names(folder):
 
 
 @pytest.fixture(scope="module")
-def runs(tmp_path_factory):
-    """Every bundled example of both commands in both languages, each in its own folder:
-    (command, example, lang) → (folder, stdout, stderr)."""
-    import contextlib
-    import io
-
+def runs(cli_report):
+    """Every bundled example of both commands in both languages, each in its own folder
+    (the session's shared reports, read-only): (command, example, lang) → (folder,
+    stdout, stderr)."""
     out = {}
     for command, examples in (("dynamics", DYNAMICS), ("balance", BALANCE)):
         for ex in examples:
             for lang in ("ru", "en"):
-                d = tmp_path_factory.mktemp(f"{command}_{ex}_{lang}")
-                o, e = io.StringIO(), io.StringIO()
-                with contextlib.redirect_stdout(o), contextlib.redirect_stderr(e):
-                    rc = main([command, "--example", ex, "-o", str(d), "--lang", lang])
-                assert rc == 0, e.getvalue()
-                out[(command, ex, lang)] = (d, o.getvalue(), e.getvalue())
+                rep = cli_report(command, "--example", ex, "--lang", lang)
+                assert rep.rc == 0, rep.err
+                out[(command, ex, lang)] = (rep.folder, rep.out, rep.err)
     return out
 
 
