@@ -356,15 +356,24 @@ def _lock(directory: Path):
 
 
 def _unlock(lock, directory: Path) -> None:
-    """Release the lock of :func:`_lock` and delete its file (first, while the lock is
-    still held, where the system allows: POSIX; Windows refuses to delete an open file,
-    and filelock deletes it on release there)."""
+    """Delete the lock file of :func:`_lock` while the lock is still held, then release
+    it (Windows refuses to delete an open file: there the file goes after the release,
+    by filelock or here)."""
     path = directory / LOCK_NAME
-    with contextlib.suppress(OSError):
+    try:
         os.unlink(path)
+        gone = True
+    except FileNotFoundError:
+        gone = True
+    except OSError:         # Windows: a file open in any process cannot be deleted
+        gone = False
     lock.release()
-    with contextlib.suppress(OSError):
-        os.unlink(path)
+    # Never delete the path after the release on POSIX: another run may have created and
+    # locked a new lock file there by now.  Windows refuses to delete one that another
+    # run holds open, so the second try can only remove our own, now unlocked, file.
+    if not gone and os.name == "nt":
+        with contextlib.suppress(OSError):
+            os.unlink(path)
 
 
 def _in_unit(name: str, unit, info=None) -> bool:
