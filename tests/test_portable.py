@@ -158,3 +158,61 @@ def test_reports_run_without_posix_only_modules(tmp_path):
     assert len([n for n in verify_report(tmp_path / "engine") if n.endswith(".png")]) == 13
     linkage = verify_report(tmp_path / "linkage")
     assert "ratchet-drive.xlsx" in linkage and not [n for n in linkage if n.endswith(".png")]
+
+
+# ------------------------------------------------------------------- the output lock
+def test_lock_excludes_and_leaves_no_file(tmp_path):
+    """The folder's lock (filelock on .crankdyn-lock): a second taker waits until the
+    first lets go, then holds a lock on a file that is there; each deletes the file when
+    it lets go, and recover_output leaves a held lock alone but removes a stale one."""
+    import threading
+
+    from crankbase.output import _lock, _unlock, recover_output
+
+    d = tmp_path / "out"
+    first = _lock(d)
+    assert (d / LOCK_NAME).is_file()
+    recover_output(d)                                   # held: not touched
+    assert (d / LOCK_NAME).is_file()
+    got, second = threading.Event(), []
+
+    def take():
+        second.append(_lock(d))
+        got.set()
+
+    t = threading.Thread(target=take)
+    t.start()
+    assert not got.wait(0.5)                            # waits while the first holds it
+    _unlock(first, d)
+    assert got.wait(60)
+    t.join()
+    assert (d / LOCK_NAME).is_file()                    # the second's own lock file
+    _unlock(second[0], d)
+    assert not (d / LOCK_NAME).exists()
+    (d / LOCK_NAME).write_bytes(b"")                    # what a killed run leaves
+    recover_output(d)
+    assert list(d.iterdir()) == []
+
+
+def test_process_start_without_proc(monkeypatch):
+    """Where there is no /proc (macOS, BSD) a process's existence is asked of os.kill
+    with signal 0: this process exists (start time unknown, ""), a finished one does not
+    (None)."""
+    import builtins
+
+    import crankbase.output as out
+
+    real_open, real_isdir = builtins.open, out.os.path.isdir
+
+    def no_proc_open(path, *a, **kw):
+        if str(path).startswith("/proc/"):
+            raise FileNotFoundError(2, "No such file or directory", str(path))
+        return real_open(path, *a, **kw)
+
+    done = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"],
+                          capture_output=True, text=True, check=True)
+    monkeypatch.setattr(builtins, "open", no_proc_open)
+    monkeypatch.setattr(out.os.path, "isdir",
+                        lambda p: False if str(p).startswith("/proc") else real_isdir(p))
+    assert out._process_start(__import__("os").getpid()) == ""
+    assert out._process_start(int(done.stdout)) is None
