@@ -4,7 +4,7 @@ files; the terminal summary, the workbook and the plots speak the report's langu
 import re
 
 import pytest
-from rendering import needs_office, page_sizes
+from rendering import needs_office, page_sizes_many
 from openpyxl import load_workbook
 
 from crankbase.output import MANIFEST_NAME, read_manifest, verify_report
@@ -266,9 +266,10 @@ def test_column_labels():
 @pytest.mark.slow
 @needs_office
 def test_dynamics_workbooks_render_on_a4_pages(runs, tmp_path):
+    sizes = page_sizes_many({lang: runs[("dynamics", "press", lang)][0]
+                             / "crank-press_dynamics.xlsx" for lang in ("ru", "en")}, tmp_path)
     for lang in ("ru", "en"):
-        path = runs[("dynamics", "press", lang)][0] / "crank-press_dynamics.xlsx"
-        pages = page_sizes(path, tmp_path / lang)
+        pages = sizes[lang]
         assert set(pages) == {(595, 842)}, (lang, set(pages))
         assert len(pages) >= 4
 

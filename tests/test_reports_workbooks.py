@@ -9,7 +9,7 @@ import zipfile
 import numpy as np
 import pandas as pd
 import pytest
-from rendering import needs_office, page_sizes
+from rendering import needs_office, page_sizes_many
 from openpyxl import load_workbook
 
 import engine
@@ -378,9 +378,9 @@ def test_workbooks_render_on_a4_pages(runs, tmp_path):
     chosen = [("engine", "petrol", "ru", "seed"), ("engine", "diesel", "en", "kolchin"),
               ("linkage", "ratchet"), ("linkage", "press", "en"),
               ("synth", "ru"), ("synth", "en")]           # every layout, each language
+    sizes = page_sizes_many({key: runs[key] for key in chosen}, tmp_path)
     for key in chosen:
-        path = runs[key]
-        pages = page_sizes(path, tmp_path / "_".join(key))
+        path, pages = runs[key], sizes[key]
         assert set(pages) == {(595, 842)}, (key, set(pages))        # A4, either way
         assert len(pages) >= len(load_workbook(path).worksheets), key
 
