@@ -3,6 +3,7 @@ workbook read back with openpyxl equals the CSV; mm columns = N ÷ μP; every pl
 and is not empty; bad input exits 2 with one line per problem and writes nothing; an
 existing report is replaced only by a complete new one."""
 import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -424,9 +425,9 @@ def _snapshot(folder):
     return {p.name: p.read_bytes() for p in sorted(folder.iterdir())}
 
 
-def test_existing_report_survives_bad_input(tmp_path):
-    out = tmp_path / "out"
-    assert run_cli("--example", "diesel", "-o", out) == 0
+def test_existing_report_survives_bad_input(tmp_path, cli_report):
+    out = tmp_path / "out"          # a copy of the session's diesel report (--lang ru)
+    shutil.copytree(cli_report("engine", "--example", "diesel", "--lang", "ru").folder, out)
     before = _snapshot(out)
     spec = tmp_path / "spec.toml"
     spec.write_text(GOOD.replace("name = \"t\"", "name = \"diesel-d240\"")
@@ -435,11 +436,12 @@ def test_existing_report_survives_bad_input(tmp_path):
     assert _snapshot(out) == before
 
 
-def test_existing_report_survives_a_crash_while_saving(tmp_path, monkeypatch, capsys):
+def test_existing_report_survives_a_crash_while_saving(tmp_path, monkeypatch, capsys,
+                                                      cli_report):
     """A failure in the middle of saving the workbook leaves the old workbook whole and
     no temporary file behind."""
-    out = tmp_path / "out"
-    assert run_cli("--example", "petrol", "-o", out) == 0
+    out = tmp_path / "out"          # a copy of the session's petrol report (--lang ru)
+    shutil.copytree(cli_report("engine", "--example", "petrol", "--lang", "ru").folder, out)
     before = _snapshot(out)
     import openpyxl.workbook.workbook as wbmod
 
