@@ -65,10 +65,13 @@ def test_every_output_is_named_after_the_spec(runs):
         assert set(verify_report(d)) == want
 
 
-def test_two_specs_share_a_folder_and_a_rerun_replaces_only_its_own(tmp_path, capsys):
-    out = tmp_path / "o"
-    for cmd, ex in (("dynamics", "hoist"), ("dynamics", "flywheel"), ("balance", "rotor"),
-                    ("balance", "ratchet")):
+def test_two_specs_share_a_folder_and_a_rerun_replaces_only_its_own(tmp_path, capsys,
+                                                                    cli_report):
+    import shutil
+
+    out = tmp_path / "o"            # the hoist first: a copy of the session's report
+    shutil.copytree(cli_report("dynamics", "--example", "hoist", "--lang", "ru").folder, out)
+    for cmd, ex in (("dynamics", "flywheel"), ("balance", "rotor"), ("balance", "ratchet")):
         assert main([cmd, "--example", ex, "-o", str(out)]) == 0
     both = dynamics_files("hoist") | dynamics_files("flywheel") | BALANCE["rotor"] \
         | BALANCE["ratchet"]
@@ -94,11 +97,13 @@ def test_two_specs_share_a_folder_and_a_rerun_replaces_only_its_own(tmp_path, ca
     assert units["two-plane-example_rotor_shares.csv"] == "balance:two-plane-example"
 
 
-def test_stale_copies_are_removed_and_said_so(tmp_path, capsys):
+def test_stale_copies_are_removed_and_said_so(tmp_path, capsys, cli_report):
     """A file of this spec the manifest does not list (copied back by hand) that this run
     does not write goes too, with a line on stderr in the report's language."""
-    out = tmp_path / "o"
-    assert main(["dynamics", "--example", "hoist", "-o", str(out)]) == 0
+    import shutil
+
+    out = tmp_path / "o"            # a copy of the session's hoist report (--lang ru)
+    shutil.copytree(cli_report("dynamics", "--example", "hoist", "--lang", "ru").folder, out)
     (out / "hoist_forces_true_motion.png").write_bytes(b"old")
     (out / "motion.csv").write_text("an older crankdyn's unnamed output\n")
     capsys.readouterr()
