@@ -17,7 +17,7 @@ from .errors import OutputError
 
 __all__ = ["atomic_path", "staged_output", "recover_output", "verify_report", "read_manifest",
            "write_csv", "check_not_input", "ensure_finite", "full_precision_xlsx",
-           "safe_name", "save_figure", "OutputError", "MANIFEST_NAME"]
+           "safe_name", "save_figure", "OutputError", "MANIFEST_NAME", "WINDOWS_RESERVED"]
 
 
 @contextlib.contextmanager
@@ -81,6 +81,8 @@ def write_csv(df, path) -> None:
 STAGE_PREFIX = ".crankdyn-stage."
 COMMIT_NAME = ".crankdyn-commit"
 MANIFEST_NAME = ".crankdyn-report.json"
+#: The lock file of a run in progress (see :func:`_lock`); deleted by the run at its end.
+LOCK_NAME = ".crankdyn-lock"
 _OBSOLETE_NAME = ".obsolete.json"
 
 
@@ -96,8 +98,14 @@ def _output_error(exc: OSError, what: str, path=None) -> OutputError:
 
 
 def _process_start(pid: int):
-    """Start time of a process (clock ticks since boot, from /proc), or None when the
-    process does not exist; ``""`` when it exists but /proc is not available."""
+    """Start time of a process, or None when the process does not exist; ``""`` when it
+    exists but its start time cannot be read.
+
+    Linux: clock ticks since boot from ``/proc/<pid>/stat``; Windows: the creation time
+    from ``GetProcessTimes``; elsewhere (macOS, BSD: no /proc) ``os.kill(pid, 0)`` tells
+    only whether the process exists."""
+    if os.name == "nt":
+        return _process_start_windows(pid)
     try:
         with open(f"/proc/{pid}/stat", "rb") as f:
             stat = f.read()
@@ -111,14 +119,46 @@ def _process_start(pid: int):
 
 
 def _process_start_without_proc(pid: int):
-    """``None`` if no process ``pid`` exists, else ``""`` (start time unknown)."""
+    """``None`` if no process ``pid`` exists, else ``""`` (start time unknown).  POSIX
+    only: on Windows ``os.kill(pid, 0)`` would terminate the process."""
     try:
         os.kill(pid, 0)
     except ProcessLookupError:
         return None
     except PermissionError:
         pass
+    except OSError:
+        return ""
     return ""
+
+
+def _process_start_windows(pid: int):
+    """Windows: the creation time of process ``pid`` (100 ns units since 1601, as text),
+    None when no such process is running, ``""`` when it exists but cannot be queried."""
+    import ctypes
+    from ctypes import wintypes
+
+    kernel32 = ctypes.WinDLL("kernel32", use_last_error=True)
+    kernel32.OpenProcess.restype = wintypes.HANDLE
+    kernel32.OpenProcess.argtypes = (wintypes.DWORD, wintypes.BOOL, wintypes.DWORD)
+    query_limited_information, error_invalid_parameter, still_active = 0x1000, 87, 259
+    handle = kernel32.OpenProcess(query_limited_information, False, pid)
+    if not handle:
+        # no such process (ERROR_INVALID_PARAMETER); any other error (access denied):
+        # it exists but belongs to someone else
+        return None if ctypes.get_last_error() == error_invalid_parameter else ""
+    try:
+        code = wintypes.DWORD()
+        if kernel32.GetExitCodeProcess(handle, ctypes.byref(code)) and \
+                code.value != still_active:
+            return None                 # exited; the handle only keeps its record alive
+        times = [wintypes.FILETIME() for _ in range(4)]
+        if not kernel32.GetProcessTimes(handle, *(ctypes.byref(t) for t in times)):
+            return ""
+        created = times[0]
+        return str((created.dwHighDateTime << 32) | created.dwLowDateTime)
+    finally:
+        kernel32.CloseHandle(handle)
 
 
 def _stage_is_dead(name: str) -> bool:
@@ -146,6 +186,9 @@ def _sha256(path: Path) -> str:
 
 
 def _fsync_dir(path: Path) -> None:
+    """Flush a folder's entries (the renames in it) to disk where the system allows it:
+    POSIX opens a folder read-only and fsyncs it; Windows cannot open a folder as a file
+    (PermissionError) and needs no such step, NTFS journals its metadata: a no-op."""
     try:
         fd = os.open(path, os.O_RDONLY)
     except OSError:
@@ -218,10 +261,30 @@ def recover_output(directory) -> None:
     """Bring an output folder back to one complete report: finish a replacement that a
     killed run had begun (``.crankdyn-commit``) and delete the staging folders of runs that
     no longer exist.  Every run does this first, holding the folder's lock; call it
-    yourself only while no crankdyn run writes into ``directory``."""
+    yourself only while no crankdyn run writes into ``directory``.  The lock file a killed
+    run left (``.crankdyn-lock``) is deleted too, unless a run holds it."""
+    directory = Path(directory)
+    _recover(directory)
+    _remove_stale_lock(directory)
+
+
+def _remove_stale_lock(directory: Path) -> None:
+    """Delete the lock file of a killed run if no run holds it (taken without waiting)."""
+    from filelock import Timeout
+
+    if not (directory / LOCK_NAME).is_file():
+        return
+    lock = _filelock()(directory / LOCK_NAME, thread_local=False)
+    try:
+        lock.acquire(blocking=False)
+    except (Timeout, OSError):
+        return
+    _unlock(lock, directory)
+
+
+def _recover(directory: Path) -> None:
     import shutil
 
-    directory = Path(directory)
     commit = directory / COMMIT_NAME
     if commit.is_dir():
         if (commit / MANIFEST_NAME).exists():
@@ -253,30 +316,64 @@ def _make_folder(directory: Path) -> list[Path]:
     return created
 
 
+def _filelock():
+    """:class:`filelock.FileLock`: ``LockFileEx`` on Windows, ``flock`` on POSIX; where
+    Python has no :mod:`fcntl` (an unusual POSIX build) filelock falls back to a lock by
+    exclusive creation of the file, and its warning about that is not ours to print."""
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.filterwarnings("ignore", "only soft file lock is available")
+        from filelock import FileLock
+    return FileLock
+
+
 def _lock(directory: Path):
-    """An exclusive lock on the output folder (flock on the folder itself, held until the
-    returned descriptor is closed); None where the file system has no locks.
+    """An exclusive lock on the output folder: a :class:`filelock.FileLock` on the hidden
+    file ``.crankdyn-lock`` inside it (``flock`` on POSIX, ``LockFileEx`` on Windows),
+    held until :func:`_unlock`; None where the file system has no locks.
 
-    A run that fails removes a folder it created; a run that waited for that folder's
-    lock then finds the path gone or a new folder there, and retries on the new one."""
-    import fcntl
-
+    :func:`_unlock` deletes the lock file while still holding it, so no run leaves it
+    behind; a waiter that then obtains the lock on the deleted file sees that (filelock
+    checks the link count, this function checks the file is there) and locks anew.  A
+    run that fails removes a folder it created; a run that waited for that folder's lock
+    then finds the path gone or a new folder there, and retries on the new one."""
+    FileLock = _filelock()
+    path = directory / LOCK_NAME
     for _ in range(100):
         _make_folder(directory.absolute())
-        fd = os.open(directory, os.O_RDONLY | os.O_DIRECTORY)
+        lock = FileLock(path, thread_local=False)
         try:
-            fcntl.flock(fd, fcntl.LOCK_EX)
-        except OSError:         # e.g. a network file system without flock
-            os.close(fd)
+            lock.acquire()
+        except FileNotFoundError:   # the folder was removed by a failed run meanwhile
+            continue
+        except NotImplementedError:  # a file system without locks of any kind
             return None
-        try:
-            same = os.path.samestat(os.fstat(fd), os.stat(directory))
-        except FileNotFoundError:
-            same = False
-        if same:
-            return fd
-        os.close(fd)
+        if path.is_file():
+            return lock
+        lock.release()
     raise OutputError(f"output folder {directory}: keeps being removed by another run")
+
+
+def _unlock(lock, directory: Path) -> None:
+    """Delete the lock file of :func:`_lock` while the lock is still held, then release
+    it (Windows refuses to delete an open file: there the file goes after the release,
+    by filelock or here)."""
+    path = directory / LOCK_NAME
+    try:
+        os.unlink(path)
+        gone = True
+    except FileNotFoundError:
+        gone = True
+    except OSError:         # Windows: a file open in any process cannot be deleted
+        gone = False
+    lock.release()
+    # Never delete the path after the release on POSIX: another run may have created and
+    # locked a new lock file there by now.  Windows refuses to delete one that another
+    # run holds open, so the second try can only remove our own, now unlocked, file.
+    if not gone and os.name == "nt":
+        with contextlib.suppress(OSError):
+            os.unlink(path)
 
 
 def _in_unit(name: str, unit, info=None) -> bool:
@@ -344,7 +441,8 @@ def staged_output(directory, inputs=(), unit=None):
 
     Protocol (documented in the README, section "Output folders"):
 
-    1. ``directory`` (and missing parents) is created and locked (``flock`` on the folder)
+    1. ``directory`` (and missing parents) is created and locked (a ``filelock`` lock on
+       the hidden file ``.crankdyn-lock`` in it, deleted again at the end of the run)
        for the rest of the call, so concurrent runs into one folder take turns and the
        folder ends with the complete report of the last one;
     2. :func:`recover_output` finishes a replacement a killed run had begun and deletes
@@ -379,10 +477,11 @@ def staged_output(directory, inputs=(), unit=None):
     except OSError as exc:
         raise _output_error(exc, "cannot create the output folder", directory) from None
     stage = lock = None
+    failed = False
     try:
         try:
             lock = _lock(directory)
-            recover_output(directory)
+            _recover(directory)
             start = _process_start(os.getpid()) or "0"
             stage = Path(tempfile.mkdtemp(prefix=f"{STAGE_PREFIX}{os.getpid()}.{start}.",
                                           dir=directory))
@@ -399,15 +498,25 @@ def staged_output(directory, inputs=(), unit=None):
         except OSError as exc:
             raise _output_error(exc, "cannot replace the report in", directory) from None
     except BaseException:
+        failed = True
         if stage is not None:
             shutil.rmtree(stage, ignore_errors=True)
-        for p in reversed(created):          # a failed run leaves no folder behind
+        if lock is not None:     # the folder must be empty to go (POSIX: still locked)
             with contextlib.suppress(OSError):
-                p.rmdir()
+                os.unlink(directory / LOCK_NAME)
+        _remove_folders(created)             # a failed run leaves no folder behind
         raise
     finally:
         if lock is not None:
-            os.close(lock)
+            _unlock(lock, directory)
+            if failed:                       # Windows: empty only after the release
+                _remove_folders(created)
+
+
+def _remove_folders(created) -> None:
+    for p in reversed(created):
+        with contextlib.suppress(OSError):
+            p.rmdir()
 
 
 @contextlib.contextmanager
@@ -437,16 +546,32 @@ def full_precision_xlsx():
         _writer.safe_string = original
 
 
+#: Device names Windows reserves, with any extension and in any case (``con.xlsx``,
+#: ``Aux_forces.csv`` is fine, ``nul.v2.csv`` is not): the stem before the first dot.
+WINDOWS_RESERVED = frozenset(
+    ["CON", "PRN", "AUX", "NUL", "CONIN$", "CONOUT$"]
+    + [f"{dev}{i}" for dev in ("COM", "LPT") for i in (*"123456789", "\u00b9", "\u00b2",
+                                                       "\u00b3")])
+
+
 def safe_name(name: str, default: str = "report", max_bytes: int = 160) -> str:
-    """A file-name stem from a spec's name: letters (any script), digits, ``_``, ``.`` and
-    ``-`` kept, every other run of characters replaced by ``_``; ``default`` if nothing is
-    left; cut to at most ``max_bytes`` bytes of UTF-8 (at a character boundary), so the
-    file name fits any common file system.  The full name stays inside the report."""
+    """A file-name stem from a spec's name, valid on Windows, macOS and Linux alike:
+    letters (any script), digits, ``_``, ``.`` and ``-`` kept, every other run of
+    characters (spaces, control characters, ``<>:"/\\|?*``) replaced by ``_``; no leading
+    or trailing dot or ``_``; ``default`` if nothing is left; cut to at most ``max_bytes``
+    bytes of UTF-8 (at a character boundary), so the file name fits any common file
+    system.  A name Windows reserves for a device (:data:`WINDOWS_RESERVED`: ``CON``,
+    ``nul``, ``COM1``, ``lpt9.v2`` ...) gets ``_`` after its first part (``CON_``,
+    ``nul_``, ``lpt9_.v2``).  The full name stays inside the report."""
     import re
 
     stem = re.sub(r"[^\w.-]+", "_", name).strip("._") or default
-    cut = stem.encode("utf-8")[:max_bytes].decode("utf-8", "ignore").rstrip("._")
-    return cut or default
+    cut = stem.encode("utf-8")[:max_bytes].decode("utf-8", "ignore").rstrip("._") \
+        or default
+    first, dot, rest = cut.partition(".")
+    if first.upper() in WINDOWS_RESERVED:
+        cut = f"{first}_{dot}{rest}"
+    return cut
 
 
 def save_figure(fig, stem, formats=("png", "svg"), dpi=110, tight=False) -> list[Path]:

@@ -25,3 +25,25 @@ def page_sizes(xlsx, outdir):
                           capture_output=True, text=True).stdout
     pages = re.findall(r"Page\s+\d+ size:\s+([\d.]+) x ([\d.]+) pts", info)
     return [tuple(sorted((round(float(w)), round(float(h))))) for w, h in pages]
+
+
+def page_sizes_many(named, outdir):
+    """:func:`page_sizes` of several workbooks with one start of LibreOffice (it costs
+    seconds): ``named`` maps a key to a workbook; returns key → list of page sizes."""
+    src = outdir / "src"
+    src.mkdir(parents=True, exist_ok=True)
+    copies = {}
+    for i, (key, xlsx) in enumerate(named.items()):
+        copies[key] = src / f"w{i}.xlsx"              # distinct names, one PDF each
+        shutil.copyfile(xlsx, copies[key])
+    subprocess.run(["soffice", "--headless", "--convert-to", "pdf", "--outdir", str(outdir),
+                    *map(str, copies.values())], check=True, capture_output=True,
+                   timeout=300 + 60 * len(copies))
+    sizes = {}
+    for key, copy in copies.items():
+        info = subprocess.run(["pdfinfo", "-f", "1", "-l", "10000",
+                               str(outdir / f"{copy.stem}.pdf")], check=True,
+                              capture_output=True, text=True).stdout
+        pages = re.findall(r"Page\s+\d+ size:\s+([\d.]+) x ([\d.]+) pts", info)
+        sizes[key] = [tuple(sorted((round(float(w)), round(float(h))))) for w, h in pages]
+    return sizes

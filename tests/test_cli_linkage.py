@@ -47,10 +47,10 @@ def _sheet(wb, key):
 
 
 @pytest.fixture(scope="module")
-def ratchet_run(tmp_path_factory):
-    out = tmp_path_factory.mktemp("ratchet")
-    assert main(["linkage", "--example", "-o", str(out)]) == 0
-    return out
+def ratchet_run(cli_report):
+    rep = cli_report("linkage", "--example")          # shared, read-only
+    assert rep.rc == 0
+    return rep.folder
 
 
 @pytest.fixture(scope="module")
@@ -191,9 +191,10 @@ def test_example_names_are_the_commands_own(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("name", ["ratchet", "press", "ratchet.toml"])
-def test_every_bundled_linkage_example_runs(name, tmp_path):
-    out = tmp_path / "out"
-    assert main(["linkage", "--example", name, "-o", str(out)]) == 0
+def test_every_bundled_linkage_example_runs(name, cli_report):
+    rep = cli_report("linkage", "--example", name)      # shared, read-only
+    assert rep.rc == 0
+    out = rep.folder
     for p in PLOTS:
         assert _one(out, f"{p}.png").stat().st_size > 1000
     k = pd.read_csv(_one(out, "kinematics.csv"))

@@ -14,10 +14,10 @@ COLS = ["phi_deg", "J_red_kgm2", "dJ_red_dphi_kgm2", "M_drive_Nm", "M_resist_Nm"
 
 
 @pytest.mark.parametrize("lang", ["ru", "en"])
-def test_machine_example(tmp_path, lang, capsys):
-    out = tmp_path / "o"
-    assert main(["dynamics", str(example_path("flywheel_seed.toml")), "-o", str(out),
-                 "--lang", lang]) == 0
+def test_machine_example(cli_report, lang):
+    rep = cli_report("dynamics", "--example", "flywheel", "--lang", lang)  # shared, read-only
+    assert rep.rc == 0
+    out = rep.folder
     df = pd.read_csv(out / "flywheel-example-11-3_motion.csv")
     assert list(df.columns[:8]) == COLS
     assert df["omega_rad_s"].max() == pytest.approx(168.45, abs=0.01)   # seed Ex. 11-3
@@ -31,18 +31,17 @@ def test_machine_example(tmp_path, lang, capsys):
     assert np.array_equal(vals, df["omega_rad_s"].to_numpy())
     for name in ("inertia", "moments", "wittenbauer", "omega"):
         assert (out / f"flywheel-example-11-3_{name}.png").stat().st_size > 5000
-    text = capsys.readouterr().out
-    assert "168.44" in text
+    assert "168.44" in rep.out
     strings = [c.value for w in wb.worksheets for row in w.iter_rows() for c in row
                if isinstance(c.value, str)]
     has_cyr = any(any("\u0400" <= ch <= "\u04ff" for ch in v) for v in strings)
     assert has_cyr == (lang == "ru")
 
 
-def test_linkage_motor_example(tmp_path):
-    out = tmp_path / "o"
-    assert main(["dynamics", str(example_path("press_dynamics.toml")), "-o", str(out),
-                 "--lang", "en"]) == 0
+def test_linkage_motor_example(cli_report):
+    rep = cli_report("dynamics", "--example", "press", "--lang", "en")    # shared, read-only
+    assert rep.rc == 0
+    out = rep.folder
     m = pd.read_csv(out / "crank-press_motion.csv")
     w = m["omega_rad_s"]
     assert (w.max() - w.min()) / (0.5 * (w.max() + w.min())) == pytest.approx(0.05, rel=1e-5)
@@ -77,10 +76,10 @@ def test_bad_input(tmp_path, capsys, body, keys):
         assert any(f"error: {k}:" in line for line in err), (k, err)
 
 
-def test_engine_example(tmp_path):
-    out = tmp_path / "o"
-    assert main(["dynamics", str(example_path("petrol_dynamics.toml")), "-o", str(out),
-                 "--lang", "ru"]) == 0
+def test_engine_example(cli_report):
+    rep = cli_report("dynamics", "--example", "petrol", "--lang", "ru")   # shared, read-only
+    assert rep.rc == 0
+    out = rep.folder
     m = pd.read_csv(out / "petrol-vaz2106_motion.csv")
     w = m["omega_rad_s"]
     assert (w.max() - w.min()) / (0.5 * (w.max() + w.min())) == pytest.approx(0.01, rel=1e-6)

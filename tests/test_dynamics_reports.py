@@ -4,7 +4,7 @@ files; the terminal summary, the workbook and the plots speak the report's langu
 import re
 
 import pytest
-from rendering import needs_office, page_sizes
+from rendering import needs_office, page_sizes_many
 from openpyxl import load_workbook
 
 from crankbase.output import MANIFEST_NAME, read_manifest, verify_report
@@ -43,22 +43,17 @@ def _names(folder):
 
 
 @pytest.fixture(scope="module")
-def runs(tmp_path_factory):
-    """Every bundled example of both commands in both languages, each in its own folder:
-    (command, example, lang) → (folder, stdout, stderr)."""
-    import contextlib
-    import io
-
+def runs(cli_report):
+    """Every bundled example of both commands in both languages, each in its own folder
+    (the session's shared reports, read-only): (command, example, lang) → (folder,
+    stdout, stderr)."""
     out = {}
     for command, examples in (("dynamics", DYNAMICS), ("balance", BALANCE)):
         for ex in examples:
             for lang in ("ru", "en"):
-                d = tmp_path_factory.mktemp(f"{command}_{ex}_{lang}")
-                o, e = io.StringIO(), io.StringIO()
-                with contextlib.redirect_stdout(o), contextlib.redirect_stderr(e):
-                    rc = main([command, "--example", ex, "-o", str(d), "--lang", lang])
-                assert rc == 0, e.getvalue()
-                out[(command, ex, lang)] = (d, o.getvalue(), e.getvalue())
+                rep = cli_report(command, "--example", ex, "--lang", lang)
+                assert rep.rc == 0, rep.err
+                out[(command, ex, lang)] = (rep.folder, rep.out, rep.err)
     return out
 
 
@@ -70,10 +65,13 @@ def test_every_output_is_named_after_the_spec(runs):
         assert set(verify_report(d)) == want
 
 
-def test_two_specs_share_a_folder_and_a_rerun_replaces_only_its_own(tmp_path, capsys):
-    out = tmp_path / "o"
-    for cmd, ex in (("dynamics", "hoist"), ("dynamics", "flywheel"), ("balance", "rotor"),
-                    ("balance", "ratchet")):
+def test_two_specs_share_a_folder_and_a_rerun_replaces_only_its_own(tmp_path, capsys,
+                                                                    cli_report):
+    import shutil
+
+    out = tmp_path / "o"            # the hoist first: a copy of the session's report
+    shutil.copytree(cli_report("dynamics", "--example", "hoist", "--lang", "ru").folder, out)
+    for cmd, ex in (("dynamics", "flywheel"), ("balance", "rotor"), ("balance", "ratchet")):
         assert main([cmd, "--example", ex, "-o", str(out)]) == 0
     both = dynamics_files("hoist") | dynamics_files("flywheel") | BALANCE["rotor"] \
         | BALANCE["ratchet"]
@@ -99,11 +97,13 @@ def test_two_specs_share_a_folder_and_a_rerun_replaces_only_its_own(tmp_path, ca
     assert units["two-plane-example_rotor_shares.csv"] == "balance:two-plane-example"
 
 
-def test_stale_copies_are_removed_and_said_so(tmp_path, capsys):
+def test_stale_copies_are_removed_and_said_so(tmp_path, capsys, cli_report):
     """A file of this spec the manifest does not list (copied back by hand) that this run
     does not write goes too, with a line on stderr in the report's language."""
-    out = tmp_path / "o"
-    assert main(["dynamics", "--example", "hoist", "-o", str(out)]) == 0
+    import shutil
+
+    out = tmp_path / "o"            # a copy of the session's hoist report (--lang ru)
+    shutil.copytree(cli_report("dynamics", "--example", "hoist", "--lang", "ru").folder, out)
     (out / "hoist_forces_true_motion.png").write_bytes(b"old")
     (out / "motion.csv").write_text("an older crankdyn's unnamed output\n")
     capsys.readouterr()
@@ -271,9 +271,10 @@ def test_column_labels():
 @pytest.mark.slow
 @needs_office
 def test_dynamics_workbooks_render_on_a4_pages(runs, tmp_path):
+    sizes = page_sizes_many({lang: runs[("dynamics", "press", lang)][0]
+                             / "crank-press_dynamics.xlsx" for lang in ("ru", "en")}, tmp_path)
     for lang in ("ru", "en"):
-        path = runs[("dynamics", "press", lang)][0] / "crank-press_dynamics.xlsx"
-        pages = page_sizes(path, tmp_path / lang)
+        pages = sizes[lang]
         assert set(pages) == {(595, 842)}, (lang, set(pages))
         assert len(pages) >= 4
 

@@ -3,6 +3,7 @@ workbook read back with openpyxl equals the CSV; mm columns = N ÷ μP; every pl
 and is not empty; bad input exits 2 with one line per problem and writes nothing; an
 existing report is replaced only by a complete new one."""
 import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -38,11 +39,11 @@ def run_cli(*argv):
                                         ("diesel", "ru"), ("diesel", "en"), ("six", "en"),
                                         ("v8", "ru"), ("v8", "en")],
                 ids=lambda p: "-".join(p))
-def run(request, tmp_path_factory):
+def run(request, cli_report):
     name, lang = request.param
-    out = tmp_path_factory.mktemp(f"{name}_{lang}")
-    assert run_cli("--example", name, "-o", out, "--lang", lang) == 0
-    return name, lang, out
+    rep = cli_report("engine", "--example", name, "--lang", lang)   # shared, read-only
+    assert rep.rc == 0
+    return name, lang, rep.folder
 
 
 def test_outputs_exist(run):
@@ -251,13 +252,12 @@ def test_engine_csvs_equal_the_workbook_and_the_library(run):
                     assert not (isinstance(v, str) and cyr.search(v)), (ws.title, v)
 
 
-def test_terminal_summary(tmp_path, capsys):
+def test_terminal_summary(tmp_path, capsys, cli_report):
     assert run_cli("--example", "-o", tmp_path / "ru") == 0
     text = capsys.readouterr().out             # Russian textbook symbols for ru
     for word in ("pг max", "Mкр.ср", "Rшш max", "χ =", "среднее индикаторное давление"):
         assert word in text
-    assert run_cli("--example", "-o", tmp_path, "--lang", "en") == 0
-    text = capsys.readouterr().out
+    text = cli_report("engine", "--example", "petrol", "--lang", "en").out   # shared
     for word in ("peak gas pressure", "P max", "T max", "M mean", "Rcp max", "chi", "petrol",
                  "firing order 1-3-4-2", "mu =", "excess work", "J0 =", "balance"):
         assert word in text
@@ -271,13 +271,14 @@ def test_readme_states_the_symbol_table():
         assert f"| {en} | {ru} | {what} |" in readme
 
 
-def test_terminal_summary_speaks_the_report_language(tmp_path, capsys):
+def test_terminal_summary_speaks_the_report_language(cli_report):
     """The whole engine and its bearings (V8: flywheel, counterweights, every line) print
     in the report's language: no English word in a Russian run, no Cyrillic letter in an
     English one."""
     import re
-    assert run_cli("--example", "v8", "-o", tmp_path / "ru", "--bearings") == 0
-    text = capsys.readouterr().out
+    rep = cli_report("engine", "--example", "v8", "--bearings")      # shared, read-only
+    assert rep.rc == 0
+    text = rep.out
     for word in ("двигатель: 8 цил., V-образный, порядок работы 1-5-4-2-6-3-7-8",
                  "противовес", "маховик", "шатунные шейки", "коренные шейки", "дуги износа"):
         assert word in text
@@ -285,9 +286,9 @@ def test_terminal_summary_speaks_the_report_language(tmp_path, capsys):
     assert "diesel-kamaz740_journals.csv" in written
     words = set(re.findall(r"[A-Za-z]{3,}", summary.replace("diesel-kamaz740", "")))
     assert words <= {"max", "min"}, words
-    assert run_cli("--example", "v8", "-o", tmp_path / "en", "--bearings",
-                   "--lang", "en") == 0
-    text = capsys.readouterr().out
+    rep = cli_report("engine", "--example", "v8", "--bearings", "--lang", "en")
+    assert rep.rc == 0
+    text = rep.out
     assert not re.search("[\u0400-\u04ff]", text), text
     for word in ("whole engine: 8 cylinders vee", "counterweight", "most loaded"):
         assert word in text
@@ -430,9 +431,9 @@ def _snapshot(folder):
     return {p.name: p.read_bytes() for p in sorted(folder.iterdir())}
 
 
-def test_existing_report_survives_bad_input(tmp_path):
-    out = tmp_path / "out"
-    assert run_cli("--example", "diesel", "-o", out) == 0
+def test_existing_report_survives_bad_input(tmp_path, cli_report):
+    out = tmp_path / "out"          # a copy of the session's diesel report (--lang ru)
+    shutil.copytree(cli_report("engine", "--example", "diesel", "--lang", "ru").folder, out)
     before = _snapshot(out)
     spec = tmp_path / "spec.toml"
     spec.write_text(GOOD.replace("name = \"t\"", "name = \"diesel-d240\"")
@@ -441,11 +442,12 @@ def test_existing_report_survives_bad_input(tmp_path):
     assert _snapshot(out) == before
 
 
-def test_existing_report_survives_a_crash_while_saving(tmp_path, monkeypatch, capsys):
+def test_existing_report_survives_a_crash_while_saving(tmp_path, monkeypatch, capsys,
+                                                      cli_report):
     """A failure in the middle of saving the workbook leaves the old workbook whole and
     no temporary file behind."""
-    out = tmp_path / "out"
-    assert run_cli("--example", "petrol", "-o", out) == 0
+    out = tmp_path / "out"          # a copy of the session's petrol report (--lang ru)
+    shutil.copytree(cli_report("engine", "--example", "petrol", "--lang", "ru").folder, out)
     before = _snapshot(out)
     import openpyxl.workbook.workbook as wbmod
 

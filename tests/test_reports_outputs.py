@@ -1,14 +1,16 @@
 """Outputs are named after the engine or mechanism (issue 14): two runs into one folder
 never mix, and a plot an earlier run drew but this one did not is not left behind."""
+import shutil
+
 import pytest
 
 from crankbase.output import MANIFEST_NAME, verify_report
 from crankdyn.cli import main
 
 
-def test_two_engines_into_one_folder_do_not_mix(tmp_path):
-    out = tmp_path / "o"
-    assert main(["engine", "--example", "petrol", "-o", str(out)]) == 0
+def test_two_engines_into_one_folder_do_not_mix(tmp_path, cli_report):
+    out = tmp_path / "o"            # a copy of the session's petrol report (--lang ru)
+    shutil.copytree(cli_report("engine", "--example", "petrol", "--lang", "ru").folder, out)
     first = {p.name: p.read_bytes() for p in out.iterdir() if p.name != MANIFEST_NAME}
     assert main(["engine", "--example", "diesel", "-o", str(out)]) == 0
     names = {p.name for p in out.iterdir()} - {MANIFEST_NAME}
@@ -21,9 +23,9 @@ def test_two_engines_into_one_folder_do_not_mix(tmp_path):
     verify_report(out)                   # the manifest lists both reports, intact
 
 
-def test_two_mechanisms_and_stale_plots(tmp_path, capsys):
-    out = tmp_path / "o"
-    assert main(["linkage", "--example", "ratchet", "-o", str(out)]) == 0
+def test_two_mechanisms_and_stale_plots(tmp_path, capsys, cli_report):
+    out = tmp_path / "o"            # a copy of the session's ratchet report
+    shutil.copytree(cli_report("linkage", "--example").folder, out)
     assert main(["linkage", "--example", "press", "-o", str(out)]) == 0
     names = {p.name for p in out.iterdir()} - {MANIFEST_NAME}
     assert {"ratchet-drive_kinematics.csv", "crank-press_kinematics.csv",

@@ -9,7 +9,7 @@ import zipfile
 import numpy as np
 import pandas as pd
 import pytest
-from rendering import needs_office, page_sizes
+from rendering import needs_office, page_sizes_many
 from openpyxl import load_workbook
 
 import engine
@@ -18,21 +18,25 @@ from crankdyn.cli import main
 from engine.table2 import coefficients, table2, table2_columns
 
 CYRILLIC = re.compile("[\u0400-\u04FF]")
+EXAMPLES = {"petrol": "petrol_vaz2106.toml", "diesel": "diesel_d240.toml"}
 RUSSIAN_SYMBOLS = ("ΔPг", "Pj", "Sш", "Mкр", "Kr.ш", "Rшш", "Ψ", "Lш", "Fп", "mш.к", "pг",
                    "β", "α", "μP", "Mкр.ср", "Rшш.ср", "vп.ср")
 
 
 @pytest.fixture(scope="module")
-def runs(tmp_path_factory):
+def runs(tmp_path_factory, cli_report):
     """Every workbook the CLI writes: engine (both examples × languages × forms),
-    linkage (two examples), synthesis."""
+    linkage (two examples), synthesis.  The engine reports in the seed's form, the
+    examples' own ([table] form absent), are the session's shared ones."""
     out = {}
     for ex in ("petrol", "diesel"):
         for lang in ("ru", "en"):
             for form in ("seed", "kolchin"):
-                d = tmp_path_factory.mktemp(f"{ex}_{lang}_{form}")
-                assert main(["engine", "--example", ex, "-o", str(d), "--lang", lang,
-                             "--form", form]) == 0
+                study = engine.load(example_path(EXAMPLES[ex]))
+                own = () if study.settings.form == form else ("--form", form)
+                rep = cli_report("engine", "--example", ex, "--lang", lang, *own)
+                assert rep.rc == 0
+                d = rep.folder
                 out[("engine", ex, lang, form)] = next(d.glob("*.xlsx"))
                 out[("table2", ex, lang, form)] = next(d.glob("*_table2.csv"))
     for ex in ("ratchet", "press"):
@@ -374,9 +378,9 @@ def test_workbooks_render_on_a4_pages(runs, tmp_path):
     chosen = [("engine", "petrol", "ru", "seed"), ("engine", "diesel", "en", "kolchin"),
               ("linkage", "ratchet"), ("linkage", "press", "en"),
               ("synth", "ru"), ("synth", "en")]           # every layout, each language
+    sizes = page_sizes_many({key: runs[key] for key in chosen}, tmp_path)
     for key in chosen:
-        path = runs[key]
-        pages = page_sizes(path, tmp_path / "_".join(key))
+        path, pages = runs[key], sizes[key]
         assert set(pages) == {(595, 842)}, (key, set(pages))        # A4, either way
         assert len(pages) >= len(load_workbook(path).worksheets), key
 

@@ -3,6 +3,7 @@ variant, a summary equal to the individual reports, bad rows reported by row and
 without stopping the good ones) and ``crankdyn check`` (a workbook we wrote, altered by
 known amounts, is flagged at exactly those cells; an unaltered one passes)."""
 import shutil
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -37,32 +38,16 @@ def _variants_table(n, broken_row_index):
     return pd.DataFrame(rows)
 
 
-@pytest.mark.slow
-def test_thirty_variants_end_to_end(tmp_path, capsys):
-    n, broken = 30, 16
-    table = _variants_table(n, broken)
-    path = tmp_path / "variants.csv"
-    table.to_csv(path, index=False)
-    out = tmp_path / "out"
-    assert main(["engine", str(PETROL), "--variants", str(path), "-o", str(out),
-                 "--lang", "en", "--jobs", "2"]) == 1        # one row failed
-    cap = capsys.readouterr()
-    bad_row = broken + 2                                     # header is row 1
-    assert f"row {bad_row} (V{broken + 1:02d}): engine.bore_mm: got -5" in cap.err
-    assert f"{n - 1} written" in cap.out and "1 failed" in cap.out
-    summary = pd.read_csv(out / "variants_summary.csv")
-    assert len(summary) == n - 1
-    assert f"V{broken + 1:02d}" not in set(summary["variant"])
-    assert not (out / f"V{broken + 1:02d}").exists()
-    errors = pd.read_csv(out / "variants_errors.csv")
-    assert errors["row"].tolist() == [bad_row]
-    # the summary equals the individual reports, variant by variant
+def _check_variant_reports(out, table, summary, pngs, lang):
+    """The summary equals the individual reports, variant by variant: the workbook's
+    results and inputs, the form asked for, a direct computation of that variant; and
+    ``pngs(variant)`` (the PNG files of its report) are the engine's plots."""
     for rec in summary.itertuples(index=False):
         folder = out / rec.variant
         files = sorted(p.name for p in folder.iterdir())
         assert f"{rec.variant}.xlsx" in files and f"{rec.variant}_forces.csv" in files
-        assert len([f for f in files if f.endswith(".png")]) == len(PLOT_NAMES
-                                                                    + TRAIN_PLOT_NAMES)
+        assert sorted(pngs(rec.variant)) == sorted(f"{rec.variant}_{n}.png" for n in
+                                                   PLOT_NAMES + TRAIN_PLOT_NAMES)
         wb = load_workbook(folder / f"{rec.variant}.xlsx", read_only=True)
         rows = {r[0]: r for r in wb.worksheets[2].iter_rows(min_row=4, values_only=True)
                 if r[0]}
@@ -75,7 +60,7 @@ def test_thirty_variants_end_to_end(tmp_path, capsys):
         assert inputs["bore_mm"] == pytest.approx(src["engine.bore_mm"], rel=1e-12)
         assert inputs["speed_rpm"] == src["engine.speed_rpm"] == rec.speed_rpm
         form = src["table.form"]
-        assert (KOLCHIN_SHEET["en"] in wb.sheetnames) == (form == "kolchin")
+        assert (KOLCHIN_SHEET[lang] in wb.sheetnames) == (form == "kolchin")
         wb.close()
         # and equals a direct computation of that variant
         d = apply_variant(engine.spec.read_toml(PETROL)[0],
@@ -89,18 +74,81 @@ def test_thirty_variants_end_to_end(tmp_path, capsys):
         assert s.M_mean_Nm == rec.M_mean_Nm and s.R_N.max == rec.R_max_N
 
 
+@pytest.mark.slow
+def test_thirty_variants_end_to_end(tmp_path, capsys, monkeypatch):
+    """Thirty variants, one broken, through ``crankdyn engine --variants`` (in this
+    process, --jobs 1): every report, the summary and the errors file are checked.  Two
+    variants' plots are rendered to PNG and SVG; the other 28 build every figure and
+    the file names they ask for are recorded, not rendered: rendering is checked end to end by the three-variant run below (--jobs 2)
+    and by the engine reports of tests/test_engine_cli.py."""
+    import crankbase.output
+
+    n, broken = 30, 16
+    table = _variants_table(n, broken)
+    path = tmp_path / "variants.csv"
+    table.to_csv(path, index=False)
+    out = tmp_path / "out"
+    rendered = {"V01", "V02"}                       # a Kolchin-form and a seed-form one
+    real_save, asked = crankbase.output.save_figure, {}
+
+    def save_figure(fig, stem, formats=("png", "svg"), **kw):
+        variant = Path(stem).parent.parent.name       # out/<variant>/<staging>/<stem>
+        if variant in rendered:
+            return real_save(fig, stem, formats, **kw)
+        assert fig.axes and tuple(formats) == ("png", "svg")
+        asked.setdefault(variant, []).append(Path(stem).name + ".png")
+        return []
+
+    monkeypatch.setattr(crankbase.output, "save_figure", save_figure)
+    assert main(["engine", str(PETROL), "--variants", str(path), "-o", str(out),
+                 "--lang", "en", "--jobs", "1"]) == 1        # one row failed
+    cap = capsys.readouterr()
+    bad_row = broken + 2                                     # header is row 1
+    assert f"row {bad_row} (V{broken + 1:02d}): engine.bore_mm: got -5" in cap.err
+    assert f"{n - 1} written" in cap.out and "1 failed" in cap.out
+    summary = pd.read_csv(out / "variants_summary.csv")
+    assert len(summary) == n - 1
+    assert list(summary["variant"]) == [f"V{i:02d}" for i in range(1, n + 1)
+                                        if i != broken + 1]          # the table's order
+    assert not (out / f"V{broken + 1:02d}").exists()
+    errors = pd.read_csv(out / "variants_errors.csv")
+    assert errors["row"].tolist() == [bad_row]
+    assert set(asked) | rendered == set(summary["variant"])
+
+    def pngs(variant):
+        on_disk = [p.name for p in (out / variant).glob("*.png")]
+        if variant in rendered:
+            assert len(list((out / variant).glob("*.svg"))) == len(on_disk)
+            return on_disk
+        assert on_disk == []
+        return asked[variant]
+
+    _check_variant_reports(out, table, summary, pngs, "en")
+
+
 def test_variants_from_xlsx_rerun_and_all_good(tmp_path, capsys):
+    """Three variants from an .xlsx table, end to end with every plot rendered, written
+    by two processes (--jobs 2): all good, the summary in the table's order and equal to
+    the reports."""
     table = _variants_table(3, 0)
     table.loc[0, "engine.bore_mm"] = 80.0
     path = tmp_path / "variants.xlsx"
     table.to_excel(path, index=False, engine="openpyxl")
     out = tmp_path / "out"
     assert main(["engine", "--example", "petrol", "--variants", str(path), "-o",
-                 str(out)]) == 0
+                 str(out), "--jobs", "2"]) == 0
     assert "вариантов: 3; записано 3" in capsys.readouterr().out
     s1 = pd.read_csv(out / "variants_summary.csv")
     assert list(s1["variant"]) == ["V01", "V02", "V03"]
     assert not (out / "variants_errors.csv").exists()
+
+    def pngs(variant):
+        found = [p.name for p in (out / variant).glob("*.png")]
+        assert all((out / variant / p).stat().st_size > 1000 for p in found)
+        assert len(list((out / variant).glob("*.svg"))) == len(found)
+        return found
+
+    _check_variant_reports(out, table, s1, pngs, "ru")
 
 
 def test_variants_table_problems_at_once(tmp_path, capsys):
@@ -132,10 +180,10 @@ def test_parse_cell_and_apply_variant():
 
 # ----------------------------------------------------------------------------- check
 @pytest.fixture(scope="module")
-def petrol_report(tmp_path_factory):
-    out = tmp_path_factory.mktemp("petrol")
-    assert main(["engine", "--example", "petrol", "-o", str(out), "--lang", "en"]) == 0
-    return out
+def petrol_report(cli_report):
+    rep = cli_report("engine", "--example", "petrol", "--lang", "en")  # shared, read-only
+    assert rep.rc == 0
+    return rep.folder
 
 
 def _check(tmp_path, *argv):
@@ -155,9 +203,14 @@ def test_unaltered_workbook_passes(petrol_report, tmp_path):
 
 
 @pytest.mark.parametrize("form", ["seed", "kolchin"])
-def test_altered_cells_are_flagged_exactly(tmp_path, capsys, form):
-    src = tmp_path / "report"
-    assert main(["engine", "--example", "diesel", "-o", str(src), "--form", form]) == 0
+def test_altered_cells_are_flagged_exactly(tmp_path, capsys, cli_report, form):
+    # the session's shared diesel report (read-only: the altered copy is saved elsewhere);
+    # the example's own form is seed, so that report is asked for without --form
+    own = () if form == engine.load(example_path("diesel_d240.toml")).settings.form \
+        else ("--form", form)
+    rep = cli_report("engine", "--example", "diesel", "--lang", "ru", *own)
+    assert rep.rc == 0
+    src = rep.folder
     wb = load_workbook(src / "diesel-d240.xlsx")
     # Table 2 (keys in hidden row 5, data from row 6); Kolchin's form: its own sheet
     # (keys in row 3, data from row 4)
