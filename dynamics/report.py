@@ -200,6 +200,6 @@ def build_workbook(result: dict, lang="en", name=None):
         sheet("Силы" if ru else "Forces", result["forces"], _SYMBOL_FORCES)
     if result.get("startup") is not None:
         sheet("Разгон" if ru else "Startup", result["startup"].table)
-    from engine.report import a4_setup      # the one print setup of every workbook
+    from crankbase.workbook import finish   # the one look and print setup of every workbook
 
-    return a4_setup(wb)
+    return finish(wb)

@@ -400,45 +400,19 @@ def _polar_chart(ws_ch, ws_data, col, n, spec, lang, row):
 
 
 def a4_setup(wb):
-    """Print setup of every sheet of ``wb``: A4 (landscape where the sheet has none of its
-    own), as many pages down as needed, as many pages wide as its columns need (at most
-    ~190 width units a page); rows of wrapped text as tall as their lines."""
-    import math
+    """The house look and print setup of every sheet of ``wb``
+    (:func:`crankbase.workbook.finish`: one font family, one number format per table
+    column, widths from the content, wrapped rows tall enough, A4).  Returns ``wb``."""
+    from crankbase.workbook import finish
 
-    from openpyxl.utils import get_column_letter
-
-    for ws in wb.worksheets:
-        ps = ws.page_setup
-        if ps.paperSize is None:
-            ps.paperSize = ws.PAPERSIZE_A4
-            ps.orientation = "landscape"
-        ws.sheet_properties.pageSetUpPr.fitToPage = True
-        ps.fitToHeight = 0
-        widths = [ws.column_dimensions[get_column_letter(j)].width or 8.43
-                  for j in range(1, ws.max_column + 1)
-                  if not ws.column_dimensions[get_column_letter(j)].hidden]
-        ps.fitToWidth = max(int(ps.fitToWidth or 1), math.ceil(sum(widths) / 190))
-        merged = {(r.min_row, r.min_col): r for r in ws.merged_cells.ranges}
-        for row in ws.iter_rows(min_row=1):
-            for c in row:
-                if not (isinstance(c.value, str) and c.alignment.wrap_text):
-                    continue
-                m = merged.get((c.row, c.column))
-                cols = range(m.min_col, m.max_col + 1) if m else [c.column]
-                width = sum(ws.column_dimensions[get_column_letter(j)].width or 8.43
-                            for j in cols)
-                lines = sum(math.ceil(len(p) * 1.1 / width) or 1 for p in c.value.split("\n"))
-                if lines > 1 and (ws.row_dimensions[c.row].height or 15) < 13 * lines:
-                    ws.row_dimensions[c.row].height = 13 * lines
-    return wb
+    return finish(wb)
 
 
 def save_workbook(wb, path):
-    """Save a workbook atomically (temporary file in the target folder, then rename)."""
-    from crankbase.output import atomic_path, full_precision_xlsx
+    """Save a workbook atomically, every float bit for bit (:func:`crankbase.workbook.save`)."""
+    from crankbase.workbook import save
 
-    with atomic_path(path) as tmp, full_precision_xlsx():
-        wb.save(tmp)
+    save(wb, path)
 
 
 # ------------------------------------------------------------------ the whole engine

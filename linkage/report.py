@@ -488,8 +488,6 @@ def write_workbook(result, path, lang: str = "ru"):
     from openpyxl.styles import Alignment, Border, Font, PatternFill, Side
     from openpyxl.utils import get_column_letter
 
-    from crankbase.output import atomic_path, full_precision_xlsx
-
     t = text(lang)
     wb = Workbook()
     bold = Font(bold=True)
@@ -616,8 +614,10 @@ def write_workbook(result, path, lang: str = "ru"):
         _page_setup(ws, landscape=True, pages_wide=math.ceil(width / _WIDTH_PER_PAGE))
     _page_setup(wb.worksheets[0], landscape=False)
     _check_finite_tables(result)
-    with atomic_path(path) as tmp, full_precision_xlsx():
-        wb.save(tmp)
+    from crankbase.workbook import finish, save
+
+    finish(wb, fixed={wb.worksheets[0].title: widths})
+    save(wb, path)
 
 
 #: Conventions printed on the English inputs sheet (the Russian ones: ``text("ru")``).

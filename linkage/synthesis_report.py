@@ -318,7 +318,7 @@ def write_workbook(path, table, phi0_deg, mechanism=None, lang="en") -> None:
     from openpyxl import Workbook
     from openpyxl.styles import Alignment, Font
 
-    from crankbase.output import atomic_path, ensure_finite, full_precision_xlsx
+    from crankbase.output import ensure_finite
 
     i = _lang(lang)
     W = {k: v[i] for k, v in _WORDS.items()}
@@ -380,8 +380,10 @@ def write_workbook(path, table, phi0_deg, mechanism=None, lang="en") -> None:
         sheet.page_setup.fitToWidth = 1
         sheet.page_setup.fitToHeight = 0
         sheet.print_title_rows = titles
-    with atomic_path(path) as tmp, full_precision_xlsx():
-        wb.save(tmp)
+    from crankbase.workbook import finish, save
+
+    finish(wb)
+    save(wb, path)
 
 
 # --------------------------------------------------------------------------- TOML
