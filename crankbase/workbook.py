@@ -30,7 +30,7 @@ import math
 import re
 
 __all__ = ["FONT", "HEAD_FILL", "MAX_ROWS", "MAX_WIDTH", "WIDTH_PER_PAGE", "LINE_PT",
-           "text_width", "wrapped_lines", "number_format", "shown", "font", "style_header",
+           "text_width", "wrapped_lines", "columns_cm", "number_format", "shown", "font", "style_header",
            "table_blocks", "unify_fonts", "fit_numbers", "fit_columns", "fit_rows",
            "page_setup", "finish", "save", "bounded", "summary_workbook", "new_workbook"]
 
@@ -42,7 +42,7 @@ HEAD_FILL = "DDE4EE"
 #: CSV beside the workbook keeps every row.
 MAX_ROWS = 2000
 #: Widest column (Excel width units); a longer text wraps.
-MAX_WIDTH = 60
+MAX_WIDTH = 45
 #: Narrowest column of a value.
 MIN_WIDTH = 6
 #: Column width printed on one A4 page (landscape at ~70 % scale at most).
@@ -50,29 +50,22 @@ WIDTH_PER_PAGE = 190
 #: Height of a line of text [pt].
 LINE_PT = 12.75
 
-# Widths of characters in Excel column-width units (one '0' of the default 11 pt font),
-# measured on LibreOffice's rendering of Arial (Liberation Sans) with a margin for word
-# breaks: Cyrillic letters are wider than the average Latin text, capitals wider still.
-_W_CYR, _W_CAP, _W_DIGIT, _W_OTHER, _W_NARROW = 1.05, 1.15, 1.0, 0.9, 0.45
-_NARROW = set("ilI.,:;'|!()[]{} ·-tfjr")
-_PAD = 1.6          # a column's margin around its widest text
+# Widths of characters in Excel column-width units (one '0' of the 11 pt font), from
+# Arial's (Liberation Sans's) advance widths in em over the '0''s 0.556 em, rounded up a
+# little for LibreOffice's and Excel's rendering.
+_W_CLASSES = (
+    ("il.,:;'|!ıj", 0.45), ("ftrI()[]{}/\\- ·", 0.6), ("mwMWШЩЖЮшщжюыЫфФ", 1.6),
+    ("ABCDEGHKNOPQRSUVXYZ&%@#ДЛМНОПУФЦЧЪЭЯБВГЕЁЗИЙКРСТХЬ", 1.28),
+    ("дмлнпцчъэяб", 1.12), ("=+<>~^×−±÷", 1.05))
+_W = {ch: w for chars, w in _W_CLASSES for ch in chars}
+_W_DEFAULT = 1.02
+_PAD = 1.8          # a column's margin around its widest text
 
 
 def text_width(s, bold=False, size=11) -> float:
     """Printed width of a one-line text in Excel column-width units."""
-    w = 0.0
-    for ch in str(s):
-        if "\u0400" <= ch <= "\u04ff":
-            w += _W_CAP if ch.isupper() else _W_CYR
-        elif ch in _NARROW:
-            w += _W_NARROW
-        elif ch.isdigit():
-            w += _W_DIGIT
-        elif ch.isupper():
-            w += _W_CAP
-        else:
-            w += _W_OTHER
-    return w * (1.1 if bold else 1.0) * (size or 11) / 11
+    w = sum(_W.get(ch, _W_DEFAULT) for ch in str(s))
+    return w * (1.08 if bold else 1.0) * (size or 11) / 11
 
 
 def wrapped_lines(s, width, bold=False, size=11) -> int:
@@ -104,15 +97,21 @@ def _is_number(v) -> bool:
 
 def number_format(values) -> str:
     """One display format for ``values``: about six significant digits of the largest
-    magnitude (``0.000`` for 123.456…; at most eight decimals), ``0`` when every value is
-    a whole number."""
+    magnitude (``0.000`` for 123.456…; at most eight decimals), fewer when fewer show
+    every value exactly (``0.0`` for angles on a 0.5° grid, ``0`` for whole numbers)."""
     nums = [float(v) for v in values if _is_number(v) and math.isfinite(v)]
     if not nums or all(v.is_integer() for v in nums):
         return "0"
     top = max(abs(v) for v in nums)
     if top == 0:
         return "0"
-    decimals = max(0, min(8, 5 - math.floor(math.log10(top))))
+    most = max(0, min(8, 5 - math.floor(math.log10(top))))
+    for decimals in range(most):        # fewer when they show every value exactly
+        k = 10.0 ** decimals
+        if all(abs(v * k - round(v * k)) <= 1e-9 * max(1.0, abs(v * k)) for v in nums):
+            break
+    else:
+        decimals = most
     return "0." + "0" * decimals if decimals else "0"
 
 
@@ -211,7 +210,7 @@ def table_blocks(ws):
         for c in row:
             if _is_number(c.value):
                 break
-            lead += isinstance(c.value, str)
+            lead += isinstance(c.value, str) and _col_width(ws, c.column) > 0
         if len(cols) >= 2 and lead < 3:
             numeric[row[0].row] = cols
     blocks = []
@@ -261,8 +260,10 @@ def _cell_need(c):
 
 
 def _lone(ws, c):
-    """Whether ``c`` is the only value of its row (a title: it may run over empty cells)."""
-    return all(d.value is None for d in ws[c.row] if d.column != c.column)
+    """Whether ``c`` is the only value of its row (a title: it may run over empty cells;
+    a hidden column's key does not count)."""
+    return all(d.value is None or not _col_width(ws, d.column) for d in ws[c.row]
+               if d.column != c.column)
 
 
 def fit_columns(ws, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH):
@@ -279,9 +280,9 @@ def fit_columns(ws, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH):
         for c in row:
             if c.value is None or (c.row, c.column) in covered or (c.row, c.column) in first:
                 continue
-            if isinstance(c.value, str) and _lone(ws, c) and c.column == 1 \
+            if isinstance(c.value, str) and _lone(ws, c) \
                     and not (c.alignment and c.alignment.wrap_text):
-                continue
+                continue                # a title runs over the empty cells beside it
             w, _ = _cell_need(c)
             need[c.column] = max(need.get(c.column, 0.0), w)
     for col, w in need.items():
@@ -295,12 +296,13 @@ def fit_columns(ws, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH):
     # texts wider than their column wrap
     for row in ws.iter_rows():
         for c in row:
-            if not isinstance(c.value, str) or (c.row, c.column) in covered:
+            if not isinstance(c.value, str) or (c.row, c.column) in covered \
+                    or not _col_width(ws, c.column):
                 continue
             width = _span_width(ws, c, first)
             if c.alignment and c.alignment.wrap_text:
                 continue
-            if (c.row, c.column) not in first and _lone(ws, c) and c.column == 1:
+            if (c.row, c.column) not in first and _lone(ws, c):
                 if _cell_need(c)[0] <= _used_width(ws, c.column):
                     continue
                 width = _used_width(ws, c.column)
@@ -319,8 +321,28 @@ def _col_width(ws, col):
     return 0.0 if d.hidden else (d.width or 8.43)
 
 
+def _last_print_col(ws):
+    """The last column of the sheet's print area (0 when it has none)."""
+    if not ws.print_area:
+        return 0
+    area = ws.print_area[0] if isinstance(ws.print_area, (list, tuple)) else ws.print_area
+    m = re.search(r":\$?([A-Z]+)\$?\d+$", str(area))
+    if not m:
+        return 0
+    from openpyxl.utils import column_index_from_string
+
+    return column_index_from_string(m.group(1))
+
+
 def _used_width(ws, col):
-    return sum(_col_width(ws, j) for j in range(col, max(ws.max_column, col) + 1))
+    last = max(ws.max_column, col, _last_print_col(ws))
+    return sum(_col_width(ws, j) for j in range(col, last + 1))
+
+
+def columns_cm(ws, first, last):
+    """Printed width of columns ``first`` … ``last`` (1-based) at 100 % [cm] (a column
+    ``w`` units wide is 7·w + 5 pixels at 96 dpi)."""
+    return sum((7 * _col_width(ws, j) + 5) * 2.54 / 96 for j in range(first, last + 1))
 
 
 def _span_width(ws, c, first=None):
@@ -331,21 +353,21 @@ def _span_width(ws, c, first=None):
 
 
 def fit_rows(ws):
-    """Rows of wrapped text as tall as their lines (at their columns' width)."""
+    """Rows of wrapped text exactly as tall as their most lines (at their columns'
+    width); other rows keep their height."""
     first, covered = _merged(ws)
+    need = {}
     for row in ws.iter_rows():
         for c in row:
             if not (isinstance(c.value, str) and c.alignment and c.alignment.wrap_text) \
-                    or (c.row, c.column) in covered:
+                    or (c.row, c.column) in covered or not _col_width(ws, c.column):
                 continue
             bold, size = bool(c.font and c.font.b), (c.font.sz if c.font and c.font.sz
                                                       else 11)
             lines = wrapped_lines(c.value, _span_width(ws, c, first), bold, size)
-            need = lines * LINE_PT * size / 11 + 2
-            if lines > 1 or size > 11:
-                h = ws.row_dimensions[c.row].height
-                if h is None or h < need:
-                    ws.row_dimensions[c.row].height = round(need, 1)
+            need[c.row] = max(need.get(c.row, 0.0), lines * LINE_PT * size / 11 + 2)
+    for r, h in need.items():
+        ws.row_dimensions[r].height = round(max(h, 15.0), 1)
 
 
 def page_setup(ws, orientation=None, title_rows=None, title_cols=None):
@@ -357,13 +379,7 @@ def page_setup(ws, orientation=None, title_rows=None, title_cols=None):
     ps.orientation = orientation or ps.orientation or "landscape"
     ws.sheet_properties.pageSetUpPr.fitToPage = True
     ps.fitToHeight = 0
-    last = ws.max_column
-    if ws.print_area:
-        m = re.search(r":\$?([A-Z]+)\$?\d+$", ws.print_area[0] if isinstance(
-            ws.print_area, (list, tuple)) else ws.print_area)
-        if m:
-            from openpyxl.utils import column_index_from_string
-            last = column_index_from_string(m.group(1))
+    last = _last_print_col(ws) or ws.max_column
     width = sum(_col_width(ws, j) for j in range(1, last + 1))
     ps.fitToWidth = max(1, math.ceil(width / WIDTH_PER_PAGE))
     if title_rows:
@@ -379,7 +395,13 @@ def finish(wb, fixed=None, max_width=MAX_WIDTH):
     ``fixed``: {sheet title: {column letter: width}} for columns a writer sizes itself
     (a chart's anchor columns).  Returns ``wb``."""
     unify_fonts(wb)
+    hidden = [ws for ws in wb.worksheets if ws.sheet_state != "visible"]
+    for ws in hidden:                    # data of charts: after every visible sheet
+        wb.move_sheet(ws, len(wb.worksheets) - 1 - wb.worksheets.index(ws))
     for ws in wb.worksheets:
+        if ws.sheet_state != "visible":
+            page_setup(ws)
+            continue
         fit_numbers(ws)
         fit_columns(ws, max_width=max_width, fixed=(fixed or {}).get(ws.title))
         fit_rows(ws)

@@ -224,14 +224,14 @@ def build_workbook(result, lang="ru"):
             if i:
                 _copy_style(proto[j], c)
 
-    # Charts over α, from the Data sheet (the CSV columns), each series in its own colour
-    # and dash; two charts per A4 page, none split by a page break
+    # Charts over α, from the fine grid (the summary's grid: the charts' extremes are
+    # the summary's) on a hidden sheet, each series in its own colour and dash; two
+    # charts per A4 page, none split by a page break
     from openpyxl.worksheet.pagebreak import Break
 
-    n = len(table)
-    col = {name: j + 1 for j, name in enumerate(COLUMNS)}
-    xref = Reference(ws_data, min_col=col["alpha_deg"], min_row=_DATA_FIRST_ROW,
-                     max_row=_DATA_FIRST_ROW + n - 1)
+    cd = _chart_data(wb, lang)
+    col, first, last = _put_columns(cd, result.curves, _CURVE_COLUMNS, 1)
+    xref = Reference(cd, min_col=col["alpha_deg"], min_row=first, max_row=last)
     ru = lang == "ru"
     y = _CHART_SYMBOLS[lang]
     N, Nm = ("Н", "Н·м") if ru else ("N", "N·m")
@@ -262,8 +262,7 @@ def build_workbook(result, lang="ru"):
         ch.x_axis.number_format = "0"
         ch.y_axis.number_format = "0"
         for m, (name, label) in enumerate(series):
-            yref = Reference(ws_data, min_col=col[name], min_row=_DATA_FIRST_ROW,
-                             max_row=_DATA_FIRST_ROW + n - 1)
+            yref = Reference(cd, min_col=col[name], min_row=first, max_row=last)
             s = Series(yref, xref, title=label)
             s.marker.symbol = "none"
             s.smooth = False
@@ -273,7 +272,11 @@ def build_workbook(result, lang="ru"):
         ws_ch.add_chart(ch, f"A{3 + rows_per_chart * k}")
         if k % 2 == 1:                              # two charts per A4 page, none split
             ws_ch.row_breaks.append(Break(id=2 + rows_per_chart * (k + 1)))
-    _polar_chart(ws_ch, ws_data, col, n, spec, lang, 3 + rows_per_chart * len(charts))
+    row = 3 + rows_per_chart * len(charts)
+    _polar_chart(ws_ch, cd, col, first, last, result.curves, spec, lang, row)
+    # the print area: the title and the charts (17 cm ≈ 9 default columns; the polar
+    # chart 17 × 19 cm ≈ 38 rows)
+    ws_ch.print_area = f"A1:J{row + 38}"
     if result.settings.form == "kolchin":
         _kolchin_sheet(wb, result, lang)
     return wb
@@ -333,28 +336,69 @@ def _style_series(s, m):
     s.graphicalProperties.line.width = width
 
 
-def _polar_chart(ws_ch, ws_data, col, n, spec, lang, row):
+#: Columns of the one-cylinder fine curves the native charts draw (hidden sheet).
+_CURVE_COLUMNS = ("alpha_deg", "dPg_N", "Pj_N", "P_N", "N_N", "K_N", "T_N", "M_Nm", "S_N",
+                  "R_N")
+
+
+def _chart_data(wb, lang):
+    """The hidden sheet of the native charts' data (the fine grid), created once."""
+    from crankbase.texts import texts
+
+    t = texts(lang)
+    title = t("sheet.engine.chart_data")
+    if title in wb.sheetnames:
+        return wb[title]
+    ws = wb.create_sheet(title)
+    ws.sheet_state = "hidden"
+    return ws
+
+
+def _put_columns(ws, df, names, c0):
+    """Write the columns ``names`` of ``df`` into ``ws`` from column ``c0`` (row 1 the
+    CSV names, data from row 2), at most :data:`crankbase.workbook.MAX_ROWS` rows: a
+    longer curve is thinned, its every column's largest and smallest row kept (so a chart
+    drawn from it peaks where the summary says).  Returns ({name: column}, first row,
+    last row)."""
+    from crankbase.workbook import bounded
+
+    arr = df[list(names)].to_numpy(float)
+    keep = np.r_[np.argmax(arr, axis=0), np.argmin(arr, axis=0)]
+    idx, _ = bounded(len(arr), keep=keep)
+    col = {name: c0 + j for j, name in enumerate(names)}
+    for j, name in enumerate(names):
+        ws.cell(1, c0 + j, name)
+    for i, rowvals in enumerate(arr[idx].tolist(), start=2):
+        for j, v in enumerate(rowvals):
+            ws.cell(i, c0 + j).value = v
+    return col, 2, 1 + len(idx)
+
+
+def _polar_chart(ws_ch, cd, col, first, last, curves, spec, lang, row):
     """The polar diagram of the crank-pin load as a native, editable scatter chart: the
-    locus of S = (T, K) from the Data sheet, +K downwards (reversed axis), the poles O and
-    Oш = (0, −Kr.ш) as markers from a small table beside the chart; both axes get the same
-    span on a square chart, so the diagram keeps its shape."""
+    locus of S = (T, K) on the fine grid (hidden sheet), +K downwards (reversed axis), the
+    poles O and Oш = (0, −Kr.ш) as markers from the hidden sheet; both axes get the same
+    span and the plot area is square (a manual layout of the chart's inner area), so the
+    diagram keeps its shape."""
     from openpyxl.chart import Reference, ScatterChart, Series
+    from openpyxl.chart.axis import ChartLines
+    from openpyxl.chart.layout import Layout, ManualLayout
     from openpyxl.chart.marker import Marker
     from openpyxl.chart.shapes import GraphicalProperties
 
     ru = lang == "ru"
     y = _CHART_SYMBOLS[lang]
-    T = np.asarray([ws_data.cell(_DATA_FIRST_ROW + i, col["T_N"]).value for i in range(n)])
-    K = np.asarray([ws_data.cell(_DATA_FIRST_ROW + i, col["K_N"]).value for i in range(n)])
+    T = curves["T_N"].to_numpy(float)
+    K = curves["K_N"].to_numpy(float)
     kr = spec.Kr
-    # the poles, in a small table right of the chart (columns M:O)
-    _put(ws_ch.cell(row, 13), "T, Н" if ru else "T, N")
-    _put(ws_ch.cell(row, 14), "K, Н" if ru else "K, N")
-    for i, (name, tt, k) in enumerate((("O", 0.0, 0.0), (y["pole"], 0.0, -kr)), start=1):
-        _put(ws_ch.cell(row + i, 13), tt)
-        _put(ws_ch.cell(row + i, 14), float(k))
-        _put(ws_ch.cell(row + i, 15), name)
-        ws_ch.cell(row + i, 14).number_format = "0"
+    # the poles, on the hidden sheet right of the curves
+    pc = max(col.values()) + 2
+    _put(cd.cell(1, pc), "T_N")
+    _put(cd.cell(1, pc + 1), "K_N")
+    for i, (name, tt, k) in enumerate((("O", 0.0, 0.0), (y["pole"], 0.0, -kr)), start=2):
+        _put(cd.cell(i, pc), tt)
+        _put(cd.cell(i, pc + 1), float(k))
+        _put(cd.cell(i, pc + 2), name)
     ch = ScatterChart()
     ch.title = (f"Полярная диаграмма нагрузки на шатунную шейку ({y['pole']} – "
                 f"полюс {y['R']})" if ru else
@@ -362,33 +406,42 @@ def _polar_chart(ws_ch, ws_data, col, n, spec, lang, row):
     ch.x_axis.title = "T, Н" if ru else "T, N"
     ch.y_axis.title = "K, Н (вниз)" if ru else "K, N (downwards)"
     ch.y_axis.scaling.orientation = "maxMin"            # +K downwards, as in the textbook
-    ch.width, ch.height = 17, 17
-    # equal scales: the same span on both axes of a square chart, centred on the data
+    # a square inner plot area on a chart 17 cm wide: the title above, the legend below
+    ch.width, ch.height = 17, 19
+    side = 0.72
+    ch.layout = Layout(manualLayout=ManualLayout(          # the plot area, without
+        layoutTarget="inner", xMode="edge", yMode="edge",   # the axes' labels
+        x=0.16, y=0.13, w=side, h=side * ch.width / ch.height))
+    # equal scales: the same span on both axes, centred on the data, the same grid step
     xs_all, ys_all = np.r_[T, 0.0], np.r_[K, 0.0, -kr]
     span = 1.1 * max(np.ptp(xs_all), np.ptp(ys_all))
     step = 10 ** np.floor(np.log10(span / 4))
+    if span / step > 12:
+        step *= 2
+    n_steps = np.ceil(span / step) + 1
     for ax, vals in ((ch.x_axis, xs_all), (ch.y_axis, ys_all)):
         mid = 0.5 * (vals.min() + vals.max())
-        ax.scaling.min = float(np.floor((mid - span / 2) / step) * step)
-        ax.scaling.max = float(np.floor((mid - span / 2) / step) * step
-                               + np.ceil(span / step) * step)
-        ax.majorUnit = float(step * (2 if span / step > 12 else 1))
+        lo = float(np.floor((mid - n_steps * step / 2) / step) * step)
+        if lo + n_steps * step < vals.max():
+            lo += step
+        ax.scaling.min = lo
+        ax.scaling.max = float(lo + n_steps * step)
+        ax.majorUnit = float(step)
+        ax.majorGridlines = ChartLines()
         ax.number_format = "0"
         ax.delete = False
     ch.x_axis.tickLblPos = "high"        # the y axis is reversed: "high" is the bottom
     ch.y_axis.tickLblPos = "low"
     ch.legend.position = "b"
-    xs = Reference(ws_data, min_col=col["T_N"], min_row=_DATA_FIRST_ROW,
-                   max_row=_DATA_FIRST_ROW + n - 1)
-    ys = Reference(ws_data, min_col=col["K_N"], min_row=_DATA_FIRST_ROW,
-                   max_row=_DATA_FIRST_ROW + n - 1)
+    xs = Reference(cd, min_col=col["T_N"], min_row=first, max_row=last)
+    ys = Reference(cd, min_col=col["K_N"], min_row=first, max_row=last)
     s = Series(ys, xs, title=f"{y['S']} (T, K)")
     s.marker.symbol = "none"
     s.smooth = False
     _style_series(s, 0)
     ch.series.append(s)
-    px = Reference(ws_ch, min_col=13, min_row=row + 1, max_row=row + 2)
-    py = Reference(ws_ch, min_col=14, min_row=row + 1, max_row=row + 2)
+    px = Reference(cd, min_col=pc, min_row=2, max_row=3)
+    py = Reference(cd, min_col=pc + 1, min_row=2, max_row=3)
     poles = Series(py, px, title=f"O, {y['pole']}")
     colour = CHART_STYLES[2][0]
     poles.marker = Marker(symbol="square", size=8)
@@ -699,8 +752,15 @@ def add_engine_sheets(wb, tr, lang="ru"):
     _write_rows(ws, end + 1, 1, [(lab, _text(v), u) for lab, v, u in rows])
     c0 = n + 4
     ws.cell(2, c0, t["data_title"]).font = Font(bold=True)
+    ws.merge_cells(start_row=2, start_column=c0, end_row=2,
+                   end_column=c0 + len(tr.torque.columns) - 1)
     _write_rows(ws, 3, c0, [list(tr.torque.columns)], bold=True)
-    last = _write_rows(ws, 4, c0, tr.torque.to_numpy().tolist()) - 1
+    _write_rows(ws, 4, c0, tr.torque.to_numpy().tolist())
+    # the chart: from the fine grid (the summary's), on the hidden sheet right of the
+    # one-cylinder curves
+    cd = _chart_data(wb, lang)
+    names = [c for c in tr.curves.columns if c.startswith("M_") or c == "alpha_deg"]
+    col, first, last = _put_columns(cd, tr.curves, names, cd.max_column + 2)
     ch = ScatterChart()
     ch.title = t["chart"]
     ch.x_axis.title = t["alpha"]
@@ -710,10 +770,11 @@ def add_engine_sheets(wb, tr, lang="ru"):
     ch.x_axis.tickLblPos = "low"
     ch.x_axis.delete = ch.y_axis.delete = False
     ch.legend.position = "b"
-    xref = Reference(ws, min_col=c0, min_row=4, max_row=last)
+    xref = Reference(cd, min_col=col["alpha_deg"], min_row=first, max_row=last)
     for j in [n + 1] + list(range(1, n + 1)):
-        yref = Reference(ws, min_col=c0 + j, min_row=4, max_row=last)
-        ser = Series(yref, xref, title=str(tr.torque.columns[j]))
+        name = str(tr.torque.columns[j])
+        yref = Reference(cd, min_col=col[name], min_row=first, max_row=last)
+        ser = Series(yref, xref, title=name)
         ser.marker.symbol = "none"
         ser.smooth = False
         if j == n + 1:                       # the total: bold, the first chart style
@@ -723,7 +784,13 @@ def add_engine_sheets(wb, tr, lang="ru"):
             ser.graphicalProperties.line.prstDash = _CYL_DASHES[(j - 1) % len(_CYL_DASHES)]
             ser.graphicalProperties.line.width = 9525
         ch.series.append(ser)
-    ch.width, ch.height = 24, 10
+    # as wide as the columns left of the torque.csv block (the widths measured as
+    # finish() will measure them)
+    from crankbase.workbook import columns_cm, fit_columns, fit_numbers
+
+    fit_numbers(ws)
+    fit_columns(ws)
+    ch.width, ch.height = max(16.0, columns_cm(ws, 1, c0 - 2)), 10
     ws.add_chart(ch, f"A{end + len(rows) + 3}")
     readable_numbers(ws, {"A": 34, "C": 12}, default_width=11)
 

@@ -232,7 +232,10 @@ LEFT = Alignment(horizontal="left", vertical="center", wrap_text=True)
 
 
 def _fonts(lang):
-    family = "Times New Roman" if lang == "ru" else "Calibri"
+    """Body, bold, title and note fonts: the one family of every workbook
+    (:data:`crankbase.workbook.FONT`) in both languages."""
+    from crankbase.workbook import FONT as family
+
     return (Font(name=family, size=11), Font(name=family, size=11, bold=True),
             Font(name=family, size=13, bold=True), Font(name=family, size=10, italic=True))
 
@@ -437,10 +440,11 @@ def build(lang: str, path: Path) -> None:
     _fit_width(ws, "landscape")
 
     # ---------------------------------------------------------------- Charts
-    ws_ch["A1"] = ("Графики сил по углу поворота кривошипа (по данным листа «Таблица 2»)"
+    ws_ch["A1"] = ("Графики сил по углу поворота кривошипа (по сетке итогов, 0,5°)"
                    if lang == "ru" else
-                   "Forces over the crank angle (from the sheet 'Table 2')")
+                   "Forces over the crank angle (on the summary's 0.5° grid)")
     ws_ch["A1"].font = title
+    ws_ch.merge_cells("A1:J1")
     _fit_width(ws_ch, "portrait")
 
     if lang == "en":

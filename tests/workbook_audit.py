@@ -18,7 +18,8 @@ def problems(wb, name=""):
         first, covered = _merged(ws)
         for row in ws.iter_rows():
             for c in row:
-                if c.value is None or (c.row, c.column) in covered:
+                if c.value is None or (c.row, c.column) in covered \
+                        or not _col_width(ws, c.column):          # a hidden column
                     continue
                 where = f"{name} {ws.title}!{c.coordinate}"
                 families.setdefault(c.font.name if c.font else None, where)
