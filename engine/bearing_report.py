@@ -151,11 +151,16 @@ def add_bearing_sheets(wb, tables, analysis, lang="ru"):
 
     readable_numbers(ws, {"A": 46}, default_width=14, per_column=False)
 
+    from .report import _rows, _thinned
+
     for fname, df in tables.items():
         sh = wb.create_sheet(names[fname])
         for c, name in enumerate(df.columns, start=1):
             _put(sh, 1, c, name).font = Font(bold=True)
-        values = df.to_numpy()
+        shown = _rows(df)                   # a fine --step: every k-th row, the CSV all
+        if len(shown) < len(df):
+            _put(sh, 1, len(df.columns) + 2, _thinned(df, shown, fname, lang))
+        values = shown.to_numpy()
         for r in range(values.shape[0]):
             for c in range(values.shape[1]):
                 sh.cell(r + 2, c + 1).value = float(values[r, c])

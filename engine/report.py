@@ -105,6 +105,26 @@ def input_values(result, lang="ru"):
     return v
 
 
+def _rows(df):
+    """The rows of ``df`` a sheet holds: all, or every k-th (and the last) of a table
+    longer than :data:`crankbase.workbook.MAX_ROWS` (a fine --step); the CSV beside the
+    workbook keeps every row."""
+    from crankbase.workbook import bounded
+
+    idx, k = bounded(len(df))
+    return df if k == 1 else df.iloc[idx]
+
+
+def _thinned(full, shown, csv, lang):
+    """The note over a thinned table: which rows it holds, where the rest are."""
+    from crankbase.texts import texts
+
+    from crankbase.workbook import MAX_ROWS
+
+    return texts(lang)("sheet.thinned", k=math.ceil(len(full) / MAX_ROWS),
+                       shown=len(shown), n=len(full), csv=csv)
+
+
 def _put(cell, value):
     """Store ``value`` in ``cell``; a string always as text, never as a formula (a name
     may start with "=").  Floats keep every bit when the workbook is saved by
@@ -166,6 +186,8 @@ def build_workbook(result, lang="ru"):
         raise EngineSpecError(Problem("force_scale", "the report needs the force scale μP "
                                                      "(TableSettings.force_scale)"))
     ensure_finite(table, "force table")
+    full = table
+    table = _rows(table)          # at most MAX_ROWS rows (the CSV keeps every row)
     wb = load_workbook(template_path(f"engine_{lang}.xlsx"))
     ws_in, ws_t2, ws_sum, ws_data, ws_ch = wb.worksheets[:5]
 
@@ -201,6 +223,9 @@ def build_workbook(result, lang="ru"):
             if i:
                 _copy_style(proto[j], c)
 
+    if len(table) < len(full):
+        _put(ws_t2["E2"], _thinned(full, table, "forces.csv", lang))
+
     # Summary
     extremes = set(SUMMARY_QUANTITIES)
     for row in ws_sum.iter_rows(min_row=4, max_col=7):
@@ -215,6 +240,8 @@ def build_workbook(result, lang="ru"):
 
     # Data: the CSV columns at full precision
     proto = [ws_data.cell(_DATA_FIRST_ROW, c) for c in range(1, len(COLUMNS) + 1)]
+    if len(table) < len(full):
+        _put(ws_data["A2"], _thinned(full, table, "forces.csv", lang))
     for j, name in enumerate(COLUMNS):
         ws_data.cell(_DATA_FIRST_ROW - 1, j + 1, name)
     for i, rowvals in enumerate(table[list(COLUMNS)].to_numpy().tolist()):
@@ -290,7 +317,7 @@ def _kolchin_sheet(wb, result, lang):
 
     from .table2 import table2
 
-    t2 = table2(result.table, result.spec, result.settings, "kolchin")
+    t2 = _rows(table2(result.table, result.spec, result.settings, "kolchin"))
     ws = wb.create_sheet(KOLCHIN_SHEET[lang])
     ws["A1"] = ("Таблица 2 в форме Колчина: удельные силы, МПа, и коэффициенты "
                 "(Колчин и Демидов)" if lang == "ru" else
@@ -470,146 +497,89 @@ def save_workbook(wb, path):
 
 # ------------------------------------------------------------------ the whole engine
 
-_TR = {
-    "ru": dict(
-        layout="Схема", torque="Суммарный момент", balance="Уравновешивание",
-        flywheel="Маховик",
-        layout_title="Расположение цилиндров (как в cylinders.csv)",
-        layout_cols=("Цилиндр", "Ряд", "Колено", "z, мм", "γ ряда, °", "Угол колена, °",
-                     "Фаза φ, °"),
-        torque_title="Суммарный крутящий момент за интервал между вспышками θ = {th:g}°",
-        torque_title_odd="Суммарный крутящий момент за цикл (неравномерное чередование)",
-        data_title="Данные torque.csv (весь цикл)",
-        alpha="θ, °", total="ΣMкр, Н·м", cyl="Mкр {j}, Н·м",
-        summary=[("M_mean_Nm", "Средний крутящий момент Mкр.ср", "Н·м"),
-                 ("M_max_Nm", "Mкр.max", "Н·м"), ("alpha_M_max_deg", "угол Mкр.max", "°"),
-                 ("M_min_Nm", "Mкр.min", "Н·м"), ("alpha_M_min_deg", "угол Mкр.min", "°"),
-                 ("mu", "Неравномерность μ = (Mкр.max − Mкр.min)/Mкр.ср", ""),
-                 ("Mi_Nm", "Индикаторный момент Mi = pi·Vh·i/(π·τ)", "Н·м"),
-                 ("Me_Nm", "Эффективный момент Me = ηм·Mi", "Н·м"),
-                 ("Ni_kW", "Индикаторная мощность Ni", "кВт"),
-                 ("Ne_kW", "Эффективная мощность Ne = ηм·Ni", "кВт"),
-                 ("diff_pct", "Расхождение (Mкр.ср − Mi)/Mi", "%")],
-        bal_title="Свободные силы и моменты: наибольшие за оборот",
-        bal_cols=("Часть", "Fmax, Н", "Mmax, Н·м", "Силы уравновешены", "Моменты "
-                  "уравновешены"),
-        parts={"1": "силы инерции 1-го порядка", "2": "силы инерции 2-го порядка",
-               "j": "возвратно-поступательные массы (сумма)",
-               "r": "вращающиеся массы", "cw": "противовесы",
-               "before": "всего без противовесов", "after": "всего с противовесами"},
-        cw_title="Противовесы", cw_cols=("z от цилиндра 1, мм", "m·r, кг·мм",
-                                          "угол от 1-го колена по вращению, °"),
-        cw_none="противовесов нет", yes="да", no="нет",
-        bal_data="Данные balance.csv (один оборот)",
-        fw_title="Маховик (оценка по избыточной работе при постоянной ω)",
-        fw_rows=[("L_excess_J", "Избыточная работа Lизб", "Дж"),
-                 ("delta", "Коэффициент неравномерности хода δ", ""),
-                 ("omega", "Угловая скорость ω", "рад/с"),
-                 ("J0_kgm2", "Момент инерции J0 = Lизб/(δ·ω²)", "кг·м²"),
-                 ("share", "Доля маховика Jм/J0", ""),
-                 ("J_flywheel_kgm2", "Момент инерции маховика Jм", "кг·м²"),
-                 ("mD2_kgm2", "Маховой момент mм·Dср² = 4·Jм", "кг·м²"),
-                 ("diameter_m", "Средний диаметр обода Dср", "м"),
-                 ("mass_kg", "Масса маховика mм", "кг"),
-                 ("rim_speed_m_s", "Окружная скорость обода", "м/с")],
-        fw_note="Допущения: ω постоянна (частота вращения спецификации); J0 — все "
-                "вращающиеся части, приведённые к валу; маховик берёт долю Jм/J0; обод — "
-                "тонкое кольцо (J = m·Dср²/4).",
-        fw_none="δ не задан ([flywheel] delta): маховик не рассчитан",
-        chart="Суммарный крутящий момент", inputs="Коленчатый вал и соглашения",
-        train_items=[("arrangement", "Расположение цилиндров", ""),
-                     ("vee_angle_deg", "Угол развала цилиндров γ", "°"),
-                     ("firing_order", "Порядок работы цилиндров", ""),
-                     ("throw_angles_deg", "Углы колен от 1-го по вращению", "°"),
-                     ("cylinder_spacing_mm", "Расстояние между осями цилиндров", "мм"),
-                     ("bank_offset_mm", "Смещение второго ряда вдоль вала", "мм"),
-                     ("mechanical_efficiency", "Механический КПД ηм", ""),
-                     ("delta", "Коэффициент неравномерности хода δ", ""),
-                     ("counterweights", "Противовесы", "")],
-        arrangements={"inline": "рядное", "vee": "V-образное", "boxer": "оппозитное"},
-        given="заданы", default_throws="по умолчанию для равномерного чередования вспышек",
-        cw_designs={"none": "нет", "throws": "на каждом колене (вращающиеся массы)",
-                    "throws+first_order": "на каждом колене и два концевых (силы и "
-                                          "моменты 1-го порядка)"},
-        cw_given="заданы списком ({n})",
-        conv=("Система координат: вид со стороны маховика, x вправо, y вверх, z вдоль вала "
-              "от цилиндра 1 к маховику; вал вращается против часовой стрелки на этом виде "
-              "(по часовой — со стороны носка).",
-              "Нумерация: рядный — 1…i от носка; V и оппозитный — первый ряд 1…i/2 (справа, "
-              "γ = −V/2), второй i/2+1…i; на общей шейке первый ряд достигает ВМТ на V° "
-              "раньше.",
-              "Колено k несёт цилиндры k и k + i/2 (V); углы колен — от 1-го по вращению.",
-              "Фаза φ — запаздывание цикла цилиндра относительно цилиндра 1: α = θ − φ.")),
-    "en": dict(
-        layout="Layout", torque="Total torque", balance="Balance", flywheel="Flywheel",
-        layout_title="Cylinder layout (as in cylinders.csv)",
-        layout_cols=("Cylinder", "Bank", "Throw", "z, mm", "Bank angle, deg",
-                     "Throw angle, deg", "Phase, deg"),
-        torque_title="Total torque over one firing interval of {th:g} deg",
-        torque_title_odd="Total torque over the cycle (uneven firing)",
-        data_title="torque.csv data (whole cycle)",
-        alpha="theta, deg", total="Total M, N·m", cyl="M {j}, N·m",
-        summary=[("M_mean_Nm", "Mean torque M_mean", "N·m"),
-                 ("M_max_Nm", "M_max", "N·m"), ("alpha_M_max_deg", "angle of M_max", "deg"),
-                 ("M_min_Nm", "M_min", "N·m"), ("alpha_M_min_deg", "angle of M_min", "deg"),
-                 ("mu", "Non-uniformity mu = (M_max - M_min)/M_mean", ""),
-                 ("Mi_Nm", "Indicated torque Mi = pi·Vh·i/(pi·tau)", "N·m"),
-                 ("Me_Nm", "Effective torque Me = eta_m·Mi", "N·m"),
-                 ("Ni_kW", "Indicated power Ni", "kW"),
-                 ("Ne_kW", "Effective power Ne = eta_m·Ni", "kW"),
-                 ("diff_pct", "Difference (M_mean - Mi)/Mi", "%")],
-        bal_title="Free forces and moments: largest over a revolution",
-        bal_cols=("Part", "F max, N", "M max, N·m", "Forces balanced", "Moments balanced"),
-        parts={"1": "first-order inertia forces", "2": "second-order inertia forces",
-               "j": "reciprocating masses (exact sum)", "r": "rotating masses",
-               "cw": "counterweights", "before": "total without counterweights",
-               "after": "total with counterweights"},
-        cw_title="Counterweights", cw_cols=("z from cylinder 1, mm", "m·r, kg·mm",
-                                            "angle from throw 1 in rotation, deg"),
-        cw_none="no counterweights", yes="yes", no="no",
-        bal_data="balance.csv data (one revolution)",
-        fw_title="Flywheel (estimate from the excess work at constant omega)",
-        fw_rows=[("L_excess_J", "Excess work L_exc", "J"),
-                 ("delta", "Coefficient of cyclic irregularity delta", ""),
-                 ("omega", "Angular velocity omega", "rad/s"),
-                 ("J0_kgm2", "Moment of inertia J0 = L_exc/(delta·omega²)", "kg·m²"),
-                 ("share", "Flywheel share J_f/J0", ""),
-                 ("J_flywheel_kgm2", "Flywheel moment of inertia J_f", "kg·m²"),
-                 ("mD2_kgm2", "Flywheel moment m·D² = 4·J_f", "kg·m²"),
-                 ("diameter_m", "Mean rim diameter D", "m"),
-                 ("mass_kg", "Flywheel mass m", "kg"),
-                 ("rim_speed_m_s", "Rim peripheral speed", "m/s")],
-        fw_note="Assumptions: constant omega (the spec's speed); J0 is all rotating parts "
-                "reduced to the crankshaft; the flywheel takes the share J_f/J0; the rim "
-                "is a thin ring (J = m·D²/4).",
-        fw_none="delta not given ([flywheel] delta): no flywheel computed",
-        chart="Total engine torque", inputs="Crank train and conventions",
-        train_items=[("arrangement", "Cylinder arrangement", ""),
-                     ("vee_angle_deg", "Vee angle between the banks", "deg"),
-                     ("firing_order", "Firing order", ""),
-                     ("throw_angles_deg", "Throw angles from throw 1 in rotation", "deg"),
-                     ("cylinder_spacing_mm", "Cylinder spacing along the crankshaft", "mm"),
-                     ("bank_offset_mm", "Axial offset of the second bank", "mm"),
-                     ("mechanical_efficiency", "Mechanical efficiency ηm", ""),
-                     ("delta", "Coefficient of cyclic irregularity δ", ""),
-                     ("counterweights", "Counterweights", "")],
-        arrangements={"inline": "inline", "vee": "vee", "boxer": "boxer"},
-        given="given", default_throws="default for even firing",
-        cw_designs={"none": "none", "throws": "one per throw (rotating masses)",
-                    "throws+first_order": "one per throw and two end ones (first-order "
-                                          "forces and moments)"},
-        cw_given="given one by one ({n})",
-        conv=("Frame: seen from the flywheel end, x right, y up, z along the crankshaft "
-              "from cylinder 1 to the flywheel; the crankshaft turns counter-clockwise in "
-              "this view (clockwise seen from the front).",
-              "Numbering: inline 1…i from the front; vee and boxer: first bank 1…i/2 (right, "
-              "γ = −V/2), second bank i/2+1…i; on a common pin the first bank reaches TDC "
-              "V° earlier.",
-              "Throw k carries cylinders k and k + i/2 (vee); throw angles are from throw 1, "
-              "in the direction of rotation.",
-              "Phase φ: the lag of a cylinder's cycle behind cylinder 1's: α = θ − φ.")),
-}
+#: The shape of the words of the whole engine's sheets; the words are in the catalogue
+#: ``crankbase/locale/<lang>/sheet.po`` under ``sheet.engine.<name>``: a text, a tuple
+#: (``.<i>``), a mapping (``.<key>``) or rows of (key, label, unit) (``.<key>``,
+#: ``.<key>.unit``).
+_TR_SHAPE = {'alpha': 'str',
+ 'arrangements': ('dict', ('inline', 'vee', 'boxer')),
+ 'bal_cols': ('tuple', 5),
+ 'bal_data': 'str',
+ 'bal_title': 'str',
+ 'balance': 'str',
+ 'chart': 'str',
+ 'conv': ('tuple', 4),
+ 'cw_cols': ('tuple', 3),
+ 'cw_designs': ('dict', ('none', 'throws', 'throws+first_order')),
+ 'cw_given': 'str',
+ 'cw_none': 'str',
+ 'cw_title': 'str',
+ 'cyl': 'str',
+ 'data_title': 'str',
+ 'default_throws': 'str',
+ 'flywheel': 'str',
+ 'fw_none': 'str',
+ 'fw_note': 'str',
+ 'fw_rows': ('rows',
+             ('L_excess_J', 'delta', 'omega', 'J0_kgm2', 'share', 'J_flywheel_kgm2',
+              'mD2_kgm2', 'diameter_m', 'mass_kg', 'rim_speed_m_s')),
+ 'fw_title': 'str',
+ 'given': 'str',
+ 'inputs': 'str',
+ 'layout': 'str',
+ 'layout_cols': ('tuple', 7),
+ 'layout_title': 'str',
+ 'no': 'str',
+ 'parts': ('dict', ('1', '2', 'j', 'r', 'cw', 'before', 'after')),
+ 'summary': ('rows',
+             ('M_mean_Nm', 'M_max_Nm', 'alpha_M_max_deg', 'M_min_Nm', 'alpha_M_min_deg',
+              'mu', 'Mi_Nm', 'Me_Nm', 'Ni_kW', 'Ne_kW', 'diff_pct')),
+ 'torque': 'str',
+ 'torque_title': 'str',
+ 'torque_title_odd': 'str',
+ 'total': 'str',
+ 'train_items': ('rows',
+                 ('arrangement', 'vee_angle_deg', 'firing_order', 'throw_angles_deg',
+                  'cylinder_spacing_mm', 'bank_offset_mm', 'mechanical_efficiency', 'delta',
+                  'counterweights')),
+ 'yes': 'str'}
 
+
+class _Words(dict):
+    """The words of :data:`_TR_SHAPE` in one language, from the catalogue."""
+
+    def __init__(self, lang):
+        from crankbase.texts import texts
+
+        t = texts(lang)
+        for k, kind in _TR_SHAPE.items():
+            base = f"sheet.engine.{k}"
+            if kind == "str":
+                self[k] = t(base)
+            elif kind[0] == "tuple":
+                self[k] = tuple(t(f"{base}.{i}") for i in range(kind[1]))
+            elif kind[0] == "dict":
+                self[k] = {sk: t(f"{base}.{sk}") for sk in kind[1]}
+            else:
+                self[k] = [(key, t(f"{base}.{key}"), _unit(t, f"{base}.{key}.unit"))
+                           for key in kind[1]]
+
+
+def _unit(t, key):
+    """A unit from the catalogue; '' for a quantity without one (no entry)."""
+    try:
+        return t(key)
+    except KeyError:
+        return ""
+
+
+class _Lazy(dict):
+    def __missing__(self, lang):
+        self[lang] = _Words(lang)
+        return self[lang]
+
+
+_TR = _Lazy()
 
 def _write_rows(ws, r0, c0, rows, bold=False):
     from openpyxl.styles import Font
@@ -744,7 +714,7 @@ def add_engine_sheets(wb, tr, lang="ru"):
     ws["A1"].font = Font(bold=True, size=12)
     head = [t["alpha"]] + [t["cyl"].format(j=j) for j in range(1, n + 1)] + [t["total"]]
     _write_rows(ws, 3, 1, [head], bold=True)
-    end = _write_rows(ws, 4, 1, tr.torque_table.to_numpy().tolist())
+    end = _write_rows(ws, 4, 1, _rows(tr.torque_table).to_numpy().tolist())
     rows = []
     for key, label, unit in t["summary"]:
         v = getattr(s, key)
@@ -755,7 +725,10 @@ def add_engine_sheets(wb, tr, lang="ru"):
     ws.merge_cells(start_row=2, start_column=c0, end_row=2,
                    end_column=c0 + len(tr.torque.columns) - 1)
     _write_rows(ws, 3, c0, [list(tr.torque.columns)], bold=True)
-    _write_rows(ws, 4, c0, tr.torque.to_numpy().tolist())
+    torque = _rows(tr.torque)
+    if len(torque) < len(tr.torque):
+        _put(ws.cell(1, c0), _thinned(tr.torque, torque, "torque.csv", lang))
+    _write_rows(ws, 4, c0, torque.to_numpy().tolist())
     # the chart: from the fine grid (the summary's), on the hidden sheet right of the
     # one-cylinder curves
     cd = _chart_data(wb, lang)
@@ -812,7 +785,11 @@ def add_engine_sheets(wb, tr, lang="ru"):
         r += 3
     ws.cell(r, 1, t["bal_data"]).font = Font(bold=True)
     _write_rows(ws, r + 1, 1, [list(tr.balance.columns)], bold=True)
-    _write_rows(ws, r + 2, 1, tr.balance.to_numpy().tolist())
+    balance = _rows(tr.balance)
+    if len(balance) < len(tr.balance):
+        _put(ws.cell(r, 1), t["bal_data"] + "; " + _thinned(tr.balance, balance,
+                                                            "balance.csv", lang))
+    _write_rows(ws, r + 2, 1, balance.to_numpy().tolist())
     readable_numbers(ws, {"A": 40}, default_width=12)
 
     # Flywheel
