@@ -281,8 +281,10 @@ def mark_workbook(student: StudentTable, check, dst, lang="en") -> int:
     from openpyxl.comments import Comment
     from openpyxl.styles import PatternFill
 
-    from .output import atomic_path
+    from .texts import texts
+    from .workbook import save
 
+    t = texts(lang)
     wb = load_workbook(student.source)
     red = PatternFill("solid", fgColor="FF7C80")
     n = 0
@@ -293,12 +295,10 @@ def mark_workbook(student: StudentTable, check, dst, lang="en") -> int:
         cell = wb[loc[0]][loc[1]]
         cell.fill = red
         right = f"{rec.computed:.6g}" if np.isfinite(rec.computed) else "—"
-        text = (f"верно: {right}" if lang == "ru" else f"right value: {right}")
+        text = t("sheet.check.right", value=right)
         if rec.deviation is not None and np.isfinite(rec.deviation):
-            text += (f" (отклонение {rec.deviation:+.4g})" if lang == "ru"
-                     else f" (deviation {rec.deviation:+.4g})")
+            text += " " + t("sheet.check.deviation", deviation=rec.deviation)
         cell.comment = Comment(text, "crankdyn check", width=220, height=60)
         n += 1
-    with atomic_path(dst) as tmp:
-        wb.save(tmp)
+    save(wb, dst)          # atomically; the student's numbers kept bit for bit
     return n

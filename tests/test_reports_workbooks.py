@@ -407,7 +407,10 @@ def test_native_polar_chart():
     curve, poles = polar.series
     cd = wb["Данные графиков"]
     assert cd.sheet_state == "hidden"
-    head = {c.value: c.column_letter for c in cd[1] if c.value}
+    head = {}
+    for c in cd[1]:                     # the curves' columns first, then the poles'
+        if c.value:
+            head.setdefault(c.value, c.column_letter)
     assert f"!${head['T_N']}$" in curve.xVal.numRef.f and "Данные графиков" in curve.xVal.numRef.f
     assert f"!${head['K_N']}$" in curve.yVal.numRef.f
     pole_k = poles.yVal.numRef.f.split("!")[1].replace("$", "")
