@@ -157,7 +157,7 @@ def add_bearing_sheets(wb, tables, analysis, lang="ru"):
         sh = wb.create_sheet(names[fname])
         for c, name in enumerate(df.columns, start=1):
             _put(sh, 1, c, name).font = Font(bold=True)
-        shown = _rows(df)                   # a fine --step: every k-th row, the CSV all
+        shown = _rows(df)                   # a fine table step: every k-th row, the CSV all
         if len(shown) < len(df):
             _put(sh, 1, len(df.columns) + 2, _thinned(df, shown, fname, lang))
         values = shown.to_numpy()

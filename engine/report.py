@@ -107,7 +107,7 @@ def input_values(result, lang="ru"):
 
 def _rows(df):
     """The rows of ``df`` a sheet holds: all, or every k-th (and the last) of a table
-    longer than :data:`crankbase.workbook.MAX_ROWS` (a fine --step); the CSV beside the
+    longer than :data:`crankbase.workbook.MAX_ROWS` (a fine table step); the CSV beside the
     workbook keeps every row."""
     from crankbase.workbook import bounded
 
