@@ -32,7 +32,8 @@ import re
 __all__ = ["FONT", "HEAD_FILL", "MAX_ROWS", "MAX_WIDTH", "WIDTH_PER_PAGE", "LINE_PT",
            "text_width", "wrapped_lines", "columns_cm", "number_format", "shown", "font", "style_header",
            "table_blocks", "unify_fonts", "fit_numbers", "fit_columns", "fit_rows",
-           "page_setup", "finish", "save", "bounded", "summary_workbook", "new_workbook"]
+           "page_setup", "finish", "save", "bounded", "summary_workbook", "new_workbook",
+           "words", "Words"]
 
 #: The one font family of every workbook (metric twin: Liberation Sans).
 FONT = "Arial"
@@ -455,3 +456,48 @@ def summary_workbook(df, path, title, sheet="summary"):
     finish(wb)
     page_setup(ws, "landscape", title_rows="3:3", title_cols="A:A")
     return save(wb, path)
+
+
+def _unit(t, key):
+    """A unit from the catalogue; '' for a quantity without one (no entry)."""
+    try:
+        return t(key)
+    except KeyError:
+        return ""
+
+
+def words(lang, prefix, shape):
+    """The words of a sheet writer in ``lang`` from the catalogue (``sheet.po``), in the
+    ``shape`` the writer reads them: {name: "str" | ("tuple", n) | ("dict", keys) |
+    ("rows", keys)} → a text ``<prefix>.<name>``, a tuple of ``<prefix>.<name>.<i>``, a
+    dict of ``<prefix>.<name>.<key>``, or rows (key, label, unit) of
+    ``<prefix>.<name>.<key>`` and ``<prefix>.<name>.<key>.unit`` (no entry: no unit)."""
+    from .texts import texts
+
+    t = texts(lang)
+    out = {}
+    for k, kind in shape.items():
+        base = f"{prefix}.{k}"
+        if kind == "str":
+            out[k] = t(base)
+        elif kind[0] == "tuple":
+            out[k] = tuple(t(f"{base}.{i}") for i in range(kind[1]))
+        elif kind[0] == "dict":
+            out[k] = {sk: t(f"{base}.{sk}") for sk in kind[1]}
+        else:
+            out[k] = [(key, t(f"{base}.{key}"), _unit(t, f"{base}.{key}.unit"))
+                      for key in kind[1]]
+    return out
+
+
+class Words(dict):
+    """``Words(prefix, shape)[lang]``: :func:`words` of each language, read when first
+    asked (a module's word table without reading the catalogue at import)."""
+
+    def __init__(self, prefix, shape):
+        super().__init__()
+        self.prefix, self.shape = prefix, shape
+
+    def __missing__(self, lang):
+        self[lang] = words(lang, self.prefix, self.shape)
+        return self[lang]

@@ -37,7 +37,15 @@ TABLE2_KEYS = (("alpha_deg",) + tuple(k for f in TABLE2_FORCES for k in (f[:-2] 
                + ("M_Nm", "psi_deg"))
 
 #: Name of the sheet of Table 2 in Kolchin's form (``[table] form = "kolchin"``).
-KOLCHIN_SHEET = {"ru": "Таблица 2 (Колчин)", "en": "Table 2 (Kolchin)"}
+class _KolchinSheet(dict):
+    def __missing__(self, lang):
+        from crankbase.texts import texts
+
+        self[lang] = texts(lang)("sheet.engine.kolchin_sheet")
+        return self[lang]
+
+
+KOLCHIN_SHEET = _KolchinSheet()
 
 _T2_KEY_ROW = 5       # hidden row of column keys (inserted into the template's Table 2)
 _T2_FIRST_ROW = 6     # first data row of Table 2 (rows 3–4: the two-row header)
@@ -48,34 +56,21 @@ def _text(value):
     return "—" if value is None else value
 
 
-#: The kind of the thermal cycle ([pressure.cycle] kind) in words.
-_CYCLE_KINDS = {
-    "ru": {"otto": "с подводом теплоты при V = const (Отто)",
-           "diesel": "смешанный, подвод теплоты при V = const и p = const (Тринклер)"},
-    "en": {"otto": "heat added at constant volume (Otto)",
-           "diesel": "dual: heat added at constant volume and pressure (Sabathé)"},
-}
-
-
 def input_values(result, lang="ru"):
     """The values of the Inputs sheet, by key (numbers in the report's units)."""
+    from crankbase.texts import texts
+
+    t = texts(lang)
     spec, settings, summary = result.spec, result.settings, result.summary
     cyc = spec.cycle
-    yes, no = ("да", "нет") if lang == "ru" else ("yes", "no")
+    yes, no = t("sheet.engine.yes"), t("sheet.engine.no")
     if spec.pressure_source == "cycle":
-        src = ("по тепловому расчёту ([pressure.cycle])" if lang == "ru"
-               else "from the thermal calculation ([pressure.cycle])")
+        src = t("sheet.engine.source.cycle")
     elif spec.pressure_source == "file":
-        src = (f"таблица давлений {spec.pressure_file.name}" if lang == "ru"
-               else f"pressure table {spec.pressure_file.name}")
+        src = t("sheet.engine.source.file", name=spec.pressure_file.name)
     else:
-        n = len(spec.pressure.angle_deg)
-        src = (f"таблица давлений в спецификации ({n} точек)"
-               if lang == "ru" else f"inline pressure table ({n} points)")
-    accel = {"two-term": ("двучленная: j = Rω²(cos α + λ cos 2α)" if lang == "ru"
-                          else "two-term: j = Rω²(cos α + λ cos 2α)"),
-             "exact": ("точная (группа Ассура RRP)" if lang == "ru"
-                       else "exact (RRP Assur group)")}[spec.acceleration]
+        src = t.n("sheet.engine.source.inline", len(spec.pressure.angle_deg))
+    accel = t(f"sheet.engine.acceleration.{spec.acceleration}")
     mass_input = mass_inputs(spec.mass_source, lang)
     v = {
         "name": spec.name, "strokes": spec.strokes, "cylinders": spec.cylinders,
@@ -91,7 +86,7 @@ def input_values(result, lang="ru"):
         "pressure_source": src, "pi": summary.pi_MPa, "power_i": summary.power_i_kW,
     }
     if cyc is not None:
-        v.update(cycle_kind=_CYCLE_KINDS[lang][cyc.kind], pa=cyc.pa / 1e6,
+        v.update(cycle_kind=t(f"sheet.engine.cycle.{cyc.kind}"), pa=cyc.pa / 1e6,
                  pr=cyc.pr / 1e6, n1=cyc.n1,
                  n2=cyc.n2, pc=cyc.pc / 1e6, pz=cyc.pz / 1e6, lambda_z=cyc.lambda_z,
                  rho=cyc.rho if cyc.kind == "diesel" else None,
@@ -259,18 +254,18 @@ def build_workbook(result, lang="ru"):
     cd = _chart_data(wb, lang)
     col, first, last = _put_columns(cd, result.curves, _CURVE_COLUMNS, 1)
     xref = Reference(cd, min_col=col["alpha_deg"], min_row=first, max_row=last)
-    ru = lang == "ru"
+    from crankbase.texts import texts
+
+    tx = texts(lang)
     y = _CHART_SYMBOLS[lang]
-    N, Nm = ("Н", "Н·м") if ru else ("N", "N·m")
+    N, Nm = tx("sheet.engine.newton"), tx("sheet.engine.newton_metre")
     charts = [
-        ((f"Силы {y['dPg']}, Pj, P" if ru else f"Forces {y['dPg']}, Pj, P"), N,
+        (tx("sheet.engine.chart.forces_gas", dPg=y["dPg"]), N,
          [("dPg_N", y["dPg"]), ("Pj_N", "Pj"), ("P_N", "P")]),
-        (("Силы N, K, T" if ru else "Forces N, K, T"), N,
+        (tx("sheet.engine.chart.forces_crank"), N,
          [("N_N", "N"), ("K_N", "K"), ("T_N", "T")]),
-        ((f"Крутящий момент цилиндра {y['M']}" if ru else
-          f"Torque of one cylinder {y['M']}"), Nm, [("M_Nm", y["M"])]),
-        ((f"Сила по шатуну {y['S']} и сила на шатунную шейку {y['R']}" if ru
-          else f"Rod force {y['S']} and crank-pin load {y['R']}"), N,
+        (tx("sheet.engine.chart.torque", M=y["M"]), Nm, [("M_Nm", y["M"])]),
+        (tx("sheet.engine.chart.rod_pin", S=y["S"], R=y["R"]), N,
          [("S_N", y["S"]), ("R_N", y["R"])]),
     ]
     rows_per_chart = 20
@@ -319,13 +314,12 @@ def _kolchin_sheet(wb, result, lang):
 
     t2 = _rows(table2(result.table, result.spec, result.settings, "kolchin"))
     ws = wb.create_sheet(KOLCHIN_SHEET[lang])
-    ws["A1"] = ("Таблица 2 в форме Колчина: удельные силы, МПа, и коэффициенты "
-                "(Колчин и Демидов)" if lang == "ru" else
-                "Table 2 in Kolchin's form: specific forces, MPa, and the coefficients "
-                "(Kolchin & Demidov)")
+    from crankbase.texts import texts
+
+    tx = texts(lang)
+    ws["A1"] = tx("sheet.engine.kolchin_title")
     ws["A1"].font = Font(bold=True, size=12)
-    ws["A2"] = (f"Fп = {result.spec.area * 1e4:.6g} см²" if lang == "ru"
-                else f"Ap = {result.spec.area * 1e4:.6g} cm²")
+    ws["A2"] = tx("sheet.engine.kolchin_area", area=result.spec.area * 1e4)
     for j, key in enumerate(t2.columns, start=1):
         c = ws.cell(3, j, key)
         c.font = Font(bold=True)
@@ -413,7 +407,9 @@ def _polar_chart(ws_ch, cd, col, first, last, curves, spec, lang, row):
     from openpyxl.chart.marker import Marker
     from openpyxl.chart.shapes import GraphicalProperties
 
-    ru = lang == "ru"
+    from crankbase.texts import texts
+
+    tx = texts(lang)
     y = _CHART_SYMBOLS[lang]
     T = curves["T_N"].to_numpy(float)
     K = curves["K_N"].to_numpy(float)
@@ -427,11 +423,9 @@ def _polar_chart(ws_ch, cd, col, first, last, curves, spec, lang, row):
         _put(cd.cell(i, pc + 1), float(k))
         _put(cd.cell(i, pc + 2), name)
     ch = ScatterChart()
-    ch.title = (f"Полярная диаграмма нагрузки на шатунную шейку ({y['pole']} – "
-                f"полюс {y['R']})" if ru else
-                f"Polar diagram of the crank-pin load ({y['pole']}: pole of {y['R']})")
-    ch.x_axis.title = "T, Н" if ru else "T, N"
-    ch.y_axis.title = "K, Н (вниз)" if ru else "K, N (downwards)"
+    ch.title = tx("sheet.engine.chart.polar", pole=y["pole"], R=y["R"])
+    ch.x_axis.title = tx("sheet.engine.chart.polar_x")
+    ch.y_axis.title = tx("sheet.engine.chart.polar_y")
     ch.y_axis.scaling.orientation = "maxMin"            # +K downwards, as in the textbook
     # a square inner plot area on a chart 17 cm wide: the title above, the legend below
     ch.width, ch.height = 17, 19
