@@ -140,15 +140,17 @@ def build_workbook(result: dict, lang="en", name=None):
     from openpyxl.styles import Alignment, Font
     from openpyxl.utils import get_column_letter
 
-    ru = lang == "ru"
+    from crankbase.texts import texts
+
+    tx = texts(lang)
     wb = Workbook()
     ws = wb.active
-    ws.title = "Итоги" if ru else "Summary"
+    ws.title = tx("sheet.dynamics.summary")
     if name is not None:
-        ws.append([f"{name}: " + ("динамика машины" if ru else "machine dynamics")])
+        ws.append([tx("sheet.dynamics.title", name=name)])
         ws["A1"].font = Font(bold=True, size=12)
-    ws.append(["Величина" if ru else "Quantity", "Значение" if ru else "Value",
-               "Ед." if ru else "Unit"])
+    ws.append([tx("sheet.dynamics.quantity"), tx("sheet.dynamics.value"),
+               tx("sheet.dynamics.unit")])
     head = ws.max_row
     for row in summary_rows(result, lang):
         if not math.isfinite(row[1]):
@@ -195,11 +197,11 @@ def build_workbook(result: dict, lang="en", name=None):
         s.page_setup.paperSize = s.PAPERSIZE_A4
         s.page_setup.orientation = "landscape" if len(df.columns) > 8 else "portrait"
 
-    sheet("Движение" if ru else "Motion", result["motion"].table)
+    sheet(tx("sheet.dynamics.motion"), result["motion"].table)
     if result.get("forces") is not None:
-        sheet("Силы" if ru else "Forces", result["forces"], _SYMBOL_FORCES)
+        sheet(tx("sheet.dynamics.forces"), result["forces"], _SYMBOL_FORCES)
     if result.get("startup") is not None:
-        sheet("Разгон" if ru else "Startup", result["startup"].table)
+        sheet(tx("sheet.dynamics.startup"), result["startup"].table)
     from crankbase.workbook import finish   # the one look and print setup of every workbook
 
     return finish(wb)
