@@ -1,7 +1,8 @@
 """The Excel report of the engine force table, filled from a template.
 
 The template (``templates/engine_<lang>.xlsx``, built by
-``templates/build_engine_templates.py``) owns the look and the text; this module only
+``templates/build_engine_templates.py`` from the words of the catalogue
+``crankbase/locale/<lang>/sheet.po``) owns the look and the text; this module only
 writes numbers (never formulas) at full precision into it, matched by the keys in the
 hidden column A of the Inputs and Summary sheets, copies the prototype row's style to every
 table row, and adds native Excel charts.  It consumes a computed
@@ -9,7 +10,11 @@ table row, and adds native Excel charts.  It consumes a computed
 
 Sheets, by position: 0 Inputs, 1 Table 2, 2 Summary, 3 Data (the CSV columns), 4 Charts;
 with the whole engine (:func:`add_engine_sheets`) also 5 Layout, 6 Total torque, 7 Balance,
-8 Flywheel.
+8 Flywheel; last, hidden, the charts' data: the native charts are drawn from the fine grid
+of the summary (their extremes are the summary's), not from the table rows.  A table
+longer than :data:`crankbase.workbook.MAX_ROWS` rows (a fine table step) is thinned on its
+sheet, with a note; the CSVs keep every row.  :func:`a4_setup` gives the workbook the
+house look (:func:`crankbase.workbook.finish`).
 """
 from __future__ import annotations
 
