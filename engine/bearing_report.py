@@ -160,6 +160,8 @@ def add_bearing_sheets(wb, tables, analysis, lang="ru"):
         shown = _rows(df)                   # a fine table step: every k-th row, the CSV all
         if len(shown) < len(df):
             _put(sh, 1, len(df.columns) + 2, _thinned(df, shown, fname, lang))
+            sh.merge_cells(start_row=1, start_column=len(df.columns) + 2, end_row=1,
+                           end_column=len(df.columns) + 7)
         values = shown.to_numpy()
         for r in range(values.shape[0]):
             for c in range(values.shape[1]):

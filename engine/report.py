@@ -225,6 +225,7 @@ def build_workbook(result, lang="ru"):
 
     if len(table) < len(full):
         _put(ws_t2["E2"], _thinned(full, table, "forces.csv", lang))
+        ws_t2.merge_cells("E2:S2")
 
     # Summary
     extremes = set(SUMMARY_QUANTITIES)
@@ -727,6 +728,8 @@ def add_engine_sheets(wb, tr, lang="ru"):
     torque = _rows(tr.torque)
     if len(torque) < len(tr.torque):
         _put(ws.cell(1, c0), _thinned(tr.torque, torque, "torque.csv", lang))
+        ws.merge_cells(start_row=1, start_column=c0, end_row=1,
+                       end_column=c0 + len(tr.torque.columns) - 1)
     _write_rows(ws, 4, c0, torque.to_numpy().tolist())
     # the chart: from the fine grid (the summary's), on the hidden sheet right of the
     # one-cylinder curves

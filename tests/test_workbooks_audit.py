@@ -176,3 +176,28 @@ def test_the_audit_catches_each_defect(tmp_path):
     ws["B3"].value = 123456789.123
     ws["B3"].number_format = "0.000"
     assert any("###" in p for p in problems(wb))
+
+
+@pytest.mark.slow
+def test_a_thinned_workbook_reads_cleanly(tmp_path):
+    """A fine table step (0.25°: 2881 rows, thinned on the sheets with a note) passes
+    the same check, the bearing sheets included."""
+    import dataclasses
+
+    from crankdyn.cmd_engine import _bearings
+    from engine.bearing_report import add_bearing_sheets
+    from engine.bearing_spec import read_bearing_inputs
+    from engine.report import a4_setup, add_engine_sheets, build_workbook
+
+    path = example_path("petrol_vaz2106.toml")
+    study = engine.load(path)
+    settings = dataclasses.replace(study.settings, step_deg=0.25)
+    whole = engine.analyze_engine(study.spec, study.train, settings)
+    for lang in LANGS:
+        wb = add_engine_sheets(build_workbook(whole.cylinder, lang), whole, lang)
+        b = _bearings(study.spec, whole.cylinder.table, whole.cylinder.curves,
+                      read_bearing_inputs(path, study.spec), whole, lang)
+        add_bearing_sheets(wb, b["csv"], b["analysis"], lang)
+        saved = _saved(a4_setup(wb), tmp_path / f"fine_{lang}.xlsx")
+        found = problems(load_workbook(saved), f"fine {lang}")
+        assert not found, "\n".join(found[:20])
