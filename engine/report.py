@@ -749,7 +749,7 @@ def add_engine_sheets(wb, tr, lang="ru"):
     for j in [n + 1] + list(range(1, n + 1)):
         name = str(tr.torque.columns[j])
         yref = Reference(cd, min_col=col[name], min_row=first, max_row=last)
-        ser = Series(yref, xref, title=name)
+        ser = Series(yref, xref, title=head[j])      # ΣMкр, Н·м; Mкр 1, Н·м …
         ser.marker.symbol = "none"
         ser.smooth = False
         if j == n + 1:                       # the total: bold, the first chart style
@@ -766,7 +766,11 @@ def add_engine_sheets(wb, tr, lang="ru"):
     fit_numbers(ws)
     fit_columns(ws)
     ch.width, ch.height = max(16.0, columns_cm(ws, 1, c0 - 2)), 10
-    ws.add_chart(ch, f"A{end + len(rows) + 3}")
+    at = end + len(rows) + 3
+    ws.add_chart(ch, f"A{at}")
+    from openpyxl.worksheet.pagebreak import Break
+
+    ws.row_breaks.append(Break(id=at - 1))        # the chart starts a page: never split
     readable_numbers(ws, {"A": 34, "C": 12}, default_width=11)
 
     # Balance: amplitudes, counterweights, the data of balance.csv
