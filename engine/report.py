@@ -438,7 +438,7 @@ def _polar_chart(ws_ch, cd, col, first, last, curves, spec, lang, row):
     side = 0.72
     ch.layout = Layout(manualLayout=ManualLayout(          # the plot area, without
         layoutTarget="inner", xMode="edge", yMode="edge",   # the axes' labels
-        x=0.16, y=0.13, w=side, h=side * ch.width / ch.height))
+        x=0.16, y=0.17, w=side, h=side * ch.width / ch.height))
     # equal scales: the same span on both axes, centred on the data, the same grid step
     xs_all, ys_all = np.r_[T, 0.0], np.r_[K, 0.0, -kr]
     span = 1.1 * max(np.ptp(xs_all), np.ptp(ys_all))
