@@ -30,10 +30,11 @@ import math
 import re
 
 __all__ = ["FONT", "HEAD_FILL", "MAX_ROWS", "MAX_WIDTH", "WIDTH_PER_PAGE", "LINE_PT",
-           "text_width", "wrapped_lines", "columns_cm", "number_format", "shown", "font", "style_header",
+           "text_width", "wrapped_lines", "columns_cm", "number_format", "shown", "font",
+           "style_header",
            "table_blocks", "unify_fonts", "fit_numbers", "fit_columns", "fit_rows",
            "page_setup", "finish", "save", "bounded", "summary_workbook", "new_workbook",
-           "words", "Words"]
+           "words", "Words", "header_rows"]
 
 #: The one font family of every workbook (metric twin: Liberation Sans).
 FONT = "Arial"
@@ -156,6 +157,20 @@ def style_header(cell, wrap=True):
     cell.fill = PatternFill("solid", fgColor=HEAD_FILL)
     cell.border = Border(left=thin, right=thin, top=thin, bottom=thin)
     cell.alignment = Alignment(horizontal="center", vertical="center", wrap_text=wrap)
+
+
+def header_rows(ws, row, labels, names, col=1):
+    """The two header rows of a table: the quantity in the report's language (bold,
+    wrapped, filled) over the CSV column name (small grey italic), from ``(row, col)``.
+    Returns the first data row."""
+    from openpyxl.styles import Alignment
+
+    for j, (label, name) in enumerate(zip(labels, names), start=col):
+        style_header(ws.cell(row, j, label))
+        c = ws.cell(row + 1, j, str(name))
+        c.font = font(italic=True, size=8, color="555555")
+        c.alignment = Alignment(horizontal="center")
+    return row + 2
 
 
 def new_workbook():

@@ -137,10 +137,11 @@ def build_workbook(result: dict, lang="en", name=None):
     language, then the CSV column name); every sheet set up for A4.  Raises ValueError if
     any number is not finite."""
     from openpyxl import Workbook
-    from openpyxl.styles import Alignment, Font
+    from openpyxl.styles import Font
     from openpyxl.utils import get_column_letter
 
     from crankbase.texts import texts
+    from crankbase.workbook import header_rows
 
     tx = texts(lang)
     wb = Workbook()
@@ -172,13 +173,7 @@ def build_workbook(result: dict, lang="en", name=None):
         if not np.all(np.isfinite(num.to_numpy())):
             raise ValueError(f"sheet {title}: a value is not finite")
         s = wb.create_sheet(title)
-        s.append([column_label(c, lang, symbols) for c in df.columns])
-        s.append(list(df.columns))
-        for c in s[1]:
-            c.font = Font(bold=True)
-            c.alignment = Alignment(wrap_text=True, vertical="top")
-        for c in s[2]:
-            c.font = Font(italic=True, size=8, color="555555")
+        header_rows(s, 1, [column_label(c, lang, symbols) for c in df.columns], df.columns)
         for rec in df.itertuples(index=False):
             s.append([float(v) for v in rec])
         for j, col in enumerate(df.columns, start=1):

@@ -258,7 +258,18 @@ _TEXT = {
 
 #: The workbook's words (crankbase.workbook.words): sheet names, headers, conventions;
 #: in the catalogue crankbase/locale/<lang>/sheet.po under ``sheet.linkage.*``.
-_SHEET_SHAPE = {'sheets': ('dict', ('inputs', 'positions', 'velocities', 'accelerations', 'loads', 'forces', 'extremes')), 'title': 'str', 'spec_head': ('tuple', 4), 'cycle_head': ('tuple', 3), 'warning': 'str', 'conventions': 'str', 'ext_head': ('tuple', 3), 'extreme': 'str', 'ext_labels': ('dict', ('working start', 'working end')), 'conv': ('tuple', 7)}
+_SHEET_SHAPE = {'conv': ('tuple', 7),
+ 'conventions': 'str',
+ 'cycle_head': ('tuple', 3),
+ 'ext_head': ('tuple', 3),
+ 'ext_labels': ('dict', ('working start', 'working end')),
+ 'extreme': 'str',
+ 'sheets': ('dict',
+            ('inputs', 'positions', 'velocities', 'accelerations', 'loads', 'forces',
+             'extremes')),
+ 'spec_head': ('tuple', 4),
+ 'title': 'str',
+ 'warning': 'str'}
 
 
 def _sheet_words(lang):
