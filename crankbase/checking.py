@@ -290,7 +290,8 @@ def mark_workbook(student: StudentTable, check, dst, lang="en") -> int:
     from openpyxl.comments import Comment
     from openpyxl.styles import PatternFill
 
-    from .output import atomic_path
+    from .texts import texts
+    from .workbook import save
 
     t = texts(lang)
     wb = load_workbook(student.source)
@@ -308,8 +309,7 @@ def mark_workbook(student: StudentTable, check, dst, lang="en") -> int:
             text += t("check.comment.deviation", deviation=rec.deviation)
         cell.comment = Comment(text, "crankdyn check", width=220, height=60)
         n += 1
-    with atomic_path(dst) as tmp:
-        wb.save(tmp)
+    save(wb, dst)          # atomically; the student's numbers kept bit for bit
     return n
 
 

@@ -120,18 +120,21 @@ def build_workbook(result: dict, lang="en", name=None):
     language, then the CSV column name); every sheet set up for A4.  Raises ValueError if
     any number is not finite."""
     from openpyxl import Workbook
-    from openpyxl.styles import Alignment, Font
+    from openpyxl.styles import Font
     from openpyxl.utils import get_column_letter
 
-    ru = lang == "ru"
+    from crankbase.texts import texts
+    from crankbase.workbook import header_rows
+
+    tx = texts(lang)
     wb = Workbook()
     ws = wb.active
-    ws.title = "Итоги" if ru else "Summary"
+    ws.title = tx("sheet.dynamics.summary")
     if name is not None:
-        ws.append([f"{name}: " + ("динамика машины" if ru else "machine dynamics")])
+        ws.append([tx("sheet.dynamics.title", name=name)])
         ws["A1"].font = Font(bold=True, size=12)
-    ws.append(["Величина" if ru else "Quantity", "Значение" if ru else "Value",
-               "Ед." if ru else "Unit"])
+    ws.append([tx("sheet.dynamics.quantity"), tx("sheet.dynamics.value"),
+               tx("sheet.dynamics.unit")])
     head = ws.max_row
     for row in summary_rows(result, lang):
         if not math.isfinite(row[1]):
@@ -153,13 +156,7 @@ def build_workbook(result: dict, lang="en", name=None):
         if not np.all(np.isfinite(num.to_numpy())):
             raise ValueError(f"sheet {title}: a value is not finite")
         s = wb.create_sheet(title)
-        s.append([column_label(c, lang, symbols) for c in df.columns])
-        s.append(list(df.columns))
-        for c in s[1]:
-            c.font = Font(bold=True)
-            c.alignment = Alignment(wrap_text=True, vertical="top")
-        for c in s[2]:
-            c.font = Font(italic=True, size=8, color="555555")
+        header_rows(s, 1, [column_label(c, lang, symbols) for c in df.columns], df.columns)
         for rec in df.itertuples(index=False):
             s.append([float(v) for v in rec])
         for j, col in enumerate(df.columns, start=1):
@@ -178,11 +175,11 @@ def build_workbook(result: dict, lang="en", name=None):
         s.page_setup.paperSize = s.PAPERSIZE_A4
         s.page_setup.orientation = "landscape" if len(df.columns) > 8 else "portrait"
 
-    sheet("Движение" if ru else "Motion", result["motion"].table)
+    sheet(tx("sheet.dynamics.motion"), result["motion"].table)
     if result.get("forces") is not None:
-        sheet("Силы" if ru else "Forces", result["forces"], _SYMBOL_FORCES)
+        sheet(tx("sheet.dynamics.forces"), result["forces"], _SYMBOL_FORCES)
     if result.get("startup") is not None:
-        sheet("Разгон" if ru else "Startup", result["startup"].table)
-    from engine.report import a4_setup      # the one print setup of every workbook
+        sheet(tx("sheet.dynamics.startup"), result["startup"].table)
+    from crankbase.workbook import finish   # the one look and print setup of every workbook
 
-    return a4_setup(wb)
+    return finish(wb)

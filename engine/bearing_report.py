@@ -9,58 +9,58 @@ precision (saved by :func:`engine.report.save_workbook`).  Nothing here computes
 """
 from __future__ import annotations
 
+from crankbase.workbook import Words
+
 from .bearings import load_stats
 
 __all__ = ["add_bearing_sheets", "SHEET_NAMES"]
 
-#: Sheet title of each bearing table (by CSV file name), per language.
-SHEET_NAMES = {
-    "ru": {"crankpins.csv": "Шатунные шейки", "journals.csv": "Коренные шейки",
-           "journal_torques.csv": "Моменты коренных шеек",
-           "rod_bearings.csv": "Шатун и палец", "wear.csv": "Износ",
-           "rod_model.csv": "Модель шатуна", "summary": "Подшипники"},
-    "en": {"crankpins.csv": "Crank pins", "journals.csv": "Main journals",
-           "journal_torques.csv": "Journal torques", "rod_bearings.csv": "Big end, pin",
-           "wear.csv": "Wear", "rod_model.csv": "Rod model", "summary": "Bearings"},
-}
+#: The bearing tables (by CSV file name) and the summary: their sheets' titles are
+#: ``sheet.bearings.sheet.<name>`` of the catalogue.
+SHEET_KEYS = ("crankpins.csv", "journals.csv", "journal_torques.csv", "rod_bearings.csv",
+              "wear.csv", "rod_model.csv", "summary")
 
-_T = {
-    "ru": dict(title="Нагрузки на подшипники коленчатого вала", what="Величина",
-               max="max", amax="α при max, °", min="min", amin="α при min, °",
-               mean="среднее", chi="χ = max/ср", pin="Шатунная шейка {k}, Rшш, Н",
-               jr="Коренная шейка {j}, Rк.ш, Н", tq="Момент через коренную шейку {j}, Н·м",
-               swing="размах", most_pin="Наиболее нагруженная шатунная шейка",
-               most_j="Наиболее нагруженная коренная шейка",
-               most_t="Наибольший размах момента: коренная шейка",
-               hole="Масляное отверстие (наименьший износ), °", hole_pin="шатунная шейка {k}",
-               hole_j="коренная шейка {j}", half="Дуга износа ±, °",
-               be="Подшипник нижней головки шатуна (цилиндр 1), Н",
-               pp="Поршневой палец (цилиндр 1), Н",
-               rod="Жёсткий шатун − двухмассовый (точная кинематика)",
-               conv=("Система координат кривошипа: K — к оси вала, T — по вращению; "
-                     "углы Ψ и направления износа от направления к оси вала по вращению.",
-                     "Коренные шейки нумеруются от носка вала; нагрузка Q — сила, которой "
-                     "вал давит на подшипник (правило рычага, разрезной вал).",
-                     "Шатунная шейка изнашивается против направления Rшш, коренная — по "
-                     "направлению Q; износ ∝ ∫R dα по дуге ±h.")),
-    "en": dict(title="Bearing loads of the crankshaft", what="Quantity", max="max",
-               amax="α at max, °", min="min", amin="α at min, °", mean="mean",
-               chi="χ = max/mean", pin="Crank pin {k}, R, N", jr="Main journal {j}, R, N",
-               tq="Torque through main journal {j}, N·m", swing="swing",
-               most_pin="Most loaded crank pin", most_j="Most loaded main journal",
-               most_t="Largest torque swing: main journal",
-               hole="Oil hole (least wear), °", hole_pin="crank pin {k}",
-               hole_j="main journal {j}", half="Wear arc ±, °",
-               be="Big-end bearing (cylinder 1), N", pp="Piston pin (cylinder 1), N",
-               rod="Rigid rod − two-mass rod (exact kinematics)",
-               conv=("Crank frame: K towards the shaft axis, T in the direction of "
-                     "rotation; angles Ψ and wear directions from the direction towards "
-                     "the shaft axis, in the direction of rotation.",
-                     "Main journals are numbered from the free end; their load Q is the "
-                     "force the shaft presses the bearing with (lever rule, split shaft).",
-                     "A crank pin wears opposite to its load R, a main journal along Q; "
-                     "wear ∝ ∫R dα over an arc of ±h.")),
-}
+
+class _SheetNames(dict):
+    def __missing__(self, lang):
+        from crankbase.workbook import words
+
+        self[lang] = words(lang, "sheet.bearings", {"sheet": ("dict", SHEET_KEYS)})["sheet"]
+        return self[lang]
+
+
+#: Sheet title of each bearing table (by CSV file name), per language:
+#: ``SHEET_NAMES[lang][csv]``.
+SHEET_NAMES = _SheetNames()
+
+#: The shape of the words (crankbase.workbook.words); the words are in the catalogue
+#: crankbase/locale/<lang>/sheet.po under ``sheet.bearings.*``.
+_T_SHAPE = {'amax': 'str',
+ 'amin': 'str',
+ 'be': 'str',
+ 'chi': 'str',
+ 'conv': ('tuple', 3),
+ 'half': 'str',
+ 'hole': 'str',
+ 'hole_j': 'str',
+ 'hole_pin': 'str',
+ 'jr': 'str',
+ 'max': 'str',
+ 'mean': 'str',
+ 'min': 'str',
+ 'most_j': 'str',
+ 'most_pin': 'str',
+ 'most_t': 'str',
+ 'pin': 'str',
+ 'pp': 'str',
+ 'rod': 'str',
+ 'swing': 'str',
+ 'title': 'str',
+ 'tq': 'str',
+ 'what': 'str'}
+
+_T = Words('sheet.bearings', _T_SHAPE)
+
 
 
 def _put(ws, row, col, value):
@@ -151,11 +151,18 @@ def add_bearing_sheets(wb, tables, analysis, lang="ru"):
 
     readable_numbers(ws, {"A": 46}, default_width=14, per_column=False)
 
+    from crankbase.workbook import sheet_rows, thinned_note
+
     for fname, df in tables.items():
         sh = wb.create_sheet(names[fname])
         for c, name in enumerate(df.columns, start=1):
             _put(sh, 1, c, name).font = Font(bold=True)
-        values = df.to_numpy()
+        shown = sheet_rows(df)                   # a fine table step: every k-th row, the CSV all
+        if len(shown) < len(df):
+            _put(sh, 1, len(df.columns) + 2, thinned_note(df, shown, fname, lang))
+            sh.merge_cells(start_row=1, start_column=len(df.columns) + 2, end_row=1,
+                           end_column=len(df.columns) + 7)
+        values = shown.to_numpy()
         for r in range(values.shape[0]):
             for c in range(values.shape[1]):
                 sh.cell(r + 2, c + 1).value = float(values[r, c])

@@ -1,7 +1,8 @@
 """The Excel report of the engine force table, filled from a template.
 
 The template (``templates/engine_<lang>.xlsx``, built by
-``templates/build_engine_templates.py``) owns the look and the text; this module only
+``templates/build_engine_templates.py`` from the words of the catalogue
+``crankbase/locale/<lang>/sheet.po``) owns the look and the text; this module only
 writes numbers (never formulas) at full precision into it, matched by the keys in the
 hidden column A of the Inputs and Summary sheets, copies the prototype row's style to every
 table row, and adds native Excel charts.  It consumes a computed
@@ -9,9 +10,14 @@ table row, and adds native Excel charts.  It consumes a computed
 
 Sheets, by position: 0 Inputs, 1 Table 2, 2 Summary, 3 Data (the CSV columns), 4 Charts;
 with the whole engine (:func:`add_engine_sheets`) also 5 Layout, 6 Total torque, 7 Balance,
-8 Flywheel.
+8 Flywheel; last, hidden, the charts' data: the native charts are drawn from the fine grid
+of the summary (their extremes are the summary's), not from the table rows.  A table
+longer than :data:`crankbase.workbook.MAX_ROWS` rows (a fine table step) is thinned on its
+sheet, with a note; the CSVs keep every row.  :func:`a4_setup` gives the workbook the
+house look (:func:`crankbase.workbook.finish`).
 """
 from __future__ import annotations
+
 
 import copy
 import math
@@ -19,6 +25,7 @@ import math
 import numpy as np
 
 from crankbase.errors import OutputError, Problem
+from crankbase.workbook import sheet_rows, thinned_note
 
 from .forces import COLUMNS, SUMMARY_QUANTITIES
 from .spec import EngineSpecError
@@ -37,7 +44,15 @@ TABLE2_KEYS = (("alpha_deg",) + tuple(k for f in TABLE2_FORCES for k in (f[:-2] 
                + ("M_Nm", "psi_deg"))
 
 #: Name of the sheet of Table 2 in Kolchin's form (``[table] form = "kolchin"``).
-KOLCHIN_SHEET = {"ru": "Таблица 2 (Колчин)", "en": "Table 2 (Kolchin)"}
+class _KolchinSheet(dict):
+    def __missing__(self, lang):
+        from crankbase.texts import texts
+
+        self[lang] = texts(lang)("sheet.engine.kolchin_sheet")
+        return self[lang]
+
+
+KOLCHIN_SHEET = _KolchinSheet()
 
 _T2_KEY_ROW = 5       # hidden row of column keys (inserted into the template's Table 2)
 _T2_FIRST_ROW = 6     # first data row of Table 2 (rows 3–4: the two-row header)
@@ -48,34 +63,21 @@ def _text(value):
     return "—" if value is None else value
 
 
-#: The kind of the thermal cycle ([pressure.cycle] kind) in words.
-_CYCLE_KINDS = {
-    "ru": {"otto": "с подводом теплоты при V = const (Отто)",
-           "diesel": "смешанный, подвод теплоты при V = const и p = const (Тринклер)"},
-    "en": {"otto": "heat added at constant volume (Otto)",
-           "diesel": "dual: heat added at constant volume and pressure (Sabathé)"},
-}
-
-
 def input_values(result, lang="ru"):
     """The values of the Inputs sheet, by key (numbers in the report's units)."""
+    from crankbase.texts import texts
+
+    t = texts(lang)
     spec, settings, summary = result.spec, result.settings, result.summary
     cyc = spec.cycle
-    yes, no = ("да", "нет") if lang == "ru" else ("yes", "no")
+    yes, no = t("sheet.engine.yes"), t("sheet.engine.no")
     if spec.pressure_source == "cycle":
-        src = ("по тепловому расчёту ([pressure.cycle])" if lang == "ru"
-               else "from the thermal calculation ([pressure.cycle])")
+        src = t("sheet.engine.source.cycle")
     elif spec.pressure_source == "file":
-        src = (f"таблица давлений {spec.pressure_file.name}" if lang == "ru"
-               else f"pressure table {spec.pressure_file.name}")
+        src = t("sheet.engine.source.file", name=spec.pressure_file.name)
     else:
-        n = len(spec.pressure.angle_deg)
-        src = (f"таблица давлений в спецификации ({n} точек)"
-               if lang == "ru" else f"inline pressure table ({n} points)")
-    accel = {"two-term": ("двучленная: j = Rω²(cos α + λ cos 2α)" if lang == "ru"
-                          else "two-term: j = Rω²(cos α + λ cos 2α)"),
-             "exact": ("точная (группа Ассура RRP)" if lang == "ru"
-                       else "exact (RRP Assur group)")}[spec.acceleration]
+        src = t.n("sheet.engine.source.inline", len(spec.pressure.angle_deg))
+    accel = t(f"sheet.engine.acceleration.{spec.acceleration}")
     mass_input = mass_inputs(spec.mass_source, lang)
     v = {
         "name": spec.name, "strokes": spec.strokes, "cylinders": spec.cylinders,
@@ -91,7 +93,7 @@ def input_values(result, lang="ru"):
         "pressure_source": src, "pi": summary.pi_MPa, "power_i": summary.power_i_kW,
     }
     if cyc is not None:
-        v.update(cycle_kind=_CYCLE_KINDS[lang][cyc.kind], pa=cyc.pa / 1e6,
+        v.update(cycle_kind=t(f"sheet.engine.cycle.{cyc.kind}"), pa=cyc.pa / 1e6,
                  pr=cyc.pr / 1e6, n1=cyc.n1,
                  n2=cyc.n2, pc=cyc.pc / 1e6, pz=cyc.pz / 1e6, lambda_z=cyc.lambda_z,
                  rho=cyc.rho if cyc.kind == "diesel" else None,
@@ -166,6 +168,8 @@ def build_workbook(result, lang="ru"):
         raise EngineSpecError(Problem("force_scale", "the report needs the force scale μP "
                                                      "(TableSettings.force_scale)"))
     ensure_finite(table, "force table")
+    full = table
+    table = sheet_rows(table)          # at most MAX_ROWS rows (the CSV keeps every row)
     wb = load_workbook(template_path(f"engine_{lang}.xlsx"))
     ws_in, ws_t2, ws_sum, ws_data, ws_ch = wb.worksheets[:5]
 
@@ -201,6 +205,10 @@ def build_workbook(result, lang="ru"):
             if i:
                 _copy_style(proto[j], c)
 
+    if len(table) < len(full):
+        _put(ws_t2["E2"], thinned_note(full, table, "forces.csv", lang))
+        ws_t2.merge_cells("E2:S2")
+
     # Summary
     extremes = set(SUMMARY_QUANTITIES)
     for row in ws_sum.iter_rows(min_row=4, max_col=7):
@@ -215,6 +223,8 @@ def build_workbook(result, lang="ru"):
 
     # Data: the CSV columns at full precision
     proto = [ws_data.cell(_DATA_FIRST_ROW, c) for c in range(1, len(COLUMNS) + 1)]
+    if len(table) < len(full):
+        _put(ws_data["A2"], thinned_note(full, table, "forces.csv", lang))
     for j, name in enumerate(COLUMNS):
         ws_data.cell(_DATA_FIRST_ROW - 1, j + 1, name)
     for i, rowvals in enumerate(table[list(COLUMNS)].to_numpy().tolist()):
@@ -224,26 +234,26 @@ def build_workbook(result, lang="ru"):
             if i:
                 _copy_style(proto[j], c)
 
-    # Charts over α, from the Data sheet (the CSV columns), each series in its own colour
-    # and dash; two charts per A4 page, none split by a page break
+    # Charts over α, from the fine grid (the summary's grid: the charts' extremes are
+    # the summary's) on a hidden sheet, each series in its own colour and dash; two
+    # charts per A4 page, none split by a page break
     from openpyxl.worksheet.pagebreak import Break
 
-    n = len(table)
-    col = {name: j + 1 for j, name in enumerate(COLUMNS)}
-    xref = Reference(ws_data, min_col=col["alpha_deg"], min_row=_DATA_FIRST_ROW,
-                     max_row=_DATA_FIRST_ROW + n - 1)
-    ru = lang == "ru"
+    cd = _chart_data(wb, lang)
+    col, first, last = _put_columns(cd, result.curves, _CURVE_COLUMNS, 1)
+    xref = Reference(cd, min_col=col["alpha_deg"], min_row=first, max_row=last)
+    from crankbase.texts import texts
+
+    tx = texts(lang)
     y = _CHART_SYMBOLS[lang]
-    N, Nm = ("Н", "Н·м") if ru else ("N", "N·m")
+    N, Nm = tx("sheet.engine.newton"), tx("sheet.engine.newton_metre")
     charts = [
-        ((f"Силы {y['dPg']}, Pj, P" if ru else f"Forces {y['dPg']}, Pj, P"), N,
+        (tx("sheet.engine.chart.forces_gas", dPg=y["dPg"]), N,
          [("dPg_N", y["dPg"]), ("Pj_N", "Pj"), ("P_N", "P")]),
-        (("Силы N, K, T" if ru else "Forces N, K, T"), N,
+        (tx("sheet.engine.chart.forces_crank"), N,
          [("N_N", "N"), ("K_N", "K"), ("T_N", "T")]),
-        ((f"Крутящий момент цилиндра {y['M']}" if ru else
-          f"Torque of one cylinder {y['M']}"), Nm, [("M_Nm", y["M"])]),
-        ((f"Сила по шатуну {y['S']} и сила на шатунную шейку {y['R']}" if ru
-          else f"Rod force {y['S']} and crank-pin load {y['R']}"), N,
+        (tx("sheet.engine.chart.torque", M=y["M"]), Nm, [("M_Nm", y["M"])]),
+        (tx("sheet.engine.chart.rod_pin", S=y["S"], R=y["R"]), N,
          [("S_N", y["S"]), ("R_N", y["R"])]),
     ]
     rows_per_chart = 20
@@ -262,8 +272,7 @@ def build_workbook(result, lang="ru"):
         ch.x_axis.number_format = "0"
         ch.y_axis.number_format = "0"
         for m, (name, label) in enumerate(series):
-            yref = Reference(ws_data, min_col=col[name], min_row=_DATA_FIRST_ROW,
-                             max_row=_DATA_FIRST_ROW + n - 1)
+            yref = Reference(cd, min_col=col[name], min_row=first, max_row=last)
             s = Series(yref, xref, title=label)
             s.marker.symbol = "none"
             s.smooth = False
@@ -273,7 +282,11 @@ def build_workbook(result, lang="ru"):
         ws_ch.add_chart(ch, f"A{3 + rows_per_chart * k}")
         if k % 2 == 1:                              # two charts per A4 page, none split
             ws_ch.row_breaks.append(Break(id=2 + rows_per_chart * (k + 1)))
-    _polar_chart(ws_ch, ws_data, col, n, spec, lang, 3 + rows_per_chart * len(charts))
+    row = 3 + rows_per_chart * len(charts)
+    _polar_chart(ws_ch, cd, col, first, last, result.curves, spec, lang, row)
+    # the print area: the title and the charts (17 cm ≈ 9 default columns; the polar
+    # chart 17 × 19 cm ≈ 38 rows)
+    ws_ch.print_area = f"A1:J{row + 38}"
     if result.settings.form == "kolchin":
         _kolchin_sheet(wb, result, lang)
     return wb
@@ -287,15 +300,14 @@ def _kolchin_sheet(wb, result, lang):
 
     from .table2 import table2
 
-    t2 = table2(result.table, result.spec, result.settings, "kolchin")
+    t2 = sheet_rows(table2(result.table, result.spec, result.settings, "kolchin"))
     ws = wb.create_sheet(KOLCHIN_SHEET[lang])
-    ws["A1"] = ("Таблица 2 в форме Колчина: удельные силы, МПа, и коэффициенты "
-                "(Колчин и Демидов)" if lang == "ru" else
-                "Table 2 in Kolchin's form: specific forces, MPa, and the coefficients "
-                "(Kolchin & Demidov)")
+    from crankbase.texts import texts
+
+    tx = texts(lang)
+    ws["A1"] = tx("sheet.engine.kolchin_title")
     ws["A1"].font = Font(bold=True, size=12)
-    ws["A2"] = (f"Fп = {result.spec.area * 1e4:.6g} см²" if lang == "ru"
-                else f"Ap = {result.spec.area * 1e4:.6g} cm²")
+    ws["A2"] = tx("sheet.engine.kolchin_area", area=result.spec.area * 1e4)
     for j, key in enumerate(t2.columns, start=1):
         c = ws.cell(3, j, key)
         c.font = Font(bold=True)
@@ -333,62 +345,112 @@ def _style_series(s, m):
     s.graphicalProperties.line.width = width
 
 
-def _polar_chart(ws_ch, ws_data, col, n, spec, lang, row):
+#: Columns of the one-cylinder fine curves the native charts draw (hidden sheet).
+_CURVE_COLUMNS = ("alpha_deg", "dPg_N", "Pj_N", "P_N", "N_N", "K_N", "T_N", "M_Nm", "S_N",
+                  "R_N")
+
+
+def _chart_data(wb, lang):
+    """The hidden sheet of the native charts' data (the fine grid), created once."""
+    from crankbase.texts import texts
+
+    t = texts(lang)
+    title = t("sheet.engine.chart_data")
+    if title in wb.sheetnames:
+        return wb[title]
+    ws = wb.create_sheet(title)
+    ws.sheet_state = "hidden"
+    return ws
+
+
+def _put_columns(ws, df, names, c0):
+    """Write the columns ``names`` of ``df`` into ``ws`` from column ``c0`` (row 1 the
+    CSV names, data from row 2), at most :data:`crankbase.workbook.MAX_ROWS` rows: a
+    longer curve is thinned, its every column's largest and smallest row kept (so a chart
+    drawn from it peaks where the summary says).  Returns ({name: column}, first row,
+    last row)."""
+    from crankbase.workbook import bounded
+
+    arr = df[list(names)].to_numpy(float)
+    keep = np.r_[np.argmax(arr, axis=0), np.argmin(arr, axis=0)]
+    idx, _ = bounded(len(arr), keep=keep)
+    col = {name: c0 + j for j, name in enumerate(names)}
+    for j, name in enumerate(names):
+        ws.cell(1, c0 + j, name)
+    for i, rowvals in enumerate(arr[idx].tolist(), start=2):
+        for j, v in enumerate(rowvals):
+            ws.cell(i, c0 + j).value = v
+    return col, 2, 1 + len(idx)
+
+
+def _polar_chart(ws_ch, cd, col, first, last, curves, spec, lang, row):
     """The polar diagram of the crank-pin load as a native, editable scatter chart: the
-    locus of S = (T, K) from the Data sheet, +K downwards (reversed axis), the poles O and
-    Oш = (0, −Kr.ш) as markers from a small table beside the chart; both axes get the same
-    span on a square chart, so the diagram keeps its shape."""
+    locus of S = (T, K) on the fine grid (hidden sheet), +K downwards (reversed axis), the
+    poles O and Oш = (0, −Kr.ш) as markers from the hidden sheet; both axes get the same
+    span and the plot area is square (a manual layout of the chart's inner area), so the
+    diagram keeps its shape."""
     from openpyxl.chart import Reference, ScatterChart, Series
+    from openpyxl.chart.axis import ChartLines
+    from openpyxl.chart.layout import Layout, ManualLayout
     from openpyxl.chart.marker import Marker
     from openpyxl.chart.shapes import GraphicalProperties
 
-    ru = lang == "ru"
+    from crankbase.texts import texts
+
+    tx = texts(lang)
     y = _CHART_SYMBOLS[lang]
-    T = np.asarray([ws_data.cell(_DATA_FIRST_ROW + i, col["T_N"]).value for i in range(n)])
-    K = np.asarray([ws_data.cell(_DATA_FIRST_ROW + i, col["K_N"]).value for i in range(n)])
+    T = curves["T_N"].to_numpy(float)
+    K = curves["K_N"].to_numpy(float)
     kr = spec.Kr
-    # the poles, in a small table right of the chart (columns M:O)
-    _put(ws_ch.cell(row, 13), "T, Н" if ru else "T, N")
-    _put(ws_ch.cell(row, 14), "K, Н" if ru else "K, N")
-    for i, (name, tt, k) in enumerate((("O", 0.0, 0.0), (y["pole"], 0.0, -kr)), start=1):
-        _put(ws_ch.cell(row + i, 13), tt)
-        _put(ws_ch.cell(row + i, 14), float(k))
-        _put(ws_ch.cell(row + i, 15), name)
-        ws_ch.cell(row + i, 14).number_format = "0"
+    # the poles, on the hidden sheet right of the curves
+    pc = max(col.values()) + 2
+    _put(cd.cell(1, pc), "T_N")
+    _put(cd.cell(1, pc + 1), "K_N")
+    for i, (name, tt, k) in enumerate((("O", 0.0, 0.0), (y["pole"], 0.0, -kr)), start=2):
+        _put(cd.cell(i, pc), tt)
+        _put(cd.cell(i, pc + 1), float(k))
+        _put(cd.cell(i, pc + 2), name)
     ch = ScatterChart()
-    ch.title = (f"Полярная диаграмма нагрузки на шатунную шейку ({y['pole']} – "
-                f"полюс {y['R']})" if ru else
-                f"Polar diagram of the crank-pin load ({y['pole']}: pole of {y['R']})")
-    ch.x_axis.title = "T, Н" if ru else "T, N"
-    ch.y_axis.title = "K, Н (вниз)" if ru else "K, N (downwards)"
+    ch.title = tx("sheet.engine.chart.polar", pole=y["pole"], R=y["R"])
+    ch.x_axis.title = tx("sheet.engine.chart.polar_x")
+    ch.y_axis.title = tx("sheet.engine.chart.polar_y")
     ch.y_axis.scaling.orientation = "maxMin"            # +K downwards, as in the textbook
-    ch.width, ch.height = 17, 17
-    # equal scales: the same span on both axes of a square chart, centred on the data
+    # a square inner plot area on a chart 17 cm wide: the title above, the legend below
+    ch.width, ch.height = 17, 19
+    side = 0.72
+    ch.layout = Layout(manualLayout=ManualLayout(          # the plot area, without
+        layoutTarget="inner", xMode="edge", yMode="edge",   # the axes' labels
+        x=0.16, y=0.17, w=side, h=side * ch.width / ch.height))
+    # equal scales: the same span on both axes, centred on the data, the same grid step
     xs_all, ys_all = np.r_[T, 0.0], np.r_[K, 0.0, -kr]
     span = 1.1 * max(np.ptp(xs_all), np.ptp(ys_all))
     step = 10 ** np.floor(np.log10(span / 4))
+    if span / step > 12:
+        step *= 2
+    n_steps = np.ceil(span / step) + 1
     for ax, vals in ((ch.x_axis, xs_all), (ch.y_axis, ys_all)):
         mid = 0.5 * (vals.min() + vals.max())
-        ax.scaling.min = float(np.floor((mid - span / 2) / step) * step)
-        ax.scaling.max = float(np.floor((mid - span / 2) / step) * step
-                               + np.ceil(span / step) * step)
-        ax.majorUnit = float(step * (2 if span / step > 12 else 1))
+        lo = float(np.floor((mid - n_steps * step / 2) / step) * step)
+        if lo + n_steps * step < vals.max():
+            lo += step
+        ax.scaling.min = lo
+        ax.scaling.max = float(lo + n_steps * step)
+        ax.majorUnit = float(step)
+        ax.majorGridlines = ChartLines()
         ax.number_format = "0"
         ax.delete = False
     ch.x_axis.tickLblPos = "high"        # the y axis is reversed: "high" is the bottom
     ch.y_axis.tickLblPos = "low"
     ch.legend.position = "b"
-    xs = Reference(ws_data, min_col=col["T_N"], min_row=_DATA_FIRST_ROW,
-                   max_row=_DATA_FIRST_ROW + n - 1)
-    ys = Reference(ws_data, min_col=col["K_N"], min_row=_DATA_FIRST_ROW,
-                   max_row=_DATA_FIRST_ROW + n - 1)
+    xs = Reference(cd, min_col=col["T_N"], min_row=first, max_row=last)
+    ys = Reference(cd, min_col=col["K_N"], min_row=first, max_row=last)
     s = Series(ys, xs, title=f"{y['S']} (T, K)")
     s.marker.symbol = "none"
     s.smooth = False
     _style_series(s, 0)
     ch.series.append(s)
-    px = Reference(ws_ch, min_col=13, min_row=row + 1, max_row=row + 2)
-    py = Reference(ws_ch, min_col=14, min_row=row + 1, max_row=row + 2)
+    px = Reference(cd, min_col=pc, min_row=2, max_row=3)
+    py = Reference(cd, min_col=pc + 1, min_row=2, max_row=3)
     poles = Series(py, px, title=f"O, {y['pole']}")
     colour = CHART_STYLES[2][0]
     poles.marker = Marker(symbol="square", size=8)
@@ -400,189 +462,106 @@ def _polar_chart(ws_ch, ws_data, col, n, spec, lang, row):
 
 
 def a4_setup(wb):
-    """Print setup of every sheet of ``wb``: A4 (landscape where the sheet has none of its
-    own), as many pages down as needed, as many pages wide as its columns need (at most
-    ~190 width units a page); rows of wrapped text as tall as their lines."""
-    import math
+    """The house look and print setup of every sheet of ``wb``
+    (:func:`crankbase.workbook.finish`: one font family, one number format per table
+    column, widths from the content, wrapped rows tall enough, A4).  Returns ``wb``."""
+    from crankbase.workbook import finish
 
-    from openpyxl.utils import get_column_letter
-
-    for ws in wb.worksheets:
-        ps = ws.page_setup
-        if ps.paperSize is None:
-            ps.paperSize = ws.PAPERSIZE_A4
-            ps.orientation = "landscape"
-        ws.sheet_properties.pageSetUpPr.fitToPage = True
-        ps.fitToHeight = 0
-        widths = [ws.column_dimensions[get_column_letter(j)].width or 8.43
-                  for j in range(1, ws.max_column + 1)
-                  if not ws.column_dimensions[get_column_letter(j)].hidden]
-        ps.fitToWidth = max(int(ps.fitToWidth or 1), math.ceil(sum(widths) / 190))
-        merged = {(r.min_row, r.min_col): r for r in ws.merged_cells.ranges}
-        for row in ws.iter_rows(min_row=1):
-            for c in row:
-                if not (isinstance(c.value, str) and c.alignment.wrap_text):
-                    continue
-                m = merged.get((c.row, c.column))
-                cols = range(m.min_col, m.max_col + 1) if m else [c.column]
-                width = sum(ws.column_dimensions[get_column_letter(j)].width or 8.43
-                            for j in cols)
-                lines = sum(math.ceil(len(p) * 1.1 / width) or 1 for p in c.value.split("\n"))
-                if lines > 1 and (ws.row_dimensions[c.row].height or 15) < 13 * lines:
-                    ws.row_dimensions[c.row].height = 13 * lines
-    return wb
+    return finish(wb)
 
 
 def save_workbook(wb, path):
-    """Save a workbook atomically (temporary file in the target folder, then rename)."""
-    from crankbase.output import atomic_path, full_precision_xlsx
+    """Save a workbook atomically, every float bit for bit (:func:`crankbase.workbook.save`)."""
+    from crankbase.workbook import save
 
-    with atomic_path(path) as tmp, full_precision_xlsx():
-        wb.save(tmp)
+    save(wb, path)
 
 
 # ------------------------------------------------------------------ the whole engine
 
-_TR = {
-    "ru": dict(
-        layout="Схема", torque="Суммарный момент", balance="Уравновешивание",
-        flywheel="Маховик",
-        layout_title="Расположение цилиндров (как в cylinders.csv)",
-        layout_cols=("Цилиндр", "Ряд", "Колено", "z, мм", "γ ряда, °", "Угол колена, °",
-                     "Фаза φ, °"),
-        torque_title="Суммарный крутящий момент за интервал между вспышками θ = {th:g}°",
-        torque_title_odd="Суммарный крутящий момент за цикл (неравномерное чередование)",
-        data_title="Данные torque.csv (весь цикл)",
-        alpha="θ, °", total="ΣMкр, Н·м", cyl="Mкр {j}, Н·м",
-        summary=[("M_mean_Nm", "Средний крутящий момент Mкр.ср", "Н·м"),
-                 ("M_max_Nm", "Mкр.max", "Н·м"), ("alpha_M_max_deg", "угол Mкр.max", "°"),
-                 ("M_min_Nm", "Mкр.min", "Н·м"), ("alpha_M_min_deg", "угол Mкр.min", "°"),
-                 ("mu", "Неравномерность μ = (Mкр.max − Mкр.min)/Mкр.ср", ""),
-                 ("Mi_Nm", "Индикаторный момент Mi = pi·Vh·i/(π·τ)", "Н·м"),
-                 ("Me_Nm", "Эффективный момент Me = ηм·Mi", "Н·м"),
-                 ("Ni_kW", "Индикаторная мощность Ni", "кВт"),
-                 ("Ne_kW", "Эффективная мощность Ne = ηм·Ni", "кВт"),
-                 ("diff_pct", "Расхождение (Mкр.ср − Mi)/Mi", "%")],
-        bal_title="Свободные силы и моменты: наибольшие за оборот",
-        bal_cols=("Часть", "Fmax, Н", "Mmax, Н·м", "Силы уравновешены", "Моменты "
-                  "уравновешены"),
-        parts={"1": "силы инерции 1-го порядка", "2": "силы инерции 2-го порядка",
-               "j": "возвратно-поступательные массы (сумма)",
-               "r": "вращающиеся массы", "cw": "противовесы",
-               "before": "всего без противовесов", "after": "всего с противовесами"},
-        cw_title="Противовесы", cw_cols=("z от цилиндра 1, мм", "m·r, кг·мм",
-                                          "угол от 1-го колена по вращению, °"),
-        cw_none="противовесов нет", yes="да", no="нет",
-        bal_data="Данные balance.csv (один оборот)",
-        fw_title="Маховик (оценка по избыточной работе при постоянной ω)",
-        fw_rows=[("L_excess_J", "Избыточная работа Lизб", "Дж"),
-                 ("delta", "Коэффициент неравномерности хода δ", ""),
-                 ("omega", "Угловая скорость ω", "рад/с"),
-                 ("J0_kgm2", "Момент инерции J0 = Lизб/(δ·ω²)", "кг·м²"),
-                 ("share", "Доля маховика Jм/J0", ""),
-                 ("J_flywheel_kgm2", "Момент инерции маховика Jм", "кг·м²"),
-                 ("mD2_kgm2", "Маховой момент mм·Dср² = 4·Jм", "кг·м²"),
-                 ("diameter_m", "Средний диаметр обода Dср", "м"),
-                 ("mass_kg", "Масса маховика mм", "кг"),
-                 ("rim_speed_m_s", "Окружная скорость обода", "м/с")],
-        fw_note="Допущения: ω постоянна (частота вращения спецификации); J0 — все "
-                "вращающиеся части, приведённые к валу; маховик берёт долю Jм/J0; обод — "
-                "тонкое кольцо (J = m·Dср²/4).",
-        fw_none="δ не задан ([flywheel] delta): маховик не рассчитан",
-        chart="Суммарный крутящий момент", inputs="Коленчатый вал и соглашения",
-        train_items=[("arrangement", "Расположение цилиндров", ""),
-                     ("vee_angle_deg", "Угол развала цилиндров γ", "°"),
-                     ("firing_order", "Порядок работы цилиндров", ""),
-                     ("throw_angles_deg", "Углы колен от 1-го по вращению", "°"),
-                     ("cylinder_spacing_mm", "Расстояние между осями цилиндров", "мм"),
-                     ("bank_offset_mm", "Смещение второго ряда вдоль вала", "мм"),
-                     ("mechanical_efficiency", "Механический КПД ηм", ""),
-                     ("delta", "Коэффициент неравномерности хода δ", ""),
-                     ("counterweights", "Противовесы", "")],
-        arrangements={"inline": "рядное", "vee": "V-образное", "boxer": "оппозитное"},
-        given="заданы", default_throws="по умолчанию для равномерного чередования вспышек",
-        cw_designs={"none": "нет", "throws": "на каждом колене (вращающиеся массы)",
-                    "throws+first_order": "на каждом колене и два концевых (силы и "
-                                          "моменты 1-го порядка)"},
-        cw_given="заданы списком ({n})",
-        conv=("Система координат: вид со стороны маховика, x вправо, y вверх, z вдоль вала "
-              "от цилиндра 1 к маховику; вал вращается против часовой стрелки на этом виде "
-              "(по часовой — со стороны носка).",
-              "Нумерация: рядный — 1…i от носка; V и оппозитный — первый ряд 1…i/2 (справа, "
-              "γ = −V/2), второй i/2+1…i; на общей шейке первый ряд достигает ВМТ на V° "
-              "раньше.",
-              "Колено k несёт цилиндры k и k + i/2 (V); углы колен — от 1-го по вращению.",
-              "Фаза φ — запаздывание цикла цилиндра относительно цилиндра 1: α = θ − φ.")),
-    "en": dict(
-        layout="Layout", torque="Total torque", balance="Balance", flywheel="Flywheel",
-        layout_title="Cylinder layout (as in cylinders.csv)",
-        layout_cols=("Cylinder", "Bank", "Throw", "z, mm", "Bank angle, deg",
-                     "Throw angle, deg", "Phase, deg"),
-        torque_title="Total torque over one firing interval of {th:g} deg",
-        torque_title_odd="Total torque over the cycle (uneven firing)",
-        data_title="torque.csv data (whole cycle)",
-        alpha="theta, deg", total="Total M, N·m", cyl="M {j}, N·m",
-        summary=[("M_mean_Nm", "Mean torque M_mean", "N·m"),
-                 ("M_max_Nm", "M_max", "N·m"), ("alpha_M_max_deg", "angle of M_max", "deg"),
-                 ("M_min_Nm", "M_min", "N·m"), ("alpha_M_min_deg", "angle of M_min", "deg"),
-                 ("mu", "Non-uniformity mu = (M_max - M_min)/M_mean", ""),
-                 ("Mi_Nm", "Indicated torque Mi = pi·Vh·i/(pi·tau)", "N·m"),
-                 ("Me_Nm", "Effective torque Me = eta_m·Mi", "N·m"),
-                 ("Ni_kW", "Indicated power Ni", "kW"),
-                 ("Ne_kW", "Effective power Ne = eta_m·Ni", "kW"),
-                 ("diff_pct", "Difference (M_mean - Mi)/Mi", "%")],
-        bal_title="Free forces and moments: largest over a revolution",
-        bal_cols=("Part", "F max, N", "M max, N·m", "Forces balanced", "Moments balanced"),
-        parts={"1": "first-order inertia forces", "2": "second-order inertia forces",
-               "j": "reciprocating masses (exact sum)", "r": "rotating masses",
-               "cw": "counterweights", "before": "total without counterweights",
-               "after": "total with counterweights"},
-        cw_title="Counterweights", cw_cols=("z from cylinder 1, mm", "m·r, kg·mm",
-                                            "angle from throw 1 in rotation, deg"),
-        cw_none="no counterweights", yes="yes", no="no",
-        bal_data="balance.csv data (one revolution)",
-        fw_title="Flywheel (estimate from the excess work at constant omega)",
-        fw_rows=[("L_excess_J", "Excess work L_exc", "J"),
-                 ("delta", "Coefficient of cyclic irregularity delta", ""),
-                 ("omega", "Angular velocity omega", "rad/s"),
-                 ("J0_kgm2", "Moment of inertia J0 = L_exc/(delta·omega²)", "kg·m²"),
-                 ("share", "Flywheel share J_f/J0", ""),
-                 ("J_flywheel_kgm2", "Flywheel moment of inertia J_f", "kg·m²"),
-                 ("mD2_kgm2", "Flywheel moment m·D² = 4·J_f", "kg·m²"),
-                 ("diameter_m", "Mean rim diameter D", "m"),
-                 ("mass_kg", "Flywheel mass m", "kg"),
-                 ("rim_speed_m_s", "Rim peripheral speed", "m/s")],
-        fw_note="Assumptions: constant omega (the spec's speed); J0 is all rotating parts "
-                "reduced to the crankshaft; the flywheel takes the share J_f/J0; the rim "
-                "is a thin ring (J = m·D²/4).",
-        fw_none="delta not given ([flywheel] delta): no flywheel computed",
-        chart="Total engine torque", inputs="Crank train and conventions",
-        train_items=[("arrangement", "Cylinder arrangement", ""),
-                     ("vee_angle_deg", "Vee angle between the banks", "deg"),
-                     ("firing_order", "Firing order", ""),
-                     ("throw_angles_deg", "Throw angles from throw 1 in rotation", "deg"),
-                     ("cylinder_spacing_mm", "Cylinder spacing along the crankshaft", "mm"),
-                     ("bank_offset_mm", "Axial offset of the second bank", "mm"),
-                     ("mechanical_efficiency", "Mechanical efficiency ηm", ""),
-                     ("delta", "Coefficient of cyclic irregularity δ", ""),
-                     ("counterweights", "Counterweights", "")],
-        arrangements={"inline": "inline", "vee": "vee", "boxer": "boxer"},
-        given="given", default_throws="default for even firing",
-        cw_designs={"none": "none", "throws": "one per throw (rotating masses)",
-                    "throws+first_order": "one per throw and two end ones (first-order "
-                                          "forces and moments)"},
-        cw_given="given one by one ({n})",
-        conv=("Frame: seen from the flywheel end, x right, y up, z along the crankshaft "
-              "from cylinder 1 to the flywheel; the crankshaft turns counter-clockwise in "
-              "this view (clockwise seen from the front).",
-              "Numbering: inline 1…i from the front; vee and boxer: first bank 1…i/2 (right, "
-              "γ = −V/2), second bank i/2+1…i; on a common pin the first bank reaches TDC "
-              "V° earlier.",
-              "Throw k carries cylinders k and k + i/2 (vee); throw angles are from throw 1, "
-              "in the direction of rotation.",
-              "Phase φ: the lag of a cylinder's cycle behind cylinder 1's: α = θ − φ.")),
-}
+#: The shape of the words of the whole engine's sheets; the words are in the catalogue
+#: ``crankbase/locale/<lang>/sheet.po`` under ``sheet.engine.<name>``: a text, a tuple
+#: (``.<i>``), a mapping (``.<key>``) or rows of (key, label, unit) (``.<key>``,
+#: ``.<key>.unit``).
+_TR_SHAPE = {'alpha': 'str',
+ 'arrangements': ('dict', ('inline', 'vee', 'boxer')),
+ 'bal_cols': ('tuple', 5),
+ 'bal_data': 'str',
+ 'bal_title': 'str',
+ 'balance': 'str',
+ 'chart': 'str',
+ 'conv': ('tuple', 4),
+ 'cw_cols': ('tuple', 3),
+ 'cw_designs': ('dict', ('none', 'throws', 'throws+first_order')),
+ 'cw_given': 'str',
+ 'cw_none': 'str',
+ 'cw_title': 'str',
+ 'cyl': 'str',
+ 'data_title': 'str',
+ 'default_throws': 'str',
+ 'flywheel': 'str',
+ 'fw_none': 'str',
+ 'fw_note': 'str',
+ 'fw_rows': ('rows',
+             ('L_excess_J', 'delta', 'omega', 'J0_kgm2', 'share', 'J_flywheel_kgm2',
+              'mD2_kgm2', 'diameter_m', 'mass_kg', 'rim_speed_m_s')),
+ 'fw_title': 'str',
+ 'given': 'str',
+ 'inputs': 'str',
+ 'layout': 'str',
+ 'layout_cols': ('tuple', 7),
+ 'layout_title': 'str',
+ 'no': 'str',
+ 'parts': ('dict', ('1', '2', 'j', 'r', 'cw', 'before', 'after')),
+ 'summary': ('rows',
+             ('M_mean_Nm', 'M_max_Nm', 'alpha_M_max_deg', 'M_min_Nm', 'alpha_M_min_deg',
+              'mu', 'Mi_Nm', 'Me_Nm', 'Ni_kW', 'Ne_kW', 'diff_pct')),
+ 'torque': 'str',
+ 'torque_title': 'str',
+ 'torque_title_odd': 'str',
+ 'total': 'str',
+ 'train_items': ('rows',
+                 ('arrangement', 'vee_angle_deg', 'firing_order', 'throw_angles_deg',
+                  'cylinder_spacing_mm', 'bank_offset_mm', 'mechanical_efficiency', 'delta',
+                  'counterweights')),
+ 'yes': 'str'}
 
+
+class _Words(dict):
+    """The words of :data:`_TR_SHAPE` in one language, from the catalogue."""
+
+    def __init__(self, lang):
+        from crankbase.texts import texts
+
+        t = texts(lang)
+        for k, kind in _TR_SHAPE.items():
+            base = f"sheet.engine.{k}"
+            if kind == "str":
+                self[k] = t(base)
+            elif kind[0] == "tuple":
+                self[k] = tuple(t(f"{base}.{i}") for i in range(kind[1]))
+            elif kind[0] == "dict":
+                self[k] = {sk: t(f"{base}.{sk}") for sk in kind[1]}
+            else:
+                self[k] = [(key, t(f"{base}.{key}"), _unit(t, f"{base}.{key}.unit"))
+                           for key in kind[1]]
+
+
+def _unit(t, key):
+    """A unit from the catalogue; '' for a quantity without one (no entry)."""
+    try:
+        return t(key)
+    except KeyError:
+        return ""
+
+
+class _Lazy(dict):
+    def __missing__(self, lang):
+        self[lang] = _Words(lang)
+        return self[lang]
+
+
+_TR = _Lazy()
 
 def _write_rows(ws, r0, c0, rows, bold=False):
     from openpyxl.styles import Font
@@ -717,7 +696,7 @@ def add_engine_sheets(wb, tr, lang="ru"):
     ws["A1"].font = Font(bold=True, size=12)
     head = [t["alpha"]] + [t["cyl"].format(j=j) for j in range(1, n + 1)] + [t["total"]]
     _write_rows(ws, 3, 1, [head], bold=True)
-    end = _write_rows(ws, 4, 1, tr.torque_table.to_numpy().tolist())
+    end = _write_rows(ws, 4, 1, sheet_rows(tr.torque_table).to_numpy().tolist())
     rows = []
     for key, label, unit in t["summary"]:
         v = getattr(s, key)
@@ -725,8 +704,20 @@ def add_engine_sheets(wb, tr, lang="ru"):
     _write_rows(ws, end + 1, 1, [(lab, _text(v), u) for lab, v, u in rows])
     c0 = n + 4
     ws.cell(2, c0, t["data_title"]).font = Font(bold=True)
+    ws.merge_cells(start_row=2, start_column=c0, end_row=2,
+                   end_column=c0 + len(tr.torque.columns) - 1)
     _write_rows(ws, 3, c0, [list(tr.torque.columns)], bold=True)
-    last = _write_rows(ws, 4, c0, tr.torque.to_numpy().tolist()) - 1
+    torque = sheet_rows(tr.torque)
+    if len(torque) < len(tr.torque):
+        _put(ws.cell(1, c0), thinned_note(tr.torque, torque, "torque.csv", lang))
+        ws.merge_cells(start_row=1, start_column=c0, end_row=1,
+                       end_column=c0 + len(tr.torque.columns) - 1)
+    _write_rows(ws, 4, c0, torque.to_numpy().tolist())
+    # the chart: from the fine grid (the summary's), on the hidden sheet right of the
+    # one-cylinder curves
+    cd = _chart_data(wb, lang)
+    names = [c for c in tr.curves.columns if c.startswith("M_") or c == "alpha_deg"]
+    col, first, last = _put_columns(cd, tr.curves, names, cd.max_column + 2)
     ch = ScatterChart()
     ch.title = t["chart"]
     ch.x_axis.title = t["alpha"]
@@ -736,10 +727,11 @@ def add_engine_sheets(wb, tr, lang="ru"):
     ch.x_axis.tickLblPos = "low"
     ch.x_axis.delete = ch.y_axis.delete = False
     ch.legend.position = "b"
-    xref = Reference(ws, min_col=c0, min_row=4, max_row=last)
+    xref = Reference(cd, min_col=col["alpha_deg"], min_row=first, max_row=last)
     for j in [n + 1] + list(range(1, n + 1)):
-        yref = Reference(ws, min_col=c0 + j, min_row=4, max_row=last)
-        ser = Series(yref, xref, title=str(tr.torque.columns[j]))
+        name = str(tr.torque.columns[j])
+        yref = Reference(cd, min_col=col[name], min_row=first, max_row=last)
+        ser = Series(yref, xref, title=head[j])      # ΣMкр, Н·м; Mкр 1, Н·м …
         ser.marker.symbol = "none"
         ser.smooth = False
         if j == n + 1:                       # the total: bold, the first chart style
@@ -749,8 +741,18 @@ def add_engine_sheets(wb, tr, lang="ru"):
             ser.graphicalProperties.line.prstDash = _CYL_DASHES[(j - 1) % len(_CYL_DASHES)]
             ser.graphicalProperties.line.width = 9525
         ch.series.append(ser)
-    ch.width, ch.height = 24, 10
-    ws.add_chart(ch, f"A{end + len(rows) + 3}")
+    # as wide as the columns left of the torque.csv block (the widths measured as
+    # finish() will measure them)
+    from crankbase.workbook import columns_cm, fit_columns, fit_numbers
+
+    fit_numbers(ws)
+    fit_columns(ws)
+    ch.width, ch.height = max(16.0, columns_cm(ws, 1, c0 - 2)), 10
+    at = end + len(rows) + 3
+    ws.add_chart(ch, f"A{at}")
+    from openpyxl.worksheet.pagebreak import Break
+
+    ws.row_breaks.append(Break(id=at - 1))        # the chart starts a page: never split
     readable_numbers(ws, {"A": 34, "C": 12}, default_width=11)
 
     # Balance: amplitudes, counterweights, the data of balance.csv
@@ -771,7 +773,11 @@ def add_engine_sheets(wb, tr, lang="ru"):
         r += 3
     ws.cell(r, 1, t["bal_data"]).font = Font(bold=True)
     _write_rows(ws, r + 1, 1, [list(tr.balance.columns)], bold=True)
-    _write_rows(ws, r + 2, 1, tr.balance.to_numpy().tolist())
+    balance = sheet_rows(tr.balance)
+    if len(balance) < len(tr.balance):
+        _put(ws.cell(r, 1), t["bal_data"] + "; " + thinned_note(tr.balance, balance,
+                                                            "balance.csv", lang))
+    _write_rows(ws, r + 2, 1, balance.to_numpy().tolist())
     readable_numbers(ws, {"A": 40}, default_width=12)
 
     # Flywheel

@@ -175,74 +175,44 @@ def write_csvs(result, folder):
     write_csv(result.forces, folder / "forces.csv")
 
 
-#: The texts of the workbook by language (the terminal's words and the cycle geometry's
-#: are the catalogue's, crankbase/locale/<lang>/linkage.po).
-_TEXT = {
-    "en": {
-        "sheets": {"inputs": "inputs", "positions": "positions", "velocities": "velocities",
-                   "accelerations": "accelerations", "loads": "loads", "forces": "forces",
-                   "extremes": "extremes"},
-        "title": "Kinematic and force analysis: {name} ({kind})",
-        "spec_head": ("spec key", "value", "unit", "meaning"),
-        "cycle_head": ("cycle geometry", "value", "unit"),
-        "warning": "warning", "conventions": "conventions",
-        "ext_head": ("quantity", "unit", "column"), "extreme": "extreme {i}",
-        "ext_labels": {"working start": "working start", "working end": "working end"},
-        "conv": (
-            "SI units; angles in degrees, counter-clockwise from +x; O at the origin.",
-            "Rij = force of link i on link j (1 ground, 2 crank, 3 coupler/rod, "
-            "4 rocker/slider).",
-            "Mb (M_drive) = balancing (driving) moment applied to the crank, "
-            "+ counter-clockwise.",
-            "Mr, Fr = useful resistance on the rocker (moment) or the slider (force); "
-            "Fi, Mi = d'Alembert inertia force and moment.",
-            "R23n, R23t: along A→B and 90° ccw from it; R14n, R14t: along C→B and 90° ccw "
-            "from it.",
-            "Position 1 = extreme position where the working stroke starts; then every "
-            "360°/N in the direction of rotation.",
-            "Row 3 of every table sheet holds the CSV column names (the same in the "
-            "Russian report).",
-        ),
-    },
-    "ru": {
-        "sheets": {"inputs": "Исходные данные", "positions": "Положения",
-                   "velocities": "Скорости", "accelerations": "Ускорения",
-                   "loads": "Нагрузки", "forces": "Реакции и Mур",
-                   "extremes": "Крайние положения"},
-        "title": "Кинематический и силовой анализ: {name} ({kind})",
-        "spec_head": ("Параметр спецификации", "Значение", "Ед. изм.", "Пояснение"),
-        "cycle_head": ("Геометрия цикла", "Значение", "Ед. изм."),
-        "warning": "предупреждение", "conventions": "Обозначения и правила знаков",
-        "ext_head": ("Величина", "Ед. изм.", "Столбец CSV"),
-        "extreme": "крайнее положение {i}",
-        "ext_labels": {"working start": "начало рабочего хода",
-                       "working end": "конец рабочего хода"},
-        "conv": (
-            "Единицы СИ; углы в градусах, против часовой стрелки от оси +x; "
-            "точка O в начале координат.",
-            "Rij = сила действия звена i на звено j (1 стойка, 2 кривошип, "
-            "3 шатун, 4 коромысло/ползун).",
-            "Mур (M_drive) = уравновешивающий (движущий) момент на кривошипе, "
-            "+ против часовой стрелки.",
-            "Mпс, Fпс = момент (на коромысле) или сила (на ползуне) полезного "
-            "сопротивления; Fи, Mи = сила и момент сил инерции (Даламбер).",
-            "R23n, R23t: вдоль A→B и под 90° к ней против часовой стрелки; R14n, R14t: "
-            "вдоль C→B и под 90° против часовой стрелки.",
-            "Положение 1 = крайнее положение, с которого начинается рабочий ход; далее "
-            "через 360°/N по направлению вращения.",
-            "В строке 3 каждого листа с таблицей: имена столбцов CSV (те же, что в "
-            "английском отчёте).",
-        ),
-    },
-}
+#: The workbook's words (crankbase.workbook.words): sheet names, headers, conventions;
+#: in the catalogue crankbase/locale/<lang>/sheet.po under ``sheet.linkage.*`` (the
+#: terminal's words and the cycle geometry's: ``linkage.*`` of linkage.po).
+_SHEET_SHAPE = {'conv': ('tuple', 7),
+                'conventions': 'str',
+                'cycle_head': ('tuple', 3),
+                'ext_head': ('tuple', 3),
+                'ext_labels': ('dict', ('working start', 'working end')),
+                'extreme': 'str',
+                'sheets': ('dict',
+                           ('inputs', 'positions', 'velocities', 'accelerations', 'loads',
+                            'forces', 'extremes')),
+                'spec_head': ('tuple', 4),
+                'title': 'str',
+                'warning': 'str'}
+
+
+def _sheet_words(lang):
+    """The workbook's words in ``lang`` (:data:`_SHEET_SHAPE`)."""
+    from crankbase.workbook import words
+
+    _check_lang(lang)
+    return words(lang, "sheet.linkage", _SHEET_SHAPE)
+
+
+class _Sheet(dict):
+    def __missing__(self, lang):
+        self[lang] = _sheet_words(lang)
+        return self[lang]
+
+
+_SHEET = _Sheet()
 
 
 def text(lang: str) -> dict:
-    """The workbook's texts in ``lang`` ("ru" or "en"): sheet titles, labels, conventions
-    (the terminal's words and the cycle geometry's are the catalogue's,
-    ``crankbase/locale/<lang>/linkage.po``)."""
-    _check_lang(lang)
-    return _TEXT[lang]
+    """The workbook's texts in ``lang`` ("ru" or "en"): sheet titles, labels, conventions,
+    from the catalogue (``sheet.linkage.*``)."""
+    return _SHEET[lang]
 
 
 def summary_lines(result, lang: str = "ru"):
@@ -451,9 +421,7 @@ def write_workbook(result, path, lang: str = "ru"):
     from openpyxl.styles import Alignment, Border, Font, PatternFill, Side
     from openpyxl.utils import get_column_letter
 
-    from crankbase.output import atomic_path, full_precision_xlsx
-
-    t = text(lang)
+    t = _SHEET[lang]
     wb = Workbook()
     bold = Font(bold=True)
     grey = Font(italic=True, size=8, color="808080")
@@ -579,12 +547,18 @@ def write_workbook(result, path, lang: str = "ru"):
         _page_setup(ws, landscape=True, pages_wide=math.ceil(width / _WIDTH_PER_PAGE))
     _page_setup(wb.worksheets[0], landscape=False)
     _check_finite_tables(result)
-    with atomic_path(path) as tmp, full_precision_xlsx():
-        wb.save(tmp)
+    from crankbase.workbook import finish, save
+
+    finish(wb, fixed={wb.worksheets[0].title: widths})
+    save(wb, path)
 
 
-#: Conventions printed on the English inputs sheet (the Russian ones: ``text("ru")``).
-CONVENTIONS = _TEXT["en"]["conv"]
+def __getattr__(name):
+    """``CONVENTIONS``: the conventions printed on the English inputs sheet (the words of
+    every language: ``sheet.linkage.conv.*`` of the catalogue)."""
+    if name == "CONVENTIONS":          # read from the catalogue when first asked
+        return _SHEET["en"]["conv"]
+    raise AttributeError(name)
 
 
 #: Width of a Cyrillic and of another character of wrapped text in Excel column-width
@@ -635,7 +609,7 @@ def _extremes_sheet(ws, df, cols, lang, bold, grey, head_fill, box, center):
     portrait list instead of a strip 100 columns wide."""
     from openpyxl.styles import Alignment
 
-    t = text(lang)
+    t = _SHEET[lang]
     heads = list(t["ext_head"]) + [t["extreme"].format(i=i + 1) for i in range(len(df))]
     for j, txt in enumerate(heads, start=1):
         c = ws.cell(1, j, txt)

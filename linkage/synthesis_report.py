@@ -120,13 +120,8 @@ _WORDS = {
              "(ground along +x)\n"
              "written by crankdyn synth; λ1 = {l1}, λ2 = {l2}, λ3 = {l3}, μmin = {mu}°\n"
              "massless links, no loads: add [links.*] and [[load]] for forces"),
-    "t1_title": ("Таблица 1. {kkm}: координаты точек пересечения с прямой Н. И. Колчина",
-                 "Table 1. {kkm}: points where the family meets Kolchin's line"),
-    "t1_sheet": ("Таблица 1", "table1"),
-    "mech_sheet": ("Механизм", "mechanism"),
-    "mech_title": ("{kkm}: выбранный механизм", "{kkm}: the chosen mechanism"),
-    "value": ("значение", "value"),
 }
+# the workbook's own words (titles, sheet names): sheet.synth.* of crankbase/locale/*/sheet.po
 
 #: The Grashof types (linkage.fourbar.GrashofType values) → catalogue keys (synth.po).
 _GRASHOF = {"crank-rocker": "crank_rocker", "double-crank": "double_crank",
@@ -292,7 +287,7 @@ def write_workbook(path, table, phi0_deg, mechanism=None, lang="en") -> None:
     from openpyxl import Workbook
     from openpyxl.styles import Alignment, Font
 
-    from crankbase.output import atomic_path, ensure_finite, full_precision_xlsx
+    from crankbase.output import ensure_finite
 
     i = _lang(lang)
     W = {k: v[i] for k, v in _WORDS.items()}
@@ -302,8 +297,11 @@ def write_workbook(path, table, phi0_deg, mechanism=None, lang="en") -> None:
         ensure_finite(mechanism, "mechanism")
     wb = Workbook()
     ws = wb.active
-    ws.title = W["t1_sheet"]
-    ws.append([W["t1_title"].format(kkm=kkm)])
+    from crankbase.texts import texts
+
+    tx = texts(lang)
+    ws.title = tx("sheet.synth.t1_sheet")
+    ws.append([tx("sheet.synth.t1_title", kkm=kkm)])
     ws["A1"].font = Font(bold=True)
     ws["A1"].alignment = Alignment(wrap_text=True, vertical="top")
     ws.merge_cells("A1:D1")                    # the title wraps over the four columns
@@ -322,10 +320,10 @@ def write_workbook(path, table, phi0_deg, mechanism=None, lang="en") -> None:
         ws.column_dimensions[col].width = width
     sheets = [(ws, "1:3")]
     if mechanism is not None:
-        wm = wb.create_sheet(W["mech_sheet"])
-        wm.append([W["mech_title"].format(kkm=kkm)])
+        wm = wb.create_sheet(tx("sheet.synth.mech_sheet"))
+        wm.append([tx("sheet.synth.mech_title", kkm=kkm)])
         wm["A1"].font = Font(bold=True)
-        wm.append([*_MECH_HEADER, W["value"]])
+        wm.append([*_MECH_HEADER, tx("sheet.synth.value")])
         for cell in wm[2]:
             cell.font = Font(bold=True)
         width_c = 44
@@ -354,8 +352,10 @@ def write_workbook(path, table, phi0_deg, mechanism=None, lang="en") -> None:
         sheet.page_setup.fitToWidth = 1
         sheet.page_setup.fitToHeight = 0
         sheet.print_title_rows = titles
-    with atomic_path(path) as tmp, full_precision_xlsx():
-        wb.save(tmp)
+    from crankbase.workbook import finish, save
+
+    finish(wb)
+    save(wb, path)
 
 
 # --------------------------------------------------------------------------- TOML

@@ -1,7 +1,8 @@
 """Build the Excel templates of the engine report: ``engine_ru.xlsx`` and ``engine_en.xlsx``.
 
 The templates own the look (fonts, borders, merged two-row headers "мм | Н" per force as
-in the textbook's Table 2, column widths, number formats) and every word of text; the
+in the textbook's Table 2, column widths, number formats) and every word of text (taken
+from the catalogue ``crankbase/locale/<lang>/sheet.po``, keys ``sheet.engine.*``); the
 code (:mod:`engine.report`) only fills values, matched by the keys in the hidden column
 A of the Inputs and Summary sheets, and adds the charts.
 
@@ -19,190 +20,103 @@ from openpyxl.utils import get_column_letter
 
 HERE = Path(__file__).resolve().parent
 
-#: Sheet names (the report looks sheets up by position, so names may differ per language).
-SHEETS = {
-    "ru": ("Исходные данные", "Таблица 2", "Итоги", "Данные", "Графики"),
-    "en": ("Inputs", "Table 2", "Summary", "Data", "Charts"),
-}
+#: Sheets, by position (the report looks sheets up by position); their names are
+#: ``sheet.engine.sheet.<name>`` of the catalogue.
+SHEET_KEYS = ("inputs", "table2", "summary", "data", "charts")
 
-TITLE = {
-    "ru": ("Исходные данные и производные величины",
-           "Таблица 2 – Результаты вычисления сил, действующих в кривошипно-шатунном механизме",
-           "Итоги: экстремумы и средние значения за цикл",
-           "Данные расчёта (как в forces.csv, полная точность)"),
-    "en": ("Inputs and derived quantities",
-           "Table 2 – Forces acting in the crank mechanism",
-           "Summary: extremes and cycle means",
-           "Computed data (as in forces.csv, full precision)"),
-}
-
-# (key, ru label, en label, symbol, ru unit, en unit, number format)
+#: Rows of the Inputs sheet: (key, symbol, number format); the label and the unit are
+#: ``sheet.engine.input.<key>`` and ``sheet.engine.input.<key>.unit`` of the catalogue
+#: (crankbase/locale/<lang>/sheet.po); the English symbols by :func:`english_symbols`.
 INPUTS = [
-    ("name", "Двигатель", "Engine", "", "", "", "@"),
-    ("strokes", "Тактность", "Strokes per cycle", "τ", "", "", "0"),
-    ("cylinders", "Число цилиндров", "Number of cylinders", "i", "", "", "0"),
-    ("bore_mm", "Диаметр цилиндра", "Cylinder bore", "D", "мм", "mm", "0.0##"),
-    ("stroke_mm", "Ход поршня", "Piston stroke", "S", "мм", "mm", "0.0##"),
-    ("R_mm", "Радиус кривошипа", "Crank radius", "R = S/2", "мм", "mm", "0.0##"),
-    ("L_mm", "Длина шатуна", "Connecting-rod length", "Lш", "мм", "mm", "0.0##"),
-    ("lam", "Отношение радиуса кривошипа к длине шатуна", "Crank radius to rod length",
-     "λ = R/Lш", "", "", "0.0000"),
-    ("speed_rpm", "Частота вращения коленчатого вала", "Crankshaft speed", "n", "мин⁻¹",
-     "rpm", "0"),
-    ("omega", "Угловая скорость", "Angular velocity", "ω = πn/30", "рад/с", "rad/s",
-     "0.00"),
-    ("v_mean", "Средняя скорость поршня", "Mean piston speed", "vп.ср = Sn/30", "м/с",
-     "m/s", "0.00"),
-    ("p0_MPa", "Давление в картере", "Crankcase pressure", "p0", "МПа", "MPa", "0.000"),
-    ("area_cm2", "Площадь поршня", "Piston area", "Fп = πD²/4", "см²", "cm²", "0.00"),
-    ("Vh_l", "Рабочий объём цилиндра", "Displacement of one cylinder", "Vh = Fп·S", "л",
-     "l", "0.0000"),
-    ("compression_ratio", "Степень сжатия", "Compression ratio", "ε", "", "", "0.00"),
-    ("acceleration", "Ускорение поршня", "Piston acceleration", "j", "", "", "@"),
-    ("mass_input", "Массы (как заданы)", "Masses (as given)", "", "", "", "@"),
-    ("mj", "Масса возвратно-поступательно движущихся частей", "Reciprocating mass",
-     "mj = mп + mш.п", "кг", "kg", "0.000"),
-    ("m_rod_rot", "Масса шатуна, отнесённая к вращающимся массам",
-     "Rotating part of the rod mass", "mш.к", "кг", "kg", "0.000"),
-    ("m_crank_rot", "Неуравновешенная вращающаяся масса кривошипа",
-     "Rotating mass of the crank", "mк", "кг", "kg", "0.000"),
-    ("Kr", "Центробежная сила вращающейся части шатуна",
-     "Centrifugal force of the rotating part of the rod", "Kr.ш = −mш.к·R·ω²", "Н", "N",
-     "0.0"),
-    ("mu_P", "Масштаб сил", "Force scale", "μP", "Н/мм", "N/mm", "0.###"),
-    ("step_deg", "Шаг таблицы", "Table step", "Δα", "°", "deg", "0.###"),
-    ("extra_angles", "Дополнительные углы", "Extra angles", "", "°", "deg", "@"),
-    ("pressure_source", "Индикаторная диаграмма", "Indicator diagram", "pг(α)", "", "",
-     "@"),
-    ("cycle_kind", "Цикл", "Cycle", "", "", "", "@"),
-    ("pa", "Давление в конце впуска", "Pressure at the end of intake", "pa", "МПа", "MPa",
-     "0.000"),
-    ("pr", "Давление остаточных газов", "Residual-gas pressure", "pr", "МПа", "MPa",
-     "0.000"),
-    ("n1", "Показатель политропы сжатия", "Compression polytropic index", "n1", "", "",
-     "0.000"),
-    ("n2", "Показатель политропы расширения", "Expansion polytropic index", "n2", "", "",
-     "0.000"),
-    ("pc", "Давление в конце сжатия", "Pressure at the end of compression",
-     "pc = pa·ε^n1", "МПа", "MPa", "0.000"),
-    ("pz", "Максимальное давление цикла (расчётное)", "Maximum cycle pressure (calculated)",
-     "pz", "МПа", "MPa", "0.000"),
-    ("lambda_z", "Степень повышения давления", "Pressure-rise ratio", "λz = pz/pc", "", "",
-     "0.000"),
-    ("rho", "Степень предварительного расширения", "Pre-expansion ratio", "ρ", "", "",
-     "0.000"),
-    ("rounding", "Скругление диаграммы", "Diagram rounding", "", "", "", "@"),
-    ("advance_deg", "Угол опережения зажигания (впрыска) до ВМТ",
-     "Ignition (injection) advance before TDC", "θ", "°", "deg", "0.#"),
-    ("pc_factor", "Давление в ВМТ в конце сжатия, доля pc", "Pressure at TDC, share of pc",
-     "pc″/pc", "", "", "0.00"),
-    ("peak_factor", "Действительное максимальное давление, доля pz",
-     "Real peak pressure, share of pz", "pzд/pz", "", "", "0.00"),
-    ("peak_after_tdc_deg", "Угол действительного максимума давления после ВМТ",
-     "Angle of the real peak after TDC", "", "°", "deg", "0.#"),
-    ("exhaust_opening_deg", "Открытие выпускного клапана до НМТ",
-     "Exhaust valve opening before BDC", "", "°", "deg", "0.#"),
-    ("intake_opening_deg", "Открытие впускного клапана до ВМТ",
-     "Intake valve opening before TDC", "", "°", "deg", "0.#"),
-    ("exhaust_closing_deg", "Закрытие выпускного клапана после ВМТ",
-     "Exhaust valve closing after TDC", "", "°", "deg", "0.#"),
-    ("pi_theory", "Среднее индикаторное давление нескруглённой диаграммы",
-     "Indicated mean pressure of the unrounded diagram", "p′i", "МПа", "MPa", "0.0000"),
-    ("pi", "Среднее индикаторное давление диаграммы (с насосными ходами)",
-     "Indicated mean pressure of the diagram (pumping loop included)", "pi = ∮p dV / Vh",
-     "МПа", "MPa", "0.0000"),
-    ("power_i", "Индикаторная мощность одного цилиндра", "Indicated power of one cylinder",
-     "Ni = pi·Vh·n/(30τ)", "кВт", "kW", "0.00"),
+    ('name', '', '@'),
+    ('strokes', 'τ', '0'),
+    ('cylinders', 'i', '0'),
+    ('bore_mm', 'D', '0.0##'),
+    ('stroke_mm', 'S', '0.0##'),
+    ('R_mm', 'R = S/2', '0.0##'),
+    ('L_mm', 'Lш', '0.0##'),
+    ('lam', 'λ = R/Lш', '0.0000'),
+    ('speed_rpm', 'n', '0'),
+    ('omega', 'ω = πn/30', '0.00'),
+    ('v_mean', 'vп.ср = Sn/30', '0.00'),
+    ('p0_MPa', 'p0', '0.000'),
+    ('area_cm2', 'Fп = πD²/4', '0.00'),
+    ('Vh_l', 'Vh = Fп·S', '0.0000'),
+    ('compression_ratio', 'ε', '0.00'),
+    ('acceleration', 'j', '@'),
+    ('mass_input', '', '@'),
+    ('mj', 'mj = mп + mш.п', '0.000'),
+    ('m_rod_rot', 'mш.к', '0.000'),
+    ('m_crank_rot', 'mк', '0.000'),
+    ('Kr', 'Kr.ш = −mш.к·R·ω²', '0.0'),
+    ('mu_P', 'μP', '0.###'),
+    ('step_deg', 'Δα', '0.###'),
+    ('extra_angles', '', '@'),
+    ('pressure_source', 'pг(α)', '@'),
+    ('cycle_kind', '', '@'),
+    ('pa', 'pa', '0.000'),
+    ('pr', 'pr', '0.000'),
+    ('n1', 'n1', '0.000'),
+    ('n2', 'n2', '0.000'),
+    ('pc', 'pc = pa·ε^n1', '0.000'),
+    ('pz', 'pz', '0.000'),
+    ('lambda_z', 'λz = pz/pc', '0.000'),
+    ('rho', 'ρ', '0.000'),
+    ('rounding', '', '@'),
+    ('advance_deg', 'θ', '0.#'),
+    ('pc_factor', 'pc″/pc', '0.00'),
+    ('peak_factor', 'pzд/pz', '0.00'),
+    ('peak_after_tdc_deg', '', '0.#'),
+    ('exhaust_opening_deg', '', '0.#'),
+    ('intake_opening_deg', '', '0.#'),
+    ('exhaust_closing_deg', '', '0.#'),
+    ('pi_theory', 'p′i', '0.0000'),
+    ('pi', 'pi = ∮p dV / Vh', '0.0000'),
+    ('power_i', 'Ni = pi·Vh·n/(30τ)', '0.00'),
 ]
 
-CONVENTIONS = {
-    "ru": [
-        "Условные обозначения и знаки",
-        "α – угол поворота кривошипа от ВМТ по направлению вращения; для четырёхтактного "
-        "двигателя 0…720°, α = 0 в ВМТ начала впуска (ВМТ сгорания при 360°).",
-        "pг – абсолютное давление газов; ΔPг = (pг − p0)·Fп; Pj = −mj·j; P = ΔPг + Pj; "
-        "силы по оси цилиндра положительны, если направлены к оси коленчатого вала.",
-        "j = Rω²(cos α + λ cos 2α) (двучленная формула) или точное ускорение (по группе "
-        "Ассура RRP) – см. строку «Ускорение поршня».",
-        "β – угол отклонения оси шатуна от оси цилиндра, β > 0 при 0 < α < 180°.",
-        "Sш = P/cos β – сила по шатуну, положительна при сжатии шатуна.",
-        "N = P·tg β – боковая сила поршня на стенку цилиндра, положительна, если её момент "
-        "относительно оси коленчатого вала направлен против вращения.",
-        "K = P·cos(α+β)/cos β – радиальная сила, положительна к оси коленчатого вала; "
-        "T = P·sin(α+β)/cos β – тангенциальная сила, положительна по вращению; Mкр = T·R.",
-        "Kr.ш = −mш.к·R·ω² (направлена от оси вала); Rшш = √(T² + (K + Kr.ш)²) – сила, "
-        "действующая на шатунную шейку.",
-        "Ψ = atan2(T, K + Kr.ш) – угол силы Rшш в системе координат кривошипа: 0° – вдоль "
-        "кривошипа к оси вала, положительный по направлению вращения, (−180°, 180°].",
-        "Силы в мм чертежа = сила в Н / μP. Значения хранятся с полной точностью; формат "
-        "ячеек влияет только на отображение.",
-        "Кинематика и сила на шатунной шейке получены по группам Ассура I(1,2) → II(3,4) "
-        "(кривошип и диада RRP); формулы таблицы (N = P tg β, K, T, Sш) – их проверка.",
-    ],
-    "en": [
-        "Symbols and sign conventions",
-        "α – crank angle from TDC in the direction of rotation; four-stroke: 0…720°, "
-        "α = 0 at the TDC that starts intake (combustion TDC at 360°).",
-        "pг – absolute gas pressure; ΔPг = (pг − p0)·Fп; Pj = −mj·j; P = ΔPг + Pj; forces "
-        "along the cylinder axis are positive towards the crankshaft axis.",
-        "j = Rω²(cos α + λ cos 2α) (two-term formula) or the exact acceleration (from the "
-        "RRP Assur group) – see the row 'Piston acceleration'.",
-        "β – angle of the rod axis from the cylinder axis, β > 0 for 0 < α < 180°.",
-        "Sш = P/cos β – rod force, positive when the rod is compressed.",
-        "N = P·tg β – side force of the piston on the cylinder wall, positive when its "
-        "moment about the crankshaft axis opposes the rotation.",
-        "K = P·cos(α+β)/cos β – radial force, positive towards the crankshaft axis; "
-        "T = P·sin(α+β)/cos β – tangential force, positive in the direction of rotation; "
-        "Mкр = T·R.",
-        "Kr.ш = −mш.к·R·ω² (outwards); Rшш = √(T² + (K + Kr.ш)²) – the load on the crank "
-        "pin.",
-        "Ψ = atan2(T, K + Kr.ш) – direction of Rшш in the crank frame: 0° along the crank "
-        "towards the crankshaft axis, positive in the direction of rotation, (−180°, 180°].",
-        "Forces in mm of the drawing = force in N / μP. Values are stored at full "
-        "precision; cell formats change only how they are shown.",
-        "Kinematics and the crank-pin force come from the Assur groups I(1,2) → II(3,4) "
-        "(crank and RRP dyad); the table formulas (N = P tg β, K, T, Sш) check them.",
-    ],
-}
+#: Lines of the conventions under the inputs: ``sheet.engine.conventions.<i>``.
+N_CONVENTIONS = 12
 
-# Table 2: (symbol, ru unit of N column, en unit)
-FORCES = ["ΔPг", "Pj", "P", "Sш", "N", "K", "T", "Rшш"]
+# Table 2: the force symbols
+FORCES = ['ΔPг', 'Pj', 'P', 'Sш', 'N', 'K', 'T', 'Rшш']
 
-# Summary rows: (key, ru label, en label, symbol, unit ru, unit en, format)
+#: Summary rows with extremes: (key, symbol); label and unit ``sheet.engine.extreme.<key>``
 SUMMARY_EXTREMES = [
-    ("P_N", "Суммарная сила", "Total piston force", "P", "Н", "N"),
-    ("S_N", "Сила по шатуну", "Rod force", "Sш", "Н", "N"),
-    ("N_N", "Боковая сила", "Side force", "N", "Н", "N"),
-    ("K_N", "Радиальная сила", "Radial force", "K", "Н", "N"),
-    ("T_N", "Тангенциальная сила", "Tangential force", "T", "Н", "N"),
-    ("M_Nm", "Крутящий момент цилиндра", "Torque of one cylinder", "Mкр", "Н·м", "N·m"),
-    ("R_N", "Сила на шатунную шейку", "Crank-pin load", "Rшш", "Н", "N"),
+    ('P_N', 'P'),
+    ('S_N', 'Sш'),
+    ('N_N', 'N'),
+    ('K_N', 'K'),
+    ('T_N', 'T'),
+    ('M_Nm', 'Mкр'),
+    ('R_N', 'Rшш'),
 ]
+#: Summary rows of one value: (key, symbol, format); ``sheet.engine.value.<key>``
 SUMMARY_VALUES = [
-    ("p_max_MPa", "Максимальное давление газов", "Peak gas pressure", "pг max", "МПа",
-     "MPa", "0.000"),
-    ("alpha_p_max_deg", "Угол максимального давления", "Angle of the peak pressure",
-     "α(pг max)", "°", "deg", "0.0"),
-    ("M_mean_Nm", "Средний крутящий момент цилиндра", "Mean torque of one cylinder",
-     "Mкр.ср", "Н·м", "N·m", "0.00"),
-    ("R_mean_N", "Средняя сила на шатунную шейку", "Mean crank-pin load", "Rшш.ср", "Н",
-     "N", "0"),
-    ("chi", "Коэффициент неравномерности нагрузки", "Load non-uniformity",
-     "χ = Rшш.max/Rшш.ср", "", "", "0.000"),
-    ("pi_MPa", "Среднее индикаторное давление диаграммы", "Indicated mean pressure",
-     "pi", "МПа", "MPa", "0.0000"),
-    ("power_i_kW", "Индикаторная мощность цилиндра", "Indicated power of one cylinder",
-     "Ni", "кВт", "kW", "0.00"),
+    ('p_max_MPa', 'pг max', '0.000'),
+    ('alpha_p_max_deg', 'α(pг max)', '0.0'),
+    ('M_mean_Nm', 'Mкр.ср', '0.00'),
+    ('R_mean_N', 'Rшш.ср', '0'),
+    ('chi', 'χ = Rшш.max/Rшш.ср', '0.000'),
+    ('pi_MPa', 'pi', '0.0000'),
+    ('power_i_kW', 'Ni', '0.00'),
 ]
 
-SUMMARY_NOTE = {
-    "ru": "Экстремумы и средние значения вычислены по сетке 0,5° (вместе со строками "
-          "таблицы 2), поэтому улавливают пики между строками таблицы; средние – по "
-          "правилу трапеций за цикл. Mкр.ср и Rшш.ср – для одного цилиндра.",
-    "en": "Extremes and means are computed on a 0.5° grid (together with the rows of "
-          "Table 2), so peaks between table rows are caught; means by the trapezoid rule "
-          "over the cycle. Mкр mean and Rшш mean are for one cylinder.",
-}
+
+def _words(lang):
+    """The catalogue's texts of ``lang`` (:func:`crankbase.texts.texts`) and a unit look-up
+    ('' for a quantity without a unit)."""
+    from crankbase.texts import texts
+
+    t = texts(lang)
+
+    def unit(key):
+        try:
+            return t(key)
+        except KeyError:
+            return ""
+    return t, unit
+
 
 def english_symbols(text):
     """An English template string with the Russian symbols replaced by the English ones of
@@ -232,7 +146,10 @@ LEFT = Alignment(horizontal="left", vertical="center", wrap_text=True)
 
 
 def _fonts(lang):
-    family = "Times New Roman" if lang == "ru" else "Calibri"
+    """Body, bold, title and note fonts: the one family of every workbook
+    (:data:`crankbase.workbook.FONT`) in both languages."""
+    from crankbase.workbook import FONT as family
+
     return (Font(name=family, size=11), Font(name=family, size=11, bold=True),
             Font(name=family, size=13, bold=True), Font(name=family, size=10, italic=True))
 
@@ -257,16 +174,15 @@ def _symbol_table(ws, r, lang, bold, body):
 
     ws.row_breaks.append(Break(id=r - 1))      # the table starts a page, with its title
     ru = lang == "ru"
-    title = ("Обозначения русского и английского отчётов" if ru
-             else "Symbols of this report (the Russian report and the README list the "
-                  "Russian textbook symbols beside them)")
+    t, _ = _words(lang)
+    title = t("sheet.engine.symbols_title")
     c = ws.cell(r, 2, title)
     c.font = bold
     c.alignment = Alignment(wrap_text=True, vertical="top")
     ws.merge_cells(start_row=r, start_column=2, end_row=r, end_column=5)
     ws.row_dimensions[r].height = 15 if ru else 30
-    head = (("Величина", "Русский отчёт", "Английский отчёт") if ru
-            else ("Quantity", "Symbol"))
+    head = tuple(t(f"sheet.engine.head.{k}") for k in (
+        ("quantity", "ru_report", "en_report") if ru else ("quantity", "symbol")))
     for j, h in enumerate(head, start=2):
         c = ws.cell(r + 1, j, h)
         c.font, c.fill, c.border, c.alignment = bold, HEAD_FILL, BORDER, CENTER
@@ -282,29 +198,28 @@ def _symbol_table(ws, r, lang, bold, body):
 
 def build(lang: str, path: Path) -> None:
     body, bold, title, note = _fonts(lang)
-    L = 0 if lang == "ru" else 1
+    t, unit = _words(lang)
+
+    def heads(*keys):
+        return tuple(t(f"sheet.engine.head.{k}") for k in keys)
     wb = Workbook()
     ws_in = wb.active
-    ws_in.title = SHEETS[lang][0]
-    ws_t2 = wb.create_sheet(SHEETS[lang][1])
-    ws_sum = wb.create_sheet(SHEETS[lang][2])
-    ws_data = wb.create_sheet(SHEETS[lang][3])
-    ws_ch = wb.create_sheet(SHEETS[lang][4])
+    ws_in.title = t("sheet.engine.sheet.inputs")
+    ws_t2, ws_sum, ws_data, ws_ch = (wb.create_sheet(t(f"sheet.engine.sheet.{k}"))
+                                     for k in SHEET_KEYS[1:])
 
     # ---------------------------------------------------------------- Inputs
     ws = ws_in
-    ws["B1"] = TITLE[lang][0]
+    ws["B1"] = t("sheet.engine.title.inputs")
     ws["B1"].font = title
-    heads = (("Величина", "Обозначение", "Значение", "Ед. изм.") if lang == "ru"
-             else ("Quantity", "Symbol", "Value", "Unit"))
     ws["A3"] = "key"
-    for j, h in enumerate(heads, start=2):
+    for j, h in enumerate(heads("quantity", "symbol", "value", "unit"), start=2):
         c = ws.cell(3, j, h)
         c.font, c.fill, c.border, c.alignment = bold, HEAD_FILL, BORDER, CENTER
-    for i, (key, ru, en, sym, u_ru, u_en, fmt) in enumerate(INPUTS, start=4):
+    for i, (key, sym, fmt) in enumerate(INPUTS, start=4):
         ws.cell(i, 1, key)
-        for j, v in enumerate((ru if L == 0 else en, sym, None, u_ru if L == 0 else u_en),
-                              start=2):
+        for j, v in enumerate((t(f"sheet.engine.input.{key}"), sym, None,
+                               unit(f"sheet.engine.input.{key}.unit")), start=2):
             c = ws.cell(i, j, v)
             c.font, c.border = body, BORDER
             c.alignment = LEFT if j in (2, 4) else CENTER
@@ -312,13 +227,14 @@ def build(lang: str, path: Path) -> None:
         ws.cell(i, 4).alignment = Alignment(horizontal="right", vertical="center",
                                             wrap_text=True)
     r = 4 + len(INPUTS) + 1
-    for k, line in enumerate(CONVENTIONS[lang]):
+    for k, line in enumerate(t(f"sheet.engine.conventions.{i}")
+                             for i in range(N_CONVENTIONS)):
         c = ws.cell(r + k, 2, line)
         c.font = bold if k == 0 else note
         c.alignment = Alignment(wrap_text=True, vertical="top")
         ws.merge_cells(start_row=r + k, start_column=2, end_row=r + k, end_column=5)
         ws.row_dimensions[r + k].height = 15 if k == 0 else 30
-    r += len(CONVENTIONS[lang]) + 1
+    r += N_CONVENTIONS + 1
     _symbol_table(ws, r, lang, bold, body)
     ws.column_dimensions["A"].hidden = True
     for col, w in zip("BCDE", (50, 20, 40, 10)):
@@ -328,14 +244,14 @@ def build(lang: str, path: Path) -> None:
 
     # ---------------------------------------------------------------- Table 2
     ws = ws_t2
-    ws["A1"] = TITLE[lang][1]
+    ws["A1"] = t("sheet.engine.title.table2")
     ws["A1"].font = title
-    ws["A2"] = "μP, Н/мм =" if lang == "ru" else "μP, N/mm ="
+    ws["A2"] = t("sheet.engine.mu_p")
     ws["A2"].font = bold
     ws["C2"].number_format = "0.###"
     ws["C2"].font = bold
     ws.merge_cells("A2:B2")
-    mm, nn = ("мм", "Н") if lang == "ru" else ("mm", "N")
+    mm, nn = t("sheet.engine.mm"), t("sheet.engine.newton")
     ws.cell(3, 1, "α, °")
     ws.merge_cells(start_row=3, start_column=1, end_row=4, end_column=1)
     col = 2
@@ -345,7 +261,7 @@ def build(lang: str, path: Path) -> None:
         ws.cell(4, col, mm)
         ws.cell(4, col + 1, nn)
         col += 2
-    ws.cell(3, col, "Mкр, Н·м" if lang == "ru" else "Mкр, N·m")
+    ws.cell(3, col, t("sheet.engine.torque_head"))
     ws.merge_cells(start_row=3, start_column=col, end_row=4, end_column=col)
     ws.cell(3, col + 1, "Ψ, °")
     ws.merge_cells(start_row=3, start_column=col + 1, end_row=4, end_column=col + 1)
@@ -372,20 +288,17 @@ def build(lang: str, path: Path) -> None:
 
     # ---------------------------------------------------------------- Summary
     ws = ws_sum
-    ws["B1"] = TITLE[lang][2]
+    ws["B1"] = t("sheet.engine.title.summary")
     ws["B1"].font = title
-    heads = (("Величина", "Обозначение", "Максимум", "α при max, °", "Минимум",
-              "α при min, °", "Ед. изм.") if lang == "ru" else
-             ("Quantity", "Symbol", "Maximum", "α at max, deg", "Minimum",
-              "α at min, deg", "Unit"))
     ws["A3"] = "key"
-    for j, h in enumerate(heads, start=2):
+    for j, h in enumerate(heads("quantity", "symbol", "maximum", "alpha_max", "minimum",
+                                "alpha_min", "unit"), start=2):
         c = ws.cell(3, j, h)
         c.font, c.fill, c.border, c.alignment = bold, HEAD_FILL, BORDER, CENTER
-    for i, (key, ru, en, sym, u_ru, u_en) in enumerate(SUMMARY_EXTREMES, start=4):
+    for i, (key, sym) in enumerate(SUMMARY_EXTREMES, start=4):
         ws.cell(i, 1, key)
-        vals = (ru if L == 0 else en, sym, None, None, None, None,
-                u_ru if L == 0 else u_en)
+        vals = (t(f"sheet.engine.extreme.{key}"), sym, None, None, None, None,
+                unit(f"sheet.engine.extreme.{key}.unit"))
         for j, v in enumerate(vals, start=2):
             c = ws.cell(i, j, v)
             c.font, c.border = body, BORDER
@@ -394,23 +307,21 @@ def build(lang: str, path: Path) -> None:
             ws.cell(i, j).number_format = fmt
             ws.cell(i, j).alignment = Alignment(horizontal="right")
     r0 = 4 + len(SUMMARY_EXTREMES) + 1
-    heads2 = (("Величина", "Обозначение", "Значение", "Ед. изм.") if lang == "ru"
-              else ("Quantity", "Symbol", "Value", "Unit"))
-    for j, h in enumerate(heads2, start=2):
+    for j, h in enumerate(heads("quantity", "symbol", "value", "unit"), start=2):
         c = ws.cell(r0, j, h)
         c.font, c.fill, c.border, c.alignment = bold, HEAD_FILL, BORDER, CENTER
     ws.cell(r0, 1, "key")
-    for i, (key, ru, en, sym, u_ru, u_en, fmt) in enumerate(SUMMARY_VALUES, start=r0 + 1):
+    for i, (key, sym, fmt) in enumerate(SUMMARY_VALUES, start=r0 + 1):
         ws.cell(i, 1, key)
-        for j, v in enumerate((ru if L == 0 else en, sym, None, u_ru if L == 0 else u_en),
-                              start=2):
+        for j, v in enumerate((t(f"sheet.engine.value.{key}"), sym, None,
+                               unit(f"sheet.engine.value.{key}.unit")), start=2):
             c = ws.cell(i, j, v)
             c.font, c.border = body, BORDER
             c.alignment = LEFT if j == 2 else CENTER
         ws.cell(i, 4).number_format = fmt
         ws.cell(i, 4).alignment = Alignment(horizontal="right")
     note_row = r0 + len(SUMMARY_VALUES) + 2
-    c = ws.cell(note_row, 2, SUMMARY_NOTE[lang])
+    c = ws.cell(note_row, 2, t("sheet.engine.summary_note"))
     c.font = note
     c.alignment = Alignment(wrap_text=True, vertical="top")
     ws.merge_cells(start_row=note_row, start_column=2, end_row=note_row, end_column=8)
@@ -422,7 +333,7 @@ def build(lang: str, path: Path) -> None:
 
     # ---------------------------------------------------------------- Data
     ws = ws_data
-    ws["A1"] = TITLE[lang][3]
+    ws["A1"] = t("sheet.engine.title.data")
     ws["A1"].font = title
     # row 3: the CSV header (filled by the code, styled here); row 4: prototype data row
     for cc in range(1, 18):
@@ -437,10 +348,9 @@ def build(lang: str, path: Path) -> None:
     _fit_width(ws, "landscape")
 
     # ---------------------------------------------------------------- Charts
-    ws_ch["A1"] = ("Графики сил по углу поворота кривошипа (по данным листа «Таблица 2»)"
-                   if lang == "ru" else
-                   "Forces over the crank angle (from the sheet 'Table 2')")
+    ws_ch["A1"] = t("sheet.engine.charts_title")
     ws_ch["A1"].font = title
+    ws_ch.merge_cells("A1:J1")
     _fit_width(ws_ch, "portrait")
 
     if lang == "en":
@@ -450,7 +360,7 @@ def build(lang: str, path: Path) -> None:
                     if isinstance(c.value, str):
                         c.value = english_symbols(c.value)
         _check_no_cyrillic(wb)
-    wb.properties.title = TITLE[lang][1]
+    wb.properties.title = t("sheet.engine.title.table2")
     wb.properties.creator = "crankdyn"
     wb.save(path)
 

@@ -572,10 +572,12 @@ def test_lang_help_says_what_it_changes(capsys):
 
 def test_inputs_sheet_wrapped_rows_are_tall_enough(lang_runs):
     """A wrapped label or meaning on the inputs sheet never runs into the next row: a row
-    whose text needs more than one line at its column's width (at least 1.0 width unit a
-    Cyrillic letter, 0.85 another character: measured on LibreOffice's rendering, where
-    a Cyrillic text is wider) is at least 12 pt a line tall; merged cells (title,
+    whose text needs more than one line at its column's width (words put on lines by the
+    character widths of crankbase.workbook, measured on LibreOffice's rendering, where a
+    Cyrillic text is wider) is at least 12 pt a line tall; merged cells (title,
     conventions) count their merged width."""
+    from crankbase.workbook import wrapped_lines
+
     for key, (run, _, _) in lang_runs.items():
         from openpyxl.utils import get_column_letter
 
@@ -590,8 +592,7 @@ def test_inputs_sheet_wrapped_rows_are_tall_enough(lang_runs):
                 m = spans.get((c.row, c.column))
                 cols = range(m.min_col, m.max_col + 1) if m else [c.column]
                 width = sum(ws.column_dimensions[get_column_letter(j)].width for j in cols)
-                text_width = sum(1.0 if CYRILLIC.match(ch) else 0.85 for ch in c.value)
-                lines = math.ceil(text_width / width)
+                lines = wrapped_lines(c.value, width, bool(c.font.b), c.font.sz or 11)
                 if lines > 1:
                     height = ws.row_dimensions[c.row].height
                     assert height and height >= 12 * lines, (key, c.coordinate, c.value)

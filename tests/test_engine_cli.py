@@ -89,7 +89,8 @@ def test_workbook_equals_csv(run):
     name, lang, out = run
     df = pd.read_csv(out / named(name, "forces.csv"))
     wb = load_workbook(out / EXAMPLES[name][1])
-    assert len(wb.worksheets) == 9
+    # 9 printed sheets; the native charts' data (the fine grid) on a hidden last one
+    assert [ws.sheet_state for ws in wb.worksheets] == ["visible"] * 9 + ["hidden"]
     ws_in, ws_t2, ws_sum, ws_data, ws_ch = wb.worksheets[:5]
     mu = engine.load(example_path(EXAMPLES[name][0])).settings.force_scale
     # Table 2: α, (mm, N) × 8 forces, Mкр, Ψ — numbers, not formulas
@@ -136,10 +137,15 @@ def test_table2_layout_like_the_textbook(run):
     assert {"A3:A4", "B3:C3", "P3:Q3", "R3:R4", "S3:S4"} <= merged
     title = ws["A1"].value
     assert ("Таблица 2" in title) if lang == "ru" else ("Table 2" in title)
-    # borders and number formats copied to every data row
+    # borders copied to every data row; one number format per column, about six
+    # significant digits of its largest value (issue 23: no 0.0 / 0.00 / 0 in one table)
+    from crankbase.workbook import number_format
+
     last = ws.max_row
     assert ws.cell(last, 3).border.left.style == "thin"
-    assert ws.cell(last, 2).number_format == "0.0" and ws.cell(last, 3).number_format == "0"
+    for j in range(1, 20):
+        column = [ws.cell(r, j) for r in range(6, last + 1)]
+        assert {c.number_format for c in column} == {number_format(c.value for c in column)}
 
 
 def test_inputs_and_summary_sheets(run):

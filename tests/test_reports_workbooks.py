@@ -262,7 +262,10 @@ def test_every_sheet_has_an_a4_print_setup(runs):
 
 def test_wrapped_text_rows_are_tall_enough(runs):
     """A wrapped label never overlaps the next row: each row with wrapped text has a
-    height of at least its number of lines (at the column's width) × 12 pt."""
+    height of at least its number of lines (words put on lines at the column's width, as
+    a spreadsheet does: :func:`crankbase.workbook.wrapped_lines`) × 12 pt."""
+    from crankbase.workbook import wrapped_lines
+
     for key, path in runs.items():
         if key[0] != "engine":
             continue
@@ -271,7 +274,8 @@ def test_wrapped_text_rows_are_tall_enough(runs):
             merged = {r.min_row: r for r in ws.merged_cells.ranges}
             for row in ws.iter_rows(min_row=3):
                 for c in row:
-                    if not (isinstance(c.value, str) and c.alignment.wrap_text):
+                    if not (isinstance(c.value, str) and c.alignment.wrap_text) \
+                            or ws.column_dimensions[c.column_letter].hidden:
                         continue
                     if c.row in merged and merged[c.row].min_col == c.column:
                         m = merged[c.row]
@@ -279,8 +283,7 @@ def test_wrapped_text_rows_are_tall_enough(runs):
                                     for j in range(m.min_col, m.max_col + 1))
                     else:
                         width = ws.column_dimensions[c.column_letter].width
-                    lines = sum(math.ceil(len(p) * 1.05 / width) or 1
-                                for p in c.value.split("\n"))
+                    lines = wrapped_lines(c.value, width, bool(c.font.b), c.font.sz or 11)
                     height = ws.row_dimensions[c.row].height
                     if lines > 1:
                         assert height and height >= 12 * lines, (key, ws.title,
@@ -387,24 +390,36 @@ def test_workbooks_render_on_a4_pages(runs, tmp_path):
 
 def test_native_polar_chart():
     """The polar diagram as an editable Excel scatter chart: K downwards (reversed axis),
-    equal spans on both axes of a square chart (the shape is kept), the locus of (T, K)
-    from the Data sheet and the poles O and Oш = (0, −Kr.ш) as markers."""
+    equal spans and grid steps on both axes of a square plot area (the shape is kept),
+    the locus of (T, K) from the fine grid on the hidden chart-data sheet and the poles O
+    and Oш = (0, −Kr.ш) as markers from that sheet (not on the printed Charts sheet)."""
     from engine.report import build_workbook
 
     study = engine.load(example_path("petrol_vaz2106.toml"))
     result = engine.analyze(study.spec, study.settings)
-    spec, table = result.spec, result.table
+    spec, table = result.spec, result.curves
     wb = build_workbook(result, "ru")
     ws = wb.worksheets[4]
     polar = ws._charts[-1]
     assert polar.y_axis.scaling.orientation == "maxMin"
-    assert polar.width == polar.height
+    lay = polar.layout.manualLayout
+    assert lay.layoutTarget == "inner"
+    assert lay.w * polar.width == pytest.approx(lay.h * polar.height)      # square
     xs = polar.x_axis.scaling.max - polar.x_axis.scaling.min
     ys = polar.y_axis.scaling.max - polar.y_axis.scaling.min
-    assert xs == pytest.approx(ys)
+    assert xs == pytest.approx(ys) and polar.x_axis.majorUnit == polar.y_axis.majorUnit
     curve, poles = polar.series
-    assert "$J$" in curve.xVal.numRef.f and "$I$" in curve.yVal.numRef.f   # T_N, K_N
-    assert [c.value for c in ws["N"] if isinstance(c.value, float)] == [0.0, -spec.Kr]
+    cd = wb["Данные графиков"]
+    assert cd.sheet_state == "hidden"
+    head = {}
+    for c in cd[1]:                     # the curves' columns first, then the poles'
+        if c.value:
+            head.setdefault(c.value, c.column_letter)
+    assert f"!${head['T_N']}$" in curve.xVal.numRef.f and "Данные графиков" in curve.xVal.numRef.f
+    assert f"!${head['K_N']}$" in curve.yVal.numRef.f
+    pole_k = poles.yVal.numRef.f.split("!")[1].replace("$", "")
+    assert [c.value for row in cd[pole_k] for c in row] == [0.0, -spec.Kr]
+    assert not [c for row in ws.iter_rows(min_row=2) for c in row if c.value is not None]
     assert polar.x_axis.scaling.min <= table["T_N"].min()
     assert polar.x_axis.scaling.max >= table["T_N"].max()
     assert polar.y_axis.scaling.min <= min(table["K_N"].min(), -spec.Kr)

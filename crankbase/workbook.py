@@ -1,0 +1,536 @@
+"""The one workbook helper: how every workbook crankdyn writes looks and prints.
+
+Every writer (engine, bearings, linkage, synthesis, dynamics, the variants summary, the
+checked copy of a student's workbook) builds its sheets and then calls :func:`finish`,
+which gives the whole workbook
+
+* one font family (:data:`FONT`) for titles, headers and data, whatever the writer or the
+  template used;
+* one number format per column of each table (a block of rows with two or more numbers),
+  about six significant digits of the column's largest value (a whole-number column
+  ``0``); a number alone in its row (a value of a list of results) gets its own six
+  digits.  The cells keep every digit (:func:`save` writes floats at full precision);
+* column widths measured from the text and the numbers they hold (Cyrillic letters are
+  wider than Latin ones, bold wider than regular); a text longer than
+  :data:`MAX_WIDTH` wraps, and its row grows to its lines;
+* A4 page setup: the sheet's orientation (landscape where none is set), as many pages
+  wide as its columns need (at most :data:`WIDTH_PER_PAGE` width units a page), as many
+  tall as needed, the header rows repeated (``title_rows``).
+
+:func:`save` writes atomically with every float bit for bit; :func:`bounded` thins a table
+longer than :data:`MAX_ROWS` rows for a sheet (the CSV keeps every row);
+:func:`summary_workbook` writes a one-table workbook (the variants summary).
+
+openpyxl is imported inside the functions only.
+"""
+from __future__ import annotations
+
+import copy
+import math
+import re
+
+__all__ = ["FONT", "HEAD_FILL", "MAX_ROWS", "MAX_WIDTH", "WIDTH_PER_PAGE", "LINE_PT",
+           "text_width", "wrapped_lines", "columns_cm", "number_format", "shown", "font",
+           "style_header",
+           "table_blocks", "unify_fonts", "fit_numbers", "fit_columns", "fit_rows",
+           "page_setup", "finish", "save", "bounded", "sheet_rows", "thinned_note", "summary_workbook", "new_workbook",
+           "words", "Words", "header_rows"]
+
+#: The one font family of every workbook (metric twin: Liberation Sans).
+FONT = "Arial"
+#: Fill of header cells.
+HEAD_FILL = "DDE4EE"
+#: Rows of one table a sheet holds; a longer table is thinned (:func:`bounded`) and the
+#: CSV beside the workbook keeps every row.
+MAX_ROWS = 2000
+#: Widest column (Excel width units); a longer text wraps.
+MAX_WIDTH = 45
+#: Narrowest column of a value.
+MIN_WIDTH = 6
+#: Column width printed on one A4 page (landscape at ~70 % scale at most).
+WIDTH_PER_PAGE = 190
+#: Height of a line of text [pt].
+LINE_PT = 12.75
+
+# Widths of characters in Excel column-width units (one '0' of the 11 pt font), from
+# Arial's (Liberation Sans's) advance widths in em over the '0''s 0.556 em, rounded up a
+# little for LibreOffice's and Excel's rendering.
+_W_CLASSES = (
+    ("il.,:;'|!ıj", 0.45), ("ftrI()[]{}/\\- ·", 0.6), ("mwMWШЩЖЮшщжюыЫфФ", 1.6),
+    ("ABCDEGHKNOPQRSUVXYZ&%@#ДЛМНОПУФЦЧЪЭЯБВГЕЁЗИЙКРСТХЬ", 1.28),
+    ("дмлнпцчъэяб", 1.12), ("=+<>~^×−±÷", 1.05))
+_W = {ch: w for chars, w in _W_CLASSES for ch in chars}
+_W_DEFAULT = 1.02
+_PAD = 1.8          # a column's margin around its widest text
+
+
+def text_width(s, bold=False, size=11) -> float:
+    """Printed width of a one-line text in Excel column-width units."""
+    w = sum(_W.get(ch, _W_DEFAULT) for ch in str(s))
+    return w * (1.08 if bold else 1.0) * (size or 11) / 11
+
+
+def wrapped_lines(s, width, bold=False, size=11) -> int:
+    """Lines a wrapped text takes in a column ``width`` units wide (words put on a line
+    while they fit; a word longer than a line is broken), as a spreadsheet does."""
+    width = max(1.0, width - 0.8)
+    sp = text_width(" ", bold, size)
+    lines = 0
+    for para in str(s).split("\n"):
+        lines += 1
+        used = 0.0
+        for word in para.split(" "):
+            w = text_width(word, bold, size)
+            if used and used + sp + w > width:
+                lines += 1
+                used = 0.0
+            elif used:
+                used += sp
+            if w > width:
+                lines += math.ceil(w / width) - 1
+                w = w % width
+            used += w
+    return lines
+
+
+def _is_number(v) -> bool:
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def number_format(values) -> str:
+    """One display format for ``values``: about six significant digits of the largest
+    magnitude (``0.000`` for 123.456…; at most eight decimals), fewer when fewer show
+    every value exactly (``0.0`` for angles on a 0.5° grid, ``0`` for whole numbers)."""
+    nums = [float(v) for v in values if _is_number(v) and math.isfinite(v)]
+    if not nums or all(v.is_integer() for v in nums):
+        return "0"
+    top = max(abs(v) for v in nums)
+    if top == 0:
+        return "0"
+    most = max(0, min(8, 5 - math.floor(math.log10(top))))
+    for decimals in range(most):        # fewer when they show every value exactly
+        k = 10.0 ** decimals
+        if all(abs(v * k - round(v * k)) <= 1e-9 * max(1.0, abs(v * k)) for v in nums):
+            break
+    else:
+        decimals = most
+    return "0." + "0" * decimals if decimals else "0"
+
+
+def _decimals(fmt):
+    """(decimals, optional decimals) of a simple number format ``0.00#``."""
+    m = re.fullmatch(r"[#,]*0(?:\.(0*)(#*))?", fmt or "")
+    if not m:
+        return None
+    return len(m.group(1) or ""), len(m.group(2) or "")
+
+
+def shown(value, fmt="General") -> str:
+    """The text a spreadsheet shows for a number in format ``fmt`` (simple ``0.00``,
+    ``0.0##`` and General formats)."""
+    d = _decimals(fmt)
+    if d is None:
+        return f"{value:.10g}" if isinstance(value, float) else str(value)
+    fixed, optional = d
+    s = f"{value:.{fixed + optional}f}"
+    if optional:
+        s = s.rstrip("0") if "." in s else s
+        head, _, tail = s.partition(".")
+        tail = tail.ljust(fixed, "0")
+        s = head + ("." + tail if tail else "")
+    return "0" if s in ("-0", "-0.0") else s
+
+
+def font(bold=False, italic=False, size=11, color=None):
+    """A :class:`openpyxl.styles.Font` of the one family."""
+    from openpyxl.styles import Font
+
+    return Font(name=FONT, bold=bold, italic=italic, size=size, color=color)
+
+
+def style_header(cell, wrap=True):
+    """Bold, filled, framed, centred: a table's header cell."""
+    from openpyxl.styles import Alignment, Border, PatternFill, Side
+
+    thin = Side(style="thin", color="999999")
+    cell.font = font(bold=True)
+    cell.fill = PatternFill("solid", fgColor=HEAD_FILL)
+    cell.border = Border(left=thin, right=thin, top=thin, bottom=thin)
+    cell.alignment = Alignment(horizontal="center", vertical="center", wrap_text=wrap)
+
+
+def header_rows(ws, row, labels, names, col=1):
+    """The two header rows of a table: the quantity in the report's language (bold,
+    wrapped, filled) over the CSV column name (small grey italic), from ``(row, col)``.
+    Returns the first data row."""
+    from openpyxl.styles import Alignment
+
+    for j, (label, name) in enumerate(zip(labels, names), start=col):
+        style_header(ws.cell(row, j, label))
+        c = ws.cell(row + 1, j, str(name))
+        c.font = font(italic=True, size=8, color="555555")
+        c.alignment = Alignment(horizontal="center")
+    return row + 2
+
+
+def new_workbook():
+    """An empty :class:`openpyxl.Workbook` whose default font is :data:`FONT`."""
+    from openpyxl import Workbook
+
+    wb = Workbook()
+    unify_fonts(wb)
+    return wb
+
+
+def unify_fonts(wb):
+    """Every font of ``wb`` (cells, the default and the named styles) in the family
+    :data:`FONT`, keeping size, weight, slant and colour."""
+    from openpyxl.utils.indexed_list import IndexedList
+
+    new = IndexedList()
+    for f in wb._fonts:
+        g = copy.copy(f)
+        g.name, g.scheme, g.family = FONT, None, 2
+        list.append(new, g)
+        new._dict.setdefault(g, len(new) - 1)
+    new.clean = True
+    wb._fonts = new
+    for st in wb._named_styles:
+        g = copy.copy(st.font)
+        g.name, g.scheme, g.family = FONT, None, 2
+        st.font = g
+    return wb
+
+
+def _merged(ws):
+    """{(row, col) of a merged range's first cell: range}, and the set of covered cells."""
+    first, covered = {}, set()
+    for r in ws.merged_cells.ranges:
+        first[(r.min_row, r.min_col)] = r
+        for row in range(r.min_row, r.max_row + 1):
+            for col in range(r.min_col, r.max_col + 1):
+                if (row, col) != (r.min_row, r.min_col):
+                    covered.add((row, col))
+    return first, covered
+
+
+def table_blocks(ws):
+    """The table columns of a sheet: ``[(column, first row, last row)]``, each a run of
+    consecutive rows that hold a number in that column and at least two numbers in the
+    row (a list of single values with labels is not a table, nor a list of one quantity
+    a row: numbers after three texts such as quantity, unit and key)."""
+    numeric = {}
+    for row in ws.iter_rows():
+        cols = [c.column for c in row if _is_number(c.value)]
+        lead = 0                  # texts before the first number (quantity, unit, key)
+        for c in row:
+            if _is_number(c.value):
+                break
+            lead += isinstance(c.value, str) and _col_width(ws, c.column) > 0
+        if len(cols) >= 2 and lead < 3:
+            numeric[row[0].row] = cols
+    blocks = []
+    runs = {}
+    for r in sorted(numeric):
+        for col in numeric[r]:
+            start, end = runs.get(col, (None, None))
+            if end is not None and end == r - 1:
+                runs[col] = (start, r)
+            else:
+                if start is not None:
+                    blocks.append((col, start, end))
+                runs[col] = (r, r)
+    blocks += [(col, s, e) for col, (s, e) in runs.items()]
+    return sorted(blocks)
+
+
+def fit_numbers(ws):
+    """One number format per column of each table (:func:`table_blocks`), and each number
+    alone in its row its own six digits; text formats (``@``) are kept."""
+    in_table = set()
+    for col, r0, r1 in table_blocks(ws):
+        cells = [ws.cell(r, col) for r in range(r0, r1 + 1)]
+        fmt = number_format(c.value for c in cells)
+        for c in cells:
+            c.number_format = fmt
+            in_table.add((c.row, col))
+    for row in ws.iter_rows():
+        for c in row:
+            if _is_number(c.value) and (c.row, c.column) not in in_table \
+                    and c.number_format != "@":
+                c.number_format = number_format([c.value])
+
+
+def _cell_need(c):
+    """(width needed, wraps) of one cell's shown text on one line."""
+    bold, size = bool(c.font and c.font.b), (c.font.sz if c.font and c.font.sz else 11)
+    if _is_number(c.value):
+        return text_width(shown(c.value, c.number_format), bold, size), False
+    text = str(c.value)
+    wrap = bool(c.alignment and c.alignment.wrap_text)
+    if wrap and "\n" not in text and len(text.split()) > 1 and bold:
+        # a wrapped header: its longest word, or a third of it, sets the width
+        return max(max(text_width(w, bold, size) for w in text.split()),
+                   text_width(text, bold, size) / 3), True
+    return max(text_width(p, bold, size) for p in text.split("\n")), wrap
+
+
+def _lone(ws, c):
+    """Whether ``c`` is the only value of its row (a title: it may run over empty cells;
+    a hidden column's key does not count)."""
+    return all(d.value is None or not _col_width(ws, d.column) for d in ws[c.row]
+               if d.column != c.column)
+
+
+def fit_columns(ws, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH):
+    """Column widths from the text and the numbers they hold; a text longer than
+    ``max_width`` wraps.  ``fixed``: {column letter: width} kept as given.  Titles (the
+    only value of their row) and merged cells do not widen a column."""
+    from openpyxl.styles import Alignment
+    from openpyxl.utils import get_column_letter
+
+    fixed = fixed or {}
+    first, covered = _merged(ws)
+    need = {}
+    for row in ws.iter_rows():
+        for c in row:
+            if c.value is None or (c.row, c.column) in covered or (c.row, c.column) in first:
+                continue
+            if isinstance(c.value, str) and _lone(ws, c) \
+                    and not (c.alignment and c.alignment.wrap_text):
+                continue                # a title runs over the empty cells beside it
+            w, _ = _cell_need(c)
+            need[c.column] = max(need.get(c.column, 0.0), w)
+    for col, w in need.items():
+        letter = get_column_letter(col)
+        if letter in fixed or ws.column_dimensions[letter].hidden:
+            continue
+        width = min(max_width, max(min_width, w + _PAD))
+        ws.column_dimensions[letter].width = round(width, 1)
+    for letter, w in fixed.items():
+        ws.column_dimensions[letter].width = w
+    # texts wider than their column wrap
+    for row in ws.iter_rows():
+        for c in row:
+            if not isinstance(c.value, str) or (c.row, c.column) in covered \
+                    or not _col_width(ws, c.column):
+                continue
+            width = _span_width(ws, c, first)
+            if c.alignment and c.alignment.wrap_text:
+                continue
+            if (c.row, c.column) not in first and _lone(ws, c):
+                if _cell_need(c)[0] <= _used_width(ws, c.column):
+                    continue
+                width = _used_width(ws, c.column)
+                ws.merge_cells(start_row=c.row, start_column=c.column, end_row=c.row,
+                               end_column=max(ws.max_column, c.column))
+            if _cell_need(c)[0] > width:
+                al = copy.copy(c.alignment) if c.alignment else Alignment()
+                c.alignment = Alignment(horizontal=al.horizontal, vertical="top",
+                                        wrap_text=True)
+
+
+def _col_width(ws, col):
+    from openpyxl.utils import get_column_letter
+
+    d = ws.column_dimensions[get_column_letter(col)]
+    return 0.0 if d.hidden else (d.width or 8.43)
+
+
+def _last_print_col(ws):
+    """The last column of the sheet's print area (0 when it has none)."""
+    if not ws.print_area:
+        return 0
+    area = ws.print_area[0] if isinstance(ws.print_area, (list, tuple)) else ws.print_area
+    m = re.search(r":\$?([A-Z]+)\$?\d+$", str(area))
+    if not m:
+        return 0
+    from openpyxl.utils import column_index_from_string
+
+    return column_index_from_string(m.group(1))
+
+
+def _used_width(ws, col):
+    last = max(ws.max_column, col, _last_print_col(ws))
+    return sum(_col_width(ws, j) for j in range(col, last + 1))
+
+
+def columns_cm(ws, first, last):
+    """Printed width of columns ``first`` … ``last`` (1-based) at 100 % [cm] (a column
+    ``w`` units wide is 7·w + 5 pixels at 96 dpi)."""
+    return sum((7 * _col_width(ws, j) + 5) * 2.54 / 96 for j in range(first, last + 1))
+
+
+def _span_width(ws, c, first=None):
+    first = first if first is not None else _merged(ws)[0]
+    m = first.get((c.row, c.column))
+    cols = range(m.min_col, m.max_col + 1) if m else [c.column]
+    return sum(_col_width(ws, j) for j in cols)
+
+
+def fit_rows(ws):
+    """Rows of wrapped text exactly as tall as their most lines (at their columns'
+    width); other rows keep their height."""
+    first, covered = _merged(ws)
+    need = {}
+    for row in ws.iter_rows():
+        for c in row:
+            if not (isinstance(c.value, str) and c.alignment and c.alignment.wrap_text) \
+                    or (c.row, c.column) in covered or not _col_width(ws, c.column):
+                continue
+            bold, size = bool(c.font and c.font.b), (c.font.sz if c.font and c.font.sz
+                                                      else 11)
+            lines = wrapped_lines(c.value, _span_width(ws, c, first), bold, size)
+            need[c.row] = max(need.get(c.row, 0.0), lines * LINE_PT * size / 11 + 2)
+    for r, h in need.items():
+        ws.row_dimensions[r].height = round(max(h, 15.0), 1)
+
+
+def page_setup(ws, orientation=None, title_rows=None, title_cols=None):
+    """A4 in ``orientation`` (the sheet's own, else landscape), as many pages wide as its
+    visible columns need, as many tall as needed; ``title_rows`` ("3:4") repeated on every
+    page."""
+    ps = ws.page_setup
+    ps.paperSize = ws.PAPERSIZE_A4
+    ps.orientation = orientation or ps.orientation or "landscape"
+    ws.sheet_properties.pageSetUpPr.fitToPage = True
+    ps.fitToHeight = 0
+    last = _last_print_col(ws) or ws.max_column
+    width = sum(_col_width(ws, j) for j in range(1, last + 1))
+    ps.fitToWidth = max(1, math.ceil(width / WIDTH_PER_PAGE))
+    if title_rows:
+        ws.print_title_rows = title_rows
+    if title_cols:
+        ws.print_title_cols = title_cols
+
+
+def finish(wb, fixed=None, max_width=MAX_WIDTH):
+    """Give every sheet of ``wb`` the house look: one font family, one number format per
+    table column, widths from the content, wrapped rows tall enough, A4 setup.
+
+    ``fixed``: {sheet title: {column letter: width}} for columns a writer sizes itself
+    (a chart's anchor columns).  Returns ``wb``."""
+    unify_fonts(wb)
+    hidden = [ws for ws in wb.worksheets if ws.sheet_state != "visible"]
+    for ws in hidden:                    # data of charts: after every visible sheet
+        wb.move_sheet(ws, len(wb.worksheets) - 1 - wb.worksheets.index(ws))
+    for ws in wb.worksheets:
+        if ws.sheet_state != "visible":
+            page_setup(ws)
+            continue
+        fit_numbers(ws)
+        fit_columns(ws, max_width=max_width, fixed=(fixed or {}).get(ws.title))
+        fit_rows(ws)
+        page_setup(ws)
+    return wb
+
+
+def save(wb, path):
+    """Save ``wb`` atomically (a temporary file beside ``path``, then renamed), every
+    float at full precision (:func:`crankbase.output.full_precision_xlsx`)."""
+    from .output import atomic_path, full_precision_xlsx
+
+    with atomic_path(path) as tmp, full_precision_xlsx():
+        wb.save(tmp)
+    return path
+
+
+def bounded(n, bound=MAX_ROWS, keep=()):
+    """Row indices a sheet holds of a table of ``n`` rows: every row when ``n <= bound``,
+    else every k-th row (k the smallest that brings it under ``bound``) with the last row
+    and the rows ``keep`` (the extremes a chart must show) added.  Returns (indices, k)."""
+    import numpy as np
+
+    if n <= bound:
+        return np.arange(n), 1
+    k = math.ceil(n / bound)
+    idx = np.union1d(np.arange(0, n, k), np.asarray([n - 1, *keep], dtype=int))
+    return idx, k
+
+
+def summary_workbook(df, path, title, sheet="summary"):
+    """A one-table workbook: ``title`` in A1, the column names (the CSV header) in row 3,
+    the rows of ``df`` below, finished (:func:`finish`) and saved (:func:`save`); the
+    header row and the first column repeat on every printed page."""
+    wb = new_workbook()
+    ws = wb.active
+    ws.title = sheet
+    ws["A1"] = title
+    ws["A1"].font = font(bold=True, size=12)
+    for j, name in enumerate(df.columns, start=1):
+        style_header(ws.cell(3, j, str(name)))
+    for i, row in enumerate(df.itertuples(index=False), start=4):
+        for j, val in enumerate(row, start=1):
+            v = val.item() if hasattr(val, "item") else val
+            if v is not None and isinstance(v, float) and not math.isfinite(v):
+                v = None
+            c = ws.cell(i, j, v)
+            if isinstance(v, str):
+                c.data_type = "s"           # a name stays text, never a formula
+    ws.freeze_panes = "B4"
+    finish(wb)
+    page_setup(ws, "landscape", title_rows="3:3", title_cols="A:A")
+    return save(wb, path)
+
+
+def _unit(t, key):
+    """A unit from the catalogue; '' for a quantity without one (no entry)."""
+    try:
+        return t(key)
+    except KeyError:
+        return ""
+
+
+def words(lang, prefix, shape):
+    """The words of a sheet writer in ``lang`` from the catalogue (``sheet.po``), in the
+    ``shape`` the writer reads them: {name: "str" | ("tuple", n) | ("dict", keys) |
+    ("rows", keys)} → a text ``<prefix>.<name>``, a tuple of ``<prefix>.<name>.<i>``, a
+    dict of ``<prefix>.<name>.<key>``, or rows (key, label, unit) of
+    ``<prefix>.<name>.<key>`` and ``<prefix>.<name>.<key>.unit`` (no entry: no unit)."""
+    from .texts import texts
+
+    t = texts(lang)
+    out = {}
+    for k, kind in shape.items():
+        base = f"{prefix}.{k}"
+        if kind == "str":
+            out[k] = t(base)
+        elif kind[0] == "tuple":
+            out[k] = tuple(t(f"{base}.{i}") for i in range(kind[1]))
+        elif kind[0] == "dict":
+            out[k] = {sk: t(f"{base}.{sk}") for sk in kind[1]}
+        else:
+            out[k] = [(key, t(f"{base}.{key}"), _unit(t, f"{base}.{key}.unit"))
+                      for key in kind[1]]
+    return out
+
+
+class Words(dict):
+    """``Words(prefix, shape)[lang]``: :func:`words` of each language, read when first
+    asked (a module's word table without reading the catalogue at import)."""
+
+    def __init__(self, prefix, shape):
+        super().__init__()
+        self.prefix, self.shape = prefix, shape
+
+    def __missing__(self, lang):
+        self[lang] = words(lang, self.prefix, self.shape)
+        return self[lang]
+
+
+def sheet_rows(df):
+    """The rows of ``df`` a sheet holds: all, or every k-th (and the last) of a table
+    longer than :data:`MAX_ROWS` (a fine table step); the CSV beside the workbook keeps
+    every row."""
+    idx, k = bounded(len(df))
+    return df if k == 1 else df.iloc[idx]
+
+
+def thinned_note(full, shown, csv, lang):
+    """The note over a thinned table: which rows it holds, where the rest are."""
+    import math
+
+    from .texts import texts
+
+    return texts(lang)("sheet.thinned", k=math.ceil(len(full) / MAX_ROWS),
+                       shown=len(shown), n=len(full), csv=csv)

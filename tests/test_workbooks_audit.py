@@ -1,0 +1,203 @@
+"""Every workbook the tool writes, checked as a reader sees it (issue 23): one automatic
+check (tests/workbook_audit.py: no text cut off, no number shown as ###, wrapped rows tall
+enough, one number format per column of each table, one font family) run over every
+bundled example's workbook in both languages, built through the library's report
+functions (no plots, no rendering), each saved and read back as a reader opens it."""
+from __future__ import annotations
+
+import pytest
+from openpyxl import load_workbook
+from workbook_audit import problems
+
+import engine
+from crankbase.resources import example_path
+
+ENGINES = ("petrol_vaz2106.toml", "diesel_d240.toml", "petrol_bmw_m54.toml",
+           "diesel_kamaz740.toml")
+LINKAGES = ("ratchet.toml", "press.toml")
+DYNAMICS = ("flywheel_seed.toml", "press_dynamics.toml", "petrol_dynamics.toml",
+            "hoist_machine.toml")
+LANGS = ("ru", "en")
+
+
+def engine_workbook(name, lang, bearings=False):
+    """The engine report workbook of a bundled example, as ``crankdyn engine`` builds it."""
+    from engine.report import a4_setup, add_engine_sheets, build_workbook
+
+    study = engine.load(example_path(name))
+    whole = engine.analyze_engine(study.spec, study.train, study.settings)
+    wb = add_engine_sheets(build_workbook(whole.cylinder, lang), whole, lang)
+    if bearings:
+        from crankdyn.cmd_engine import _bearings
+        from engine.bearing_report import add_bearing_sheets
+        from engine.bearing_spec import read_bearing_inputs
+
+        inputs = read_bearing_inputs(example_path(name), study.spec)
+        b = _bearings(study.spec, whole.cylinder.table, whole.cylinder.curves, inputs,
+                      whole, lang)
+        add_bearing_sheets(wb, b["csv"], b["analysis"], lang)
+    return a4_setup(wb)
+
+
+def _saved(wb, path):
+    from engine.report import save_workbook
+
+    save_workbook(wb, path)
+    return path
+
+
+def _all(tmp):
+    """{key: path} of every workbook."""
+    import linkage
+    from dynamics.report import build_workbook as dyn_workbook
+    from dynamics.spec import load_dynamics_spec, run_job
+    from linkage import synthesis as syn
+    from linkage import synthesis_report as rep
+    from linkage.report import write_workbook
+
+    out = {}
+    for lang in LANGS:
+        for name in ENGINES:
+            out[("engine", name, lang)] = _saved(
+                engine_workbook(name, lang, bearings=name == "petrol_vaz2106.toml"),
+                tmp / f"{name}_{lang}.xlsx")
+        for name in LINKAGES:
+            p = tmp / f"{name}_{lang}.xlsx"
+            write_workbook(linkage.analyze(linkage.load_spec(example_path(name))), p, lang)
+            out[("linkage", name, lang)] = p
+        design = syn.design_equal_l2_l3(0.15, 30.0)
+        p = tmp / f"synth_{lang}.xlsx"
+        rep.write_workbook(p, rep.table1(30.0), 30.0, rep.mechanism_table(design, 0.4),
+                           lang=lang)
+        out[("synth", lang)] = p
+        for name in DYNAMICS:
+            job = load_dynamics_spec(example_path(name))
+            out[("dynamics", name, lang)] = _saved(
+                dyn_workbook(run_job(job), lang, name=job.model.name),
+                tmp / f"dyn_{name}_{lang}.xlsx")
+        out[("variants", lang)] = variants_summary(tmp / f"variants_{lang}", lang)
+        out[("check", lang)] = checked_copy(out[("engine", "diesel_d240.toml", lang)],
+                                            tmp / f"check_{lang}", lang)
+    return out
+
+
+def variants_summary(folder, lang):
+    """The variants summary workbook of three variants of the petrol example."""
+    from crankbase.workbook import summary_workbook
+    from engine.spec import read_toml
+    from engine.variants import (SUMMARY_FIELDS, VariantRow, load_variant,
+                                 summary_record)
+
+    base, _ = read_toml(example_path("petrol_vaz2106.toml"))
+    records = []
+    for i, bore in enumerate((76, 79, 82.5), start=2):
+        v = VariantRow(i, f"V{i - 1:02d}", {"engine.bore_mm": bore})
+        study = load_variant(base, v, example_path("petrol_vaz2106.toml").parent)
+        res = engine.analyze(study.spec, study.settings)
+        records.append(summary_record(v.variant, study.spec, res.summary))
+    import pandas as pd
+
+    from crankbase.texts import texts
+
+    folder.mkdir()
+    df = pd.DataFrame(records, columns=list(SUMMARY_FIELDS))
+    return summary_workbook(df, folder / "variants_summary.xlsx",
+                            texts(lang)("sheet.variants.title"), sheet="variants")
+
+
+def checked_copy(report, folder, lang):
+    """``crankdyn check``'s marked copy of a report with one cell altered."""
+    from crankbase.checking import compare, mark_workbook, read_student_table
+    from engine.check import KEY, computed_rows, known_columns
+
+    src = load_workbook(report)
+    ws = src.worksheets[1]
+    ws.cell(8, 2).value = ws.cell(8, 2).value + 7.0           # one wrong ΔPг, mm
+    folder.mkdir()
+    student = folder / "student.xlsx"
+    src.save(student)
+    study = engine.load(example_path("diesel_d240.toml"))
+    table = read_student_table(student, KEY, known_columns(), {})
+    computed = computed_rows(study.spec, study.settings, table.data[KEY].to_numpy(float))
+    check = compare(table, computed, KEY)
+    dst = folder / "checked.xlsx"
+    assert mark_workbook(table, check, dst, lang) >= 1
+    return dst
+
+
+@pytest.fixture(scope="module")
+def workbooks(tmp_path_factory):
+    return _all(tmp_path_factory.mktemp("audit"))
+
+
+def test_every_workbook_reads_cleanly(workbooks):
+    """No cut text, no ###, tall enough wrapped rows, one format per table column, one
+    font family, in every workbook of every bundled example in both languages."""
+    found = []
+    for key, path in workbooks.items():
+        found += problems(load_workbook(path), " ".join(map(str, key)))
+    assert not found, "\n".join(found[:40]) + f"\n({len(found)} problems)"
+
+
+def test_the_audit_catches_each_defect(tmp_path):
+    """The check finds each defect of issue 23 when it is put back: a label cut off by
+    its neighbour, mixed decimals in one column, a serif header over sans data, a wrapped
+    label in a one-line row, a number too wide for its column."""
+    from openpyxl.styles import Alignment, Font
+
+    from crankbase.workbook import finish, new_workbook
+
+    def fresh():
+        wb = new_workbook()
+        ws = wb.active
+        ws.append(["Неравномерность μ = (Mкр.max − Mкр.min)/Mкр.ср", 0.25, ""])
+        ws.append(["α, °", "Mкр, Н·м", "ΣMкр, Н·м"])
+        for a in range(0, 40, 10):
+            ws.append([float(a), 1176.1 + a / 3, 1097.6 - a / 7])
+        finish(wb)
+        return wb, ws
+    wb, ws = fresh()
+    assert problems(wb) == []
+    wb, ws = fresh()
+    ws.column_dimensions["A"].width = 20
+    assert any("cut off" in p for p in problems(wb))
+    wb, ws = fresh()
+    ws["B4"].number_format = "0.00" if ws["B3"].number_format != "0.00" else "0.0"
+    assert any("formats" in p for p in problems(wb))
+    wb, ws = fresh()
+    ws["A2"].font = Font(name="Times New Roman", bold=True)
+    assert any("font families" in p for p in problems(wb))
+    wb, ws = fresh()
+    ws["A1"].alignment = Alignment(wrap_text=True)
+    ws.column_dimensions["A"].width = 15
+    ws.row_dimensions[1].height = 15
+    assert any("lines in a row" in p for p in problems(wb))
+    wb, ws = fresh()
+    ws["B3"].value = 123456789.123
+    ws["B3"].number_format = "0.000"
+    assert any("###" in p for p in problems(wb))
+
+
+@pytest.mark.slow
+def test_a_thinned_workbook_reads_cleanly(tmp_path):
+    """A fine table step (0.25°: 2881 rows, thinned on the sheets with a note) passes
+    the same check, the bearing sheets included."""
+    import dataclasses
+
+    from crankdyn.cmd_engine import _bearings
+    from engine.bearing_report import add_bearing_sheets
+    from engine.bearing_spec import read_bearing_inputs
+    from engine.report import a4_setup, add_engine_sheets, build_workbook
+
+    path = example_path("petrol_vaz2106.toml")
+    study = engine.load(path)
+    settings = dataclasses.replace(study.settings, step_deg=0.25)
+    whole = engine.analyze_engine(study.spec, study.train, settings)
+    for lang in LANGS:
+        wb = add_engine_sheets(build_workbook(whole.cylinder, lang), whole, lang)
+        b = _bearings(study.spec, whole.cylinder.table, whole.cylinder.curves,
+                      read_bearing_inputs(path, study.spec), whole, lang)
+        add_bearing_sheets(wb, b["csv"], b["analysis"], lang)
+        saved = _saved(a4_setup(wb), tmp_path / f"fine_{lang}.xlsx")
+        found = problems(load_workbook(saved), f"fine {lang}")
+        assert not found, "\n".join(found[:20])

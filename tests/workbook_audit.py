@@ -1,0 +1,55 @@
+"""One automatic check of a workbook as a reader sees it (issue 23): no text cut off and
+no number shown as ####, wrapped rows tall enough for their lines, one number format per
+column of each table, one font family.  Used by tests/test_workbooks_audit.py over every
+workbook the tool writes."""
+from __future__ import annotations
+
+from crankbase.workbook import (LINE_PT, _cell_need, _col_width, _is_number, _merged,
+                                _span_width, _used_width, table_blocks, wrapped_lines)
+
+
+def problems(wb, name=""):
+    """Every defect of ``wb`` as a list of strings (empty: the workbook is clean)."""
+    out = []
+    families = {}
+    for ws in wb.worksheets:
+        if ws.sheet_state != "visible":
+            continue
+        first, covered = _merged(ws)
+        for row in ws.iter_rows():
+            for c in row:
+                if c.value is None or (c.row, c.column) in covered \
+                        or not _col_width(ws, c.column):          # a hidden column
+                    continue
+                where = f"{name} {ws.title}!{c.coordinate}"
+                families.setdefault(c.font.name if c.font else None, where)
+                need, wrap = _cell_need(c)
+                width = _span_width(ws, c, first)
+                if _is_number(c.value):
+                    if need > width:
+                        out.append(f"{where}: number {c.value!r} shown as ### "
+                                   f"({need:.1f} > {width:.1f})")
+                    continue
+                if wrap:
+                    size = c.font.sz or 11
+                    lines = wrapped_lines(c.value, width, bool(c.font.b), size)
+                    height = ws.row_dimensions[c.row].height or 15 * size / 11
+                    if height < lines * LINE_PT * size / 11 * 0.95:
+                        out.append(f"{where}: {lines} lines in a row {height} pt tall: "
+                                   f"{c.value[:40]!r}")
+                    continue
+                right = ws.cell(c.row, (first[(c.row, c.column)].max_col
+                                        if (c.row, c.column) in first else c.column) + 1)
+                room = (_used_width(ws, c.column) if right.value is None and all(
+                    d.value is None for d in ws[c.row] if d.column > c.column) else width)
+                if need > room:
+                    out.append(f"{where}: text cut off ({need:.1f} > {room:.1f}): "
+                               f"{c.value[:40]!r}")
+        for col, r0, r1 in table_blocks(ws):
+            fmts = {ws.cell(r, col).number_format for r in range(r0, r1 + 1)}
+            if len(fmts) > 1:
+                out.append(f"{name} {ws.title}!{ws.cell(r0, col).coordinate}:"
+                           f"{ws.cell(r1, col).coordinate}: formats {sorted(fmts)}")
+    if len(families) > 1:
+        out.append(f"{name}: font families {families}")
+    return out
