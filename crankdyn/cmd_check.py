@@ -30,9 +30,9 @@ def add_parser(sub):
                     "names, or either with --map), compute the same rows from the spec and "
                     "mark every value outside the tolerance |student - computed| <= atol + "
                     "rtol*|computed| (default rtol 0.02: a hand-drawn plan is good to a few "
-                    "per cent; default atol 0.2 %% of the column's largest magnitude: a value "
-                    "at its column's peak may be off by 2.2 %% of itself, at a third of the "
-                    "peak by 2.6 %%, so a 3 %% error above a third of the peak is caught). "
+                    "per cent; default atol 0.2 % of the column's largest magnitude: a value "
+                    "at its column's peak may be off by 2.2 % of itself, at a third of the "
+                    "peak by 2.6 %, so a 3 % error above a third of the peak is caught). "
                     "With --variants, STUDENT is a folder: a whole class, each file checked "
                     "against its own variant.")
     p.add_argument("spec", metavar="SPEC.toml",
