@@ -627,7 +627,7 @@ class StudentVerdict:
     student: Path
     variant: str | None
     status: str
-    detail: str = ""
+    detail: object = ""
     result: CheckResult | None = None
     files: CheckFiles | None = None
 
