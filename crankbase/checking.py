@@ -542,7 +542,7 @@ def variant_in_workbook(path):
     from openpyxl import load_workbook
 
     labels = "|".join(VARIANT_LABELS)
-    pattern = re.compile(rf"^(?:{labels})\s*(?:[:№#]\s*)?(.*)$", re.IGNORECASE)
+    pattern = re.compile(rf"^(?:{labels})(?:\s*[:№#]\s*|\s+|$)(.*)$", re.IGNORECASE)
     try:
         wb = load_workbook(path, read_only=True, data_only=True)
     except _unreadable():          # the check itself says why it cannot read the file

@@ -172,6 +172,31 @@ def test_class_lines_for_files_matched_to_none_or_two(petrol_variants, tmp_path)
     assert "no column 'alpha_deg'" in got["detail"][3]
 
 
+def test_variant_cell_of_a_workbook(tmp_path):
+    from openpyxl import Workbook
+
+    from crankbase.checking import variant_in_workbook
+
+    def book(*cells):
+        wb = Workbook()
+        for coord, value in cells:
+            wb.active[coord] = value
+        wb.save(tmp_path / "s.xlsx")
+        return tmp_path / "s.xlsx"
+
+    assert variant_in_workbook(book(("B2", "Вариант"), ("D2", "v02"))) == "v02"
+    assert variant_in_workbook(book(("A1", "variant: V7"))) == "V7"
+    assert variant_in_workbook(book(("A1", "Вариант №"), ("B1", 12.0))) == "12"
+    assert variant_in_workbook(book(("A1", "Variants"), ("B1", "v02"))) is None
+    assert variant_in_workbook(book(("A1", "Фамилия"), ("B1", "v02"))) is None
+    # the cell decides when the file name names no variant; both count when both do
+    assert match_variant(book(("A1", "Вариант"), ("B1", "V02")), ["v01", "v02"]) == \
+        (["v02"], "V02")
+    wb = tmp_path / "ivanov_v01.xlsx"
+    (tmp_path / "s.xlsx").rename(wb)
+    assert match_variant(wb, ["v01", "v02"])[0] == ["v01", "v02"]
+
+
 def test_matching_rule_whole_words():
     names = ["v1", "v10", "v02", "B"]
     assert match_variant("ivanov_v10.xlsx", names)[0] == ["v10"]
