@@ -342,8 +342,8 @@ class VariantsRun:
         return [o for o in self.outcomes if not o.ok]
 
     def summary_lines(self, lang: str = "ru") -> list[str]:
-        """How many variants were written and failed (the failed rows), and the summary
-        table, in ``lang``."""
+        """How many variants were written and failed (the failed rows), the summary table
+        and, when any was written, where each variant's spec is, in ``lang``."""
         from crankbase.texts import texts
 
         t = texts(lang)
@@ -353,7 +353,8 @@ class VariantsRun:
         return [t.n("variants.summary.result", len(self.outcomes),
                     written=len(self.outcomes) - len(bad), folder=str(self.folder),
                     failed=len(bad), rows=rows),
-                t("variants.summary.table", path=str(self.summary_xlsx))]
+                t("variants.summary.table", path=str(self.summary_xlsx))] + (
+            [t("variants.summary.specs")] if len(bad) < len(self.outcomes) else [])
 
 
 def _one_variant(task) -> VariantOutcome:

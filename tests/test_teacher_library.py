@@ -47,6 +47,10 @@ def test_run_variants_reports_each_row_and_the_summary(tmp_path):
                     "1 failed (row 3)"
     assert ru[0] == f"вариантов: 2; записано 1 (по папке на вариант в {tmp_path / 'out'}), " \
                     "с ошибками 1 (строка 3)"
+    assert en[2] == ("each variant's folder holds its full spec <variant>.toml (for "
+                     "crankdyn engine and crankdyn check)")
+    assert run.outcomes[0].spec == tmp_path / "out" / "A" / "A.toml"
+    assert run.outcomes[1].spec is None
     assert not CYRILLIC.search("\n".join(en))
     with pytest.raises(SpecError, match="^jobs: got 0"):
         run_variants(PETROL, table, tmp_path / "o2", jobs=0)
