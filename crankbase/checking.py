@@ -25,13 +25,15 @@ from typing import Callable
 
 import numpy as np
 
-from .errors import Problem, SpecError
+from .errors import Problem, SpecError, Text
 from .texts import texts
 from .tolerances import CHECK_ATOL_OF_SCALE, CHECK_RTOL
 
 __all__ = ["StudentTable", "read_student_table", "parse_mapping", "compare", "verdicts",
            "mark_workbook", "CHECK_COLUMNS", "CheckSide", "CheckResult", "CheckFiles",
-           "check_table", "write_check"]
+           "check_table", "write_check", "tolerance_text", "STUDENT_SUFFIXES", "VARIANT_LABELS",
+           "student_files", "variant_in_workbook", "match_variant", "StudentVerdict",
+           "ClassCheck", "CLASS_COLUMNS", "CLASS_FILES", "check_class"]
 
 #: Columns of check.csv (``alpha_deg`` is replaced by the table's key column).
 CHECK_COLUMNS = ("column", "student", "computed", "deviation", "ok")
@@ -263,6 +265,19 @@ def compare(student: StudentTable, computed, key, rtol=None, atol=None):
     return out
 
 
+def tolerance_text(rtol=None, atol=None, lang="en") -> str:
+    """What the tolerance accepts, in ``lang``: with the default ``atol`` (a fraction of the
+    column's largest magnitude) the error allowed, in % of a value's own size, at its
+    column's peak and at a third of the peak; with a given ``atol`` the rule itself."""
+    t = texts(lang)
+    rtol = CHECK_RTOL if rtol is None else float(rtol)
+    if atol is not None:
+        return t("check.tolerance.absolute", atol=float(atol), rtol_pct=100 * rtol)
+    a = CHECK_ATOL_OF_SCALE
+    return t("check.tolerance.scale", atol_pct=100 * a, rtol_pct=100 * rtol,
+             peak_pct=100 * (rtol + a), third_pct=100 * (rtol + 3 * a))
+
+
 def verdicts(check, key, lang="en"):
     """One line per column: all rows right, or how many are wrong and where."""
     t = texts(lang)
@@ -354,6 +369,7 @@ class CheckResult:
     table: object
     key: str
     rtol: float
+    atol: float | None = None
 
     @property
     def n_wrong(self) -> int:
@@ -372,6 +388,7 @@ class CheckResult:
         lines = [t("check.head", student=self.student.source.name,
                    rows=t.n("common.rows", len(self.student.data)),
                    columns=t.n("check.columns_checked", cols), rtol=self.rtol)]
+        lines.append(tolerance_text(self.rtol, self.atol, lang))
         lines += verdicts(self.table, self.key, lang)
         if self.student.ignored:
             lines.append(t("check.ignored", columns=", ".join(self.student.ignored)))
@@ -424,6 +441,22 @@ def check_table(side: CheckSide, student_path, rtol=None, atol=None,
         Bad tolerances or mapping (named ``rtol``, ``atol``, ``mapping``; all at once), an
         unreadable table, or keys that are not numbers where numbers are due.
     """
+    mapping = _check_options(rtol, atol, mapping)
+    student_path = Path(student_path)
+    student = read_student_table(student_path, side.key, side.columns, mapping)
+    keys = student.data[side.key]
+    if side.numeric_key:
+        bad = [k for k in keys if not isinstance(k, float) or k != k]
+        if bad:
+            raise SpecError(f"{student_path}: {side.key} must be numbers; got {bad[:5]}")
+    computed = side.rows(keys.tolist())
+    table = compare(student, computed, side.key, rtol, atol)
+    return CheckResult(student, table, side.key, CHECK_RTOL if rtol is None else float(rtol),
+                       None if atol is None else float(atol))
+
+
+def _check_options(rtol, atol, mapping):
+    """Check the tolerances and the mapping (all problems at once); the mapping as a dict."""
     problems = []
     if rtol is not None and not (isinstance(rtol, (int, float)) and 0 <= rtol < 1):
         problems.append(Problem("rtol", f"got {rtol:g}; must be >= 0 and < 1"
@@ -438,16 +471,7 @@ def check_table(side: CheckSide, student_path, rtol=None, atol=None,
             problems += exc.problems
     if problems:
         raise SpecError(problems)
-    student_path = Path(student_path)
-    student = read_student_table(student_path, side.key, side.columns, mapping)
-    keys = student.data[side.key]
-    if side.numeric_key:
-        bad = [k for k in keys if not isinstance(k, float) or k != k]
-        if bad:
-            raise SpecError(f"{student_path}: {side.key} must be numbers; got {bad[:5]}")
-    computed = side.rows(keys.tolist())
-    table = compare(student, computed, side.key, rtol, atol)
-    return CheckResult(student, table, side.key, CHECK_RTOL if rtol is None else float(rtol))
+    return mapping
 
 
 def write_check(result: CheckResult, out, lang: str = "ru", inputs=()) -> CheckFiles:
@@ -471,3 +495,344 @@ def write_check(result: CheckResult, out, lang: str = "ru", inputs=()) -> CheckF
         n_marked = (mark_workbook(student, result.table, stage / marked.name, lang)
                     if marked else 0)
     return CheckFiles(check_csv, marked, n_marked)
+
+
+# ------------------------------------------------------------------ a whole class at once
+#: Student files a class check reads from the students' folder (not its subfolders).
+STUDENT_SUFFIXES = (".xlsx", ".xlsm", ".csv")
+
+#: Labels of the workbook cell that names the student's variant (case-insensitive, a
+#: trailing ":" allowed); the variant is the next non-empty cell to the right, or the rest
+#: of the same cell (``Вариант: v02``).
+VARIANT_LABELS = ("вариант", "variant")
+
+#: Columns of the class verdict table.
+CLASS_COLUMNS = ("student", "variant", "columns_wrong", "cells_wrong", "verdict", "detail")
+
+#: The class verdict files, in the output folder.
+CLASS_FILES = ("class_check.csv", "class_check.xlsx")
+
+_LABEL_SCAN_ROWS, _LABEL_SCAN_COLS = 30, 30
+
+
+def student_files(folder) -> list[Path]:
+    """The students' files of a folder: ``.xlsx``, ``.xlsm``, ``.csv``, by name; hidden
+    files and Excel's lock files (``~$…``) are skipped, subfolders are not searched."""
+    folder = Path(folder)
+    return sorted((p for p in folder.iterdir()
+                   if p.is_file() and p.suffix.lower() in STUDENT_SUFFIXES
+                   and not p.name.startswith((".", "~$"))), key=lambda p: p.name)
+
+
+def _text(v) -> str:
+    if isinstance(v, float) and v.is_integer():
+        v = int(v)
+    return "" if v is None else str(v).strip()
+
+
+def variant_in_workbook(path):
+    """The variant a workbook names: the cell right of a cell labelled «Вариант» or
+    «Variant» (:data:`VARIANT_LABELS`), or the rest of such a cell (``Вариант: v02``), in
+    the first rows and columns of any sheet; None for a CSV or a workbook without one."""
+    import re
+
+    path = Path(path)
+    if path.suffix.lower() not in (".xlsx", ".xlsm"):
+        return None
+    from openpyxl import load_workbook
+
+    labels = "|".join(VARIANT_LABELS)
+    pattern = re.compile(rf"^(?:{labels})(?:\s*[:№#]\s*|\s+|$)(.*)$", re.IGNORECASE)
+    try:
+        wb = load_workbook(path, read_only=True, data_only=True)
+    except _unreadable():          # the check itself says why it cannot read the file
+        return None
+    try:
+        for ws in wb.worksheets:
+            for row in ws.iter_rows(max_row=_LABEL_SCAN_ROWS, max_col=_LABEL_SCAN_COLS,
+                                    values_only=True):
+                for j, v in enumerate(row):
+                    m = pattern.match(_text(v)) if isinstance(v, str) else None
+                    if m is None:
+                        continue
+                    if m.group(1).strip():
+                        return m.group(1).strip()
+                    rest = [_text(x) for x in row[j + 1:] if _text(x)]
+                    if rest:
+                        return rest[0]
+    finally:
+        wb.close()
+    return None
+
+
+def _unreadable() -> tuple:
+    """The exceptions of a file that is not a workbook (or not a readable one)."""
+    import zipfile
+
+    from openpyxl.utils.exceptions import InvalidFileException
+
+    return (OSError, zipfile.BadZipFile, InvalidFileException)
+
+
+def match_variant(path, names) -> tuple[list, str | None]:
+    """The variants a student's file belongs to, by the rule of ``crankdyn check
+    --variants``: every variant whose name is a whole word of the file name (letters and
+    digits on neither side, case-insensitive: ``ivanov_v02.xlsx`` → ``v02``, not ``v0``
+    nor ``v021``), together with the variant the workbook names in its «Вариант» cell
+    (:func:`variant_in_workbook`).
+
+    Returns
+    -------
+    matched : list of str
+        The variants matched, in the order of ``names``: exactly one for a file that is
+        checked.
+    stated : str or None
+        The variant the workbook states (even one not in ``names``).
+    """
+    import re
+
+    path = Path(path)
+    stem = path.stem
+    stated = variant_in_workbook(path)
+    out = []
+    for name in names:
+        word = re.compile(rf"(?<![^\W_]){re.escape(str(name))}(?![^\W_])", re.IGNORECASE)
+        if word.search(stem) or (stated is not None
+                                 and stated.casefold() == str(name).casefold()):
+            out.append(name)
+    return out, stated
+
+
+@dataclass(frozen=True)
+class StudentVerdict:
+    """One student of a class check (:func:`check_class`).
+
+    Attributes
+    ----------
+    student : Path
+        The student's file.
+    variant : str or None
+        The variant it was matched to (None when matched to none or to several).
+    status : {"right", "wrong", "no_variant", "two_variants", "unreadable", "bad_variant"}
+    detail : str, Text or SpecError
+        The wrong columns (``S_N (1), T_N (2)``: column and cells wrong), why the file was
+        not matched (a :class:`~crankbase.errors.Text`) or the problem that stopped its
+        check; :meth:`detail_text` gives it in a language.
+    result : CheckResult or None
+        The check, when the file was checked.
+    files : CheckFiles or None
+        ``check.csv`` and the checked workbook, in the student's own folder.
+    """
+
+    student: Path
+    variant: str | None
+    status: str
+    detail: object = ""
+    result: CheckResult | None = None
+    files: CheckFiles | None = None
+
+    @property
+    def checked(self) -> bool:
+        return self.result is not None
+
+    def detail_text(self, lang: str = "ru") -> str:
+        """:attr:`detail` in ``lang``."""
+        d = self.detail
+        if isinstance(d, Text):
+            return d.render(lang)
+        if isinstance(d, SpecError):
+            return "; ".join(d.lines(lang) or [str(d)])
+        return str(d)
+
+
+@dataclass(frozen=True)
+class ClassCheck:
+    """A whole class checked (:func:`check_class`): one :class:`StudentVerdict` per
+    student file, in name order, and the verdict table ``class_check.csv`` / ``.xlsx``."""
+
+    folder: Path
+    students: tuple
+    csv: Path
+    xlsx: Path
+    rtol: float
+    atol: float | None = None
+
+    @property
+    def ok(self) -> bool:
+        """Every student's file was matched, read and right."""
+        return all(s.status == "right" for s in self.students)
+
+    def records(self, lang: str = "ru") -> list[dict]:
+        """The rows of the verdict table (:data:`CLASS_COLUMNS`), in ``lang``."""
+        t = texts(lang)
+        recs = []
+        for s in self.students:
+            cols = cells = None
+            if s.result is not None:
+                cells = s.result.n_wrong
+                cols = int(s.result.table.loc[~s.result.table["ok"], "column"].nunique())
+            recs.append(dict(student=s.student.name, variant=s.variant, columns_wrong=cols,
+                             cells_wrong=cells,
+                             verdict=t(f"check.class.status.{s.status}"),
+                             detail=s.detail_text(lang)))
+        return recs
+
+    def summary_lines(self, lang: str = "ru") -> list[str]:
+        """The class verdict in ``lang``: a line per student, then the counts and files."""
+        t = texts(lang)
+        lines = [t("check.class.head", students=t.n("check.class.students",
+                                                    len(self.students)),
+                   folder=str(self.folder))]
+        lines.append(tolerance_text(self.rtol, self.atol, lang))
+        for r in self.records(lang):
+            lines.append(t("check.class.line", student=r["student"],
+                           variant=r["variant"] or "—", verdict=r["verdict"],
+                           detail=r["detail"]).rstrip())
+        right = sum(s.status == "right" for s in self.students)
+        wrong = sum(s.status == "wrong" for s in self.students)
+        lines.append(t("check.class.tail", right=right, wrong=wrong,
+                       unchecked=len(self.students) - right - wrong, csv=str(self.csv),
+                       xlsx=str(self.xlsx)))
+        return lines
+
+
+def check_class(sides, students, out, lang: str = "ru", rtol=None, atol=None,
+                mapping=None, inputs=()) -> ClassCheck:
+    """Check a whole class: every student's file of a folder against its own variant.
+
+    Parameters
+    ----------
+    sides : mapping
+        Variant name → its :class:`CheckSide`, or a callable returning it (called once,
+        when a student of that variant is found; a :class:`~crankbase.errors.SpecError`
+        it raises is that variant's problem, a line of the verdict table).
+    students : str or Path
+        The folder of the students' files (:func:`student_files`); each is matched to a
+        variant by :func:`match_variant`.
+    out : str or Path
+        Output folder: ``class_check.csv`` and ``class_check.xlsx`` (one line per
+        student: :data:`CLASS_COLUMNS`) and, per student checked, a folder named after the
+        file with its ``check.csv`` and checked workbook (:func:`write_check`).
+    lang : {"ru", "en"}, default "ru"
+    rtol, atol, mapping
+        As :func:`check_table`, for every student.
+    inputs : sequence of path
+        Files no output may overwrite (the students' files always are).
+
+    Returns
+    -------
+    ClassCheck
+        A file matched to no variant or to several, or that cannot be read, is a line of
+        the verdict table (not checked), never an exception.
+
+    Raises
+    ------
+    SpecError
+        Bad tolerances or mapping, no variants, or the students' folder is missing.
+    """
+    from .output import check_not_input, safe_name
+    from .validation import check_lang
+
+    check_lang(lang)
+    mapping = _check_options(rtol, atol, mapping)
+    students = Path(students)
+    if not students.is_dir():
+        raise SpecError(Problem(str(students), "the students' folder does not exist"))
+    if not sides:
+        raise SpecError(Problem("variants", "no variants to check against"))
+    out = Path(out)
+    files = student_files(students)
+    inputs = [*inputs, *files]
+    check_not_input([out / n for n in CLASS_FILES], inputs)
+    names = list(sides)
+    cache, verdicts_, folders = {}, [], set()
+    for path in files:
+        matched, stated = match_variant(path, names)
+        if not matched:
+            detail = (Text("check.class.detail.unknown_variant", {"variant": stated})
+                      if stated is not None else Text("check.class.detail.no_variant"))
+            verdicts_.append(StudentVerdict(path, None, "no_variant", detail))
+            continue
+        if len(matched) > 1:
+            verdicts_.append(StudentVerdict(path, None, "two_variants", Text(
+                "check.class.detail.variants", {"variants": ", ".join(map(str, matched))})))
+            continue
+        name = matched[0]
+        if name not in cache:
+            side = sides[name]
+            try:
+                cache[name] = side() if callable(side) else side
+            except SpecError as exc:
+                cache[name] = exc
+        side = cache[name]
+        if isinstance(side, SpecError):
+            verdicts_.append(StudentVerdict(path, name, "bad_variant", side))
+            continue
+        try:
+            result = check_table(side, path, rtol, atol, mapping)
+        except SpecError as exc:
+            verdicts_.append(StudentVerdict(path, name, "unreadable", exc))
+            continue
+        except _unreadable() as exc:        # a damaged workbook, a file that is not one
+            verdicts_.append(StudentVerdict(path, name, "unreadable", SpecError(
+                Problem(path.name, f"cannot be read: {exc}"))))
+            continue
+        folder = safe_name(path.stem, "student")
+        if folder in folders:
+            folder = safe_name(path.name, "student")
+        folders.add(folder)
+        written = write_check(result, out / folder, lang, inputs=inputs)
+        bad = result.table[~result.table["ok"]]
+        detail = ", ".join(f"{c} ({n})" for c, n in
+                           bad.groupby("column", sort=False).size().items())
+        verdicts_.append(StudentVerdict(path, name, "right" if result.ok else "wrong",
+                                        detail, result, written))
+    run = ClassCheck(out, tuple(verdicts_), out / CLASS_FILES[0], out / CLASS_FILES[1],
+                     CHECK_RTOL if rtol is None else float(rtol),
+                     None if atol is None else float(atol))
+    _write_class(run, lang)
+    return run
+
+
+def _write_class(run: ClassCheck, lang: str) -> None:
+    """``class_check.csv`` and ``class_check.xlsx``, each written atomically."""
+    import pandas as pd
+    from openpyxl import Workbook
+    from openpyxl.styles import Alignment, Font, PatternFill
+
+    from .output import atomic_path, write_csv
+
+    t = texts(lang)
+    run.folder.mkdir(parents=True, exist_ok=True)
+    df = pd.DataFrame(run.records(lang), columns=list(CLASS_COLUMNS))
+    df["columns_wrong"] = df["columns_wrong"].astype("Int64")
+    df["cells_wrong"] = df["cells_wrong"].astype("Int64")
+    write_csv(df, run.csv)
+    wb = Workbook()
+    ws = wb.active
+    ws.title = t("check.class.sheet")
+    ws["A1"] = t("check.class.title")
+    ws["A1"].font = Font(bold=True, size=12)
+    ws["A2"] = tolerance_text(run.rtol, run.atol, lang).strip()
+    headers = [t(f"check.class.column.{c}") for c in CLASS_COLUMNS]
+    widths = (28, 12, 12, 12, 18, 60)
+    for j, (name, w) in enumerate(zip(headers, widths), start=1):
+        c = ws.cell(4, j, name)
+        c.font = Font(bold=True)
+        c.fill = PatternFill("solid", fgColor="DDE4EE")
+        c.alignment = Alignment(horizontal="center", wrap_text=True)
+        ws.column_dimensions[c.column_letter].width = w
+    fills = {"right": "C6EFCE", "wrong": "FF7C80"}
+    for i, (s, rec) in enumerate(zip(run.students, df.itertuples(index=False)), start=5):
+        for j, val in enumerate(rec, start=1):
+            c = ws.cell(i, j, None if pd.isna(val) else (int(val) if j in (3, 4) else val))
+            if isinstance(val, str):
+                c.data_type = "s"
+        ws.cell(i, 5).fill = PatternFill("solid", fgColor=fills.get(s.status, "FFEB9C"))
+    ws.freeze_panes = "B5"
+    ws.page_setup.paperSize = ws.PAPERSIZE_A4
+    ws.page_setup.orientation = "landscape"
+    ws.sheet_properties.pageSetUpPr.fitToPage = True
+    ws.page_setup.fitToHeight = 0
+    with atomic_path(run.xlsx) as tmp:
+        wb.save(tmp)

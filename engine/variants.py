@@ -9,7 +9,12 @@ reported with its row number (as a spreadsheet shows it: the header is row 1) an
 bad row never stops the good ones.  :func:`run_variants` runs the whole batch (one
 complete report per variant through :func:`engine.run_study` and
 :func:`engine.write_report`, a summary table side by side, the problems of the bad rows);
-``crankdyn engine --variants`` is this call with a progress bar.
+``crankdyn engine --variants`` is this call with a progress bar.  Each variant's folder
+also gets the variant's full spec, ``<variant>.toml`` (:func:`write_variant_spec`: the
+base with the row applied, the run's step and form written in, its pressure file copied
+beside it), which ``crankdyn engine`` / :func:`engine.load` read to the same tables bit
+for bit and ``crankdyn check`` takes for that variant; :func:`check_class` grades a whole
+class against the variants in one call.
 """
 from __future__ import annotations
 
@@ -23,7 +28,8 @@ from crankbase.errors import Problem, SpecError
 
 __all__ = ["VariantRow", "read_variants", "parse_cell", "apply_variant", "load_variant",
            "SUMMARY_FIELDS", "summary_record", "NAME_COLUMNS", "run_variants",
-           "VariantOutcome", "VariantsRun", "write_summary", "SUMMARY_FILES"]
+           "VariantOutcome", "VariantsRun", "write_summary", "SUMMARY_FILES",
+           "variant_spec", "write_variant_spec", "check_class"]
 
 #: Column names that name a variant (case-insensitive), in order of preference.
 NAME_COLUMNS = ("variant", "name")
@@ -184,6 +190,68 @@ def load_variant(base: dict, variant: VariantRow, base_dir=None):
                                     else ""), p.message) for p in exc.problems]) from None
 
 
+def variant_spec(base: dict, variant: VariantRow, base_dir=None, step=None, form=None):
+    """The variant's full spec, as it is written beside its report.
+
+    The base with the row applied (:func:`apply_variant`), the run's ``step`` and ``form``
+    (when given) written into ``[table]``, and a pressure file (``[pressure] file``) given
+    by its bare name, for a copy beside the spec.
+
+    Returns
+    -------
+    spec : dict
+    pressure_file : Path or None
+        The pressure file the variant reads (resolved against ``base_dir``), to be copied
+        beside the spec; None for an inline diagram or a ``[pressure.cycle]``.
+    """
+    spec = apply_variant(base, variant)
+    table = spec.setdefault("table", {})
+    if step is not None:
+        table["step_deg"] = step
+    if form is not None:
+        table["form"] = form
+    if not table:
+        del spec["table"]
+    pr = spec.get("pressure")
+    source = None
+    if isinstance(pr, dict) and isinstance(pr.get("file"), str):
+        source = Path(pr["file"])
+        if not source.is_absolute():
+            source = Path(base_dir or ".") / source
+        pr["file"] = source.name
+    return spec, source
+
+
+def write_variant_spec(base: dict, variant: VariantRow, folder, base_dir=None, step=None,
+                       form=None, lang: str = "ru", inputs=()) -> Path:
+    """Write the variant's full spec into its folder: ``folder/<folder name>.toml`` (and
+    its pressure file copied beside it, the path in the TOML relative), as one unit of the
+    folder (:func:`crankbase.output.staged_output`; the report's own files stay).
+
+    The spec loads with :func:`engine.load` (``crankdyn engine``) to the very tables of
+    the variant's report, bit for bit (:func:`variant_spec`).  Returns the spec's path.
+    """
+    import shutil
+
+    import tomli_w
+
+    from crankbase.output import staged_output
+    from crankbase.texts import texts
+
+    t = texts(lang)
+    folder = Path(folder)
+    spec, pressure = variant_spec(base, variant, base_dir, step, form)
+    path = folder / f"{folder.name}.toml"
+    head = t("variants.spec.comment", variant=variant.variant, row=variant.row,
+             file=path.name)
+    text = "".join(f"# {ln}\n" for ln in head.splitlines()) + "\n" + tomli_w.dumps(spec)
+    with staged_output(folder, inputs=list(inputs), unit=f"{folder.name}.toml") as stage:
+        (stage / path.name).write_text(text, encoding="utf-8")
+        if pressure is not None:
+            shutil.copyfile(pressure, stage / pressure.name)
+    return path
+
+
 #: Columns of the variants summary: (column, how it is obtained from spec and summary).
 SUMMARY_FIELDS = ("variant", "name", "bore_mm", "stroke_mm", "lambda", "speed_rpm",
                   "mj_kg", "m_rod_rot_kg", "Kr_N", "p_max_MPa", "alpha_p_max_deg",
@@ -227,6 +295,8 @@ class VariantOutcome:
         Every problem of a bad row (``row N (variant): key: problem``); empty when written.
     kept_earlier : bool
         The row is bad and its folder holds an earlier report, which was not replaced.
+    spec : Path or None
+        The variant's full spec written into its folder (:func:`write_variant_spec`).
     """
 
     variant: VariantRow
@@ -234,6 +304,7 @@ class VariantOutcome:
     record: dict | None = None
     problems: tuple = ()
     kept_earlier: bool = False
+    spec: Path | None = None
 
     @property
     def ok(self) -> bool:
@@ -271,8 +342,8 @@ class VariantsRun:
         return [o for o in self.outcomes if not o.ok]
 
     def summary_lines(self, lang: str = "ru") -> list[str]:
-        """How many variants were written and failed (the failed rows), and the summary
-        table, in ``lang``."""
+        """How many variants were written and failed (the failed rows), the summary table
+        and, when any was written, where each variant's spec is, in ``lang``."""
         from crankbase.texts import texts
 
         t = texts(lang)
@@ -282,7 +353,8 @@ class VariantsRun:
         return [t.n("variants.summary.result", len(self.outcomes),
                     written=len(self.outcomes) - len(bad), folder=str(self.folder),
                     failed=len(bad), rows=rows),
-                t("variants.summary.table", path=str(self.summary_xlsx))]
+                t("variants.summary.table", path=str(self.summary_xlsx))] + (
+            [t("variants.summary.specs")] if len(bad) < len(self.outcomes) else [])
 
 
 def _one_variant(task) -> VariantOutcome:
@@ -298,13 +370,14 @@ def _one_variant(task) -> VariantOutcome:
         report = run_study(study, bearings=bearings, step=step, form=form,
                            source=apply_variant(base, v))
         write_report(report, folder, lang, drawing=drawing, inputs=inputs)
+        spec = write_variant_spec(base, v, folder, base_dir, step, form, lang, inputs)
     except CrankdynError as exc:
         lines = exc.lines() or [str(exc)]
         return VariantOutcome(v, folder, problems=tuple(
             ln if ln.startswith("row ") else f"row {v.row} ({v.variant}): {ln}"
             for ln in lines), kept_earlier=folder.exists())
     return VariantOutcome(v, folder, summary_record(v.variant, report.study.spec,
-                                                    report.cylinder.summary))
+                                                    report.cylinder.summary), spec=spec)
 
 
 def run_variants(base, variants, out, lang: str = "ru", step=None, form=None,
@@ -320,7 +393,8 @@ def run_variants(base, variants, out, lang: str = "ru", step=None, form=None,
         The variants table (:func:`read_variants`).
     out : str or Path
         The output folder: each good variant's report goes into ``out/<variant>/``
-        (:func:`engine.write_report`), the summary into ``out/variants_summary.csv`` and
+        (:func:`engine.write_report`) with its full spec ``<variant>.toml``
+        (:func:`write_variant_spec`), the summary into ``out/variants_summary.csv`` and
         ``.xlsx``, the problems of bad rows into ``out/variants_errors.csv``.
     lang : {"ru", "en"}, default "ru"
     step, form, bearings, drawing
@@ -447,3 +521,58 @@ def write_summary(out, records, failures, lang: str = "ru"):
     with atomic_path(summary_xlsx) as tmp, full_precision_xlsx():
         wb.save(tmp)
     return summary_csv, summary_xlsx, errors if failures else None
+
+
+def _variant_side(base: dict, variant: VariantRow, base_dir):
+    """The check side of one variant (:func:`engine.check.check_side` of its spec)."""
+    from .check import check_side
+
+    return check_side(load_variant(base, variant, base_dir))
+
+
+def check_class(base, variants, students, out, lang: str = "ru", rtol=None, atol=None,
+                mapping=None):
+    """Grade a whole class in one call: every student's file of a folder against its own
+    variant of the base spec.
+
+    Parameters
+    ----------
+    base : str or Path
+        The base engine spec file.
+    variants : str or Path
+        The variants table (:func:`read_variants`).
+    students : str or Path
+        The folder of the students' files (``.xlsx``, ``.xlsm``, ``.csv``).  Each file is
+        matched to a variant by :func:`crankbase.checking.match_variant`: the variant's
+        name as a whole word of the file name (``ivanov_v02.xlsx`` → ``v02``), or the
+        variant the workbook names in a cell labelled «Вариант»/«Variant».
+    out : str or Path
+        Output folder: ``class_check.csv`` / ``.xlsx`` (``student, variant,
+        columns_wrong, cells_wrong, verdict, detail``, one line per file) and, per student
+        checked, ``out/<file stem>/`` with its ``check.csv`` and checked workbook.
+    lang, rtol, atol, mapping
+        As :func:`crankbase.checking.check_table`.
+
+    Returns
+    -------
+    crankbase.checking.ClassCheck
+        A file matched to no variant or to several, unreadable, or of a variant whose
+        row has errors is a line of the verdict table, not an exception.
+
+    Raises
+    ------
+    SpecError
+        The base spec or the variants table cannot be read, the students' folder is
+        missing, or bad tolerances or mapping.
+    """
+    from functools import partial
+
+    from crankbase.checking import check_class as check_all
+    from crankbase.validation import read_toml
+
+    base_path, variants_path = Path(base), Path(variants)
+    base_dict, base_dir = read_toml(base_path)
+    rows = read_variants(variants_path)
+    sides = {v.variant: partial(_variant_side, base_dict, v, base_dir) for v in rows}
+    return check_all(sides, students, out, lang, rtol, atol, mapping,
+                     inputs=(base_path, variants_path))

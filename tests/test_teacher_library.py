@@ -47,6 +47,10 @@ def test_run_variants_reports_each_row_and_the_summary(tmp_path):
                     "1 failed (row 3)"
     assert ru[0] == f"вариантов: 2; записано 1 (по папке на вариант в {tmp_path / 'out'}), " \
                     "с ошибками 1 (строка 3)"
+    assert en[2] == ("each variant's folder holds its full spec <variant>.toml (for "
+                     "crankdyn engine and crankdyn check)")
+    assert run.outcomes[0].spec == tmp_path / "out" / "A" / "A.toml"
+    assert run.outcomes[1].spec is None
     assert not CYRILLIC.search("\n".join(en))
     with pytest.raises(SpecError, match="^jobs: got 0"):
         run_variants(PETROL, table, tmp_path / "o2", jobs=0)
@@ -78,12 +82,18 @@ def test_check_table_flags_exactly_the_wrong_value_in_both_languages(tmp_path):
                   if not p.name.startswith(".")) == ["check.csv"]
     ru = result.summary_lines("ru", files)
     assert ru[0] == "student.csv: 4 строки, 2 столбца проверено (rtol = 0.02)"
-    assert ru[1].startswith("  T_N            НЕВЕРНО 1 из 4 (α = 60)")
-    assert ru[2].startswith("  K_N            верно;  max |отклонение| = ")
-    assert ru[3] == "  не проверены (неизвестные столбцы): comment"
-    assert ru[4] == f"итог: неверных значений: 1; {tmp_path / 'o' / 'check.csv'}"
+    assert ru[1] == ("  допуск: |студент − расчёт| ≤ 0.2 % наибольшего по модулю значения "
+                     "столбца + 2 % значения: значение у пика столбца может отличаться на "
+                     "2.2 % от себя, на трети пика — на 2.6 %")
+    assert ru[2].startswith("  T_N            НЕВЕРНО 1 из 4 (α = 60)")
+    assert ru[3].startswith("  K_N            верно;  max |отклонение| = ")
+    assert ru[4] == "  не проверены (неизвестные столбцы): comment"
+    assert ru[5] == f"итог: неверных значений: 1; {tmp_path / 'o' / 'check.csv'}"
     en = result.summary_lines("en", files)
     assert en[0] == "student.csv: 4 rows, 2 columns checked (rtol = 0.02)"
+    assert en[1] == ("  tolerance: |student − computed| ≤ 0.2 % of the column's largest "
+                     "magnitude + 2 % of the value: a value at its column's peak may be off "
+                     "by 2.2 % of itself, at a third of the peak by 2.6 %")
     assert en[-1] == f"verdict: 1 wrong value; {tmp_path / 'o' / 'check.csv'}"
     assert not CYRILLIC.search("\n".join(en))
     words = set(re.findall(r"[A-Za-z]{3,}", "\n".join(ru).replace(str(tmp_path), "")))
@@ -99,3 +109,5 @@ def test_check_table_arguments_named_all_at_once(tmp_path):
     right = check_table(check_side(study), path, rtol=0.0, atol=1e-9)
     assert right.ok and right.n_wrong == 0
     assert right.summary_lines("en")[0].endswith("(rtol = 0)")
+    assert right.summary_lines("en")[1] == ("  tolerance: |student − computed| ≤ 1e-09 + 0 % "
+                                            "of the value")
