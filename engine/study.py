@@ -30,7 +30,7 @@ from types import MappingProxyType
 
 from crankbase.errors import Problem, SpecError
 
-__all__ = ["EngineReport", "BearingReport", "ReportFiles", "run_study", "write_report",
+__all__ = ["EngineReport", "BearingReport", "ReportFiles", "run_study", "write_report", "report_workbook",
            "with_options", "output_names", "FIGURE_FORMATS"]
 
 #: File formats :func:`write_report` can save the figures in.
@@ -303,6 +303,20 @@ def _formats(formats) -> tuple:
     return formats
 
 
+def report_workbook(report: EngineReport, lang: str = "ru"):
+    """The report's workbook, built in memory (not saved): the template's sheets of the
+    cylinder, the whole engine's sheets, the bearing sheets when the report has them, A4
+    print setup (:func:`engine.report.a4_setup`).  :func:`write_report` saves it."""
+    from .report import a4_setup, add_engine_sheets, build_workbook
+
+    wb = add_engine_sheets(build_workbook(report.cylinder, lang), report.whole, lang)
+    if report.bearings is not None:
+        from .bearing_report import add_bearing_sheets
+
+        add_bearing_sheets(wb, dict(report.bearings.tables), report.bearings.analysis, lang)
+    return a4_setup(wb)
+
+
 def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "svg"),
                  drawing: bool = False, inputs=()) -> ReportFiles:
     """Write an engine report into the folder ``out`` as one unit.
@@ -352,7 +366,7 @@ def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "s
     from .bearing_plots import BEARING_PLOT_NAMES
     from .drawing import DRAWING_NAMES, drawing_figures
     from .plots import PLOT_NAMES, TRAIN_PLOT_NAMES, figures, train_figures
-    from .report import a4_setup, add_engine_sheets, build_workbook, save_workbook
+    from .report import save_workbook
 
     check_lang(lang)
     formats = _formats(formats)
@@ -371,16 +385,13 @@ def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "s
     check_not_input([xlsx, *tables, *plots, *drawings], inputs)
 
     # 1. build everything in memory
-    wb = add_engine_sheets(build_workbook(result, lang), whole, lang)
+    wb = report_workbook(report, lang)
     figs = figures(result, lang)
     figs.update(train_figures(whole, lang))
     if report.bearings is not None:
         from .bearing_plots import bearing_figures
-        from .bearing_report import add_bearing_sheets
 
         figs.update(bearing_figures(report.bearings.analysis, lang))
-        add_bearing_sheets(wb, dict(report.bearings.tables), report.bearings.analysis, lang)
-    a4_setup(wb)
     if drawing:
         figs.update(drawing_figures(result, lang))
 

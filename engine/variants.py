@@ -471,7 +471,7 @@ def write_summary(out, records, failures, lang: str = "ru"):
     (the errors file None when none failed)."""
     import pandas as pd
 
-    from crankbase.output import atomic_path, full_precision_xlsx, write_csv
+    from crankbase.output import write_csv
     from crankbase.texts import texts
 
     t = texts(lang)
@@ -487,39 +487,9 @@ def write_summary(out, records, failures, lang: str = "ru"):
     elif errors.exists():
         errors.unlink()
 
-    from openpyxl import Workbook
-    from openpyxl.styles import Alignment, Font, PatternFill
+    from crankbase.workbook import summary_workbook
 
-    wb = Workbook()
-    ws = wb.active
-    ws.title = "variants"
-    ws["A1"] = t("variants.workbook.title")
-    ws["A1"].font = Font(bold=True, size=12)
-    for j, name in enumerate(df.columns, start=1):
-        c = ws.cell(3, j, name)
-        c.font = Font(bold=True)
-        c.fill = PatternFill("solid", fgColor="DDE4EE")
-        c.alignment = Alignment(horizontal="center", wrap_text=True)
-        ws.column_dimensions[c.column_letter].width = max(10, len(name) + 2)
-    for i, row in enumerate(df.itertuples(index=False), start=4):
-        for j, val in enumerate(row, start=1):
-            c = ws.cell(i, j, val.item() if hasattr(val, "item") else val)
-            if isinstance(val, str):
-                c.data_type = "s"
-            elif j > 2:
-                c.number_format = "0.000" if abs(val) < 100 else "0"
-    ws.row_dimensions[3].height = 30
-    ws.freeze_panes = "B4"
-    ws.print_title_rows = "3:3"
-    ws.print_title_cols = "A:A"
-    ws.page_setup.paperSize = ws.PAPERSIZE_A4
-    ws.page_setup.orientation = "landscape"
-    ws.sheet_properties.pageSetUpPr.fitToPage = True
-    width = sum(max(10, len(n) + 2) for n in df.columns)
-    ws.page_setup.fitToWidth = max(1, -(-width // 190))   # ≤ 190 width units a page
-    ws.page_setup.fitToHeight = 0
-    with atomic_path(summary_xlsx) as tmp, full_precision_xlsx():
-        wb.save(tmp)
+    summary_workbook(df, summary_xlsx, t("variants.workbook.title"), sheet="variants")
     return summary_csv, summary_xlsx, errors if failures else None
 
 

@@ -21,22 +21,11 @@ LANGS = ("ru", "en")
 
 
 def engine_workbook(name, lang, bearings=False):
-    """The engine report workbook of a bundled example, as ``crankdyn engine`` builds it."""
-    from engine.report import a4_setup, add_engine_sheets, build_workbook
+    """The engine report workbook of a bundled example, as ``crankdyn engine`` builds it
+    (engine.study.report_workbook of the study's report)."""
+    from engine.study import report_workbook
 
-    study = engine.load(example_path(name))
-    whole = engine.analyze_engine(study.spec, study.train, study.settings)
-    wb = add_engine_sheets(build_workbook(whole.cylinder, lang), whole, lang)
-    if bearings:
-        from crankdyn.cmd_engine import _bearings
-        from engine.bearing_report import add_bearing_sheets
-        from engine.bearing_spec import read_bearing_inputs
-
-        inputs = read_bearing_inputs(example_path(name), study.spec)
-        b = _bearings(study.spec, whole.cylinder.table, whole.cylinder.curves, inputs,
-                      whole, lang)
-        add_bearing_sheets(wb, b["csv"], b["analysis"], lang)
-    return a4_setup(wb)
+    return report_workbook(engine.run_study(example_path(name), bearings=bearings), lang)
 
 
 def _saved(wb, path):
@@ -82,11 +71,10 @@ def _all(tmp):
 
 
 def variants_summary(folder, lang):
-    """The variants summary workbook of three variants of the petrol example."""
-    from crankbase.workbook import summary_workbook
+    """The variants summary workbook of three variants of the petrol example, written by
+    the variants batch's own writer (engine.variants.write_summary)."""
     from engine.spec import read_toml
-    from engine.variants import (SUMMARY_FIELDS, VariantRow, load_variant,
-                                 summary_record)
+    from engine.variants import VariantRow, load_variant, summary_record, write_summary
 
     base, _ = read_toml(example_path("petrol_vaz2106.toml"))
     records = []
@@ -95,14 +83,8 @@ def variants_summary(folder, lang):
         study = load_variant(base, v, example_path("petrol_vaz2106.toml").parent)
         res = engine.analyze(study.spec, study.settings)
         records.append(summary_record(v.variant, study.spec, res.summary))
-    import pandas as pd
-
-    from crankbase.texts import texts
-
     folder.mkdir()
-    df = pd.DataFrame(records, columns=list(SUMMARY_FIELDS))
-    return summary_workbook(df, folder / "variants_summary.xlsx",
-                            texts(lang)("sheet.variants.title"), sheet="variants")
+    return write_summary(folder, records, [], lang)[1]
 
 
 def checked_copy(report, folder, lang):
@@ -182,22 +164,10 @@ def test_the_audit_catches_each_defect(tmp_path):
 def test_a_thinned_workbook_reads_cleanly(tmp_path):
     """A fine table step (0.25°: 2881 rows, thinned on the sheets with a note) passes
     the same check, the bearing sheets included."""
-    import dataclasses
+    from engine.study import report_workbook
 
-    from crankdyn.cmd_engine import _bearings
-    from engine.bearing_report import add_bearing_sheets
-    from engine.bearing_spec import read_bearing_inputs
-    from engine.report import a4_setup, add_engine_sheets, build_workbook
-
-    path = example_path("petrol_vaz2106.toml")
-    study = engine.load(path)
-    settings = dataclasses.replace(study.settings, step_deg=0.25)
-    whole = engine.analyze_engine(study.spec, study.train, settings)
+    report = engine.run_study(example_path("petrol_vaz2106.toml"), bearings=True, step=0.25)
     for lang in LANGS:
-        wb = add_engine_sheets(build_workbook(whole.cylinder, lang), whole, lang)
-        b = _bearings(study.spec, whole.cylinder.table, whole.cylinder.curves,
-                      read_bearing_inputs(path, study.spec), whole, lang)
-        add_bearing_sheets(wb, b["csv"], b["analysis"], lang)
-        saved = _saved(a4_setup(wb), tmp_path / f"fine_{lang}.xlsx")
+        saved = _saved(report_workbook(report, lang), tmp_path / f"fine_{lang}.xlsx")
         found = problems(load_workbook(saved), f"fine {lang}")
         assert not found, "\n".join(found[:20])
