@@ -306,3 +306,29 @@ def test_the_readme_architecture_table_names_what_exists():
         else:
             missing.append(name)
     assert not missing, missing
+
+
+def test_every_package_folder_ships_in_the_wheel():
+    """Every folder with an ``__init__.py`` is listed in pyproject's explicit
+    ``packages`` (a sub-package left out installs from a wheel without it: ``import
+    engine`` failed after ``pip install .`` when engine/spec/ was new), and so is every
+    catalogue of the text layer."""
+    import tomllib
+
+    conf = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))
+    listed = set(conf["tool"]["setuptools"]["packages"])
+    dirs = conf["tool"]["setuptools"].get("package-dir", {})
+    folders = {v: k for k, v in dirs.items()}
+    found = set()
+    for init in ROOT.rglob("__init__.py"):
+        rel = init.parent.relative_to(ROOT)
+        if rel.parts[0] in ("tests", "benchmarks") or rel.parts[0].startswith("."):
+            continue
+        found.add(folders.get(rel.as_posix(), ".".join(rel.parts)))
+    assert found <= listed, sorted(found - listed)
+    data = conf["tool"]["setuptools"]["package-data"]["crankbase"]
+    import fnmatch
+
+    for po in (ROOT / "crankbase" / "locale").rglob("*.po"):
+        rel = po.relative_to(ROOT / "crankbase").as_posix()
+        assert any(fnmatch.fnmatch(rel, pat) for pat in data), rel
