@@ -299,3 +299,22 @@ def test_crank_slider_balance_summary_in_both_languages(tmp_path, capsys):
     assert "частичное" in ru and "кривошипно-ползунный" in ru and ": 0.5" in ru
     en = text["en"].out + text["en"].err
     assert not CYRILLIC.search(en) and "partial" in en and ": 0.5" in en
+
+
+def test_the_readme_names_the_headers_the_workbook_prints():
+    """The README's row of ``<name>_dynamics.xlsx`` promises the headers of ω, M_d and R
+    in both languages: they are the ones ``dynamics.report.column_label`` prints (#23: it
+    promised ``M_b [N·m]`` where the workbook printed ``M_d [N·m]``)."""
+    import re
+    from pathlib import Path
+
+    from dynamics.report import column_label
+
+    readme = (Path(__file__).resolve().parent.parent / "README.md").read_text("utf-8")
+    row = next(ln for ln in readme.splitlines() if ln.startswith("| `<name>_dynamics.xlsx`"))
+    promised = re.search(r"\(`([^`]+)`, `([^`]+)`, `([^`]+)` / `([^`]+)`, `([^`]+)`, "
+                         r"`([^`]+)`", row).groups()
+    cols = ("omega_rad_s", "M_drive_Nm", "R_N")
+    printed = tuple(column_label(c, "ru") for c in cols) + tuple(column_label(c, "en")
+                                                               for c in cols)
+    assert promised == printed
