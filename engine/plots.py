@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from crankbase.errors import Problem
+from crankbase.errors import Problem, Text
 from .kinematics import guide_direction
 from .symbols import math_symbol, sym
 
@@ -64,7 +64,7 @@ _TXT = {
 def _texts(lang):
     if lang not in _TXT:
         from .spec import EngineSpecError
-        raise EngineSpecError(Problem("lang", f"got {lang!r}; valid: {', '.join(LANGS)}"))
+        raise EngineSpecError(Problem("lang", Text("errors.engine.plots.valid", {"lang": lang, "items": ', '.join(LANGS)})))
     return dict(_TXT[lang], sym=SYMBOLS[lang])
 
 
