@@ -89,6 +89,9 @@ def _render(value, lang):
 class Problem:
     """One problem in a spec: where (dotted key path), what was given, what is valid.
 
+    ``key`` is a key path or option name, or a keyed :class:`Text` where it holds words
+    (``row 3 (v1): engine.bore_mm``).
+
     ``message`` is the English text; ``text``, when given, is the same problem as a
     keyed :class:`Text` of the ``errors`` catalogue, so that :meth:`render` can give it in
     another language (``message`` is then derived from it when left empty)."""
@@ -114,7 +117,8 @@ class Problem:
         ``message``)."""
         msg = self.message if self.text is None or lang == "en" \
             else self.text.render(lang)
-        return f"{self.key}: {msg}" if self.key else msg
+        key = self.key.render(lang) if isinstance(self.key, Text) else self.key
+        return f"{key}: {msg}" if key else msg
 
     def __str__(self) -> str:
         return f"{self.key}: {self.message}" if self.key else self.message

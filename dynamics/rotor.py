@@ -282,7 +282,7 @@ def rotor_balance(spec) -> RotorBalance:
                              correction_radius_mm=spec.correction_radius_mm, name=spec.name)
     except SpecError as exc:  # name the spec keys
         raise SpecError([Problem(p.key if p.key.startswith("rotor") else f"rotor.mass.{p.key}",
-                                 p.message) for p in exc.problems]) from None
+                                 p.text or p.message) for p in exc.problems]) from None
 
 
 def plot_mr_polygon(result: RotorBalance, plane=0, ax=None, lang="en"):

@@ -177,7 +177,7 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
             try:
                 J = J + chain_reduce(rot[0], rot[1], trans[0], trans[1]).J_red_kgm2
             except SpecError as exc:
-                ck.problems.extend(Problem("machine.element", p.message)
+                ck.problems.extend(Problem("machine.element", p.text or p.message)
                                    for p in exc.problems)
         wm = ck.get(mach, MACHINE, "omega_mean_rad_s")
         period = ck.get(mach, MACHINE, "period_deg")

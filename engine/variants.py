@@ -121,10 +121,10 @@ def read_variants(path) -> list[VariantRow]:
         if isinstance(r[name_col], float) and r[name_col].is_integer():
             name = str(int(r[name_col]))
         if not name:
-            problems.append(Problem(f"row {i}", Text("errors.engine.variants.column_empty", {"value": header[name_col]})))
+            problems.append(Problem(Text("errors.engine.variants.row", {"row": i}), Text("errors.engine.variants.column_empty", {"value": header[name_col]})))
             continue
         if name in seen:
-            problems.append(Problem(f"row {i}", Text("errors.engine.variants.variant_repeats_row", {"name": name, "value": seen[name]})))
+            problems.append(Problem(Text("errors.engine.variants.row", {"row": i}), Text("errors.engine.variants.variant_repeats_row", {"name": name, "value": seen[name]})))
             continue
         seen[name] = i
         values = {}
@@ -159,7 +159,7 @@ def apply_variant(base: dict, variant: VariantRow) -> dict:
         for k, part in enumerate(parts[:-1]):
             nxt = node.setdefault(part, {})
             if not isinstance(nxt, dict):
-                problems.append(Problem(f"row {variant.row}: {key}", Text("errors.engine.variants.value_not_table", {"items": '.'.join(parts[:k + 1])})))
+                problems.append(Problem(Text("errors.engine.variants.row_key", {"row": variant.row, "key": key}), Text("errors.engine.variants.value_not_table", {"items": '.'.join(parts[:k + 1])})))
                 break
             node = nxt
         else:
@@ -177,9 +177,13 @@ def load_variant(base: dict, variant: VariantRow, base_dir=None):
     try:
         return load(apply_variant(base, variant), base_dir=base_dir)
     except SpecError as exc:
-        raise SpecError([Problem(f"row {variant.row} ({variant.variant})"
-                                 + (f": {p.key}" if p.key and not p.key.startswith("row ")
-                                    else ""), p.message) for p in exc.problems]) from None
+        raise SpecError([Problem(
+            Text("errors.engine.variants.row_variant_key",
+                 {"row": variant.row, "variant": variant.variant, "key": p.key})
+            if p.key and not str(p.key).startswith("row ") else
+            Text("errors.engine.variants.row_variant",
+                 {"row": variant.row, "variant": variant.variant}), p.text or p.message)
+            for p in exc.problems]) from None
 
 
 #: Columns of the variants summary: (column, how it is obtained from spec and summary).
@@ -297,9 +301,14 @@ def _one_variant(task) -> VariantOutcome:
                            source=apply_variant(base, v))
         write_report(report, folder, lang, drawing=drawing, inputs=inputs)
     except CrankdynError as exc:
-        lines = exc.lines() or [str(exc)]
+        from crankbase.texts import texts
+
+        t = texts(lang)
+        lines = exc.lines(lang) or [str(exc)]
+        head = t("errors.engine.variants.row", row="").strip()
         return VariantOutcome(v, folder, problems=tuple(
-            ln if ln.startswith("row ") else f"row {v.row} ({v.variant}): {ln}"
+            ln if ln.startswith(head) else
+            t("errors.engine.variants.row_line", row=v.row, variant=v.variant, line=ln)
             for ln in lines), kept_earlier=folder.exists())
     return VariantOutcome(v, folder, summary_record(v.variant, report.study.spec,
                                                     report.cylinder.summary))
@@ -356,8 +365,9 @@ def run_variants(base, variants, out, lang: str = "ru", step=None, form=None,
     for v in rows:
         f = safe_name(v.variant, "variant")
         if f in folders:
-            clash.append(f"row {v.row} ({v.variant}): folder {f!r} is also the folder of "
-                         f"row {folders[f].row} ({folders[f].variant}); rename one")
+            clash.append(Text("errors.engine.variants.folder_clash",
+                              {"row": v.row, "variant": v.variant, "folder": f,
+                               "row2": folders[f].row, "variant2": folders[f].variant}))
         folders[f] = v
     if clash:
         raise SpecError(clash)

@@ -9,7 +9,8 @@ is printed at 100 %.
 """
 from __future__ import annotations
 
-from .errors import PlanError, Problem, Text
+from .errors import PlanError, Problem
+from .errors import Text as Words
 from .layout import (CAP_EM, FONT, H_LABEL, H_POINT, S_MAIN, S_THIN, Arrow, Block, Circle,
                      Line, Sheet, Text, arrow_parts, diagram_block, lever_block,
                      positions_block, text_width)
@@ -273,7 +274,7 @@ def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
         A diagram larger than the sheet's working field (choose a larger scale or A1).
     """
     if size not in SHEETS:
-        raise PlanError(Problem("size", Text("errors.plans.drawing.valid", {"size": size, "items": ', '.join(SHEETS)})))
+        raise PlanError(Problem("size", Words("errors.plans.drawing.valid", {"size": size, "items": ', '.join(SHEETS)})))
     W, H = SHEETS[size]
     fields = fields or title_fields(result.spec)
     chosen = []
@@ -295,13 +296,13 @@ def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
 
     too_big = [b.title for b in blocks if not fits(b)]
     if too_big:
-        raise PlanError([Problem("size", Text("errors.plans.drawing.does_not_fit", {"size": size, "t": t, "x1": x1 - x0, "y1": y1 - y0})) for t in too_big])
+        raise PlanError([Problem("size", Words("errors.plans.drawing.does_not_fit", {"size": size, "t": t, "x1": x1 - x0, "y1": y1 - y0})) for t in too_big])
     sheets = []
     rest = blocks
     while rest:
         placed, rest = _pack(rest, x0, y0, x1, y1, (tb_left - GAP, tb_top + GAP))
         if not placed:   # pragma: no cover - guarded by too_big
-            raise PlanError(Problem("size", Text("errors.plans.drawing.cannot_place", {"size": size, "title": rest[0].title})))
+            raise PlanError(Problem("size", Words("errors.plans.drawing.cannot_place", {"size": size, "title": rest[0].title})))
         sh = Sheet(W, H)
         for b, dz in placed:
             sh.items += b.moved(dz)

@@ -90,8 +90,8 @@ def round_scale(value, longest_mm=150.0):
     """
     value = float(value)
     if not (math.isfinite(value) and value > 0):
-        raise PlanError([f"scale: the reference magnitude is {value!r}; a plan needs a "
-                         "positive, finite reference vector (is the crank turning?)"])
+        raise PlanError([Problem("scale", Text("errors.plans.model.reference",
+                                               {"value": value}))])
     target = value / longest_mm
     k = math.floor(math.log10(target))
     for kk in (k - 1, k, k + 1):

@@ -253,7 +253,7 @@ def test_output_through_a_file_and_empty_output(tmp_path, capsys):
     try:
         for cmd in (["synth", "--l1", "0.1"], ["engine", "--example"],
                     ["linkage", "--example"]):
-            assert main([*cmd, "-o", ""]) == 2
+            assert main([*cmd, "--lang", "en", "-o", ""]) == 2
             err = capsys.readouterr().err.strip().splitlines()
             assert len(err) == 1 and "-o: empty output folder" in err[0], err
     finally:

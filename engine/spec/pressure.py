@@ -113,7 +113,7 @@ def read_pressure_csv(path, cycle_deg, checker=None):
     PressureTable or None
         Crank angle [deg] and absolute pressure [Pa], with the file (None on a problem).
     """
-    from crankbase.validation import MAX_ITEM_PROBLEMS, MAX_SPEC_BYTES, magnitude_problem
+    from crankbase.validation import MAX_ITEM_PROBLEMS, MAX_SPEC_BYTES, magnitude_text
 
     c = checker if checker is not None else SpecReader()
     path = Path(path)
@@ -159,7 +159,7 @@ def read_pressure_csv(path, cycle_deg, checker=None):
                 angle, p = _read_pressure_rows(c, key, name, sep, header, units[0],
                                                rows[1:], [n for n, _ in lines[1:]],
                                                cycle_deg, MAX_ITEM_PROBLEMS,
-                                               magnitude_problem)
+                                               magnitude_text)
     if checker is None:
         from .model import EngineSpecError
 
@@ -186,16 +186,17 @@ def _read_pressure_rows(c, key, name, sep, header, unit, rows, numbers, cycle_de
             for i in (ia, ip):
                 v = r[i].strip() if i < len(r) else ""
                 if "." in v and "," in v:
-                    problems.append(f"{name} line {line}: {header[i]} {v!r} has both '.' and "
-                                    f"','; write numbers without thousands separators")
+                    problems.append(Text("errors.engine.pressure.both_marks",
+                                         {"name": name, "line": line, "col": header[i],
+                                          "value": v}))
                     continue
                 for m in (".", ","):
                     if m in v:
                         marks.setdefault(m, (line, v))
     if len(marks) == 2:
         (l1, v1), (l2, v2) = marks["."], marks[","]
-        problems.append(f"{name}: decimal marks are mixed ({v1!r} on line {l1}, {v2!r} on "
-                        f"line {l2}); use '.' or ',' throughout")
+        problems.append(Text("errors.engine.pressure.mixed_marks",
+                             {"name": name, "v1": v1, "l1": l1, "v2": v2, "l2": l2}))
     if problems:
         for msg in problems[:max_shown]:
             c.add(key, msg)
@@ -210,14 +211,15 @@ def _read_pressure_rows(c, key, name, sep, header, unit, rows, numbers, cycle_de
         if len(fields) != nfields:
             text = sep.join(r)
             if len(fields) > nfields and comma_sep:
-                why = (f"{len(fields)} fields but the header has {nfields}: decimal commas "
-                       f"in a comma-separated file? {text!r} cannot be split into "
-                       f"{', '.join(header)} without guessing; use '.' as the decimal mark "
-                       f"or ';' as the separator")
+                why = Text("errors.engine.pressure.fields_commas",
+                           {"n": len(fields), "nh": nfields, "text": text,
+                            "header": ", ".join(header)})
             else:
-                why = (f"{len(fields)} fields but the header has {nfields} "
-                       f"({', '.join(header)}): {text!r}")
-            problems.append(f"{name} line {line}: {why}")
+                why = Text("errors.engine.pressure.fields",
+                           {"n": len(fields), "nh": nfields, "text": text,
+                            "header": ", ".join(header)})
+            problems.append(Text("errors.engine.pressure.line",
+                                 {"name": name, "line": line, "why": why}))
             continue
         vals = []
         for i, col in ((ia, "angle_deg"), (ip, unit)):
@@ -228,17 +230,20 @@ def _read_pressure_rows(c, key, name, sep, header, unit, rows, numbers, cycle_de
                 x = float(v)
                 why = magnitude_problem(x)
             except ValueError:
-                why = "is not a number"
+                why = Text("errors.engine.pressure.not_number")
             if why:
-                problems.append(f"{name} line {line}: {col} {fields[i]!r} {why}")
+                problems.append(Text("errors.engine.pressure.line_value",
+                                     {"name": name, "line": line, "col": col,
+                                      "value": fields[i], "why": why}))
                 vals = None
                 break
             vals.append(x)
         if vals is None:
             continue
         if vals[1] < 0:
-            problems.append(f"{name} line {line}: {unit} {fields[ip]} is negative "
-                            f"(pressures are absolute)")
+            problems.append(Text("errors.engine.pressure.line_negative",
+                                 {"name": name, "line": line, "unit": unit,
+                                  "value": fields[ip]}))
             continue
         a_list.append(vals[0])
         p_list.append(vals[1] * PRESSURE_UNITS[unit])
@@ -251,5 +256,7 @@ def _read_pressure_rows(c, key, name, sep, header, unit, rows, numbers, cycle_de
         return None, None
 
     def at(i):
-        return f"{key} {name}" if i is None else f"{key} {name} line {where[i]}"
+        return Text("errors.engine.pressure.at", {"key": key, "name": name}) if i is None \
+            else Text("errors.engine.pressure.at_line",
+                      {"key": key, "name": name, "line": where[i]})
     return check_pressure_points(c, a_list, p_list, cycle_deg, at, unit=unit)
