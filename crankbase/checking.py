@@ -69,7 +69,8 @@ def parse_mapping(items) -> dict:
     for item in items or ():
         head, sep, key = str(item).rpartition("=")
         if not sep or not head.strip() or not key.strip():
-            problems.append(Problem("mapping", Text("errors.checking.write_student_header", {"item": item})))
+            problems.append(Problem("mapping", Text("errors.checking.write_student_header",
+                                                    {"item": item})))
             continue
         out[head.strip()] = key.strip()
     if problems:
@@ -172,7 +173,9 @@ def read_student_table(path, key, known, mapping=None) -> StudentTable:
                         cells[(i, n)] = (ws.title, coords[i][j])
             cells.setdefault("_sheets", []).append(ws.title)
         if not frames:
-            raise SpecError(Problem(str(path), Text("errors.checking.no_sheet_has", {"key": key, "HEADER_SCAN_ROWS": _HEADER_SCAN_ROWS})))
+            raise SpecError(Problem(str(path), Text("errors.checking.no_sheet_has",
+                                                    {"key": key,
+                                                     "HEADER_SCAN_ROWS": _HEADER_SCAN_ROWS})))
         data = join_words(frames, key, path)
         sheets = cells.pop("_sheets")
         # rows of later sheets are matched by key: re-point their cells
@@ -186,7 +189,9 @@ def read_student_table(path, key, known, mapping=None) -> StudentTable:
     rows = [r for r in csv.reader(lines, delimiter=delim) if any(x.strip() for x in r)]
     header = [mapping.get(h.strip(), h.strip()) for h in rows[0]] if rows else []
     if key not in header:
-        raise SpecError(Problem(str(path), Text("errors.checking.no_column_columns", {"key": key, "items": ", ".join(rows[0] if rows else [])})))
+        raise SpecError(Problem(str(path), Text("errors.checking.no_column_columns",
+                                                {"key": key,
+                                                 "items": ", ".join(rows[0] if rows else [])})))
     df, _, ignored = _frame(header, rows[1:], key, known, {})
     return StudentTable(df, {}, path, ignored)
 
@@ -197,7 +202,8 @@ def join_words(frames, key, path):
         out = out.merge(f, on=key, how="left", sort=False)
     if out[key].duplicated().any():
         dup = out[key][out[key].duplicated()].tolist()
-        raise SpecError(Problem(str(path), Text("errors.checking.repeats", {"key": key, "value": dup[:5]})))
+        raise SpecError(Problem(str(path), Text("errors.checking.repeats",
+                                                {"key": key, "value": dup[:5]})))
     return out
 
 
@@ -442,7 +448,9 @@ def check_table(side: CheckSide, student_path, rtol=None, atol=None,
     if side.numeric_key:
         bad = [k for k in keys if not isinstance(k, float) or k != k]
         if bad:
-            raise SpecError(Text("errors.checking.numbers", {"student_path": student_path, "key": side.key, "value": bad[:5]}))
+            raise SpecError(Text("errors.checking.numbers",
+                                 {"student_path": student_path, "key": side.key,
+                                  "value": bad[:5]}))
     computed = side.rows(keys.tolist())
     table = compare(student, computed, side.key, rtol, atol)
     return CheckResult(student, table, side.key, CHECK_RTOL if rtol is None else float(rtol))

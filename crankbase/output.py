@@ -63,7 +63,8 @@ def ensure_finite(df, what: str) -> None:
         bad = ~np.isfinite(values)
         if bad.any():
             row = int(np.flatnonzero(bad)[0])
-            raise OutputError(Text("errors.output.column_not_finite", {"what": what, "col": col, "row": row + 1}))
+            raise OutputError(Text("errors.output.column_not_finite",
+                                   {"what": what, "col": col, "row": row + 1}))
 
 
 def write_csv(df, path) -> None:
@@ -172,7 +173,8 @@ def read_manifest(directory):
     except FileNotFoundError:
         return None
     except (OSError, ValueError) as exc:
-        raise OutputError(Text("errors.output.unreadable_report_manifest", {"path": path, "exc": exc})) from None
+        raise OutputError(Text("errors.output.unreadable_report_manifest",
+                               {"path": path, "exc": exc})) from None
 
 
 def verify_report(directory) -> list[str]:
@@ -187,7 +189,8 @@ def verify_report(directory) -> list[str]:
         raise OutputError(Text("errors.output.report_replacement_was", {"directory": directory}))
     man = read_manifest(directory)
     if man is None:
-        raise OutputError(Text("errors.output.no_crankdyn_report", {"directory": directory, "MANIFEST_NAME": MANIFEST_NAME}))
+        raise OutputError(Text("errors.output.no_crankdyn_report",
+                               {"directory": directory, "MANIFEST_NAME": MANIFEST_NAME}))
     for name, info in man["files"].items():
         p = directory / name
         if not p.is_file() or p.stat().st_size != info["size"] or _sha256(p) != info["sha256"]:
@@ -248,7 +251,8 @@ def _make_folder(directory: Path) -> list[Path]:
             p.mkdir()
         except FileExistsError:
             if not p.is_dir():
-                raise OutputError(Text("errors.output.output_folder_exists_2", {"directory": directory, "p": p})) from None
+                raise OutputError(Text("errors.output.output_folder_exists_2",
+                                       {"directory": directory, "p": p})) from None
             continue
         created.append(p)
     return created
@@ -392,7 +396,8 @@ def staged_output(directory, inputs=(), unit=None):
         try:
             yield stage
         except OSError as exc:   # name the output folder, not the hidden temporary file
-            raise OutputError(Text("errors.output.cannot_write_report", {"directory": directory, "value": _reason(exc)})) \
+            raise OutputError(Text("errors.output.cannot_write_report",
+                                   {"directory": directory, "value": _reason(exc)})) \
                 from None
         try:
             _commit(directory, stage, inputs, unit)

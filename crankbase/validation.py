@@ -459,4 +459,5 @@ def check_lang(lang, key: str = "lang") -> str:
     offered = languages()
     if lang in offered:
         return lang
-    raise SpecError(Problem(key, Text("errors.validation.one", {"lang": lang, "items": ', '.join(offered)})))
+    raise SpecError(Problem(key, Text("errors.validation.one",
+                                      {"lang": lang, "items": ', '.join(offered)})))

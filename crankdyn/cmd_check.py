@@ -61,7 +61,8 @@ def run(args) -> int:
 
             side = check_side(linkage.load_spec(spec_path))
         else:
-            raise SpecError(Text("errors.crankdyn.cli_check.neither_engine_spec", {"spec_path": spec_path}))
+            raise SpecError(Text("errors.crankdyn.cli_check.neither_engine_spec",
+                                 {"spec_path": spec_path}))
         result = check_table(side, student_path, args.rtol, args.atol, args.map)
         written = write_check(result, Path(args.output), args.lang, inputs=[spec_path])
     except SpecError as exc:            # the library's arguments → this command's options

@@ -87,5 +87,6 @@ def _spec_path(args, examples, what):
     if args.spec:
         return Path(args.spec)
     if not args.example:
-        raise SpecError(Text("errors.crankdyn.cli_dynamics.give_spec_spec", {"what": Text(f"errors.what.{what}")}))
+        raise SpecError(Text("errors.crankdyn.cli_dynamics.give_spec_spec",
+                             {"what": Text(f"errors.what.{what}")}))
     return find_example(args.example, examples, what)

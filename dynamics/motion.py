@@ -113,7 +113,8 @@ def _add_extra_columns(table, model):
 
 def check_delta(delta, key="dynamics.delta"):
     if delta is None or not (0.0 < delta < 1.0):
-        raise SpecError(Problem(key, Text("errors.dynamics.motion.coefficient_speed_fluctuation", {"delta": delta})))
+        raise SpecError(Problem(key, Text("errors.dynamics.motion.coefficient_speed_fluctuation",
+                                          {"delta": delta})))
 
 
 def _net_work_check(model, what):
@@ -122,7 +123,9 @@ def _net_work_check(model, what):
     if abs(W[-1]) > 1e-6 * scale:
         kind = Text("errors.dynamics.motion.short" if W[-1] < 0 else "errors.dynamics.motion.exceeds")
         raise MotionError(Problem(
-            what, Text("errors.dynamics.motion.driving_work_per", {"value": model.W_drive_J[-1], "kind": kind, "value2": model.W_resist_J[-1], "value3": W[-1]})))
+            what, Text("errors.dynamics.motion.driving_work_per",
+                       {"value": model.W_drive_J[-1], "kind": kind, "value2": model.W_resist_J[-1],
+                        "value3": W[-1]})))
 
 
 def _omega_of(model, J, W, w0):
@@ -166,9 +169,11 @@ def steady_motion(model, omega_mean=None, *, J_flywheel=0.0, driving="constant")
         probs.append(Problem("dynamics.omega_mean_rad_s",
                              Text("errors.dynamics.motion.mean_speed", {"wm": wm})))
     if not J_flywheel >= 0:
-        probs.append(Problem("dynamics.flywheel_kgm2", Text("errors.dynamics.motion.message", {"J_flywheel": J_flywheel})))
+        probs.append(Problem("dynamics.flywheel_kgm2", Text("errors.dynamics.motion.message",
+                                                            {"J_flywheel": J_flywheel})))
     if np.any(model.J_kgm2 + J_flywheel <= 0):
-        probs.append(Problem("J_red_kgm2", Text("errors.dynamics.motion.min_reduced_moment", {"value": np.min(model.J_kgm2)})))
+        probs.append(Problem("J_red_kgm2", Text("errors.dynamics.motion.min_reduced_moment",
+                                                {"value": np.min(model.J_kgm2)})))
     if probs:
         raise SpecError(probs)
     Mconst = None
@@ -193,7 +198,9 @@ def steady_motion(model, omega_mean=None, *, J_flywheel=0.0, driving="constant")
         i = int(np.argmin(w))
         need = np.ptp(W) / (0.5 * wm * wm) if wm > 0 else math.inf
         raise MotionError(Problem(
-            "dynamics", Text("errors.dynamics.motion.machine_cannot_keep", {"wm": wm, "value": np.ptp(W), "value2": model.phi_deg[i], "need": need})))
+            "dynamics", Text("errors.dynamics.motion.machine_cannot_keep",
+                             {"wm": wm, "value": np.ptp(W), "value2": model.phi_deg[i],
+                              "need": need})))
     hi = max(2.0 * wm, w_lo * 2 + 1.0)
     while mean_minus(hi) < 0:
         hi *= 2.0
@@ -346,19 +353,22 @@ def _interp_periodic(model):
 def _check_motor(model, motor, JF):
     probs = []
     if not motor.M0 > 0:
-        probs.append(Problem("dynamics.motor_start_torque_Nm", Text("errors.dynamics.motion.message_2", {"M0": motor.M0})))
+        probs.append(Problem("dynamics.motor_start_torque_Nm",
+                             Text("errors.dynamics.motion.message_2", {"M0": motor.M0})))
     if not motor.omega0 > 0:
         probs.append(Problem("dynamics.motor_sync_speed_rad_s",
                              Text("errors.dynamics.motion.message_3", {"omega0": motor.omega0})))
     if not JF >= 0:
-        probs.append(Problem("dynamics.flywheel_kgm2", Text("errors.dynamics.motion.message_4", {"JF": JF})))
+        probs.append(Problem("dynamics.flywheel_kgm2", Text("errors.dynamics.motion.message_4",
+                                                            {"JF": JF})))
     if probs:
         raise SpecError(probs)
     Mc_mean = (model.W_resist_J[-1] - model.W_drive_J[-1]) / model.period
     if Mc_mean >= motor.M0:
         raise MotionError(Problem(
             "dynamics.motor_start_torque_Nm",
-            Text("errors.dynamics.motion.motor_stalls_mean", {"Mc_mean": Mc_mean, "M0": motor.M0})))
+            Text("errors.dynamics.motion.motor_stalls_mean",
+                 {"Mc_mean": Mc_mean, "M0": motor.M0})))
     return Mc_mean
 
 
@@ -434,7 +444,8 @@ def motor_steady_motion(model, motor: Motor, *, J_flywheel=0.0, rtol=1e-9):
         if lo is None or g(hi) >= 0:
             raise MotionError(Problem(
                 "dynamics.motor_start_torque_Nm",
-                Text("errors.dynamics.motion.motor_stalls_with", {"M0": motor.M0, "omega0": motor.omega0})))
+                Text("errors.dynamics.motion.motor_stalls_with",
+                     {"M0": motor.M0, "omega0": motor.omega0})))
         w0 = brentq(g, lo, hi, xtol=1e-9 * motor.omega0)
     sol = shoot(w0, dense=True)
     if sol is None:
@@ -493,7 +504,8 @@ def motor_startup(model, motor: Motor, *, J_flywheel=0.0, steady: MotionResult |
     if motor.M0 + state(0.0)[2] <= 0.0:
         raise MotionError(Problem(
             "dynamics.motor_start_torque_Nm",
-            Text("errors.dynamics.motion.motor_cannot_start", {"M0": motor.M0, "value": -state(0.0)[2]})))
+            Text("errors.dynamics.motion.motor_cannot_start",
+                 {"M0": motor.M0, "value": -state(0.0)[2]})))
     w_ss = steady.omega_time_mean if steady is not None else \
         motor.omega0 * (1.0 - Mc_mean / motor.M0)
     Jm = float(np.mean(model.J_kgm2)) + J_flywheel

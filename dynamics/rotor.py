@@ -147,24 +147,32 @@ def balance_rotor(mr_gmm, angle_deg, z_mm=None, planes_mm=(0.0,), *,
     if mr.size == 0:
         problems.append(Problem("rotor.mass", Text("errors.dynamics.rotor.no_unbalance_given")))
     if ang.shape != mr.shape:
-        problems.append(Problem("angle_deg", Text("errors.dynamics.rotor.angles_for_masses", {"size": ang.size, "size2": mr.size})))
+        problems.append(Problem("angle_deg", Text("errors.dynamics.rotor.angles_for_masses",
+                                                  {"size": ang.size, "size2": mr.size})))
     if z_mm is None:
         z = np.full(mr.shape, planes[0] if planes.size else 0.0)
     else:
         z = np.atleast_1d(np.asarray(z_mm, dtype=float))
         if z.shape != mr.shape:
-            problems.append(Problem("z_mm", Text("errors.dynamics.rotor.positions_for_masses", {"size": z.size, "size2": mr.size})))
+            problems.append(Problem("z_mm", Text("errors.dynamics.rotor.positions_for_masses",
+                                                 {"size": z.size, "size2": mr.size})))
     if np.any(mr < 0) or not np.all(np.isfinite(mr)):
-        problems.append(Problem("mr_gmm", Text("errors.dynamics.rotor.every_m_r", {"value": mr.tolist()})))
+        problems.append(Problem("mr_gmm", Text("errors.dynamics.rotor.every_m_r",
+                                               {"value": mr.tolist()})))
     if planes.size not in (1, 2) or not np.all(np.isfinite(planes)):
-        problems.append(Problem("rotor.planes_mm", Text("errors.dynamics.rotor.give_one_plane", {"value": planes.tolist()})))
+        problems.append(Problem("rotor.planes_mm", Text("errors.dynamics.rotor.give_one_plane",
+                                                        {"value": planes.tolist()})))
     elif planes.size == 2 and planes[0] == planes[1]:
-        problems.append(Problem("rotor.planes_mm", Text("errors.dynamics.rotor.two_correction_planes", {"value": planes.tolist()})))
+        problems.append(Problem("rotor.planes_mm",
+                                Text("errors.dynamics.rotor.two_correction_planes",
+                                     {"value": planes.tolist()})))
     if correction_radius_mm is not None and not correction_radius_mm > 0:
         problems.append(Problem("rotor.correction_radius_mm",
-                                Text("errors.dynamics.rotor.message", {"correction_radius_mm": correction_radius_mm})))
+                                Text("errors.dynamics.rotor.message",
+                                     {"correction_radius_mm": correction_radius_mm})))
     if not problems and planes.size == 2 and z_mm is None:
-        problems.append(Problem("rotor.mass.z_mm", Text("errors.dynamics.rotor.missing_two_plane")))
+        problems.append(Problem("rotor.mass.z_mm",
+                                Text("errors.dynamics.rotor.missing_two_plane")))
     if not problems and planes.size == 2 and mr.size > 0 and np.ptp(z) == 0:
         problems.append(Problem(
             "rotor.mass.z_mm", Text("errors.dynamics.rotor.every_mass_lies", {"value": z[0]})))
@@ -240,7 +248,8 @@ def load_rotor_spec(path_or_dict) -> RotorSpec:
     name = ck.get(rot, ROTOR, "name")
     planes = ck.get(rot, ROTOR, "planes_mm")
     if planes is not None and len(planes) > 2:
-        ck.add("rotor.planes_mm", Text("errors.dynamics.rotor.planes_give_one", {"n": len(planes)}))
+        ck.add("rotor.planes_mm", Text("errors.dynamics.rotor.planes_give_one",
+                                       {"n": len(planes)}))
         planes = None
     radius = ck.get(rot, ROTOR, "correction_radius_mm")
     mr, ang, zz = [], [], []

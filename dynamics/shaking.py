@@ -141,7 +141,8 @@ def _table(rows):
 
 def _cw(lname, mr, radius, key):
     if radius is not None and not radius > 0:
-        raise SpecError(Problem(key, Text("errors.dynamics.shaking.counterweight_radius", {"radius": radius})))
+        raise SpecError(Problem(key, Text("errors.dynamics.shaking.counterweight_radius",
+                                          {"radius": radius})))
     a = abs(mr)
     mass = a / radius if a > 0 else 0.0
     pos = radius * mr / a if a > 0 else 0j
@@ -163,7 +164,8 @@ def balance_fourbar(spec, radius_crank_m=None, radius_rocker_m=None,
 
     spec = load_spec(spec)
     if spec.kind != "crank-rocker":
-        raise SpecError(Problem("mechanism.kind", Text("errors.dynamics.shaking.full_force_balance", {"kind": spec.kind})))
+        raise SpecError(Problem("mechanism.kind",
+                                Text("errors.dynamics.shaking.full_force_balance", {"kind": spec.kind})))
     l1, l2, l3 = spec.crank, spec.coupler, spec.rocker
     m2, m3, m4 = (spec.links[n].mass for n in ("crank", "coupler", "rocker"))
     r2, r3, r4 = (spec.links[n].cg for n in ("crank", "coupler", "rocker"))
@@ -192,9 +194,12 @@ def balance_crank_slider(spec, fraction=0.0, radius_m=None,
 
     spec = load_spec(spec)
     if spec.kind != "crank-slider":
-        raise SpecError(Problem("mechanism.kind", Text("errors.dynamics.shaking.partial_balance_for", {"kind": spec.kind})))
+        raise SpecError(Problem("mechanism.kind",
+                                Text("errors.dynamics.shaking.partial_balance_for", {"kind": spec.kind})))
     if not 0.0 <= fraction <= 1.0:
-        raise SpecError(Problem("balance.fraction", Text("errors.dynamics.shaking.balanced_share_reciprocating", {"fraction": fraction})))
+        raise SpecError(Problem("balance.fraction",
+                                Text("errors.dynamics.shaking.balanced_share_reciprocating",
+                                     {"fraction": fraction})))
     l1, l2 = spec.crank, spec.coupler
     m2, m3, m4 = (spec.links[n].mass for n in ("crank", "coupler", "slider"))
     r2, r3 = spec.links["crank"].cg, spec.links["coupler"].cg
@@ -296,7 +301,9 @@ def mechanism_balance(path_or_dict) -> BalanceResult:
                  "crank-slider": ("fraction", "radius_m")}[spec.kind]
     for k in bal:
         if k in _BAL_KEYS and k not in kind_keys:
-            ck.add(f"balance.{k}", Text("errors.dynamics.shaking.does_not_apply", {"kind": Text("errors.kind." + spec.kind.replace("-", "_")), "items": ", ".join(kind_keys)}))
+            ck.add(f"balance.{k}", Text("errors.dynamics.shaking.does_not_apply",
+                                        {"kind": Text("errors.kind." + spec.kind.replace("-", "_")),
+                                         "items": ", ".join(kind_keys)}))
     ck.raise_if_any()
     if spec.kind == "crank-rocker":
         return balance_fourbar(spec, radius["radius_crank_m"], radius["radius_rocker_m"])

@@ -88,7 +88,8 @@ def _settings(ck, dyn, period_deg, engine=False):
         M0 = get("motor_start_torque_Nm", required=True)
         w0 = get("motor_sync_speed_rad_s", required=True)
         if "omega_mean_rad_s" in dyn:
-            ck.add("dynamics.omega_mean_rad_s", Text("errors.dynamics.spec.motor_s_characteristic"))
+            ck.add("dynamics.omega_mean_rad_s",
+                   Text("errors.dynamics.spec.motor_s_characteristic"))
     else:
         for k in ("motor_start_torque_Nm", "motor_sync_speed_rad_s"):
             if k in dyn:
@@ -140,7 +141,9 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
             if fw_delta is not None and fw_delta < 1:
                 settings = replace(settings, delta=float(fw_delta))
         if settings.driving != "constant":
-            raise SpecError(Problem("dynamics.driving", Text("errors.dynamics.spec.engine_drives_itself", {"driving": settings.driving})))
+            raise SpecError(Problem("dynamics.driving",
+                                    Text("errors.dynamics.spec.engine_drives_itself",
+                                         {"driving": settings.driving})))
         model = engine_model(espec, steps=settings.steps or 1440, J_extra_kgm2=J_extra,
                              train=estudy.train)
         if settings.omega_mean is not None:
@@ -211,7 +214,8 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
         if problems:
             raise SpecError(problems)
         if lspec.omega == 0:
-            raise SpecError(Problem("mechanism.omega_rad_s", Text("errors.dynamics.spec.machine_dynamics_needs")))
+            raise SpecError(Problem("mechanism.omega_rad_s",
+                                    Text("errors.dynamics.spec.machine_dynamics_needs")))
         model = linkage_model(lspec, steps=settings.steps or 720)
         if settings.omega_mean is not None:
             model.omega_nominal = settings.omega_mean

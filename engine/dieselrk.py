@@ -98,10 +98,12 @@ def read_ind(path, cycle_deg, firing_tdc_deg=DIESEL_RK_TDC_DEG, checker=None,
         try:
             text = path.read_text(encoding="cp1251")      # Diesel-RK on Windows
         except (OSError, UnicodeDecodeError) as exc:
-            c.add(key, Text("errors.engine.dieselrk.cannot_read", {"name": name, "exc": os_reason(exc)}))
+            c.add(key, Text("errors.engine.dieselrk.cannot_read",
+                            {"name": name, "exc": os_reason(exc)}))
             text = None
     except OSError as exc:
-        c.add(key, Text("errors.engine.dieselrk.cannot_read", {"name": name, "exc": os_reason(exc)}))
+        c.add(key, Text("errors.engine.dieselrk.cannot_read",
+                        {"name": name, "exc": os_reason(exc)}))
         text = None
     out = (None, None)
     if text is not None:
@@ -140,12 +142,15 @@ def _parse(c, key, name, lines, cycle_deg, tdc):
             c.add(key, Text("errors.engine.dieselrk.more_bad_rows", {"name": name, "n": n - 1}))
             break
         if len(tok) != len(cols):
-            c.add(key, Text("errors.engine.dieselrk.line_values_header", {"name": name, "n": n, "n2": len(tok), "n3": len(cols), "items": ' '.join(cols)}))
+            c.add(key, Text("errors.engine.dieselrk.line_values_header",
+                            {"name": name, "n": n, "n2": len(tok), "n3": len(cols),
+                             "items": ' '.join(cols)}))
             continue
         try:
             vals = [float(t) for t in tok]
         except ValueError:
-            c.add(key, Text("errors.engine.dieselrk.line_not_number", {"name": name, "n": n, "value": lines[n - 1].strip()}))
+            c.add(key, Text("errors.engine.dieselrk.line_not_number",
+                            {"name": name, "n": n, "value": lines[n - 1].strip()}))
             continue
         if not all(math.isfinite(v) for v in (vals[0], vals[ip])):
             c.add(key, Text("errors.engine.dieselrk.line_fi_and", {"name": name, "n": n}))
@@ -155,7 +160,8 @@ def _parse(c, key, name, lines, cycle_deg, tdc):
     if len(c.problems) > n0:
         return None, None
     if len(rows) < 3:
-        c.add(key, Text("errors.engine.dieselrk.data_rows_after", {"name": name, "n": len(rows), "hdr": hdr}))
+        c.add(key, Text("errors.engine.dieselrk.data_rows_after",
+                        {"name": name, "n": len(rows), "hdr": hdr}))
         return None, None
     data = np.array(numbers)
     fi, p = data[:, 0], data[:, ip] * BAR
@@ -163,22 +169,30 @@ def _parse(c, key, name, lines, cycle_deg, tdc):
     bad = np.nonzero(step <= 0)[0]
     if len(bad):
         i = bad[0] + 1
-        c.add(key, Text("errors.engine.dieselrk.line_fi_does", {"name": name, "value": rows[i], "value2": fi[i], "value3": fi[i - 1]}))
+        c.add(key, Text("errors.engine.dieselrk.line_fi_does",
+                        {"name": name, "value": rows[i], "value2": fi[i], "value3": fi[i - 1]}))
         return None, None
     neg = np.nonzero(p < 0)[0]
     if len(neg):
-        c.add(key, Text("errors.engine.dieselrk.line_pressure_bar", {"name": name, "value": rows[neg[0]], "value2": p[neg[0]] / BAR}))
+        c.add(key, Text("errors.engine.dieselrk.line_pressure_bar",
+                        {"name": name, "value": rows[neg[0]], "value2": p[neg[0]] / BAR}))
         return None, None
     span = fi[-1] - fi[0]
     tol = SAME_ANGLE_DEG
     if span < cycle_deg - tol:
-        c.add(key, Text("errors.engine.dieselrk.line_data_end", {"name": name, "value": rows[-1], "value2": fi[-1], "span": span, "value3": fi[0], "cycle_deg": cycle_deg}))
+        c.add(key, Text("errors.engine.dieselrk.line_data_end",
+                        {"name": name, "value": rows[-1], "value2": fi[-1], "span": span,
+                         "value3": fi[0], "cycle_deg": cycle_deg}))
         return None, None
     if span > cycle_deg + tol:
-        c.add(key, Text("errors.engine.dieselrk.line_data_span", {"name": name, "value": rows[-1], "span": span, "value2": fi[0], "value3": fi[-1], "cycle_deg": cycle_deg}))
+        c.add(key, Text("errors.engine.dieselrk.line_data_span",
+                        {"name": name, "value": rows[-1], "span": span, "value2": fi[0],
+                         "value3": fi[-1], "cycle_deg": cycle_deg}))
         return None, None
     if abs(p[-1] - p[0]) > _END_ROW_RTOL * max(p[0], p[-1]) + 0.005 * BAR:
-        c.add(key, Text("errors.engine.dieselrk.line_last_row", {"name": name, "value": rows[-1], "value2": fi[-1], "value3": p[-1] / BAR, "value4": p[0] / BAR}))
+        c.add(key, Text("errors.engine.dieselrk.line_last_row",
+                        {"name": name, "value": rows[-1], "value2": fi[-1], "value3": p[-1] / BAR,
+                         "value4": p[0] / BAR}))
         return None, None
     fi, p, lines_used = fi[:-1], p[:-1], rows[:-1]
     if iv is not None:
@@ -198,13 +212,16 @@ def _origin_ok(c, key, name, fi, p, V, lines, cycle_deg, tdc):
     off = abs(((fi[i] - tdc) + 180.0) % 360.0 - 180.0)
     if off > row + SAME_ANGLE_DEG:
         c.add("pressure.firing_tdc_deg",
-              Text("errors.engine.dieselrk.cylinder_volume_v", {"name": name, "value": fi[i], "value2": lines[i], "tdc": tdc}))
+              Text("errors.engine.dieselrk.cylinder_volume_v",
+                   {"name": name, "value": fi[i], "value2": lines[i], "tdc": tdc}))
         return False
     if cycle_deg > 360.0:
         k = int(np.argmax(p))
         d = abs(((fi[k] - tdc) + 360.0) % 720.0 - 360.0)
         if d > 90.0:
             c.add("pressure.firing_tdc_deg",
-                  Text("errors.engine.dieselrk.pressure_peak_bar", {"name": name, "value": p[k] / BAR, "value2": fi[k], "value3": lines[k], "d": d, "tdc": tdc}))
+                  Text("errors.engine.dieselrk.pressure_peak_bar",
+                       {"name": name, "value": p[k] / BAR, "value2": fi[k], "value3": lines[k],
+                        "d": d, "tdc": tdc}))
             return False
     return True

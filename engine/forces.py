@@ -59,13 +59,15 @@ PLOT_STEP_DEG = 0.5
 
 def _check_spec(spec):
     if not isinstance(spec, EngineSpec):
-        raise EngineSpecError(Problem("spec", Text("errors.engine.forces.enginespec_engine_load", {"name__": type(spec).__name__})))
+        raise EngineSpecError(Problem("spec", Text("errors.engine.forces.enginespec_engine_load",
+                                                   {"name__": type(spec).__name__})))
 
 
 def _check_angle(value, key):
     if not (isinstance(value, (int, float)) and not isinstance(value, bool)
             and math.isfinite(value)):
-        raise EngineSpecError(Problem(key, Text("errors.engine.forces.finite_number_deg", {"value": value})))
+        raise EngineSpecError(Problem(key, Text("errors.engine.forces.finite_number_deg",
+                                                {"value": value})))
     return float(value)
 
 
@@ -391,7 +393,8 @@ def summarize(table, spec) -> EngineSummary:
     _check_spec(spec)
     missing = [c for c in COLUMNS if c not in getattr(table, "columns", ())]
     if missing:
-        raise EngineSpecError(Problem("table", Text("errors.engine.forces.force_table_engine", {"items": ', '.join(missing)})))
+        raise EngineSpecError(Problem("table", Text("errors.engine.forces.force_table_engine",
+                                                    {"items": ', '.join(missing)})))
     a = table["alpha_deg"].to_numpy()
     cyc = spec.cycle_deg
     ext = {}
@@ -434,7 +437,8 @@ def analyze(spec, settings=None, *, fine_step_deg=PLOT_STEP_DEG) -> EngineResult
     """
     settings = TableSettings() if settings is None else settings
     if not isinstance(settings, TableSettings):
-        raise EngineSpecError(Problem("settings", Text("errors.engine.forces.tablesettings", {"name__": type(settings).__name__})))
+        raise EngineSpecError(Problem("settings", Text("errors.engine.forces.tablesettings",
+                                                       {"name__": type(settings).__name__})))
     table = force_table(spec, settings=settings)
     fine = fine_angles(spec, settings, fine_step_deg)
     # a table at least as fine as the plot grid is its own fine curve

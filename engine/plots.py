@@ -64,7 +64,8 @@ _TXT = {
 def _texts(lang):
     if lang not in _TXT:
         from .spec import EngineSpecError
-        raise EngineSpecError(Problem("lang", Text("errors.engine.plots.valid", {"lang": lang, "items": ', '.join(LANGS)})))
+        raise EngineSpecError(Problem("lang", Text("errors.engine.plots.valid",
+                                                   {"lang": lang, "items": ', '.join(LANGS)})))
     return dict(_TXT[lang], sym=SYMBOLS[lang])
 
 

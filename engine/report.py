@@ -133,7 +133,8 @@ def _copy_style(src, dst):
 def _check_finite(values, where):
     for key, val in values.items():
         if isinstance(val, float) and not math.isfinite(val):
-            raise OutputError(Text("errors.engine.report.not_finite", {"where": where, "key": key, "val": val}))
+            raise OutputError(Text("errors.engine.report.not_finite",
+                                   {"where": where, "key": key, "val": val}))
 
 
 def build_workbook(result, lang="ru"):
@@ -159,11 +160,13 @@ def build_workbook(result, lang="ru"):
     from crankbase.resources import template_path
 
     if lang not in LANGS:
-        raise EngineSpecError(Problem("lang", Text("errors.engine.report.valid", {"lang": lang, "items": ', '.join(LANGS)})))
+        raise EngineSpecError(Problem("lang", Text("errors.engine.report.valid",
+                                                   {"lang": lang, "items": ', '.join(LANGS)})))
     spec, table, summary = result.spec, result.table, result.summary
     mu = result.settings.force_scale
     if mu is None:
-        raise EngineSpecError(Problem("force_scale", Text("errors.engine.report.report_needs_force")))
+        raise EngineSpecError(Problem("force_scale",
+                                      Text("errors.engine.report.report_needs_force")))
     ensure_finite(table, "force table")
     wb = load_workbook(template_path(f"engine_{lang}.xlsx"))
     ws_in, ws_t2, ws_sum, ws_data, ws_ch = wb.worksheets[:5]
@@ -654,7 +657,8 @@ def add_engine_sheets(wb, tr, lang="ru"):
     from crankbase.output import ensure_finite
 
     if lang not in LANGS:
-        raise EngineSpecError(Problem("lang", Text("errors.engine.report.valid", {"lang": lang, "items": ', '.join(LANGS)})))
+        raise EngineSpecError(Problem("lang", Text("errors.engine.report.valid",
+                                                   {"lang": lang, "items": ', '.join(LANGS)})))
     t = _TR[lang]
     for df, what in ((tr.torque, "torque"), (tr.balance, "balance"),
                      (tr.layout.cylinders, "layout")):

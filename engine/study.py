@@ -175,7 +175,8 @@ def with_options(study, step=None, form=None):
         from .table2 import FORMS
 
         if form not in FORMS:
-            raise SpecError(Problem("form", Text("errors.engine.study.one", {"form": form, "items": ", ".join(FORMS)})))
+            raise SpecError(Problem("form", Text("errors.engine.study.one",
+                                                 {"form": form, "items": ", ".join(FORMS)})))
         settings = replace(settings, form=form)
     return replace(study, settings=settings)
 
@@ -297,7 +298,9 @@ def _formats(formats) -> tuple:
     formats = tuple(formats)
     bad = [f for f in formats if f not in FIGURE_FORMATS]
     if not formats or bad or len(set(formats)) != len(formats):
-        raise SpecError(Problem("formats", Text("errors.engine.study.give_one_or", {"formats": formats, "items": ", ".join(FIGURE_FORMATS)})))
+        raise SpecError(Problem("formats", Text("errors.engine.study.give_one_or",
+                                                {"formats": formats,
+                                                 "items": ", ".join(FIGURE_FORMATS)})))
     return formats
 
 

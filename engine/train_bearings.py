@@ -159,11 +159,15 @@ def engine_bearings(spec, theta_deg, cylinders, throw_dir_deg, z_throw, *,
     cyl = tuple(cylinders)
     for i, c in enumerate(cyl, start=1):
         if not 0 <= c.throw < nt:
-            raise BearingInputError(Problem(f"cylinder {i}", Text("errors.engine.train_bearings.throw_does_not", {"value": c.throw + 1, "nt": nt})))
+            raise BearingInputError(Problem(f"cylinder {i}",
+                                            Text("errors.engine.train_bearings.throw_does_not",
+                                                 {"value": c.throw + 1, "nt": nt})))
         lag = (c.bank_deg - tau[c.throw] - c.phase_deg) % 360.0
         if min(lag, 360.0 - lag) > PHASE_MATCH_DEG:
             raise BearingInputError(Problem(
-                f"cylinder {i}", Text("errors.engine.train_bearings.phase_does_not", {"phase_deg": c.phase_deg, "bank_deg": c.bank_deg, "value": c.throw + 1, "value2": tau[c.throw]})))
+                f"cylinder {i}", Text("errors.engine.train_bearings.phase_does_not",
+                                      {"phase_deg": c.phase_deg, "bank_deg": c.bank_deg,
+                                       "value": c.throw + 1, "value2": tau[c.throw]})))
     tables = [force_table(spec, th, bank_deg=c.bank_deg, phase_deg=c.phase_deg)
               for c in cyl]
     K = np.zeros((nt, th.size))

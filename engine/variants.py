@@ -106,12 +106,15 @@ def read_variants(path) -> list[VariantRow]:
     lower = [h.lower() for h in header]
     name_col = next((lower.index(n) for n in NAME_COLUMNS if n in lower), None)
     if name_col is None:
-        problems.append(Problem(str(path), Text("errors.engine.variants.no_variant_or", {"items": ", ".join(header)})))
+        problems.append(Problem(str(path), Text("errors.engine.variants.no_variant_or",
+                                                {"items": ", ".join(header)})))
     for j, h in enumerate(header):
         if not h:
-            problems.append(Problem(str(path), Text("errors.engine.variants.column_has_no", {"j": j + 1})))
+            problems.append(Problem(str(path), Text("errors.engine.variants.column_has_no",
+                                                    {"j": j + 1})))
         elif lower.count(h.lower()) > 1 and lower.index(h.lower()) == j:
-            problems.append(Problem(str(path), Text("errors.engine.variants.column_appears_more", {"h": h})))
+            problems.append(Problem(str(path), Text("errors.engine.variants.column_appears_more",
+                                                    {"h": h})))
     if problems:
         raise SpecError(problems)
     out, seen = [], {}
@@ -357,7 +360,8 @@ def run_variants(base, variants, out, lang: str = "ru", step=None, form=None,
 
     check_lang(lang)
     if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1:
-        raise SpecError(Problem("jobs", Text("errors.engine.variants.whole_number", {"jobs": jobs})))
+        raise SpecError(Problem("jobs", Text("errors.engine.variants.whole_number",
+                                             {"jobs": jobs})))
     base_path, variants_path, out = Path(base), Path(variants), Path(out)
     base_dict, base_dir = read_toml(base_path)
     rows = read_variants(variants_path)

@@ -111,7 +111,8 @@ def positive_lengths(problems, **named):
         bad = ~np.isfinite(a) | (a <= 0)
         if np.any(bad):
             shown = value if a.ndim == 0 else a[bad].ravel()[:4].tolist()
-            problems.append(Problem(name, Text("errors.linkage.fourbar.positive_finite_length", {"shown": shown})))
+            problems.append(Problem(name, Text("errors.linkage.fourbar.positive_finite_length",
+                                               {"shown": shown})))
         out[name] = a
     return out
 
@@ -203,7 +204,8 @@ def grashof(l1, l2, l3, l0=1.0) -> GrashofType:
     named = positive_lengths(problems, l1=l1, l2=l2, l3=l3, l0=l0)
     for name, a in named.items():
         if a.ndim != 0:
-            problems.append(Problem(name, Text("errors.linkage.fourbar.single_number", {"value": fmt_value(a)})))
+            problems.append(Problem(name, Text("errors.linkage.fourbar.single_number",
+                                               {"value": fmt_value(a)})))
     _raise(problems)
     links = [float(named[k]) for k in ("l0", "l1", "l2", "l3")]
     s, p, q, l = sorted(links)
@@ -384,7 +386,9 @@ def min_transmission_angle_deg(l1, l2, l3, l0=1.0):
     bad = ~crank_turns_fully(*args)
     if np.any(bad):
         raise GeometryError(Problem(
-            "l1, l2, l3", Text("errors.linkage.fourbar.crank_cannot_turn", {"value": fmt_value(n['l1']), "value2": fmt_value(n['l2']), "value3": fmt_value(n['l3']), "value4": fmt_value(n['l0'])})))
+            "l1, l2, l3", Text("errors.linkage.fourbar.crank_cannot_turn",
+                               {"value": fmt_value(n['l1']), "value2": fmt_value(n['l2']),
+                                "value3": fmt_value(n['l3']), "value4": fmt_value(n['l0'])})))
     mu, where = mu_min_on_line_of_centres(*args)
     if mu.ndim == 0:
         return float(mu), float(where)

@@ -240,7 +240,8 @@ class CrankRocker(_CrankMechanism):
         bad, ends = [], []
         if min(near, near2) / scale < -tol:  # |AC| too short around φ = γ
             h = math.acos(max(-1.0, c_near))
-            bad.append(Text("errors.linkage.mechanisms.short", {"angles": _intervals_deg(gam - h, gam + h)}))
+            bad.append(Text("errors.linkage.mechanisms.short",
+                            {"angles": _intervals_deg(gam - h, gam + h)}))
             ends += [math.degrees(gam - h) % 360, math.degrees(gam + h) % 360]
         if far / scale < -tol:  # |AC| too long around φ = γ + π
             h = math.acos(min(1.0, c_far))
@@ -360,7 +361,8 @@ class CrankSlider(_CrankMechanism):
                 ends += [math.degrees(gam + hi) % 360, math.degrees(gam + math.pi - hi) % 360]
         if bad:
             raise AssemblyError(
-                Text("errors.linkage.mechanisms.crank_cannot_turn_2", {"items": "; ".join(bad)}), ends)
+                Text("errors.linkage.mechanisms.crank_cannot_turn_2",
+                     {"items": "; ".join(bad)}), ends)
 
     def singular_angles(self, tol=ROTATABILITY_RTOL):
         """Crank angles [rad] where the rod stands perpendicular to the guide."""

@@ -730,4 +730,5 @@ def _check_finite_tables(result):
         for r in bad_rows:
             phi = float(df["phi_deg"].iat[r])
             if not any(abs((phi - a + 180.0) % 360.0 - 180.0) < SAME_ANGLE_DEG for a in sing):
-                raise OutputError(Text("errors.linkage.report.row_not_finite", {"name": name, "r": r + 1, "phi": phi}))
+                raise OutputError(Text("errors.linkage.report.row_not_finite",
+                                       {"name": name, "r": r + 1, "phi": phi}))

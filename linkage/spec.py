@@ -174,7 +174,8 @@ def load_spec(path_or_dict) -> MechanismSpec:
     for lname in lt:
         if lname not in link_names:
             ck.add(f"links.{lname}",
-                   Text("errors.linkage.spec.unknown_link_valid", {"value": _kind_text(kind or "this"), "items": ', '.join(link_names)}))
+                   Text("errors.linkage.spec.unknown_link_valid",
+                        {"value": _kind_text(kind or "this"), "items": ', '.join(link_names)}))
     point_names = set()
     for lname in link_names:
         path = f"links.{lname}"
@@ -197,7 +198,8 @@ def load_spec(path_or_dict) -> MechanismSpec:
             ppath = f"{path}.points"
             if not _POINT_NAME.match(pname) or pname in RESERVED_POINTS:
                 ck.add(f"{ppath}.{pname}",
-                       Text("errors.linkage.spec.invalid_point_name", {"items": ', '.join(RESERVED_POINTS)}))
+                       Text("errors.linkage.spec.invalid_point_name",
+                            {"items": ', '.join(RESERVED_POINTS)}))
                 continue
             if pname in point_names:
                 ck.add(f"{ppath}.{pname}", Text("errors.linkage.spec.point_name_already"))
@@ -250,13 +252,16 @@ def load_spec(path_or_dict) -> MechanismSpec:
                                           "output": _kind_text(output, "errors.link.")}))
             continue
         if link is not None and link != output:
-            ck.add(f"{path}.link", Text("errors.linkage.spec.resistance_acts_on", {"output": output, "link": link}))
+            ck.add(f"{path}.link", Text("errors.linkage.spec.resistance_acts_on",
+                                        {"output": output, "link": link}))
         r = get(key, required=True)
         stroke = get("stroke")
         span_key = "span_deg" if output == "rocker" else "span_m"
         other = "span_m" if output == "rocker" else "span_deg"
         if other in t:
-            ck.add(f"{path}.{other}", Text("errors.linkage.spec.use_for", {"span_key": span_key, "output": _kind_text(output, "errors.link.")}))
+            ck.add(f"{path}.{other}", Text("errors.linkage.spec.use_for",
+                                           {"span_key": span_key,
+                                            "output": _kind_text(output, "errors.link.")}))
         if "at" in t:
             ck.add(f"{path}.at", Text("errors.linkage.spec.resistance_acts_at"))
         span = get(span_key)
@@ -302,7 +307,8 @@ def load_spec(path_or_dict) -> MechanismSpec:
         needs = []
     if needs and working is None and "working_stroke" not in a:
         ck.add("analysis.working_stroke",
-               Text("errors.linkage.spec.missing_required_with", {"items": ' and '.join(needs), "items2": ', '.join(map(repr, strokes))}))
+               Text("errors.linkage.spec.missing_required_with",
+                    {"items": ' and '.join(needs), "items2": ', '.join(map(repr, strokes))}))
     ck.raise_if_any()
     return MechanismSpec(
         kind=kind, name=name, crank=crank, coupler=coupler, rocker=rocker, ground=ground,

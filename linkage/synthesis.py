@@ -85,7 +85,8 @@ def _phi0(problems, phi0_deg, name="phi0_deg"):
     if a is None:
         return None
     if a.ndim != 0 or not math.isfinite(float(a)) or not 0.0 < float(a) < 180.0:
-        problems.append(Problem(name, Text("errors.linkage.synthesis.crank_angle_strictly", {"value": fmt_value(phi0_deg)})))
+        problems.append(Problem(name, Text("errors.linkage.synthesis.crank_angle_strictly",
+                                           {"value": fmt_value(phi0_deg)})))
         return None
     return float(a)
 
@@ -100,7 +101,8 @@ def _scalar(name, value, problems):
     if a is None:
         return None
     if a.ndim != 0:
-        problems.append(Problem(name, Text("errors.linkage.synthesis.single_number", {"value": fmt_value(value)})))
+        problems.append(Problem(name, Text("errors.linkage.synthesis.single_number",
+                                           {"value": fmt_value(value)})))
         return None
     return float(a)
 
@@ -301,7 +303,9 @@ def kolchin_line_points(l1, phi0_deg=30.0):
     bad = ~np.isfinite(l1a) | (l1a < 0.0) | (l1a > top + TOL)
     if np.any(bad):
         raise SynthesisError(Problem(
-            "l1", Text("errors.linkage.synthesis.lie_max_for", {"top": top, "phi0": phi0, "value": fmt_value(l1a[bad] if l1a.ndim else l1a)})))
+            "l1", Text("errors.linkage.synthesis.lie_max_for",
+                       {"top": top, "phi0": phi0,
+                        "value": fmt_value(l1a[bad] if l1a.ndim else l1a)})))
     l1a = np.minimum(l1a, top)
     S, D = _boundary_sd(l1a, _c(phi0))
     big, small = (S + D) / 2.0, (S - D) / 2.0
@@ -365,7 +369,8 @@ def right_angle_family(l1, phi0_deg=30.0, n=181) -> FamilyArc:
     phi0 = _phi0(problems, phi0_deg)
     l1f = _scalar("l1", l1, problems)
     if l1f is not None and not (math.isfinite(l1f) and l1f > 0):
-        problems.append(Problem("l1", Text("errors.linkage.synthesis.positive_finite_length", {"l1": l1})))
+        problems.append(Problem("l1", Text("errors.linkage.synthesis.positive_finite_length",
+                                           {"l1": l1})))
     if not isinstance(n, (int, np.integer)) or n < 2:
         problems.append(Problem("n", Text("errors.linkage.synthesis.integer", {"n": n})))
     _raise(problems)
@@ -698,11 +703,15 @@ def design(l1, l2, l3, phi0_deg=30.0, method="given") -> Design:
     resid = l2 * l2 + l3 * l3 - (l1 * (l1 - 2.0 * c) + 1.0)
     if abs(resid) > TOL:
         raise SynthesisError(Problem(
-            "l1, l2, l3", Text("errors.linkage.synthesis.not_member_family", {"l1": l1, "l2": l2, "l3": l3, "phi0": phi0, "resid": resid})))
+            "l1, l2, l3", Text("errors.linkage.synthesis.not_member_family",
+                               {"l1": l1, "l2": l2, "l3": l3, "phi0": phi0, "resid": resid})))
     if not _kolchin_margin(l1, l2, l3) >= -TOL:
         t = grashof(l1, l2, l3)
         raise SynthesisError(Problem(
-            "l1, l2, l3", Text("errors.linkage.synthesis.outside_region_existence_2", {"l1": l1, "l2": l2, "l3": l3, "phi0": phi0, "t": Text("linkage.grashof." + str(t).lower().replace("-", "_")), "value": l1_max(phi0)})))
+            "l1, l2, l3", Text("errors.linkage.synthesis.outside_region_existence_2",
+                               {"l1": l1, "l2": l2, "l3": l3, "phi0": phi0,
+                                "t": Text("linkage.grashof." + str(t).lower().replace("-", "_")),
+                                "value": l1_max(phi0)})))
     mu, at = min_transmission_angle_deg(l1, l2, l3)
     return Design(phi0, l1, l2, l3, mu, at, _type_with_tol(l1, l2, l3), method)
 
@@ -814,7 +823,8 @@ def design_equal_l2_l3(l1, phi0_deg=30.0) -> Design:
     top = l1_max(phi0)
     if l1f > top + TOL:
         raise SynthesisError(Problem(
-            "l1", Text("errors.linkage.synthesis.not_exceed_max", {"top": top, "phi0": phi0, "l1f": l1f})))
+            "l1", Text("errors.linkage.synthesis.not_exceed_max",
+                       {"top": top, "phi0": phi0, "l1f": l1f})))
     l2 = float(family_radius(l1f, phi0)) / math.sqrt(2.0)
     return design(l1f, l2, l2, phi0, method="given l1, l2 = l3")
 
@@ -861,12 +871,14 @@ def design_for_mu_min(l2, mu_min_deg, phi0_deg=30.0, l1_step=None) -> Design:
         positive_lengths(problems, l2=l2f)
     mu = _scalar("mu_min_deg", mu_min_deg, problems)
     if mu is not None and not (math.isfinite(mu) and 0.0 <= mu < 90.0):
-        problems.append(Problem("mu_min_deg", Text("errors.linkage.synthesis.angle_min", {"mu_min_deg": mu_min_deg})))
+        problems.append(Problem("mu_min_deg", Text("errors.linkage.synthesis.angle_min",
+                                                   {"mu_min_deg": mu_min_deg})))
     step = None
     if l1_step is not None:
         step = _scalar("l1_step", l1_step, problems)
         if step is not None and not (math.isfinite(step) and step > 0):
-            problems.append(Problem("l1_step", Text("errors.linkage.synthesis.positive_step", {"l1_step": l1_step})))
+            problems.append(Problem("l1_step", Text("errors.linkage.synthesis.positive_step",
+                                                    {"l1_step": l1_step})))
     _raise(problems)
     c = _c(phi0)
     top = l1_max(phi0)
@@ -889,13 +901,15 @@ def design_for_mu_min(l2, mu_min_deg, phi0_deg=30.0, l1_step=None) -> Design:
             hint = Text("errors.linkage.synthesis.best", {"l2": l2f, "mu": best[i],
                                                           "l1": grid[i]})
         raise SynthesisError(Problem(
-            "mu_min_deg", Text("errors.linkage.synthesis.min_not_reachable", {"mu": mu, "phi0": phi0, "l2f": l2f, "hint": hint})))
+            "mu_min_deg", Text("errors.linkage.synthesis.min_not_reachable",
+                               {"mu": mu, "phi0": phi0, "l2f": l2f, "hint": hint})))
     method = f"given l2 and mu_min >= {mu:g} deg"
     if step is not None:
         n = math.floor(l1 / step * (1 + ROUNDOFF_RTOL))
         if n < 1:
             raise SynthesisError(Problem(
-                "l1_step", Text("errors.linkage.synthesis.rounding_down_multiple", {"l1": l1, "step": step})))
+                "l1_step", Text("errors.linkage.synthesis.rounding_down_multiple",
+                                {"l1": l1, "step": step})))
         l1 = n * step
         l3 = float(family_l3(l1, l2f, phi0))
         method += f", l1 rounded down to a multiple of {step:g}"

@@ -147,11 +147,13 @@ def run_study(phi0=30.0, *, l1=None, l2=None, l3=None, mu_min=None, l1_step=None
     mode = MODES.get(given)
     problems = []
     if mode is None:
-        problems.append(Problem(", ".join(sorted(given)), Text("errors.linkage.synthesis_study.choose_one_l")))
+        problems.append(Problem(", ".join(sorted(given)),
+                                Text("errors.linkage.synthesis_study.choose_one_l")))
     if l1_step is not None and mode != "mu_min":
         problems.append(Problem("l1_step", Text("errors.linkage.synthesis_study.only_with_l")))
     if ground is not None and mode == "region":
-        problems.append(Problem("ground_m", Text("errors.linkage.synthesis_study.needs_chosen_mechanism")))
+        problems.append(Problem("ground_m",
+                                Text("errors.linkage.synthesis_study.needs_chosen_mechanism")))
     if omega is not None and ground is None:
         problems.append(Problem("omega", Text("errors.linkage.synthesis_study.only_with_ground")))
     if problems:

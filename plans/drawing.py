@@ -274,7 +274,8 @@ def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
         A diagram larger than the sheet's working field (choose a larger scale or A1).
     """
     if size not in SHEETS:
-        raise PlanError(Problem("size", Words("errors.plans.drawing.valid", {"size": size, "items": ', '.join(SHEETS)})))
+        raise PlanError(Problem("size", Words("errors.plans.drawing.valid",
+                                              {"size": size, "items": ', '.join(SHEETS)})))
     W, H = SHEETS[size]
     fields = fields or title_fields(result.spec)
     chosen = []
@@ -296,13 +297,16 @@ def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
 
     too_big = [b.title for b in blocks if not fits(b)]
     if too_big:
-        raise PlanError([Problem("size", Words("errors.plans.drawing.does_not_fit", {"size": size, "t": t, "x1": x1 - x0, "y1": y1 - y0})) for t in too_big])
+        raise PlanError([Problem("size", Words("errors.plans.drawing.does_not_fit",
+                                               {"size": size, "t": t, "x1": x1 - x0,
+                                                "y1": y1 - y0})) for t in too_big])
     sheets = []
     rest = blocks
     while rest:
         placed, rest = _pack(rest, x0, y0, x1, y1, (tb_left - GAP, tb_top + GAP))
         if not placed:   # pragma: no cover - guarded by too_big
-            raise PlanError(Problem("size", Words("errors.plans.drawing.cannot_place", {"size": size, "title": rest[0].title})))
+            raise PlanError(Problem("size", Words("errors.plans.drawing.cannot_place",
+                                                  {"size": size, "title": rest[0].title})))
         sh = Sheet(W, H)
         for b, dz in placed:
             sh.items += b.moved(dz)

@@ -796,7 +796,9 @@ def build_plans(result, positions=None, *, scales=None, crank_angles_deg=None):
                 hit = [int(p) - 1] if 1 <= int(p) <= len(K) else []
             if len(hit) == 0:
                 valid = (f"1…{int(pos_col.max())}" if numbered and len(K) else f"1…{len(K)}")
-                problems.append(Problem("positions", Text("errors.plans.model.position_not_analysis", {"p": p, "valid": valid})))
+                problems.append(Problem("positions",
+                                        Text("errors.plans.model.position_not_analysis",
+                                             {"p": p, "valid": valid})))
             else:
                 rows.append(int(hit[0]))
         if problems:

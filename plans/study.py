@@ -130,7 +130,8 @@ def _positions(plans, problems):
         ok = (part.isdigit() and int(part) >= 1) if isinstance(part, str) else (
             isinstance(part, int) and not isinstance(part, bool) and part >= 1)
         if not ok:
-            problems.append(Problem("plans", Text("errors.plans.study.give_position_numbers", {"part": part})))
+            problems.append(Problem("plans", Text("errors.plans.study.give_position_numbers",
+                                                  {"part": part})))
         elif int(part) not in out:
             out.append(int(part))
     return out
@@ -179,7 +180,8 @@ def run_study(spec, *, step=1.0, plots=True, plans=None, sheet="A1", measured=No
     if plans is not None:
         positions = _positions(plans, problems)
         if sheet not in SHEETS:
-            problems.append(Problem("sheet", Text("errors.plans.study.valid", {"sheet": sheet, "items": ', '.join(SHEETS)})))
+            problems.append(Problem("sheet", Text("errors.plans.study.valid",
+                                                  {"sheet": sheet, "items": ', '.join(SHEETS)})))
         scales = {}
         for arg, kinds in _SCALES:
             value = scale_args[arg]

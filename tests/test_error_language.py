@@ -120,6 +120,11 @@ CASES = [
         t, pressure=OTTO + "lambda_z = 1.5\nrho = 9.0\n")]),
     ("engine-rod", lambda t: ["engine", engine_spec(
         t, extra="[rod]\nmodel = \"rigid\"\ncg_from_big_end_mm = 900.0\n")]),
+    ("engine-bearings", lambda t: ["engine", engine_spec(
+        t, extra="[bearings]\njournal_positions_mm = [10.0, 50.0]\n"), "--bearings"]),
+    ("engine-out-input", lambda t: [
+        "engine", engine_spec(t, pressure="[pressure]\nfile = \"t_forces.csv\""),
+        write(t, "t_forces.csv", "angle_deg,p_MPa\n0,0.1\n360,5\n") and "-o", str(t)]),
     ("engine-step", lambda t: ["engine", "--example", "--step", "0"]),
     ("engine-jobs", lambda t: ["engine", "--example", "--jobs", "0", "-o", str(t / "o")]),
     ("engine-both", lambda t: ["engine", engine_spec(t), "--example"]),
@@ -154,7 +159,15 @@ CASES = [
     ("dynamics-example", lambda t: ["dynamics", "--example", "nope"]),
     ("dynamics-nothing", lambda t: ["dynamics"]),
     ("dynamics-out-file", lambda t: ["dynamics", "--example", "-o", a_file(t)]),
+    ("dynamics-linkage-statics", lambda t: ["dynamics", write(
+        t, "d.toml", LINKAGE.format(crank=0.175, extra="").replace(
+            "omega_rad_s = 17.0", "omega_rad_s = 0.0").replace(
+            'positions = 12\nworking_stroke = "ccw"', "crank_angles_deg = [0, 90]")
+        + "\n[dynamics]\ndelta = 0.05\n")]),
     # balance
+    ("balance-no-z", lambda t: ["balance", write(
+        t, "rotor.toml", "[rotor]\nname = \"r\"\nplanes_mm = [0, 300]\n\n"
+                         "[[rotor.mass]]\nmr_gmm = 90\nangle_deg = 270\n")]),
     ("balance-planes", lambda t: ["balance", rotor_spec(t, planes="[0, 0, 300]")]),
     ("balance-mass", lambda t: ["balance", rotor_spec(t, mass="mr_gmm = 90\nm_g = 3\n"
                                                              "r_mm = 30")]),

@@ -23,13 +23,15 @@ def check_rounded_peak(c, cyc, lam, k):
     peak = cyc.peak_factor * cyc.pz
     if peak > line:
         c.add("pressure.cycle.peak_factor",
-              Text("errors.engine.cycle.rounded_peak_peak", {"peak": peak / 1e6, "a": a, "line": line / 1e6}))
+              Text("errors.engine.cycle.rounded_peak_peak",
+                   {"peak": peak / 1e6, "a": a, "line": line / 1e6}))
         return
     join = a + JOIN_AFTER_PEAK_DEG
     after = float(sharp_cycle_pressure([join], cyc, lam, k=k)[0])
     if after >= peak:
         c.add("pressure.cycle.peak_factor",
-              Text("errors.engine.cycle.expansion_line_at", {"join": join, "after": after / 1e6, "peak": peak / 1e6}))
+              Text("errors.engine.cycle.expansion_line_at",
+                   {"join": join, "after": after / 1e6, "peak": peak / 1e6}))
 
 
 def read_cycle(c, cy, strokes):
@@ -73,14 +75,17 @@ def read_cycle(c, cy, strokes):
                     n2=n2, pz_input=None if pz is None else pz * 1e6, lambda_z_input=lz,
                     rho=rho, rounding=rounding, **opts)
     if pz is not None and cyc.pz < cyc.pc:
-        c.add(f"{path}.pz_MPa", Text("errors.engine.cycle.compression_pressure_pc", {"pz": pz, "value": cyc.pc / 1e6}))
+        c.add(f"{path}.pz_MPa", Text("errors.engine.cycle.compression_pressure_pc",
+                                     {"pz": pz, "value": cyc.pc / 1e6}))
         return None
     if kind == "diesel" and rho >= eps:
-        c.add(f"{path}.rho", Text("errors.engine.cycle.compression_ratio", {"rho": rho, "eps": eps}))
+        c.add(f"{path}.rho", Text("errors.engine.cycle.compression_ratio",
+                                  {"rho": rho, "eps": eps}))
         return None
     if rounding and (360 + opts["peak_after_tdc_deg"] + JOIN_AFTER_PEAK_DEG
                      > 540 - opts["exhaust_opening_deg"]):
-        c.add(f"{path}.exhaust_opening_deg", Text("errors.engine.cycle.combustion_rounding_peak", {"JOIN_AFTER_PEAK_DEG": JOIN_AFTER_PEAK_DEG}))
+        c.add(f"{path}.exhaust_opening_deg", Text("errors.engine.cycle.combustion_rounding_peak",
+                                                  {"JOIN_AFTER_PEAK_DEG": JOIN_AFTER_PEAK_DEG}))
         return None
     if rounding and opts["peak_factor"] * cyc.pz < opts["pc_factor"] * cyc.pc:
         c.add(f"{path}.peak_factor", Text("errors.engine.cycle.rounded_peak_peak_2"))

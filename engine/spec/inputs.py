@@ -75,7 +75,8 @@ def bearing_options(table, checker=None):
               Text("errors.engine.inputs.two_journals_lie", {"zj": zj}))
         zj = None
     if zj is not None and zj[0] == zj[1]:
-        c.add("bearings.journal_positions_mm", Text("errors.engine.inputs.journals_differ", {"zj": zj}))
+        c.add("bearings.journal_positions_mm", Text("errors.engine.inputs.journals_differ",
+                                                    {"zj": zj}))
         zj = None
     mr = c.get(t, BEARINGS, "counterweight_kg_mm", si=True)
     ang = c.get(t, BEARINGS, "counterweight_angle_deg")
@@ -173,13 +174,15 @@ def _rigid(c, t, spec):
     b = None
     if b_mm is not None:
         if not b_mm < L * 1e3:
-            c.add("rod.cg_from_big_end_mm", Text("errors.engine.inputs.centre_mass_lie", {"b_mm": b_mm, "L": L * 1e3}))
+            c.add("rod.cg_from_big_end_mm", Text("errors.engine.inputs.centre_mass_lie",
+                                                 {"b_mm": b_mm, "L": L * 1e3}))
         else:
             b = b_mm / 1e3
     elif m is not None:
         small = m - spec.m_rod_rot
         if not 0 < small < m:
-            c.add("rod.mass_kg", Text("errors.engine.inputs.kg_exceed_rotating", {"m": m, "m_rod_rot": spec.m_rod_rot}))
+            c.add("rod.mass_kg", Text("errors.engine.inputs.kg_exceed_rotating",
+                                      {"m": m, "m_rod_rot": spec.m_rod_rot}))
         else:
             b = L * small / m
     if m is None or b is None or J is None:

@@ -103,12 +103,14 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
         L_mm = eng("rod_length_mm", required=True)
         if L_mm is not None and stroke is not None and not L_mm > stroke / 2:
             c.add("engine.rod_length_mm",
-                  Text("errors.engine.loading.crank_radius_stroke", {"L_mm": L_mm, "stroke": stroke / 2}))
+                  Text("errors.engine.loading.crank_radius_stroke",
+                       {"L_mm": L_mm, "stroke": stroke / 2}))
             L_mm = None
     if offset and stroke is not None and (lam is not None or L_mm is not None):
         span = (L_mm if L_mm is not None else stroke / 2 / lam) - stroke / 2
         if not abs(offset) < span:
-            c.add("engine.pin_offset_mm", Text("errors.engine.loading.e_l_r", {"offset": offset, "span": span}))
+            c.add("engine.pin_offset_mm", Text("errors.engine.loading.e_l_r",
+                                               {"offset": offset, "span": span}))
 
     # ---- [masses]
     m = c.sub(data, MASSES)
@@ -118,7 +120,8 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
         if not groups:
             c.add("masses", Text("errors.engine.loading.no_masses_given"))
         elif len(groups) > 1:
-            c.add("masses", Text("errors.engine.loading.give_masses_one", {"items": " / ".join(" + ".join(g) for g in groups)}))
+            c.add("masses", Text("errors.engine.loading.give_masses_one",
+                                 {"items": " / ".join(" + ".join(g) for g in groups)}))
     frac = c.get(m, MASSES, "rod_small_end_fraction")
     masses["crank_rotating_kg"] = c.get(m, MASSES, "crank_rotating_kg")
     if len(groups) == 1:
@@ -144,7 +147,8 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
         if not sources:
             c.add("pressure", Text("errors.engine.loading.no_pressure_source"))
         elif len(sources) > 1:
-            c.add("pressure", Text("errors.engine.loading.give_exactly_one", {"items": " and ".join(sources)}))
+            c.add("pressure", Text("errors.engine.loading.give_exactly_one",
+                                   {"items": " and ".join(sources)}))
     fname = pr.get("file") if isinstance(pr, dict) else None
     if "firing_tdc_deg" in pr and not (isinstance(fname, str)
                                        and fname.lower().endswith(".ind")):
@@ -158,7 +162,8 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
         if fname is not None:
             pfile = (base / fname) if not Path(fname).is_absolute() else Path(fname)
             if not pfile.is_file():
-                c.add("pressure.file", Text("errors.engine.loading.file_does_not", {"value": str(pfile)}))
+                c.add("pressure.file", Text("errors.engine.loading.file_does_not",
+                                            {"value": str(pfile)}))
             elif pfile.suffix.lower() == ".ind":          # Diesel-RK export
                 from ..dieselrk import read_ind
                 angle, p = read_ind(pfile, cycle_deg, c.get(pr, PRESSURE, "firing_tdc_deg"),
@@ -174,7 +179,8 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
     if isinstance(pressure, CycleSpec) and eps_engine is not None \
             and eps_engine != pressure.compression_ratio:
         c.add("engine.compression_ratio",
-              Text("errors.engine.loading.but_pressure_cycle", {"eps_engine": eps_engine, "compression_ratio": pressure.compression_ratio}))
+              Text("errors.engine.loading.but_pressure_cycle",
+                   {"eps_engine": eps_engine, "compression_ratio": pressure.compression_ratio}))
 
     # ---- [table]
     t = c.sub(data, TABLE)
@@ -186,7 +192,8 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
             c.problems.append(too_many)
     for i, x in enumerate(extra or []):
         if x > cycle_deg:
-            c.add(f"table.extra_angles_deg[{i}]", Text("errors.engine.loading.message", {"x": x, "cycle_deg": cycle_deg}))
+            c.add(f"table.extra_angles_deg[{i}]", Text("errors.engine.loading.message",
+                                                       {"x": x, "cycle_deg": cycle_deg}))
     mu = c.get(t, TABLE, "force_scale_N_per_mm")
     form = c.get(t, TABLE, "form")
 
@@ -233,13 +240,16 @@ def _crank_train(c, data, e, cylinders):
     order = eng("firing_order")
     if order is not None:
         if any(x != int(x) for x in order):
-            c.add("engine.firing_order", Text("errors.engine.loading.cylinder_numbers_whole", {"order": order}))
+            c.add("engine.firing_order", Text("errors.engine.loading.cylinder_numbers_whole",
+                                              {"order": order}))
             order = None
         else:
             order = tuple(int(x) for x in order)
             n = cylinders or 0               # at most MAX_CYLINDERS (the schema's bound)
             if sorted(order) != list(range(1, n + 1)):
-                c.add("engine.firing_order", Text("errors.engine.loading.permutation_cylinders_each", {"value": list(order), "n": n}))
+                c.add("engine.firing_order",
+                      Text("errors.engine.loading.permutation_cylinders_each", {"value": list(order),
+                                                                                "n": n}))
     spacing = eng("cylinder_spacing_mm")
     boff = eng("bank_offset_mm")
     if "bank_offset_mm" in e and arr == "inline":

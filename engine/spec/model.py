@@ -350,16 +350,20 @@ class TableSettings:
             return
         problems = []
         if self.form not in TABLE_FORMS:
-            problems.append(Problem("form", Text("errors.engine.model.valid", {"form": self.form, "items": ", ".join(repr(f) for f in TABLE_FORMS)})))
+            problems.append(Problem("form", Text("errors.engine.model.valid",
+                                                 {"form": self.form,
+                                                  "items": ", ".join(repr(f) for f in TABLE_FORMS)})))
         if not (_finite(self.step_deg) and self.step_deg > 0):
-            problems.append(Problem("step_deg", Text("errors.engine.model.finite_number", {"step_deg": self.step_deg})))
+            problems.append(Problem("step_deg", Text("errors.engine.model.finite_number",
+                                                     {"step_deg": self.step_deg})))
         for i, a in enumerate(self.extra_angles_deg):
             if not (_finite(a) and a >= 0):
                 problems.append(Problem(f"extra_angles_deg[{i}]",
                                         Text("errors.engine.model.finite_number_3", {"a": a})))
         if self.force_scale is not None and not (_finite(self.force_scale)
                                                  and self.force_scale > 0):
-            problems.append(Problem("force_scale", Text("errors.engine.model.finite_number_2", {"force_scale": self.force_scale})))
+            problems.append(Problem("force_scale", Text("errors.engine.model.finite_number_2",
+                                                        {"force_scale": self.force_scale})))
         if problems:
             raise EngineSpecError(problems)
 
@@ -440,15 +444,20 @@ class CrankTrain:
             return
         problems = []
         if self.arrangement not in ARRANGEMENTS:
-            problems.append(Problem("arrangement", Text("errors.engine.model.valid_2", {"arrangement": self.arrangement, "items": ", ".join(ARRANGEMENTS)})))
+            problems.append(Problem("arrangement", Text("errors.engine.model.valid_2",
+                                                        {"arrangement": self.arrangement,
+                                                         "items": ", ".join(ARRANGEMENTS)})))
         if self.arrangement == "vee":
             v = self.vee_angle_deg
             if not (isinstance(v, (int, float)) and math.isfinite(v) and 0 < v < 180):
-                problems.append(Problem("vee_angle_deg", Text("errors.engine.model.vee_needs_angle", {"v": v})))
+                problems.append(Problem("vee_angle_deg",
+                                        Text("errors.engine.model.vee_needs_angle", {"v": v})))
         elif self.vee_angle_deg is not None:
             problems.append(Problem("vee_angle_deg", Text("errors.engine.model.only_used_with")))
         if self.counterweights not in COUNTERWEIGHT_DESIGNS:
-            problems.append(Problem("counterweights", Text("errors.engine.model.valid_3", {"counterweights": self.counterweights, "items": ", ".join(COUNTERWEIGHT_DESIGNS)})))
+            problems.append(Problem("counterweights", Text("errors.engine.model.valid_3",
+                                                           {"counterweights": self.counterweights,
+                                                            "items": ", ".join(COUNTERWEIGHT_DESIGNS)})))
         if self.counterweight_list and self.counterweights != "none":
             problems.append(Problem("counterweights", Text("errors.engine.model.give_design_or")))
         for key in ("mechanical_efficiency", "delta"):
@@ -456,7 +465,8 @@ class CrankTrain:
             if v is not None and not (math.isfinite(v) and 0 < v <= 1):
                 problems.append(Problem(key, Text("errors.engine.model.and_2", {"v": v})))
         if not (math.isfinite(self.flywheel_share) and 0 < self.flywheel_share <= 1):
-            problems.append(Problem("flywheel_share", Text("errors.engine.model.and", {"flywheel_share": self.flywheel_share})))
+            problems.append(Problem("flywheel_share", Text("errors.engine.model.and",
+                                                           {"flywheel_share": self.flywheel_share})))
         if problems:
             raise EngineSpecError(problems)
 

@@ -33,18 +33,23 @@ def check_pressure_points(c, angle, p, cycle_deg, where, unit="p_Pa"):
     f = PRESSURE_UNITS[unit]
     n0 = len(c.problems)
     if len(angle) != len(p):
-        c.add(where(None), Text("errors.engine.pressure.angle_and_pressure", {"n": len(angle), "n2": len(p)}))
+        c.add(where(None), Text("errors.engine.pressure.angle_and_pressure",
+                                {"n": len(angle), "n2": len(p)}))
         return None, None
     for i, (a, q) in enumerate(zip(angle, p)):
         if not (math.isfinite(a) and math.isfinite(q)):
-            c.add(where(i), Text("errors.engine.pressure.angle_and_pressure_2", {"a": a, "q": q / f}))
+            c.add(where(i), Text("errors.engine.pressure.angle_and_pressure_2",
+                                 {"a": a, "q": q / f}))
         elif q < 0:
-            c.add(where(i), Text("errors.engine.pressure.negative_pressures_absolute", {"unit": unit, "q": q / f}))
+            c.add(where(i), Text("errors.engine.pressure.negative_pressures_absolute",
+                                 {"unit": unit, "q": q / f}))
     if len(c.problems) > n0:
         return None, None
     if len(angle) >= 2 and angle[-1] == cycle_deg and angle[0] == 0.0:
         if p[-1] != p[0]:
-            c.add(where(len(angle) - 1), Text("errors.engine.pressure.end_row_at", {"cycle_deg": cycle_deg, "unit": unit, "value": p[-1] / f, "value2": p[0] / f}))
+            c.add(where(len(angle) - 1), Text("errors.engine.pressure.end_row_at",
+                                              {"cycle_deg": cycle_deg, "unit": unit,
+                                               "value": p[-1] / f, "value2": p[0] / f}))
             return None, None
         angle, p = angle[:-1], p[:-1]
     if len(angle) < 2:
@@ -52,11 +57,13 @@ def check_pressure_points(c, angle, p, cycle_deg, where, unit="p_Pa"):
         return None, None
     for i, a in enumerate(angle):
         if not 0 <= a < cycle_deg:
-            c.add(where(i), Text("errors.engine.pressure.angle_outside_cycle", {"a": a, "cycle_deg": cycle_deg}))
+            c.add(where(i), Text("errors.engine.pressure.angle_outside_cycle",
+                                 {"a": a, "cycle_deg": cycle_deg}))
         elif i and a <= angle[i - 1]:
             word = Text("errors.engine.pressure.repeated" if a == angle[i - 1]
                         else "errors.engine.pressure.not_sorted")
-            c.add(where(i), Text("errors.engine.pressure.angle_angles_increase", {"a": a, "word": word}))
+            c.add(where(i), Text("errors.engine.pressure.angle_angles_increase",
+                                 {"a": a, "word": word}))
     if len(c.problems) > n0:
         return None, None
     return np.asarray(angle, float), np.asarray(p, float)
@@ -69,10 +76,12 @@ def inline_pressure(c, pr, cycle_deg):
     units = [k for k in PRESSURE_UNITS if k in pr]
     angle = c.get(pr, PRESSURE, "angle_deg")
     if not units:
-        c.add("pressure", Text("errors.engine.pressure.inline_data_need", {"items": ", ".join(PRESSURE_UNITS)}))
+        c.add("pressure", Text("errors.engine.pressure.inline_data_need",
+                               {"items": ", ".join(PRESSURE_UNITS)}))
         return None, None
     if len(units) > 1:
-        c.add("pressure", Text("errors.engine.pressure.give_one_pressure", {"items": ", ".join(units)}))
+        c.add("pressure", Text("errors.engine.pressure.give_one_pressure",
+                               {"items": ", ".join(units)}))
         return None, None
     key = units[0]
     vals = c.get(pr, PRESSURE, key)
@@ -127,7 +136,8 @@ def read_pressure_csv(path, cycle_deg, checker=None):
         with open(path, encoding="utf-8-sig", newline="") as f:
             text = f.read()
     except (OSError, UnicodeDecodeError, ValueError) as exc:
-        c.add(key, Text("errors.engine.pressure.cannot_read", {"name": name, "value": os_reason(exc)}))
+        c.add(key, Text("errors.engine.pressure.cannot_read",
+                        {"name": name, "value": os_reason(exc)}))
         text = None
     lines = []
     if text is not None:
@@ -140,9 +150,13 @@ def read_pressure_csv(path, cycle_deg, checker=None):
         seps = [s for s in (",", ";", "\t") if s in htext]
         shown = {",": "','", ";": "';'", "\t": "tab"}
         if len(seps) > 1:
-            c.add(key, Text("errors.engine.pressure.line_header_uses", {"name": name, "hline": hline, "items": ', '.join(shown[s] for s in seps)}))
+            c.add(key, Text("errors.engine.pressure.line_header_uses",
+                            {"name": name, "hline": hline,
+                             "items": ', '.join(shown[s] for s in seps)}))
         elif not seps:
-            c.add(key, Text("errors.engine.pressure.line_header_has", {"name": name, "hline": hline, "value": htext.strip(), "items": ', '.join(PRESSURE_UNITS)}))
+            c.add(key, Text("errors.engine.pressure.line_header_has",
+                            {"name": name, "hline": hline, "value": htext.strip(),
+                             "items": ', '.join(PRESSURE_UNITS)}))
         else:
             sep = seps[0]
             rows = list(csv.reader([ln for _, ln in lines], delimiter=sep))
@@ -154,7 +168,9 @@ def read_pressure_csv(path, cycle_deg, checker=None):
                 if "angle_deg" not in header:
                     what = (Text("errors.engine.pressure.no_angle") if units else
                             Text("errors.engine.pressure.no_angle_and", {"what": what}))
-                c.add(key, Text("errors.engine.pressure.line_header_needs", {"name": name, "hline": hline, "what": what, "items": ', '.join(PRESSURE_UNITS), "items2": ', '.join(header)}))
+                c.add(key, Text("errors.engine.pressure.line_header_needs",
+                                {"name": name, "hline": hline, "what": what,
+                                 "items": ', '.join(PRESSURE_UNITS), "items2": ', '.join(header)}))
             else:
                 angle, p = _read_pressure_rows(c, key, name, sep, header, units[0],
                                                rows[1:], [n for n, _ in lines[1:]],
@@ -175,7 +191,8 @@ def _read_pressure_rows(c, key, name, sep, header, unit, rows, numbers, cycle_de
     from crankbase.validation import MAX_ROWS
 
     if len(rows) > MAX_ROWS:
-        c.add(key, Text("errors.engine.pressure.has_data_rows", {"name": name, "n": len(rows), "MAX_ROWS": MAX_ROWS}))
+        c.add(key, Text("errors.engine.pressure.has_data_rows",
+                        {"name": name, "n": len(rows), "MAX_ROWS": MAX_ROWS}))
         return None, None
     ia, ip = header.index("angle_deg"), header.index(unit)
     comma_sep = sep == ","
@@ -201,7 +218,8 @@ def _read_pressure_rows(c, key, name, sep, header, unit, rows, numbers, cycle_de
         for msg in problems[:max_shown]:
             c.add(key, msg)
         if len(problems) > max_shown:
-            c.add(key, Text("errors.engine.pressure.and_more_problems", {"name": name, "value": len(problems) - max_shown}))
+            c.add(key, Text("errors.engine.pressure.and_more_problems",
+                            {"name": name, "value": len(problems) - max_shown}))
         return None, None
     decimal_comma = not comma_sep and "," in marks
     a_list, p_list, where = [], [], []
@@ -251,7 +269,8 @@ def _read_pressure_rows(c, key, name, sep, header, unit, rows, numbers, cycle_de
     for msg in problems[:max_shown]:
         c.add(key, msg)
     if len(problems) > max_shown:
-        c.add(key, Text("errors.engine.pressure.and_more_lines", {"name": name, "value": len(problems) - max_shown}))
+        c.add(key, Text("errors.engine.pressure.and_more_lines",
+                        {"name": name, "value": len(problems) - max_shown}))
     if problems:
         return None, None
 
