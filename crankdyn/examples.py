@@ -18,5 +18,6 @@ def find_example(name, examples, what):
         raise SpecError(
                         Text("errors.crankdyn.examples.example_no_example",
                              {"what": Text(f"errors.what.{what}"), "name": name,
-                              "items": ", ".join(list(examples) + [s for s in stems if s not in examples])}))
+                              "items": ", ".join(list(examples)
+                                                 + [s for s in stems if s not in examples])}))
     return example_path(fname)

@@ -121,7 +121,8 @@ def _net_work_check(model, what):
     W = model.W_net_J
     scale = max(np.max(np.abs(model.W_drive_J)), np.max(np.abs(model.W_resist_J)), 1e-12)
     if abs(W[-1]) > 1e-6 * scale:
-        kind = Text("errors.dynamics.motion.short" if W[-1] < 0 else "errors.dynamics.motion.exceeds")
+        kind = Text("errors.dynamics.motion.short" if W[-1] < 0
+                    else "errors.dynamics.motion.exceeds")
         raise MotionError(Problem(
             what, Text("errors.dynamics.motion.driving_work_per",
                        {"value": model.W_drive_J[-1], "kind": kind, "value2": model.W_resist_J[-1],

@@ -165,7 +165,8 @@ def balance_fourbar(spec, radius_crank_m=None, radius_rocker_m=None,
     spec = load_spec(spec)
     if spec.kind != "crank-rocker":
         raise SpecError(Problem("mechanism.kind",
-                                Text("errors.dynamics.shaking.full_force_balance", {"kind": spec.kind})))
+                                Text("errors.dynamics.shaking.full_force_balance",
+                                     {"kind": spec.kind})))
     l1, l2, l3 = spec.crank, spec.coupler, spec.rocker
     m2, m3, m4 = (spec.links[n].mass for n in ("crank", "coupler", "rocker"))
     r2, r3, r4 = (spec.links[n].cg for n in ("crank", "coupler", "rocker"))
@@ -195,7 +196,8 @@ def balance_crank_slider(spec, fraction=0.0, radius_m=None,
     spec = load_spec(spec)
     if spec.kind != "crank-slider":
         raise SpecError(Problem("mechanism.kind",
-                                Text("errors.dynamics.shaking.partial_balance_for", {"kind": spec.kind})))
+                                Text("errors.dynamics.shaking.partial_balance_for",
+                                     {"kind": spec.kind})))
     if not 0.0 <= fraction <= 1.0:
         raise SpecError(Problem("balance.fraction",
                                 Text("errors.dynamics.shaking.balanced_share_reciprocating",
@@ -302,7 +304,8 @@ def mechanism_balance(path_or_dict) -> BalanceResult:
     for k in bal:
         if k in _BAL_KEYS and k not in kind_keys:
             ck.add(f"balance.{k}", Text("errors.dynamics.shaking.does_not_apply",
-                                        {"kind": Text("errors.kind." + spec.kind.replace("-", "_")),
+                                        {"kind": Text("errors.kind."
+                                                      + spec.kind.replace("-", "_")),
                                          "items": ", ".join(kind_keys)}))
     ck.raise_if_any()
     if spec.kind == "crank-rocker":

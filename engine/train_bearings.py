@@ -152,7 +152,8 @@ def engine_bearings(spec, theta_deg, cylinders, throw_dir_deg, z_throw, *,
                                   "counterweight_angle_deg")]
     if one_cylinder_keys:
         raise BearingInputError([Problem(
-            f"bearings.{k}", Text("errors.engine.train_bearings.only_for_one")) for k in one_cylinder_keys])
+            f"bearings.{k}", Text("errors.engine.train_bearings.only_for_one"))
+            for k in one_cylinder_keys])
     th = np.asarray(theta_deg, float)
     tau = np.asarray(throw_dir_deg, float)
     nt = len(tau)

@@ -124,10 +124,14 @@ def read_variants(path) -> list[VariantRow]:
         if isinstance(r[name_col], float) and r[name_col].is_integer():
             name = str(int(r[name_col]))
         if not name:
-            problems.append(Problem(Text("errors.engine.variants.row", {"row": i}), Text("errors.engine.variants.column_empty", {"value": header[name_col]})))
+            problems.append(Problem(Text("errors.engine.variants.row", {"row": i}),
+                                    Text("errors.engine.variants.column_empty",
+                                         {"value": header[name_col]})))
             continue
         if name in seen:
-            problems.append(Problem(Text("errors.engine.variants.row", {"row": i}), Text("errors.engine.variants.variant_repeats_row", {"name": name, "value": seen[name]})))
+            problems.append(Problem(Text("errors.engine.variants.row", {"row": i}),
+                                    Text("errors.engine.variants.variant_repeats_row",
+                                         {"name": name, "value": seen[name]})))
             continue
         seen[name] = i
         values = {}
@@ -162,7 +166,10 @@ def apply_variant(base: dict, variant: VariantRow) -> dict:
         for k, part in enumerate(parts[:-1]):
             nxt = node.setdefault(part, {})
             if not isinstance(nxt, dict):
-                problems.append(Problem(Text("errors.engine.variants.row_key", {"row": variant.row, "key": key}), Text("errors.engine.variants.value_not_table", {"items": '.'.join(parts[:k + 1])})))
+                problems.append(Problem(
+                    Text("errors.engine.variants.row_key", {"row": variant.row, "key": key}),
+                    Text("errors.engine.variants.value_not_table",
+                         {"items": '.'.join(parts[:k + 1])})))
                 break
             node = nxt
         else:

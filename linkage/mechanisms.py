@@ -250,7 +250,9 @@ class CrankRocker(_CrankMechanism):
             ends += [math.degrees(gam + h) % 360, math.degrees(gam - h) % 360]
         if bad:
             raise AssemblyError(
-                Text("errors.linkage.mechanisms.crank_cannot_turn", {"items": bad, "value": Text("linkage.grashof." + str(self.grashof()).lower().replace("-", "_"))}), ends)
+                Text("errors.linkage.mechanisms.crank_cannot_turn",
+                     {"items": bad, "value": Text("linkage.grashof." + str(self.grashof())
+                                                  .lower().replace("-", "_"))}), ends)
 
     def singular_angles(self, tol=ROTATABILITY_RTOL):
         """Crank angles [rad] where all four joints are collinear (change point)."""

@@ -222,7 +222,8 @@ def load_spec(path_or_dict) -> MechanismSpec:
         link = get("link", choices=link_names) if link_names else None
         which = [k for k in ("force_N", "moment_Nm", "resistance_Nm", "resistance_N") if k in t]
         if len(which) != 1:
-            ck.add(path, Text("errors.linkage.spec.needs_exactly_one", {"value": ', '.join(which) or Text("errors.none")}))
+            ck.add(path, Text("errors.linkage.spec.needs_exactly_one",
+                              {"value": ', '.join(which) or Text("errors.none")}))
             continue
         key = which[0]
         at = 0j
@@ -248,7 +249,8 @@ def load_spec(path_or_dict) -> MechanismSpec:
         # resistance
         want = "resistance_Nm" if output == "rocker" else "resistance_N"
         if key != want:
-            ck.add(f"{path}.{key}", Text("errors.linkage.spec.takes_on", {"kind": _kind_text(kind), "want": want,
+            ck.add(f"{path}.{key}", Text("errors.linkage.spec.takes_on",
+                                         {"kind": _kind_text(kind), "want": want,
                                           "output": _kind_text(output, "errors.link.")}))
             continue
         if link is not None and link != output:

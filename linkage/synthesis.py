@@ -769,8 +769,10 @@ def crank_length_for_right_angle(l2, l3, phi0_deg=30.0) -> float:
                                                        {"a": roots[0], "b": roots[1]})
         why = Text("errors.linkage.synthesis.no_root_crank_rocker", {"roots": roots})
     raise SynthesisError(Problem(
-        "l2, l3", Text("errors.linkage.synthesis.outside_region_existence", {"where": where, "phi0": phi0, "why": why, "value": Text("errors.linkage.synthesis.line_sum" if c >= 0
-                                     else "errors.linkage.synthesis.lines_diff")})))
+        "l2, l3", Text("errors.linkage.synthesis.outside_region_existence",
+                       {"where": where, "phi0": phi0, "why": why,
+                        "value": Text("errors.linkage.synthesis.line_sum" if c >= 0
+                                      else "errors.linkage.synthesis.lines_diff")})))
 
 
 def design_from_l2_l3(l2, l3, phi0_deg=30.0) -> Design:

@@ -180,7 +180,8 @@ def test_workbook_inputs_and_extremes(lang_runs, lang):
 def test_example_names_are_the_commands_own(tmp_path, capsys):
     """--example lists and accepts only linkage examples, by name: an engine example is
     refused naming the linkage ones, and nothing is written."""
-    assert main(["linkage", "--lang", "en", "--example", "petrol_vaz2106", "-o", str(tmp_path / "o")]) == 2
+    assert main(["linkage", "--lang", "en",
+                 "--example", "petrol_vaz2106", "-o", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert err == ["crankdyn linkage: error: --example: no linkage example "
                    "'petrol_vaz2106'; available: ratchet, press"]

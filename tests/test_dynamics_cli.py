@@ -90,7 +90,8 @@ def test_engine_example(tmp_path):
 def test_examples_flag(tmp_path, capsys):
     assert main(["balance", "--lang", "en", "--example", "-o", str(tmp_path / "r")]) == 0
     assert (tmp_path / "r" / "two-plane-example_rotor_balance.csv").exists()
-    assert main(["dynamics", "--lang", "en", "--example", "flywheel", "-o", str(tmp_path / "f")]) == 0
+    assert main(["dynamics", "--lang", "en",
+                 "--example", "flywheel", "-o", str(tmp_path / "f")]) == 0
     assert (tmp_path / "f" / "flywheel-example-11-3_motion.csv").exists()
     assert main(["dynamics", "--lang", "en", "--example", "nope", "-o", str(tmp_path / "n")]) == 2
     assert main(["dynamics", "--lang", "en", str(example_path("flywheel_seed.toml")), "--example",

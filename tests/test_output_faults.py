@@ -243,7 +243,8 @@ def test_enospc_while_writing_a_plot_cli(tmp_path, capsys, monkeypatch):
 def test_output_through_a_file_and_empty_output(tmp_path, capsys):
     afile = tmp_path / "afile"
     afile.write_text("x")
-    assert main(["synth", "--lang", "en", "--l1", "0.1", "--no-plots", "-o", str(afile / "sub")]) == 2
+    assert main(["synth", "--lang", "en",
+                 "--l1", "0.1", "--no-plots", "-o", str(afile / "sub")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and str(afile) in err[0] and "not a folder" in err[0], err
     assert main(["synth", "--lang", "en", "--l1", "0.1", "--no-plots", "-o", str(afile)]) == 2

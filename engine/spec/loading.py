@@ -248,8 +248,8 @@ def _crank_train(c, data, e, cylinders):
             n = cylinders or 0               # at most MAX_CYLINDERS (the schema's bound)
             if sorted(order) != list(range(1, n + 1)):
                 c.add("engine.firing_order",
-                      Text("errors.engine.loading.permutation_cylinders_each", {"value": list(order),
-                                                                                "n": n}))
+                      Text("errors.engine.loading.permutation_cylinders_each",
+                           {"value": list(order), "n": n}))
     spacing = eng("cylinder_spacing_mm")
     boff = eng("bank_offset_mm")
     if "bank_offset_mm" in e and arr == "inline":

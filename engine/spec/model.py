@@ -350,9 +350,9 @@ class TableSettings:
             return
         problems = []
         if self.form not in TABLE_FORMS:
-            problems.append(Problem("form", Text("errors.engine.model.valid",
-                                                 {"form": self.form,
-                                                  "items": ", ".join(repr(f) for f in TABLE_FORMS)})))
+            problems.append(Problem("form", Text(
+                "errors.engine.model.valid",
+                {"form": self.form, "items": ", ".join(repr(f) for f in TABLE_FORMS)})))
         if not (_finite(self.step_deg) and self.step_deg > 0):
             problems.append(Problem("step_deg", Text("errors.engine.model.finite_number",
                                                      {"step_deg": self.step_deg})))
@@ -455,9 +455,10 @@ class CrankTrain:
         elif self.vee_angle_deg is not None:
             problems.append(Problem("vee_angle_deg", Text("errors.engine.model.only_used_with")))
         if self.counterweights not in COUNTERWEIGHT_DESIGNS:
-            problems.append(Problem("counterweights", Text("errors.engine.model.valid_3",
-                                                           {"counterweights": self.counterweights,
-                                                            "items": ", ".join(COUNTERWEIGHT_DESIGNS)})))
+            problems.append(Problem("counterweights", Text(
+                "errors.engine.model.valid_3",
+                {"counterweights": self.counterweights,
+                 "items": ", ".join(COUNTERWEIGHT_DESIGNS)})))
         if self.counterweight_list and self.counterweights != "none":
             problems.append(Problem("counterweights", Text("errors.engine.model.give_design_or")))
         for key in ("mechanical_efficiency", "delta"):
@@ -465,8 +466,8 @@ class CrankTrain:
             if v is not None and not (math.isfinite(v) and 0 < v <= 1):
                 problems.append(Problem(key, Text("errors.engine.model.and_2", {"v": v})))
         if not (math.isfinite(self.flywheel_share) and 0 < self.flywheel_share <= 1):
-            problems.append(Problem("flywheel_share", Text("errors.engine.model.and",
-                                                           {"flywheel_share": self.flywheel_share})))
+            problems.append(Problem("flywheel_share", Text(
+                "errors.engine.model.and", {"flywheel_share": self.flywheel_share})))
         if problems:
             raise EngineSpecError(problems)
 
