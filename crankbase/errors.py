@@ -5,9 +5,12 @@ generically.  A :class:`SpecError` carries *all* the problems found in one spec 
 each naming the key path, the bad value and what would be valid; the CLI prints them one
 per line and exits with status 2.
 
-A :class:`Problem` may carry a text key of the ``errors`` catalogue and its fields
-(:class:`Text`); :meth:`SpecError.lines` then renders it in the run's language
-(``lines("ru")``), English by default (``str(error)`` is always English).
+Every message is a text key of the ``errors`` catalogue with its fields (:class:`Text`):
+a :class:`Problem` carries one (``Problem(key, Text("errors.…", {...}))`` or
+:meth:`Problem.keyed`), and so may any other error (``OutputError(Text(...))``,
+:meth:`CrankdynError.keyed`).  :meth:`CrankdynError.lines` renders the message in the
+run's language (``lines("ru")``), English by default; ``str(error)`` is always English.
+A test (``tests/test_error_language.py``) scans the code for an error written in words.
 """
 from __future__ import annotations
 
