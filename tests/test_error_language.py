@@ -375,3 +375,22 @@ def test_the_scan_sees_a_literal_message(tmp_path):
     hits = [node.lineno for node in ast.walk(ast.parse(src)) if isinstance(node, ast.Call)
             and any(_is_words(a) for a in _message_args(node, errors))]
     assert sorted(hits) == [1, 2, 3, 4]
+
+
+def test_every_error_class_renders_in_the_run_language():
+    """OutputError, AssemblyError (any CrankdynError) keyed: English str, Russian lines."""
+    from crankbase.errors import AssemblyError, OutputError, Problem, SpecError, Text
+
+    out = OutputError(Text("errors.output.output_folder_exists", {"directory": "x"}))
+    assert str(out) == "output folder x: exists and is not a folder"
+    assert out.lines("ru") == ["папка вывода x: существует и не является папкой"]
+    asm = AssemblyError.keyed("errors.linkage.mechanisms.crank_cannot_turn_2",
+                              [10.0, 20.0], items="10°…20°")
+    assert asm.reason == str(asm) and asm.reason.startswith("the crank cannot turn fully")
+    assert asm.crank_angles_deg == [10.0, 20.0]
+    assert asm.lines("ru")[0].startswith("кривошип не проворачивается полностью")
+    # a problem's key may hold words too (a variants row): rendered in the language
+    spec = SpecError([Problem(Text("errors.engine.variants.row", {"row": 3}),
+                              Text("errors.engine.variants.column_empty", {"value": "v"}))])
+    assert str(spec) == "row 3: column 'v' is empty"
+    assert spec.lines("ru") == ["строка 3: столбец 'v' пуст"]
