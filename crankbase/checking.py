@@ -71,7 +71,8 @@ def parse_mapping(items) -> dict:
     for item in items or ():
         head, sep, key = str(item).rpartition("=")
         if not sep or not head.strip() or not key.strip():
-            problems.append(Problem("mapping", f"got {item!r}; write STUDENT_HEADER=our_column"))
+            problems.append(Problem("mapping", Text("errors.checking.write_student_header",
+                                                    {"item": item})))
             continue
         out[head.strip()] = key.strip()
     if problems:
@@ -136,7 +137,7 @@ def read_student_table(path, key, known, mapping=None) -> StudentTable:
     path = Path(path)
     mapping = dict(mapping or {})
     if not path.is_file():
-        raise SpecError(Problem(str(path), "student's table does not exist"))
+        raise SpecError(Problem(str(path), Text("errors.checking.student_s_table")))
     known = set(known)
     if path.suffix.lower() in (".xlsx", ".xlsm"):
         from openpyxl import load_workbook
@@ -174,9 +175,9 @@ def read_student_table(path, key, known, mapping=None) -> StudentTable:
                         cells[(i, n)] = (ws.title, coords[i][j])
             cells.setdefault("_sheets", []).append(ws.title)
         if not frames:
-            raise SpecError(Problem(str(path), f"no sheet has a column {key!r} in its first "
-                                    f"{_HEADER_SCAN_ROWS} rows (our workbook layout), and "
-                                    "no header was mapped to it (a mapping HEADER=" + key + ")"))
+            raise SpecError(Problem(str(path), Text("errors.checking.no_sheet_has",
+                                                    {"key": key,
+                                                     "HEADER_SCAN_ROWS": _HEADER_SCAN_ROWS})))
         data = join_words(frames, key, path)
         sheets = cells.pop("_sheets")
         # rows of later sheets are matched by key: re-point their cells
@@ -190,9 +191,9 @@ def read_student_table(path, key, known, mapping=None) -> StudentTable:
     rows = [r for r in csv.reader(lines, delimiter=delim) if any(x.strip() for x in r)]
     header = [mapping.get(h.strip(), h.strip()) for h in rows[0]] if rows else []
     if key not in header:
-        raise SpecError(Problem(str(path), f"no column {key!r}; columns: "
-                                + ", ".join(rows[0] if rows else [])
-                                + f" (map one: a mapping HEADER={key})"))
+        raise SpecError(Problem(str(path), Text("errors.checking.no_column_columns",
+                                                {"key": key,
+                                                 "items": ", ".join(rows[0] if rows else [])})))
     df, _, ignored = _frame(header, rows[1:], key, known, {})
     return StudentTable(df, {}, path, ignored)
 
@@ -203,7 +204,8 @@ def join_words(frames, key, path):
         out = out.merge(f, on=key, how="left", sort=False)
     if out[key].duplicated().any():
         dup = out[key][out[key].duplicated()].tolist()
-        raise SpecError(Problem(str(path), f"{key} repeats: {dup[:5]}"))
+        raise SpecError(Problem(str(path), Text("errors.checking.repeats",
+                                                {"key": key, "value": dup[:5]})))
     return out
 
 
@@ -448,7 +450,9 @@ def check_table(side: CheckSide, student_path, rtol=None, atol=None,
     if side.numeric_key:
         bad = [k for k in keys if not isinstance(k, float) or k != k]
         if bad:
-            raise SpecError(f"{student_path}: {side.key} must be numbers; got {bad[:5]}")
+            raise SpecError(Text("errors.checking.numbers",
+                                 {"student_path": student_path, "key": side.key,
+                                  "value": bad[:5]}))
     computed = side.rows(keys.tolist())
     table = compare(student, computed, side.key, rtol, atol)
     return CheckResult(student, table, side.key, CHECK_RTOL if rtol is None else float(rtol),
@@ -459,11 +463,13 @@ def _check_options(rtol, atol, mapping):
     """Check the tolerances and the mapping (all problems at once); the mapping as a dict."""
     problems = []
     if rtol is not None and not (isinstance(rtol, (int, float)) and 0 <= rtol < 1):
-        problems.append(Problem("rtol", f"got {rtol:g}; must be >= 0 and < 1"
-                                if isinstance(rtol, (int, float)) else f"got {rtol!r}"))
+        problems.append(Problem("rtol", Text("errors.checking.rtol", {"value": rtol})
+                                if isinstance(rtol, (int, float)) else
+                                Text("errors.got", {"value": repr(rtol)})))
     if atol is not None and not (isinstance(atol, (int, float)) and atol >= 0):
-        problems.append(Problem("atol", f"got {atol:g}; must be >= 0"
-                                if isinstance(atol, (int, float)) else f"got {atol!r}"))
+        problems.append(Problem("atol", Text("errors.checking.atol", {"value": atol})
+                                if isinstance(atol, (int, float)) else
+                                Text("errors.got", {"value": repr(atol)})))
     if mapping is not None and not isinstance(mapping, dict):
         try:
             mapping = parse_mapping(mapping)
@@ -737,9 +743,9 @@ def check_class(sides, students, out, lang: str = "ru", rtol=None, atol=None,
     mapping = _check_options(rtol, atol, mapping)
     students = Path(students)
     if not students.is_dir():
-        raise SpecError(Problem(str(students), "the students' folder does not exist"))
+        raise SpecError(Problem(str(students), Text("errors.checking.no_students_folder")))
     if not sides:
-        raise SpecError(Problem("variants", "no variants to check against"))
+        raise SpecError(Problem("variants", Text("errors.checking.no_variants")))
     out = Path(out)
     files = student_files(students)
     inputs = [*inputs, *files]
@@ -775,7 +781,8 @@ def check_class(sides, students, out, lang: str = "ru", rtol=None, atol=None,
             continue
         except _unreadable() as exc:        # a damaged workbook, a file that is not one
             verdicts_.append(StudentVerdict(path, name, "unreadable", SpecError(
-                Problem(path.name, f"cannot be read: {exc}"))))
+                Problem(path.name, Text("errors.checking.cannot_read",
+                                        {"reason": str(exc)})))))
             continue
         folder = safe_name(path.stem, "student")
         if folder in folders:

@@ -5,23 +5,60 @@ generically.  A :class:`SpecError` carries *all* the problems found in one spec 
 each naming the key path, the bad value and what would be valid; the CLI prints them one
 per line and exits with status 2.
 
-A :class:`Problem` may carry a text key of the ``errors`` catalogue and its fields
-(:class:`Text`); :meth:`SpecError.lines` then renders it in the run's language
-(``lines("ru")``), English by default (``str(error)`` is always English).
+Every message is a text key of the ``errors`` catalogue with its fields (:class:`Text`):
+a :class:`Problem` carries one (``Problem(key, Text("errors.…", {...}))`` or
+:meth:`Problem.keyed`), and so may any other error (``OutputError(Text(...))``,
+:meth:`CrankdynError.keyed`).  :meth:`CrankdynError.lines` renders the message in the
+run's language (``lines("ru")``), English by default; ``str(error)`` is always English.
+A test (``tests/test_error_language.py``) scans the code for an error written in words.
 """
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-__all__ = ["Problem", "Text", "SpecError", "AssemblyError", "OutputError", "CrankdynError"]
+__all__ = ["Problem", "Text", "SpecError", "AssemblyError", "OutputError", "CrankdynError",
+           "os_reason"]
+
+#: ``errno`` names whose reason the ``errors`` catalogue words (``errors.os.EACCES`` …).
+OS_REASONS = ("EACCES", "EPERM", "ENOENT", "ENOTDIR", "EISDIR", "EEXIST", "ENOSPC",
+              "EROFS", "ENAMETOOLONG", "ENOTEMPTY", "EBUSY", "EXDEV", "EDQUOT", "ELOOP")
+
+
+def os_reason(exc: BaseException):
+    """The reason of a file-system error as a keyed :class:`Text` for the common ``errno``
+    values (so that it is given in the run's language), else the system's own words."""
+    import errno
+
+    code = errno.errorcode.get(getattr(exc, "errno", None))
+    if code in OS_REASONS:
+        return Text(f"errors.os.{code}")
+    return getattr(exc, "strerror", None) or str(exc)
 
 
 class CrankdynError(ValueError):
-    """Base class of every error crankdyn raises on bad input."""
+    """Base class of every error crankdyn raises on bad input.
+
+    The message may be a keyed :class:`Text` of the ``errors`` catalogue
+    (``OutputError(Text("errors.output.exists", path=p))``): ``str(error)`` is then its
+    English text and :meth:`lines` gives it in the run's language."""
+
+    def __init__(self, *args):
+        self.text = args[0] if args and isinstance(args[0], Text) else None
+        if self.text is not None:
+            args = (self.text.render("en"),) + args[1:]
+        super().__init__(*args)
+
+    @classmethod
+    def keyed(cls, text_key: str, /, *args, **fields):
+        """The error told by the catalogue text ``text_key`` with ``fields`` (``args``
+        follow the message, e.g. the crank angles of an :class:`AssemblyError`)."""
+        return cls(Text(text_key, fields), *args)
 
     def lines(self, lang: str = "en") -> list[str]:
-        """The message as a list of one-line problems (for the CLI)."""
-        return [line for line in str(self).splitlines() if line.strip()]
+        """The message as a list of one-line problems (for the CLI), in ``lang`` where
+        it is a keyed text (else its English words)."""
+        msg = self.text.render(lang) if self.text is not None else str(self)
+        return [line for line in msg.splitlines() if line.strip()]
 
 
 @dataclass(frozen=True)
@@ -55,6 +92,9 @@ def _render(value, lang):
 class Problem:
     """One problem in a spec: where (dotted key path), what was given, what is valid.
 
+    ``key`` is a key path or option name, or a keyed :class:`Text` where it holds words
+    (``row 3 (v1): engine.bore_mm``).
+
     ``message`` is the English text; ``text``, when given, is the same problem as a
     keyed :class:`Text` of the ``errors`` catalogue, so that :meth:`render` can give it in
     another language (``message`` is then derived from it when left empty)."""
@@ -64,6 +104,9 @@ class Problem:
     text: Text | None = field(default=None, compare=False)
 
     def __post_init__(self):
+        if isinstance(self.message, Text):     # Problem(key, Text(...))
+            object.__setattr__(self, "text", self.message)
+            object.__setattr__(self, "message", "")
         if not self.message and self.text is not None:
             object.__setattr__(self, "message", self.text.render("en"))
 
@@ -77,7 +120,8 @@ class Problem:
         ``message``)."""
         msg = self.message if self.text is None or lang == "en" \
             else self.text.render(lang)
-        return f"{self.key}: {msg}" if self.key else msg
+        key = self.key.render(lang) if isinstance(self.key, Text) else self.key
+        return f"{key}: {msg}" if key else msg
 
     def __str__(self) -> str:
         return f"{self.key}: {self.message}" if self.key else self.message
@@ -93,10 +137,13 @@ class SpecError(CrankdynError):
     """
 
     def __init__(self, problems):
-        if isinstance(problems, (str, Problem)):
+        if isinstance(problems, (str, Problem, Text)):
             problems = [problems]
-        self.problems = [p if isinstance(p, Problem) else Problem("", str(p)) for p in problems]
-        super().__init__("\n".join(str(p) for p in self.problems))
+        self.problems = [p if isinstance(p, Problem)
+                         else Problem("", p) if isinstance(p, Text)
+                         else Problem("", str(p)) for p in problems]
+        self.text = None
+        ValueError.__init__(self, "\n".join(str(p) for p in self.problems))
 
     def lines(self, lang: str = "en") -> list[str]:
         """One line per problem, in ``lang`` where the problem has a text key (else its
@@ -122,13 +169,14 @@ class AssemblyError(CrankdynError):
         Crank angles (absolute, degrees, counter-clockwise from +x) where assembly fails,
         or the ends of the intervals where it does.
     reason : str
-        Why, in words.
+        Why, in English words (:meth:`lines` gives it in the run's language when it is a
+        keyed :class:`Text`).
     """
 
-    def __init__(self, reason: str, crank_angles_deg=()):
-        self.reason = reason
+    def __init__(self, reason, crank_angles_deg=()):
         self.crank_angles_deg = [float(a) for a in crank_angles_deg]
         super().__init__(reason)
+        self.reason = str(self.args[0]) if self.args else ""
 
 
 class OutputError(CrankdynError):

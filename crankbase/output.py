@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import OutputError
+from .errors import OutputError, Text, os_reason
 
 __all__ = ["atomic_path", "staged_output", "recover_output", "verify_report", "read_manifest",
            "write_csv", "check_not_input", "ensure_finite", "full_precision_xlsx",
@@ -48,7 +48,7 @@ def check_not_input(outputs, inputs) -> None:
     ins = {Path(p).resolve() for p in inputs if p is not None}
     for out in outputs:
         if Path(out).resolve() in ins:
-            raise OutputError(f"output {out} is an input file; choose another output folder")
+            raise OutputError(Text("errors.output.output_input_file", {"out": out}))
 
 
 def ensure_finite(df, what: str) -> None:
@@ -63,7 +63,8 @@ def ensure_finite(df, what: str) -> None:
         bad = ~np.isfinite(values)
         if bad.any():
             row = int(np.flatnonzero(bad)[0])
-            raise OutputError(f"{what}: column {col} is not finite at row {row + 1}")
+            raise OutputError(Text("errors.output.column_not_finite",
+                                   {"what": what, "col": col, "row": row + 1}))
 
 
 def write_csv(df, path) -> None:
@@ -86,15 +87,18 @@ LOCK_NAME = ".crankdyn-lock"
 _OBSOLETE_NAME = ".obsolete.json"
 
 
-def _reason(exc: OSError) -> str:
-    return exc.strerror or str(exc)
+def _reason(exc: OSError):
+    return os_reason(exc)
 
 
 def _output_error(exc: OSError, what: str, path=None) -> OutputError:
-    """One line naming the path and the reason of a file-system error."""
+    """One line naming the path and the reason of a file-system error; ``what`` is the
+    key of the action's text (``errors.output.create``)."""
     where = exc.filename if exc.filename is not None else path
-    return OutputError(f"{what} {where}: {_reason(exc)}" if where is not None
-                       else f"{what}: {_reason(exc)}")
+    if where is not None:
+        return OutputError(Text("errors.output.os_where", {"what": Text(what), "where": where,
+                                                            "reason": _reason(exc)}))
+    return OutputError(Text("errors.output.os", {"what": Text(what), "reason": _reason(exc)}))
 
 
 def _process_start(pid: int):
@@ -212,7 +216,8 @@ def read_manifest(directory):
     except FileNotFoundError:
         return None
     except (OSError, ValueError) as exc:
-        raise OutputError(f"{path}: unreadable report manifest: {exc}") from None
+        raise OutputError(Text("errors.output.unreadable_report_manifest",
+                               {"path": path, "exc": exc})) from None
 
 
 def verify_report(directory) -> list[str]:
@@ -224,15 +229,15 @@ def verify_report(directory) -> list[str]:
     """
     directory = Path(directory)
     if (directory / COMMIT_NAME).exists():
-        raise OutputError(f"{directory}: a report replacement was interrupted; run crankdyn "
-                          f"again into this folder (or call recover_output) to complete it")
+        raise OutputError(Text("errors.output.report_replacement_was", {"directory": directory}))
     man = read_manifest(directory)
     if man is None:
-        raise OutputError(f"{directory}: no crankdyn report here ({MANIFEST_NAME} missing)")
+        raise OutputError(Text("errors.output.no_crankdyn_report",
+                               {"directory": directory, "MANIFEST_NAME": MANIFEST_NAME}))
     for name, info in man["files"].items():
         p = directory / name
         if not p.is_file() or p.stat().st_size != info["size"] or _sha256(p) != info["sha256"]:
-            raise OutputError(f"{p}: not the file the report's manifest lists")
+            raise OutputError(Text("errors.output.not_file_report", {"p": p}))
     return sorted(man["files"])
 
 
@@ -309,8 +314,8 @@ def _make_folder(directory: Path) -> list[Path]:
             p.mkdir()
         except FileExistsError:
             if not p.is_dir():
-                raise OutputError(f"output folder {directory}: {p} exists and is not a "
-                                  f"folder") from None
+                raise OutputError(Text("errors.output.output_folder_exists_2",
+                                       {"directory": directory, "p": p})) from None
             continue
         created.append(p)
     return created
@@ -352,7 +357,7 @@ def _lock(directory: Path):
         if path.is_file():
             return lock
         lock.release()
-    raise OutputError(f"output folder {directory}: keeps being removed by another run")
+    raise OutputError(Text("errors.output.output_folder_keeps", {"directory": directory}))
 
 
 def _unlock(lock, directory: Path) -> None:
@@ -467,15 +472,14 @@ def staged_output(directory, inputs=(), unit=None):
     import shutil
 
     if directory is None or str(directory).strip() == "":
-        raise OutputError("output folder: empty path; give a folder name "
-                          "('.' for the current folder)")
+        raise OutputError(Text("errors.output.output_folder_empty"))
     directory = Path(directory)
     if directory.exists() and not directory.is_dir():
-        raise OutputError(f"output folder {directory}: exists and is not a folder")
+        raise OutputError(Text("errors.output.output_folder_exists", {"directory": directory}))
     try:
         created = _make_folder(directory.absolute())
     except OSError as exc:
-        raise _output_error(exc, "cannot create the output folder", directory) from None
+        raise _output_error(exc, "errors.output.create", directory) from None
     stage = lock = None
     failed = False
     try:
@@ -486,17 +490,18 @@ def staged_output(directory, inputs=(), unit=None):
             stage = Path(tempfile.mkdtemp(prefix=f"{STAGE_PREFIX}{os.getpid()}.{start}.",
                                           dir=directory))
         except OSError as exc:
-            raise _output_error(exc, "cannot write into the output folder", directory) \
+            raise _output_error(exc, "errors.output.write_into", directory) \
                 from None
         try:
             yield stage
         except OSError as exc:   # name the output folder, not the hidden temporary file
-            raise OutputError(f"cannot write the report into {directory}: {_reason(exc)}") \
+            raise OutputError(Text("errors.output.cannot_write_report",
+                                   {"directory": directory, "value": _reason(exc)})) \
                 from None
         try:
             _commit(directory, stage, inputs, unit)
         except OSError as exc:
-            raise _output_error(exc, "cannot replace the report in", directory) from None
+            raise _output_error(exc, "errors.output.replace_in", directory) from None
     except BaseException:
         failed = True
         if stage is not None:

@@ -10,7 +10,7 @@ import math
 import tomllib
 from pathlib import Path
 
-from .errors import Problem, SpecError, Text
+from .errors import Problem, SpecError, Text, os_reason
 
 K = Problem.keyed      # a problem told by a text of the errors catalogue
 
@@ -99,7 +99,7 @@ def read_toml(path_or_dict):
     except RecursionError:
         raise SpecError(K(name, "errors.toml.nested")) from None
     except OSError as exc:
-        raise SpecError(K(name, "errors.toml.unreadable", why=str(exc.strerror or exc)))\
+        raise SpecError(K(name, "errors.toml.unreadable", why=os_reason(exc)))\
             from None
     except ValueError as exc:
         # Python refuses to convert an integer literal of more than 4,300 digits
@@ -459,4 +459,5 @@ def check_lang(lang, key: str = "lang") -> str:
     offered = languages()
     if lang in offered:
         return lang
-    raise SpecError(Problem(key, f"got {lang!r}; must be one of {', '.join(offered)}"))
+    raise SpecError(Problem(key, Text("errors.validation.one",
+                                      {"lang": lang, "items": ', '.join(offered)})))

@@ -46,24 +46,27 @@ def main(argv=None) -> int:
     if not getattr(args, "func", None):
         parser.print_help()
         return 2
-    from crankbase.errors import CrankdynError
+    from crankbase.errors import CrankdynError, Text, os_reason
 
+    lang = getattr(args, "lang", None) or "en"
     if getattr(args, "output", None) is not None and not args.output.strip():
         # Path("") is ".": an empty -o would write into the current folder unasked
-        print(f"crankdyn {args.command}: error: -o: empty output folder; give a folder "
-              f"name ('.' for the current folder)", file=sys.stderr)
+        print(f"crankdyn {args.command}: error: "
+              + Text("errors.cli.empty_output").render(lang), file=sys.stderr)
         return 2
     try:
         return int(args.func(args) or 0)
     except CrankdynError as exc:  # the project's own errors only: anything else is a bug
-        for line in exc.lines(getattr(args, "lang", None) or "en") or [repr(exc)]:
+        for line in exc.lines(lang) or [repr(exc)]:
             print(f"crankdyn {args.command}: error: {line}", file=sys.stderr)
         return 2
     except BrokenPipeError:  # e.g. `crankdyn ... | head`
         sys.stdout = open(os.devnull, "w")
         return 0
     except (FileNotFoundError, IsADirectoryError, PermissionError) as exc:
-        print(f"crankdyn {args.command}: error: {exc}", file=sys.stderr)
+        why = Text("errors.cli.os_file", {"file": exc.filename, "reason": os_reason(exc)}) \
+            if exc.filename is not None else Text("errors.cli.os", {"reason": os_reason(exc)})
+        print(f"crankdyn {args.command}: error: {why.render(lang)}", file=sys.stderr)
         return 2
 
 

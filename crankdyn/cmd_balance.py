@@ -25,6 +25,7 @@ a rerun replaces only its own files; bad input writes nothing.  The terminal sum
 speaks the report's language (``--lang``).
 """
 from __future__ import annotations
+from crankbase.errors import Text
 
 
 #: Bundled examples by short name (``--example NAME``).
@@ -69,7 +70,7 @@ def run(args) -> int:
     spec_path = _spec_path(args, EXAMPLES, "balance")
     out = Path(args.output)
     if out.exists() and not out.is_dir():
-        raise SpecError(f"-o: {out} exists and is not a folder")
+        raise SpecError(Text("errors.crankdyn.cli_balance.o_exists_and", {"out": out}))
     report = run_study(spec_path)
     written = write_report(report, out, lang=args.lang)
     print("\n".join(summary_lines(report, args.lang, written)))

@@ -21,6 +21,7 @@ verdict, detail``), ``DIR/<student>/`` the student's ``check.csv`` and checked w
 Exit status 0 when every student is matched and right, 1 otherwise.
 """
 from __future__ import annotations
+from crankbase.errors import Text
 
 
 def add_parser(sub):
@@ -83,8 +84,8 @@ def run(args) -> int:
 
             side = check_side(linkage.load_spec(spec_path))
         else:
-            raise SpecError(f"{spec_path}: neither an engine spec ([engine]) nor a linkage "
-                            "spec ([mechanism])")
+            raise SpecError(Text("errors.crankdyn.cli_check.neither_engine_spec",
+                                 {"spec_path": spec_path}))
         result = check_table(side, student_path, args.rtol, args.atol, args.map)
         written = write_check(result, Path(args.output), args.lang, inputs=[spec_path])
     except SpecError as exc:            # the library's arguments → this command's options

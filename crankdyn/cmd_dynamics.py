@@ -20,6 +20,7 @@ report's language (``--lang``).
 from __future__ import annotations
 
 import sys
+from crankbase.errors import Text
 
 #: Bundled examples by short name (``--example NAME``).
 EXAMPLES = {"flywheel": "flywheel_seed.toml", "press": "press_dynamics.toml",
@@ -58,7 +59,7 @@ def run(args) -> int:
     spec_path = _spec_path(args, EXAMPLES, "dynamics")
     out = Path(args.output)
     if out.exists() and not out.is_dir():
-        raise SpecError(f"-o: {out} exists and is not a folder")
+        raise SpecError(Text("errors.crankdyn.cli_dynamics.o_exists_and", {"out": out}))
     report = run_study(spec_path)
     written = write_report(report, out, lang=args.lang)
     print("\n".join(summary_lines(report, args.lang, written)))
@@ -82,9 +83,10 @@ def _spec_path(args, examples, what):
     from .examples import find_example
 
     if args.spec and args.example:
-        raise SpecError("give either SPEC.toml or --example, not both")
+        raise SpecError(Text("errors.crankdyn.cli_dynamics.give_either_spec"))
     if args.spec:
         return Path(args.spec)
     if not args.example:
-        raise SpecError(f"give a {what} spec SPEC.toml or --example [NAME]")
+        raise SpecError(Text("errors.crankdyn.cli_dynamics.give_spec_spec",
+                             {"what": Text(f"errors.what.{what}")}))
     return find_example(args.example, examples, what)

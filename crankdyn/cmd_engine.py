@@ -16,6 +16,7 @@ prints.  Heavy libraries are imported inside :func:`run` only, so ``crankdyn --h
 stays fast.
 """
 from __future__ import annotations
+from crankbase.errors import Text
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
 EXAMPLES = {"petrol": "petrol_vaz2106.toml", "diesel": "diesel_d240.toml",
@@ -76,15 +77,15 @@ def run(args) -> int:
     from crankbase.errors import SpecError
 
     if args.spec and args.example:
-        raise SpecError("give either SPEC.toml or --example, not both")
+        raise SpecError(Text("errors.crankdyn.cli_engine.give_either_spec"))
     if not args.spec and not args.example:
-        raise SpecError("give an engine spec SPEC.toml or --example [NAME]")
+        raise SpecError(Text("errors.crankdyn.cli_engine.give_engine_spec"))
     spec_path = Path(args.spec) if args.spec else _example_path(args.example)
     out = Path(args.output)
     if out.exists() and not out.is_dir():
-        raise SpecError(f"-o: {out} exists and is not a folder")
+        raise SpecError(Text("errors.crankdyn.cli_engine.o_exists_and", {"out": out}))
     if args.jobs < 1:
-        raise SpecError(f"--jobs: got {args.jobs}; must be a whole number >= 1")
+        raise SpecError(Text("errors.crankdyn.cli_engine.jobs_whole_number", {"jobs": args.jobs}))
     try:
         if getattr(args, "variants", None):
             from .variants_cli import run_variants

@@ -84,7 +84,7 @@ def run(args) -> int:
 
 
 def _run(args) -> int:
-    from crankbase.errors import SpecError
+    from crankbase.errors import Problem, SpecError, Text
     from linkage.study import notice_lines, summary_lines, write_report
     from plans.study import run_study
 
@@ -95,7 +95,8 @@ def _run(args) -> int:
         spec_path = args.spec
     if args.plans is None and (args.measured or args.mu_v or args.mu_a or args.mu_f
                                or args.mu_lever is not None):
-        raise SpecError(["--measured, --mu-v, --mu-a, --mu-f, --mu-lever: only with --plans"])
+        raise SpecError([Problem("--measured, --mu-v, --mu-a, --mu-f, --mu-lever",
+                                 Text("errors.cli.only_with_plans"))])
     report = run_study(spec_path, step=args.step, plots=not args.no_plots, plans=args.plans,
                        sheet=args.sheet, measured=args.measured, mu_v=args.mu_v,
                        mu_a=args.mu_a, mu_f=args.mu_f, mu_lever=args.mu_lever)

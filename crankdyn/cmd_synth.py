@@ -19,6 +19,8 @@ from __future__ import annotations
 
 import math
 
+from crankbase.errors import Problem, Text
+
 MODES = {
     frozenset(): "region",
     frozenset({"l2", "l3"}): "l2_l3",
@@ -77,15 +79,17 @@ def _number(problems, option, text, check, valid):
     try:
         value = float(text)
     except (TypeError, ValueError):
-        problems.append(f"{option}: got {text!r}; must be a number ({valid})")
+        problems.append(Problem(option, Text("errors.cli.synth.not_number",
+                                             {"value": text, "valid": Text(valid)})))
         return None
     if not (math.isfinite(value) and check(value)):
-        problems.append(f"{option}: got {text}; must be {valid}")
+        problems.append(Problem(option, Text("errors.cli.synth.bad",
+                                             {"value": text, "valid": Text(valid)})))
         return None
-    from crankbase.validation import magnitude_problem
-    why = magnitude_problem(value)       # the same bound as every spec number
+    from crankbase.validation import magnitude_text
+    why = magnitude_text(value)          # the same bound as every spec number
     if why:
-        problems.append(f"{option}: {why}")
+        problems.append(Problem(option, why))
         return None
     return value
 
@@ -93,40 +97,38 @@ def _number(problems, option, text, check, valid):
 def _validate(args):
     """Every problem with the options at once; returns the parsed values."""
     problems = []
-    positive = (lambda v: v > 0, "a positive length relative to the ground")
+    positive = (lambda v: v > 0, "errors.cli.synth.positive")
     v = {
         "phi0": _number(problems, "--phi0", args.phi0, lambda x: 0 < x < 180,
-                        "a crank angle strictly between 0 and 180 degrees"),
+                        "errors.cli.synth.phi0"),
         "l1": _number(problems, "--l1", args.l1, *positive),
         "l2": _number(problems, "--l2", args.l2, *positive),
         "l3": _number(problems, "--l3", args.l3, *positive),
         "mu_min": _number(problems, "--mu-min", args.mu_min, lambda x: 0 <= x < 90,
-                          "an angle in degrees, 0 <= mu_min < 90"),
+                          "errors.cli.synth.mu_min"),
         "l1_step": _number(problems, "--l1-step", args.l1_step, lambda x: x > 0,
-                           "a positive step of λ1"),
+                           "errors.cli.synth.l1_step"),
         "ground": _number(problems, "--ground", args.ground, lambda x: x > 0,
-                          "a positive ground length in metres"),
+                          "errors.cli.synth.ground"),
         "omega": _number(problems, "--omega", args.omega, lambda x: x != 0,
-                         "a non-zero angular velocity in rad/s"),
+                         "errors.cli.synth.omega"),
     }
     given = frozenset(k for k in ("l1", "l2", "l3", "mu_min") if getattr(args, k) is not None)
     mode = MODES.get(given)
     if mode is None:
         got = " ".join(OPTION[k] for k in ("l1", "l2", "l3", "mu_min") if k in given)
-        problems.append(f"options: got {got}; choose one of: --l2 and --l3, --l1 alone, "
-                        f"--l2 and --mu-min (or none, for the region and tables only)")
+        problems.append(Problem("options", Text("errors.cli.synth.modes", {"got": got})))
     if args.l1_step is not None and mode != "mu_min":
-        problems.append("--l1-step: only with --l2 and --mu-min")
+        problems.append(Problem("--l1-step", Text("errors.cli.synth.l1_step_only")))
     if args.ground is not None and mode == "region":
-        problems.append("--ground: needs a chosen mechanism (--l2 --l3, --l1 or "
-                        "--l2 --mu-min)")
+        problems.append(Problem("--ground", Text("errors.cli.synth.ground_needs")))
     if args.omega is not None and args.ground is None:
-        problems.append("--omega: only with --ground (it goes into the spec TOML)")
+        problems.append(Problem("--omega", Text("errors.cli.synth.omega_only")))
     if args.name is not None:
-        from crankbase.validation import name_problem
-        why = name_problem(args.name)
+        from crankbase.validation import name_text
+        why = name_text(args.name)
         if why:
-            problems.append(f"--name: {why}")
+            problems.append(Problem("--name", why))
     return v, mode, problems
 
 
@@ -143,7 +145,7 @@ def _as_options(exc):
     problems = []
     for p in getattr(exc, "problems", []):
         key = ", ".join(ARG_OPTION.get(k.strip(), k.strip()) for k in p.key.split(","))
-        problems.append(Problem(key if p.key else "", p.message))
+        problems.append(Problem(key if p.key else "", p.text or p.message))
     return SpecError(problems) if problems else exc
 
 

@@ -1,5 +1,6 @@
 """The bundled example specs of each command (``--example NAME``): one lookup for all."""
 from __future__ import annotations
+from crankbase.errors import Text
 
 
 def find_example(name, examples, what):
@@ -14,6 +15,9 @@ def find_example(name, examples, what):
     stem = name[:-5] if name.endswith(".toml") else name
     fname = examples.get(stem) or stems.get(stem)
     if fname is None:
-        raise SpecError(f"--example: no {what} example {name!r}; available: "
-                        + ", ".join(list(examples) + [s for s in stems if s not in examples]))
+        raise SpecError(
+                        Text("errors.crankdyn.examples.example_no_example",
+                             {"what": Text(f"errors.what.{what}"), "name": name,
+                              "items": ", ".join(list(examples)
+                                                 + [s for s in stems if s not in examples])}))
     return example_path(fname)

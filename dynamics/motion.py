@@ -39,6 +39,7 @@ import numpy as np
 
 from engine.train import FlywheelResult, flywheel
 
+from crankbase.errors import Text
 from ._base import MotionError, Problem, SpecError
 
 __all__ = ["MotionResult", "steady_motion", "FlywheelResult", "size_flywheel",
@@ -112,20 +113,20 @@ def _add_extra_columns(table, model):
 
 def check_delta(delta, key="dynamics.delta"):
     if delta is None or not (0.0 < delta < 1.0):
-        raise SpecError(Problem(key, f"got {delta!r}; the coefficient of speed fluctuation "
-                                     "must be in (0, 1)"))
+        raise SpecError(Problem(key, Text("errors.dynamics.motion.coefficient_speed_fluctuation",
+                                          {"delta": delta})))
 
 
 def _net_work_check(model, what):
     W = model.W_net_J
     scale = max(np.max(np.abs(model.W_drive_J)), np.max(np.abs(model.W_resist_J)), 1e-12)
     if abs(W[-1]) > 1e-6 * scale:
-        kind = ("falls short of" if W[-1] < 0 else "exceeds")
+        kind = Text("errors.dynamics.motion.short" if W[-1] < 0
+                    else "errors.dynamics.motion.exceeds")
         raise MotionError(Problem(
-            what, f"the driving work per cycle {model.W_drive_J[-1]:.6g} J {kind} the "
-                  f"resisting work {model.W_resist_J[-1]:.6g} J: the motion cannot be "
-                  f"steady (net {W[-1]:.6g} J per cycle); use driving = \"constant\" or "
-                  "balance the diagrams"))
+            what, Text("errors.dynamics.motion.driving_work_per",
+                       {"value": model.W_drive_J[-1], "kind": kind, "value2": model.W_resist_J[-1],
+                        "value3": W[-1]})))
 
 
 def _omega_of(model, J, W, w0):
@@ -167,12 +168,13 @@ def steady_motion(model, omega_mean=None, *, J_flywheel=0.0, driving="constant")
     probs = []
     if wm is None or not wm > 0:
         probs.append(Problem("dynamics.omega_mean_rad_s",
-                             f"got {wm!r}; the mean speed must be > 0"))
+                             Text("errors.dynamics.motion.mean_speed", {"wm": wm})))
     if not J_flywheel >= 0:
-        probs.append(Problem("dynamics.flywheel_kgm2", f"got {J_flywheel!r}; must be >= 0"))
+        probs.append(Problem("dynamics.flywheel_kgm2", Text("errors.dynamics.motion.message",
+                                                            {"J_flywheel": J_flywheel})))
     if np.any(model.J_kgm2 + J_flywheel <= 0):
-        probs.append(Problem("J_red_kgm2", f"min {np.min(model.J_kgm2):.6g}; the reduced "
-                                           "moment of inertia must be > 0"))
+        probs.append(Problem("J_red_kgm2", Text("errors.dynamics.motion.min_reduced_moment",
+                                                {"value": np.min(model.J_kgm2)})))
     if probs:
         raise SpecError(probs)
     Mconst = None
@@ -197,10 +199,9 @@ def steady_motion(model, omega_mean=None, *, J_flywheel=0.0, driving="constant")
         i = int(np.argmin(w))
         need = np.ptp(W) / (0.5 * wm * wm) if wm > 0 else math.inf
         raise MotionError(Problem(
-            "dynamics", f"the machine cannot keep ω_m = {wm:.6g} rad/s: the energy swing "
-                        f"ΔW_max = {np.ptp(W):.6g} J makes ω reach zero at φ = "
-                        f"{model.phi_deg[i]:.4g}°; raise the speed or add a flywheel "
-                        f"(J ≳ {need:.3g} kg·m²)"))
+            "dynamics", Text("errors.dynamics.motion.machine_cannot_keep",
+                             {"wm": wm, "value": np.ptp(W), "value2": model.phi_deg[i],
+                              "need": need})))
     hi = max(2.0 * wm, w_lo * 2 + 1.0)
     while mean_minus(hi) < 0:
         hi *= 2.0
@@ -353,20 +354,22 @@ def _interp_periodic(model):
 def _check_motor(model, motor, JF):
     probs = []
     if not motor.M0 > 0:
-        probs.append(Problem("dynamics.motor_start_torque_Nm", f"got {motor.M0!r}; must be > 0"))
+        probs.append(Problem("dynamics.motor_start_torque_Nm",
+                             Text("errors.dynamics.motion.message_2", {"M0": motor.M0})))
     if not motor.omega0 > 0:
         probs.append(Problem("dynamics.motor_sync_speed_rad_s",
-                             f"got {motor.omega0!r}; must be > 0"))
+                             Text("errors.dynamics.motion.message_3", {"omega0": motor.omega0})))
     if not JF >= 0:
-        probs.append(Problem("dynamics.flywheel_kgm2", f"got {JF!r}; must be >= 0"))
+        probs.append(Problem("dynamics.flywheel_kgm2", Text("errors.dynamics.motion.message_4",
+                                                            {"JF": JF})))
     if probs:
         raise SpecError(probs)
     Mc_mean = (model.W_resist_J[-1] - model.W_drive_J[-1]) / model.period
     if Mc_mean >= motor.M0:
         raise MotionError(Problem(
             "dynamics.motor_start_torque_Nm",
-            f"the motor stalls: the mean resisting moment {Mc_mean:.6g} N·m is not below the "
-            f"motor's torque at rest M0 = {motor.M0:.6g} N·m"))
+            Text("errors.dynamics.motion.motor_stalls_mean",
+                 {"Mc_mean": Mc_mean, "M0": motor.M0})))
     return Mc_mean
 
 
@@ -442,14 +445,13 @@ def motor_steady_motion(model, motor: Motor, *, J_flywheel=0.0, rtol=1e-9):
         if lo is None or g(hi) >= 0:
             raise MotionError(Problem(
                 "dynamics.motor_start_torque_Nm",
-                f"the motor stalls: with M0 = {motor.M0:.6g} N·m, ω0 = {motor.omega0:.6g} "
-                "rad/s there is no periodic motion with ω > 0 (the machine stops within "
-                "the cycle); a stronger motor or a flywheel is needed"))
+                Text("errors.dynamics.motion.motor_stalls_with",
+                     {"M0": motor.M0, "omega0": motor.omega0})))
         w0 = brentq(g, lo, hi, xtol=1e-9 * motor.omega0)
     sol = shoot(w0, dense=True)
     if sol is None:
         raise MotionError(Problem("dynamics.motor_start_torque_Nm",
-                                  "the motor stalls within the cycle"))
+                                  Text("errors.dynamics.motion.motor_stalls_within")))
     w = sol.sol(model.phi)[0]
     J = model.J_kgm2 + J_flywheel
     Md = motor(w) + model.M_drive_Nm
@@ -503,8 +505,8 @@ def motor_startup(model, motor: Motor, *, J_flywheel=0.0, steady: MotionResult |
     if motor.M0 + state(0.0)[2] <= 0.0:
         raise MotionError(Problem(
             "dynamics.motor_start_torque_Nm",
-            f"the motor cannot start: M0 = {motor.M0:.6g} N·m does not exceed the resisting "
-            f"moment at rest {-state(0.0)[2]:.6g} N·m"))
+            Text("errors.dynamics.motion.motor_cannot_start",
+                 {"M0": motor.M0, "value": -state(0.0)[2]})))
     w_ss = steady.omega_time_mean if steady is not None else \
         motor.omega0 * (1.0 - Mc_mean / motor.M0)
     Jm = float(np.mean(model.J_kgm2)) + J_flywheel
@@ -524,7 +526,7 @@ def motor_startup(model, motor: Motor, *, J_flywheel=0.0, steady: MotionResult |
     p, w = sol.sol(t)
     if np.any(w[t > T] <= 0):
         raise MotionError(Problem("dynamics.motor_start_torque_Nm",
-                                  "the motor stalls during the start-up"))
+                                  Text("errors.dynamics.motion.motor_stalls_during")))
     band = (steady.omega_min, steady.omega_max) if steady is not None else (w_ss, w_ss)
     tol = 0.01 * max(band[1] - band[0], 0.01 * w_ss)
     out = (w < band[0] - tol) | (w > band[1] + tol)

@@ -35,6 +35,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from crankbase.errors import Text
 from ._base import Problem, SpecError
 
 __all__ = ["ReducedModel", "PiecewiseLinear", "machine_model", "linkage_model",
@@ -66,14 +67,16 @@ class PiecewiseLinear:
         y = np.asarray(values, dtype=float)
         probs = []
         if x.ndim != 1 or x.size < 1 or x.shape != y.shape:
-            probs.append(Problem(key, f"phi_deg and M_Nm must be lists of the same length "
-                                      f"(got {x.size} and {y.size})"))
+            probs.append(Problem(key, Text("errors.dynamics.reduced.phi_deg_and",
+                                           {"size": x.size, "size2": y.size})))
         elif np.any(np.diff(x) < 0):
-            probs.append(Problem(f"{key}.phi_deg", f"got {x.tolist()}; angles must not "
-                                 "decrease (repeat an angle for a step)"))
+            probs.append(Problem(f"{key}.phi_deg",
+                                 Text("errors.dynamics.reduced.angles_not_decrease",
+                                      {"value": x.tolist()})))
         elif x[-1] - x[0] > period_deg + 1e-9:
-            probs.append(Problem(f"{key}.phi_deg", f"spans {x[-1] - x[0]:g}°, more than "
-                                 f"the period {period_deg:g}°"))
+            probs.append(Problem(f"{key}.phi_deg", Text("errors.dynamics.reduced.spans_more_than",
+                                                        {"value": x[-1] - x[0],
+                                                         "period_deg": period_deg})))
         if probs:
             raise SpecError(probs)
         # one closed period starting at x[0]: append the first point a period later
@@ -217,7 +220,8 @@ def machine_model(J_kgm2, moments, period_deg=360.0, *, name="machine", steps=14
         Nominal mean speed. [rad/s]
     """
     if not J_kgm2 > 0:
-        raise SpecError(Problem("machine.J_red_kgm2", f"got {J_kgm2!r}; must be > 0"))
+        raise SpecError(Problem("machine.J_red_kgm2", Text("errors.dynamics.reduced.message",
+                                                           {"J_kgm2": J_kgm2})))
     period = math.radians(period_deg)
     # the uniform grid plus every breakpoint of the diagrams: the extremes of the work
     # (kinks of the diagrams, ends of steps) are then grid points, not missed between them
@@ -489,7 +493,8 @@ def chain_reduce(inertias_kgm2=(), ratios=(), masses_kg=(), velocity_ratios_m=()
     M = sum(m * r for m, r in zip(moments_Nm, moment_ratios))
     M += sum(f * r for f, r in zip(forces_N, force_ratios_m))
     if not J > 0:
-        raise SpecError(Problem("chain", f"reduced moment of inertia {J!r}; must be > 0"))
+        raise SpecError(Problem("chain", Text("errors.dynamics.reduced.reduced_moment_inertia",
+                                              {"J": J})))
     return ChainReduction(float(J), float(M))
 
 
@@ -516,11 +521,14 @@ def braking_moment(J_red_kgm2, omega0_rad_s, t_stop_s, M_other_Nm=0.0):
     """
     probs = []
     if not J_red_kgm2 > 0:
-        probs.append(Problem("J_red_kgm2", f"got {J_red_kgm2!r}; must be > 0"))
+        probs.append(Problem("J_red_kgm2", Text("errors.dynamics.reduced.message_2",
+                                                {"J_red_kgm2": J_red_kgm2})))
     if not omega0_rad_s > 0:
-        probs.append(Problem("omega0_rad_s", f"got {omega0_rad_s!r}; must be > 0"))
+        probs.append(Problem("omega0_rad_s", Text("errors.dynamics.reduced.message_3",
+                                                  {"omega0_rad_s": omega0_rad_s})))
     if not t_stop_s > 0:
-        probs.append(Problem("t_stop_s", f"got {t_stop_s!r}; must be > 0"))
+        probs.append(Problem("t_stop_s", Text("errors.dynamics.reduced.message_4",
+                                              {"t_stop_s": t_stop_s})))
     if probs:
         raise SpecError(probs)
     return J_red_kgm2 * omega0_rad_s / t_stop_s + M_other_Nm

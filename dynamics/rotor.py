@@ -34,6 +34,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from crankbase.errors import Text
 from ._base import Problem, SpecError, read_toml
 
 __all__ = ["RotorSpec", "RotorBalance", "balance_rotor", "load_rotor_spec", "rotor_balance",
@@ -144,34 +145,37 @@ def balance_rotor(mr_gmm, angle_deg, z_mm=None, planes_mm=(0.0,), *,
     planes = np.atleast_1d(np.asarray(planes_mm, dtype=float))
     problems = []
     if mr.size == 0:
-        problems.append(Problem("rotor.mass", "no unbalance given; give at least one mass"))
+        problems.append(Problem("rotor.mass", Text("errors.dynamics.rotor.no_unbalance_given")))
     if ang.shape != mr.shape:
-        problems.append(Problem("angle_deg", f"{ang.size} angles for {mr.size} masses"))
+        problems.append(Problem("angle_deg", Text("errors.dynamics.rotor.angles_for_masses",
+                                                  {"size": ang.size, "size2": mr.size})))
     if z_mm is None:
         z = np.full(mr.shape, planes[0] if planes.size else 0.0)
     else:
         z = np.atleast_1d(np.asarray(z_mm, dtype=float))
         if z.shape != mr.shape:
-            problems.append(Problem("z_mm", f"{z.size} positions for {mr.size} masses"))
+            problems.append(Problem("z_mm", Text("errors.dynamics.rotor.positions_for_masses",
+                                                 {"size": z.size, "size2": mr.size})))
     if np.any(mr < 0) or not np.all(np.isfinite(mr)):
-        problems.append(Problem("mr_gmm", f"got {mr.tolist()}; every m·r must be finite "
-                                          "and >= 0"))
+        problems.append(Problem("mr_gmm", Text("errors.dynamics.rotor.every_m_r",
+                                               {"value": mr.tolist()})))
     if planes.size not in (1, 2) or not np.all(np.isfinite(planes)):
-        problems.append(Problem("rotor.planes_mm", f"got {planes.tolist()}; give one plane "
-                                "(static balancing) or two (dynamic balancing)"))
+        problems.append(Problem("rotor.planes_mm", Text("errors.dynamics.rotor.give_one_plane",
+                                                        {"value": planes.tolist()})))
     elif planes.size == 2 and planes[0] == planes[1]:
-        problems.append(Problem("rotor.planes_mm", f"got {planes.tolist()}; the two "
-                                "correction planes must be at different z"))
+        problems.append(Problem("rotor.planes_mm",
+                                Text("errors.dynamics.rotor.two_correction_planes",
+                                     {"value": planes.tolist()})))
     if correction_radius_mm is not None and not correction_radius_mm > 0:
         problems.append(Problem("rotor.correction_radius_mm",
-                                f"got {correction_radius_mm!r}; must be > 0"))
+                                Text("errors.dynamics.rotor.message",
+                                     {"correction_radius_mm": correction_radius_mm})))
     if not problems and planes.size == 2 and z_mm is None:
-        problems.append(Problem("rotor.mass.z_mm", "missing; two-plane balancing needs the "
-                                "axial position of every mass"))
+        problems.append(Problem("rotor.mass.z_mm",
+                                Text("errors.dynamics.rotor.missing_two_plane")))
     if not problems and planes.size == 2 and mr.size > 0 and np.ptp(z) == 0:
         problems.append(Problem(
-            "rotor.mass.z_mm", f"every mass lies in the plane z = {z[0]:g} mm; such a rotor "
-            f"is balanced statically: give one correction plane (planes_mm = [{z[0]:g}])"))
+            "rotor.mass.z_mm", Text("errors.dynamics.rotor.every_mass_lies", {"value": z[0]})))
     if problems:
         raise SpecError(problems)
 
@@ -244,8 +248,8 @@ def load_rotor_spec(path_or_dict) -> RotorSpec:
     name = ck.get(rot, ROTOR, "name")
     planes = ck.get(rot, ROTOR, "planes_mm")
     if planes is not None and len(planes) > 2:
-        ck.add("rotor.planes_mm", f"got {len(planes)} planes; give one (static balancing) "
-                                  "or two (dynamic balancing)")
+        ck.add("rotor.planes_mm", Text("errors.dynamics.rotor.planes_give_one",
+                                       {"n": len(planes)}))
         planes = None
     radius = ck.get(rot, ROTOR, "correction_radius_mm")
     mr, ang, zz = [], [], []
@@ -256,7 +260,7 @@ def load_rotor_spec(path_or_dict) -> RotorSpec:
             return ck.get(m, ROTOR_MASS, key, path=path, **kw)
 
         if "mr_gmm" in m and ("m_g" in m or "r_mm" in m):
-            ck.add(path, "give either mr_gmm or m_g with r_mm, not both")
+            ck.add(path, Text("errors.dynamics.rotor.give_either_mr"))
             value = None
         elif "mr_gmm" in m:
             value = get("mr_gmm", required=True)
@@ -287,7 +291,7 @@ def rotor_balance(spec) -> RotorBalance:
                              correction_radius_mm=spec.correction_radius_mm, name=spec.name)
     except SpecError as exc:  # name the spec keys
         raise SpecError([Problem(p.key if p.key.startswith("rotor") else f"rotor.mass.{p.key}",
-                                 p.message) for p in exc.problems]) from None
+                                 p.text or p.message) for p in exc.problems]) from None
 
 
 def plot_mr_polygon(result: RotorBalance, plane=0, ax=None, lang="en"):

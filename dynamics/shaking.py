@@ -42,6 +42,7 @@ from types import MappingProxyType
 
 import numpy as np
 
+from crankbase.errors import Text
 from ._base import Problem, SpecError
 
 __all__ = ["ShakingResult", "shaking", "BalanceResult", "balance_fourbar",
@@ -140,7 +141,8 @@ def _table(rows):
 
 def _cw(lname, mr, radius, key):
     if radius is not None and not radius > 0:
-        raise SpecError(Problem(key, f"got {radius!r}; the counterweight radius must be > 0"))
+        raise SpecError(Problem(key, Text("errors.dynamics.shaking.counterweight_radius",
+                                          {"radius": radius})))
     a = abs(mr)
     mass = a / radius if a > 0 else 0.0
     pos = radius * mr / a if a > 0 else 0j
@@ -162,9 +164,9 @@ def balance_fourbar(spec, radius_crank_m=None, radius_rocker_m=None,
 
     spec = load_spec(spec)
     if spec.kind != "crank-rocker":
-        raise SpecError(Problem("mechanism.kind", f"got {spec.kind!r}; full force balance "
-                                "by two counterweights is for the crank-rocker; use "
-                                "balance_crank_slider"))
+        raise SpecError(Problem("mechanism.kind",
+                                Text("errors.dynamics.shaking.full_force_balance",
+                                     {"kind": spec.kind})))
     l1, l2, l3 = spec.crank, spec.coupler, spec.rocker
     m2, m3, m4 = (spec.links[n].mass for n in ("crank", "coupler", "rocker"))
     r2, r3, r4 = (spec.links[n].cg for n in ("crank", "coupler", "rocker"))
@@ -193,11 +195,13 @@ def balance_crank_slider(spec, fraction=0.0, radius_m=None,
 
     spec = load_spec(spec)
     if spec.kind != "crank-slider":
-        raise SpecError(Problem("mechanism.kind", f"got {spec.kind!r}; partial balance is "
-                                "for the crank-slider; use balance_fourbar"))
+        raise SpecError(Problem("mechanism.kind",
+                                Text("errors.dynamics.shaking.partial_balance_for",
+                                     {"kind": spec.kind})))
     if not 0.0 <= fraction <= 1.0:
-        raise SpecError(Problem("balance.fraction", f"got {fraction!r}; the balanced share "
-                                "of the reciprocating mass must be in [0, 1]"))
+        raise SpecError(Problem("balance.fraction",
+                                Text("errors.dynamics.shaking.balanced_share_reciprocating",
+                                     {"fraction": fraction})))
     l1, l2 = spec.crank, spec.coupler
     m2, m3, m4 = (spec.links[n].mass for n in ("crank", "coupler", "slider"))
     r2, r3 = spec.links["crank"].cg, spec.links["coupler"].cg
@@ -299,8 +303,10 @@ def mechanism_balance(path_or_dict) -> BalanceResult:
                  "crank-slider": ("fraction", "radius_m")}[spec.kind]
     for k in bal:
         if k in _BAL_KEYS and k not in kind_keys:
-            ck.add(f"balance.{k}", f"does not apply to a {spec.kind}; valid here: "
-                                   + ", ".join(kind_keys))
+            ck.add(f"balance.{k}", Text("errors.dynamics.shaking.does_not_apply",
+                                        {"kind": Text("errors.kind."
+                                                      + spec.kind.replace("-", "_")),
+                                         "items": ", ".join(kind_keys)}))
     ck.raise_if_any()
     if spec.kind == "crank-rocker":
         return balance_fourbar(spec, radius["radius_crank_m"], radius["radius_rocker_m"])

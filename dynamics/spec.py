@@ -27,6 +27,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
+from crankbase.errors import Text
 from crankbase.schema import SpecReader
 
 from ._base import MotionError, Problem, SpecError, read_toml
@@ -69,7 +70,7 @@ def _settings(ck, dyn, period_deg, engine=False):
     """The ``[dynamics]`` table ``dyn`` (its unknown keys already reported by
     :meth:`SpecReader.sub`)."""
     if not engine and "J_engine_extra_kgm2" in dyn:
-        ck.add("dynamics.J_engine_extra_kgm2", "only for an engine spec ([engine])")
+        ck.add("dynamics.J_engine_extra_kgm2", Text("errors.dynamics.spec.only_for_engine"))
 
     def get(key, **kw):
         return ck.get(dyn, DYNAMICS, key, **kw)
@@ -82,22 +83,21 @@ def _settings(ck, dyn, period_deg, engine=False):
     else:
         for k in ("phi_deg", "M_Nm"):
             if k in dyn:
-                ck.add(f"dynamics.{k}", 'only with driving = "table"')
+                ck.add(f"dynamics.{k}", Text("errors.dynamics.spec.only_with_driving"))
     if driving == "motor":
         M0 = get("motor_start_torque_Nm", required=True)
         w0 = get("motor_sync_speed_rad_s", required=True)
         if "omega_mean_rad_s" in dyn:
-            ck.add("dynamics.omega_mean_rad_s", "the motor's characteristic sets the speed; "
-                                                "remove it with driving = \"motor\"")
+            ck.add("dynamics.omega_mean_rad_s",
+                   Text("errors.dynamics.spec.motor_s_characteristic"))
     else:
         for k in ("motor_start_torque_Nm", "motor_sync_speed_rad_s"):
             if k in dyn:
-                ck.add(f"dynamics.{k}", 'only with driving = "motor"')
+                ck.add(f"dynamics.{k}", Text("errors.dynamics.spec.only_with_driving_2"))
     delta = get("delta")
     fly = get("flywheel_kgm2")
     if "delta" in dyn and "flywheel_kgm2" in dyn:
-        ck.add("dynamics", "give either delta (the flywheel is sized) or flywheel_kgm2 (its "
-                           "motion is found), not both")
+        ck.add("dynamics", Text("errors.dynamics.spec.give_either_delta"))
     wm = get("omega_mean_rad_s")
     steps = get("steps")
     return DynamicsSettings(driving, tuple(phi) if phi else None, tuple(M) if M else None,
@@ -141,9 +141,9 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
             if fw_delta is not None and fw_delta < 1:
                 settings = replace(settings, delta=float(fw_delta))
         if settings.driving != "constant":
-            raise SpecError(Problem("dynamics.driving", f"got {settings.driving!r}; an "
-                                    "engine drives itself: the resisting moment is the "
-                                    "constant one (driving = \"constant\")"))
+            raise SpecError(Problem("dynamics.driving",
+                                    Text("errors.dynamics.spec.engine_drives_itself",
+                                         {"driving": settings.driving})))
         model = engine_model(espec, steps=settings.steps or 1440, J_extra_kgm2=J_extra,
                              train=estudy.train)
         if settings.omega_mean is not None:
@@ -173,15 +173,14 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
                     trans[0].append(mk)
                     trans[1].append(vk)
             if not any(k in el for k in _ELEMENT_KEYS):
-                ck.add(path, "give J_kgm2 with speed_ratio (a rotating element) and/or m_kg "
-                             "with velocity_ratio_m (a translating one, v/ω in m)")
+                ck.add(path, Text("errors.dynamics.spec.give_j_kgm"))
         if elements and J is not None:
             from .reduced import chain_reduce
 
             try:
                 J = J + chain_reduce(rot[0], rot[1], trans[0], trans[1]).J_red_kgm2
             except SpecError as exc:
-                ck.problems.extend(Problem("machine.element", p.message)
+                ck.problems.extend(Problem("machine.element", p.text or p.message)
                                    for p in exc.problems)
         wm = ck.get(mach, MACHINE, "omega_mean_rad_s")
         period = ck.get(mach, MACHINE, "period_deg")
@@ -215,17 +214,15 @@ def load_dynamics_spec(path_or_dict) -> DynamicsJob:
         if problems:
             raise SpecError(problems)
         if lspec.omega == 0:
-            raise SpecError(Problem("mechanism.omega_rad_s", "got 0; machine dynamics needs "
-                                    "the crank's speed and direction (nonzero)"))
+            raise SpecError(Problem("mechanism.omega_rad_s",
+                                    Text("errors.dynamics.spec.machine_dynamics_needs")))
         model = linkage_model(lspec, steps=settings.steps or 720)
         if settings.omega_mean is not None:
             model.omega_nominal = settings.omega_mean
         kind = "linkage"
         period = 360.0
     else:
-        raise SpecError(Problem("", "neither [machine] nor [mechanism]: give a machine by "
-                                    "its reduced quantities or a linkage spec, with "
-                                    "[dynamics]"))
+        raise SpecError(Problem("", Text("errors.dynamics.spec.neither_machine_nor")))
     if settings.driving == "table":
         try:
             pl = PiecewiseLinear(settings.table_phi_deg, settings.table_M_Nm, period,
@@ -270,8 +267,7 @@ def run_job(job: DynamicsJob):
         driving = "constant" if s.driving == "constant" else "given"
         if model.omega_nominal is None:
             raise SpecError(Problem("dynamics.omega_mean_rad_s",
-                                    "missing; give the mean speed (or machine."
-                                    "omega_mean_rad_s)"))
+                                    Text("errors.dynamics.spec.missing_give_mean")))
         if s.delta is not None:
             fly = size_flywheel(model, s.delta, driving=driving)
             motion = fly.motion

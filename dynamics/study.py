@@ -23,6 +23,7 @@ import contextlib
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from crankbase.errors import Text
 from .results import MOTION_COLUMNS, DynamicsReport
 
 __all__ = ["DynamicsReport", "WrittenReport", "run_study", "write_report", "summary_lines",
@@ -104,7 +105,7 @@ def write_report(report: DynamicsReport, out, lang="ru",
     check_lang(lang)
     out = Path(out)
     if out.exists() and not out.is_dir():
-        raise SpecError(Problem("out", f"{out} exists and is not a folder"))
+        raise SpecError(Problem("out", Text("errors.dynamics.study.exists_and_not", {"out": out})))
     tables = report.tables()
     what = {"motion.csv": "motion table", "forces_true_motion.csv":
             "forces under the true motion", "startup.csv": "start-up"}

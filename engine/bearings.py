@@ -53,7 +53,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from crankbase.errors import Problem, SpecError
+from crankbase.errors import Problem, SpecError, Text
 from crankbase.tolerances import ROUNDOFF_RTOL
 from linkage.groups import dot
 
@@ -175,16 +175,16 @@ def lever_rule(F, z, z_journals):
     zj = np.asarray(z_journals, float)
     if zj.ndim != 1 or len(zj) < 2 or np.any(np.diff(zj) <= 0):
         raise BearingInputError(Problem("journal_positions_mm",
-                                        f"got {list(zj * 1e3)}; need at least two "
-                                        "journal positions, strictly increasing"))
+                                        Text("errors.engine.bearings.need_at_least",
+                                             {"value": list(zj * 1e3)})))
     tol = ROUNDOFF_RTOL * (zj[-1] - zj[0])
     bad = (z < zj[0] - tol) | (z > zj[-1] + tol)
     if np.any(bad):
         raise BearingInputError(Problem(
             "journal_positions_mm",
-            f"loads at {list(np.round(z[bad] * 1e3, 6))} mm lie outside the main journals "
-            f"[{zj[0] * 1e3:g}, {zj[-1] * 1e3:g}] mm; every throw and counterweight must be "
-            "between two journals"))
+            Text("errors.engine.bearings.loads_at_mm",
+                 {"value": list(np.round(z[bad] * 1e3, 6)), "value2": zj[0] * 1e3,
+                  "value3": zj[-1] * 1e3})))
     span = np.clip(np.searchsorted(zj, z, side="right") - 1, 0, len(zj) - 2)
     a, b = zj[span], zj[span + 1]
     w_right = np.clip((z - a) / (b - a), 0.0, 1.0)
@@ -471,8 +471,8 @@ def crankshaft_loads(theta_deg, shaft: Crankshaft, pin_K, pin_T, R, omega, cycle
     pin_T = np.atleast_2d(np.asarray(pin_T, float))
     nt = len(shaft.throw_angle_deg)
     if pin_K.shape[0] != nt or pin_T.shape[0] != nt:
-        raise BearingInputError(f"pin loads given for {pin_K.shape[0]} throws, the "
-                                f"crankshaft has {nt}")
+        raise BearingInputError(Text("errors.engine.bearings.pin_loads_given",
+                                     {"value": pin_K.shape[0], "nt": nt}))
     tau = np.asarray(shaft.throw_angle_deg, float)
     delta = th[None, :] + tau[:, None]                       # (nt, n)
     e = crank_unit(delta)

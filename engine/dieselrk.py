@@ -49,6 +49,7 @@ from pathlib import Path
 
 import numpy as np
 
+from crankbase.errors import Text, os_reason
 from crankbase.tolerances import SAME_ANGLE_DEG
 from crankbase.validation import Checker
 
@@ -97,10 +98,12 @@ def read_ind(path, cycle_deg, firing_tdc_deg=DIESEL_RK_TDC_DEG, checker=None,
         try:
             text = path.read_text(encoding="cp1251")      # Diesel-RK on Windows
         except (OSError, UnicodeDecodeError) as exc:
-            c.add(key, f"cannot read {name}: {exc}")
+            c.add(key, Text("errors.engine.dieselrk.cannot_read",
+                            {"name": name, "exc": os_reason(exc)}))
             text = None
     except OSError as exc:
-        c.add(key, f"cannot read {name}: {exc}")
+        c.add(key, Text("errors.engine.dieselrk.cannot_read",
+                        {"name": name, "exc": os_reason(exc)}))
         text = None
     out = (None, None)
     if text is not None:
@@ -122,11 +125,10 @@ def _parse(c, key, name, lines, cycle_deg, tdc):
                    if line.strip() == "Names" and n < len(lines)]
     if not named:
         near = (after_names or starts)
-        where = (f"; line {near[-1]} reads {lines[near[-1] - 1].strip()!r}"
+        where = (Text("errors.engine.dieselrk.line_reads",
+                      {"line": near[-1], "text": lines[near[-1] - 1].strip()})
                  if near and near[-1] <= len(lines) else "")
-        c.add(key, f"{name}: no column header found (a line 'Fi Pc Tc V ...' naming the "
-                   f"crank angle Fi and the cylinder pressure Pc [bar]){where}; is this a "
-                   "Diesel-RK .ind export?")
+        c.add(key, Text("errors.engine.dieselrk.no_column_header", {"name": name, "where": where}))
         return None, None
     hdr = named[0]
     cols = lines[hdr - 1].split()
@@ -137,27 +139,29 @@ def _parse(c, key, name, lines, cycle_deg, tdc):
         if not tok or (n == hdr + 1 and tok == ["Arrays"]):
             continue
         if len(c.problems) - n0 >= _MAX_ROW_PROBLEMS:
-            c.add(key, f"{name}: more bad rows after line {n - 1} not listed")
+            c.add(key, Text("errors.engine.dieselrk.more_bad_rows", {"name": name, "n": n - 1}))
             break
         if len(tok) != len(cols):
-            c.add(key, f"{name} line {n}: {len(tok)} values, the header has "
-                       f"{len(cols)} columns ({' '.join(cols)}); truncated or damaged row")
+            c.add(key, Text("errors.engine.dieselrk.line_values_header",
+                            {"name": name, "n": n, "n2": len(tok), "n3": len(cols),
+                             "items": ' '.join(cols)}))
             continue
         try:
             vals = [float(t) for t in tok]
         except ValueError:
-            c.add(key, f"{name} line {n}: not a number in {lines[n - 1].strip()!r}")
+            c.add(key, Text("errors.engine.dieselrk.line_not_number",
+                            {"name": name, "n": n, "value": lines[n - 1].strip()}))
             continue
         if not all(math.isfinite(v) for v in (vals[0], vals[ip])):
-            c.add(key, f"{name} line {n}: Fi and Pc must be finite numbers")
+            c.add(key, Text("errors.engine.dieselrk.line_fi_and", {"name": name, "n": n}))
             continue
         rows.append(n)
         numbers.append(vals)
     if len(c.problems) > n0:
         return None, None
     if len(rows) < 3:
-        c.add(key, f"{name}: {len(rows)} data rows after the header on line {hdr}; a "
-                   "whole cycle is needed")
+        c.add(key, Text("errors.engine.dieselrk.data_rows_after",
+                        {"name": name, "n": len(rows), "hdr": hdr}))
         return None, None
     data = np.array(numbers)
     fi, p = data[:, 0], data[:, ip] * BAR
@@ -165,30 +169,30 @@ def _parse(c, key, name, lines, cycle_deg, tdc):
     bad = np.nonzero(step <= 0)[0]
     if len(bad):
         i = bad[0] + 1
-        c.add(key, f"{name} line {rows[i]}: Fi = {fi[i]:g} does not increase "
-                   f"(previous row {fi[i - 1]:g})")
+        c.add(key, Text("errors.engine.dieselrk.line_fi_does",
+                        {"name": name, "value": rows[i], "value2": fi[i], "value3": fi[i - 1]}))
         return None, None
     neg = np.nonzero(p < 0)[0]
     if len(neg):
-        c.add(key, f"{name} line {rows[neg[0]]}: pressure {p[neg[0]] / BAR:g} bar is "
-                   "negative (Pc is absolute)")
+        c.add(key, Text("errors.engine.dieselrk.line_pressure_bar",
+                        {"name": name, "value": rows[neg[0]], "value2": p[neg[0]] / BAR}))
         return None, None
     span = fi[-1] - fi[0]
     tol = SAME_ANGLE_DEG
     if span < cycle_deg - tol:
-        c.add(key, f"{name} line {rows[-1]}: the data end at Fi = {fi[-1]:g}, "
-                   f"{span:g}° after the first row (Fi = {fi[0]:g}); a whole cycle of "
-                   f"{cycle_deg:g}° is needed (truncated file?)")
+        c.add(key, Text("errors.engine.dieselrk.line_data_end",
+                        {"name": name, "value": rows[-1], "value2": fi[-1], "span": span,
+                         "value3": fi[0], "cycle_deg": cycle_deg}))
         return None, None
     if span > cycle_deg + tol:
-        c.add(key, f"{name} line {rows[-1]}: the data span {span:g}° (Fi = {fi[0]:g} … "
-                   f"{fi[-1]:g}), more than one cycle of {cycle_deg:g}°; is "
-                   "[engine] strokes right?")
+        c.add(key, Text("errors.engine.dieselrk.line_data_span",
+                        {"name": name, "value": rows[-1], "span": span, "value2": fi[0],
+                         "value3": fi[-1], "cycle_deg": cycle_deg}))
         return None, None
     if abs(p[-1] - p[0]) > _END_ROW_RTOL * max(p[0], p[-1]) + 0.005 * BAR:
-        c.add(key, f"{name} line {rows[-1]}: the last row (Fi = {fi[-1]:g}) ends the "
-                   f"cycle but its pressure {p[-1] / BAR:g} bar differs from the first "
-                   f"row's {p[0] / BAR:g} bar")
+        c.add(key, Text("errors.engine.dieselrk.line_last_row",
+                        {"name": name, "value": rows[-1], "value2": fi[-1], "value3": p[-1] / BAR,
+                         "value4": p[0] / BAR}))
         return None, None
     fi, p, lines_used = fi[:-1], p[:-1], rows[:-1]
     if iv is not None:
@@ -208,17 +212,16 @@ def _origin_ok(c, key, name, fi, p, V, lines, cycle_deg, tdc):
     off = abs(((fi[i] - tdc) + 180.0) % 360.0 - 180.0)
     if off > row + SAME_ANGLE_DEG:
         c.add("pressure.firing_tdc_deg",
-              f"{name}: the cylinder volume V is least at Fi = {fi[i]:g} (line {lines[i]}), "
-              f"not at the firing TDC Fi = {tdc:g} or {tdc:g} ± 360; give the file's "
-              "firing TDC as firing_tdc_deg")
+              Text("errors.engine.dieselrk.cylinder_volume_v",
+                   {"name": name, "value": fi[i], "value2": lines[i], "tdc": tdc}))
         return False
     if cycle_deg > 360.0:
         k = int(np.argmax(p))
         d = abs(((fi[k] - tdc) + 360.0) % 720.0 - 360.0)
         if d > 90.0:
             c.add("pressure.firing_tdc_deg",
-                  f"{name}: the pressure peak ({p[k] / BAR:g} bar at Fi = {fi[k]:g}, line "
-                  f"{lines[k]}) is {d:g}° from the firing TDC Fi = {tdc:g}: that is the "
-                  "gas-exchange TDC; give firing_tdc_deg of the other TDC")
+                  Text("errors.engine.dieselrk.pressure_peak_bar",
+                       {"name": name, "value": p[k] / BAR, "value2": fi[k], "value3": lines[k],
+                        "d": d, "tdc": tdc}))
             return False
     return True

@@ -33,7 +33,7 @@ import math
 
 import numpy as np
 
-from crankbase.errors import Problem
+from crankbase.errors import Problem, Text
 from crankbase.tolerances import ROUNDOFF_RTOL, SAME_ANGLE_DEG, snap_roundoff
 from crankbase.validation import angles_argument, step_argument
 from linkage.groups import Wrench, dot, driver_reactions, link_wrench, rrp_reactions
@@ -59,14 +59,15 @@ PLOT_STEP_DEG = 0.5
 
 def _check_spec(spec):
     if not isinstance(spec, EngineSpec):
-        raise EngineSpecError(Problem("spec", f"must be an EngineSpec (engine.load_spec), "
-                                              f"got {type(spec).__name__}"))
+        raise EngineSpecError(Problem("spec", Text("errors.engine.forces.enginespec_engine_load",
+                                                   {"name__": type(spec).__name__})))
 
 
 def _check_angle(value, key):
     if not (isinstance(value, (int, float)) and not isinstance(value, bool)
             and math.isfinite(value)):
-        raise EngineSpecError(Problem(key, f"got {value!r}; must be a finite number [deg]"))
+        raise EngineSpecError(Problem(key, Text("errors.engine.forces.finite_number_deg",
+                                                {"value": value})))
     return float(value)
 
 
@@ -392,8 +393,8 @@ def summarize(table, spec) -> EngineSummary:
     _check_spec(spec)
     missing = [c for c in COLUMNS if c not in getattr(table, "columns", ())]
     if missing:
-        raise EngineSpecError(Problem("table", "must be a force table (engine.force_table);"
-                                               f" missing columns {', '.join(missing)}"))
+        raise EngineSpecError(Problem("table", Text("errors.engine.forces.force_table_engine",
+                                                    {"items": ', '.join(missing)})))
     a = table["alpha_deg"].to_numpy()
     cyc = spec.cycle_deg
     ext = {}
@@ -436,8 +437,8 @@ def analyze(spec, settings=None, *, fine_step_deg=PLOT_STEP_DEG) -> EngineResult
     """
     settings = TableSettings() if settings is None else settings
     if not isinstance(settings, TableSettings):
-        raise EngineSpecError(Problem("settings", "must be a TableSettings, got "
-                                                  f"{type(settings).__name__}"))
+        raise EngineSpecError(Problem("settings", Text("errors.engine.forces.tablesettings",
+                                                       {"name__": type(settings).__name__})))
     table = force_table(spec, settings=settings)
     fine = fine_angles(spec, settings, fine_step_deg)
     # a table at least as fine as the plot grid is its own fine curve

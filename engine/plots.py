@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from crankbase.errors import Problem
+from crankbase.errors import Problem, Text
 from .kinematics import guide_direction
 from .symbols import math_symbol, sym
 
@@ -42,7 +42,8 @@ def engine_words(lang):
     symbols."""
     if lang not in LANGS:
         from .spec import EngineSpecError
-        raise EngineSpecError(Problem("lang", f"got {lang!r}; valid: {', '.join(LANGS)}"))
+        raise EngineSpecError(Problem("lang", Text("errors.engine.plots.valid",
+                                                   {"lang": lang, "items": ', '.join(LANGS)})))
     from crankbase.plot_texts import plot_words
 
     return dict(plot_words(lang, "engine"), sym=SYMBOLS[lang])

@@ -24,7 +24,7 @@ import math
 
 import numpy as np
 
-from crankbase.errors import OutputError, Problem
+from crankbase.errors import OutputError, Problem, Text
 from crankbase.workbook import sheet_rows, thinned_note
 
 from .forces import COLUMNS, SUMMARY_QUANTITIES
@@ -135,7 +135,8 @@ def _copy_style(src, dst):
 def _check_finite(values, where):
     for key, val in values.items():
         if isinstance(val, float) and not math.isfinite(val):
-            raise OutputError(f"{where}: {key} is not finite ({val!r})")
+            raise OutputError(Text("errors.engine.report.not_finite",
+                                   {"where": where, "key": key, "val": val}))
 
 
 def build_workbook(result, lang="ru"):
@@ -161,12 +162,13 @@ def build_workbook(result, lang="ru"):
     from crankbase.resources import template_path
 
     if lang not in LANGS:
-        raise EngineSpecError(Problem("lang", f"got {lang!r}; valid: {', '.join(LANGS)}"))
+        raise EngineSpecError(Problem("lang", Text("errors.engine.report.valid",
+                                                   {"lang": lang, "items": ', '.join(LANGS)})))
     spec, table, summary = result.spec, result.table, result.summary
     mu = result.settings.force_scale
     if mu is None:
-        raise EngineSpecError(Problem("force_scale", "the report needs the force scale μP "
-                                                     "(TableSettings.force_scale)"))
+        raise EngineSpecError(Problem("force_scale",
+                                      Text("errors.engine.report.report_needs_force")))
     ensure_finite(table, "force table")
     full = table
     table = sheet_rows(table)          # at most MAX_ROWS rows (the CSV keeps every row)
@@ -634,7 +636,8 @@ def add_engine_sheets(wb, tr, lang="ru"):
     from crankbase.output import ensure_finite
 
     if lang not in LANGS:
-        raise EngineSpecError(Problem("lang", f"got {lang!r}; valid: {', '.join(LANGS)}"))
+        raise EngineSpecError(Problem("lang", Text("errors.engine.report.valid",
+                                                   {"lang": lang, "items": ', '.join(LANGS)})))
     t = _TR[lang]
     for df, what in ((tr.torque, "torque"), (tr.balance, "balance"),
                      (tr.layout.cylinders, "layout")):

@@ -28,7 +28,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from types import MappingProxyType
 
-from crankbase.errors import Problem, SpecError
+from crankbase.errors import Problem, SpecError, Text
 
 __all__ = ["EngineReport", "BearingReport", "ReportFiles", "run_study", "write_report", "report_workbook",
            "with_options", "output_names", "FIGURE_FORMATS"]
@@ -175,8 +175,8 @@ def with_options(study, step=None, form=None):
         from .table2 import FORMS
 
         if form not in FORMS:
-            raise SpecError(Problem("form", f"got {form!r}; must be one of "
-                                    + ", ".join(FORMS)))
+            raise SpecError(Problem("form", Text("errors.engine.study.one",
+                                                 {"form": form, "items": ", ".join(FORMS)})))
         settings = replace(settings, form=form)
     return replace(study, settings=settings)
 
@@ -298,8 +298,9 @@ def _formats(formats) -> tuple:
     formats = tuple(formats)
     bad = [f for f in formats if f not in FIGURE_FORMATS]
     if not formats or bad or len(set(formats)) != len(formats):
-        raise SpecError(Problem("formats", f"got {formats!r}; give one or more of "
-                                + ", ".join(FIGURE_FORMATS) + ", each once"))
+        raise SpecError(Problem("formats", Text("errors.engine.study.give_one_or",
+                                                {"formats": formats,
+                                                 "items": ", ".join(FIGURE_FORMATS)})))
     return formats
 
 
@@ -372,7 +373,7 @@ def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "s
     formats = _formats(formats)
     out = Path(out)
     if out.exists() and not out.is_dir():
-        raise SpecError(Problem("out", f"{out} exists and is not a folder"))
+        raise SpecError(Problem("out", Text("errors.engine.study.exists_and_not", {"out": out})))
     name, result, whole = report.name, report.cylinder, report.whole
     files = report.file_names
     pdfs = output_names(name, DRAWING_NAMES) if drawing else {}

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from crankbase.errors import Problem
+from crankbase.errors import Problem, Text
 from crankbase.tolerances import PHASE_MATCH_DEG
 
 from .bearing_spec import (NOTE_NO_PISTON_MASS, BearingInputs, piston_mass,
@@ -152,23 +152,23 @@ def engine_bearings(spec, theta_deg, cylinders, throw_dir_deg, z_throw, *,
                                   "counterweight_angle_deg")]
     if one_cylinder_keys:
         raise BearingInputError([Problem(
-            f"bearings.{k}", "only for a one-cylinder spec; a whole engine takes its main "
-            "journals from the layout (cylinder_spacing_mm) and its counterweights from "
-            "[balance]") for k in one_cylinder_keys])
+            f"bearings.{k}", Text("errors.engine.train_bearings.only_for_one"))
+            for k in one_cylinder_keys])
     th = np.asarray(theta_deg, float)
     tau = np.asarray(throw_dir_deg, float)
     nt = len(tau)
     cyl = tuple(cylinders)
     for i, c in enumerate(cyl, start=1):
         if not 0 <= c.throw < nt:
-            raise BearingInputError(Problem(f"cylinder {i}", f"throw {c.throw + 1} does not "
-                                            f"exist (the crankshaft has {nt})"))
+            raise BearingInputError(Problem(f"cylinder {i}",
+                                            Text("errors.engine.train_bearings.throw_does_not",
+                                                 {"value": c.throw + 1, "nt": nt})))
         lag = (c.bank_deg - tau[c.throw] - c.phase_deg) % 360.0
         if min(lag, 360.0 - lag) > PHASE_MATCH_DEG:
             raise BearingInputError(Problem(
-                f"cylinder {i}", f"phase {c.phase_deg:g}° does not match its bank angle "
-                f"{c.bank_deg:g}° and throw {c.throw + 1} at {tau[c.throw]:g}°: "
-                "φ ≡ γ − τ (mod 360°) is needed"))
+                f"cylinder {i}", Text("errors.engine.train_bearings.phase_does_not",
+                                      {"phase_deg": c.phase_deg, "bank_deg": c.bank_deg,
+                                       "value": c.throw + 1, "value2": tau[c.throw]})))
     tables = [force_table(spec, th, bank_deg=c.bank_deg, phase_deg=c.phase_deg)
               for c in cyl]
     K = np.zeros((nt, th.size))

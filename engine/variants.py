@@ -24,7 +24,7 @@ import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from crankbase.errors import Problem, SpecError
+from crankbase.errors import Problem, SpecError, Text
 
 __all__ = ["VariantRow", "read_variants", "parse_cell", "apply_variant", "load_variant",
            "SUMMARY_FIELDS", "summary_record", "NAME_COLUMNS", "run_variants",
@@ -82,7 +82,7 @@ def _read_rows(path: Path):
         rows = list(csv.reader(text.splitlines(), delimiter=delim))
     rows = [r for r in rows if any(v not in (None, "") for v in r)]
     if not rows:
-        raise SpecError(Problem(str(path), "the variants table is empty"))
+        raise SpecError(Problem(str(path), Text("errors.engine.variants.variants_table_empty")))
     return [("" if h is None else str(h).strip()) for h in rows[0]], rows[1:]
 
 
@@ -106,19 +106,21 @@ def read_variants(path) -> list[VariantRow]:
     """
     path = Path(path)
     if not path.is_file():
-        raise SpecError(Problem(str(path), "variants file does not exist"))
+        raise SpecError(Problem(str(path), Text("errors.engine.variants.variants_file_does")))
     header, rows = _read_rows(path)
     problems = []
     lower = [h.lower() for h in header]
     name_col = next((lower.index(n) for n in NAME_COLUMNS if n in lower), None)
     if name_col is None:
-        problems.append(Problem(str(path), "no 'variant' (or 'name') column; columns: "
-                                + ", ".join(header)))
+        problems.append(Problem(str(path), Text("errors.engine.variants.no_variant_or",
+                                                {"items": ", ".join(header)})))
     for j, h in enumerate(header):
         if not h:
-            problems.append(Problem(str(path), f"column {j + 1} has no header"))
+            problems.append(Problem(str(path), Text("errors.engine.variants.column_has_no",
+                                                    {"j": j + 1})))
         elif lower.count(h.lower()) > 1 and lower.index(h.lower()) == j:
-            problems.append(Problem(str(path), f"column {h!r} appears more than once"))
+            problems.append(Problem(str(path), Text("errors.engine.variants.column_appears_more",
+                                                    {"h": h})))
     if problems:
         raise SpecError(problems)
     out, seen = [], {}
@@ -128,10 +130,14 @@ def read_variants(path) -> list[VariantRow]:
         if isinstance(r[name_col], float) and r[name_col].is_integer():
             name = str(int(r[name_col]))
         if not name:
-            problems.append(Problem(f"row {i}", f"column {header[name_col]!r} is empty"))
+            problems.append(Problem(Text("errors.engine.variants.row", {"row": i}),
+                                    Text("errors.engine.variants.column_empty",
+                                         {"value": header[name_col]})))
             continue
         if name in seen:
-            problems.append(Problem(f"row {i}", f"variant {name!r} repeats row {seen[name]}"))
+            problems.append(Problem(Text("errors.engine.variants.row", {"row": i}),
+                                    Text("errors.engine.variants.variant_repeats_row",
+                                         {"name": name, "value": seen[name]})))
             continue
         seen[name] = i
         values = {}
@@ -166,8 +172,10 @@ def apply_variant(base: dict, variant: VariantRow) -> dict:
         for k, part in enumerate(parts[:-1]):
             nxt = node.setdefault(part, {})
             if not isinstance(nxt, dict):
-                problems.append(Problem(f"row {variant.row}: {key}", f"{'.'.join(parts[:k + 1])}"
-                                        " is a value, not a table"))
+                problems.append(Problem(
+                    Text("errors.engine.variants.row_key", {"row": variant.row, "key": key}),
+                    Text("errors.engine.variants.value_not_table",
+                         {"items": '.'.join(parts[:k + 1])})))
                 break
             node = nxt
         else:
@@ -185,9 +193,13 @@ def load_variant(base: dict, variant: VariantRow, base_dir=None):
     try:
         return load(apply_variant(base, variant), base_dir=base_dir)
     except SpecError as exc:
-        raise SpecError([Problem(f"row {variant.row} ({variant.variant})"
-                                 + (f": {p.key}" if p.key and not p.key.startswith("row ")
-                                    else ""), p.message) for p in exc.problems]) from None
+        raise SpecError([Problem(
+            Text("errors.engine.variants.row_variant_key",
+                 {"row": variant.row, "variant": variant.variant, "key": p.key})
+            if p.key and not str(p.key).startswith("row ") else
+            Text("errors.engine.variants.row_variant",
+                 {"row": variant.row, "variant": variant.variant}), p.text or p.message)
+            for p in exc.problems]) from None
 
 
 def variant_spec(base: dict, variant: VariantRow, base_dir=None, step=None, form=None):
@@ -372,9 +384,14 @@ def _one_variant(task) -> VariantOutcome:
         write_report(report, folder, lang, drawing=drawing, inputs=inputs)
         spec = write_variant_spec(base, v, folder, base_dir, step, form, lang, inputs)
     except CrankdynError as exc:
-        lines = exc.lines() or [str(exc)]
+        from crankbase.texts import texts
+
+        t = texts(lang)
+        lines = exc.lines(lang) or [str(exc)]
+        head = t("errors.engine.variants.row", row="").strip()
         return VariantOutcome(v, folder, problems=tuple(
-            ln if ln.startswith("row ") else f"row {v.row} ({v.variant}): {ln}"
+            ln if ln.startswith(head) else
+            t("errors.engine.variants.row_line", row=v.row, variant=v.variant, line=ln)
             for ln in lines), kept_earlier=folder.exists())
     return VariantOutcome(v, folder, summary_record(v.variant, report.study.spec,
                                                     report.cylinder.summary), spec=spec)
@@ -424,7 +441,8 @@ def run_variants(base, variants, out, lang: str = "ru", step=None, form=None,
 
     check_lang(lang)
     if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1:
-        raise SpecError(Problem("jobs", f"got {jobs!r}; must be a whole number >= 1"))
+        raise SpecError(Problem("jobs", Text("errors.engine.variants.whole_number",
+                                             {"jobs": jobs})))
     base_path, variants_path, out = Path(base), Path(variants), Path(out)
     base_dict, base_dir = read_toml(base_path)
     rows = read_variants(variants_path)
@@ -432,8 +450,9 @@ def run_variants(base, variants, out, lang: str = "ru", step=None, form=None,
     for v in rows:
         f = safe_name(v.variant, "variant")
         if f in folders:
-            clash.append(f"row {v.row} ({v.variant}): folder {f!r} is also the folder of "
-                         f"row {folders[f].row} ({folders[f].variant}); rename one")
+            clash.append(Text("errors.engine.variants.folder_clash",
+                              {"row": v.row, "variant": v.variant, "folder": f,
+                               "row2": folders[f].row, "variant2": folders[f].variant}))
         folders[f] = v
     if clash:
         raise SpecError(clash)

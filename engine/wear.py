@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from crankbase.errors import Problem, SpecError
+from crankbase.errors import Problem, SpecError, Text
 from crankbase.tolerances import WEAR_ARC_EDGE_DEG, WEAR_TIE_RTOL
 
 __all__ = ["wear_profile", "least_wear_direction", "WearDiagram", "wear_diagram",
@@ -81,7 +81,8 @@ def wear_profile(contact_deg, magnitude, half_angle_deg=DEFAULT_HALF_ANGLE_DEG,
     """
     if not (np.isfinite(half_angle_deg) and 0 < half_angle_deg <= 180):
         raise SpecError(Problem("wear_half_angle_deg",
-                                f"got {half_angle_deg!r}; must be in (0, 180]"))
+                                Text("errors.engine.wear.message",
+                                     {"half_angle_deg": half_angle_deg})))
     c = np.mod(np.asarray(contact_deg, float).ravel(), 360.0)
     m = np.asarray(magnitude, float).ravel()
     w = np.ones_like(m) if weights is None else np.asarray(weights, float).ravel()

@@ -22,7 +22,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from crankbase.errors import SpecError
+from crankbase.errors import Problem, SpecError, Text
 from crankbase.tolerances import SAME_ANGLE_RAD
 from crankbase.validation import angles_argument, step_argument
 
@@ -372,9 +372,8 @@ def analyze(spec, crank_angles_deg=None, *, course_tables=True) -> AnalysisResul
             ext = mech.extremes(rot, spec.working_stroke or default)
     if ext is None and (spec.positions is not None and crank_angles_deg is None
                         and spec.crank_angles_deg is None):
-        raise SpecError(["analysis.positions: the output link turns fully (a double crank) "
-                         "and has no extreme positions to number from; give "
-                         "analysis.crank_angles_deg instead"])
+        raise SpecError([Problem("analysis.positions",
+                                 Text("errors.linkage.analysis.no_extremes"))])
     positions = None
     if crank_angles_deg is not None:
         phi = np.radians(angles_argument(crank_angles_deg, "crank_angles_deg"))

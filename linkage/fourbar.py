@@ -33,7 +33,7 @@ import math
 
 import numpy as np
 
-from crankbase.errors import Problem, SpecError
+from crankbase.errors import Problem, SpecError, Text
 from crankbase.tolerances import ROTATABILITY_RTOL, ROUNDOFF_RTOL
 
 __all__ = ["GeometryError", "GrashofType", "SliderCrankType", "grashof",
@@ -96,7 +96,7 @@ def as_float(name, value, problems):
     try:
         a = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
-        problems.append(Problem(name, f"must be a number, got {value!r}"))
+        problems.append(Problem(name, Text("errors.linkage.fourbar.number", {"value": value})))
         return None
     return a
 
@@ -111,7 +111,8 @@ def positive_lengths(problems, **named):
         bad = ~np.isfinite(a) | (a <= 0)
         if np.any(bad):
             shown = value if a.ndim == 0 else a[bad].ravel()[:4].tolist()
-            problems.append(Problem(name, f"must be a positive finite length, got {shown!r}"))
+            problems.append(Problem(name, Text("errors.linkage.fourbar.positive_finite_length",
+                                               {"shown": shown})))
         out[name] = a
     return out
 
@@ -203,7 +204,8 @@ def grashof(l1, l2, l3, l0=1.0) -> GrashofType:
     named = positive_lengths(problems, l1=l1, l2=l2, l3=l3, l0=l0)
     for name, a in named.items():
         if a.ndim != 0:
-            problems.append(Problem(name, f"must be a single number, got {fmt_value(a)}"))
+            problems.append(Problem(name, Text("errors.linkage.fourbar.single_number",
+                                               {"value": fmt_value(a)})))
     _raise(problems)
     links = [float(named[k]) for k in ("l0", "l1", "l2", "l3")]
     s, p, q, l = sorted(links)
@@ -332,7 +334,7 @@ def transmission_angle_deg(phi_deg, l1, l2, l3, l0=1.0):
     n = positive_lengths(problems, l1=l1, l2=l2, l3=l3, l0=l0)
     phi = as_float("phi_deg", phi_deg, problems)
     if phi is not None and not np.all(np.isfinite(phi)):
-        problems.append(Problem("phi_deg", "must be finite crank angles [deg]"))
+        problems.append(Problem("phi_deg", Text("errors.linkage.fourbar.finite_crank_angles")))
     _raise(problems)
     args = (phi, n["l1"], n["l2"], n["l3"], n["l0"])
     return _acute_deg(_cos_mu(*args), _assembles(*args))
@@ -384,9 +386,9 @@ def min_transmission_angle_deg(l1, l2, l3, l0=1.0):
     bad = ~crank_turns_fully(*args)
     if np.any(bad):
         raise GeometryError(Problem(
-            "l1, l2, l3", f"the crank cannot turn fully (linkage not assemblable at φ = 0° "
-                          f"or 180°): l1={fmt_value(n['l1'])}, l2={fmt_value(n['l2'])}, "
-                          f"l3={fmt_value(n['l3'])}, l0={fmt_value(n['l0'])}"))
+            "l1, l2, l3", Text("errors.linkage.fourbar.crank_cannot_turn",
+                               {"value": fmt_value(n['l1']), "value2": fmt_value(n['l2']),
+                                "value3": fmt_value(n['l3']), "value4": fmt_value(n['l0'])})))
     mu, where = mu_min_on_line_of_centres(*args)
     if mu.ndim == 0:
         return float(mu), float(where)

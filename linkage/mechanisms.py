@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from crankbase.errors import AssemblyError
+from crankbase.errors import AssemblyError, Text
 from crankbase.tolerances import ASSEMBLY_CHECK_RTOL, ROTATABILITY_RTOL, ROUNDOFF_RTOL
 
 from . import fourbar
@@ -240,17 +240,19 @@ class CrankRocker(_CrankMechanism):
         bad, ends = [], []
         if min(near, near2) / scale < -tol:  # |AC| too short around φ = γ
             h = math.acos(max(-1.0, c_near))
-            bad.append(f"|AC| < |AB − CB| for crank angles {_intervals_deg(gam - h, gam + h)}")
+            bad.append(Text("errors.linkage.mechanisms.short",
+                            {"angles": _intervals_deg(gam - h, gam + h)}))
             ends += [math.degrees(gam - h) % 360, math.degrees(gam + h) % 360]
         if far / scale < -tol:  # |AC| too long around φ = γ + π
             h = math.acos(min(1.0, c_far))
-            bad.append(f"|AC| > |AB| + |CB| for crank angles "
-                       f"{_intervals_deg(gam + h, gam + TWO_PI - h)}")
+            bad.append(Text("errors.linkage.mechanisms.long",
+                            {"angles": _intervals_deg(gam + h, gam + TWO_PI - h)}))
             ends += [math.degrees(gam + h) % 360, math.degrees(gam - h) % 360]
         if bad:
             raise AssemblyError(
-                "the crank cannot turn fully (the dyad AB–CB cannot be assembled: "
-                + "; ".join(bad) + f"); Grashof type: {self.grashof()}", ends)
+                Text("errors.linkage.mechanisms.crank_cannot_turn",
+                     {"items": bad, "value": Text("linkage.grashof." + str(self.grashof())
+                                                  .lower().replace("-", "_"))}), ends)
 
     def singular_angles(self, tol=ROTATABILITY_RTOL):
         """Crank angles [rad] where all four joints are collinear (change point)."""
@@ -361,8 +363,8 @@ class CrankSlider(_CrankMechanism):
                 ends += [math.degrees(gam + hi) % 360, math.degrees(gam + math.pi - hi) % 360]
         if bad:
             raise AssemblyError(
-                "the crank cannot turn fully (rod |AB| < |OA| + |offset|: "
-                + "; ".join(bad) + ")", ends)
+                Text("errors.linkage.mechanisms.crank_cannot_turn_2",
+                     {"items": "; ".join(bad)}), ends)
 
     def singular_angles(self, tol=ROTATABILITY_RTOL):
         """Crank angles [rad] where the rod stands perpendicular to the guide."""

@@ -42,6 +42,7 @@ import re
 
 import numpy as np
 
+from crankbase.errors import Text
 from crankbase.tolerances import SAME_ANGLE_DEG
 
 __all__ = ["column_label", "unit_text", "kind_text", "warning_text", "write_csvs",
@@ -703,4 +704,5 @@ def _check_finite_tables(result):
         for r in bad_rows:
             phi = float(df["phi_deg"].iat[r])
             if not any(abs((phi - a + 180.0) % 360.0 - 180.0) < SAME_ANGLE_DEG for a in sing):
-                raise OutputError(f"{name}: row {r + 1} (φ = {phi:g}°) is not finite")
+                raise OutputError(Text("errors.linkage.report.row_not_finite",
+                                       {"name": name, "r": r + 1, "phi": phi}))

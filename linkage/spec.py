@@ -11,7 +11,7 @@ import re
 from dataclasses import dataclass, field
 from types import MappingProxyType
 
-from crankbase.errors import SpecError
+from crankbase.errors import SpecError, Text
 from crankbase.schema import SpecReader
 from crankbase.validation import read_toml, rows_problem
 
@@ -100,6 +100,14 @@ class MechanismSpec:
         return self.links[name]
 
 
+
+def _kind_text(word, prefix="errors.kind."):
+    """A mechanism kind (or an output link) named in an error, keyed when it is one of
+    ours (``crank-rocker`` → ``errors.kind.crank_rocker``), else as given."""
+    key = prefix + str(word).replace("-", "_")
+    return Text(key) if word in ("crank-rocker", "crank-slider", "this", "rocker",
+                                 "slider") else word
+
 def _default_cg(kind, name, lengths):
     """Default centre of mass: mid-length of a bar, the pin B of a slider."""
     if name == "slider":
@@ -147,11 +155,11 @@ def load_spec(path_or_dict) -> MechanismSpec:
         rocker = mech("rocker", required=True)
         ground = mech("ground", required=True)
         if "offset" in m:
-            ck.add("mechanism.offset", "applies to a crank-slider only; remove it")
+            ck.add("mechanism.offset", Text("errors.linkage.spec.applies_crank_slider"))
     elif kind == "crank-slider":
         for key in ("rocker", "ground"):
             if key in m:
-                ck.add(f"mechanism.{key}", "applies to a crank-rocker only; remove it")
+                ck.add(f"mechanism.{key}", Text("errors.linkage.spec.applies_crank_rocker"))
     ground_angle = mech("ground_angle_deg")
     offset = mech("offset")
     assembly = mech("assembly")
@@ -166,7 +174,8 @@ def load_spec(path_or_dict) -> MechanismSpec:
     for lname in lt:
         if lname not in link_names:
             ck.add(f"links.{lname}",
-                   f"unknown link; valid for {kind or 'this mechanism'}: {', '.join(link_names)}")
+                   Text("errors.linkage.spec.unknown_link_valid",
+                        {"value": _kind_text(kind or "this"), "items": ', '.join(link_names)}))
     point_names = set()
     for lname in link_names:
         path = f"links.{lname}"
@@ -183,17 +192,17 @@ def load_spec(path_or_dict) -> MechanismSpec:
         pts = {}
         ptable = t.get("points", {})
         if not isinstance(ptable, dict):
-            ck.add(f"{path}.points", f"must be a table of name = [x, y], got {ptable!r}")
+            ck.add(f"{path}.points", Text("errors.linkage.spec.table_name_x", {"ptable": ptable}))
             ptable = {}
         for pname in ptable:
             ppath = f"{path}.points"
             if not _POINT_NAME.match(pname) or pname in RESERVED_POINTS:
                 ck.add(f"{ppath}.{pname}",
-                       "invalid point name; use letters and digits, starting with a letter, "
-                       f"not one of {', '.join(RESERVED_POINTS)}")
+                       Text("errors.linkage.spec.invalid_point_name",
+                            {"items": ', '.join(RESERVED_POINTS)}))
                 continue
             if pname in point_names:
-                ck.add(f"{ppath}.{pname}", "point name already used on another link")
+                ck.add(f"{ppath}.{pname}", Text("errors.linkage.spec.point_name_already"))
                 continue
             xy = ck.numbers(ptable, pname, ppath, length=2)
             if xy:
@@ -213,8 +222,8 @@ def load_spec(path_or_dict) -> MechanismSpec:
         link = get("link", choices=link_names) if link_names else None
         which = [k for k in ("force_N", "moment_Nm", "resistance_Nm", "resistance_N") if k in t]
         if len(which) != 1:
-            ck.add(path, "needs exactly one of force_N, moment_Nm, resistance_Nm (rocker), "
-                         f"resistance_N (slider); got {', '.join(which) or 'none'}")
+            ck.add(path, Text("errors.linkage.spec.needs_exactly_one",
+                              {"value": ', '.join(which) or Text("errors.none")}))
             continue
         key = which[0]
         at = 0j
@@ -225,7 +234,7 @@ def load_spec(path_or_dict) -> MechanismSpec:
             f = get("force_N", required=True)
             for k in ("stroke", "span_deg", "span_m"):
                 if k in t:
-                    ck.add(f"{path}.{k}", "applies to a resistance only")
+                    ck.add(f"{path}.{k}", Text("errors.linkage.spec.applies_resistance_only"))
             if f and link:
                 loads.append(LoadSpec(link, "force", at=at, force=complex(*f)))
             continue
@@ -233,25 +242,30 @@ def load_spec(path_or_dict) -> MechanismSpec:
             mval = get("moment_Nm", required=True)
             for k in ("at", "stroke", "span_deg", "span_m"):
                 if k in t:
-                    ck.add(f"{path}.{k}", "does not apply to a moment; remove it")
+                    ck.add(f"{path}.{k}", Text("errors.linkage.spec.does_not_apply_2"))
             if mval is not None and link:
                 loads.append(LoadSpec(link, "moment", moment=mval))
             continue
         # resistance
         want = "resistance_Nm" if output == "rocker" else "resistance_N"
         if key != want:
-            ck.add(f"{path}.{key}", f"a {kind} takes {want} on the {output}")
+            ck.add(f"{path}.{key}", Text("errors.linkage.spec.takes_on",
+                                         {"kind": _kind_text(kind), "want": want,
+                                          "output": _kind_text(output, "errors.link.")}))
             continue
         if link is not None and link != output:
-            ck.add(f"{path}.link", f"a resistance acts on the output link {output!r}, got {link!r}")
+            ck.add(f"{path}.link", Text("errors.linkage.spec.resistance_acts_on",
+                                        {"output": output, "link": link}))
         r = get(key, required=True)
         stroke = get("stroke")
         span_key = "span_deg" if output == "rocker" else "span_m"
         other = "span_m" if output == "rocker" else "span_deg"
         if other in t:
-            ck.add(f"{path}.{other}", f"use {span_key} for a {output}")
+            ck.add(f"{path}.{other}", Text("errors.linkage.spec.use_for",
+                                           {"span_key": span_key,
+                                            "output": _kind_text(output, "errors.link.")}))
         if "at" in t:
-            ck.add(f"{path}.at", "a resistance acts at the output link's pin; remove 'at'")
+            ck.add(f"{path}.at", Text("errors.linkage.spec.resistance_acts_at"))
         span = get(span_key)
         if span is not None and span_key == "span_deg":
             span = math.radians(span)
@@ -270,7 +284,7 @@ def load_spec(path_or_dict) -> MechanismSpec:
         angles = ck.get(a, ANALYSIS, "crank_angles_deg", required=True)
         angles = tuple(angles) if angles else None
         if "positions" in a:
-            ck.add("analysis", "give either positions or crank_angles_deg, not both")
+            ck.add("analysis", Text("errors.linkage.spec.give_either_positions"))
     elif "positions" not in a:
         positions = 12
     strokes = WORKING_STROKES.get(kind, WORKING_STROKES["crank-slider"])
@@ -286,19 +300,17 @@ def load_spec(path_or_dict) -> MechanismSpec:
         # statics (or start from rest): no direction of rotation, no strokes
         if positions is not None and "crank_angles_deg" not in a:
             ck.add("analysis.crank_angles_deg",
-                   "missing; with mechanism.omega_rad_s = 0 (statics) give the crank angles "
-                   "(the plan of positions needs a direction of rotation)")
+                   Text("errors.linkage.spec.missing_with_mechanism"))
         for rp in resistance_paths:
-            ck.add(rp, "a resistance opposes motion and is zero with mechanism.omega_rad_s "
-                   "= 0 (statics); give the load as moment_Nm or force_N")
+            ck.add(rp, Text("errors.linkage.spec.resistance_opposes_motion"))
         if "working_stroke" in a:
             ck.add("analysis.working_stroke",
-                   "does not apply with mechanism.omega_rad_s = 0 (statics); remove it")
+                   Text("errors.linkage.spec.does_not_apply"))
         needs = []
     if needs and working is None and "working_stroke" not in a:
         ck.add("analysis.working_stroke",
-               f"missing; required with {' and '.join(needs)}: one of "
-               f"{', '.join(map(repr, strokes))}")
+               Text("errors.linkage.spec.missing_required_with",
+                    {"items": ' and '.join(needs), "items2": ', '.join(map(repr, strokes))}))
     ck.raise_if_any()
     return MechanismSpec(
         kind=kind, name=name, crank=crank, coupler=coupler, rocker=rocker, ground=ground,

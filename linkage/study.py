@@ -27,7 +27,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from crankbase.errors import Problem, SpecError
+from crankbase.errors import Problem, SpecError, Text
 
 __all__ = ["LinkageReport", "WrittenReport", "run_study", "write_report", "summary_lines",
            "notice_lines", "written_line", "check_step", "PLOTS"]
@@ -119,9 +119,10 @@ def check_step(step) -> float:
 
     if isinstance(step, bool) or not isinstance(step, (int, float)) \
             or not (0 < step <= 30):
-        raise SpecError(Problem("step", f"got {step:g}; must be > 0 and <= 30 degrees"
+        raise SpecError(Problem("step", Text("errors.linkage.study.step", {"value": step})
                                 if isinstance(step, (int, float)) else
-                                f"got {step!r}; must be > 0 and <= 30 degrees"))
+                                Text("errors.linkage.study.step_other",
+                                     {"value": repr(step)})))
     too_many = rows_problem(360.0 / step + 1, "step")
     if too_many:
         raise SpecError([too_many])

@@ -48,7 +48,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from crankbase.errors import Problem
+from crankbase.errors import Problem, Text
 from crankbase.tolerances import DEGENERATE_QUADRATIC_ATOL, ROTATABILITY_RTOL, ROUNDOFF_RTOL
 
 from .fourbar import (GeometryError, GrashofType, as_float, fmt_value, grashof,
@@ -85,8 +85,8 @@ def _phi0(problems, phi0_deg, name="phi0_deg"):
     if a is None:
         return None
     if a.ndim != 0 or not math.isfinite(float(a)) or not 0.0 < float(a) < 180.0:
-        problems.append(Problem(name, f"must be a crank angle strictly between 0° and 180°, "
-                                      f"got {fmt_value(phi0_deg)}"))
+        problems.append(Problem(name, Text("errors.linkage.synthesis.crank_angle_strictly",
+                                           {"value": fmt_value(phi0_deg)})))
         return None
     return float(a)
 
@@ -101,7 +101,8 @@ def _scalar(name, value, problems):
     if a is None:
         return None
     if a.ndim != 0:
-        problems.append(Problem(name, f"must be a single number, got {fmt_value(value)}"))
+        problems.append(Problem(name, Text("errors.linkage.synthesis.single_number",
+                                           {"value": fmt_value(value)})))
         return None
     return float(a)
 
@@ -302,8 +303,9 @@ def kolchin_line_points(l1, phi0_deg=30.0):
     bad = ~np.isfinite(l1a) | (l1a < 0.0) | (l1a > top + TOL)
     if np.any(bad):
         raise SynthesisError(Problem(
-            "l1", f"must lie in 0 … λ1max = {top:.6g} for φ0 = {phi0:g}°, "
-                  f"got {fmt_value(l1a[bad] if l1a.ndim else l1a)}"))
+            "l1", Text("errors.linkage.synthesis.lie_max_for",
+                       {"top": top, "phi0": phi0,
+                        "value": fmt_value(l1a[bad] if l1a.ndim else l1a)})))
     l1a = np.minimum(l1a, top)
     S, D = _boundary_sd(l1a, _c(phi0))
     big, small = (S + D) / 2.0, (S - D) / 2.0
@@ -367,9 +369,10 @@ def right_angle_family(l1, phi0_deg=30.0, n=181) -> FamilyArc:
     phi0 = _phi0(problems, phi0_deg)
     l1f = _scalar("l1", l1, problems)
     if l1f is not None and not (math.isfinite(l1f) and l1f > 0):
-        problems.append(Problem("l1", f"must be a positive finite length, got {l1!r}"))
+        problems.append(Problem("l1", Text("errors.linkage.synthesis.positive_finite_length",
+                                           {"l1": l1})))
     if not isinstance(n, (int, np.integer)) or n < 2:
-        problems.append(Problem("n", f"must be an integer ≥ 2, got {n!r}"))
+        problems.append(Problem("n", Text("errors.linkage.synthesis.integer", {"n": n})))
     _raise(problems)
     pts = kolchin_line_points(l1f, phi0)
     R = float(family_radius(l1f, phi0))
@@ -495,7 +498,7 @@ def existence_region(phi0_deg=30.0, n=400) -> ExistenceRegion:
     problems = []
     phi0 = _phi0(problems, phi0_deg)
     if not isinstance(n, (int, np.integer)) or n < 3:
-        problems.append(Problem("n", f"must be an integer ≥ 3, got {n!r}"))
+        problems.append(Problem("n", Text("errors.linkage.synthesis.integer_2", {"n": n})))
     _raise(problems)
     c, s = _c(phi0), math.sin(math.radians(phi0))
     top = l1_max(phi0)
@@ -700,15 +703,15 @@ def design(l1, l2, l3, phi0_deg=30.0, method="given") -> Design:
     resid = l2 * l2 + l3 * l3 - (l1 * (l1 - 2.0 * c) + 1.0)
     if abs(resid) > TOL:
         raise SynthesisError(Problem(
-            "l1, l2, l3", f"({l1:.6g}, {l2:.6g}, {l3:.6g}) is not a member of the ККМ-{phi0:g}° "
-                          f"family: λ2² + λ3² − (λ1² + 1 − 2 λ1 cos φ0) = {resid:.3g}, must be 0"))
+            "l1, l2, l3", Text("errors.linkage.synthesis.not_member_family",
+                               {"l1": l1, "l2": l2, "l3": l3, "phi0": phi0, "resid": resid})))
     if not _kolchin_margin(l1, l2, l3) >= -TOL:
         t = grashof(l1, l2, l3)
         raise SynthesisError(Problem(
-            "l1, l2, l3", f"({l1:.6g}, {l2:.6g}, {l3:.6g}) is outside the region of existence "
-                          f"of the ККМ-{phi0:g}° family (a {t} four-bar, not a crank-rocker); "
-                          f"valid: 0 < λ1 ≤ λ1max = {l1_max(phi0):.6g} with "
-                          f"λ2 λ3 ≥ λ1 (1 + |cos φ0|)"))
+            "l1, l2, l3", Text("errors.linkage.synthesis.outside_region_existence_2",
+                               {"l1": l1, "l2": l2, "l3": l3, "phi0": phi0,
+                                "t": Text("linkage.grashof." + str(t).lower().replace("-", "_")),
+                                "value": l1_max(phi0)})))
     mu, at = min_transmission_angle_deg(l1, l2, l3)
     return Design(phi0, l1, l2, l3, mu, at, _type_with_tol(l1, l2, l3), method)
 
@@ -753,18 +756,23 @@ def crank_length_for_right_angle(l2, l3, phi0_deg=30.0) -> float:
     where = f"(λ2, λ3) = ({l2f:.6g}, {l3f:.6g})"
     rho2 = l2f * l2f + l3f * l3f
     if not math.isfinite(r_plus):
-        why = (f"λ2² + λ3² = {rho2:.6g} < sin² φ0 = {1 - c * c:.6g}: no crank length puts "
-               f"μ = 90° at φ0 = {phi0:g}°")
+        why = Text("errors.linkage.synthesis.no_crank_length",
+                   {"rho2": rho2, "sin2": 1 - c * c, "phi0": phi0})
     elif r_plus <= 0:
-        why = f"eq. (6) has no positive root (roots {r_minus:.6g}, {r_plus:.6g})"
+        why = Text("errors.linkage.synthesis.no_positive_root", {"a": r_minus, "b": r_plus})
     else:
-        roots = ", ".join(f"λ1 = {r:.6g} gives a {grashof(r, l2f, l3f)} four-bar"
-                          for r in sorted({r_minus, r_plus}) if r > 0)
-        why = f"no root of eq. (6) gives a crank-rocker ({roots})"
+        roots = [Text("errors.linkage.synthesis.root_gives",
+                      {"r": r, "t": Text("linkage.grashof." + str(grashof(r, l2f, l3f))
+                                         .lower().replace("-", "_"))})
+                 for r in sorted({r_minus, r_plus}) if r > 0]
+        roots = roots[0] if len(roots) == 1 else Text("errors.list2",
+                                                       {"a": roots[0], "b": roots[1]})
+        why = Text("errors.linkage.synthesis.no_root_crank_rocker", {"roots": roots})
     raise SynthesisError(Problem(
-        "l2, l3", f"{where} is outside the region of existence of the ККМ-{phi0:g}° family: "
-                  f"{why}; valid points lie between the unit arc and Kolchin's "
-                  f"{'line 1 + λ1 = λ2 + λ3' if c >= 0 else 'lines 1 − λ1 = ±(λ2 − λ3)'}"))
+        "l2, l3", Text("errors.linkage.synthesis.outside_region_existence",
+                       {"where": where, "phi0": phi0, "why": why,
+                        "value": Text("errors.linkage.synthesis.line_sum" if c >= 0
+                                      else "errors.linkage.synthesis.lines_diff")})))
 
 
 def design_from_l2_l3(l2, l3, phi0_deg=30.0) -> Design:
@@ -817,8 +825,8 @@ def design_equal_l2_l3(l1, phi0_deg=30.0) -> Design:
     top = l1_max(phi0)
     if l1f > top + TOL:
         raise SynthesisError(Problem(
-            "l1", f"must not exceed λ1max = {top:.6g} for φ0 = {phi0:g}° (the region of "
-                  f"existence, eq. (11)), got {l1f!r}"))
+            "l1", Text("errors.linkage.synthesis.not_exceed_max",
+                       {"top": top, "phi0": phi0, "l1f": l1f})))
     l2 = float(family_radius(l1f, phi0)) / math.sqrt(2.0)
     return design(l1f, l2, l2, phi0, method="given l1, l2 = l3")
 
@@ -865,12 +873,14 @@ def design_for_mu_min(l2, mu_min_deg, phi0_deg=30.0, l1_step=None) -> Design:
         positive_lengths(problems, l2=l2f)
     mu = _scalar("mu_min_deg", mu_min_deg, problems)
     if mu is not None and not (math.isfinite(mu) and 0.0 <= mu < 90.0):
-        problems.append(Problem("mu_min_deg", f"must be an angle in 0 ≤ μmin < 90°, got {mu_min_deg!r}"))
+        problems.append(Problem("mu_min_deg", Text("errors.linkage.synthesis.angle_min",
+                                                   {"mu_min_deg": mu_min_deg})))
     step = None
     if l1_step is not None:
         step = _scalar("l1_step", l1_step, problems)
         if step is not None and not (math.isfinite(step) and step > 0):
-            problems.append(Problem("l1_step", f"must be a positive step, got {l1_step!r}"))
+            problems.append(Problem("l1_step", Text("errors.linkage.synthesis.positive_step",
+                                                    {"l1_step": l1_step})))
     _raise(problems)
     c = _c(phi0)
     top = l1_max(phi0)
@@ -887,21 +897,21 @@ def design_for_mu_min(l2, mu_min_deg, phi0_deg=30.0, l1_step=None) -> Design:
         grid = np.linspace(0.0, top, 4001)[1:]
         best = family_mu_min_deg(grid, l2f, phi0)
         if np.all(np.isnan(best)):
-            hint = (f"no member of the family has λ2 = {l2f:g} (valid λ2 for φ0 = {phi0:g}°: "
-                    f"inside the region of existence)")
+            hint = Text("errors.linkage.synthesis.no_member", {"l2": l2f, "phi0": phi0})
         else:
             i = int(np.nanargmax(best))
-            hint = f"the best with λ2 = {l2f:g} is μmin = {best[i]:.4g}° at λ1 = {grid[i]:.4g}"
+            hint = Text("errors.linkage.synthesis.best", {"l2": l2f, "mu": best[i],
+                                                          "l1": grid[i]})
         raise SynthesisError(Problem(
-            "mu_min_deg", f"μmin ≥ {mu:g}° is not reachable in the ККМ-{phi0:g}° family "
-                          f"with λ2 = {l2f:g}: {hint}"))
+            "mu_min_deg", Text("errors.linkage.synthesis.min_not_reachable",
+                               {"mu": mu, "phi0": phi0, "l2f": l2f, "hint": hint})))
     method = f"given l2 and mu_min >= {mu:g} deg"
     if step is not None:
         n = math.floor(l1 / step * (1 + ROUNDOFF_RTOL))
         if n < 1:
             raise SynthesisError(Problem(
-                "l1_step", f"rounding λ1 = {l1:.6g} down to a multiple of {step:g} gives 0; "
-                           f"use a step ≤ {l1:.4g}"))
+                "l1_step", Text("errors.linkage.synthesis.rounding_down_multiple",
+                                {"l1": l1, "step": step})))
         l1 = n * step
         l3 = float(family_l3(l1, l2f, phi0))
         method += f", l1 rounded down to a multiple of {step:g}"

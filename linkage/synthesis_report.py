@@ -12,6 +12,7 @@ import re
 
 import numpy as np
 
+from crankbase.errors import Text
 from crankbase.tolerances import ROUNDOFF_RTOL
 
 from . import synthesis as syn
@@ -66,8 +67,9 @@ def table1(phi0_deg=30.0, l1=None, step=0.05):
     top = syn.l1_max(phi0_deg)
     if l1 is None:
         if not (isinstance(step, (int, float)) and math.isfinite(step) and step > 0):
-            raise syn.SynthesisError([syn.Problem("step", f"must be a positive number, "
-                                                          f"got {step!r}")])
+            raise syn.SynthesisError([syn.Problem(
+                "step", Text("errors.linkage.synthesis_report.positive_number",
+                             {"step": step}))])
         k = np.arange(1, int(math.floor(top / step * (1 - ROUNDOFF_RTOL))) + 1)
         l1 = np.append(np.round(k * step, 12), top)
     l1 = np.atleast_1d(np.asarray(l1, dtype=float))

@@ -25,7 +25,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from crankbase.errors import Problem, SpecError
+from crankbase.errors import Problem, SpecError, Text
 
 __all__ = ["SynthesisReport", "WrittenReport", "run_study", "write_report", "summary_lines",
            "MODES"]
@@ -147,15 +147,15 @@ def run_study(phi0=30.0, *, l1=None, l2=None, l3=None, mu_min=None, l1_step=None
     mode = MODES.get(given)
     problems = []
     if mode is None:
-        problems.append(Problem(", ".join(sorted(given)), "choose one of: l2 and l3, l1 "
-                                "alone, l2 and mu_min (or none, for the region and tables "
-                                "only)"))
+        problems.append(Problem(", ".join(sorted(given)),
+                                Text("errors.linkage.synthesis_study.choose_one_l")))
     if l1_step is not None and mode != "mu_min":
-        problems.append(Problem("l1_step", "only with l2 and mu_min"))
+        problems.append(Problem("l1_step", Text("errors.linkage.synthesis_study.only_with_l")))
     if ground is not None and mode == "region":
-        problems.append(Problem("ground_m", "needs a chosen mechanism"))
+        problems.append(Problem("ground_m",
+                                Text("errors.linkage.synthesis_study.needs_chosen_mechanism")))
     if omega is not None and ground is None:
-        problems.append(Problem("omega", "only with ground (it goes into the spec)"))
+        problems.append(Problem("omega", Text("errors.linkage.synthesis_study.only_with_ground")))
     if problems:
         raise SpecError(problems)
     try:

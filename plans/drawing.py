@@ -10,6 +10,7 @@ is printed at 100 %.
 from __future__ import annotations
 
 from .errors import PlanError, Problem
+from .errors import Text as Words
 from .layout import (CAP_EM, FONT, H_LABEL, H_POINT, S_MAIN, S_THIN, Arrow, Block, Circle,
                      Line, Sheet, Text, arrow_parts, diagram_block, lever_block,
                      positions_block, text_width)
@@ -279,7 +280,8 @@ def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
         A diagram larger than the sheet's working field (choose a larger scale or A1).
     """
     if size not in SHEETS:
-        raise PlanError(Problem("size", f"got {size!r}; valid: {', '.join(SHEETS)}"))
+        raise PlanError(Problem("size", Words("errors.plans.drawing.valid",
+                                              {"size": size, "items": ', '.join(SHEETS)})))
     W, H = SHEETS[size]
     fields = fields or title_fields(result.spec)
     chosen = []
@@ -301,9 +303,9 @@ def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
 
     too_big = [b.title for b in blocks if not fits(b)]
     if too_big:
-        raise PlanError([Problem("size", f"{size}: '{t}' does not fit the sheet's field "
-                                 f"({x1 - x0:.0f} × {y1 - y0:.0f} mm); use A1 or a coarser "
-                                 "scale") for t in too_big])
+        raise PlanError([Problem("size", Words("errors.plans.drawing.does_not_fit",
+                                               {"size": size, "t": t, "x1": x1 - x0,
+                                                "y1": y1 - y0})) for t in too_big])
     # a teacher grades one position at a time: a sheet holds one position's diagrams, or
     # two positions side by side, each in its half (the plan of positions joins the
     # first); a position too large for one sheet goes on as many of its own as it needs
@@ -324,7 +326,9 @@ def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
         for group, xa, xb in parts:
             placed, rest = pack(group, xa, xb)
             if not placed:   # pragma: no cover - guarded by too_big
-                raise PlanError(Problem("size", f"{size}: cannot place '{rest[0].title}'"))
+                raise PlanError(Problem("size", Words("errors.plans.drawing.cannot_place",
+                                                      {"size": size,
+                                                       "title": rest[0].title})))
             for b, dz in placed:
                 sh.items += b.moved(dz)
                 sh.blocks.append(b.key)
@@ -390,8 +394,8 @@ def fit_format(width, height, gap=GAP):
             if (width <= W - FRAME_LEFT - FRAME_OTHER - 2 * gap
                     and height <= H - 2 * FRAME_OTHER - TITLE_BLOCK[1] - 2 * gap):
                 return name, W, H
-    raise PlanError(Problem("size", f"a drawing of {width:.0f} × {height:.0f} mm does not "
-                            "fit an A1 sheet; choose a coarser scale"))
+    raise PlanError(Problem("size", Words("errors.plans.drawing.too_large",
+                                          {"width": width, "height": height})))
 
 
 def sheet_figure(sheet):

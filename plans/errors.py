@@ -1,9 +1,9 @@
 """The errors of :mod:`plans`: part of the one hierarchy of :mod:`crankbase.errors`."""
 from __future__ import annotations
 
-from crankbase.errors import CrankdynError, Problem, SpecError  # noqa: F401
+from crankbase.errors import CrankdynError, Problem, SpecError, Text  # noqa: F401
 
-__all__ = ["PlanError", "SpecError", "Problem", "CrankdynError"]
+__all__ = ["PlanError", "SpecError", "Problem", "Text", "CrankdynError"]
 
 
 class PlanError(SpecError):

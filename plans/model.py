@@ -43,7 +43,7 @@ from linkage import groups as g
 from linkage.columns import point_names
 from linkage.spec import LINK_NUMBER
 
-from .errors import PlanError, Problem
+from .errors import PlanError, Problem, Text
 
 __all__ = ["Vector", "Plan", "LeverForce", "Lever", "PositionPlans", "round_scale",
            "build_plans", "balancing_force", "ROUND_MANTISSAS", "PLAN_KINDS", "SCALE_KINDS",
@@ -90,8 +90,8 @@ def round_scale(value, longest_mm=150.0):
     """
     value = float(value)
     if not (math.isfinite(value) and value > 0):
-        raise PlanError([f"scale: the reference magnitude is {value!r}; a plan needs a "
-                         "positive, finite reference vector (is the crank turning?)"])
+        raise PlanError([Problem("scale", Text("errors.plans.model.reference",
+                                               {"value": value}))])
     target = value / longest_mm
     k = math.floor(math.log10(target))
     for kk in (k - 1, k, k + 1):
@@ -796,8 +796,9 @@ def build_plans(result, positions=None, *, scales=None, crank_angles_deg=None):
                 hit = [int(p) - 1] if 1 <= int(p) <= len(K) else []
             if len(hit) == 0:
                 valid = (f"1…{int(pos_col.max())}" if numbered and len(K) else f"1…{len(K)}")
-                problems.append(Problem("positions", f"position {p} is not in the analysis; "
-                                                     f"valid: {valid}"))
+                problems.append(Problem("positions",
+                                        Text("errors.plans.model.position_not_analysis",
+                                             {"p": p, "valid": valid})))
             else:
                 rows.append(int(hit[0]))
         if problems:

@@ -23,7 +23,7 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
-from crankbase.errors import Problem, SpecError
+from crankbase.errors import Problem, SpecError, Text
 from linkage.study import LinkageReport, check_step
 from linkage.study import run_study as run_linkage
 
@@ -130,8 +130,8 @@ def _positions(plans, problems):
         ok = (part.isdigit() and int(part) >= 1) if isinstance(part, str) else (
             isinstance(part, int) and not isinstance(part, bool) and part >= 1)
         if not ok:
-            problems.append(Problem("plans", f"got {part!r}; give position numbers >= 1 "
-                                             "separated by commas (e.g. 5,11) or 'all'"))
+            problems.append(Problem("plans", Text("errors.plans.study.give_position_numbers",
+                                                  {"part": part})))
         elif int(part) not in out:
             out.append(int(part))
     return out
@@ -180,22 +180,24 @@ def run_study(spec, *, step=1.0, plots=True, plans=None, sheet="A1", measured=No
     if plans is not None:
         positions = _positions(plans, problems)
         if sheet not in SHEETS:
-            problems.append(Problem("sheet", f"got {sheet!r}; valid: {', '.join(SHEETS)}"))
+            problems.append(Problem("sheet", Text("errors.plans.study.valid",
+                                                  {"sheet": sheet, "items": ', '.join(SHEETS)})))
         scales = {}
         for arg, kinds in _SCALES:
             value = scale_args[arg]
             if value is None:
                 continue
             if not (isinstance(value, (int, float)) and 0 < value < math.inf):
-                problems.append(Problem(arg, f"got {value:g}; must be a positive number"
+                problems.append(Problem(arg, Text("errors.plans.study.scale", {"value": value})
                                         if isinstance(value, (int, float)) else
-                                        f"got {value!r}; must be a positive number"))
+                                        Text("errors.plans.study.scale_other",
+                                             {"value": repr(value)})))
             for k in kinds:
                 scales[k] = value
     else:
         given = ["measured"] * (measured is not None) + [
             a for a, v in scale_args.items() if v is not None]
-        problems += [Problem(a, "only with plans (the graphical method)") for a in given]
+        problems += [Problem(a, Text("errors.plans.study.only_with_plans")) for a in given]
     if problems:
         raise SpecError(problems)
 

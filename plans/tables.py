@@ -5,7 +5,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .errors import PlanError
+from .errors import PlanError, Problem, Text
+from crankbase.errors import os_reason
 
 __all__ = ["plans_table", "lever_table", "lever_forces_table", "student_table",
            "read_measurements", "error_table"]
@@ -117,7 +118,9 @@ def read_measurements(path):
     try:
         df = pd.read_csv(path, comment="#", skipinitialspace=True)
     except (OSError, ValueError) as exc:
-        raise PlanError([f"{path}: cannot read the measurements ({exc})"]) from None
+        raise PlanError([Problem(str(path), Text(
+            "errors.plans.tables.unreadable",
+            {"why": os_reason(exc) if isinstance(exc, OSError) else exc}))]) from None
     problems = []
     cols = set(df.columns)
     for c in ("position", "segment"):

@@ -382,7 +382,8 @@ def test_issue_reproductions_through_the_cli(case, tmp_path, capsys):
 
 
 def test_synth_options_bounded_like_spec_numbers(tmp_path, capsys):
-    assert main(["synth", "--l2", "1e308", "--l3", "1e308", "-o", str(tmp_path / "o")]) == 2
+    assert main(["synth", "--lang", "en",
+                 "--l2", "1e308", "--l3", "1e308", "-o", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert err == [f"crankdyn synth: error: --{k}: got 1e+308; every number must be at most "
                    "1e+12 in magnitude" for k in ("l2", "l3")]

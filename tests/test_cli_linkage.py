@@ -180,13 +180,14 @@ def test_workbook_inputs_and_extremes(lang_runs, lang):
 def test_example_names_are_the_commands_own(tmp_path, capsys):
     """--example lists and accepts only linkage examples, by name: an engine example is
     refused naming the linkage ones, and nothing is written."""
-    assert main(["linkage", "--example", "petrol_vaz2106", "-o", str(tmp_path / "o")]) == 2
+    assert main(["linkage", "--lang", "en",
+                 "--example", "petrol_vaz2106", "-o", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert err == ["crankdyn linkage: error: --example: no linkage example "
                    "'petrol_vaz2106'; available: ratchet, press"]
     assert not (tmp_path / "o").exists()
     with pytest.raises(SystemExit):
-        main(["linkage", "--help"])
+        main(["linkage", "--lang", "en", "--help"])
     assert "ratchet, press" in " ".join(capsys.readouterr().out.split())
 
 
@@ -285,7 +286,7 @@ def test_bad_input_exit_2_one_line_per_problem_nothing_written(case, tmp_path, c
     spec = tmp_path / "bad.toml"
     spec.write_text(text)
     out = tmp_path / "out"
-    assert main(["linkage", str(spec), "-o", str(out)]) == 2
+    assert main(["linkage", "--lang", "en", str(spec), "-o", str(out)]) == 2
     err = capsys.readouterr().err
     lines = [l for l in err.splitlines() if l.strip()]
     assert all(l.startswith("crankdyn linkage: error: ") for l in lines)

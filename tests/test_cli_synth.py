@@ -174,7 +174,7 @@ def test_bad_input_exit_2_one_line_per_problem_nothing_written(tmp_path, capsys,
                                                                expected):
     out = tmp_path / "out"
     out.mkdir()
-    rc = run(args, out)
+    rc = run([*args, "--lang", "en"], out)
     assert rc == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == len(expected), err

@@ -87,12 +87,13 @@ def test_engine_example(cli_report):
 
 
 def test_examples_flag(tmp_path, capsys):
-    assert main(["balance", "--example", "-o", str(tmp_path / "r")]) == 0
+    assert main(["balance", "--lang", "en", "--example", "-o", str(tmp_path / "r")]) == 0
     assert (tmp_path / "r" / "two-plane-example_rotor_balance.csv").exists()
-    assert main(["dynamics", "--example", "flywheel", "-o", str(tmp_path / "f")]) == 0
+    assert main(["dynamics", "--lang", "en",
+                 "--example", "flywheel", "-o", str(tmp_path / "f")]) == 0
     assert (tmp_path / "f" / "flywheel-example-11-3_motion.csv").exists()
-    assert main(["dynamics", "--example", "nope", "-o", str(tmp_path / "n")]) == 2
-    assert main(["dynamics", str(example_path("flywheel_seed.toml")), "--example",
+    assert main(["dynamics", "--lang", "en", "--example", "nope", "-o", str(tmp_path / "n")]) == 2
+    assert main(["dynamics", "--lang", "en", str(example_path("flywheel_seed.toml")), "--example",
                  "-o", str(tmp_path / "n")]) == 2
     err = capsys.readouterr().err
     assert "no dynamics example 'nope'" in err and "not both" in err

@@ -476,7 +476,7 @@ def test_output_may_not_overwrite_an_input(tmp_path, capsys):
     spec.write_text(GOOD.replace("angle_deg = [0, 360, 370]\np_MPa = [0.1, 6, 7]\n",
                                  "file = 't_forces.csv'\n"))
     before = (tmp_path / "t_forces.csv").read_text()
-    assert run_cli(spec, "-o", tmp_path) == 2
+    assert run_cli(spec, "--lang", "en", "-o", tmp_path) == 2
     assert "input" in capsys.readouterr().err
     assert (tmp_path / "t_forces.csv").read_text() == before
 

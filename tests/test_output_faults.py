@@ -225,7 +225,7 @@ def test_enospc_while_writing_a_plot_cli(tmp_path, capsys, monkeypatch):
     import matplotlib.figure
 
     out = tmp_path / "out"
-    assert main(["synth", "--l2", "0.7", "--l3", "0.6", "-o", str(out)]) == 0
+    assert main(["synth", "--lang", "en", "--l2", "0.7", "--l3", "0.6", "-o", str(out)]) == 0
     before = {p.name: p.stat().st_mtime_ns for p in out.iterdir()}
 
     def full(self, fname, *a, **k):
@@ -233,7 +233,7 @@ def test_enospc_while_writing_a_plot_cli(tmp_path, capsys, monkeypatch):
         raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(fname))
     monkeypatch.setattr(matplotlib.figure.Figure, "savefig", full)
     capsys.readouterr()
-    assert main(["synth", "--l2", "0.6", "--l3", "0.7", "-o", str(out)]) == 2
+    assert main(["synth", "--lang", "en", "--l2", "0.6", "--l3", "0.7", "-o", str(out)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert err == [f"crankdyn synth: error: cannot write the report into {out}: "
                    "No space left on device"]
@@ -243,17 +243,18 @@ def test_enospc_while_writing_a_plot_cli(tmp_path, capsys, monkeypatch):
 def test_output_through_a_file_and_empty_output(tmp_path, capsys):
     afile = tmp_path / "afile"
     afile.write_text("x")
-    assert main(["synth", "--l1", "0.1", "--no-plots", "-o", str(afile / "sub")]) == 2
+    assert main(["synth", "--lang", "en",
+                 "--l1", "0.1", "--no-plots", "-o", str(afile / "sub")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and str(afile) in err[0] and "not a folder" in err[0], err
-    assert main(["synth", "--l1", "0.1", "--no-plots", "-o", str(afile)]) == 2
+    assert main(["synth", "--lang", "en", "--l1", "0.1", "--no-plots", "-o", str(afile)]) == 2
     assert "not a folder" in capsys.readouterr().err
     cwd = os.getcwd()
     os.chdir(tmp_path)
     try:
         for cmd in (["synth", "--l1", "0.1"], ["engine", "--example"],
                     ["linkage", "--example"]):
-            assert main([*cmd, "-o", ""]) == 2
+            assert main([*cmd, "--lang", "en", "-o", ""]) == 2
             err = capsys.readouterr().err.strip().splitlines()
             assert len(err) == 1 and "-o: empty output folder" in err[0], err
     finally:
@@ -303,7 +304,7 @@ def test_mount_point_as_output_folder(tmp_path):
 @needs_ns
 def test_full_disk(tmp_path):
     rc, err, files = _in_namespace("mount -t tmpfs -o size=12k none $M",
-                                   [*RUN_B, "-o", "$M/out"], tmp_path)
+                                   [*RUN_B, "--lang", "en", "-o", "$M/out"], tmp_path)
     assert rc == 2
     assert err == ["crankdyn synth: error: cannot write the report into $M/out: No space "
                    "left on device".replace("$M", str(tmp_path / "m"))]
@@ -314,7 +315,7 @@ def test_full_disk(tmp_path):
 def test_read_only_file_system(tmp_path):
     rc, err, files = _in_namespace(
         "mount -t tmpfs none $M; mkdir $M/out; echo keep > $M/out/forces.csv; "
-        "mount -o remount,ro,bind $M", [*RUN_B, "-o", "$M/out/sub"], tmp_path)
+        "mount -o remount,ro,bind $M", [*RUN_B, "--lang", "en", "-o", "$M/out/sub"], tmp_path)
     assert rc == 2
     assert len(err) == 1 and err[0].startswith("crankdyn synth: error: ") \
         and "Read-only file system" in err[0] and str(tmp_path / "m" / "out" / "sub") in err[0]

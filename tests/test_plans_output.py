@@ -309,34 +309,37 @@ def test_nothing_overlaps_and_every_vector_is_labelled(which, chosen, lang):
 def test_bad_input_exits_2_and_writes_nothing(tmp_path, capsys):
     out = tmp_path / "out"
     spec = str(example_path("ratchet.toml"))
-    assert main(["linkage", spec, "-o", str(out), "--plans", "0,x", "--sheet", "A4",
+    assert main(["linkage", "--lang", "en",
+                 spec, "-o", str(out), "--plans", "0,x", "--sheet", "A4",
                  "--mu-a", "-2"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 4 and all(line.startswith("crankdyn linkage: error: ") for line in err)
     assert not out.exists()
-    assert main(["linkage", spec, "-o", str(out), "--plans", "5,13"]) == 2
+    assert main(["linkage", "--lang", "en", spec, "-o", str(out), "--plans", "5,13"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert err == ["crankdyn linkage: error: --plans: position 13 is not in the analysis; "
                    "valid: 1…12"]
     assert not out.exists()
     # position 11's acceleration plan (≈ 250 mm) does not fit an A3 sheet beside the
     # title block: refused before anything is written
-    assert main(["linkage", spec, "-o", str(out), "--plans", "11", "--sheet", "A3"]) == 2
+    assert main(["linkage", "--lang", "en",
+                 spec, "-o", str(out), "--plans", "11", "--sheet", "A3"]) == 2
     err = capsys.readouterr().err
     assert "does not fit" in err and "Traceback" not in err
     assert not out.exists()
-    assert main(["linkage", spec, "-o", str(out), "--measured", "x.csv"]) == 2
+    assert main(["linkage", "--lang", "en", spec, "-o", str(out), "--measured", "x.csv"]) == 2
     assert "only with --plans" in capsys.readouterr().err
-    assert main(["linkage", spec, "-o", str(out), "--mu-lever", "50"]) == 2
+    assert main(["linkage", "--lang", "en", spec, "-o", str(out), "--mu-lever", "50"]) == 2
     assert "only with --plans" in capsys.readouterr().err
-    assert main(["linkage", spec, "-o", str(out), "--plans", "5", "--mu-lever", "0"]) == 2
+    assert main(["linkage", "--lang", "en",
+                 spec, "-o", str(out), "--plans", "5", "--mu-lever", "0"]) == 2
     assert capsys.readouterr().err.strip() == ("crankdyn linkage: error: --mu-lever: got 0; "
                                                "must be a positive number")
     assert not out.exists()
     bad = tmp_path / "bad.toml"
     bad.write_text(example_path("ratchet.toml").read_text() + '\n[drawing]\nauthor = "X"\n',
                    encoding="utf-8")
-    assert main(["linkage", str(bad), "-o", str(out), "--plans", "5"]) == 2
+    assert main(["linkage", "--lang", "en", str(bad), "-o", str(out), "--plans", "5"]) == 2
     assert "drawing.author: unknown key" in capsys.readouterr().err
     assert not out.exists()
 

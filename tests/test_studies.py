@@ -173,7 +173,8 @@ def test_linkage_study_arguments_are_named_and_renamed_by_the_cli(tmp_path, caps
         run_study(example_path("ratchet.toml"), step=45)
     with pytest.raises(SpecError, match="measured: only with plans"):
         run_study(example_path("ratchet.toml"), measured="x.csv")
-    assert main(["linkage", "--example", "-o", str(tmp_path / "o"), "--step", "45"]) == 2
+    assert main(["linkage", "--lang", "en",
+                 "--example", "-o", str(tmp_path / "o"), "--step", "45"]) == 2
     assert capsys.readouterr().err.strip() == (
         "crankdyn linkage: error: --step: got 45; must be > 0 and <= 30 degrees")
 

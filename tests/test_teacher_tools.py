@@ -154,7 +154,7 @@ def test_variants_from_xlsx_rerun_and_all_good(tmp_path, capsys):
 def test_variants_table_problems_at_once(tmp_path, capsys):
     path = tmp_path / "v.csv"
     path.write_text("engine.bore_mm,engine.stroke_mm\n80,80\n")
-    assert main(["engine", "--example", "--variants", str(path), "-o",
+    assert main(["engine", "--lang", "en", "--example", "--variants", str(path), "-o",
                  str(tmp_path / "o")]) == 2
     assert "no 'variant' (or 'name') column" in capsys.readouterr().err
     path.write_text("variant;engine.bore_mm\nA;80\nA;81\n;82\n")     # ';' separated
@@ -349,10 +349,10 @@ def test_check_linkage_tables(tmp_path, lang):
 
 def test_check_bad_input_exits_2(tmp_path, capsys):
     (tmp_path / "s.csv").write_text("a,b\n1,2\n")
-    assert main(["check", str(PETROL), str(tmp_path / "s.csv"), "-o",
+    assert main(["check", "--lang", "en", str(PETROL), str(tmp_path / "s.csv"), "-o",
                  str(tmp_path / "o"), "--rtol", "-1"]) == 2
     assert "--rtol" in capsys.readouterr().err
-    assert main(["check", str(PETROL), str(tmp_path / "s.csv"), "-o",
+    assert main(["check", "--lang", "en", str(PETROL), str(tmp_path / "s.csv"), "-o",
                  str(tmp_path / "o")]) == 2
     assert "no column 'alpha_deg'" in capsys.readouterr().err
     assert not (tmp_path / "o").exists()

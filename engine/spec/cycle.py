@@ -7,6 +7,7 @@ rod ratio is known.
 """
 from __future__ import annotations
 
+from crankbase.errors import Text
 from ..indicator import JOIN_AFTER_PEAK_DEG, CycleSpec, sharp_cycle_pressure
 from ..schema import CYCLE, ROUNDING_DEFAULTS
 
@@ -22,18 +23,15 @@ def check_rounded_peak(c, cyc, lam, k):
     peak = cyc.peak_factor * cyc.pz
     if peak > line:
         c.add("pressure.cycle.peak_factor",
-              f"the rounded peak peak_factor·pz = {peak / 1e6:.4g} MPa at {a:g}° lies above "
-              f"the expansion line there ({line / 1e6:.4g} MPa); lower peak_factor or "
-              f"peak_after_tdc_deg")
+              Text("errors.engine.cycle.rounded_peak_peak",
+                   {"peak": peak / 1e6, "a": a, "line": line / 1e6}))
         return
     join = a + JOIN_AFTER_PEAK_DEG
     after = float(sharp_cycle_pressure([join], cyc, lam, k=k)[0])
     if after >= peak:
         c.add("pressure.cycle.peak_factor",
-              f"the expansion line at {join:g}° ({after / 1e6:.4g} MPa), where the rounded "
-              f"curve rejoins it, is not below the rounded peak ({peak / 1e6:.4g} MPa): the "
-              f"isobaric part (ρ) is too long for the rounding; raise peak_factor or "
-              f"peak_after_tdc_deg")
+              Text("errors.engine.cycle.expansion_line_at",
+                   {"join": join, "after": after / 1e6, "peak": peak / 1e6}))
 
 
 def read_cycle(c, cy, strokes):
@@ -46,15 +44,14 @@ def read_cycle(c, cy, strokes):
 
     kind = get("kind")
     if strokes != 4:
-        c.add(path, "a computed diagram is available for four-stroke engines only; "
-                    "give a pressure table for a two-stroke engine")
+        c.add(path, Text("errors.engine.cycle.computed_diagram_available"))
     eps = get("compression_ratio")
     pa = get("pa_MPa")
     pr = get("pr_MPa")
     n1 = get("n1")
     n2 = get("n2")
     if "pz_MPa" in cy and "lambda_z" in cy:
-        c.add(f"{path}.pz_MPa", "give either pz_MPa or lambda_z, not both")
+        c.add(f"{path}.pz_MPa", Text("errors.engine.cycle.give_either_pz"))
         pz = lz = None
     elif "lambda_z" in cy:
         lz = get("lambda_z", required=True)
@@ -66,7 +63,7 @@ def read_cycle(c, cy, strokes):
         rho = get("rho", required=True)
     else:
         if "rho" in cy:
-            c.add(f"{path}.rho", "only used with kind = \"diesel\"")
+            c.add(f"{path}.rho", Text("errors.engine.cycle.only_used_with"))
         rho = 1.0
     rounding = get("rounding")
     opts = {k: get(k) for k in ROUNDING_DEFAULTS}
@@ -78,19 +75,19 @@ def read_cycle(c, cy, strokes):
                     n2=n2, pz_input=None if pz is None else pz * 1e6, lambda_z_input=lz,
                     rho=rho, rounding=rounding, **opts)
     if pz is not None and cyc.pz < cyc.pc:
-        c.add(f"{path}.pz_MPa", f"got {pz:g}; must be >= the compression pressure "
-                                f"pc = pa·ε^n1 = {cyc.pc / 1e6:.4g} MPa")
+        c.add(f"{path}.pz_MPa", Text("errors.engine.cycle.compression_pressure_pc",
+                                     {"pz": pz, "value": cyc.pc / 1e6}))
         return None
     if kind == "diesel" and rho >= eps:
-        c.add(f"{path}.rho", f"got {rho:g}; must be < compression_ratio {eps:g}")
+        c.add(f"{path}.rho", Text("errors.engine.cycle.compression_ratio",
+                                  {"rho": rho, "eps": eps}))
         return None
     if rounding and (360 + opts["peak_after_tdc_deg"] + JOIN_AFTER_PEAK_DEG
                      > 540 - opts["exhaust_opening_deg"]):
-        c.add(f"{path}.exhaust_opening_deg", "the combustion rounding (peak_after_tdc_deg "
-              f"+ {JOIN_AFTER_PEAK_DEG:g}°) and the exhaust rounding overlap; reduce them")
+        c.add(f"{path}.exhaust_opening_deg", Text("errors.engine.cycle.combustion_rounding_peak",
+                                                  {"JOIN_AFTER_PEAK_DEG": JOIN_AFTER_PEAK_DEG}))
         return None
     if rounding and opts["peak_factor"] * cyc.pz < opts["pc_factor"] * cyc.pc:
-        c.add(f"{path}.peak_factor", "the rounded peak peak_factor·pz must not be below "
-                                     "pc_factor·pc")
+        c.add(f"{path}.peak_factor", Text("errors.engine.cycle.rounded_peak_peak_2"))
         return None
     return cyc

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from crankbase.errors import Text
 from crankbase.schema import SpecReader
 
 from ..schema import BEARINGS, ROD, ROD_MODELS
@@ -71,11 +72,11 @@ def bearing_options(table, checker=None):
     zj = c.get(t, BEARINGS, "journal_positions_mm")
     if zj is not None and not zj[0] <= 0 <= zj[1]:
         c.add("bearings.journal_positions_mm",
-              f"got {zj}; the two journals must lie on either side of the crank pin "
-              "(first <= 0 <= second, relative to the crank-pin centre)")
+              Text("errors.engine.inputs.two_journals_lie", {"zj": zj}))
         zj = None
     if zj is not None and zj[0] == zj[1]:
-        c.add("bearings.journal_positions_mm", f"got {zj}; the journals must differ")
+        c.add("bearings.journal_positions_mm", Text("errors.engine.inputs.journals_differ",
+                                                    {"zj": zj}))
         zj = None
     mr = c.get(t, BEARINGS, "counterweight_kg_mm", si=True)
     ang = c.get(t, BEARINGS, "counterweight_angle_deg")
@@ -149,7 +150,7 @@ def rod_options(table, spec=None, checker=None):
     if model != "rigid":
         for k in t:
             if k != "model" and k in ROD.names:
-                c.add(f"rod.{k}", 'only used with model = "rigid"')
+                c.add(f"rod.{k}", Text("errors.engine.inputs.only_used_with"))
     else:
         out = ("rigid", _rigid(c, t, spec))
     if checker is None:
@@ -167,30 +168,28 @@ def _rigid(c, t, spec):
     L = spec.L
     if m is None and "mass_kg" not in t:
         if parts is None:
-            c.add("rod.mass_kg", "missing; needed for the rigid rod when [masses] gives "
-                                 "reciprocating_kg and rod_rotating_kg")
+            c.add("rod.mass_kg", Text("errors.engine.inputs.missing_needed_for"))
         else:
             m = parts[1]
     b = None
     if b_mm is not None:
         if not b_mm < L * 1e3:
-            c.add("rod.cg_from_big_end_mm", f"got {b_mm:g}; the centre of mass must lie "
-                                            f"on the rod, 0 < b < Lш = {L * 1e3:g} mm")
+            c.add("rod.cg_from_big_end_mm", Text("errors.engine.inputs.centre_mass_lie",
+                                                 {"b_mm": b_mm, "L": L * 1e3}))
         else:
             b = b_mm / 1e3
     elif m is not None:
         small = m - spec.m_rod_rot
         if not 0 < small < m:
-            c.add("rod.mass_kg", f"got {m:g} kg; must exceed the rotating part mш.к = "
-                                 f"{spec.m_rod_rot:g} kg (or give cg_from_big_end_mm)")
+            c.add("rod.mass_kg", Text("errors.engine.inputs.kg_exceed_rotating",
+                                      {"m": m, "m_rod_rot": spec.m_rod_rot}))
         else:
             b = L * small / m
     if m is None or b is None or J is None:
         return None
     mp = parts[0] if parts is not None else spec.mj - (m - spec.m_rod_rot)
     if mp < 0:
-        c.add("rod.mass_kg", f"got {m:g} kg: the piston mass mj − (m − mш.к) = "
-                             f"{mp:g} kg would be negative")
+        c.add("rod.mass_kg", Text("errors.engine.inputs.kg_piston_mass", {"m": m, "mp": mp}))
         return None
     return RigidRod(float(m), float(b), float(J), float(mp))
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from crankbase.errors import Text
 from crankbase.schema import SpecReader
 from crankbase.validation import read_toml, rows_problem
 
@@ -93,23 +94,23 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
     has_ratio, has_len = "rod_ratio" in e, "rod_length_mm" in e
     lam = L_mm = None
     if has_ratio and has_len:
-        c.add("engine.rod_ratio", "give either rod_ratio or rod_length_mm, not both")
+        c.add("engine.rod_ratio", Text("errors.engine.loading.give_either_rod"))
     elif not has_ratio and not has_len:
-        c.add("engine.rod_ratio", "missing; give rod_ratio (λ = R/Lш, 0 < λ < 1) "
-                                  "or rod_length_mm")
+        c.add("engine.rod_ratio", Text("errors.engine.loading.missing_give_rod"))
     elif has_ratio:
         lam = eng("rod_ratio", required=True)
     else:
         L_mm = eng("rod_length_mm", required=True)
         if L_mm is not None and stroke is not None and not L_mm > stroke / 2:
             c.add("engine.rod_length_mm",
-                  f"got {L_mm:g}; must be > the crank radius stroke_mm/2 = {stroke / 2:g}")
+                  Text("errors.engine.loading.crank_radius_stroke",
+                       {"L_mm": L_mm, "stroke": stroke / 2}))
             L_mm = None
     if offset and stroke is not None and (lam is not None or L_mm is not None):
         span = (L_mm if L_mm is not None else stroke / 2 / lam) - stroke / 2
         if not abs(offset) < span:
-            c.add("engine.pin_offset_mm", f"got {offset:g}; |e| must be < Lш − R = "
-                                          f"{span:.6g} mm for the crank to turn fully")
+            c.add("engine.pin_offset_mm", Text("errors.engine.loading.e_l_r",
+                                               {"offset": offset, "span": span}))
 
     # ---- [masses]
     m = c.sub(data, MASSES)
@@ -117,12 +118,10 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
     groups = [g for g in MASS_WAYS.values() if any(k in m for k in g)]
     if "masses" in data and isinstance(m, dict):
         if not groups:
-            c.add("masses", "no masses given; give reciprocating_kg and rod_rotating_kg, "
-                            "or piston_group_kg and rod_kg, or piston_group_kg_m2 and "
-                            "rod_kg_m2")
+            c.add("masses", Text("errors.engine.loading.no_masses_given"))
         elif len(groups) > 1:
-            c.add("masses", "give the masses one way only: "
-                  + " / ".join(" + ".join(g) for g in groups) + " were all given")
+            c.add("masses", Text("errors.engine.loading.give_masses_one",
+                                 {"items": " / ".join(" + ".join(g) for g in groups)}))
     frac = c.get(m, MASSES, "rod_small_end_fraction")
     masses["crank_rotating_kg"] = c.get(m, MASSES, "crank_rotating_kg")
     if len(groups) == 1:
@@ -131,7 +130,7 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
             masses[k] = c.get(m, MASSES, k, required=True)
         if g is MASS_WAYS["direct"] and "rod_small_end_fraction" in m:
             c.add("masses.rod_small_end_fraction",
-                  "only used with piston_group_kg/rod_kg or the per-area masses")
+                  Text("errors.engine.loading.only_used_with_3"))
 
     # ---- [pressure]
     pr = c.sub(data, PRESSURE)
@@ -146,15 +145,14 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
     pressure = None
     if "pressure" in data and isinstance(pr, dict):
         if not sources:
-            c.add("pressure", "no pressure source; give angle_deg with p_MPa (inline), "
-                              "file = \"...csv\", or a [pressure.cycle] table")
+            c.add("pressure", Text("errors.engine.loading.no_pressure_source"))
         elif len(sources) > 1:
-            c.add("pressure", "give exactly one pressure source; got "
-                  + " and ".join(sources))
+            c.add("pressure", Text("errors.engine.loading.give_exactly_one",
+                                   {"items": " and ".join(sources)}))
     fname = pr.get("file") if isinstance(pr, dict) else None
     if "firing_tdc_deg" in pr and not (isinstance(fname, str)
                                        and fname.lower().endswith(".ind")):
-        c.add("pressure.firing_tdc_deg", "only used with a Diesel-RK file = \"....ind\"")
+        c.add("pressure.firing_tdc_deg", Text("errors.engine.loading.only_used_with"))
     if sources == ["inline"]:
         angle, p = inline_pressure(c, pr, cycle_deg)
         if angle is not None:
@@ -164,7 +162,8 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
         if fname is not None:
             pfile = (base / fname) if not Path(fname).is_absolute() else Path(fname)
             if not pfile.is_file():
-                c.add("pressure.file", f"file {str(pfile)!r} does not exist")
+                c.add("pressure.file", Text("errors.engine.loading.file_does_not",
+                                            {"value": str(pfile)}))
             elif pfile.suffix.lower() == ".ind":          # Diesel-RK export
                 from ..dieselrk import read_ind
                 angle, p = read_ind(pfile, cycle_deg, c.get(pr, PRESSURE, "firing_tdc_deg"),
@@ -180,8 +179,8 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
     if isinstance(pressure, CycleSpec) and eps_engine is not None \
             and eps_engine != pressure.compression_ratio:
         c.add("engine.compression_ratio",
-              f"got {eps_engine:g} but pressure.cycle.compression_ratio is "
-              f"{pressure.compression_ratio:g}; give it once")
+              Text("errors.engine.loading.but_pressure_cycle",
+                   {"eps_engine": eps_engine, "compression_ratio": pressure.compression_ratio}))
 
     # ---- [table]
     t = c.sub(data, TABLE)
@@ -193,7 +192,8 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
             c.problems.append(too_many)
     for i, x in enumerate(extra or []):
         if x > cycle_deg:
-            c.add(f"table.extra_angles_deg[{i}]", f"got {x:g}; must be <= {cycle_deg:g}")
+            c.add(f"table.extra_angles_deg[{i}]", Text("errors.engine.loading.message",
+                                                       {"x": x, "cycle_deg": cycle_deg}))
     mu = c.get(t, TABLE, "force_scale_N_per_mm")
     form = c.get(t, TABLE, "form")
 
@@ -234,29 +234,29 @@ def _crank_train(c, data, e, cylinders):
     arr = eng("arrangement")
     vee = eng("vee_angle_deg")
     if arr == "vee" and "vee_angle_deg" not in e:
-        c.add("engine.vee_angle_deg", "missing; a vee needs the angle between its banks, "
-                                      "in (0°, 180°)")
+        c.add("engine.vee_angle_deg", Text("errors.engine.loading.missing_vee_needs"))
     elif arr != "vee" and "vee_angle_deg" in e:
-        c.add("engine.vee_angle_deg", "only used with arrangement = \"vee\"")
+        c.add("engine.vee_angle_deg", Text("errors.engine.loading.only_used_with_4"))
     order = eng("firing_order")
     if order is not None:
         if any(x != int(x) for x in order):
-            c.add("engine.firing_order", f"got {order}; cylinder numbers are whole numbers")
+            c.add("engine.firing_order", Text("errors.engine.loading.cylinder_numbers_whole",
+                                              {"order": order}))
             order = None
         else:
             order = tuple(int(x) for x in order)
             n = cylinders or 0               # at most MAX_CYLINDERS (the schema's bound)
             if sorted(order) != list(range(1, n + 1)):
-                c.add("engine.firing_order", f"got {list(order)}; must be a permutation of "
-                                             f"the cylinders 1…{n}, each once")
+                c.add("engine.firing_order",
+                      Text("errors.engine.loading.permutation_cylinders_each",
+                           {"value": list(order), "n": n}))
     spacing = eng("cylinder_spacing_mm")
     boff = eng("bank_offset_mm")
     if "bank_offset_mm" in e and arr == "inline":
-        c.add("engine.bank_offset_mm", "only used with a vee or boxer (two banks)")
+        c.add("engine.bank_offset_mm", Text("errors.engine.loading.only_used_with_2"))
     positions = eng("cylinder_positions_mm")
     if positions is not None and spacing is not None:
-        c.add("engine.cylinder_positions_mm", "give cylinder_spacing_mm or "
-                                              "cylinder_positions_mm, not both")
+        c.add("engine.cylinder_positions_mm", Text("errors.engine.loading.give_cylinder_spacing"))
     throws = eng("throw_angles_deg")
     eta = eng("mechanical_efficiency")
     fw = c.sub(data, FLYWHEEL)
@@ -272,8 +272,7 @@ def _crank_train(c, data, e, cylinders):
         if None not in (z, mr, ang):
             cws.append(Counterweight(z, mr, ang))
     if cws and "counterweights" in bal and design != "none":
-        c.add("balance.counterweights", "give a design or [[balance.counterweight]] "
-                                        "tables, not both")
+        c.add("balance.counterweights", Text("errors.engine.loading.give_design_or"))
     if len(c.problems) > n0:
         return None
     with loaded():

@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 from numbers import Integral
 from pathlib import Path
 
-from crankbase.errors import Problem, SpecError
+from crankbase.errors import Problem, SpecError, Text
 from crankbase.schema import MAX_CYLINDERS
 
 from ..indicator import CycleSpec, PressureTable
@@ -350,19 +350,20 @@ class TableSettings:
             return
         problems = []
         if self.form not in TABLE_FORMS:
-            problems.append(Problem("form", f"got {self.form!r}; valid: "
-                                            + ", ".join(repr(f) for f in TABLE_FORMS)))
+            problems.append(Problem("form", Text(
+                "errors.engine.model.valid",
+                {"form": self.form, "items": ", ".join(repr(f) for f in TABLE_FORMS)})))
         if not (_finite(self.step_deg) and self.step_deg > 0):
-            problems.append(Problem("step_deg", f"got {self.step_deg!r}; must be a finite "
-                                                "number > 0"))
+            problems.append(Problem("step_deg", Text("errors.engine.model.finite_number",
+                                                     {"step_deg": self.step_deg})))
         for i, a in enumerate(self.extra_angles_deg):
             if not (_finite(a) and a >= 0):
                 problems.append(Problem(f"extra_angles_deg[{i}]",
-                                        f"got {a!r}; must be a finite number >= 0"))
+                                        Text("errors.engine.model.finite_number_3", {"a": a})))
         if self.force_scale is not None and not (_finite(self.force_scale)
                                                  and self.force_scale > 0):
-            problems.append(Problem("force_scale", f"got {self.force_scale!r}; must be a "
-                                                   "finite number > 0"))
+            problems.append(Problem("force_scale", Text("errors.engine.model.finite_number_2",
+                                                        {"force_scale": self.force_scale})))
         if problems:
             raise EngineSpecError(problems)
 
@@ -443,28 +444,30 @@ class CrankTrain:
             return
         problems = []
         if self.arrangement not in ARRANGEMENTS:
-            problems.append(Problem("arrangement", f"got {self.arrangement!r}; valid: "
-                                    + ", ".join(ARRANGEMENTS)))
+            problems.append(Problem("arrangement", Text("errors.engine.model.valid_2",
+                                                        {"arrangement": self.arrangement,
+                                                         "items": ", ".join(ARRANGEMENTS)})))
         if self.arrangement == "vee":
             v = self.vee_angle_deg
             if not (isinstance(v, (int, float)) and math.isfinite(v) and 0 < v < 180):
-                problems.append(Problem("vee_angle_deg", f"got {v!r}; a vee needs an angle "
-                                                         "between the banks in (0°, 180°)"))
+                problems.append(Problem("vee_angle_deg",
+                                        Text("errors.engine.model.vee_needs_angle", {"v": v})))
         elif self.vee_angle_deg is not None:
-            problems.append(Problem("vee_angle_deg", "only used with arrangement = 'vee'"))
+            problems.append(Problem("vee_angle_deg", Text("errors.engine.model.only_used_with")))
         if self.counterweights not in COUNTERWEIGHT_DESIGNS:
-            problems.append(Problem("counterweights", f"got {self.counterweights!r}; valid: "
-                                    + ", ".join(COUNTERWEIGHT_DESIGNS)))
+            problems.append(Problem("counterweights", Text(
+                "errors.engine.model.valid_3",
+                {"counterweights": self.counterweights,
+                 "items": ", ".join(COUNTERWEIGHT_DESIGNS)})))
         if self.counterweight_list and self.counterweights != "none":
-            problems.append(Problem("counterweights", "give a design or a list of "
-                                                      "counterweights, not both"))
+            problems.append(Problem("counterweights", Text("errors.engine.model.give_design_or")))
         for key in ("mechanical_efficiency", "delta"):
             v = getattr(self, key)
             if v is not None and not (math.isfinite(v) and 0 < v <= 1):
-                problems.append(Problem(key, f"got {v!r}; must be > 0 and <= 1"))
+                problems.append(Problem(key, Text("errors.engine.model.and_2", {"v": v})))
         if not (math.isfinite(self.flywheel_share) and 0 < self.flywheel_share <= 1):
-            problems.append(Problem("flywheel_share", f"got {self.flywheel_share!r}; must be "
-                                                      "> 0 and <= 1"))
+            problems.append(Problem("flywheel_share", Text(
+                "errors.engine.model.and", {"flywheel_share": self.flywheel_share})))
         if problems:
             raise EngineSpecError(problems)
 

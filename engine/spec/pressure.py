@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
+from crankbase.errors import Text, os_reason
 from crankbase.schema import SpecReader
 
 from ..indicator import PressureTable
@@ -32,32 +33,37 @@ def check_pressure_points(c, angle, p, cycle_deg, where, unit="p_Pa"):
     f = PRESSURE_UNITS[unit]
     n0 = len(c.problems)
     if len(angle) != len(p):
-        c.add(where(None), f"angle and pressure lists differ in length "
-                           f"({len(angle)} and {len(p)})")
+        c.add(where(None), Text("errors.engine.pressure.angle_and_pressure",
+                                {"n": len(angle), "n2": len(p)}))
         return None, None
     for i, (a, q) in enumerate(zip(angle, p)):
         if not (math.isfinite(a) and math.isfinite(q)):
-            c.add(where(i), f"angle {a!r} and pressure {q / f!r} must be finite numbers")
+            c.add(where(i), Text("errors.engine.pressure.angle_and_pressure_2",
+                                 {"a": a, "q": q / f}))
         elif q < 0:
-            c.add(where(i), f"{unit} {q / f:g} is negative (pressures are absolute)")
+            c.add(where(i), Text("errors.engine.pressure.negative_pressures_absolute",
+                                 {"unit": unit, "q": q / f}))
     if len(c.problems) > n0:
         return None, None
     if len(angle) >= 2 and angle[-1] == cycle_deg and angle[0] == 0.0:
         if p[-1] != p[0]:
-            c.add(where(len(angle) - 1), f"the end row at {cycle_deg:g}° must repeat the "
-                                         f"row at 0° (got {unit} {p[-1] / f:g} and "
-                                         f"{p[0] / f:g})")
+            c.add(where(len(angle) - 1), Text("errors.engine.pressure.end_row_at",
+                                              {"cycle_deg": cycle_deg, "unit": unit,
+                                               "value": p[-1] / f, "value2": p[0] / f}))
             return None, None
         angle, p = angle[:-1], p[:-1]
     if len(angle) < 2:
-        c.add(where(None), f"needs at least two distinct points, got {len(angle)}")
+        c.add(where(None), Text("errors.engine.pressure.needs_at_least", {"n": len(angle)}))
         return None, None
     for i, a in enumerate(angle):
         if not 0 <= a < cycle_deg:
-            c.add(where(i), f"angle {a:g}° is outside the cycle [0, {cycle_deg:g})")
+            c.add(where(i), Text("errors.engine.pressure.angle_outside_cycle",
+                                 {"a": a, "cycle_deg": cycle_deg}))
         elif i and a <= angle[i - 1]:
-            word = "repeated" if a == angle[i - 1] else "not sorted"
-            c.add(where(i), f"angle {a:g}° is {word} (angles must increase)")
+            word = Text("errors.engine.pressure.repeated" if a == angle[i - 1]
+                        else "errors.engine.pressure.not_sorted")
+            c.add(where(i), Text("errors.engine.pressure.angle_angles_increase",
+                                 {"a": a, "word": word}))
     if len(c.problems) > n0:
         return None, None
     return np.asarray(angle, float), np.asarray(p, float)
@@ -70,11 +76,12 @@ def inline_pressure(c, pr, cycle_deg):
     units = [k for k in PRESSURE_UNITS if k in pr]
     angle = c.get(pr, PRESSURE, "angle_deg")
     if not units:
-        c.add("pressure", "inline data need one of " + ", ".join(PRESSURE_UNITS)
-              + " beside angle_deg")
+        c.add("pressure", Text("errors.engine.pressure.inline_data_need",
+                               {"items": ", ".join(PRESSURE_UNITS)}))
         return None, None
     if len(units) > 1:
-        c.add("pressure", "give one pressure list, got " + ", ".join(units))
+        c.add("pressure", Text("errors.engine.pressure.give_one_pressure",
+                               {"items": ", ".join(units)}))
         return None, None
     key = units[0]
     vals = c.get(pr, PRESSURE, key)
@@ -115,7 +122,7 @@ def read_pressure_csv(path, cycle_deg, checker=None):
     PressureTable or None
         Crank angle [deg] and absolute pressure [Pa], with the file (None on a problem).
     """
-    from crankbase.validation import MAX_ITEM_PROBLEMS, MAX_SPEC_BYTES, magnitude_problem
+    from crankbase.validation import MAX_ITEM_PROBLEMS, MAX_SPEC_BYTES, magnitude_text
 
     c = checker if checker is not None else SpecReader()
     path = Path(path)
@@ -129,43 +136,46 @@ def read_pressure_csv(path, cycle_deg, checker=None):
         with open(path, encoding="utf-8-sig", newline="") as f:
             text = f.read()
     except (OSError, UnicodeDecodeError, ValueError) as exc:
-        c.add(key, f"cannot read {name}: {getattr(exc, 'strerror', None) or exc}")
+        c.add(key, Text("errors.engine.pressure.cannot_read",
+                        {"name": name, "value": os_reason(exc)}))
         text = None
     lines = []
     if text is not None:
         lines = [(n, ln) for n, ln in enumerate(text.splitlines(), start=1)
                  if ln.strip() and not ln.lstrip().startswith("#")]
         if not lines:
-            c.add(key, f"{name} is empty")
+            c.add(key, Text("errors.engine.pressure.empty", {"name": name}))
     if lines:
         hline, htext = lines[0]
         seps = [s for s in (",", ";", "\t") if s in htext]
         shown = {",": "','", ";": "';'", "\t": "tab"}
         if len(seps) > 1:
-            c.add(key, f"{name} line {hline}: the header uses more than one separator "
-                       f"({', '.join(shown[s] for s in seps)}); use one of them")
+            c.add(key, Text("errors.engine.pressure.line_header_uses",
+                            {"name": name, "hline": hline,
+                             "items": ', '.join(shown[s] for s in seps)}))
         elif not seps:
-            c.add(key, f"{name} line {hline}: the header {htext.strip()!r} has one column; "
-                       f"it needs angle_deg and one of {', '.join(PRESSURE_UNITS)}, "
-                       f"separated by ',' or ';' or a tab")
+            c.add(key, Text("errors.engine.pressure.line_header_has",
+                            {"name": name, "hline": hline, "value": htext.strip(),
+                             "items": ', '.join(PRESSURE_UNITS)}))
         else:
             sep = seps[0]
             rows = list(csv.reader([ln for _, ln in lines], delimiter=sep))
             header = [h.strip() for h in rows[0]]
             units = [k for k in PRESSURE_UNITS if k in header]
             if "angle_deg" not in header or len(units) != 1:
-                what = ("no pressure column" if not units else
-                        "more than one pressure column (" + ", ".join(units) + ")")
+                what = (Text("errors.engine.pressure.no_column") if not units else
+                        Text("errors.engine.pressure.columns", {"items": ", ".join(units)}))
                 if "angle_deg" not in header:
-                    what = "no angle_deg column" + ("" if units else " and " + what)
-                c.add(key, f"{name} line {hline}: {what}; the header needs angle_deg and "
-                           f"exactly one of {', '.join(PRESSURE_UNITS)}; got "
-                           f"{', '.join(header)}")
+                    what = (Text("errors.engine.pressure.no_angle") if units else
+                            Text("errors.engine.pressure.no_angle_and", {"what": what}))
+                c.add(key, Text("errors.engine.pressure.line_header_needs",
+                                {"name": name, "hline": hline, "what": what,
+                                 "items": ', '.join(PRESSURE_UNITS), "items2": ', '.join(header)}))
             else:
                 angle, p = _read_pressure_rows(c, key, name, sep, header, units[0],
                                                rows[1:], [n for n, _ in lines[1:]],
                                                cycle_deg, MAX_ITEM_PROBLEMS,
-                                               magnitude_problem)
+                                               magnitude_text)
     if checker is None:
         from .model import EngineSpecError
 
@@ -181,7 +191,8 @@ def _read_pressure_rows(c, key, name, sep, header, unit, rows, numbers, cycle_de
     from crankbase.validation import MAX_ROWS
 
     if len(rows) > MAX_ROWS:
-        c.add(key, f"{name} has {len(rows):,} data rows; at most {MAX_ROWS:,} are read")
+        c.add(key, Text("errors.engine.pressure.has_data_rows",
+                        {"name": name, "n": len(rows), "MAX_ROWS": MAX_ROWS}))
         return None, None
     ia, ip = header.index("angle_deg"), header.index(unit)
     comma_sep = sep == ","
@@ -192,21 +203,23 @@ def _read_pressure_rows(c, key, name, sep, header, unit, rows, numbers, cycle_de
             for i in (ia, ip):
                 v = r[i].strip() if i < len(r) else ""
                 if "." in v and "," in v:
-                    problems.append(f"{name} line {line}: {header[i]} {v!r} has both '.' and "
-                                    f"','; write numbers without thousands separators")
+                    problems.append(Text("errors.engine.pressure.both_marks",
+                                         {"name": name, "line": line, "col": header[i],
+                                          "value": v}))
                     continue
                 for m in (".", ","):
                     if m in v:
                         marks.setdefault(m, (line, v))
     if len(marks) == 2:
         (l1, v1), (l2, v2) = marks["."], marks[","]
-        problems.append(f"{name}: decimal marks are mixed ({v1!r} on line {l1}, {v2!r} on "
-                        f"line {l2}); use '.' or ',' throughout")
+        problems.append(Text("errors.engine.pressure.mixed_marks",
+                             {"name": name, "v1": v1, "l1": l1, "v2": v2, "l2": l2}))
     if problems:
         for msg in problems[:max_shown]:
             c.add(key, msg)
         if len(problems) > max_shown:
-            c.add(key, f"{name}: ... and {len(problems) - max_shown:,} more problems")
+            c.add(key, Text("errors.engine.pressure.and_more_problems",
+                            {"name": name, "value": len(problems) - max_shown}))
         return None, None
     decimal_comma = not comma_sep and "," in marks
     a_list, p_list, where = [], [], []
@@ -216,14 +229,15 @@ def _read_pressure_rows(c, key, name, sep, header, unit, rows, numbers, cycle_de
         if len(fields) != nfields:
             text = sep.join(r)
             if len(fields) > nfields and comma_sep:
-                why = (f"{len(fields)} fields but the header has {nfields}: decimal commas "
-                       f"in a comma-separated file? {text!r} cannot be split into "
-                       f"{', '.join(header)} without guessing; use '.' as the decimal mark "
-                       f"or ';' as the separator")
+                why = Text("errors.engine.pressure.fields_commas",
+                           {"n": len(fields), "nh": nfields, "text": text,
+                            "header": ", ".join(header)})
             else:
-                why = (f"{len(fields)} fields but the header has {nfields} "
-                       f"({', '.join(header)}): {text!r}")
-            problems.append(f"{name} line {line}: {why}")
+                why = Text("errors.engine.pressure.fields",
+                           {"n": len(fields), "nh": nfields, "text": text,
+                            "header": ", ".join(header)})
+            problems.append(Text("errors.engine.pressure.line",
+                                 {"name": name, "line": line, "why": why}))
             continue
         vals = []
         for i, col in ((ia, "angle_deg"), (ip, unit)):
@@ -234,17 +248,20 @@ def _read_pressure_rows(c, key, name, sep, header, unit, rows, numbers, cycle_de
                 x = float(v)
                 why = magnitude_problem(x)
             except ValueError:
-                why = "is not a number"
+                why = Text("errors.engine.pressure.not_number")
             if why:
-                problems.append(f"{name} line {line}: {col} {fields[i]!r} {why}")
+                problems.append(Text("errors.engine.pressure.line_value",
+                                     {"name": name, "line": line, "col": col,
+                                      "value": fields[i], "why": why}))
                 vals = None
                 break
             vals.append(x)
         if vals is None:
             continue
         if vals[1] < 0:
-            problems.append(f"{name} line {line}: {unit} {fields[ip]} is negative "
-                            f"(pressures are absolute)")
+            problems.append(Text("errors.engine.pressure.line_negative",
+                                 {"name": name, "line": line, "unit": unit,
+                                  "value": fields[ip]}))
             continue
         a_list.append(vals[0])
         p_list.append(vals[1] * PRESSURE_UNITS[unit])
@@ -252,10 +269,13 @@ def _read_pressure_rows(c, key, name, sep, header, unit, rows, numbers, cycle_de
     for msg in problems[:max_shown]:
         c.add(key, msg)
     if len(problems) > max_shown:
-        c.add(key, f"{name}: ... and {len(problems) - max_shown:,} more lines with problems")
+        c.add(key, Text("errors.engine.pressure.and_more_lines",
+                        {"name": name, "value": len(problems) - max_shown}))
     if problems:
         return None, None
 
     def at(i):
-        return f"{key} {name}" if i is None else f"{key} {name} line {where[i]}"
+        return Text("errors.engine.pressure.at", {"key": key, "name": name}) if i is None \
+            else Text("errors.engine.pressure.at_line",
+                      {"key": key, "name": name, "line": where[i]})
     return check_pressure_points(c, a_list, p_list, cycle_deg, at, unit=unit)
