@@ -16,7 +16,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["Obstacles", "renderer_of", "text_size", "place_label", "label_points"]
+__all__ = ["Obstacles", "renderer_of", "text_size", "place_label", "label_points",
+           "frozen_frame"]
 
 
 def renderer_of(fig):
@@ -217,3 +218,18 @@ def label_points(ax, obstacles, xy_px, texts, normals, order, merge_px=3.0, **kw
         t = place_label(ax, obstacles, xy_px[i], text, normals[i], far=n == 0, **kw)
         (placed.append(t) if t is not None else thinned.append(text))
     return placed, thinned
+
+
+def frozen_frame(ax):
+    """Fix the axes' limits where they are now (autoscaled, aspect applied) so that the
+    labels placed next keep their place, and return ``(to_px, obstacles)``: the data →
+    display transform and an :class:`Obstacles` whose frame is the axes' box.  The one
+    preamble of every label placement."""
+    renderer_of(ax.figure)
+    ax.autoscale_view()
+    ax.apply_aspect()
+    ax.set_xlim(ax.get_xlim())
+    ax.set_ylim(ax.get_ylim())
+    ax.set_autoscale_on(False)
+    bb = ax.get_window_extent()
+    return ax.transData.transform, Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))

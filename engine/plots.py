@@ -320,19 +320,11 @@ def label_alpha_points(ax, x, y, a, angles, lx, ly, ms=3.0):
     ``a``) drawn on ``ax`` with its axes lines x = 0 and y = 0: the limits are frozen and
     every label is placed clear of the curve, the axes lines, the markers and the other
     labels (:func:`_alpha_labels`)."""
-    from .plot_labels import Obstacles, renderer_of
+    from crankbase.plot_labels import frozen_frame
 
     fig = ax.figure
-    renderer_of(fig)
     ax.margins(0.07)
-    ax.autoscale_view()
-    ax.apply_aspect()
-    ax.set_xlim(ax.get_xlim())
-    ax.set_ylim(ax.get_ylim())
-    ax.set_autoscale_on(False)
-    tr = ax.transData.transform
-    bb = ax.get_window_extent()
-    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+    tr, obs = frozen_frame(ax)
     curve = tr(np.column_stack([x, y]))
     obs.set_curve(curve)
     pts = tr(np.column_stack([lx, ly]))
@@ -341,8 +333,9 @@ def label_alpha_points(ax, x, y, a, angles, lx, ly, ms=3.0):
         obs.add_marker(p, ms * px + 1)
     o = tr([(0.0, 0.0)])[0]
     obs.add_marker(o, 5 * px + 1)
-    obs.add_line([(bb.x0, o[1]), (bb.x1, o[1])])
-    obs.add_line([(o[0], bb.y0), (o[0], bb.y1)])
+    x0, y0, x1, y1 = obs.frame
+    obs.add_line([(x0, o[1]), (x1, o[1])])            # the axes lines T = 0 and K = 0
+    obs.add_line([(o[0], y0), (o[0], y1)])
     _alpha_labels(ax, obs, curve, pts, np.asarray(a, float), np.asarray(angles, float))
 
 
@@ -506,17 +499,10 @@ def _free_label(ax, text, xy, normal=(1, 0), **kw):
     """Put ``text`` near the data point ``xy`` where no drawn line, arrow or text of
     ``ax`` crosses it (the limits are frozen first); when there is no such place, the text
     goes into the title."""
-    from .plot_labels import Obstacles, place_label, renderer_of
+    from crankbase.plot_labels import frozen_frame, place_label, renderer_of
 
     r = renderer_of(ax.figure)
-    ax.autoscale_view()
-    ax.apply_aspect()
-    ax.set_xlim(ax.get_xlim())
-    ax.set_ylim(ax.get_ylim())
-    ax.set_autoscale_on(False)
-    tr = ax.transData.transform
-    bb = ax.get_window_extent()
-    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+    tr, obs = frozen_frame(ax)
     for line in ax.lines:
         obs.add_line(line.get_transform().transform(line.get_xydata()))
     for txt in ax.texts:

@@ -529,37 +529,14 @@ _TR_SHAPE = {'alpha': 'str',
  'yes': 'str'}
 
 
-class _Words(dict):
-    """The words of :data:`_TR_SHAPE` in one language, from the catalogue."""
-
-    def __init__(self, lang):
-        from crankbase.texts import texts
-
-        t = texts(lang)
-        for k, kind in _TR_SHAPE.items():
-            base = f"sheet.engine.{k}"
-            if kind == "str":
-                self[k] = t(base)
-            elif kind[0] == "tuple":
-                self[k] = tuple(t(f"{base}.{i}") for i in range(kind[1]))
-            elif kind[0] == "dict":
-                self[k] = {sk: t(f"{base}.{sk}") for sk in kind[1]}
-            else:
-                self[k] = [(key, t(f"{base}.{key}"), _unit(t, f"{base}.{key}.unit"))
-                           for key in kind[1]]
-
-
-def _unit(t, key):
-    """A unit from the catalogue; '' for a quantity without one (no entry)."""
-    try:
-        return t(key)
-    except KeyError:
-        return ""
-
-
 class _Lazy(dict):
+    """The words of :data:`_TR_SHAPE` by language, read from the catalogue when first
+    asked (:func:`crankbase.workbook.words`, ``sheet.engine.*``)."""
+
     def __missing__(self, lang):
-        self[lang] = _Words(lang)
+        from crankbase.workbook import words
+
+        self[lang] = words(lang, "sheet.engine", _TR_SHAPE)
         return self[lang]
 
 
