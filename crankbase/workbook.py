@@ -29,7 +29,7 @@ import copy
 import math
 import re
 
-__all__ = ["FONT", "HEAD_FILL", "MAX_ROWS", "MAX_WIDTH", "WIDTH_PER_PAGE", "LINE_PT",
+__all__ = ["A4_LANDSCAPE_PRINT_CM", "FONT", "HEAD_FILL", "MAX_ROWS", "MAX_WIDTH", "WIDTH_PER_PAGE", "LINE_PT",
            "text_width", "wrapped_lines", "columns_cm", "number_format", "shown", "font",
            "style_header",
            "table_blocks", "unify_fonts", "fit_numbers", "fit_columns", "fit_rows",
@@ -63,6 +63,10 @@ _W = {ch: w for chars, w in _W_CLASSES for ch in chars}
 _W_DEFAULT = 1.02
 _PAD = 1.8          # a column's margin around its widest text
 
+
+#: The printed width of an A4 landscape page between openpyxl's default margins
+#: (29.7 cm − 2 × 0.75 in) [cm]: a chart anchored at column A is no wider.
+A4_LANDSCAPE_PRINT_CM = 29.7 - 2 * 0.75 * 2.54 - 0.5
 
 def text_width(s, bold=False, size=11) -> float:
     """Printed width of a one-line text in Excel column-width units."""

@@ -25,7 +25,7 @@ import math
 import numpy as np
 
 from crankbase.errors import OutputError, Problem, Text
-from crankbase.workbook import sheet_rows, thinned_note
+from crankbase.workbook import A4_LANDSCAPE_PRINT_CM, sheet_rows, thinned_note
 
 from .forces import COLUMNS, SUMMARY_QUANTITIES
 from .spec import EngineSpecError
@@ -727,7 +727,9 @@ def add_engine_sheets(wb, tr, lang="ru"):
 
     fit_numbers(ws)
     fit_columns(ws)
-    ch.width, ch.height = max(16.0, columns_cm(ws, 1, c0 - 2)), 10
+    # no wider than an A4 landscape page prints (a wider chart was cut at the page's edge)
+    ch.width = min(A4_LANDSCAPE_PRINT_CM, max(16.0, columns_cm(ws, 1, c0 - 2)))
+    ch.height = 10
     at = end + len(rows) + 3
     ws.add_chart(ch, f"A{at}")
     from openpyxl.worksheet.pagebreak import Break

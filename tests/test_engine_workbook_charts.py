@@ -155,3 +155,19 @@ def test_polar_chart_renders_with_equal_scales(lang, tmp_path):
     assert len(xs) == len(ys) == n, (xs, ys)
     dx, dy = np.diff(xs).mean(), np.diff(ys).mean()
     assert dx == pytest.approx(dy, rel=0.03), (dx, dy)
+
+
+@pytest.mark.parametrize("example", ["diesel_kamaz740.toml", "petrol_bmw_m54.toml"])
+def test_every_chart_fits_the_printed_page_width(example):
+    """No native chart is wider than its sheet's printed A4 page (the V8's total-torque
+    chart, as wide as the columns beside it, ran past the page's edge and was cut)."""
+    from crankbase.resources import example_path
+    from engine.study import report_workbook
+
+    wb = report_workbook(engine.run_study(example_path(example)), "en")
+    for ws in wb.worksheets:
+        paper = 29.7 if ws.page_setup.orientation == "landscape" else 21.0
+        m = ws.page_margins
+        printable = paper - ((m.left or 0.7) + (m.right or 0.7)) * 2.54
+        for ch in ws._charts:
+            assert ch.width <= printable, (ws.title, ch.width, printable)
