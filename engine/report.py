@@ -427,8 +427,8 @@ def _polar_chart(ws_ch, cd, col, first, last, curves, spec, lang, row):
     xs_all, ys_all = np.r_[T, 0.0], np.r_[K, 0.0, -kr]
     span = 1.1 * max(np.ptp(xs_all), np.ptp(ys_all))
     step = 10 ** np.floor(np.log10(span / 4))
-    if span / step > 12:
-        step *= 2
+    while span / step > 7:          # at most nine labels an axis: six-digit
+        step *= 2                   # newtons side by side ran into each other
     n_steps = np.ceil(span / step) + 1
     for ax, vals in ((ch.x_axis, xs_all), (ch.y_axis, ys_all)):
         mid = 0.5 * (vals.min() + vals.max())

@@ -171,3 +171,23 @@ def test_every_chart_fits_the_printed_page_width(example):
         printable = paper - ((m.left or 0.7) + (m.right or 0.7)) * 2.54
         for ch in ws._charts:
             assert ch.width <= printable, (ws.title, ch.width, printable)
+
+
+@pytest.mark.parametrize("example", ["diesel_kamaz740.toml", "petrol_vaz2106.toml"])
+def test_polar_chart_axes_carry_few_enough_labels_to_read(example):
+    """At most nine tick labels an axis on the polar chart (the V8's eleven six-digit
+    labels, -50000 … 50000, ran into each other in LibreOffice's render), and the same
+    step on both axes (equal scales)."""
+    from crankbase.resources import example_path
+    from engine.study import report_workbook
+
+    wb = report_workbook(engine.run_study(example_path(example)), "en")
+    polar = [ch for ws in wb.worksheets for ch in ws._charts
+             if ch.y_axis.scaling.orientation == "maxMin"]
+    assert polar
+    for ch in polar:
+        steps = {ch.x_axis.majorUnit, ch.y_axis.majorUnit}
+        assert len(steps) == 1
+        for ax in (ch.x_axis, ch.y_axis):
+            n = round((ax.scaling.max - ax.scaling.min) / ax.majorUnit) + 1
+            assert n <= 9, (example, n)
