@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 __all__ = ["Obstacles", "renderer_of", "text_size", "place_label", "label_points",
-           "frozen_frame"]
+           "frozen_frame", "segment_hits_box"]
 
 
 def renderer_of(fig):
@@ -42,13 +42,15 @@ def _overlap(a, b):
     return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
 
-def _segment_hits_box(p, q, box):
-    """The segment p–q crosses or lies in the box (Liang–Barsky clipping)."""
+def segment_hits_box(p, q, box, parallel_tol=0.0):
+    """The segment p–q crosses or lies in the box (x0, y0, x1, y1) (Liang–Barsky
+    clipping); a direction component of at most ``parallel_tol`` counts as parallel to
+    that edge.  The one clipping test of the figure labels and the plans sheets."""
     x0, y0, x1, y1 = box
     dx, dy = q[0] - p[0], q[1] - p[1]
     t0, t1 = 0.0, 1.0
     for pk, qk in ((-dx, p[0] - x0), (dx, x1 - p[0]), (-dy, p[1] - y0), (dy, y1 - p[1])):
-        if pk == 0:
+        if abs(pk) <= parallel_tol:
             if qk < 0:
                 return False
             continue
@@ -91,7 +93,7 @@ class Obstacles:
             return False
         if any(_overlap(b, o) for o in self.boxes):
             return False
-        if any(_segment_hits_box(p, q, b) for p, q in self.segments):
+        if any(segment_hits_box(p, q, b) for p, q in self.segments):
             return False
         if len(self.lines) and _count_inside(self.lines, b):
             return False

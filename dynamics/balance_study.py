@@ -23,7 +23,7 @@ from pathlib import Path
 
 from .study import WrittenReport, remove_stale, written_line
 
-__all__ = ["BalanceReport", "run_study", "write_report", "summary_lines", "rotor_lines",
+__all__ = ["BalanceReport", "run_study", "write_report", "balance_figures", "summary_lines", "rotor_lines",
            "linkage_lines", "LEGACY_ROTOR", "LEGACY_LINKAGE"]
 
 #: The unnamed outputs of crankdyn versions before the files were named after the spec.
@@ -95,7 +95,10 @@ def run_study(spec) -> BalanceReport:
     return BalanceReport("rotor", res, res.name, source)
 
 
-def _figures(report, lang):
+def balance_figures(report, lang="ru"):
+    """The report's figures, ``{stem suffix: Figure}``: the m·r polygons of each
+    correction plane (rotor) or the shaking force and its locus (linkage); what
+    :func:`write_report` saves."""
     from matplotlib.figure import Figure
 
     res = report.result
@@ -136,7 +139,7 @@ def write_report(report: BalanceReport, out, lang="ru",
             else ("counterweights", "shaking force"))
     for (fname, df), w in zip(tables.items(), what):
         ensure_finite(df.drop(columns="link") if "link" in df else df, w)
-    figs = _figures(report, lang)
+    figs = balance_figures(report, lang)
     name = report.stem
     names = list(tables) + [f"{name}_{k}.{e}" for k in figs for e in formats]
     inputs = [report.source] if report.source else []

@@ -130,24 +130,13 @@ def boxes_overlap(a, b, pad=0.4):
 
 
 def _seg_hits_box(p1, p2, box, pad=0.3):
-    """Does the segment p1–p2 cross the box (Liang–Barsky clipping)?"""
-    x0, y0, x1, y1 = box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad
-    dx, dy = p2.real - p1.real, p2.imag - p1.imag
-    t0, t1 = 0.0, 1.0
-    for p, q in ((-dx, p1.real - x0), (dx, x1 - p1.real), (-dy, p1.imag - y0),
-                 (dy, y1 - p1.imag)):
-        if abs(p) < 1e-9:   # parallel to this edge (in mm: 1e-9 mm is no slope at all)
-            if q < 0:
-                return False
-        else:
-            r = q / p
-            if p < 0:
-                t0 = max(t0, r)
-            else:
-                t1 = min(t1, r)
-            if t0 > t1:
-                return False
-    return True
+    """Does the segment p1–p2 (complex, mm) cross the box grown by ``pad``?  (Liang–
+    Barsky, :func:`crankbase.plot_labels.segment_hits_box`; 1e-9 mm of slope is none.)"""
+    from crankbase.plot_labels import segment_hits_box
+
+    return segment_hits_box((p1.real, p1.imag), (p2.real, p2.imag),
+                            (box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad),
+                            parallel_tol=1e-9)
 
 
 class _Placer:

@@ -105,38 +105,20 @@ def _dynamics(name):
     return lambda lang: dynamics_figures(res, lang)
 
 
+def _balance(example):
+    """The balance study's own figures (dynamics.balance_study.balance_figures)."""
+    from dynamics.balance_study import balance_figures, run_study
+
+    report = run_study(example_path(example))
+    return lambda lang: balance_figures(report, lang)
+
+
 def _rotor():
-    from matplotlib.figure import Figure
-
-    from dynamics.rotor import plot_mr_polygon, rotor_balance
-
-    res = rotor_balance(example_path("rotor_two_plane.toml"))
-
-    def build(lang):
-        n = len(res.corrections)
-        fig = Figure(figsize=(5.2 * n, 5.2), layout="constrained")
-        for k in range(n):
-            plot_mr_polygon(res, k, fig.add_subplot(1, n, k + 1), lang=lang)
-        return {"rotor_polygons": fig}
-    return build
+    return _balance("rotor_two_plane.toml")
 
 
 def _shaking():
-    from matplotlib.figure import Figure
-
-    from dynamics.shaking import mechanism_balance, plot_shaking_force, plot_shaking_locus
-
-    res = mechanism_balance(example_path("ratchet_balance.toml"))
-
-    def build(lang):
-        figs = {}
-        for key, fn, size in (("shaking_force", plot_shaking_force, (7.5, 4.2)),
-                              ("shaking_locus", plot_shaking_locus, (6, 6))):
-            fig = Figure(figsize=size, layout="constrained")
-            fn(res, fig.add_subplot(), lang=lang)
-            figs[key] = fig
-        return figs
-    return build
+    return _balance("ratchet_balance.toml")
 
 
 #: Every bundled example: how its figures are built, and whether they are saved with a
