@@ -111,7 +111,7 @@ def bearing_lines(analysis, pin_wear, lang: str = "ru") -> list[str]:
     """The summary of a bearing analysis (its crank-pin wear diagrams ``pin_wear``): the
     most loaded crank pin and main journal, the journal torques, the oil holes, the rigid
     rod against the two-mass one, and the notes."""
-    from .bearing_spec import NOTE_NO_PISTON_MASS
+    from ..bearings.analysis import NOTE_NO_PISTON_MASS
 
     t = texts(lang)
     L = analysis.loads

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .symbols import sym
+from ..symbols import sym
 
 __all__ = ["DRAWING_NAMES", "default_mu_alpha", "plot_drawing_forces",
            "plot_drawing_polar", "drawing_figures"]
@@ -90,7 +90,7 @@ def _extent(values, pad=5.0):
 def plot_drawing_forces(result, lang="ru", cols=("dPg_N", "Pj_N", "P_N"), mu_alpha=None):
     """Forces over α of an :class:`~engine.EngineResult` at the drawing scale:
     x = α/μα [mm], y = F/μP [mm] (μP from its settings).  Returns the Figure."""
-    from .plots import LINE_STYLES
+    from .cylinder import LINE_STYLES
 
     table, spec = result.curves, result.spec
     mu_p = result.settings.force_scale

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .symbols import sym
+from ..symbols import sym
 
 __all__ = ["plot_pin_polar", "plot_journal_polar", "plot_developed_loads", "plot_wear",
            "plot_journal_torques",
@@ -24,7 +24,7 @@ def _words(lang):
     """The words of the bearing plots in ``lang`` (``plot.bearing.*``)."""
     from crankbase.plot_texts import plot_words
 
-    from .plots import engine_words
+    from .cylinder import engine_words
     engine_words(lang)                                   # an unknown language: a spec error
     return plot_words(lang, "bearing")
 
@@ -55,7 +55,7 @@ def _polar(ax, a, T, K, R, title, lang, stats, cycle, Kr=0.0):
     rods' force ΣS with the pole O and the pole Oш = (0, −ΣKr.ш), from which the same
     curve reads as the pin load R (as :func:`engine.plots.plot_polar`).  ``R`` is the
     load's magnitude from the result's table (the plot computes no load). [N]"""
-    from .plots import draw_polar
+    from .cylinder import draw_polar
 
     t = _words(lang)
     draw_polar(ax, a, np.asarray(T) * 1e-3, (np.asarray(K) - Kr) * 1e-3,
@@ -181,7 +181,7 @@ def plot_wear(diagram, ax=None, lang="ru", note=True):
 def _hole_label(ax, text, hole):
     """The oil hole's name outside the ring of angle labels, in the hole's direction (as
     near as it is free): never over the wear, the circle or a label."""
-    from .plot_labels import Obstacles, place_label, renderer_of
+    from crankbase.plot_labels import Obstacles, place_label, renderer_of
 
     r = renderer_of(ax.figure)
     ax.apply_aspect()
@@ -267,7 +267,7 @@ def plot_big_end(result, ax=None, lang="ru"):
     ax.axhline(0, color="k", lw=0.7)
     ax.axvline(0, color="k", lw=0.7)
     ax.set_aspect("equal", adjustable="datalim")
-    from .plots import label_alpha_points
+    from .cylinder import label_alpha_points
     label_alpha_points(ax, x, y, a, labels, lx, ly, ms=3)
     ax.set_xlabel(t["across"])
     ax.set_ylabel(t["along"])

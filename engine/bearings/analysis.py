@@ -32,12 +32,12 @@ import numpy as np
 from crankbase.schema import SpecReader
 from crankbase.validation import read_toml
 
-from .bearings import (Crankshaft, CrankshaftLoads, big_end_load, crank_pin_load,
+from .loads import (Crankshaft, CrankshaftLoads, big_end_load, crank_pin_load,
                        crankshaft_loads, piston_pin_load)
-from .forces import crank_pin_resultant
-from .rodmodel import RigidRod, compare_rod_models
-from .spec import EngineSpecError
-from .spec.inputs import (BEARING_KEYS, BearingInputs, BearingOptions, bearing_options,
+from ..forces import crank_pin_resultant
+from ..rodmodel import RigidRod, compare_rod_models
+from ..spec import EngineSpecError
+from ..spec.inputs import (BEARING_KEYS, BearingInputs, BearingOptions, bearing_options,
                           mass_parts, read_tables)
 from .wear import WearDiagram, wear_diagram
 

@@ -34,11 +34,10 @@ import numpy as np
 from crankbase.errors import Problem, SpecError, Text
 from crankbase.tolerances import WEAR_ARC_EDGE_DEG, WEAR_TIE_RTOL
 
+from ..schema import DEFAULT_HALF_ANGLE_DEG
+
 __all__ = ["wear_profile", "least_wear_direction", "WearDiagram", "wear_diagram",
            "DEFAULT_HALF_ANGLE_DEG"]
-
-#: Half-angle of the arc each load wears, as in the textbooks [1]_. [deg]
-DEFAULT_HALF_ANGLE_DEG = 60.0
 
 
 def _weights(alpha_deg):

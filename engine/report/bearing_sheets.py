@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from crankbase.workbook import Words
 
-from .bearings import load_stats
+from ..bearings.loads import load_stats
 
 __all__ = ["add_bearing_sheets", "SHEET_NAMES"]
 
@@ -147,7 +147,7 @@ def add_bearing_sheets(wb, tables, analysis, lang="ru"):
     for line in t["conv"]:
         _put(ws, row, 1, line)
         row += 1
-    from .report import readable_numbers
+    from .workbook import readable_numbers
 
     readable_numbers(ws, {"A": 46}, default_width=14, per_column=False)
 

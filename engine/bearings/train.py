@@ -18,10 +18,10 @@ import numpy as np
 from crankbase.errors import Problem, Text
 from crankbase.tolerances import PHASE_MATCH_DEG
 
-from .bearing_spec import (NOTE_NO_PISTON_MASS, BearingInputs, piston_mass,
+from .analysis import (NOTE_NO_PISTON_MASS, BearingInputs, piston_mass,
                            rod_bearing_table)
-from .bearings import BearingInputError, Crankshaft, CrankshaftLoads, crankshaft_loads
-from .forces import force_table
+from .loads import BearingInputError, Crankshaft, CrankshaftLoads, crankshaft_loads
+from ..forces import force_table
 from .wear import wear_diagram
 
 __all__ = ["Cylinder", "EngineBearings", "engine_bearings", "full_support_journals",
@@ -200,7 +200,7 @@ def engine_bearings(spec, theta_deg, cylinders, throw_dir_deg, z_throw, *,
     notes = [] if mp is not None else [NOTE_NO_PISTON_MASS]
     comp = None
     if inputs.rod_model == "rigid" and inputs.rod is not None:
-        from .rodmodel import compare_rod_models
+        from ..rodmodel import compare_rod_models
         comp = compare_rod_models(spec, inputs.rod, th)
     return EngineBearings(loads, pin_wear, jw, rb, cyl, inputs.options, mp,
                           inputs.rod_model, comp, notes)
