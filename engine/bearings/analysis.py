@@ -2,8 +2,8 @@
 
 Takes the optional spec tables ``[bearings]`` and ``[rod]`` as read by :func:`engine.load`
 (``study.bearings``, :mod:`engine.spec.inputs`; :func:`read_bearing_inputs` reads just
-them) and composes :mod:`engine.bearings`, :mod:`engine.wear` and :mod:`engine.rodmodel` on the
-force table of :func:`engine.force_table` into one typed result,
+them) and composes :mod:`engine.bearings.loads`, :mod:`engine.bearings.wear` and
+:mod:`engine.rodmodel` on the force table of :func:`engine.force_table` into one typed result,
 :class:`BearingAnalysis`.  (A multi-cylinder crank train feeds the same array functions
 with its own layout.)
 

@@ -73,7 +73,7 @@ def _polar(ax, a, T, K, R, title, lang, stats, cycle, Kr=0.0):
 def plot_pin_polar(result, ax=None, lang="ru", throw=1, short=False):
     """Polar diagram of a crank pin's load (rods incl. Kr.ш) in its crank frame, pole at
     the pin centre.  ``result``: :class:`engine.bearings.CrankshaftLoads` or a
-    :class:`engine.bearing_spec.BearingAnalysis`; ``short``: a short title (grids)."""
+    :class:`engine.bearings.analysis.BearingAnalysis`; ``short``: a short title (grids)."""
     loads = getattr(result, "loads", result)
     ax = _axes(ax)
     p = loads.crankpins
@@ -323,8 +323,8 @@ def _grid(n, cell, cols=3):
 
 
 def bearing_figures(analysis, lang="ru"):
-    """``{stem: Figure}`` of a :class:`engine.bearing_spec.BearingAnalysis` (one
-    cylinder) or an :class:`engine.train_bearings.EngineBearings` (a whole engine): the
+    """``{stem: Figure}`` of a :class:`engine.bearings.analysis.BearingAnalysis` (one
+    cylinder) or an :class:`engine.bearings.train.EngineBearings` (a whole engine): the
     polar and wear diagrams of every pin and journal in one grid each."""
     out = {}
     loads = analysis.loads

@@ -217,7 +217,7 @@ def plot_polar(result, ax=None, lang="ru"):
 
 def draw_polar(ax, a, T, K, R, kr, cycle_deg, pole_name, r_name, unit, ms=3.5):
     """Draw a polar load diagram on ``ax`` (the shared drawing of :func:`plot_polar` and
-    the bearing diagrams of :mod:`engine.bearing_plots`): the locus (T, K), +K
+    the bearing diagrams of :mod:`engine.plots.bearing`): the locus (T, K), +K
     downwards, equal aspect; the pole O and the shifted pole (0, −kr) named
     ``pole_name`` (None: no shifted pole); α markers and labels every 30°; the arrows to the largest and the
     smallest load ``R`` with their values; every label placed clear of the others, the
@@ -254,7 +254,7 @@ def draw_polar(ax, a, T, K, R, kr, cycle_deg, pole_name, r_name, unit, ms=3.5):
 def _polar_labels(ax, T, K, kr, lt, lk, angles, ext, R, a, pole_name, r_name, unit, ms):
     """Place the pole names, the Rшш max/min texts and the α labels of the polar diagram
     so that no label covers another label, a marker or an arrow (measured with the
-    renderer; see :mod:`engine.plot_labels`)."""
+    renderer; see :mod:`crankbase.plot_labels`)."""
     from crankbase.plot_labels import Obstacles, place_label, renderer_of
 
     fig = ax.figure

@@ -79,7 +79,7 @@ def add_bearing_sheets(wb, tables, analysis, lang="ru"):
     wb : openpyxl.Workbook
     tables : dict of {str: pandas.DataFrame}
         The bearing tables by CSV file name (as written beside the workbook).
-    analysis : engine.bearing_spec.BearingAnalysis
+    analysis : engine.bearings.analysis.BearingAnalysis
         On the fine grid: the statistics, oil holes and the rod comparison.
     lang : {"ru", "en"}
 
