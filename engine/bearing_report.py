@@ -1,7 +1,9 @@
-"""Old path of :mod:`engine.report.bearing_sheets` (moved with the engine's sub-packages, issue #19).
+"""Old path of :mod:`engine.report.bearing_sheets` (moved into the engine's sub-packages,
+issue #19).
 
-``import engine.bearing_report`` still works: it warns (``DeprecationWarning``) and gives the very
-module :mod:`engine.report.bearing_sheets`, so every name and object is the same.  Import the new path.
+``import engine.bearing_report`` still works: it warns (``DeprecationWarning``) and gives
+the very module :mod:`engine.report.bearing_sheets`, so every name and object is the same.
+Import the new path.
 """
 import sys
 import warnings

@@ -1,7 +1,8 @@
-"""Old path of :mod:`engine.bearings.analysis` (moved with the engine's sub-packages, issue #19).
+"""Old path of :mod:`engine.bearings.analysis` (moved into the engine's sub-packages, issue #19).
 
-``import engine.bearing_spec`` still works: it warns (``DeprecationWarning``) and gives the very
-module :mod:`engine.bearings.analysis`, so every name and object is the same.  Import the new path.
+``import engine.bearing_spec`` still works: it warns (``DeprecationWarning``) and gives
+the very module :mod:`engine.bearings.analysis`, so every name and object is the same.
+Import the new path.
 """
 import sys
 import warnings

@@ -1,7 +1,8 @@
-"""Old path of :mod:`engine.plots.diagram_points` (moved with the engine's sub-packages, issue #19).
+"""Old path of :mod:`engine.plots.diagram_points` (moved into the engine's sub-packages, issue #19).
 
-``import engine.diagram_points`` still works: it warns (``DeprecationWarning``) and gives the very
-module :mod:`engine.plots.diagram_points`, so every name and object is the same.  Import the new path.
+``import engine.diagram_points`` still works: it warns (``DeprecationWarning``) and gives
+the very module :mod:`engine.plots.diagram_points`, so every name and object is the same.
+Import the new path.
 """
 import sys
 import warnings

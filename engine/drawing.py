@@ -1,7 +1,8 @@
-"""Old path of :mod:`engine.plots.drawing` (moved with the engine's sub-packages, issue #19).
+"""Old path of :mod:`engine.plots.drawing` (moved into the engine's sub-packages, issue #19).
 
-``import engine.drawing`` still works: it warns (``DeprecationWarning``) and gives the very
-module :mod:`engine.plots.drawing`, so every name and object is the same.  Import the new path.
+``import engine.drawing`` still works: it warns (``DeprecationWarning``) and gives the
+very module :mod:`engine.plots.drawing`, so every name and object is the same.  Import the
+new path.
 """
 import sys
 import warnings

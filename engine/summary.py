@@ -1,7 +1,8 @@
-"""Old path of :mod:`engine.report.summary` (moved with the engine's sub-packages, issue #19).
+"""Old path of :mod:`engine.report.summary` (moved into the engine's sub-packages, issue #19).
 
-``import engine.summary`` still works: it warns (``DeprecationWarning``) and gives the very
-module :mod:`engine.report.summary`, so every name and object is the same.  Import the new path.
+``import engine.summary`` still works: it warns (``DeprecationWarning``) and gives the
+very module :mod:`engine.report.summary`, so every name and object is the same.  Import
+the new path.
 """
 import sys
 import warnings

@@ -1,7 +1,8 @@
-"""Old path of :mod:`engine.bearings.train` (moved with the engine's sub-packages, issue #19).
+"""Old path of :mod:`engine.bearings.train` (moved into the engine's sub-packages, issue #19).
 
-``import engine.train_bearings`` still works: it warns (``DeprecationWarning``) and gives the very
-module :mod:`engine.bearings.train`, so every name and object is the same.  Import the new path.
+``import engine.train_bearings`` still works: it warns (``DeprecationWarning``) and gives
+the very module :mod:`engine.bearings.train`, so every name and object is the same.
+Import the new path.
 """
 import sys
 import warnings

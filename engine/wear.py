@@ -1,7 +1,8 @@
-"""Old path of :mod:`engine.bearings.wear` (moved with the engine's sub-packages, issue #19).
+"""Old path of :mod:`engine.bearings.wear` (moved into the engine's sub-packages, issue #19).
 
 ``import engine.wear`` still works: it warns (``DeprecationWarning``) and gives the very
-module :mod:`engine.bearings.wear`, so every name and object is the same.  Import the new path.
+module :mod:`engine.bearings.wear`, so every name and object is the same.  Import the new
+path.
 """
 import sys
 import warnings
