@@ -31,7 +31,7 @@ def main():
     from crankbase.resources import example_path
     from engine.bearings import (Crankshaft, crank_pin_load, crankshaft_loads,
                                  cylinder_alpha)
-    from engine.wear import wear_diagram
+    from engine.bearings.wear import wear_diagram
 
     spec = engine.load_spec(example_path("petrol_vaz2106.toml"))
     theta = np.arange(0.0, 720.0, 0.1)

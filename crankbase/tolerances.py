@@ -81,7 +81,7 @@ BALANCED_RTOL = 1e-9
 
 #: A load's contact point this close to the end of a wear arc counts as inside it [deg]:
 #: the arc's ends belong to it, and contact angles from atan2 plus a shift of 180° carry
-#: ~1e-13° of round-off (engine.wear).
+#: ~1e-13° of round-off (engine.bearings.wear).
 WEAR_ARC_EDGE_DEG = 1e-9
 
 #: Wear values within this fraction of the profile's range of its minimum tie for the

@@ -11,7 +11,7 @@ with --bearings), ``DIR/<name>.xlsx`` and the plots ``DIR/<name>_<plot>.png|svg`
 (``<name>``: the engine's name as a file stem, so that two engines in one folder never
 mix) after everything has been validated and computed, all at once through a staging
 folder; bad input writes nothing.  The work is the library's (:func:`engine.run_study`,
-:func:`engine.write_report`, :mod:`engine.summary`); this module parses the arguments and
+:func:`engine.write_report`, :mod:`engine.report.summary`); this module parses the arguments and
 prints.  Heavy libraries are imported inside :func:`run` only, so ``crankdyn --help``
 stays fast.
 """

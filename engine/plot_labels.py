@@ -1,6 +1,14 @@
-"""Collision-free text labels for plots: moved to :mod:`crankbase.plot_labels` (shared by
-the engine and the linkage plots); this name stays for the old imports."""
-from crankbase.plot_labels import *  # noqa: F401,F403
-from crankbase.plot_labels import Obstacles, label_points, place_label, renderer_of, text_size
+"""Old path of :mod:`crankbase.plot_labels` (the collision-free text labels, shared by the
+engine and the linkage plots).
 
-__all__ = ["Obstacles", "renderer_of", "text_size", "place_label", "label_points"]
+``import engine.plot_labels`` still works: it warns (``DeprecationWarning``) and gives the
+very module :mod:`crankbase.plot_labels`.  Import the new path.
+"""
+import sys
+import warnings
+
+from crankbase import plot_labels as _moved
+
+warnings.warn("engine.plot_labels is deprecated: import crankbase.plot_labels instead",
+              DeprecationWarning, stacklevel=2)
+sys.modules[__name__] = _moved

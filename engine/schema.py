@@ -11,7 +11,10 @@ from __future__ import annotations
 from crankbase.schema import MAX_CYLINDERS, ArrayOfTables, Key, Schema, Table
 
 from .dieselrk import DIESEL_RK_TDC_DEG
-from .wear import DEFAULT_HALF_ANGLE_DEG
+
+#: Half-angle of the arc each load wears, as in the textbooks (:mod:`engine.bearings.wear`,
+#: which uses it; here so that reading a spec imports no bearing module). [deg]
+DEFAULT_HALF_ANGLE_DEG = 60.0
 
 __all__ = ["SCHEMA", "ENGINE", "MASSES", "PRESSURE", "CYCLE", "TABLE", "FLYWHEEL",
            "BALANCE", "COUNTERWEIGHT", "BEARINGS", "ROD", "ARRANGEMENTS",

@@ -104,7 +104,7 @@ class EngineReport:
 
     def summary_lines(self, lang: str = "ru", written=None) -> list[str]:
         """The terminal summary in ``lang`` (:func:`engine.summary.summary_lines`)."""
-        from .summary import summary_lines
+        from .report.summary import summary_lines
 
         return summary_lines(self, lang, written)
 
@@ -217,7 +217,8 @@ def run_study(study, *, bearings: bool = False, step=None, form=None,
     """
     from crankbase.output import ensure_finite, safe_name
 
-    from .plots import PLOT_NAMES, TRAIN_PLOT_NAMES
+    from .plots.cylinder import PLOT_NAMES
+    from .plots.whole import TRAIN_PLOT_NAMES
     from .spec import EngineStudy, load
     from .table2 import table2
     from .train import analyze_engine
@@ -257,15 +258,15 @@ def _bearings(spec, table, fine, inputs, whole) -> BearingReport:
     rows; plots, wear diagrams and the summary from the fine grid."""
     from crankbase.output import ensure_finite
 
-    from .bearing_plots import BEARING_PLOT_NAMES
-    from .bearing_spec import bearing_analysis, wear_table
+    from .bearings.analysis import bearing_analysis, wear_table
+    from .plots.bearing import BEARING_PLOT_NAMES
 
     lay = whole.layout
     if lay.n == 1:
         rows = bearing_analysis(spec, table, inputs)
         res = bearing_analysis(spec, fine, inputs)
     else:
-        from .train_bearings import engine_bearings, layout_cylinders
+        from .bearings.train import engine_bearings, layout_cylinders
 
         cyl, tau, zt = layout_cylinders(lay)
         cw = [(c.z, c.mr, c.angle_deg) for c in whole.summary.counterweights]
@@ -308,11 +309,11 @@ def report_workbook(report: EngineReport, lang: str = "ru"):
     """The report's workbook, built in memory (not saved): the template's sheets of the
     cylinder, the whole engine's sheets, the bearing sheets when the report has them, A4
     print setup (:func:`engine.report.a4_setup`).  :func:`write_report` saves it."""
-    from .report import a4_setup, add_engine_sheets, build_workbook
+    from .report.workbook import a4_setup, add_engine_sheets, build_workbook
 
     wb = add_engine_sheets(build_workbook(report.cylinder, lang), report.whole, lang)
     if report.bearings is not None:
-        from .bearing_report import add_bearing_sheets
+        from .report.bearing_sheets import add_bearing_sheets
 
         add_bearing_sheets(wb, dict(report.bearings.tables), report.bearings.analysis, lang)
     return a4_setup(wb)
@@ -364,10 +365,11 @@ def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "s
     from crankbase.output import check_not_input, save_figure, staged_output, write_csv
     from crankbase.validation import check_lang
 
-    from .bearing_plots import BEARING_PLOT_NAMES
-    from .drawing import DRAWING_NAMES, drawing_figures
-    from .plots import PLOT_NAMES, TRAIN_PLOT_NAMES, figures, train_figures
-    from .report import save_workbook
+    from .plots.bearing import BEARING_PLOT_NAMES
+    from .plots.cylinder import PLOT_NAMES, figures
+    from .plots.drawing import DRAWING_NAMES, drawing_figures
+    from .plots.whole import TRAIN_PLOT_NAMES, train_figures
+    from .report.workbook import save_workbook
 
     check_lang(lang)
     formats = _formats(formats)
@@ -390,7 +392,7 @@ def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "s
     figs = figures(result, lang)
     figs.update(train_figures(whole, lang))
     if report.bearings is not None:
-        from .bearing_plots import bearing_figures
+        from .plots.bearing import bearing_figures
 
         figs.update(bearing_figures(report.bearings.analysis, lang))
     if drawing:

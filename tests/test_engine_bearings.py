@@ -1,4 +1,4 @@
-"""Bearing loads (engine.bearings, engine.bearing_spec): crank pins, main journals, the
+"""Bearing loads (engine.bearings, engine.bearings.analysis): crank pins, main journals, the
 torques the journals carry, big end and piston pin.
 
 Independent checks written here: the single-cylinder table's own Rшш and Ψ; a vee pin
@@ -16,7 +16,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import engine
-from engine.bearing_spec import bearing_analysis, read_bearing_inputs, rod_bearing_table
+from engine.bearings.analysis import bearing_analysis, read_bearing_inputs, rod_bearing_table
 from engine.bearings import (BearingInputError, Crankshaft, crank_pin_load,
                              crankshaft_loads, cylinder_alpha, journal_torques, lever_rule)
 

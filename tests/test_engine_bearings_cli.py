@@ -11,8 +11,8 @@ import pytest
 import engine
 from crankdyn.cli import main
 from crankbase.resources import example_path
-from engine.bearing_plots import BEARING_PLOT_NAMES
-from engine.bearing_spec import bearing_analysis, read_bearing_inputs
+from engine.plots.bearing import BEARING_PLOT_NAMES
+from engine.bearings.analysis import bearing_analysis, read_bearing_inputs
 
 CSVS = ("crankpins.csv", "journals.csv", "journal_torques.csv", "rod_bearings.csv",
         "wear.csv")
@@ -85,7 +85,7 @@ def test_bearings_flag_writes_tables_equal_to_the_library(tmp_path, capsys):
     assert list(rb.columns)[-3:] == ["Pp_axial_N", "Pp_side_N", "Pp_N"]
     # the workbook's bearing sheets hold the CSVs bit for bit, and the summary
     from openpyxl import load_workbook
-    from engine.bearing_report import SHEET_NAMES
+    from engine.report.bearing_sheets import SHEET_NAMES
     wb = load_workbook(out / "diesel-d240.xlsx")
     for fname in CSVS:
         rows = list(wb[SHEET_NAMES["en"][fname]].values)
@@ -125,7 +125,7 @@ def test_one_cylinder_spec_with_bearing_tables(tmp_path, capsys):
     t = engine.force_table(spec, settings=study.settings)
     np.testing.assert_array_equal(pins["R_1_N"].to_numpy(), t["R_N"].to_numpy())
     from openpyxl import load_workbook
-    from engine.bearing_report import SHEET_NAMES
+    from engine.report.bearing_sheets import SHEET_NAMES
     wb = load_workbook(out / "diesel-d240.xlsx")
     summ = {r[0]: r[1:] for r in wb[SHEET_NAMES["en"]["summary"]].values if r and r[0]}
     assert summ["Crank pin 1, R, N"][:6] == (ps.max_N, ps.alpha_max_deg, ps.min_N,

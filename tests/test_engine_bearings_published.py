@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 
 import engine
-from engine.bearing_spec import bearing_analysis, read_bearing_inputs
+from engine.bearings.analysis import bearing_analysis, read_bearing_inputs
 
 
 def khurmi(p_MPa):

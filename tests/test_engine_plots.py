@@ -119,7 +119,7 @@ def test_drawings_are_on_a_gost_format_at_the_stated_scale(name):
     paper, and a force F is drawn F/μP mm from the axis (μP as the title states)."""
     import engine
     from crankbase.resources import example_path
-    from engine.drawing import drawing_figures
+    from engine.plots.drawing import drawing_figures
 
     study = engine.load(example_path(name))
     result = engine.analyze(study.spec, study.settings)

@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import engine
-from engine.bearing_spec import read_bearing_inputs
+from engine.bearings.analysis import read_bearing_inputs
 from engine.rodmodel import RigidRod, compare_rod_models, rigid_rod_forces
 from newton_euler import reference
 

@@ -1,4 +1,4 @@
-"""The engine study as a library call (engine.study, engine.summary): run_study gives the
+"""The engine study as a library call (engine.study, engine.report.summary): run_study gives the
 tables the command line writes, bit for bit; write_report writes exactly the files it
 lists, as one unit (a failing figure or workbook writes nothing); the terminal summary
 speaks the report's language with the right plural forms."""
@@ -18,7 +18,7 @@ from crankbase.errors import OutputError, SpecError
 from crankbase.output import MANIFEST_NAME, write_csv
 from crankbase.resources import example_path
 from engine.study import ReportFiles
-from engine.summary import summary_lines, written_line
+from engine.report.summary import summary_lines, written_line
 
 CYRILLIC = re.compile("[\u0400-\u04ff]")
 
@@ -138,7 +138,7 @@ def test_bad_write_arguments_write_nothing(petrol, tmp_path):
 def test_a_failing_workbook_or_figure_writes_nothing(what, tmp_path, monkeypatch):
     import matplotlib.figure
 
-    import engine.report
+    import engine.report.workbook
 
     path = example_path("diesel_d240.toml")
     report = engine.run_study(engine.load(path), source=path)
@@ -146,7 +146,7 @@ def test_a_failing_workbook_or_figure_writes_nothing(what, tmp_path, monkeypatch
         def broken(wb, dst):
             Path(dst).write_bytes(b"partial")
             raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(dst))
-        monkeypatch.setattr(engine.report, "save_workbook", broken)
+        monkeypatch.setattr(engine.report.workbook, "save_workbook", broken)
     else:
         calls = []
 
@@ -176,7 +176,7 @@ def test_the_spec_file_is_an_input_no_output_may_overwrite(tmp_path):
 def test_summary_in_english_has_no_cyrillic_and_in_russian_no_english_word(petrol, v8):
     for report in (petrol, v8):
         en = "\n".join(report.summary_lines("en"))
-        ru = engine.summary.summary_text(report, "ru")
+        ru = engine.report.summary.summary_text(report, "ru")
         assert not CYRILLIC.search(en), en
         words = set(re.findall(r"[A-Za-z]{3,}", ru.replace(report.study.spec.name, "")))
         assert words <= {"max", "min"}, words
@@ -219,10 +219,10 @@ def test_the_balance_line_agrees_with_the_number_of_counterweights(petrol):
     whole = petrol.whole
     one = replace(whole, summary=replace(whole.summary,
                                          counterweights=whole.summary.counterweights[:1]))
-    line = engine.summary.whole_engine_lines(one, "en")[4]
+    line = engine.report.summary.whole_engine_lines(one, "en")[4]
     assert "with 1 counterweight; unbalanced before it: 2nd order" in line
     assert "with 4 counterweights; unbalanced before them" in \
-        engine.summary.whole_engine_lines(whole, "en")[4]
+        engine.report.summary.whole_engine_lines(whole, "en")[4]
 
 
 def test_the_readme_example_runs_as_written(tmp_path, monkeypatch, capsys):

@@ -1,4 +1,4 @@
-"""Bearing loads of a whole engine (engine.train_bearings.engine_bearings): a 90° V8
+"""Bearing loads of a whole engine (engine.bearings.train.engine_bearings): a 90° V8
 cross-plane and an inline 4 from the one-cylinder model, checked against vector sums and
 equilibria built in the tests."""
 import copy
@@ -9,9 +9,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import engine
-from engine.bearing_spec import bearing_analysis, read_bearing_inputs
+from engine.bearings.analysis import bearing_analysis, read_bearing_inputs
 from engine.bearings import BearingInputError
-from engine.train_bearings import Cylinder, engine_bearings, full_support_journals
+from engine.bearings.train import Cylinder, engine_bearings, full_support_journals
 
 BASE = {
     "engine": dict(name="v8", bore_mm=92.0, stroke_mm=86.0, rod_ratio=0.28,

@@ -1,4 +1,4 @@
-"""Wear diagrams (engine.wear): the sector rule's exact cases and properties."""
+"""Wear diagrams (engine.bearings.wear): the sector rule's exact cases and properties."""
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -6,8 +6,8 @@ from hypothesis import strategies as st
 
 import engine
 from crankbase.errors import SpecError
-from engine.bearing_spec import bearing_analysis
-from engine.wear import least_wear_direction, wear_diagram, wear_profile
+from engine.bearings.analysis import bearing_analysis
+from engine.bearings.wear import least_wear_direction, wear_diagram, wear_profile
 
 
 @pytest.mark.parametrize("direction, half", [(0.0, 60.0), (37.0, 60.0), (300.0, 45.0),

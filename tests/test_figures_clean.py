@@ -28,10 +28,10 @@ def _engine(name, bearings=False, drawing=True):
     def build(lang):
         figs = {**figures(whole.cylinder, lang), **train_figures(whole, lang)}
         if drawing:
-            from engine.drawing import drawing_figures
+            from engine.plots.drawing import drawing_figures
             figs.update(drawing_figures(whole.cylinder, lang))
         if bearings:
-            from engine.bearing_plots import bearing_figures
+            from engine.plots.bearing import bearing_figures
             figs.update(bearing_figures(_bearing_analysis(name, study, whole), lang))
         return figs
     return build
@@ -39,8 +39,8 @@ def _engine(name, bearings=False, drawing=True):
 
 def _bearing_analysis(name, study, whole):
     """The bearing analysis the CLI draws (``engine --bearings``), on the fine grid."""
-    from engine.bearing_spec import bearing_analysis, read_bearing_inputs
-    from engine.train_bearings import engine_bearings, layout_cylinders
+    from engine.bearings.analysis import bearing_analysis, read_bearing_inputs
+    from engine.bearings.train import engine_bearings, layout_cylinders
 
     spec = study.spec
     inputs = read_bearing_inputs(example_path(name), spec)

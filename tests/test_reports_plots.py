@@ -105,7 +105,7 @@ def test_place_label_thins_when_no_room():
     """A label that cannot be placed without covering a marker is left out."""
     from matplotlib.figure import Figure
 
-    from engine.plot_labels import Obstacles, place_label, renderer_of
+    from crankbase.plot_labels import Obstacles, place_label, renderer_of
 
     fig = Figure(figsize=(2, 2))
     ax = fig.subplots()
@@ -157,7 +157,7 @@ def test_indicator_characteristic_points_and_fullness():
     """The points r, a, c′, c, c″, zд, b′, b″ sit at the spec's angles; those on the curve
     at its pressure, c at pc of the thermal calculation; φп = pi/p′i is in the textbook's
     range for a petrol engine (Kolchin & Demidov 2008: φп = 0.94–0.97)."""
-    from engine.diagram_points import characteristic_points, fullness
+    from engine.plots.diagram_points import characteristic_points, fullness
     from engine.plots import plot_indicator, plot_pressure
 
     result = _result(EXAMPLES[0])
@@ -189,7 +189,7 @@ def test_indicator_characteristic_points_and_fullness():
 def test_drawing_scale_diagrams_are_one_to_one(name):
     """The drawing-scale diagrams: one data unit is one millimetre of paper (x and y), the
     curves are the forces divided by μP (and α by μα), and the scales are stated."""
-    from engine.drawing import default_mu_alpha, drawing_figures
+    from engine.plots.drawing import default_mu_alpha, drawing_figures
 
     result = _result(name)
     fine, spec, mu = result.curves, result.spec, result.settings.force_scale

@@ -175,7 +175,7 @@ def test_one_set_of_english_symbols():
     """engine.symbols is the one table: the workbook template, the native charts and the
     plots print the same English symbol for each quantity (the plots as mathtext)."""
     from engine.plots import SYMBOLS as PLOT_SYMBOLS
-    from engine.report import _CHART_SYMBOLS
+    from engine.report.workbook import _CHART_SYMBOLS
     from engine.symbols import SYMBOLS, math_symbol, sym, to_english
 
     def plain(math):

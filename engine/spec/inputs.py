@@ -24,7 +24,7 @@ from crankbase.errors import Text
 from crankbase.schema import SpecReader
 
 from ..schema import BEARINGS, ROD, ROD_MODELS
-from ..wear import DEFAULT_HALF_ANGLE_DEG
+from ..schema import DEFAULT_HALF_ANGLE_DEG
 
 __all__ = ["BEARING_KEYS", "ROD_KEYS", "ROD_MODELS", "BearingOptions", "bearing_options",
            "BearingInputs", "RigidRod", "rod_options", "read_tables", "mass_parts"]

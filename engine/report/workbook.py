@@ -27,9 +27,9 @@ import numpy as np
 from crankbase.errors import OutputError, Problem, Text
 from crankbase.workbook import A4_LANDSCAPE_PRINT_CM, sheet_rows, thinned_note
 
-from .forces import COLUMNS, SUMMARY_QUANTITIES
-from .spec import EngineSpecError
-from .symbols import mass_inputs, sym
+from ..forces import COLUMNS, SUMMARY_QUANTITIES
+from ..spec import EngineSpecError
+from ..symbols import mass_inputs, sym
 
 __all__ = ["build_workbook", "add_engine_sheets", "save_workbook", "input_values",
            "TABLE2_FORCES", "LANGS"]
@@ -300,7 +300,7 @@ def _kolchin_sheet(wb, result, lang):
     the column keys, data from row 4."""
     from openpyxl.styles import Font
 
-    from .table2 import table2
+    from ..table2 import table2
 
     t2 = sheet_rows(table2(result.table, result.spec, result.settings, "kolchin"))
     ws = wb.create_sheet(KOLCHIN_SHEET[lang])

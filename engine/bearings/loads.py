@@ -57,11 +57,11 @@ from crankbase.errors import Problem, SpecError, Text
 from crankbase.tolerances import ROUNDOFF_RTOL
 from linkage.groups import dot
 
-from .forces import crank_pin_resultant, load_angle_deg
-from .kinematics import guide_direction
+from ..forces import crank_pin_resultant, load_angle_deg
+from ..kinematics import guide_direction
 
 __all__ = ["crank_unit", "to_engine_frame", "to_crank_frame", "cylinder_alpha",
-           "crank_pin_load", "lever_rule", "journal_loads", "journal_torques",
+           "crank_pin_load", "lever_rule", "journal_torques",
            "big_end_load", "piston_pin_load", "load_stats", "LoadStats", "Crankshaft",
            "CrankshaftLoads", "crankshaft_loads", "BearingInputError"]
 
