@@ -430,7 +430,7 @@ def solve(mech: Mechanism, phi, omega=1.0, eps=0.0, *, check=True) -> ChainResul
     res = ChainResult(mech, phi, {d.link: cr},
                       {**{k: _frame_point(z) for k, z in mech.frame.items()},
                        d.joint: cr.point(d.length)}, [])
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for k, grp in enumerate(mech.groups):
             s, links, joints = _solve_group(res, grp)
             if check:
