@@ -3,7 +3,7 @@
 For random mechanisms (hypothesis) of every class II group kind — crank + RRR + RRP (a
 press), crank + RPR + RRP (the shaper), crank + RRR + RRR, two RRP on one crank (a V
 compressor), crank + RPR + PRP (a slider in the swinging lever's slot pinned to the ram:
-guides on a moving link), crank + RRR + RPP (a yoke on the frame), crank + RRR + RPP
+a guide on a moving link; and with the second guide on the crank), crank + RRR + RPP (a yoke on the frame), crank + RRR + RPP
 with the yoke on the rocker and crank + RRR + RRP with the guide on the coupler (moving
 guides) — with random masses, inertias, centres of mass and loads, at random crank
 angles, against tests/chain_judge.py (a global loop-closure solve, finite differences,
@@ -109,6 +109,17 @@ def shaper_prp(p):
                                           + 0.5 * math.pi + 0.3 * p["f2"])))])
 
 
+def prp_two_moving(p):
+    """Crank + RPR + PRP with both guides on moving links: a slider in the lever's slot
+    pinned at B to a slider on the crank's line (two Coriolis terms)."""
+    C = (p["r"] * (1.3 + p["f1"])) * _u(p["a0"])
+    return ch.Mechanism({"O": 0j, "C": C}, ch.Driver(p["r"]),
+                        [ch.RPR(("block", "lever"), ("A", "C"), 0.01 * p["f2"], p["sgn"]),
+                         ch.PRP(("slider", "runner"), ("B",),
+                                (ch.Guide("lever", 0.03j * p["f2"], 0.0),
+                                 ch.Guide("crank", 0.05j, 0.4 * p["f2"])))])
+
+
 def yoke(p):
     """Crank + RRR + RPP: a block at the coupler's point E in the slot of a yoke sliding on
     a frame guide."""
@@ -149,7 +160,8 @@ def rrp_on_coupler(p):
 
 
 BUILDERS = {"press": press, "shaper": shaper, "rrr-rrr": double_rrr,
-            "v-compressor": v_compressor, "shaper-prp": shaper_prp, "yoke": yoke,
+            "v-compressor": v_compressor, "shaper-prp": shaper_prp,
+            "prp-two-moving": prp_two_moving, "yoke": yoke,
             "yoke-on-rocker": yoke_on_rocker, "rrp-on-coupler": rrp_on_coupler}
 
 PARAMS = st.fixed_dictionaries({
