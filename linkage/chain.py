@@ -450,18 +450,23 @@ def _fmt_angles(phi):
 def _check_assembled(mech, k, grp, s, phi):
     m = _assembly_measure(grp, s)
     if m is None:                  # two guides (PRP) or a slot and a guide (RPP) parallel
-        bad = np.abs(np.asarray(s.det, float) * np.ones(phi.shape)) <= ROTATABILITY_RTOL
-    else:
-        h2, sc = m
-        sc = sc if sc is not None else float(np.max(np.abs(h2))) or 1.0
-        bad = np.asarray(h2) < -ROTATABILITY_RTOL * sc
-        bad = bad | ~np.isfinite(h2)
-    if np.any(bad):
-        where = np.atleast_1d(phi)[np.atleast_1d(bad)]
-        raise AssemblyError(Text("errors.linkage.chain.cannot_assemble",
-                                 {"group": structure_label(mech, k),
-                                  "angles": _fmt_angles(where)}),
-                            [float(a) for a in np.degrees(where) % 360.0])
+        det = np.abs(np.asarray(s.det, float) * np.ones(phi.shape))
+        if not np.min(det, initial=np.inf) > ROTATABILITY_RTOL:
+            _cannot_assemble(mech, k, phi, ~(det > ROTATABILITY_RTOL))
+        return
+    h2, sc = m
+    if grp.kind == "RPR":          # h² = |AC|² − offset²; |AC| = 0 gives NaN
+        sc = grp.offset * grp.offset
+    if not np.min(h2, initial=np.inf) >= -ROTATABILITY_RTOL * sc:      # NaN fails too
+        _cannot_assemble(mech, k, phi, ~(np.asarray(h2) >= -ROTATABILITY_RTOL * sc))
+
+
+def _cannot_assemble(mech, k, phi, bad):
+    where = np.atleast_1d(phi)[np.atleast_1d(bad)]
+    raise AssemblyError(Text("errors.linkage.chain.cannot_assemble",
+                             {"group": structure_label(mech, k),
+                              "angles": _fmt_angles(where)}),
+                        [float(a) for a in np.degrees(where) % 360.0])
 
 
 def check_cycle(mech: Mechanism, n=3600, tol=1e-6):
@@ -497,10 +502,11 @@ class Reaction:
     ``kind`` "R" (revolute at the joint ``joint``) or "P" (prismatic).  ``force`` is a
     :class:`~linkage.groups.Vec`; ``at`` its point of application (the pin, or for a
     prismatic pair the point the couple is taken about).  Revolute pairs of the RRR and
-    RRP groups' outer joints carry ``n``, ``t``: the components along the ``on`` link's
-    x axis and 90° ccw from it (the course's R23n, R23t).  Prismatic pairs carry
-    ``normal`` (signed along i·u, u the guide's direction), ``couple`` about ``at``, and
-    ``line``: where along the guide from ``at`` the normal force acts with no couple.
+    RRP groups' outer joints carry ``n``, ``t``: the
+    components along the ``on`` link's x axis and 90° ccw from it (the course's R23n,
+    R23t).  Prismatic pairs carry ``normal`` (signed along i·u, u the guide's
+    direction), ``couple`` about ``at``; :attr:`line` is where along the guide from
+    ``at`` the normal force acts with no couple.
     """
 
     on: str
@@ -513,15 +519,33 @@ class Reaction:
     t: object = None
     normal: object = None
     couple: object = None
-    line: object = None
+
+    @property
+    def line(self):
+        """Prismatic pair: ``couple / normal``, the normal force's line along the guide
+        from ``at``. [m]"""
+        return None if self.normal is None else self.couple / self.normal
+
+
+class _Reactions(dict):
+    """(i, j) → :class:`Reaction` of link i on link j; the reverse order (j, i) is made
+    on first use (the same pair, opposite force and couple)."""
+
+    def __missing__(self, key):
+        r = dict.get(self, (key[1], key[0]))
+        if r is None:
+            raise KeyError(key)
+        self[key] = nr = _neg(r)
+        return nr
 
 
 @dataclass
 class ChainForces:
     """Result of :func:`kinetostatics`: ``reactions`` (the pair (i, j) → :class:`Reaction`
-    of link i on link j, both orders present), ``M_drive`` the driving (balancing)
-    moment Mур on the crank, + ccw [N·m], and ``wrenches`` (link → the resultant of its
-    own loads, weight and inertia, :class:`~linkage.groups.Wrench`)."""
+    of link i on link j; either order may be asked), ``M_drive`` the driving
+    (balancing) moment Mур on the crank, + ccw [N·m], and ``wrenches`` (link → the
+    resultant of its own loads, weight and inertia and of the reactions of the groups
+    attached to it later, :class:`~linkage.groups.Wrench`)."""
 
     reactions: dict
     M_drive: np.ndarray
@@ -535,7 +559,7 @@ class ChainForces:
 def _neg(r: Reaction) -> Reaction:
     return Reaction(r.by, r.on, r.kind, -r.force, r.at, r.joint, None, None,
                     None if r.normal is None else -r.normal,
-                    None if r.couple is None else -r.couple, r.line)
+                    None if r.couple is None else -r.couple)
 
 
 def kinetostatics(res: ChainResult, forces=None, moments=None, gravity=9.81) -> ChainForces:
@@ -570,7 +594,7 @@ def kinetostatics(res: ChainResult, forces=None, moments=None, gravity=9.81) -> 
     ef = {n: list(forces.get(n, ())) for n in mech.link_names}
     em = {n: list(moments.get(n, ())) for n in mech.link_names}
     W = {}
-    out = {}
+    out = _Reactions()
 
     def wrench(n):
         lk = mech.links[n]
@@ -579,10 +603,9 @@ def kinetostatics(res: ChainResult, forces=None, moments=None, gravity=9.81) -> 
 
     def add(r: Reaction):
         out[(r.by, r.on)] = r
-        out[(r.on, r.by)] = nr = _neg(r)
-        if nr.on != FRAME and nr.on in ef and nr.on not in W:
-            if not _is_zero_force(nr.force):
-                ef[nr.on].append((nr.force, nr.at))
+        if r.by != FRAME and r.by in ef and r.by not in W:      # on an earlier link
+            out[(r.on, r.by)] = nr = _neg(r)
+            ef[nr.on].append((nr.force, nr.at))
             if nr.couple is not None:
                 em[nr.on].append(nr.couple)
 
@@ -603,32 +626,31 @@ def kinetostatics(res: ChainResult, forces=None, moments=None, gravity=9.81) -> 
             add(Reaction(l2, owner[A], "R", r.RA, s.link3.origin.z, A, r.RA_n, r.RA_t))
             add(Reaction(l2, l3, "R", r.RB, s.B.z, B))
             add(Reaction(l3, grp.guide.link, "P", r.RG, s.B.z, None, normal=r.RG_n,
-                         couple=r.MG, line=r.MG * (1.0 / r.RG_n)))
+                         couple=r.MG))
         elif grp.kind == "RPR":
             A, C = grp.joints
             r = g.rpr_reactions(s, W2, W3)
-            e = s.lever.e
             add(Reaction(l2, owner[A], "R", r.RA, s.block.origin.z, A))
-            add(Reaction(l2, l3, "P", e.perp() * r.N, s.block.origin.z, None,
-                         normal=r.N, couple=r.M, line=r.line))
-            add(Reaction(l3, owner[C], "R", r.RC, s.lever.origin.z, C, r.RC_n, r.RC_t))
+            add(Reaction(l2, l3, "P", s.lever.e.perp() * r.N, s.block.origin.z, None,
+                         normal=r.N, couple=r.M))
+            add(Reaction(l3, owner[C], "R", r.RC, s.lever.origin.z, C))
         elif grp.kind == "PRP":
             (B,) = grp.joints
             r = g.prp_reactions(s, W2, W3)
             g1, g2 = grp.guides
             add(Reaction(l2, g1.link, "P", s.link2.e.perp() * r.N1, s.B.z, None,
-                         normal=r.N1, couple=r.M1, line=r.M1 * (1.0 / r.N1)))
+                         normal=r.N1, couple=r.M1))
             add(Reaction(l2, l3, "R", r.RB, s.B.z, B))
             add(Reaction(l3, g2.link, "P", s.link3.e.perp() * r.N2, s.B.z, None,
-                         normal=r.N2, couple=r.M2, line=r.M2 * (1.0 / r.N2)))
+                         normal=r.N2, couple=r.M2))
         else:
             (A,) = grp.joints
             r = g.rpp_reactions(s, W2, W3)
             add(Reaction(l2, owner[A], "R", r.RA, s.block.origin.z, A))
             add(Reaction(l2, l3, "P", s.block.e.perp() * r.N, s.block.origin.z, None,
-                         normal=r.N, couple=r.M, line=r.M * (1.0 / r.N)))
+                         normal=r.N, couple=r.M))
             add(Reaction(l3, grp.guide.link, "P", s.yoke.e.perp() * r.NG, s.yoke.origin.z,
-                         None, normal=r.NG, couple=r.MG, line=r.MG * (1.0 / r.NG)))
+                         None, normal=r.NG, couple=r.MG))
     d = mech.driver
     cr = res.links[d.link]
     own = forces.get(d.link, ())
@@ -653,10 +675,6 @@ def kinetostatics(res: ChainResult, forces=None, moments=None, gravity=9.81) -> 
         R12 = -F
     add(Reaction(d.link, FRAME, "R", R12, cr.origin.z, d.pivot))
     return ChainForces(out, M, W)
-
-
-def _is_zero_force(f):
-    return type(f.x) is float and f.x == 0.0 and type(f.y) is float and f.y == 0.0
 
 
 def _joint_owner(mech):

@@ -858,7 +858,8 @@ def rpr(A: PointMotion, C: PointMotion, offset=0.0, assembly: int = 1) -> RPRSol
     s = np.sqrt(np.maximum(h2, 0.0))
     if assembly < 0:
         s = -s
-    e = d * Vec(s, -offset) * (1.0 / D2)
+    # e = (A − C)/(s + i·offset); with no offset s = ±|AC| and e = (A − C)/s
+    e = d * Vec(s, -offset) * (1.0 / D2) if offset else d * (1.0 / s)
     idd = d.perp()
     vr, w = _split(A.v - C.v, e, idd)
     ie = e.perp()
@@ -976,17 +977,14 @@ class RPRReactions:
     ``RA``: force of the preceding link on the block at A; ``RC``: force at C on the lever
     (of the frame or the link C is on); ``N``: the lever's normal force on the block,
     signed along ``i·e`` (90° ccw from the slot); ``M``: the lever's couple on the block
-    about A (the normal force acts on the line ``A + line·e``, ``line = M/N``); the
-    block's force on the lever is ``−N·ie`` (and ``−M``).
+    about A (the normal force acts on the line ``A + (M/N)·e``); the block's force on
+    the lever is ``−N·ie`` (and ``−M``).
     """
 
     RA: Vec
     RC: Vec
     N: np.ndarray
     M: np.ndarray
-    line: np.ndarray
-    RC_n: np.ndarray
-    RC_t: np.ndarray
 
 
 def rpr_reactions(sol: RPRSolution, W2: Wrench, W3: Wrench) -> RPRReactions:
@@ -999,14 +997,13 @@ def rpr_reactions(sol: RPRSolution, W2: Wrench, W3: Wrench) -> RPRReactions:
     lever's force sums give ``RA = −(N·ie + F2)`` and ``RC = N·ie − F3`` [1]_.
     """
     zA, zC = sol.block.origin.z, sol.lever.origin.z
-    e = sol.lever.e
-    ie = e.perp()
+    ie = sol.lever.e.perp()
     M = -W2.moment_about(zA)
     N = (W3.moment_about(zC) - M) * (1.0 / sol.s)
     NF = ie * N
     RA = -(NF + W2.force)
     RC = NF - W3.force
-    return RPRReactions(RA, RC, N, M, M * (1.0 / N), dot(RC, e), cross(e, RC))
+    return RPRReactions(RA, RC, N, M)
 
 
 @dataclass

@@ -102,7 +102,7 @@ def test_today_mechanisms_are_chains_bit_for_bit(name):
 def test_reactions_hold_both_orders_with_opposite_signs():
     phi = np.radians([10.0, 200.0])
     *_, frc = _today_and_chain(loaded_rocker(), phi)
-    for (i, j), r in frc.reactions.items():
+    for (i, j), r in list(frc.reactions.items()):
         back = frc.reactions[(j, i)]
         np.testing.assert_array_equal(back.force.x, -r.force.x)
         assert (r.on, r.by) == (j, i)
