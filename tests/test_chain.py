@@ -204,3 +204,34 @@ def test_shaper_moves_as_the_crank_slotted_lever():
     # at φ = 0 A = (0.1, 0), vA = (0, 1) m/s; the slot direction (0.1, 0.3)/|CA|
     assert res.omega("lever")[1] == pytest.approx(1.0 * 0.1 / ca / ca, rel=1e-12)
     assert s.v_rel[1] == pytest.approx(1.0 * 0.3 / ca, rel=1e-12)
+
+
+def test_published_crank_slotted_lever_extreme_inclination():
+    """A crank-slotted-lever quick-return mechanism with the fixed centres 0.240 m apart
+    and a driving crank of 0.120 m: the slotted bar's inclination with the vertical in an
+    extreme position is 30° (the answer printed to whole degrees in the question "Find
+    the inclination of the slotted bar with the vertical in degrees in the extreme
+    position ...", Machine Kinematics, "Single Slider Crank Chain and its Inversions",
+    https://qna.carrieradda.com/26665/ , choice (a) 30).  Here the lever's angle over a
+    full turn (0.01° steps, refined where its ω changes sign) swings ±30° about the
+    vertical line of centres, and the time ratio of the strokes follows, (180° + 2·30°) /
+    (180° − 2·30°) = 2 (derived, not printed there)."""
+    mech = ch.Mechanism({"O": 0j, "C": -0.240j}, ch.Driver(0.120),
+                        [ch.RPR(("block", "lever"), ("A", "C"))])
+    phi = np.radians(np.arange(0.0, 360.0, 0.01))
+    res = ch.solve(mech, phi, 1.0, 0.0)
+    theta = np.degrees(res.links["lever"].theta)
+    incl = theta - 90.0                       # from the vertical (the slot points up at C)
+    assert round(float(incl.max())) == 30 and round(float(-incl.min())) == 30
+    # the extremes exactly: where the crank is perpendicular to the slot (ω_lever = 0)
+    w = res.omega("lever")
+    turns = np.flatnonzero(np.sign(w[:-1]) != np.sign(w[1:]))
+    assert len(turns) == 2
+    ext = []
+    for k in turns:                            # linear refinement of the sign change
+        p = phi[k] + (phi[k + 1] - phi[k]) * w[k] / (w[k] - w[k + 1])
+        ext.append((p, float(np.degrees(ch.solve(mech, [p]).links["lever"].theta[0])) - 90.0))
+    assert sorted(round(a, 6) for _, a in ext) == [-30.0, 30.0]
+    work = math.degrees((ext[1][0] - ext[0][0]) % (2 * math.pi))
+    ratio = max(work, 360 - work) / min(work, 360 - work)
+    assert ratio == pytest.approx(2.0, rel=1e-6)
