@@ -249,8 +249,15 @@ def _structure_problems(mech):
             if gd.link != FRAME and gd.link not in links_done:
                 probs.append(Problem(where, Text("errors.linkage.chain.unsolved_guide",
                                                  {"group": label, "link": gd.link})))
+        for j in _new_joints(grp):
+            if j in solved:
+                probs.append(Problem(where, Text("errors.linkage.chain.joint_twice",
+                                                 {"group": label, "joint": j})))
         solved.update(_new_joints(grp))
         for ln in grp.links:
+            if ln == FRAME:
+                probs.append(Problem(where, Text("errors.linkage.chain.frame_in_group",
+                                                 {"group": label})))
             links_done.add(ln)
             solved.update(mech.links[ln].points)
     return probs

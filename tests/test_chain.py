@@ -159,6 +159,15 @@ def test_a_joint_that_does_not_exist_and_a_guide_not_yet_solved():
     assert "guide of the link s2, which is not solved before it" in msg
 
 
+def test_a_joint_named_twice_and_the_frame_as_a_group_link():
+    with pytest.raises(SpecError, match="names its new joint C, a name already given"):
+        _shaper(groups=[ch.RPR(("block", "lever"), ("A", "C")),
+                        ch.RRP(("rod", "ram"), ("D", "C"), 0.25, ch.Guide("frame", 0.25j))])
+    with pytest.raises(SpecError, match="lists the frame among its two moving links"):
+        _shaper(groups=[ch.RPR(("block", "lever"), ("A", "C")),
+                        ch.RRP(("rod", "frame"), ("D", "E"), 0.25, ch.Guide("frame", 0.25j))])
+
+
 def test_unknown_link_and_pivot():
     with pytest.raises(SpecError, match="not a link of the mechanism"):
         _shaper(links={"rocker": ch.Link(1.0)})
