@@ -244,3 +244,19 @@ def test_published_crank_slotted_lever_extreme_inclination():
     work = math.degrees((ext[1][0] - ext[0][0]) % (2 * math.pi))
     ratio = max(work, 360 - work) / min(work, 360 - work)
     assert ratio == pytest.approx(2.0, rel=1e-6)
+
+
+def test_rrp_on_a_guide_of_the_frame_equals_todays_rrp():
+    """linkage.groups.rrp_guided (a guide on any link, with the Coriolis term) on the
+    frame is today's rrp to round-off, on both branches and an offset turned guide."""
+    from linkage import groups as g
+    phi = np.radians(np.arange(0.0, 360.0, 7.5))
+    cr = g.crank(phi, -23.0, 40.0)
+    A = cr.point(0.07)
+    for asm in (1, -1):
+        old = g.rrp(A, 0.31, 0.02 - 0.01j, 0.6, 0.015, asm)
+        new = g.rrp_guided(A, 0.31, g.FRAME, 0.02 - 0.01j, 0.6, 0.015, asm)
+        for a, b in ((old.s, new.s), (old.v, new.v), (old.a, new.a),
+                     (old.link3.omega, new.link3.omega), (old.link3.eps, new.link3.eps),
+                     (old.B.a.x, new.B.a.x), (old.B.a.y, new.B.a.y)):
+            np.testing.assert_allclose(b, a, rtol=1e-12, atol=1e-12 * np.max(np.abs(a)))
