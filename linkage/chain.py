@@ -181,6 +181,14 @@ class Mechanism:
             raise SpecError([Problem(f"groups[{k}]", Text("errors.linkage.chain.kind",
                                                           {"valid": ", ".join(_KINDS)}))
                              for k in bad])
+        bad = [(k, grp) for k, grp in enumerate(self.groups)
+               if len(tuple(grp.links)) != 2 or len(tuple(grp.joints)) != _ARITY[grp.kind]
+               or (grp.kind == "PRP" and len(tuple(grp.guides)) != 2)]
+        if bad:
+            raise SpecError([Problem(f"groups[{k}]", Text(
+                "errors.linkage.chain.arity",
+                {"kind": grp.kind, "joints": _ARITY[grp.kind],
+                 "names": _JOINT_NAMES[grp.kind]})) for k, grp in bad])
         self.links = {n: self.links.get(n, Link()) for n in self.link_names}
         _check_structure(self)
 
@@ -277,6 +285,10 @@ def _check_structure(mech):
 
 
 _KINDS = ("RRR", "RRP", "RPR", "PRP", "RPP")
+#: How many joint names each group kind takes, and which.
+_ARITY = {"RRR": 3, "RRP": 2, "RPR": 2, "PRP": 1, "RPP": 1}
+_JOINT_NAMES = {"RRR": "(A, B, C)", "RRP": "(A, B)", "RPR": "(A, C)", "PRP": "(B,)",
+                "RPP": "(A,)"}
 
 
 def _outer_joints(grp):

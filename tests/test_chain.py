@@ -168,6 +168,14 @@ def test_a_joint_named_twice_and_the_frame_as_a_group_link():
                         ch.RRP(("rod", "frame"), ("D", "E"), 0.25, ch.Guide("frame", 0.25j))])
 
 
+def test_a_group_with_the_wrong_number_of_joints():
+    with pytest.raises(SpecError) as e:
+        _shaper(groups=[ch.RPR(("block", "lever"), ("A", "C")),
+                        ch.RRR(("rod", "ram"), ("D", "E"), (0.2, 0.3))])
+    assert "groups[1]: a group RRR has two links and 3 joint name(s) (A, B, C)" in str(e.value)
+    assert "у группы RRR два звена" in "\n".join(e.value.lines("ru"))
+
+
 def test_unknown_link_and_pivot():
     with pytest.raises(SpecError, match="not a link of the mechanism"):
         _shaper(links={"rocker": ch.Link(1.0)})
