@@ -60,6 +60,15 @@ def press(p):
                         {"rocker": ch.Link(points={"D": D})})
 
 
+def press_at_b(p):
+    """Crank + RRR + RRP with the rod pinned at the dyad's inner joint B (a pin shared by
+    three links: the rod's pair is with the rocker, the chain's convention)."""
+    mech = press(p)
+    g0, g1 = mech.groups
+    return ch.Mechanism(mech.frame, mech.driver,
+                        [g0, ch.RRP(g1.links, ("B", "E"), g1.length, g1.guide, g1.assembly)])
+
+
 def shaper(p):
     """Crank + RPR (block in the slotted lever) + RRP (rod from the lever's tip D to the
     ram on a guide)."""
@@ -159,7 +168,7 @@ def rrp_on_coupler(p):
                                 ch.Guide("coupler", 0.01j, 0.1 * p["f2"], 0.02), p["sgn2"])])
 
 
-BUILDERS = {"press": press, "shaper": shaper, "rrr-rrr": double_rrr,
+BUILDERS = {"press": press, "press-at-B": press_at_b, "shaper": shaper, "rrr-rrr": double_rrr,
             "v-compressor": v_compressor, "shaper-prp": shaper_prp,
             "prp-two-moving": prp_two_moving, "yoke": yoke,
             "yoke-on-rocker": yoke_on_rocker, "rrp-on-coupler": rrp_on_coupler}
