@@ -183,11 +183,11 @@ class Judge:
         at = []
         for p in self.pairs:
             if p[0] == "R":
-                _, a, pa, b, pb = p
+                _, a, _, b, pb = p
                 z = self.world(q, b, pb)
                 basis = [(1.0 + 0j, 0.0), (1j, 0.0)]       # unit force components
             else:
-                _, a, ga, alpha, b, pb = p
+                _, a, _, alpha, b, pb = p
                 z = self.world(q, b, pb)
                 _, ta = self.pose(q, a)
                 basis = [(1j * _e(ta + alpha), 0.0), (0j, 1.0)]   # normal force, couple

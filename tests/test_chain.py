@@ -56,7 +56,7 @@ def _today_and_chain(data, phi):
 @pytest.mark.parametrize("name", sorted(SPECS))
 def test_today_mechanisms_are_chains_bit_for_bit(name):
     phi = np.radians(np.array([0.0, 17.0, 95.5, 181.0, 250.0, 333.3]))
-    spec, K, F, chain, res, frc = _today_and_chain(SPECS[name](), phi)
+    spec, K, F, _, res, frc = _today_and_chain(SPECS[name](), phi)
     out = spec.link_names[2]
     same = np.testing.assert_array_equal
     same(np.multiply(res.links["coupler"].theta, _DEG), K["theta3_deg"])
