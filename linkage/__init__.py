@@ -7,8 +7,10 @@ Public API::
                                                   # (DataFrames), .summary (typed), ...
     linkage.plots.plot_driving_moment(linkage.full_turn(spec), ax=ax)   # draw on an Axes
 
-The group routines (driver, RRR and RRP dyads, their kinetostatics; the one
-implementation) are in :mod:`linkage.groups`; four-bar geometry in :mod:`linkage.fourbar`;
+The group routines (driver, the class II groups RRR, RRP, RPR, PRP, RPP, their
+kinetostatics; the one implementation) are in :mod:`linkage.groups`; any planar linkage of
+those groups as data (a driver and an ordered list of groups: ``solve``,
+``kinetostatics``, the structure formula and Chebyshev's mobility) in :mod:`linkage.chain`; four-bar geometry in :mod:`linkage.fourbar`;
 the useful resistance in :mod:`linkage.loads`; the mechanisms in
 :mod:`linkage.mechanisms`.  This package never imports matplotlib or openpyxl (reports and
 plots import them when called).

@@ -1,4 +1,4 @@
-"""Assur-group routines: the driver (crank), the RRR and the RRP dyad.
+"""Assur-group routines: the driver (crank) and the class II groups RRR, RRP, RPR, PRP, RPP.
 
 Kinematics and kinetostatics of each basic group, closed form and vectorised over arrays
 of crank positions.  Everything is SI (m, s, rad, kg, N, N·m).  These are the only
@@ -28,6 +28,7 @@ References
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -38,6 +39,9 @@ __all__ = [
     "crank", "rrr", "rrp", "RRRSolution", "RRPSolution",
     "inertia_load", "link_wrench", "rrr_reactions", "rrp_reactions", "driver_reactions",
     "RRRReactions", "RRPReactions", "DriverReactions",
+    "coincident", "rrp_guided", "rpr", "prp", "rpp", "RPRSolution", "PRPSolution",
+    "RPPSolution", "rpr_reactions", "prp_reactions", "rpp_reactions", "RPRReactions",
+    "PRPReactions", "RPPReactions", "FRAME",
 ]
 
 
@@ -726,3 +730,341 @@ def driver_reactions(crank_link: LinkMotion, zA, R32, W2: Wrench) -> DriverReact
     R12 = -(R32 + W2.force)
     M = -cross(Vec.of(zA) - zO, R32) - W2.moment_about(zO)
     return DriverReactions(R12, M)
+
+
+# ------------------------------------------------------- groups with prismatic pairs
+#
+# A prismatic pair's guide belongs to a link (the frame or a moving link): a point P on
+# it slides along a line of that link.  With Pj the point of the guide's link that
+# coincides with P at the instant, and x the sliding coordinate along the guide's unit
+# vector u (which turns with the link, ω_j, ε_j):
+#
+#     v_P = v_Pj + ẋ·u,    a_P = a_Pj + ẍ·u + 2·ω_j·ẋ·(i·u)      (Coriolis: 2 ω_j × v_rel).
+
+#: The frame as a link at rest (origin 0, x axis along +x); its points are constants.
+FRAME = LinkMotion(PointMotion(_ZERO, _ZERO, _ZERO), Vec(1.0, 0.0), 0.0, 0.0)
+
+
+def coincident(link: LinkMotion, z) -> PointMotion:
+    """Motion of the point of ``link`` that is at the global position ``z`` at the
+    instant: ``v = v0 + iω·(z − z0)``, ``a = a0 + (iε − ω²)·(z − z0)``. [m, m/s, m/s²]"""
+    z = Vec.of(z)
+    o = link.origin
+    r = z - o.z
+    ir = r.perp()
+    w = link.omega
+    return PointMotion(z, o.v + ir * w, o.a + ir * link.eps + r * (-(w * w)))
+
+
+def _guide_line(link: LinkMotion, point=0j, angle=0.0, offset=0.0):
+    """World point and unit direction of a guide fixed on ``link``: the line through the
+    local ``point`` [m] at the local ``angle`` [rad], shifted by ``offset`` [m] to the
+    left of its direction."""
+    u = link.e * complex(math.cos(angle), math.sin(angle))
+    G = link.origin.z + link.e * complex(point)
+    if offset:
+        G = G + u.perp() * offset
+    return G, u
+
+
+def rrp_guided(A: PointMotion, L: float, guide: LinkMotion, point=0j, angle=0.0,
+               offset=0.0, assembly: int = 1) -> RRPSolution:
+    """Kinematics of the RRP dyad whose guide is a line of a moving link (or the frame).
+
+    Like :func:`rrp` (rod 3 = AB from a moving joint A, slider 4 at B), but the guide is
+    fixed on the link ``guide``: the line through its local ``point`` at local ``angle``
+    [rad], shifted by ``offset`` [m] to the left of its direction.  The slider turns with
+    the guide's link; ``s``, ``v``, ``a`` are the slider's coordinate on the guide (from
+    the guide point), and its velocity and acceleration *relative to the guide*.
+
+    Notes
+    -----
+    ``B = G + s·u``, ``|B − A| = L``: circle–line intersection as in :func:`rrp`.  With
+    ``B_j`` the guide's point under B: ``v·u − iω3(B − A) = v_A − v_Bj`` and
+    ``a·u − iε3(B − A) = a_A − ω3²(B − A) − a_Bj − 2ω_j·v·iu`` (Coriolis) [1]_.
+    """
+    G, u = _guide_line(guide, point, angle, offset)
+    rel = (A.z - G) * u.conj()
+    h2 = L * L - rel.y * rel.y
+    h = np.sqrt(np.maximum(h2, 0.0))
+    s = rel.x + h if assembly > 0 else rel.x - h
+    zB = G + u * s
+    Bj = coincident(guide, zB)
+    r3 = zB - A.z
+    ir3 = r3.perp()
+    v, w3 = _split(A.v - Bj.v, u, -ir3)
+    iu = u.perp()
+    rhs = A.a - r3 * (w3 * w3) - Bj.a - iu * (2.0 * guide.omega * v)
+    a, e3 = _split(rhs, u, -ir3)
+    B = PointMotion(zB, Bj.v + u * v, Bj.a + u * a + iu * (2.0 * guide.omega * v))
+    link3 = LinkMotion(A, r3 * (1.0 / L), w3, e3)
+    link4 = LinkMotion(B, u, guide.omega, guide.eps)
+    link3._points[complex(L)] = B
+    return RRPSolution(link3, link4, B, s, v, a, h2)
+
+
+@dataclass
+class RPRSolution:
+    """Result of :func:`rpr` (the crank-slotted-lever group).
+
+    ``block`` (link 2, the slider) has its origin at A and its x axis along the slot;
+    ``lever`` (link 3, the slotted lever) has its origin at its pivot C and the same x
+    axis (they turn together).  ``s``, ``v_rel``, ``a_rel``: the block's coordinate along
+    the slot from C's foot, and its velocity and acceleration relative to the lever;
+    ``A_lever``: the lever's point under A; ``coriolis``: ``2ω3·v_rel·(i·e)``.  ``h2`` is
+    ``|AC|² − offset²`` (negative: cannot be assembled), ``det`` is ``s`` (zero where A
+    passes over C: a dead position).
+    """
+
+    block: LinkMotion
+    lever: LinkMotion
+    s: np.ndarray
+    v_rel: np.ndarray
+    a_rel: np.ndarray
+    A_lever: PointMotion
+    coriolis: Vec
+    h2: np.ndarray
+    det: np.ndarray
+
+
+def rpr(A: PointMotion, C: PointMotion, offset=0.0, assembly: int = 1) -> RPRSolution:
+    """Kinematics of the RPR group: a block pinned at A slides in the slot of a lever
+    pivoted at C (the crank-slotted-lever, «кулисный механизм», 导杆机构).
+
+    Parameters
+    ----------
+    A, C : PointMotion
+        The block's pin (on a preceding link) and the lever's pivot (frame or a link).
+    offset : float
+        Distance of the slot's line from C, + to the left of the slot direction. [m]
+    assembly : {+1, -1}
+        Sign of the block's coordinate ``s`` along the slot (+1: the slot's x axis points
+        from C towards A).
+
+    Returns
+    -------
+    RPRSolution
+
+    Notes
+    -----
+    ``A − C = (s + i·offset)·e`` gives ``s = ±√(|AC|² − offset²)`` and
+    ``e = (A − C)/(s + i·offset)``.  Velocity: ``v_rel·e + ω·i(A − C) = v_A − v_C``;
+    acceleration: ``a_rel·e + ε·i(A − C) = a_A − a_C + ω²(A − C) − 2ω·v_rel·ie``, the last
+    term the Coriolis acceleration of the block relative to the lever [1]_.
+    """
+    d = A.z - C.z
+    D2 = dot(d, d)
+    h2 = D2 - offset * offset
+    s = np.sqrt(np.maximum(h2, 0.0))
+    if assembly < 0:
+        s = -s
+    # e = (A − C)/(s + i·offset); with no offset s = ±|AC| and e = (A − C)/s
+    e = d * Vec(s, -offset) * (1.0 / D2) if offset else d * (1.0 / s)
+    idd = d.perp()
+    vr, w = _split(A.v - C.v, e, idd)
+    ie = e.perp()
+    cor = ie * (2.0 * w * vr)
+    ar, eps = _split(A.a - C.a + d * (w * w) - cor, e, idd)
+    lever = LinkMotion(C, e, w, eps)
+    block = LinkMotion(A, e, w, eps)
+    A3 = PointMotion(A.z, C.v + idd * w, C.a + idd * eps - d * (w * w))
+    return RPRSolution(block, lever, s, vr, ar, A3, cor, h2, s)
+
+
+@dataclass
+class PRPSolution:
+    """Result of :func:`prp`: two sliders pinned together at B, each on a guide.
+
+    ``link2`` slides on the first guide (origin B, x axis along it, turning with the
+    first guide's link), ``link3`` on the second.  ``s1, v1, a1`` and ``s2, v2, a2``:
+    coordinates of B on each guide (from its point) and its velocity and acceleration
+    relative to it.  ``det`` is ``u1 × u2`` (zero: parallel guides, no solution).
+    """
+
+    link2: LinkMotion
+    link3: LinkMotion
+    B: PointMotion
+    s1: np.ndarray
+    v1: np.ndarray
+    a1: np.ndarray
+    s2: np.ndarray
+    v2: np.ndarray
+    a2: np.ndarray
+    det: np.ndarray
+
+
+def prp(guide1: LinkMotion, guide2: LinkMotion, point1=0j, angle1=0.0, point2=0j,
+        angle2=0.0) -> PRPSolution:
+    """Kinematics of the PRP group: B is the intersection of two guides, each a line of a
+    link (``point``, ``angle`` local to it, as in :func:`rrp_guided`).
+
+    Notes
+    -----
+    ``G1 + s1·u1 = G2 + s2·u2`` (line–line intersection, one solution); velocity
+    ``v1·u1 − v2·u2 = v_B2 − v_B1``; acceleration
+    ``a1·u1 − a2·u2 = a_B2 − a_B1 + 2ω_2·v2·iu2 − 2ω_1·v1·iu1`` (the two Coriolis
+    terms), with ``B_k`` the point of guide k's link under B [1]_.
+    """
+    G1, u1 = _guide_line(guide1, point1, angle1)
+    G2, u2 = _guide_line(guide2, point2, angle2)
+    s1, s2 = _split(G2 - G1, u1, -u2)
+    zB = G1 + u1 * s1
+    B1, B2 = coincident(guide1, zB), coincident(guide2, zB)
+    v1, v2 = _split(B2.v - B1.v, u1, -u2)
+    iu1, iu2 = u1.perp(), u2.perp()
+    c1, c2 = iu1 * (2.0 * guide1.omega * v1), iu2 * (2.0 * guide2.omega * v2)
+    a1, a2 = _split(B2.a - B1.a + c2 - c1, u1, -u2)
+    B = PointMotion(zB, B1.v + u1 * v1, B1.a + u1 * a1 + c1)
+    return PRPSolution(LinkMotion(B, u1, guide1.omega, guide1.eps),
+                       LinkMotion(B, u2, guide2.omega, guide2.eps),
+                       B, s1, v1, a1, s2, v2, a2, cross(u1, u2))
+
+
+@dataclass
+class RPPSolution:
+    """Result of :func:`rpp`: a block pinned at A slides in the slot of a yoke which
+    slides on a guide (the Scotch yoke, «кулисный механизм с поступательной кулисой»).
+
+    ``block`` (link 2): origin A, x axis along the slot; ``yoke`` (link 3): origin on the
+    guide line (``G + s_guide·u``), x axis along the guide; both turn with the guide's
+    link.  ``s_slot, v_slot, a_slot``: A's coordinate along the slot from the yoke's
+    origin, relative velocity and acceleration; ``s_guide, v_guide, a_guide``: the
+    yoke's on the guide.  ``det`` is ``u × w`` = sin(slot angle).
+    """
+
+    block: LinkMotion
+    yoke: LinkMotion
+    s_slot: np.ndarray
+    v_slot: np.ndarray
+    a_slot: np.ndarray
+    s_guide: np.ndarray
+    v_guide: np.ndarray
+    a_guide: np.ndarray
+    det: object
+
+
+def rpp(A: PointMotion, guide: LinkMotion, point=0j, angle=0.0, slot_angle=0.5 * math.pi
+        ) -> RPPSolution:
+    """Kinematics of the RPP group: block 2 pinned at A slides in the slot of yoke 3, the
+    yoke slides on a guide of ``guide`` (local ``point``, ``angle``); the slot makes
+    ``slot_angle`` [rad] with the guide (90°: the Scotch yoke).
+
+    Notes
+    -----
+    ``A = G + y·u + x·w`` with ``w = u·e^{i·slot_angle}``: one 2×2 solve for y, x; the
+    velocities and accelerations of the same form relative to the guide's link, with
+    the Coriolis term ``2ω_j·i(ẏu + ẋw)`` [1]_.
+    """
+    G, u = _guide_line(guide, point, angle)
+    w = u * complex(math.cos(slot_angle), math.sin(slot_angle))
+    y, x = _split(A.z - G, u, w)
+    zO = G + u * y
+    Aj, Oj = coincident(guide, A.z), coincident(guide, zO)
+    vy, vx = _split(A.v - Aj.v, u, w)
+    wj = guide.omega
+    cor = (u * vy + w * vx).perp() * (2.0 * wj)
+    ay, ax = _split(A.a - Aj.a - cor, u, w)
+    iu = u.perp()
+    O = PointMotion(zO, Oj.v + u * vy, Oj.a + u * ay + iu * (2.0 * wj * vy))
+    return RPPSolution(LinkMotion(A, w, wj, guide.eps), LinkMotion(O, u, wj, guide.eps),
+                       x, vx, ax, y, vy, ay, cross(u, w))
+
+
+@dataclass
+class RPRReactions:
+    """Reactions of an RPR group (block 2 at A, lever 3 pivoted at C). [N, N·m]
+
+    ``RA``: force of the preceding link on the block at A; ``RC``: force at C on the lever
+    (of the frame or the link C is on); ``N``: the lever's normal force on the block,
+    signed along ``i·e`` (90° ccw from the slot); ``M``: the lever's couple on the block
+    about A (the normal force acts on the line ``A + (M/N)·e``); the block's force on
+    the lever is ``−N·ie`` (and ``−M``).
+    """
+
+    RA: Vec
+    RC: Vec
+    N: np.ndarray
+    M: np.ndarray
+
+
+def rpr_reactions(sol: RPRSolution, W2: Wrench, W3: Wrench) -> RPRReactions:
+    """Kinetostatics of the RPR group.
+
+    Notes
+    -----
+    The block's moments about A give the couple ``M = −M2(A)``; the lever's moments about
+    C, ``M3(C) − N·s − M = 0`` (``(A − C) × ie = s``), give ``N``; the block's and the
+    lever's force sums give ``RA = −(N·ie + F2)`` and ``RC = N·ie − F3`` [1]_.
+    """
+    zA, zC = sol.block.origin.z, sol.lever.origin.z
+    ie = sol.lever.e.perp()
+    M = -W2.moment_about(zA)
+    N = (W3.moment_about(zC) - M) * (1.0 / sol.s)
+    NF = ie * N
+    RA = -(NF + W2.force)
+    RC = NF - W3.force
+    return RPRReactions(RA, RC, N, M)
+
+
+@dataclass
+class PRPReactions:
+    """Reactions of a PRP group (links 2 and 3 pinned at B). [N, N·m]
+
+    ``N1``, ``M1``: the first guide's normal force on link 2 (along ``i·u1``) and its
+    couple about B; ``N2``, ``M2`` likewise on link 3; ``RB``: the force of link 3 on
+    link 2 at B.
+    """
+
+    N1: np.ndarray
+    M1: np.ndarray
+    N2: np.ndarray
+    M2: np.ndarray
+    RB: Vec
+
+
+def prp_reactions(sol: PRPSolution, W2: Wrench, W3: Wrench) -> PRPReactions:
+    """Kinetostatics of the PRP group: the force polygon of both links gives
+    ``N1·iu1 + N2·iu2 = −(F2 + F3)``; each link's moments about B give its couple;
+    link 2's force sum gives ``RB = −(F2 + N1·iu1)`` [1]_."""
+    zB = sol.B.z
+    iu1, iu2 = sol.link2.e.perp(), sol.link3.e.perp()
+    N1, N2 = _split(-(W2.force + W3.force), iu1, iu2)
+    RB = -(W2.force + iu1 * N1)
+    return PRPReactions(N1, -W2.moment_about(zB), N2, -W3.moment_about(zB), RB)
+
+
+@dataclass
+class RPPReactions:
+    """Reactions of an RPP group (block 2 at A, yoke 3 on the guide). [N, N·m]
+
+    ``RA``: force of the preceding link on the block at A; ``N``, ``M``: the yoke's normal
+    force on the block (along ``i·w``, w the slot direction) and its couple about A;
+    ``NG``, ``MG``: the guide's normal force on the yoke (along ``i·u``) and its couple
+    about the yoke's origin.
+    """
+
+    RA: Vec
+    N: np.ndarray
+    M: np.ndarray
+    NG: np.ndarray
+    MG: np.ndarray
+
+
+def rpp_reactions(sol: RPPSolution, W2: Wrench, W3: Wrench) -> RPPReactions:
+    """Kinetostatics of the RPP group.
+
+    Notes
+    -----
+    The yoke's force sum ``NG·iu − N·iw = −F3`` gives both normal forces; the block's
+    moments about A its couple ``M = −M2(A)``; the block's force sum
+    ``RA = −(N·iw + F2)``; the yoke's moments about its origin O3 the guide's couple
+    ``MG = −M3(O3) + (A − O3) × (N·iw) + M`` [1]_.
+    """
+    zA, zO = sol.block.origin.z, sol.yoke.origin.z
+    iw, iu = sol.block.e.perp(), sol.yoke.e.perp()
+    NG, N = _split(-W3.force, iu, -iw)
+    M = -W2.moment_about(zA)
+    NF = iw * N
+    RA = -(NF + W2.force)
+    MG = -W3.moment_about(zO) + cross(zA - zO, NF) + M
+    return RPPReactions(RA, N, M, NG, MG)

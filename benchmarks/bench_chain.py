@@ -1,0 +1,188 @@
+"""Speed of linkage.chain on a six-bar: the crank-slotted-lever shaper (crank + RPR + RRP)
+with masses, inertias, weight and a cutting force, kinematics plus kinetostatics at
+1,000,000 crank positions, on one core, beside pylinkage.
+
+    python benchmarks/bench_chain.py [--positions N] [--pylinkage-positions M] [--wall]
+
+Times: best of several repeats of the CPU time of this process (``time.process_time``),
+one thread (BLAS/OpenMP pinned to one); ``--wall`` times wall-clock instead.
+
+* chain, kinematics: :func:`linkage.chain.solve` (driver, RPR, RRP) chunk by chunk
+  (``linkage.analysis.CHUNK`` positions), every joint's and link's motion kept as arrays;
+* chain, kinematics + forces: the same plus :func:`linkage.chain.kinetostatics` with the
+  links' weight and inertia, a cutting force on the ram opposing its motion and a
+  moment on the lever: every pair's reaction and the driving moment Mур;
+* pylinkage (optional, ``pip install pylinkage``): the same shaper's kinematics
+  (positions, velocities, accelerations of its joints) by ``Crank`` → ``FixedDyad`` (the
+  lever's tip D on the line C→A) → ``RRPDyad`` (the ram's pin E on its guide):
+  ``step_fast_with_kinematics`` and ``step_with_derivatives``, the faster one is the
+  reference.  pylinkage computes no forces.  It runs on fewer positions and its time
+  per position is extrapolated; its E is checked against ours.
+
+Prints positions per second and the ratios.  No assertions on time.
+"""
+from __future__ import annotations
+
+import os
+
+for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS",
+             "NUMEXPR_NUM_THREADS", "VECLIB_MAXIMUM_THREADS"):
+    os.environ[_var] = "1"
+
+import argparse  # noqa: E402
+import math  # noqa: E402
+import time  # noqa: E402
+import warnings  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+CLOCK = time.process_time
+
+#: The shaper: crank OA = 0.11 m, lever pivot C 0.38 m below O, lever CD = 0.54 m, rod
+#: DE = 0.135 m, the ram's guide 0.53 m above C (a quick-return ratio of about 1.4).
+OA, OC, CD, DE, H = 0.11, 0.38, 0.54, 0.135, 0.53
+OMEGA = 6.7
+
+
+def shaper():
+    from linkage import chain as ch
+    return ch.Mechanism(
+        {"O": 0j, "C": -OC * 1j}, ch.Driver(OA),
+        [ch.RPR(("block", "lever"), ("A", "C")),
+         ch.RRP(("rod", "ram"), ("D", "E"), DE, ch.Guide("frame", (H - OC) * 1j, math.pi), 1)],
+        {"crank": ch.Link(2.0, 0.01, 0.02 + 0j),
+         "block": ch.Link(1.0, 0.002),
+         "lever": ch.Link(20.0, 0.5, 0.27 + 0j, {"D": complex(CD)}),
+         "rod": ch.Link(3.0, 0.01, 0.0675 + 0j),
+         "ram": ch.Link(60.0, 0.0, 0.05 + 0.02j)}, "shaper")
+
+
+def best_of(fn, repeat):
+    fn()
+    times = []
+    for _ in range(repeat):
+        t0 = CLOCK()
+        fn()
+        times.append(CLOCK() - t0)
+    return min(times)
+
+
+def run_chain(mech, phi, forces=True):
+    """The chain chunk by chunk; returns the ram's pin E (x, y), (vx, vy), (ax, ay) and Mур."""
+    from linkage import chain as ch
+    from linkage.analysis import CHUNK
+    from linkage.groups import Vec
+
+    n = len(phi)
+    E = np.empty((6, n))
+    M = np.empty(n)
+    for a in range(0, n, CHUNK):
+        b = min(n, a + CHUNK)
+        res = ch.solve(mech, phi[a:b], OMEGA, 0.0)
+        P = res.joints["E"]
+        E[0, a:b], E[1, a:b] = P.z.x, P.z.y
+        E[2, a:b], E[3, a:b] = P.v.x, P.v.y
+        E[4, a:b], E[5, a:b] = P.a.x, P.a.y
+        if forces:
+            v = res.solutions[1].v                        # the ram's velocity on its guide
+            cut = np.where(v > 0.0, -5000.0, 5000.0)      # the cutting force opposes it
+            ram = res.links["ram"]
+            frc = ch.kinetostatics(res, {"ram": [(Vec(cut * ram.e.x, cut * ram.e.y), P.z)]},
+                                   {"lever": [25.0]}, 9.81)
+            M[a:b] = frc.M_drive
+    return E, M
+
+
+def pylinkage_run(n_pl, phi, ours):
+    try:
+        import pylinkage
+        from pylinkage.actuators import Crank
+        from pylinkage.components import Ground
+        from pylinkage.dyads import FixedDyad, RRPDyad
+        from pylinkage.simulation import Linkage
+    except ImportError:
+        return None
+    step = phi[1] - phi[0]
+    y = H - OC
+
+    def build():
+        O = Ground(0.0, 0.0, name="O")
+        C = Ground(0.0, -OC, name="C")
+        L1 = Ground(-1.0, y, name="L1")
+        L2 = Ground(1.0, y, name="L2")
+        cr = Crank(anchor=O, radius=OA, angular_velocity=step, initial_angle=phi[0] - step,
+                   name="A")
+        D = FixedDyad(C, cr.output, distance=CD, angle=0.0, name="D")
+        x0 = float(ours[0, 0])
+        E = RRPDyad(D, L1, L2, distance=DE, x=x0, y=y, name="E")
+        mech = Linkage([O, C, L1, L2, cr, D, E], name="shaper")
+        mech.set_input_velocity(cr, omega=OMEGA, alpha=0.0)
+        return mech
+
+    def fast():
+        pos, vel, acc = build().step_fast_with_kinematics(iterations=n_pl)
+        return pos[:, -1], vel[:, -1], acc[:, -1]
+
+    def derivatives():
+        out = list(build().step_with_derivatives(iterations=n_pl))
+        return (np.array([p[-1] for p, _, _ in out], float),
+                np.array([v[-1] for _, v, _ in out], float),
+                np.array([a[-1] for _, _, a in out], float))
+
+    results = []
+    for label, fn in (("step_fast_with_kinematics", fast),
+                      ("step_with_derivatives", derivatives)):
+        try:
+            t = best_of(fn, 2)
+            got = fn()
+        except (AttributeError, TypeError, ImportError, ValueError) as exc:
+            print(f"  pylinkage {label}: not available ({type(exc).__name__}: {exc})")
+            continue
+        dev = [float(np.max(np.abs(np.asarray(g, float) - o[:n_pl])))
+               for g, o in zip(got, (ours[0:2].T, ours[2:4].T, ours[4:6].T))]
+        print(f"  pylinkage {label:26s} {n_pl:>9,d} positions  {n_pl / t / 1e6:8.3f} M/s   "
+              f"max |ΔE| {dev[0]:.1e} m, |Δv_E| {dev[1]:.1e} m/s, |Δa_E| {dev[2]:.1e} m/s²")
+        results.append((t / n_pl, label))
+    if not results:
+        return None
+    t, label = min(results)
+    return label, t, getattr(pylinkage, "__version__", "?")
+
+
+def main():
+    global CLOCK
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--positions", type=int, default=1_000_000)
+    ap.add_argument("--pylinkage-positions", type=int, default=20_000)
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--wall", action="store_true")
+    args = ap.parse_args()
+    if args.wall:
+        CLOCK = time.perf_counter
+    from linkage import chain as ch
+
+    mech = shaper()
+    n = args.positions
+    phi = 0.3 + (2 * math.pi / n) * np.arange(n)
+    print(f"six-bar shaper {ch.structure_formula(mech, kinds=True)}, W = {ch.mobility(mech)[0]}, "
+          f"{n:,d} positions, clock: {'wall' if args.wall else 'process CPU'}")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        t_kin = best_of(lambda: run_chain(mech, phi, forces=False), args.repeat)
+        t_all = best_of(lambda: run_chain(mech, phi, forces=True), args.repeat)
+    E, M = run_chain(mech, phi)
+    print(f"  chain kinematics             {n:>9,d} positions  {n / t_kin / 1e6:8.3f} M/s")
+    print(f"  chain kinematics + forces    {n:>9,d} positions  {n / t_all / 1e6:8.3f} M/s"
+          f"   (target ≥ 2.5 M/s; Mур from {M.min():.1f} to {M.max():.1f} N·m)")
+    print("\npylinkage, the same shaper's kinematics (joints only, no forces):")
+    pl = pylinkage_run(min(args.pylinkage_positions, n), phi, E)
+    if pl is None:
+        print("  pylinkage is not installed (pip install pylinkage) or has no usable API")
+    else:
+        label, t_pl, version = pl
+        print(f"  pylinkage {version} ({label}) {1 / t_pl / 1e6:.4f} M/s: chain kinematics "
+              f"{t_pl * n / t_kin:,.0f} ×, kinematics + forces {t_pl * n / t_all:,.0f} × faster")
+
+
+if __name__ == "__main__":
+    main()
