@@ -297,13 +297,16 @@ CODE = ("crankbase", "engine", "linkage", "dynamics", "plans", "crankdyn")
 def _error_names():
     import importlib
     import pkgutil
+    import warnings
 
     from crankbase.errors import CrankdynError
 
     for pkg in CODE[:-1]:
         mod = importlib.import_module(pkg)
         for info in pkgutil.walk_packages(mod.__path__, pkg + "."):
-            importlib.import_module(info.name)
+            with warnings.catch_warnings():     # the old engine paths forward with a warning
+                warnings.simplefilter("ignore", DeprecationWarning)
+                importlib.import_module(info.name)
     names, todo = set(), [CrankdynError]
     while todo:
         cls = todo.pop()
