@@ -329,27 +329,6 @@ class TorsionReport:
         return summary_lines(self, lang, written)
 
 
-def modes_table(modes, chain):
-    """``<name>_torsion_modes.csv``: ``mode`` (0: the rigid rotation), ``f_Hz``,
-    ``omega_rad_s``, ``nodes`` (positions along the shaft in mass units, 2.37 = in
-    section 2, 37 % of the way from mass 2 to 3; ``;``-separated), ``theta_<mass>`` (the
-    shape, 1 at the first mass)."""
-    import pandas as pd
-
-    n = chain.n
-    rows = [dict(mode=0, f_Hz=modes.rigid_omega_rad_s / (2 * np.pi),
-                 omega_rad_s=modes.rigid_omega_rad_s, nodes="",
-                 **{f"theta_{m}": 1.0 for m in chain.names})]
-    for i, (f, w) in enumerate(zip(modes.f_Hz, modes.omega_rad_s), start=1):
-        row = dict(mode=i, f_Hz=float(f), omega_rad_s=float(w),
-                   nodes="; ".join(f"{x:.4f}" for x in np.asarray(modes.nodes[i - 1])))
-        row.update({f"theta_{m}": float(modes.shapes[i - 1, j])
-                    for j, m in enumerate(chain.names)})
-        rows.append(row)
-    del n
-    return pd.DataFrame(rows)
-
-
 def harmonics_table(harmonics):
     """``<name>_torque_harmonics.csv``: ``part`` (gas, inertia, total), then the
     :meth:`Harmonics.table` columns ``order, a_Nm, b_Nm, amplitude_Nm, phase_deg``."""
@@ -420,7 +399,7 @@ def run_study(study, *, source=None) -> TorsionReport:
     modes = natural_modes(chain.J, chain.k)
     omegas = list(np.asarray(modes.omega_rad_s, float)) + list(inputs.holzer_trial_rad_s)
     holzer = holzer_table(chain.J, chain.k, np.asarray(omegas), names=list(chain.names))
-    tables = {"torsion_modes.csv": modes_table(modes, chain), "holzer.csv": holzer}
+    tables = {"torsion_modes.csv": modes.table(list(chain.names)), "holzer.csv": holzer}
     harmonics = critical = response = None
     speed_ref = None
     if chain.excited:

@@ -22,21 +22,31 @@ __all__ = ["summary_lines", "worst_critical"]
 
 def worst_critical(report):
     """The critical speed in range that the engine excites most: the row of the
-    critical-speed table with the largest ``sum_relative_amplitude`` × the amplitude of
-    its order's total harmonic of one cylinder (the modal work of the order per cycle,
-    up to the mode's scale); None when there is none."""
+    critical-speed table with the largest ``sum_relative_amplitude`` × |M_k| at that
+    speed, M_k one cylinder's torque harmonic of the order (gas as in the indicator
+    diagram, inertia scaled by (n/n_ref)²): the modal work of the order per cycle, up to
+    the mode's scale.  None when there is none."""
     cs = report.critical
     if cs is None or len(cs) == 0:
         return None
-    h = report.harmonics["total"]
-    amp = dict(zip(np.round(np.asarray(h.order, float), 6), np.asarray(h.amplitude_Nm)))
-    weight = [r.sum_relative_amplitude * amp.get(round(float(r.order), 6), 0.0)
-              for r in cs.itertuples()]
+    gas, inertia = report.harmonics["gas"], report.harmonics["inertia"]
+    index = {round(float(k), 6): i for i, k in enumerate(gas.order)}
+    weight = []
+    for r in cs.itertuples():
+        i = index.get(round(float(r.order), 6))
+        Mk = 0.0 if i is None else abs(gas.complex_Nm[i] + inertia.complex_Nm[i]
+                                       * (r.speed_rpm / report.speed_ref_rpm) ** 2)
+        weight.append(r.sum_relative_amplitude * Mk)
     return cs.iloc[int(np.argmax(weight))]
 
 
-def _nodes(nodes) -> str:
-    return ", ".join(f"{x:.2f}" for x in np.asarray(nodes, float))
+def _nodes(nodes, names) -> str:
+    """Node positions in mass units with the section each lies in: ``6.60 (throw6-flywheel)``."""
+    out = []
+    for x in np.asarray(nodes, float):
+        i = min(max(int(np.floor(x)), 1), len(names) - 1)
+        out.append(f"{x:.2f} ({names[i - 1]}-{names[i]})")
+    return ", ".join(out)
 
 
 def summary_lines(report, lang: str = "ru", written=None) -> list[str]:
@@ -51,7 +61,7 @@ def summary_lines(report, lang: str = "ru", written=None) -> list[str]:
                J=float(np.sum(ch.J)))]
     if len(m.f_Hz):
         lines.append(t("torsion.summary.first", f=float(m.f_Hz[0]),
-                       omega=float(m.omega_rad_s[0]), nodes=_nodes(m.nodes[0]) or "—"))
+                       omega=float(m.omega_rad_s[0]), nodes=_nodes(m.nodes[0], ch.names) or "—"))
         if len(m.f_Hz) > 1:
             lines.append(t("torsion.summary.others", freqs=", ".join(
                 f"{f:.2f}" for f in m.f_Hz[1:6])))
@@ -84,10 +94,6 @@ def summary_lines(report, lang: str = "ru", written=None) -> list[str]:
             j = int(np.argmax(r.stress_MPa[:, i]))
             lines.append(t("torsion.summary.stress", tau=float(r.stress_MPa[j, i]),
                            section=ch.section_names[i], speed=float(r.speeds_rpm[j])))
-        a = np.asarray(r.amplitude_deg)
-        i, j = np.unravel_index(int(np.argmax(a)), a.shape)
-        lines.append(t("torsion.summary.angle", A=float(a[i, j]), mass=ch.names[j],
-                       speed=float(r.speeds_rpm[i])))
     if written is not None:
         lines.append(t("common.wrote", files=t.n("common.files", len(written)),
                        folder=str(written.folder)))
