@@ -51,7 +51,7 @@ def cylinder_torque_parts(spec, settings=None, step_deg=0.5):
     """One cylinder's torque over its cycle on the grid ``arange(0, cycle, step_deg)``:
     ``(alpha_deg, M_gas, M_inertia, M_total)`` [deg, N·m], from
     :func:`engine.force_table` at the spec's speed (gas + inertia = total exactly)."""
-    from engine import force_table
+    from engine.forces import force_table     # not the package: no import circle
 
     step = float(check_positive(step_deg, "step_deg")[0])
     alpha = np.arange(0.0, spec.cycle_deg, step)
