@@ -213,6 +213,8 @@ def build_chain(inputs, spec=None, lay=None) -> Chain:
                     value=m.throw, throws=T)
                 continue
             (before if m.side == "before" else after)[t].append(m)
+        if c_problems:                 # a mass left out would miscount the stiffnesses
+            raise SpecError(c_problems)
         names, J, tJ, mass_of_throw = [], [], [], {}
         for t in range(1, T + 1):
             for m in before[t]:
@@ -258,7 +260,7 @@ def build_chain(inputs, spec=None, lay=None) -> Chain:
     for i, (at, cv) in enumerate(inputs.dampers):
         if at not in names:
             bad(f"torsion.dampers[{i}].at", "torsion.error.no_such_mass", name=at,
-                names=", ".join(names))
+                names=", ".join(repr(n) for n in names))
         else:
             dampers[names.index(at)] = dampers.get(names.index(at), 0.0) + cv
     if c_problems:
