@@ -144,7 +144,7 @@ def load(path_or_dict, base_dir=None) -> TorsionStudy:
             raise SpecError([Problem("torsion", Text("torsion.error.no_table"))])
         return TorsionStudy(study.spec.name, study.torsion, study, source)
     from engine.schema import TORSION_SCHEMA
-    from engine.spec.torsion_inputs import base_order_problem, read_torsion
+    from engine.spec.torsion_inputs import read_torsion
 
     c = SpecReader()
     c.top(data, TORSION_SCHEMA)
@@ -154,9 +154,6 @@ def load(path_or_dict, base_dir=None) -> TorsionStudy:
     inputs = read_torsion(c, data)
     if inputs is not None and not inputs.by_hand:
         c.add("torsion.throw_J_kgm2", Text("torsion.error.needs_engine"))
-    if inputs is not None and (why := base_order_problem(inputs.orders_max, 2)) and \
-            base_order_problem(inputs.orders_max, 4):
-        c.add("torsion.orders_max", why)
     c.raise_if_any(SpecError)
     return TorsionStudy(name, inputs, None, source)
 

@@ -21,7 +21,7 @@ from .inputs import read_tables
 from .model import (Counterweight, CrankTrain, EngineSpec, EngineSpecError, EngineStudy,
                     TableSettings, loaded)
 from .pressure import inline_pressure, read_pressure_csv
-from .torsion_inputs import base_order_problem, read_torsion
+from .torsion_inputs import read_torsion
 
 __all__ = ["load", "load_spec"]
 
@@ -200,11 +200,7 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
     form = c.get(t, TABLE, "form")
 
     train = _crank_train(c, data, e, cylinders)
-    torsion = read_torsion(c, data)          # [torsion]: None without the table
-    if torsion is not None and strokes is not None and \
-            (why := base_order_problem(torsion.orders_max, strokes)):
-        c.add("torsion.orders_max", why)
-        torsion = None
+    torsion = read_torsion(c, data, strokes)  # [torsion]: None without the table
 
     if isinstance(pressure, CycleSpec) and pressure.rounding and not c.problems:
         check_rounded_peak(c, pressure, lam if lam is not None else stroke / 2.0 / L_mm,

@@ -106,9 +106,11 @@ def _place(c, item, where):
     return side, value
 
 
-def read_torsion(c, data):
+def read_torsion(c, data, strokes=4):
     """The ``[torsion]`` table of a spec file's dict as :class:`TorsionInputs` (None when
-    the file has no such table, or on a problem, which is recorded in the checker ``c``)."""
+    the file has no such table, or on a problem, which is recorded in the checker ``c``).
+    ``strokes`` (of the engine; 4 for a chain on its own) gives the base order that
+    ``orders_max`` must be a multiple of."""
     if not isinstance(data, dict) or "torsion" not in data:
         return None
     n0 = len(c.problems)
@@ -188,6 +190,9 @@ def read_torsion(c, data):
         c.addk("torsion.speed_step_rpm", "torsion.error.too_many_speeds",
                n=int((rng[1] - rng[0]) / step) + 1, max=MAX_ROWS)
     orders_max = get("orders_max")
+    if orders_max is not None and strokes in (2, 4) and \
+            (why := base_order_problem(orders_max, strokes)):
+        c.add("torsion.orders_max", why)
     d = get("shaft_diameters_mm", si=True)
     trial = get("holzer_trial_rad_s")
     if len(c.problems) > n0:
