@@ -19,8 +19,8 @@ Examples
 >>> from crankbase.resources import example_path
 >>> from torsion.study import load, run_study
 >>> report = run_study(load(example_path("torsion_three_rotor.toml")))
->>> [round(f, 2) for f in report.modes.f_Hz]
-[53.45, 106.79]
+>>> [round(float(f), 2) for f in report.modes.f_Hz]   # Khurmi & Gupta: 171 and 277 Hz
+[170.69, 277.03]
 """
 from __future__ import annotations
 

@@ -9,7 +9,7 @@ Examples
 >>> from torsion.study import load, run_study
 >>> report = run_study(load(example_path("torsion_three_rotor.toml")))
 >>> print(summary_lines(report, "en")[1])
-  first natural frequency f1 = 53.45 Hz (335.8 rad/s), nodes at 1.67
+  first natural frequency f1 = 170.69 Hz (1072.5 rad/s), nodes at 1.77 (1-2)
 """
 from __future__ import annotations
 
