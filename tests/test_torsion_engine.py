@@ -70,10 +70,10 @@ def test_inertia_harmonics_match_the_closed_form_in_lambda(vaz):
     i = {float(o): j for j, o in enumerate(h.order)}
     expected_b = {1.0: lam / 4, 2.0: -0.5, 3.0: -0.75 * lam, 4.0: -lam ** 2 / 4}
     for order, b in expected_b.items():
-        assert h.b_Nm[i[order]] / scale == pytest.approx(b, abs=0.5 * lam ** 3)
+        assert h.b_Nm[i[order]] / scale == pytest.approx(b, abs=0.15 * lam ** 3)
     # orders above 4 are of order λ³ and smaller
     for order in (5.0, 6.0, 7.0, 8.0):
-        assert h.amplitude_Nm[i[order]] / scale < 0.5 * lam ** 3
+        assert h.amplitude_Nm[i[order]] / scale < 0.1 * lam ** 3
     # the inertia torque is odd in α: no cosine terms; it repeats every turn: no half orders
     assert np.max(np.abs(h.a_Nm)) < 1e-9 * scale
     half = np.array([o % 1 == 0.5 for o in h.order])
