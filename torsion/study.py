@@ -425,13 +425,14 @@ def run_study(study, *, source=None) -> TorsionReport:
     for n, df in tables.items():
         ensure_finite(df.select_dtypes("number").replace(np.nan, 0.0) if n == "holzer.csv"
                       else df.select_dtypes("number"), n)
-    from .plots import plot_names
+    from .plots import TORSION_PLOT_NAMES
 
+    plots = TORSION_PLOT_NAMES if response is not None else ("torsion_modes",)
     return TorsionReport(name=safe_name(study.name, "torsion"), study=study, chain=chain,
                          modes=modes, holzer=holzer, harmonics=harmonics, critical=critical,
                          response=response, speed_ref_rpm=speed_ref,
                          tables=MappingProxyType(tables),
-                         plot_names=tuple(plot_names(response is not None)),
+                         plot_names=tuple(plots),
                          notes=tuple(notes))
 
 
@@ -486,7 +487,10 @@ def build_outputs(report: TorsionReport, lang="ru"):
     from .plots import torsion_figures
     from .report import build_workbook
 
-    return build_workbook(report, lang), torsion_figures(report, lang)
+    figs = torsion_figures(report.modes, report.critical, report.harmonics,
+                           report.response, list(report.chain.names),
+                           report.study.inputs.speed_range_rpm, lang)
+    return build_workbook(report, lang), {n: figs[n] for n in report.plot_names}
 
 
 def write_into(stage, report: TorsionReport, wb, figs, formats) -> None:
