@@ -300,3 +300,20 @@ def test_summaries_in_both_languages(six, three):
     assert re.search(r"worst critical speed \d+ rpm: mode \d, order [\d.]+", "\n".join(en))
     assert "8 masses" in en[0] and "из 8 масс" in six.summary_lines("ru")[0]
     assert "3 masses" in three.summary_lines("en")[0]
+
+
+def test_the_workbooks_pass_the_audit(six, three):
+    """No text cut off, no ####, one number format per column, one font family
+    (tests/workbook_audit.py), in both languages; the Holzer sheet holds a block per
+    frequency with its residual torque."""
+    from workbook_audit import problems
+
+    from torsion.report import build_workbook
+
+    for rep, lang in ((six, "ru"), (three, "en")):
+        wb = build_workbook(rep, lang)
+        assert problems(wb, rep.name) == []
+    ws = build_workbook(three, "en")["Holzer"]
+    text = [c for row in ws.iter_rows(values_only=True) for c in row if isinstance(c, str)]
+    assert sum(s.startswith("ω = ") for s in text) == 4                 # 2 modes + 2 trials
+    assert sum(s.startswith("residual torque") for s in text) == 4
