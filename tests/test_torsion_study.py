@@ -119,6 +119,7 @@ def test_the_engine_chain_from_the_layout(six):
     assert ch.J[1:7] == pytest.approx([J_throw] * 6, rel=1e-12)
     assert ch.J[0] == 0.015 and ch.J[-1] == 0.12
     assert list(ch.cylinder_mass) == [1, 2, 3, 4, 5, 6]
+    assert list(ch.table()["throw"]) == [0, 1, 2, 3, 4, 5, 6, 0]
     lay = engine.layout(s, six.study.engine.train)
     assert np.allclose(ch.phases_deg, lay.phase_deg)
     assert ch.k[0] == 0.9e6 and ch.k[-1] == 1.2e6 and ch.diameters[-1] == 0.07
@@ -274,6 +275,10 @@ def test_by_hand_chain_in_an_engine_takes_the_engine_excitation():
                        "speed_range_rpm": [800, 6500]}
     rep = run_study(load(data))
     assert list(rep.chain.cylinder_mass) == [1, 2, 3, 4, 5, 6]
+    data["torsion"]["throws"] = [0, 6, 5, 4, 3, 2, 1, 0]           # the other way round
+    back = run_study(load(data)).chain
+    assert list(back.cylinder_mass) == [6, 5, 4, 3, 2, 1]
+    assert list(back.table()["throw"]) == [0, 6, 5, 4, 3, 2, 1, 0]
     assert rep.response is not None and len(rep.critical) > 0
     data["torsion"]["throws"] = [0, 1, 2, 3, 4, 0, 0, 0]
     assert _problem(data)[0].startswith("torsion.throws:")

@@ -80,6 +80,8 @@ class Chain:
         Section diameters [m].
     dampers : dict
         {0-based mass index: c [N·m·s/rad]}.
+    throw_number : tuple of int
+        The throw (1-based) each mass carries, 0 for none (all 0 without excitation).
     """
 
     names: tuple
@@ -90,6 +92,7 @@ class Chain:
     phases_deg: object = None
     diameters: object = None
     dampers: Mapping = field(default_factory=lambda: MappingProxyType({}))
+    throw_number: tuple = ()
 
     @property
     def n(self) -> int:
@@ -110,10 +113,7 @@ class Chain:
         after it, NaN on the last), ``throw`` (1-based, 0: none)."""
         import pandas as pd
 
-        throw = np.zeros(self.n, int)
-        if self.cylinder_mass is not None:
-            for t, m in enumerate(sorted(set(int(x) for x in self.cylinder_mass)), start=1):
-                throw[m] = t
+        throw = np.asarray(self.throw_number or (0,) * self.n, int)
         return pd.DataFrame({"mass": list(self.names), "J_kgm2": self.J,
                              "k_Nm_rad": np.append(self.k, np.nan), "throw": throw})
 
@@ -229,10 +229,14 @@ def build_chain(inputs, spec=None, lay=None) -> Chain:
                 tJ.append(0.0)
         cylinder_mass = np.array([mass_of_throw[int(t)] for t in cyl_throw], int)
         throw_J = np.asarray(tJ, float)
+        throw_number = [0] * len(names)
+        for t, m in mass_of_throw.items():
+            throw_number[m] = t + 1
     else:
         names = [str(i) for i in range(1, len(inputs.inertias) + 1)]
         J = list(inputs.inertias)
         cylinder_mass = None
+        throw_number = [0] * len(names)
         throws = inputs.throws or ()
         used = [x for x in throws if x]
         if used and lay is not None:
@@ -242,6 +246,7 @@ def build_chain(inputs, spec=None, lay=None) -> Chain:
             else:
                 mass_of_throw = {t - 1: i for i, t in enumerate(throws) if t}
                 cylinder_mass = np.array([mass_of_throw[int(t)] for t in cyl_throw], int)
+                throw_number = list(throws)
     n = len(names)
     k = np.asarray(inputs.stiffnesses, float)
     if len(k) != n - 1:
@@ -264,7 +269,7 @@ def build_chain(inputs, spec=None, lay=None) -> Chain:
         raise SpecError(c_problems)
     return Chain(tuple(names), np.asarray(J, float), k, throw_J,
                  cylinder_mass, phases if cylinder_mass is not None else None, d,
-                 MappingProxyType(dampers))
+                 MappingProxyType(dampers), tuple(int(x) for x in throw_number))
 
 
 @dataclass(frozen=True)
