@@ -17,6 +17,10 @@ from crankbase.texts import texts
 
 __all__ = ["build_workbook", "column_label"]
 
+#: Rows an A4 portrait page holds at the default height (the wrapped two-line headers
+#: taken into account): the Holzer sheet starts a page before a block that would not fit.
+ROWS_PER_PAGE = 44
+
 #: Columns whose label is a catalogue entry ``torsion.col.<column>``.
 FIXED_COLUMNS = ("mass", "J_kgm2", "k_Nm_rad", "throw", "mode", "f_Hz", "omega_rad_s",
                  "nodes", "theta_rad", "inertia_torque_Nm", "sum_torque_Nm", "twist_rad",
@@ -78,10 +82,16 @@ def _holzer_sheet(wb, report, t, lang):
     _title(ws, t("torsion.sheet.holzer_title"))
     cols = ["mass", "J_kgm2", "theta_rad", "inertia_torque_Nm", "sum_torque_Nm",
             "k_Nm_rad", "twist_rad"]
+    from openpyxl.worksheet.pagebreak import Break
+
     row = 3
     h = report.holzer
     n_modes = len(report.modes.omega_rad_s)
+    page_top = 1
     for i, (w, block) in enumerate(h.groupby("omega_rad_s", sort=False)):
+        if row + len(block) + 4 - page_top > ROWS_PER_PAGE and row > page_top + 2:
+            ws.row_breaks.append(Break(id=row - 1))     # a block never split by a page
+            page_top = row
         kind = (t("torsion.sheet.holzer_mode", mode=i + 1) if i < n_modes
                 else t("torsion.sheet.holzer_trial"))
         ws.cell(row, 1, t("torsion.sheet.holzer_omega", omega=float(w),
@@ -90,7 +100,7 @@ def _holzer_sheet(wb, report, t, lang):
         ws.cell(row, 1, t("torsion.sheet.holzer_residual",
                           M=float(block["sum_torque_Nm"].iloc[-1]))).font = font(italic=True)
         row += 2
-    ws.print_title_cols = "A:A"
+    ws.page_setup.orientation = "portrait"
 
 
 def build_workbook(report, lang: str = "ru"):
