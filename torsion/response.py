@@ -164,11 +164,16 @@ def harmonic_solve(K, J_kgm2, C, F, Omega) -> np.ndarray:
     ndarray (..., n)
         Complex angle amplitudes. [rad]
     """
-    W = np.asarray(Omega, float)[..., None, None]
-    A = K - W ** 2 * np.diag(np.asarray(J_kgm2, float)) + 1j * W * C
+    W = np.asarray(Omega, float)
     F = np.asarray(F, complex)
-    A, F = np.broadcast_arrays(A, F[..., None])
-    return np.linalg.solve(A, F)[..., 0]
+    n = F.shape[-1]
+    lead = np.broadcast_shapes(W.shape, F.shape[:-1])
+    W = np.broadcast_to(W, lead)[..., None, None]
+    A = np.empty(lead + (n, n), complex)
+    A.real = K
+    A.real[..., np.arange(n), np.arange(n)] -= W[..., 0] ** 2 * np.asarray(J_kgm2, float)
+    np.multiply(W, C, out=A.imag)
+    return np.linalg.solve(A, np.broadcast_to(F, lead + (n,))[..., None])[..., 0]
 
 
 def excitation_vectors(n, throw_index, phases_deg, complex_Nm, orders) -> np.ndarray:
@@ -182,13 +187,13 @@ def excitation_vectors(n, throw_index, phases_deg, complex_Nm, orders) -> np.nda
     return F
 
 
-def _peak(amp, jj, nt):
-    """Peak |x| over one cycle of x(θ) = Re Σ_k amp_k e^{i j_k 2πt/T} (amp (S, K, m),
-    jj the integer harmonic index of each order) on a grid of nt points."""
+def _in_time(amp, jj, nt):
+    """x(θ) = Re Σ_k amp_k e^{i j_k 2πθ/cycle} on a grid of nt points over one cycle
+    (amp (S, K, m), jj the integer harmonic index of each order): (S, m, nt)."""
     S, _, m = amp.shape
     X = np.zeros((S, m, nt // 2 + 1), complex)
     X[:, :, jj] = np.swapaxes(amp, 1, 2) * (nt / 2.0)
-    return np.max(np.abs(np.fft.irfft(X, n=nt, axis=-1)), axis=-1)
+    return np.fft.irfft(X, n=nt, axis=-1)
 
 
 def forced_response(J_kgm2, k_Nm_rad, C, throw_index, phases_deg, harmonics_gas,
@@ -255,12 +260,12 @@ def forced_response(J_kgm2, k_Nm_rad, C, throw_index, phases_deg, harmonics_gas,
     omega = speeds * (2 * np.pi / 60.0)
     Omega = omega[:, None] * orders[None, :]                               # (S, K)
     theta = harmonic_solve(stiffness_matrix(k), J, C, F, Omega)            # (S, K, n)
-    twist = k * (theta[..., :-1] - theta[..., 1:])                         # (S, K, n-1)
     base = base_order(hg.cycle_deg)
     jj = np.rint(orders / base).astype(int)
-    nt = int(2 ** np.ceil(np.log2(max(256, 16 * int(jj.max(initial=1))))))
-    amp = np.degrees(_peak(theta, jj, nt))
-    torque = _peak(twist, jj, nt)
+    nt = max(256, 16 * int(jj.max(initial=1)))
+    x = _in_time(theta, jj, nt)                                            # (S, n, nt)
+    amp = np.degrees(np.max(np.abs(x), axis=-1))
+    torque = np.max(np.abs(k[:, None] * (x[:, :-1] - x[:, 1:])), axis=-1)  # (S, n-1)
     stress = None if d is None else 16.0 * torque / (np.pi * d ** 3) / 1e6
     s, i = np.unravel_index(int(np.argmax(torque)), torque.shape)
     return Response(speeds_rpm=speeds, amplitude_deg=amp, torque_Nm=torque,
