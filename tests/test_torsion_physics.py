@@ -531,3 +531,24 @@ def test_bad_harmonics_and_response_inputs():
     with pytest.raises(SpecError) as e:
         forced_response([1.0, 2.0, 3.0], [1e5, 1e5], C, [0], [0.0, 1.0], h, h, 1000, [10])
     assert _key(e) == "phases_deg"
+
+
+def test_result_tables():
+    J, k = khurmi_chain()
+    m = natural_modes(J, k)
+    tab = m.table(["A", "B", "C"])
+    assert list(tab.columns) == ["mode", "f_Hz", "omega_rad_s", "nodes", "theta_A",
+                                 "theta_B", "theta_C"]
+    assert tab["mode"].tolist() == [1, 2]
+    np.testing.assert_allclose(tab["theta_A"], 1.0)
+    assert tab["nodes"].iloc[1] == "; ".join(f"{x:.3f}" for x in m.nodes[1])
+    with pytest.raises(SpecError):
+        m.table(["A", "B"])
+    a = np.arange(0.0, 720.0, 10.0)
+    h = torque_harmonics(a, 5 + 2 * np.cos(np.radians(2 * a) + 0.4), 720, 3)
+    h4 = h.scaled(4.0)
+    np.testing.assert_allclose(h4.complex_Nm, 4 * h.complex_Nm)
+    np.testing.assert_allclose(h4.series(a), 4 * h.series(a))
+    np.testing.assert_allclose(h4.phase_deg[4], h.phase_deg[4])
+    hm = h.scaled(-1.0)                                   # a sign turns the phase by 180°
+    assert abs(((hm.phase_deg[4] - h.phase_deg[4]) % 360.0) - 180.0) < 1e-9

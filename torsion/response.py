@@ -230,7 +230,10 @@ def forced_response(J_kgm2, k_Nm_rad, C, throw_index, phases_deg, harmonics_gas,
     Notes
     -----
     Order 0 (the mean torque) accelerates the free chain as a whole and twists it
-    steadily; it is no vibration and is left out.  The peaks are taken on a grid of at
+    steadily; it is no vibration and is left out.  The chain is free–free, so the
+    angles of the masses include the swing of the whole chain about its mean rotation
+    (the speed fluctuation the flywheel limits: large at low speed, falling as 1/n²);
+    the section torques, from the twists, hold none of it.  The peaks are taken on a grid of at
     least 16 points per period of the highest order (error below 2 % of that order's
     share in the worst case).
     """
