@@ -552,3 +552,13 @@ def test_result_tables():
     np.testing.assert_allclose(h4.phase_deg[4], h.phase_deg[4])
     hm = h.scaled(-1.0)                                   # a sign turns the phase by 180°
     assert abs(((hm.phase_deg[4] - h.phase_deg[4]) % 360.0) - 180.0) < 1e-9
+
+
+def test_docstring_examples():
+    import doctest
+
+    import torsion.chain
+    import torsion.harmonics
+
+    for mod in (torsion.chain, torsion.harmonics):
+        assert doctest.testmod(mod).failed == 0, mod.__name__
