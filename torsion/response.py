@@ -196,6 +196,11 @@ def _in_time(amp, jj, nt):
     return np.fft.irfft(X, n=nt, axis=-1)
 
 
+def _peak_abs(x):
+    """max |x| along the last axis, from the max and the min (no |x| array)."""
+    return np.maximum(x.max(axis=-1), -x.min(axis=-1))
+
+
 def forced_response(J_kgm2, k_Nm_rad, C, throw_index, phases_deg, harmonics_gas,
                     harmonics_inertia, speed_ref_rpm, speeds_rpm,
                     diameters_m=None) -> Response:
@@ -267,8 +272,9 @@ def forced_response(J_kgm2, k_Nm_rad, C, throw_index, phases_deg, harmonics_gas,
     jj = np.rint(orders / base).astype(int)
     nt = max(256, 16 * int(jj.max(initial=1)))
     x = _in_time(theta, jj, nt)                                            # (S, n, nt)
-    amp = np.degrees(np.max(np.abs(x), axis=-1))
-    torque = np.max(np.abs(k[:, None] * (x[:, :-1] - x[:, 1:])), axis=-1)  # (S, n-1)
+    amp = np.degrees(_peak_abs(x))
+    x = np.subtract(x[:, :-1], x[:, 1:], out=x[:, 1:])                     # the twists
+    torque = k * _peak_abs(x)                                              # (S, n-1)
     stress = None if d is None else 16.0 * torque / (np.pi * d ** 3) / 1e6
     s, i = np.unravel_index(int(np.argmax(torque)), torque.shape)
     return Response(speeds_rpm=speeds, amplitude_deg=amp, torque_Nm=torque,
