@@ -516,9 +516,15 @@ def test_bad_harmonics_and_response_inputs():
         with pytest.raises(SpecError) as e:
             critical_speeds(m, [0], [0.0], [1.0], bad, 1, 720)
         assert _key(e) == "torsion.speed_range_rpm"
-    with pytest.raises(SpecError) as e:
-        critical_speeds(m, [3], [0.0], [1.0], [600, 6000], 1, 720)
-    assert _key(e) == "throw_index"
+    for bad_throw in ([3], [-1], [0.5], ["x"]):
+        with pytest.raises(SpecError) as e:
+            critical_speeds(m, bad_throw, [0.0], [1.0], [600, 6000], 1, 720)
+        assert _key(e) == "throw_index"
+    # a whole number given as a float is a mass index
+    assert len(critical_speeds(m, [1.0], [0.0], [0.5, 1.0], [1, 1e9], 1, 720)) == 4
+    with pytest.raises(SpecError) as e:                 # 0.75 is no order of a 720° cycle
+        critical_speeds(m, [1], [0.0], [0.75], [600, 6000], 1, 720)
+    assert _key(e) == "torsion.orders_max"
     h = _harm([0.0, 1.0], [0.0, 1.0])
     h2 = _harm([0.0, 2.0], [0.0, 1.0])
     C = np.zeros((3, 3))

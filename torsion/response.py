@@ -66,18 +66,21 @@ def check_speed_range(speed_range_rpm):
 
 
 def _throws(throw_index, phases_deg, n):
-    idx = np.asarray(throw_index).reshape(-1)
-    if idx.size and (not np.issubdtype(idx.dtype, np.integer)
-                     or idx.min() < 0 or idx.max() >= n):
-        bad = next(int(i) if float(i).is_integer() else i for i in idx
-                   if not (float(i).is_integer() and 0 <= i < n))
+    """The throws' mass indices (whole numbers in 0 … n − 1) and the phases, checked."""
+    raw = np.asarray(throw_index).reshape(-1)
+    try:
+        val = raw.astype(float)
+    except (TypeError, ValueError):
+        val = np.full(raw.shape, np.nan)
+    ok = np.isfinite(val) & (val == np.round(val)) & (val >= 0) & (val <= n - 1)
+    if not ok.all():
         raise SpecError(Problem("throw_index", Text("errors.torsion.mass_index",
-                                                    {"value": bad, "last": n - 1})))
+                                                    {"value": raw[~ok][0], "last": n - 1})))
     ph = np.asarray(phases_deg, float).reshape(-1)
-    if len(ph) != len(idx) or not np.all(np.isfinite(ph)):
+    if len(ph) != len(raw) or not np.all(np.isfinite(ph)):
         raise SpecError(Problem("phases_deg", Text("errors.torsion.phases",
-                                                   {"got": len(ph), "expected": len(idx)})))
-    return idx.astype(int), ph
+                                                   {"got": len(ph), "expected": len(raw)})))
+    return val.astype(int), ph
 
 
 def is_major(orders, phases_deg) -> np.ndarray:
