@@ -153,3 +153,28 @@ def test_v8_response_runs_and_peaks_near_a_major_critical(v8):
     # the largest vibration torque lies at a critical speed (within the 10 rpm step and
     # the damped peak's shift)
     assert np.min(np.abs(cs["speed_rpm"] - r.worst[0])) < 0.02 * r.worst[0]
+
+
+def test_excitation_phases_follow_the_engines_cylinder_torques(v8):
+    """The torque each throw's mass gets, synthesised from one cylinder's harmonics with
+    each cylinder's phase (M_k e^{−ikφ_j}), is the sum of the force tables of its
+    cylinders at α = θ − φ_j (engine.force_table(phase_deg=φ_j)): a wrong sign of the
+    phase or a swapped cylinder shows here."""
+    from torsion.response import excitation_vectors
+
+    spec = v8.spec
+    lay = layout(spec, v8.train)
+    throws, phases = cylinder_throws(lay)
+    h = cylinder_excitation(spec, orders_max=200, step_deg=0.25)["total"]
+    F = excitation_vectors(4, throws, phases, h.complex_Nm, h.order)       # (K, 4)
+    theta = np.arange(0.0, 720.0, 5.0)
+    series = np.real(np.exp(1j * np.radians(np.multiply.outer(theta, h.order))) @ F)
+    direct = np.zeros((len(theta), 4))
+    for t, p in zip(throws, phases):
+        direct[:, t] += engine.force_table(spec, theta, phase_deg=p)["M_Nm"].to_numpy()
+    scale = np.abs(direct).max()
+    assert np.max(np.abs(series - direct)) < 2e-3 * scale
+    # and with the phase's sign turned the wrong way round it would not be
+    Fw = excitation_vectors(4, throws, -phases, h.complex_Nm, h.order)
+    wrong = np.real(np.exp(1j * np.radians(np.multiply.outer(theta, h.order))) @ Fw)
+    assert np.max(np.abs(wrong - direct)) > 0.1 * scale

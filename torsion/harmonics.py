@@ -96,7 +96,7 @@ def torque_harmonics(alpha_deg, M_Nm, cycle_deg, orders_max) -> Harmonics:
     --------
     >>> a = np.arange(0.0, 720.0, 5.0)
     >>> h = torque_harmonics(a, 10 + 3 * np.sin(np.radians(1.5 * a)), 720, 2)
-    >>> h.order[3], round(float(h.b_Nm[3]), 9), round(float(h.a_Nm[0]), 9)
+    >>> float(h.order[3]), round(float(h.b_Nm[3]), 9), round(float(h.a_Nm[0]), 9)
     (1.5, 3.0, 10.0)
     """
     cycle = float(check_positive_scalar(cycle_deg, "cycle_deg"))

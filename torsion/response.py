@@ -66,18 +66,21 @@ def check_speed_range(speed_range_rpm):
 
 
 def _throws(throw_index, phases_deg, n):
-    idx = np.asarray(throw_index).reshape(-1)
-    if idx.size and (not np.issubdtype(idx.dtype, np.integer)
-                     or idx.min() < 0 or idx.max() >= n):
-        bad = next(int(i) if float(i).is_integer() else i for i in idx
-                   if not (float(i).is_integer() and 0 <= i < n))
+    """The throws' mass indices (whole numbers in 0 … n − 1) and the phases, checked."""
+    raw = np.asarray(throw_index).reshape(-1)
+    try:
+        val = raw.astype(float)
+    except (TypeError, ValueError):
+        val = np.full(raw.shape, np.nan)
+    ok = np.isfinite(val) & (val == np.round(val)) & (val >= 0) & (val <= n - 1)
+    if not ok.all():
         raise SpecError(Problem("throw_index", Text("errors.torsion.mass_index",
-                                                    {"value": bad, "last": n - 1})))
+                                                    {"value": raw[~ok][0], "last": n - 1})))
     ph = np.asarray(phases_deg, float).reshape(-1)
-    if len(ph) != len(idx) or not np.all(np.isfinite(ph)):
+    if len(ph) != len(raw) or not np.all(np.isfinite(ph)):
         raise SpecError(Problem("phases_deg", Text("errors.torsion.phases",
-                                                   {"got": len(ph), "expected": len(idx)})))
-    return idx.astype(int), ph
+                                                   {"got": len(ph), "expected": len(raw)})))
+    return val.astype(int), ph
 
 
 def is_major(orders, phases_deg) -> np.ndarray:
@@ -164,11 +167,16 @@ def harmonic_solve(K, J_kgm2, C, F, Omega) -> np.ndarray:
     ndarray (..., n)
         Complex angle amplitudes. [rad]
     """
-    W = np.asarray(Omega, float)[..., None, None]
-    A = K - W ** 2 * np.diag(np.asarray(J_kgm2, float)) + 1j * W * C
+    W = np.asarray(Omega, float)
     F = np.asarray(F, complex)
-    A, F = np.broadcast_arrays(A, F[..., None])
-    return np.linalg.solve(A, F)[..., 0]
+    n = F.shape[-1]
+    lead = np.broadcast_shapes(W.shape, F.shape[:-1])
+    W = np.broadcast_to(W, lead)[..., None, None]
+    A = np.empty(lead + (n, n), complex)
+    A.real = K
+    A.real[..., np.arange(n), np.arange(n)] -= W[..., 0] ** 2 * np.asarray(J_kgm2, float)
+    np.multiply(W, C, out=A.imag)
+    return np.linalg.solve(A, np.broadcast_to(F, lead + (n,))[..., None])[..., 0]
 
 
 def excitation_vectors(n, throw_index, phases_deg, complex_Nm, orders) -> np.ndarray:
@@ -182,13 +190,18 @@ def excitation_vectors(n, throw_index, phases_deg, complex_Nm, orders) -> np.nda
     return F
 
 
-def _peak(amp, jj, nt):
-    """Peak |x| over one cycle of x(θ) = Re Σ_k amp_k e^{i j_k 2πt/T} (amp (S, K, m),
-    jj the integer harmonic index of each order) on a grid of nt points."""
+def _in_time(amp, jj, nt):
+    """x(θ) = Re Σ_k amp_k e^{i j_k 2πθ/cycle} on a grid of nt points over one cycle
+    (amp (S, K, m), jj the integer harmonic index of each order): (S, m, nt)."""
     S, _, m = amp.shape
     X = np.zeros((S, m, nt // 2 + 1), complex)
     X[:, :, jj] = np.swapaxes(amp, 1, 2) * (nt / 2.0)
-    return np.max(np.abs(np.fft.irfft(X, n=nt, axis=-1)), axis=-1)
+    return np.fft.irfft(X, n=nt, axis=-1)
+
+
+def _peak_abs(x):
+    """max |x| along the last axis, from the max and the min (no |x| array)."""
+    return np.maximum(x.max(axis=-1), -x.min(axis=-1))
 
 
 def forced_response(J_kgm2, k_Nm_rad, C, throw_index, phases_deg, harmonics_gas,
@@ -225,7 +238,10 @@ def forced_response(J_kgm2, k_Nm_rad, C, throw_index, phases_deg, harmonics_gas,
     Notes
     -----
     Order 0 (the mean torque) accelerates the free chain as a whole and twists it
-    steadily; it is no vibration and is left out.  The peaks are taken on a grid of at
+    steadily; it is no vibration and is left out.  The chain is free–free, so the
+    angles of the masses include the swing of the whole chain about its mean rotation
+    (the speed fluctuation the flywheel limits: large at low speed, falling as 1/n²);
+    the section torques, from the twists, hold none of it.  The peaks are taken on a grid of at
     least 16 points per period of the highest order (error below 2 % of that order's
     share in the worst case).
     """
@@ -255,12 +271,13 @@ def forced_response(J_kgm2, k_Nm_rad, C, throw_index, phases_deg, harmonics_gas,
     omega = speeds * (2 * np.pi / 60.0)
     Omega = omega[:, None] * orders[None, :]                               # (S, K)
     theta = harmonic_solve(stiffness_matrix(k), J, C, F, Omega)            # (S, K, n)
-    twist = k * (theta[..., :-1] - theta[..., 1:])                         # (S, K, n-1)
     base = base_order(hg.cycle_deg)
     jj = np.rint(orders / base).astype(int)
-    nt = int(2 ** np.ceil(np.log2(max(256, 16 * int(jj.max(initial=1))))))
-    amp = np.degrees(_peak(theta, jj, nt))
-    torque = _peak(twist, jj, nt)
+    nt = max(256, 16 * int(jj.max(initial=1)))
+    x = _in_time(theta, jj, nt)                                            # (S, n, nt)
+    amp = np.degrees(_peak_abs(x))
+    x = np.subtract(x[:, :-1], x[:, 1:], out=x[:, 1:])                     # the twists
+    torque = k * _peak_abs(x)                                              # (S, n-1)
     stress = None if d is None else 16.0 * torque / (np.pi * d ** 3) / 1e6
     s, i = np.unravel_index(int(np.argmax(torque)), torque.shape)
     return Response(speeds_rpm=speeds, amplitude_deg=amp, torque_Nm=torque,
