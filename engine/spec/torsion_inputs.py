@@ -177,6 +177,8 @@ def read_torsion(c, data, strokes=4):
     zeta = get("damping_ratio")
     dampers = []
     for where, item in c.rows(t, TORSION_DAMPERS):
+        if isinstance(item.get("at"), int) and not isinstance(item["at"], bool):
+            item = {**item, "at": str(item["at"])}       # a by-hand chain's mass number
         at = c.get(item, TORSION_DAMPERS, "at", path=where)
         cv = c.get(item, TORSION_DAMPERS, "c_Nms_rad", path=where, si=True)
         if at is not None and cv is not None:
