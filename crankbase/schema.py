@@ -222,6 +222,7 @@ class Key:
 def _unit_key(unit: str) -> str:
     return "spec.unit." + {"kg/m²": "kg_m2", "kg·mm": "kg_mm", "kg·m²": "kg_m2_inertia",
                            "N/mm": "N_per_mm", "N·m": "N_m", "rad/s": "rad_s",
+                           "N·m/rad": "N_m_rad", "N·m·s/rad": "N_m_s_rad",
                            "rad/s²": "rad_s2", "m/s²": "m_s2", "g·mm": "g_mm",
                            "-": "one"}.get(unit, unit)
 

@@ -1,7 +1,7 @@
 """``crankdyn engine``: the engine force table (Table 2), its workbook and plots.
 
     crankdyn engine SPEC.toml -o DIR [--lang ru|en] [--step DEG] [--form seed|kolchin]
-                                     [--bearings] [--drawing]
+                                     [--bearings] [--drawing] [--torsion]
     crankdyn engine --example [NAME] -o DIR
     crankdyn engine SPEC.toml --variants variants.csv|xlsx -o DIR [--jobs N]
 
@@ -46,6 +46,12 @@ def add_parser(subparsers):
                         "journal_torques.csv, rod_bearings.csv, wear.csv, rod_model.csv with "
                         "[rod] model = \"rigid\", and their plots); implied by a [bearings] "
                         "or [rod] table in the spec")
+    p.add_argument("--torsion", action="store_true",
+                   help="also the torsional vibration of the crankshaft (modes, Holzer "
+                        "tables, torque harmonics, critical speeds, forced response: "
+                        "<name>_torsion_modes.csv … <name>_torsion.xlsx, as crankdyn "
+                        "torsion writes them); implied by a [torsion] table, which it needs "
+                        "(the shaft's stiffnesses cannot be guessed)")
     p.add_argument("--form", choices=("seed", "kolchin"),
                    help="Table 2 (<name>_table2.csv) in the seed's form (forces in mm and N) "
                         "or Kolchin's (specific forces in MPa with the coefficients tg β, "
@@ -94,7 +100,8 @@ def run(args) -> int:
         import engine
 
         report = engine.run_study(engine.load(spec_path), bearings=args.bearings,
-                                  step=args.step, form=args.form, source=spec_path)
+                                  step=args.step, form=args.form, source=spec_path,
+                                  torsion=getattr(args, "torsion", False))
         written = engine.write_report(report, out, args.lang, drawing=args.drawing)
     except SpecError as exc:            # the library's arguments → this command's options
         raise exc.renamed(OPTION_NAMES) from None

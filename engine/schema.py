@@ -19,7 +19,8 @@ DEFAULT_HALF_ANGLE_DEG = 60.0
 __all__ = ["SCHEMA", "ENGINE", "MASSES", "PRESSURE", "CYCLE", "TABLE", "FLYWHEEL",
            "BALANCE", "COUNTERWEIGHT", "BEARINGS", "ROD", "ARRANGEMENTS",
            "COUNTERWEIGHT_DESIGNS", "TABLE_FORMS", "PRESSURE_UNITS", "ROD_MODELS",
-           "ROD_SMALL_END_FRACTION", "ROUNDING_DEFAULTS", "MASS_WAYS"]
+           "ROD_SMALL_END_FRACTION", "ROUNDING_DEFAULTS", "MASS_WAYS", "TORSION",
+           "TORSION_MASSES", "TORSION_DAMPERS", "TORSION_SCHEMA", "MAX_TORSION_MASSES"]
 
 #: Crank-train arrangements.
 ARRANGEMENTS = ("inline", "vee", "boxer")
@@ -157,7 +158,50 @@ ROD = Table("rod", (
     Key("cg_from_big_end_mm", gt=0, symbol=True, **MM),
 ))
 
+#: Most masses of a torsional chain (``[torsion]``): every throw of the largest engine
+#: (:data:`~crankbase.schema.MAX_CYLINDERS`) and a few more (damper, gears, flywheel,
+#: the load); the count sizes the eigenproblem, so it is bounded before anything is built.
+MAX_TORSION_MASSES = 64
+_MAX_SECTIONS = MAX_TORSION_MASSES - 1
+
+#: Extra masses beside the throws (``masses = [{ name, J_kgm2, before | after }]``):
+#: ``before``/``after`` is a throw number (1 … the engine's throws) or ``"first"`` /
+#: ``"last"``; the loader reads these two keys itself (a number or a word).
+TORSION_MASSES = ArrayOfTables("torsion.masses", (
+    Key("name", "name", required=True),
+    Key("J_kgm2", gt=0, unit="kg·m²", required=True),
+    Key("before", "string", required="cond"),
+    Key("after", "string", required="cond"),
+), max_items=MAX_TORSION_MASSES)
+
+#: Absolute viscous dampers at named masses (``dampers = [{ at, c_Nms_rad }]``).
+TORSION_DAMPERS = ArrayOfTables("torsion.dampers", (
+    Key("at", "string", required=True),
+    Key("c_Nms_rad", gt=0, unit="N·m·s/rad", required=True),
+), max_items=MAX_TORSION_MASSES)
+
+TORSION = Table("torsion", (
+    Key("throw_J_kgm2", ge=0, unit="kg·m²", required="cond", symbol=True),
+    Key("inertias_kgm2", "numbers", gt=0, unit="kg·m²", required="cond",
+        max_length=MAX_TORSION_MASSES, min_length=2),
+    Key("stiffnesses_Nm_rad", "numbers", gt=0, unit="N·m/rad", required=True,
+        max_length=_MAX_SECTIONS, min_length=1),
+    Key("throws", "numbers", ge=0, max_length=MAX_TORSION_MASSES),
+    Key("damping_ratio", ge=0, lt=1, default=0.02, symbol=True),
+    Key("speed_range_rpm", "numbers", gt=0, length=2, unit="rpm", required="cond"),
+    Key("speed_step_rpm", gt=0, unit="rpm", default=10.0, shown_default="10"),
+    Key("orders_max", gt=0, le=48, default=12.0, shown_default="12"),
+    Key("shaft_diameters_mm", "numbers", gt=0, max_length=_MAX_SECTIONS, **MM),
+    Key("holzer_trial_rad_s", "numbers", gt=0, unit="rad/s", default=(), max_length=50),
+    TORSION_MASSES,
+    TORSION_DAMPERS,
+))
+
 #: The engine spec file (``crankdyn engine``; with ``[dynamics]`` also ``crankdyn
 #: dynamics``, whose table the dynamics schema declares).
 SCHEMA = Schema("engine", (ENGINE, MASSES, PRESSURE, TABLE, FLYWHEEL, BALANCE, BEARINGS,
-                           ROD))
+                           ROD, TORSION))
+
+#: A torsional chain on its own (``crankdyn torsion``): ``name`` and ``[torsion]`` (the
+#: by-hand chain), the same ``[torsion]`` table as the engine's.
+TORSION_SCHEMA = Schema("torsion", (TORSION,), extra=("name",))

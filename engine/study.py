@@ -86,6 +86,10 @@ class EngineReport:
         The figures of the report (without the drawing-scale ones).
     source : Path or None
         The spec file the study was read from (an input no output may overwrite).
+    torsion : torsion.study.TorsionReport or None
+        The torsional vibration of the crankshaft, when the spec has ``[torsion]`` (its
+        own tables, workbook ``<name>_torsion.xlsx`` and figures, written beside the
+        engine's: :func:`torsion.study.run_study`).
     """
 
     study: object
@@ -96,6 +100,7 @@ class EngineReport:
     name: str
     plot_names: tuple
     source: Path | None = None
+    torsion: object = None
 
     @property
     def file_names(self) -> dict:
@@ -126,6 +131,9 @@ class ReportFiles:
     formats : tuple of str
     drawings : tuple of Path
         The 1:1 drawing-scale PDFs (``drawing=True``).
+    torsion : tuple of Path
+        The torsional-vibration files (CSVs, workbook, figures) of a report with
+        ``[torsion]``.
     """
 
     folder: Path
@@ -135,10 +143,11 @@ class ReportFiles:
     plot_count: int
     formats: tuple
     drawings: tuple = ()
+    torsion: tuple = ()
 
     @property
     def paths(self) -> tuple:
-        return (*self.tables, self.workbook, *self.plots, *self.drawings)
+        return (*self.tables, self.workbook, *self.plots, *self.drawings, *self.torsion)
 
     def __iter__(self):
         return iter(self.paths)
@@ -182,7 +191,7 @@ def with_options(study, step=None, form=None):
 
 
 def run_study(study, *, bearings: bool = False, step=None, form=None,
-              source=None) -> EngineReport:
+              source=None, torsion: bool = False) -> EngineReport:
     """Compute a whole engine report: one cylinder, the whole engine, Table 2 and, when
     asked, the bearing loads.  Nothing is drawn or written (:func:`write_report`).
 
@@ -203,6 +212,10 @@ def run_study(study, *, bearings: bool = False, step=None, form=None,
         The spec file the study was loaded from: an input that no output may overwrite.
         (The ``[bearings]`` and ``[rod]`` tables come with the study, ``study.bearings``,
         read once by :func:`engine.load`.)
+    torsion : bool, default False
+        Also the torsional vibration of the crankshaft (:mod:`torsion.study`).  A spec
+        with a ``[torsion]`` table has it anyway; asked without the table it is an error
+        (the shaft's stiffnesses cannot be guessed).
 
     Returns
     -------
@@ -246,10 +259,17 @@ def run_study(study, *, bearings: bool = False, step=None, form=None,
         bearing = _bearings(spec, table, result.curves, b_inputs, whole)
         tables.update(bearing.tables)
         plot_names += bearing.plot_names
+    source = Path(source) if isinstance(source, (str, Path)) else None
+    vibration = None
+    if torsion and study.torsion is None:
+        raise SpecError([Problem("torsion", Text("torsion.error.no_table"))])
+    if study.torsion is not None:
+        from torsion.study import run_study as run_torsion
+
+        vibration = run_torsion(study, source=source)
     return EngineReport(study=study, cylinder=result, whole=whole, bearings=bearing,
                         tables=MappingProxyType(tables), name=safe_name(spec.name, "engine"),
-                        plot_names=tuple(plot_names),
-                        source=Path(source) if isinstance(source, (str, Path)) else None)
+                        plot_names=tuple(plot_names), source=source, torsion=vibration)
 
 
 def _bearings(spec, table, fine, inputs, whole) -> BearingReport:
@@ -385,7 +405,14 @@ def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "s
     drawings = tuple(out / f"{f}.pdf" for f in pdfs.values())
     inputs = [*inputs, *([report.source] if report.source is not None else []),
               report.study.spec.pressure_file]
-    check_not_input([xlsx, *tables, *plots, *drawings], inputs)
+    vib = vib_paths = None
+    if report.torsion is not None:
+        from torsion import study as vib
+
+        vib_paths = vib.output_paths(report.torsion, out, formats)
+    torsion_files = () if vib_paths is None else (
+        *vib_paths["tables"], vib_paths["workbook"], *vib_paths["plots"])
+    check_not_input([xlsx, *tables, *plots, *drawings, *torsion_files], inputs)
 
     # 1. build everything in memory
     wb = report_workbook(report, lang)
@@ -397,6 +424,9 @@ def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "s
         figs.update(bearing_figures(report.bearings.analysis, lang))
     if drawing:
         figs.update(drawing_figures(result, lang))
+    vib_wb = vib_figs = None
+    if vib is not None:
+        vib_wb, vib_figs = vib.build_outputs(report.torsion, lang)
 
     # 2. write: every file into a staging folder, moved into the folder only when all are
     #    done; SVG text stays text (searchable, and a third cheaper to write than glyph paths)
@@ -410,8 +440,10 @@ def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "s
                 save_figure(figs[n], stage / files[n], formats=formats)
             for n, f in pdfs.items():                      # 1:1, vector only
                 save_figure(figs[n], stage / f, formats=("pdf",))
+            if vib is not None:                            # [torsion]: its own files
+                vib.write_into(stage, report.torsion, vib_wb, vib_figs, formats)
     finally:
-        for fig in figs.values():
+        for fig in (*figs.values(), *(vib_figs or {}).values()):
             fig.clear()
     # figures of this engine from an earlier run that this run did not write are stale
     written = {p.name for p in (*plots, *drawings)}
@@ -422,4 +454,4 @@ def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "s
                 path.unlink()
     return ReportFiles(folder=out, tables=tables, workbook=xlsx, plots=plots,
                        plot_count=len(report.plot_names), formats=formats,
-                       drawings=drawings)
+                       drawings=drawings, torsion=torsion_files)

@@ -28,6 +28,10 @@ def summary_lines(report, lang: str = "ru", written=None) -> list[str]:
     lines = cylinder_lines(report.cylinder, lang) + whole_engine_lines(report.whole, lang)
     if report.bearings is not None:
         lines += bearing_lines(report.bearings.analysis, report.bearings.pin_wear, lang)
+    if getattr(report, "torsion", None) is not None:       # [torsion]
+        from torsion.summary import summary_lines as torsion_lines
+
+        lines += torsion_lines(report.torsion, lang)
     if written is not None:
         lines.append(written_line(written, lang))
     return lines
@@ -145,4 +149,6 @@ def written_line(written, lang: str = "ru") -> str:
     names.append(t.n("engine.summary.plots", written.plot_count,
                      formats=", ".join(f.upper() for f in written.formats)))
     names += [p.name for p in written.drawings]
+    if getattr(written, "torsion", ()):
+        names.append(t.n("torsion.summary.files", len(written.torsion)))
     return t("common.wrote", files=", ".join(names), folder=str(written.folder))

@@ -19,8 +19,9 @@ from .model import (ARRANGEMENTS, COUNTERWEIGHT_DESIGNS, PRESSURE_UNITS,
                     ROD_SMALL_END_FRACTION, Counterweight, CrankTrain, CycleSpec,
                     EngineSpec, EngineSpecError, EngineStudy, PressureTable, TableSettings)
 from .pressure import read_pressure_csv
+from .torsion_inputs import TorsionInputs
 
 __all__ = ["EngineSpec", "TableSettings", "EngineStudy", "CrankTrain", "Counterweight",
            "ARRANGEMENTS", "COUNTERWEIGHT_DESIGNS", "CycleSpec", "PressureTable",
            "EngineSpecError", "load", "load_spec", "PRESSURE_UNITS", "read_pressure_csv",
-           "ROD_SMALL_END_FRACTION", "BearingInputs"]
+           "ROD_SMALL_END_FRACTION", "BearingInputs", "TorsionInputs"]

@@ -21,6 +21,7 @@ from .inputs import read_tables
 from .model import (Counterweight, CrankTrain, EngineSpec, EngineSpecError, EngineStudy,
                     TableSettings, loaded)
 from .pressure import inline_pressure, read_pressure_csv
+from .torsion_inputs import read_torsion
 
 __all__ = ["load", "load_spec"]
 
@@ -40,8 +41,9 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
     -------
     EngineStudy
         ``spec`` (:class:`EngineSpec`), ``settings`` (:class:`TableSettings`), ``train``
-        (:class:`CrankTrain`) and ``bearings`` (the ``[bearings]`` and ``[rod]`` inputs,
-        :class:`~engine.spec.inputs.BearingInputs`).
+        (:class:`CrankTrain`), ``bearings`` (the ``[bearings]`` and ``[rod]`` inputs,
+        :class:`~engine.spec.inputs.BearingInputs`) and ``torsion`` (the ``[torsion]``
+        inputs, :class:`~engine.spec.torsion_inputs.TorsionInputs`, None without it).
 
     Raises
     ------
@@ -198,6 +200,7 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
     form = c.get(t, TABLE, "form")
 
     train = _crank_train(c, data, e, cylinders)
+    torsion = read_torsion(c, data, strokes)  # [torsion]: None without the table
 
     if isinstance(pressure, CycleSpec) and pressure.rounding and not c.problems:
         check_rounded_peak(c, pressure, lam if lam is not None else stroke / 2.0 / L_mm,
@@ -220,7 +223,7 @@ def load(path_or_dict, base_dir=None) -> EngineStudy:
                                  force_scale=mu, form=form or "seed")
     bearings = read_tables(c, data, spec)
     c.raise_if_any(EngineSpecError)
-    return EngineStudy(spec, settings, train, bearings)
+    return EngineStudy(spec, settings, train, bearings, torsion)
 
 
 def _crank_train(c, data, e, cylinders):

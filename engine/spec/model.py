@@ -39,6 +39,7 @@ from ..kinematics import piston_travel
 from ..schema import (ARRANGEMENTS, COUNTERWEIGHT_DESIGNS, MASS_WAYS, PRESSURE_UNITS,
                       ROD_SMALL_END_FRACTION, TABLE_FORMS)
 from .inputs import BearingInputs
+from .torsion_inputs import TorsionInputs
 
 __all__ = ["EngineSpec", "TableSettings", "EngineStudy", "CrankTrain", "Counterweight",
            "ARRANGEMENTS", "COUNTERWEIGHT_DESIGNS", "TABLE_FORMS", "CycleSpec",
@@ -487,9 +488,12 @@ class EngineStudy:
     (``spec``), the report settings (``settings``), the crank train of the whole engine
     (``train``: ``[engine]`` layout keys, ``[flywheel]``, ``[balance]``) and the inputs of
     the bearing calculation (``bearings``: ``[bearings]`` and ``[rod]``, a
-    :class:`~engine.spec.inputs.BearingInputs`)."""
+    :class:`~engine.spec.inputs.BearingInputs`) and of the torsional vibration
+    (``torsion``: ``[torsion]``, a :class:`~engine.spec.torsion_inputs.TorsionInputs`;
+    None without the table)."""
 
     spec: EngineSpec
     settings: TableSettings
     train: CrankTrain = field(default_factory=lambda: CrankTrain())
     bearings: BearingInputs = field(default_factory=BearingInputs)
+    torsion: TorsionInputs | None = None

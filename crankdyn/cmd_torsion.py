@@ -1,0 +1,70 @@
+"""``crankdyn torsion``: torsional vibration of the crankshaft.
+
+    crankdyn torsion SPEC.toml -o DIR [--lang ru|en]
+    crankdyn torsion --example [NAME] -o DIR            # three-rotor, six
+
+SPEC is an engine spec with a ``[torsion]`` table, or a file with only ``name`` and a
+``[torsion]`` chain given by hand (free vibration unless an engine drives its throws).
+Writes ``DIR/<name>_torsion_modes.csv``, ``_holzer.csv`` and, with an engine,
+``_torque_harmonics.csv``, ``_critical_speeds.csv``, ``_torsion_response.csv``, the
+workbook ``DIR/<name>_torsion.xlsx`` and the figures, all at once through a staging folder;
+bad input writes nothing (one line per problem, exit status 2).  The work is the
+library's (:func:`torsion.study.run_study`, :func:`torsion.study.write_report`,
+:mod:`torsion.summary`); this module parses the arguments and prints.
+"""
+from __future__ import annotations
+
+from crankbase.errors import Text
+
+#: Bundled examples by short name (``--example NAME``; a file stem works too).
+EXAMPLES = {"three-rotor": "torsion_three_rotor.toml", "six": "torsion_inline6.toml"}
+
+
+def add_parser(subparsers):
+    p = subparsers.add_parser(
+        "torsion", help="torsional vibration of the crankshaft: modes, Holzer tables, "
+                        "torque harmonics, critical speeds, forced response",
+        description="Torsional vibration of a lumped-mass chain (the crankshaft's throws, "
+                    "damper, flywheel …, or a chain given by hand): natural frequencies and "
+                    "mode shapes, Holzer tables, the harmonics of one cylinder's torque, "
+                    "the critical speeds and the forced response over the speed range, "
+                    "driven by the engine's own force table.")
+    p.add_argument("spec", nargs="?", metavar="SPEC.toml",
+                   help="engine spec with [torsion], or name + [torsion] (a chain by hand)")
+    p.add_argument("--example", nargs="?", const="three-rotor", metavar="NAME",
+                   help="run a bundled example instead of a spec: "
+                        + ", ".join(EXAMPLES) + " (default three-rotor)")
+    p.add_argument("-o", "--output", required=True, metavar="DIR",
+                   help="output folder (created if needed)")
+    p.add_argument("--lang", choices=("ru", "en"), default="ru",
+                   help="language of the workbook, the plots and the summary (default ru)")
+    p.set_defaults(func=run)
+
+
+def run(args) -> int:
+    from pathlib import Path
+
+    from crankbase.errors import SpecError
+
+    if args.spec and args.example:
+        raise SpecError(Text("torsion.error.give_spec"))
+    if not args.spec and not args.example:
+        raise SpecError(Text("torsion.error.no_spec"))
+    if args.spec:
+        spec_path = Path(args.spec)
+    else:
+        from .examples import find_example
+
+        spec_path = find_example(args.example, EXAMPLES, "torsion")
+    out = Path(args.output)
+    if out.exists() and not out.is_dir():
+        raise SpecError(Text("errors.crankdyn.cli_engine.o_exists_and", {"out": out}))
+    from torsion.study import load, run_study, write_report
+
+    try:
+        report = run_study(load(spec_path))
+        written = write_report(report, out, args.lang)
+    except SpecError as exc:            # the library's arguments → this command's options
+        raise exc.renamed({"lang": "--lang", "out": "-o"}) from None
+    print("\n".join(report.summary_lines(args.lang, written=written)))
+    return 0
