@@ -252,3 +252,46 @@ def test_chain_model_of_a_six_bar_runs_the_true_motion():
     fw = size_flywheel(model, 0.04)
     assert fw.motion.delta == pytest.approx(0.04, rel=1e-6)
     assert np.min(model.J_kgm2) > 0
+
+
+def test_v_compressor_reduced_inertia_by_the_two_mass_rod():
+    """A two-cylinder V compressor (two RRP groups on one crank pin, central guides at
+    γ₁, γ₂ through O) in closed form.  A rod of mass m, centre of mass at a from the crank
+    pin and b = L − a from the piston pin with J_S = m·a·b is dynamically equivalent to
+    m·b/L at A and m·a/L at B (the two-mass rod, l₁·l₂ = k_G²: Khurmi & Gupta, Theory of
+    Machines, 14th ed., 2005, the chapter on inertia forces in reciprocating parts:
+    "equivalent dynamical system"), so
+
+        J_red = J_crank,O + Σ_j [ m_j b_j/L_j · r² + (m_pj + m_j a_j/L_j) x_j'(φ)² ],
+        x_j' = −r sin θ − r² sin θ cos θ / √(L_j² − r² sin² θ),  θ = φ − γ_j,
+
+    the exact piston velocity ratio along its guide."""
+    r = 0.06
+    rods = [(0.25, 0.09, 3.0, 7.0, math.radians(45.0)), (0.27, 0.1, 3.5, 6.0,
+                                                         math.radians(135.0))]
+    groups, links = [], {"crank": ch.Link(5.0, 0.01, 0.015 + 0j)}
+    for k, (L, a, m, mp, gam) in enumerate(rods, 1):
+        groups.append(ch.RRP((f"rod{k}", f"piston{k}"), ("A", f"B{k}"), L,
+                             ch.Guide("frame", 0j, gam, 0.0), 1))
+        links[f"rod{k}"] = ch.Link(m, m * a * (L - a), a + 0j)
+        links[f"piston{k}"] = ch.Link(mp)
+    mech = ch.Mechanism({"O": 0j}, ch.Driver(r), groups, links)
+    model = chain_model(mech, steps=360, gravity=0.0)
+    phi = model.phi
+    J = 0.01 + 5.0 * 0.015 ** 2 + 0.0 * phi
+    dJ = 0.0 * phi
+    for L, a, m, mp, gam in rods:
+        th = phi - gam
+        root = np.sqrt(L * L - (r * np.sin(th)) ** 2)
+        x1 = -r * np.sin(th) - r * r * np.sin(th) * np.cos(th) / root
+        x2 = (-r * np.cos(th) - r * r * np.cos(2 * th) / root
+              - r ** 4 * np.sin(th) ** 2 * np.cos(th) ** 2 / root ** 3)
+        J = J + m * (L - a) / L * r * r + (mp + m * a / L) * x1 * x1
+        dJ = dJ + 2 * (mp + m * a / L) * x1 * x2
+    np.testing.assert_allclose(model.J_kgm2, J, rtol=1e-12)
+    np.testing.assert_allclose(model.dJ_dphi_kgm2, dJ, rtol=0, atol=1e-12 * np.max(J))
+    np.testing.assert_allclose(model.M_resist_Nm, 0.0, atol=0)      # no load, no weight
+    # reversed rotation: the same J over the angle turned, dJ/dφ turned with it
+    back = chain_model(mech, steps=360, gravity=0.0, rotation=-1)
+    np.testing.assert_allclose(back.J_kgm2, J[::-1], rtol=1e-12)
+    np.testing.assert_allclose(back.dJ_dphi_kgm2, -dJ[::-1], rtol=0, atol=1e-12 * np.max(J))
