@@ -5,6 +5,9 @@
   dJ_red/dφ, the reduced driving and resisting moments; from given reduced quantities, from
   a linkage (the core's velocity ratios and loads), from an engine (gas torque of all
   cylinders) and from a chain of constant ratios;
+* :mod:`dynamics.chain_model` – the reduced model of any chain of class II groups
+  (:mod:`linkage.chain`: J_red, dJ_red/dφ, M_red from the power of every load, as a
+  ``ReducedModel``), its shaking force and moment, the frame's load from the kinetostatics;
 * :mod:`dynamics.motion` – the true motion ω(φ) of the steady cycle (energy form), the
   flywheel (classic and exact), a motor characteristic M(ω) integrated in time to the
   periodic state and the start-up; kinetostatics under the true motion;
@@ -16,6 +19,7 @@ This package uses :mod:`linkage` and :mod:`engine`; they never import it.  No ma
 openpyxl at import time (:mod:`dynamics.plots` imports them when called).
 """
 from ._base import MotionError
+from .chain_model import ChainShaking, chain_shaking
 from .motion import (FlywheelResult, Motor, MotionResult, classic_flywheel,
                      engine_true_motion_forces, linkage_forces, motor_startup,
                      motor_steady_motion, size_flywheel, steady_motion, true_motion_forces)
@@ -32,4 +36,5 @@ __all__ = ["MotionError", "RotorBalance", "balance_rotor", "load_rotor_spec",
            "MotionResult", "FlywheelResult", "Motor", "steady_motion", "size_flywheel",
            "classic_flywheel", "motor_steady_motion", "motor_startup", "linkage_forces",
            "true_motion_forces", "engine_true_motion_forces", "BalanceResult", "shaking", "balance_fourbar",
-           "balance_crank_slider", "mechanism_balance", "load_dynamics_spec", "run_job"]
+           "balance_crank_slider", "mechanism_balance", "load_dynamics_spec", "run_job",
+           "chain_shaking", "ChainShaking"]

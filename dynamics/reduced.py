@@ -15,9 +15,10 @@ Sources of a model:
 
 * :func:`machine_model` – given directly by its reduced quantities (a constant J and
   piecewise-linear moments, the textbooks' turning-moment diagrams);
-* :func:`linkage_model` – a crank-rocker or crank-slider of :mod:`linkage`: J_red and
-  dJ_red/dφ from the core's velocity ratios (kinematics at unit crank speed), the reduced
-  resisting moment from the power of the core's own external loads and weights;
+* :func:`linkage_model` – a crank-rocker or crank-slider of :mod:`linkage`, reduced as its
+  chain by :func:`dynamics.chain_model.chain_model` (the reduction of any chain of class II
+  groups): J_red and dJ_red/dφ from the velocity ratios (kinematics at unit crank speed),
+  the reduced resisting moment from the power of the core's own external loads and weights;
 * :func:`chain_reduce` – a chain of elements with constant speed ratios (shafts, gear pairs,
   a hoist drum with a load): the seed's Example 11-2.
 
@@ -31,12 +32,14 @@ References
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass
 
 import numpy as np
 
 from crankbase.errors import Text
 from ._base import Problem, SpecError
+from .chain_model import stroke_extremes  # noqa: F401  (its home was here)
+from .results import ReducedModel
 
 __all__ = ["ReducedModel", "PiecewiseLinear", "machine_model", "linkage_model",
            "engine_model", "chain_reduce", "ChainReduction", "braking_moment"]
@@ -118,86 +121,6 @@ class PiecewiseLinear:
         return self.primitive(b) - self.primitive(a)
 
 
-@dataclass
-class ReducedModel:
-    """Reduced quantities of a machine over one period, on a uniform grid.
-
-    Attributes
-    ----------
-    name : str
-    phi : ndarray
-        Angle turned by the main shaft in its direction of rotation, ``0 … period``
-        inclusive (the last point repeats the first one a period later), increasing;
-        uniform for a linkage or an engine, with the diagrams' breakpoints added for a
-        machine. [rad]
-    J_kgm2 : ndarray
-        Reduced moment of inertia J_red(φ) (without an added flywheel). [kg·m²]
-    dJ_dphi_kgm2 : ndarray
-        dJ_red/dφ. [kg·m²/rad]
-    M_drive_Nm, M_resist_Nm : ndarray
-        Reduced driving moment (+ in the direction of rotation) and reduced resisting
-        moment (+ against it). [N·m]
-    W_drive_J, W_resist_J : ndarray
-        Their work from φ = 0: ∫M dφ (exact for piecewise-linear diagrams). [J]
-    period : float
-        [rad]
-    omega_nominal : float or None
-        The machine's nominal (mean) speed if its spec gives one. [rad/s]
-    phi0_deg : float
-        The crank angle of the mechanism at φ = 0 (absolute, ccw from +x), for a linkage;
-        0 otherwise. [deg]
-    rotation : int
-        +1 (ccw) or −1: absolute crank angle = phi0_deg + rotation·φ.
-    source : object
-        What the model was built from (a linkage spec, a machine spec).
-    """
-
-    name: str
-    phi: np.ndarray
-    J_kgm2: np.ndarray
-    dJ_dphi_kgm2: np.ndarray
-    M_drive_Nm: np.ndarray
-    M_resist_Nm: np.ndarray
-    W_drive_J: np.ndarray
-    W_resist_J: np.ndarray
-    period: float
-    omega_nominal: float | None = None
-    phi0_deg: float = 0.0
-    rotation: int = 1
-    source: object = None
-    extra: dict = field(default_factory=dict)
-
-    @property
-    def phi_deg(self):
-        """Absolute crank angle of every grid point (for a linkage; φ in degrees for a
-        machine), not wrapped. [deg]"""
-        return self.phi0_deg + self.rotation * np.degrees(self.phi)
-
-    @property
-    def W_net_J(self):
-        """∫(M_d − M_c)dφ from φ = 0. [J]"""
-        return self.W_drive_J - self.W_resist_J
-
-    def with_drive(self, M_drive_Nm, W_drive_J):
-        return replace(self, M_drive_Nm=np.asarray(M_drive_Nm, float) + 0 * self.phi,
-                       W_drive_J=np.asarray(W_drive_J, float) + 0 * self.phi)
-
-    def with_constant_drive(self):
-        """The same machine with the constant moment that makes the cycle steady.
-
-        Returns ``(model, M_const)``.  Normally a constant driving moment
-        M_d = (∫M_c dφ − ∫M_d,given dφ)/period is added to the given driving moments; a
-        machine given by its driving moments only (an engine's turning-moment diagram)
-        gets a constant *resisting* moment ∫M_d dφ/period instead (``M_const`` is then
-        returned negative: it is the drive's deficit)."""
-        extra = (self.W_resist_J[-1] - self.W_drive_J[-1]) / self.period
-        if not np.any(self.M_resist_Nm) and not np.any(self.W_resist_J) and extra < 0:
-            return replace(self, M_resist_Nm=self.M_resist_Nm - extra,
-                           W_resist_J=self.W_resist_J - extra * self.phi), float(extra)
-        return self.with_drive(self.M_drive_Nm + extra, self.W_drive_J + extra * self.phi), \
-            float(extra)
-
-
 def _grid(period, steps):
     return np.linspace(0.0, period, int(steps) + 1)
 
@@ -243,78 +166,6 @@ def machine_model(J_kgm2, moments, period_deg=360.0, *, name="machine", steps=14
 # --------------------------------------------------------------------------- linkage
 
 
-def _rotation(spec):
-    return 1 if spec.omega >= 0 else -1
-
-
-def linkage_kinematics_unit(spec, phi_abs):
-    """The core's kinematics of a linkage spec at absolute crank angles ``phi_abs`` [rad]
-    at unit crank speed in the spec's direction of rotation (ω = ±1 rad/s, ε = 0):
-    velocities are then velocity ratios d(·)/dφ and accelerations second derivatives."""
-    from linkage.analysis import build_mechanism
-
-    mech = build_mechanism(spec)
-    return mech, mech.kinematics(phi_abs, float(_rotation(spec)), 0.0)
-
-
-def reduced_inertia(spec, kin):
-    """J_red and dJ_red/dφ from the core's kinematics at unit crank speed.
-
-    J_red = Σ m_i |v_Si|² + J_Si ω_i²,  dJ_red/dφ = Σ 2 m_i v_Si·a_Si + 2 J_Si ω_i ε_i
-    (with ω_crank = 1, ε_crank = 0 the velocities are d/dφ, the accelerations d²/dφ²).
-    [kg·m², kg·m²/rad]
-    """
-    from linkage.groups import dot
-
-    zero = 0.0 * np.asarray(kin["A"].z.real, float)
-    J = zero
-    dJ = zero
-    for lname in spec.link_names:
-        ls = spec.links[lname]
-        link = kin["links"][lname]
-        S = link.point(ls.cg)
-        J = J + ls.mass * dot(S.v, S.v) + ls.inertia * link.omega ** 2
-        dJ = dJ + 2 * ls.mass * dot(S.v, S.a) + 2 * ls.inertia * link.omega * link.eps
-    return J, dJ
-
-
-def external_power(spec, mech, kin, ext, split=False):
-    """Power [W] of the linkage's external loads (the core's own load model,
-    :func:`linkage.loads.external_loads`: forces, moments, useful resistance by stroke and
-    span) and of the weights, at the kinematics ``kin`` (unit crank speed: then it is the
-    reduced moment of those loads, + helping the motion).  ``split=True`` returns the
-    applied loads' and the weights' powers apart."""
-    from linkage.groups import dot
-    from linkage.loads import external_loads, stroke_cycle
-
-    forces, moments, _ = external_loads(spec, mech, kin, stroke_cycle(mech, spec, ext))
-    P = 0.0 * np.asarray(kin["A"].z.real, float)
-    Pw = P
-    for lname in spec.link_names:
-        link = kin["links"][lname]
-        o = link.origin
-        for f, at in forces[lname]:
-            v = o.v + (at - o.z).perp() * link.omega      # v = v_O + iω (r − r_O)
-            P = P + dot(f, v)
-        for m in moments[lname]:
-            P = P + m * link.omega
-        ls = spec.links[lname]
-        if ls.mass and spec.gravity:                       # weight −m g j at S
-            Pw = Pw - ls.mass * spec.gravity * link.point(ls.cg).v.imag
-    if split:
-        return P, Pw
-    return P + Pw
-
-
-def stroke_extremes(spec, mech):
-    """The extremes the core's load model needs (None without a working stroke)."""
-    if spec.working_stroke is None:
-        return None
-    default = "ccw" if spec.kind == "crank-rocker" else "away"
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return mech.extremes(_rotation(spec), spec.working_stroke or default)
-
-
 def linkage_model(spec, *, steps=720, phi0_deg=None, drive_power=False) -> ReducedModel:
     """The reduced model of a crank-rocker or crank-slider of :mod:`linkage`.
 
@@ -337,37 +188,15 @@ def linkage_model(spec, *, steps=720, phi0_deg=None, drive_power=False) -> Reduc
 
     Notes
     -----
-    Velocity ratios from the core's kinematics at ω = ±1 rad/s, ε = 0
-    (:func:`linkage_kinematics_unit`); eq. (11-10)/(11-13) of [1]_.  The loads are the
-    core's (:func:`linkage.loads.external_loads`): one load model for the force analysis
-    and for the reduction.  The spec's ε is not used (the true motion sets it).
+    The mechanism is solved as its chain (:func:`linkage.chain.from_mechanism`) by
+    :func:`dynamics.chain_model.chain_model`, the one reduction of any chain: velocity
+    ratios from the kinematics at ω = ±1 rad/s, ε = 0; eq. (11-10)/(11-13) of [1]_.  The
+    loads are the core's (:func:`linkage.loads.external_loads`): one load model for the
+    force analysis and for the reduction.  The spec's ε is not used (the true motion sets it).
     """
-    from linkage import load_spec
+    from .chain_model import spec_chain_model
 
-    spec = load_spec(spec)
-    from linkage.analysis import build_mechanism
-
-    mech = build_mechanism(spec)
-    mech.check_rotatable()
-    s = _rotation(spec)
-    ext = stroke_extremes(spec, mech)
-    if phi0_deg is None:
-        phi0_deg = math.degrees(ext.phi_start) if ext is not None else 0.0
-    phi = _grid(2 * math.pi, steps)
-    phi_abs = math.radians(phi0_deg) + s * phi
-    kin = mech.kinematics(phi_abs, float(s), 0.0)
-    J, dJ = reduced_inertia(spec, kin)
-    P_loads, P_weights = external_power(spec, mech, kin, ext, split=True)
-    Mc = -(P_loads + P_weights)
-    # work of the resistance: trapezoids on the grid (a resistance that switches on and
-    # off inside a step is integrated to O(step)); refine with `steps`
-    Wc = np.concatenate([[0.0], np.cumsum(0.5 * (Mc[1:] + Mc[:-1]) * np.diff(phi))])
-    zero = np.zeros_like(phi)
-    return ReducedModel(spec.name, phi, J, dJ, zero.copy(), Mc, zero.copy(), Wc,
-                        2 * math.pi, omega_nominal=abs(spec.omega) or None,
-                        phi0_deg=float(phi0_deg), rotation=s, source=spec,
-                        extra={"M_resist_loads_Nm": -P_loads,
-                               "M_resist_weights_Nm": -P_weights})
+    return spec_chain_model(spec, steps=steps, phi0_deg=phi0_deg)
 
 
 # --------------------------------------------------------------------------- engine

@@ -74,25 +74,21 @@ def shaking(spec, crank_angles_deg=None) -> ShakingResult:
     """
     import pandas as pd
     from linkage import load_spec
+    from linkage import chain as ch
     from linkage.analysis import build_mechanism
-    from linkage.groups import cross, inertia_load
+
+    from .chain_model import chain_shaking
 
     spec = load_spec(spec)
     phi_deg = np.arange(0.0, 361.0, 1.0) if crank_angles_deg is None else \
         np.atleast_1d(np.asarray(crank_angles_deg, float))
     mech = build_mechanism(spec)
     mech.check_rotatable()
-    kin = mech.kinematics(np.radians(phi_deg), spec.omega, spec.epsilon)
-    O = mech.pivot
-    F = 0j * phi_deg
-    M = 0.0 * phi_deg
-    for lname in spec.link_names:
-        ls = spec.links[lname]
-        link = kin["links"][lname]
-        S = link.point(ls.cg)
-        Fu, Mu = inertia_load(S.a, link.eps, ls.mass, ls.inertia)
-        F = F + Fu
-        M = M + Mu + cross(S.z - O, Fu)
+    chain = ch.from_mechanism(mech, spec.links)
+    sh = chain_shaking(ch.solve(chain, np.radians(phi_deg), spec.omega, spec.epsilon,
+                                check=False), mech.pivot)
+    F = np.asarray(sh.F)
+    M = sh.M
     table = pd.DataFrame({"phi_deg": phi_deg, "F_x_N": F.real, "F_y_N": F.imag,
                           "F_N": np.abs(F), "M_O_Nm": M})
     return ShakingResult(spec.name, table)
