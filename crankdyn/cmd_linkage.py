@@ -18,7 +18,9 @@ from __future__ import annotations
 import sys
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
-EXAMPLES = {"ratchet": "ratchet.toml", "press": "press.toml"}
+EXAMPLES = {"ratchet": "ratchet.toml", "press": "press.toml", "shaper": "shaper.toml",
+            "press6": "press6.toml", "compressor": "compressor_v.toml",
+            "sixbar": "sixbar_rrr.toml"}
 
 
 
