@@ -194,11 +194,13 @@ def plot_chain_plan(result, ax=None, lang="en"):
     for k in range(n):
         first = k == 0
         lw, col = (2.2, "C0") if first else (0.8, "0.6")
-        for _, o, pts in segs:
-            zo = complex(np.asarray(o, complex).reshape(-1)[k if np.size(o) > 1 else 0])
-            for p in pts:
-                zp = complex(np.asarray(p, complex).reshape(-1)[k if np.size(p) > 1 else 0])
-                ax.plot([zo.real, zp.real], [zo.imag, zp.imag], color=col, lw=lw,
+        for _, o, pts in segs:       # a link: its origin and points, a closed outline
+            ring = [complex(np.asarray(p, complex).reshape(-1)[k if np.size(p) > 1 else 0])
+                    for p in [o] + pts]
+            if len(ring) > 2:
+                ring.append(ring[0])
+            if len(ring) > 1:
+                ax.plot([q.real for q in ring], [q.imag for q in ring], color=col, lw=lw,
                         zorder=3 if first else 2)
         for c, e in _sliders(mech, res):
             zc = complex(np.asarray(c, complex).reshape(-1)[k if np.size(c) > 1 else 0])
