@@ -173,14 +173,14 @@ def _sliders(mech, res):
 
 def plot_chain_plan(result, ax=None, lang="en"):
     """The plan of positions: every link drawn at each position of ``result`` (position 1
-    bold with the joints named, the others thin and numbered at the output), the frame's
-    joints and the guides on the frame."""
+    bold with the joints named, the others thin; the positions numbered at the crank
+    pin), the frame's joints and the guides on the frame."""
     from crankbase.texts import texts
     from matplotlib.figure import Figure
 
     t = texts(lang)
     if ax is None:
-        fig = Figure(figsize=(9.0, 7.5))
+        fig = Figure(figsize=(9.0, 7.5), layout="tight")
         ax = fig.add_subplot()
     mech, res = result.spec.mechanism, result.motion
     segs = _segments(mech, res)
@@ -210,31 +210,6 @@ def plot_chain_plan(result, ax=None, lang="en"):
                        for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1), (-1, -1))]
             ax.plot([q.real for q in corners], [q.imag for q in corners], color=col,
                     lw=lw, zorder=4 if first else 2)
-    # the output's position numbers
-    out_z = None
-    for grp in mech.groups:
-        if result.spec.output in grp.links:
-            lk = res.links[result.spec.output]
-            out_z = np.asarray(lk.origin.z, complex) * np.ones(n)
-    if out_z is not None and result.kinematics["position"].notna().all():
-        for k in range(n):
-            ax.annotate(str(int(result.kinematics["position"].iat[k])),
-                        (out_z[k].real, out_z[k].imag), xytext=(4, -12),
-                        textcoords="offset points", fontsize=7, color="0.35")
-    # the joints named at position 1
-    names = [mech.driver.joint] + [j for j in res.joints if j not in mech.frame
-                                   and j != mech.driver.joint]
-    for ln in mech.link_names:
-        names += list(mech.links[ln].points)
-    for j in dict.fromkeys(names):
-        z = complex(np.asarray(res.point(j).z, complex).reshape(-1)[0])
-        ax.plot(z.real, z.imag, "o", ms=4, color="k", zorder=5)
-        ax.annotate(j, (z.real, z.imag), xytext=(5, 5), textcoords="offset points",
-                    fontsize=10, weight="bold")
-    for j, z in mech.frame.items():
-        ax.plot(z.real, z.imag, "^", ms=10, mfc="white", color="k", zorder=5)
-        ax.annotate(j, (z.real, z.imag), xytext=(6, -14), textcoords="offset points",
-                    fontsize=10, weight="bold")
     for grp in mech.groups:            # guides on the frame
         gds = [grp.guide] if grp.kind in ("RRP", "RPP") else \
             list(grp.guides) if grp.kind == "PRP" else []
@@ -247,13 +222,69 @@ def plot_chain_plan(result, ax=None, lang="en"):
             s0, s1 = float(np.nanmin(s)) - 0.1 * size, float(np.nanmax(s)) + 0.1 * size
             ax.plot([(p0 + s0 * u).real, (p0 + s1 * u).real],
                     [(p0 + s0 * u).imag, (p0 + s1 * u).imag], color="k", lw=0.8, ls="-.")
+    names = [mech.driver.joint] + [j for j in res.joints if j not in mech.frame
+                                   and j != mech.driver.joint]
+    for ln in mech.link_names:
+        names += list(mech.links[ln].points)
+    joints = {j: complex(np.asarray(res.point(j).z, complex).reshape(-1)[0])
+              for j in dict.fromkeys(names)}
+    for z in joints.values():
+        ax.plot(z.real, z.imag, "o", ms=4, color="k", zorder=5)
+    for z in mech.frame.values():
+        ax.plot(z.real, z.imag, "^", ms=10, mfc="white", color="k", zorder=5)
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel(t("linkage.chain.plot.x"))
     ax.set_ylabel(t("linkage.chain.plot.y"))
     ax.set_title(t("linkage.chain.plot.plan", name=result.spec.name,
                    formula=result.summary.structure))
     ax.grid(True, lw=0.3)
+    _plan_labels(ax, result, joints)
     return ax
+
+
+def _plan_labels(ax, result, joints):
+    """The joints' names at position 1 and the position numbers at the crank pin, each
+    where no link or other label crosses it (:mod:`crankbase.plot_labels`)."""
+    from crankbase.plot_labels import Obstacles, label_points, place_label, renderer_of
+
+    fig = ax.figure
+    renderer_of(fig)
+    if fig.get_layout_engine() is not None:
+        fig.draw_without_rendering()
+    ax.apply_aspect()
+    ax.set_xlim(ax.get_xlim())
+    ax.set_ylim(ax.get_ylim())
+    ax.set_autoscale_on(False)
+    tr = ax.transData.transform
+    bb = ax.get_window_extent()
+    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+    for line in ax.lines:
+        xy = tr(line.get_xydata())
+        if line.get_linestyle() not in ("None", "none", "", " "):
+            obs.add_line(xy)
+        if line.get_marker() not in (None, "None", "none", ""):
+            for p in xy:
+                if np.all(np.isfinite(p)):
+                    obs.add_marker(p, line.get_markersize() * fig.dpi / 72 + 1)
+    mech = result.spec.mechanism
+    zc = complex(mech.frame[mech.driver.pivot])
+    centre = tr([(zc.real, zc.imag)])[0]
+    allz = list(joints.values()) + list(mech.frame.values())
+    mid = tr([(np.mean([z.real for z in allz]), np.mean([z.imag for z in allz]))])[0]
+    for name, z in list(mech.frame.items()) + list(joints.items()):
+        p = tr([(z.real, z.imag)])[0]
+        place_label(ax, obs, p, name, normal=tuple(p - mid), fontsize=10, weight="bold")
+    k = result.kinematics
+    if not (k["position"].notna().all() and len(k)):
+        return
+    A = mech.driver.joint
+    pts = tr(np.column_stack([k[f"x_{A}_m"], k[f"y_{A}_m"]]))
+    texts = [str(int(v)) for v in k["position"]]
+    placed, _ = label_points(ax, obs, pts, texts, pts - centre, list(range(len(texts))),
+                             merge_px=7 * fig.dpi / 72, fontsize=7, color="0.3")
+    for lab in placed:
+        if lab.get_text().split("/")[0] == texts[0]:
+            lab.set_color("C0")
 
 
 def plot_chain_moment(full, ax=None, lang="en"):
@@ -318,7 +349,6 @@ def plot_output_motion(full, fig=None, lang="en"):
 def chain_figures(result, full, lang="en") -> dict:
     """Every figure of a chain report by its file stem (:data:`CHAIN_PLOTS`)."""
     plan = plot_chain_plan(result, lang=lang).figure
-    plan.tight_layout()
     moment = plot_chain_moment(full, lang=lang).figure
     moment.tight_layout()
     return {"plan": plan, "driving_moment": moment,

@@ -205,3 +205,30 @@ def test_summary_in_both_languages():
     # no English word in the Russian summary but the spec's own names
     words = set(re.findall(r"\b[a-z]{3,}\b", ru)) - {"ram", "block", "lever", "rod", "shaper", "max"}
     assert not words, words
+
+
+@pytest.mark.parametrize("name, lang", [(n, "en") for n in CHAINS] + [("shaper.toml", "ru")])
+def test_chain_figures_and_workbook_read_cleanly(name, lang, tmp_path):
+    import sys
+    from pathlib import Path
+
+    from openpyxl import load_workbook
+
+    sys.path.insert(0, str(Path(__file__).parent))
+    from figure_check import figure_problems
+    from workbook_audit import problems
+
+    from linkage.chain_report import chain_figures, write_chain_workbook
+
+    spec = linkage.load_spec(example_path(name))
+    res, full = linkage.analyze(spec), linkage.full_turn(spec, 5.0)
+    found = []
+    for stem, fig in chain_figures(res, full, lang).items():
+        found += [f"{stem}: {p}" for p in figure_problems(fig)]
+    p = write_chain_workbook(res, tmp_path / "w.xlsx", lang)
+    wb = load_workbook(p)
+    found += problems(wb, name)
+    assert not found, found
+    # the key row under the labels holds the CSV's column names
+    ws = wb.worksheets[1]
+    assert [c.value for c in ws[2]][:len(res.kinematics.columns)] == list(res.kinematics.columns)
