@@ -28,7 +28,8 @@ EXAMPLES = {"ratchet": "ratchet.toml", "press": "press.toml", "shaper": "shaper.
 
 def add_parser(sub):
     p = sub.add_parser(
-        "linkage", help="kinematics and kinetostatics of a crank-rocker or crank-slider",
+        "linkage", help="kinematics and kinetostatics of a crank-rocker, crank-slider or any "
+                        "chain of class II groups",
         description="Kinematics and kinetostatics of a crank-rocker or crank-slider from a "
                     "TOML spec (see README): CSV tables, an Excel workbook and plots.")
     src = p.add_mutually_exclusive_group(required=True)

@@ -43,7 +43,8 @@ def chain_column_label(col: str, lang: str = "en"):
     body, unit = m.groups()
     head, _, rest = body.partition("_")
     if head in _POINT and unit.startswith("m"):
-        sym = _POINT[head].format(rest.replace("_", " "))
+        name = rest.replace("_", " ")
+        sym = _POINT[head].format(name if len(name) == 1 else f" {name} ").strip()
     elif head in _GREEK:
         sym = f"{_GREEK[head]} {rest.replace('_', '–')}"
     elif head in ("Rx", "Ry", "R", "Rn", "Rt", "Mp"):

@@ -103,6 +103,8 @@ def test_the_press_as_a_chain_gives_todays_numbers():
                  "R12_y_N": "Ry_frame_crank_N", "R23_x_N": "Rx_crank_coupler_N",
                  "R14_x_N": "Rx_frame_slider_N", "M14_Nm": "Mp_frame_slider_Nm"}.items():
         _close(new.forces[b], old.forces[a])
+    mu = old.kinematics["mu_deg"]        # today's: between the rod and the guide's normal
+    _close(new.kinematics["mu_coupler_slider_deg"], np.minimum(mu, 180.0 - mu), 90.0)
     assert new.summary.travel == pytest.approx(old.summary.stroke_m, rel=1e-12)
     assert new.summary.time_ratio == pytest.approx(old.summary.time_ratio, rel=1e-12)
 
@@ -232,3 +234,28 @@ def test_chain_figures_and_workbook_read_cleanly(name, lang, tmp_path):
     # the key row under the labels holds the CSV's column names
     ws = wb.worksheets[1]
     assert [c.value for c in ws[2]][:len(res.kinematics.columns)] == list(res.kinematics.columns)
+
+
+def test_plans_of_a_chain_are_a_keyed_error():
+    from plans.study import run_study as run_plans
+
+    with pytest.raises(SpecError) as e:
+        run_plans(example_path("shaper.toml"), plots=False, plans=[1])
+    assert [p.key for p in e.value.problems] == ["plans"]
+    assert e.value.problems[0].text.key == "errors.plans.study.chain"
+    # without plans the chain's own report comes back
+    assert getattr(run_plans(example_path("shaper.toml"), plots=False), "chain", False)
+
+
+def test_transmission_angle_of_an_offset_slotted_lever():
+    # RPR with the slot offset e from the lever's pivot C: the force on the lever is
+    # normal to the slot, the lever's point at A moves normal to CA, so the transmission
+    # angle is asin(|u·CA|/|CA|) = acos(e/|CA|) (u along the slot)
+    d = _toml("shaper.toml")
+    d["group"][0]["offset"] = 0.04
+    spec = linkage.load_spec(d)
+    res = linkage.analyze(spec, np.arange(0.0, 360.0, 15.0))
+    k = res.kinematics
+    zA = k["x_A_m"] + 1j * k["y_A_m"]
+    CA = np.abs(zA - spec.mechanism.frame["C"])
+    _close(k["mu_block_lever_deg"], np.degrees(np.arccos(0.04 / CA)), 90.0)
