@@ -159,7 +159,7 @@ def load_chain_spec(data: dict, source=None) -> ChainSpec:
         joints = get("joints")
         need = _LENGTHS.get(kind, 0)
         lengths = get("lengths", required=need > 0)
-        if kind is None or links is None or joints is None:
+        if kind is None or links is None or joints is None or (need and lengths is None):
             continue
         if lengths is not None and len(lengths) != need:
             ck.add(f"{path}.lengths", Text("errors.linkage.chain.lengths",
