@@ -379,12 +379,19 @@ def _tables(spec, res, cf, res_force, positions):
     if res_force is not None:
         F["F_res_N" if spec.output_kind == "slider" else "M_res_Nm"] = res_force
     F["M_drive_Nm"] = cf.M_drive
-    pos = pd.array(positions if positions is not None else [None] * n, dtype="Int64")
-    kin = pd.DataFrame({k: np.broadcast_to(np.asarray(v, float), (n,)) for k, v in K.items()})
-    frc = pd.DataFrame({k: np.broadcast_to(np.asarray(v, float), (n,)) for k, v in F.items()})
-    kin.insert(0, "position", pos)
-    frc.insert(0, "position", pd.array(pos, dtype="Int64"))
-    return kin, frc
+    if positions is None:
+        pos = pd.arrays.IntegerArray(np.zeros(n, np.int64), np.ones(n, bool))
+    else:
+        pos = pd.array(positions, dtype="Int64")
+    frames = []
+    for cols in (K, F):      # one float block per frame, its storage without a copy
+        block = np.empty((len(cols), n))
+        for row, v in zip(block, cols.values()):
+            row[:] = v
+        df = pd.DataFrame(block.T, columns=list(cols), copy=False)
+        df.insert(0, "position", pd.Series(pos, index=df.index, copy=True))
+        frames.append(df)
+    return frames[0], frames[1]
 
 
 def analyze_chain(spec, crank_angles_deg=None) -> ChainAnalysis:
