@@ -259,3 +259,36 @@ def test_transmission_angle_of_an_offset_slotted_lever():
     zA = k["x_A_m"] + 1j * k["y_A_m"]
     CA = np.abs(zA - spec.mechanism.frame["C"])
     _close(k["mu_block_lever_deg"], np.degrees(np.arccos(0.04 / CA)), 90.0)
+
+
+def test_a_branch_that_flips_in_the_cycle_is_an_error():
+    # a change-point four-bar (0.10 + 0.30 = 0.20 + 0.20): the coupler and the rocker
+    # fall in line once a turn, where the assembly branch may flip
+    d = _ratchet_chain()
+    d["mechanism"].update(crank=0.10, frame={"O": [0.0, 0.0], "C": [0.20, 0.0]})
+    d["group"][0]["lengths"] = [0.30, 0.20]
+    d.pop("load")
+    d.pop("links")
+    with pytest.raises(AssemblyError) as e:
+        linkage.analyze(d)
+    assert e.value.text.key == "errors.linkage.chain.branch_flips"
+
+
+def test_write_report_of_a_chain(tmp_path):
+    from linkage.study import write_report
+
+    rep = run_study(example_path("compressor_v.toml"), step=10.0)
+    w = write_report(rep, tmp_path, lang="en")
+    n = "compressor-v"
+    assert w.files == [f"{n}_kinematics.csv", f"{n}_forces.csv", f"{n}.xlsx",
+                       f"{n}_plan.png", f"{n}_driving_moment.png", f"{n}_output_motion.png"]
+    import pandas as pd
+
+    back = pd.read_csv(tmp_path / f"{n}_forces.csv")
+    assert list(back.columns) == list(rep.result.forces.columns)
+    np.testing.assert_array_equal(back["M_drive_Nm"], rep.result.forces["M_drive_Nm"])
+    # an axial crank-slider: the piston's dead centres with the crank along the cylinder
+    sm = rep.result.summary
+    assert sm.time_ratio == pytest.approx(1.0, abs=1e-12)
+    assert sm.phi_working_end_deg == pytest.approx(45.0, abs=1e-9)
+    assert sm.travel == pytest.approx(2 * 0.05, rel=1e-12)
