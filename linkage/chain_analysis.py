@@ -332,8 +332,9 @@ def _slide_columns(grp, s, cols):
 def new_joints(grp) -> tuple:
     """The joints a group defines: the inner joint B of an RRR, RRP or PRP, none of an
     RPR or RPP (their block sits on a joint already solved)."""
-    return {"RRR": (grp.joints[1],), "RRP": (grp.joints[1],),
-            "PRP": (grp.joints[0],)}.get(grp.kind, ())
+    if grp.kind in ("RRR", "RRP"):
+        return (grp.joints[1],)
+    return (grp.joints[0],) if grp.kind == "PRP" else ()
 
 
 def _tables(spec, res, cf, res_force, positions):

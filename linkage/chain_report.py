@@ -151,6 +151,10 @@ def _segments(mech, res):
         elif grp.kind == "RPR":
             out.append((a, la.origin.z, extra[a]))
             out.append((b, lb.origin.z, [la.origin.z] + extra[b]))
+        elif grp.kind == "RPP":          # the yoke's slot, 1.2 cranks either side of A
+            half = la.e * (1.2 * d.length)
+            out.append((a, la.origin.z, extra[a]))
+            out.append((b, la.origin.z - half, [la.origin.z + half] + extra[b]))
         else:
             out.append((a, la.origin.z, extra[a]))
             out.append((b, lb.origin.z, extra[b]))

@@ -292,3 +292,23 @@ def test_write_report_of_a_chain(tmp_path):
     assert sm.time_ratio == pytest.approx(1.0, abs=1e-12)
     assert sm.phi_working_end_deg == pytest.approx(45.0, abs=1e-9)
     assert sm.travel == pytest.approx(2 * 0.05, rel=1e-12)
+
+
+def test_a_scotch_yoke_with_an_inclined_slot():
+    # I(0,1) → II RPP(2,3): the block at A in a slot at β = 60° to the yoke's guide (x):
+    # the yoke sits at s = x_A − y_A/tan β, so its stroke is 2r/sin β, K = 1, and the
+    # transmission angle (the slot's normal against the guide) is β at every position
+    r, beta = 0.05, 60.0
+    d = {"mechanism": {"kind": "chain", "name": "yoke", "crank": r, "output": "yoke",
+                       "omega_rad_s": 10.0, "frame": {"O": [0.0, 0.0]}},
+         "group": [{"kind": "RPP", "links": ["block", "yoke"], "joints": ["A"],
+                    "slot_angle_deg": beta}],
+         "links": {"yoke": {"mass_kg": 2.0}, "block": {"mass_kg": 0.5}},
+         "analysis": {"positions": 8, "working_stroke": "away"}}
+    res = linkage.analyze(d)
+    sm = res.summary
+    assert sm.travel == pytest.approx(2 * r / math.sin(math.radians(beta)), rel=1e-12)
+    assert sm.time_ratio == pytest.approx(1.0, abs=1e-12)
+    _close(res.kinematics["mu_block_yoke_deg"], np.full(8, beta), 90.0)
+    k = res.kinematics
+    _close(k["s_yoke_m"], k["x_A_m"] - k["y_A_m"] / math.tan(math.radians(beta)))
