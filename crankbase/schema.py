@@ -61,7 +61,7 @@ README_END = "<!-- spec-reference:end -->"
 
 #: Kinds of key: how the value is read.
 KINDS = ("number", "integer", "choice", "string", "name", "numbers", "bool", "path",
-         "points")
+         "points", "names")
 
 _UNSET = object()
 
@@ -80,7 +80,8 @@ class Key:
         ``string``; a ``name`` (:func:`crankbase.validation.name_problem`); a list of
         ``numbers`` (``length``, ``min_length``, at most ``max_length``, default
         :data:`~crankbase.validation.MAX_ROWS`); a ``bool``; a file ``path``; a table of
-        named ``points`` ``name = [x, y]``.
+        named ``points`` ``name = [x, y]``; a list of ``names`` (strings, ``length`` of
+        them when set).
     unit : str
         The unit of the value as written (``mm``, ``MPa``, ``deg`` ...; "" for none).
     si : float
@@ -424,6 +425,19 @@ class SpecReader(Checker):
                                   valid=bounds_text(lt=key.lt, le=key.le))
                         value = key.default
                         break
+        elif kind == "names":
+            value = raw.get(name, key.default) if isinstance(raw, dict) else key.default
+            if value is None and req:
+                self.addk(join_words(path, name), "errors.missing", wanted=key.wanted())
+            elif value is not None and not (
+                    isinstance(value, list) and value
+                    and all(isinstance(x, str) and x.strip() for x in value)
+                    and (key.length is None or len(value) == key.length)):
+                self.addk(join_words(path, name), "errors.names.type",
+                          value=shown_value(value), n=key.length or "")
+                value = key.default
+            elif value is not None:
+                value = tuple(value)
         else:                                  # points: read by the loader
             value = raw.get(name, key.default) if isinstance(raw, dict) else key.default
         return key.to_si(value) if si else value

@@ -1,4 +1,6 @@
-"""``crankdyn linkage``: kinematics and kinetostatics of a crank-rocker or crank-slider.
+"""``crankdyn linkage``: kinematics and kinetostatics of a crank-rocker, a crank-slider or
+any chain of class II Assur groups (``kind = "chain"``: the shaper, six-bar press, V
+compressor examples).
 
 Writes ``<name>_kinematics.csv``, ``<name>_forces.csv``, the workbook ``<name>.xlsx`` and
 the plots ``<name>_<plot>.png`` (``<name>``: the mechanism's name as a file stem)
@@ -18,13 +20,16 @@ from __future__ import annotations
 import sys
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
-EXAMPLES = {"ratchet": "ratchet.toml", "press": "press.toml"}
+EXAMPLES = {"ratchet": "ratchet.toml", "press": "press.toml", "shaper": "shaper.toml",
+            "press6": "press6.toml", "compressor_v": "compressor_v.toml",
+            "sixbar_rrr": "sixbar_rrr.toml"}
 
 
 
 def add_parser(sub):
     p = sub.add_parser(
-        "linkage", help="kinematics and kinetostatics of a crank-rocker or crank-slider",
+        "linkage", help="kinematics and kinetostatics of a crank-rocker, crank-slider or any "
+                        "chain of class II groups",
         description="Kinematics and kinetostatics of a crank-rocker or crank-slider from a "
                     "TOML spec (see README): CSV tables, an Excel workbook and plots.")
     src = p.add_mutually_exclusive_group(required=True)
@@ -32,7 +37,10 @@ def add_parser(sub):
     src.add_argument("--example", nargs="?", const="ratchet", metavar="NAME",
                      help="run a bundled example instead of a spec: "
                           + ", ".join(EXAMPLES) + " (default ratchet: the ratchet drive "
-                          "of the course project; press: a crank-slider press)")
+                          "of the course project; press: a crank-slider press; chains of "
+                          "class II groups: shaper, the crank-slotted lever of a shaping "
+                          "machine; press6, a six-bar press; compressor_v, a two-cylinder "
+                          "V compressor; sixbar_rrr, an RRR-RRR six-bar)")
     p.add_argument("-o", "--output", required=True, metavar="DIR", help="output folder")
     p.add_argument("--step", type=float, default=1.0, metavar="DEG",
                    help="crank-angle step of the full-turn plots (default 1°)")

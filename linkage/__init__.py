@@ -12,7 +12,10 @@ kinetostatics; the one implementation) are in :mod:`linkage.groups`; any planar 
 those groups as data (a driver and an ordered list of groups: ``solve``,
 ``kinetostatics``, the structure formula and Chebyshev's mobility) in :mod:`linkage.chain`; four-bar geometry in :mod:`linkage.fourbar`;
 the useful resistance in :mod:`linkage.loads`; the mechanisms in
-:mod:`linkage.mechanisms`.  This package never imports matplotlib or openpyxl (reports and
+:mod:`linkage.mechanisms`.  A spec with ``[mechanism] kind = "chain"`` describes any chain
+of those groups by named joints and links (:mod:`linkage.chain_spec`); ``analyze`` then
+returns a :class:`~linkage.chain_analysis.ChainAnalysis` (:mod:`linkage.chain_analysis`,
+tables named after the spec's joints and links; report in :mod:`linkage.chain_report`).  This package never imports matplotlib or openpyxl (reports and
 plots import them when called).
 """
 from .analysis import AnalysisResult, AnalysisSummary, SingularPositionWarning, analyze, full_turn

@@ -362,6 +362,10 @@ def analyze(spec, crank_angles_deg=None, *, course_tables=True) -> AnalysisResul
     :class:`SingularPositionWarning`); values exactly there are not finite.
     """
     spec = load_spec(spec)
+    if spec.kind == "chain":        # any linkage of class II groups (linkage.chain_analysis)
+        from .chain_analysis import analyze_chain
+
+        return analyze_chain(spec, crank_angles_deg)
     mech = build_mechanism(spec)
     mech.check_rotatable()
     rot = 1 if spec.omega > 0 else -1
@@ -445,6 +449,8 @@ def full_turn(spec, step_deg=1.0):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", SingularPositionWarning)
         res = analyze(spec, crank_angles_deg=phi)
+    if spec.kind == "chain":
+        return res
     sing = res.summary.singular_phi_deg
     if sing:
         near = np.zeros(len(phi), bool)

@@ -305,7 +305,8 @@ def kind_text(kind: str, lang: str = "ru") -> str:
     from crankbase.texts import texts
 
     _check_lang(lang)
-    key = {"crank-rocker": "crank_rocker", "crank-slider": "crank_slider"}.get(kind)
+    key = {"crank-rocker": "crank_rocker", "crank-slider": "crank_slider",
+           "chain": "chain"}.get(kind)
     return texts(lang)(f"linkage.kind.{key}") if key else kind
 
 

@@ -126,17 +126,23 @@ def load_spec(path_or_dict) -> MechanismSpec:
 
     Returns
     -------
-    MechanismSpec
+    MechanismSpec or linkage.chain_spec.ChainSpec
+        A ``[mechanism] kind = "chain"`` file gives a
+        :class:`~linkage.chain_spec.ChainSpec` (:func:`linkage.chain_spec.load_chain_spec`).
 
     Raises
     ------
     SpecError
         With every problem found, each naming its key path, the value and what is valid.
     """
-    if isinstance(path_or_dict, MechanismSpec):
+    if isinstance(path_or_dict, MechanismSpec) or getattr(path_or_dict, "kind", "") == "chain":
         return path_or_dict
     data, _ = read_toml(path_or_dict)
     source = None if isinstance(path_or_dict, dict) else str(path_or_dict)
+    from .chain_spec import is_chain, load_chain_spec
+
+    if is_chain(data):                 # any linkage of class II groups (linkage.chain_spec)
+        return load_chain_spec(data, source)
     ck = SpecReader()
     # "drawing": the title block fields of the plans sheet, checked by plans.drawing
     ck.top(data, SCHEMA)

@@ -29,7 +29,7 @@ from pathlib import Path
 
 from crankbase.errors import Problem, SpecError, Text
 
-__all__ = ["LinkageReport", "WrittenReport", "run_study", "write_report", "summary_lines",
+__all__ = ["LinkageReport", "ChainReport", "WrittenReport", "run_study", "write_report", "summary_lines",
            "notice_lines", "written_line", "check_step", "PLOTS"]
 
 #: File stems of every plot a report may hold (``<name>_<stem>.png``;
@@ -101,6 +101,15 @@ class LinkageReport:
 
 
 @dataclass
+class ChainReport(LinkageReport):
+    """A :class:`LinkageReport` of a chain spec (any linkage of class II groups,
+    :mod:`linkage.chain_analysis`): the same tables' files, its own workbook, figures
+    (:data:`linkage.chain_report.CHAIN_PLOTS`) and summary lines."""
+
+    chain = True
+
+
+@dataclass
 class WrittenReport:
     """What :func:`write_report` did: ``files`` (names in ``folder``, in the order
     written), ``removed`` (an earlier run's plots of this mechanism not drawn now, deleted)
@@ -168,7 +177,8 @@ def run_study(spec, *, step=1.0, plots=True) -> LinkageReport:
         warnings.simplefilter("always", SingularPositionWarning)
         result = linkage.analyze(spec)
     full = linkage.full_turn(spec, step) if plots else None
-    return LinkageReport(spec=spec, result=result, full=full, step=step,
+    cls = ChainReport if spec.kind == "chain" else LinkageReport
+    return cls(spec=spec, result=result, full=full, step=step,
                          warnings=[str(w.message) for w in caught], source=source,
                          name=safe_name(spec.name, "linkage"))
 
@@ -211,12 +221,23 @@ def write_report(report: LinkageReport, out, lang="ru", formats=("png",),
     folder, out = out, Path(out)
     name = report.name
     figures = {}
-    if report.full is not None:
+    chain = getattr(report, "chain", False)
+    if report.full is not None and chain:
+        from .chain_report import chain_figures
+
+        figures = chain_figures(report.result, report.full, lang=lang)
+    elif report.full is not None:
         from .plots import all_figures
 
         figures = all_figures(report.result, report.full, lang=lang)
     inputs = report.inputs()
-    stale = [p for p in (out / f"{name}_{s}.{e}" for s in PLOTS for e in formats
+    if chain:
+        from .chain_report import CHAIN_PLOTS, write_chain_csvs, write_chain_workbook
+
+        write_csvs, write_workbook, stems = write_chain_csvs, write_chain_workbook, CHAIN_PLOTS
+    else:
+        stems = PLOTS
+    stale = [p for p in (out / f"{name}_{s}.{e}" for s in stems for e in formats
                          if s not in figures) if p.exists()]
     files = []
     sheets = 0
@@ -274,7 +295,12 @@ def summary_lines(report: LinkageReport, lang="ru", written=None) -> list:
     lines = [t("linkage.summary.run", out=written.folder, **head) if written is not None
              else t("linkage.summary.title", **head)]
     dash = t("linkage.summary.dimensionless")
-    for label, value, unit in cycle_rows(report.result, lang):
+    if getattr(report, "chain", False):
+        from .chain_report import chain_summary_rows
+
+        lines += ["  " + row for row in chain_summary_rows(report.result, lang)]
+    for label, value, unit in ([] if getattr(report, "chain", False)
+                               else cycle_rows(report.result, lang)):
         if isinstance(value, float):
             v, unit = _number(value, ".4f"), unit or dash
         else:

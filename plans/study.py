@@ -202,6 +202,10 @@ def run_study(spec, *, step=1.0, plots=True, plans=None, sheet="A1", measured=No
         raise SpecError(problems)
 
     base = run_linkage(spec, step=step, plots=plots)
+    if getattr(base, "chain", False):           # a chain: its plans are not drawn yet
+        if plans is not None:
+            raise SpecError([Problem("plans", Text("errors.plans.study.chain"))])
+        return base
     plan_list = table = measured_source = None
     if plans is not None:
         from . import build_plans

@@ -184,7 +184,8 @@ def test_example_names_are_the_commands_own(tmp_path, capsys):
                  "--example", "petrol_vaz2106", "-o", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert err == ["crankdyn linkage: error: --example: no linkage example "
-                   "'petrol_vaz2106'; available: ratchet, press"]
+                   "'petrol_vaz2106'; available: ratchet, press, shaper, press6, "
+                   "compressor_v, sixbar_rrr"]
     assert not (tmp_path / "o").exists()
     with pytest.raises(SystemExit):
         main(["linkage", "--lang", "en", "--help"])

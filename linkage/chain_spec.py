@@ -1,0 +1,295 @@
+"""The chain spec: any planar linkage of class II Assur groups, named joints and links.
+
+A spec file with ``[mechanism] kind = "chain"`` (:data:`linkage.schema.CHAIN_SCHEMA`)
+lists the frame's joints, the crank (the driver I(0,1)), the groups in the order of the
+structure formula (``[[group]]``), the links' masses, moments of inertia, centres of mass
+and named points (``[links.<name>]``), the loads (``[[load]]``) and the analysis plan.
+:func:`load_chain_spec` reads it into a frozen :class:`ChainSpec` holding the
+:class:`linkage.chain.Mechanism` it describes; :func:`linkage.load_spec` calls it for
+such a file.  Every problem is reported at once, keyed (``errors.linkage.chain.*``).
+
+Local frames of the links (where ``cg``, ``points`` and a load's ``at`` are measured)
+are those of :mod:`linkage.chain`: the crank from the pivot towards the pin; an RRR's
+bars from their outer joint towards the inner one; an RRP's rod from A to B, its slider
+at B along the guide; an RPR's block at A and its lever at C, both along the slot.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from types import MappingProxyType
+
+from crankbase.errors import Text
+from crankbase.schema import SpecReader
+
+from . import chain as ch
+from .schema import ANALYSIS, CHAIN_MECHANISM, CHAIN_SCHEMA, GROUP, LINK, LOAD
+
+__all__ = ["ChainLoad", "ChainSpec", "load_chain_spec", "output_kind", "is_chain"]
+
+#: How many lengths each group kind takes.
+_LENGTHS = {"RRR": 2, "RRP": 1, "RPR": 0, "PRP": 0, "RPP": 0}
+
+
+@dataclass(frozen=True)
+class ChainLoad:
+    """One external load on a link of a chain (as :class:`linkage.spec.LoadSpec`):
+    ``kind`` ``"force"`` (global ``force`` [N] at the local point ``at`` [m]), ``"moment"``
+    [N·m, + ccw] or ``"resistance"`` (``resistance`` [N] on a slider, [N·m] on a rocker,
+    opposing the output's motion in ``stroke``, over ``span`` [m or rad] from the
+    stroke's start)."""
+
+    link: str
+    kind: str
+    at: complex = 0j
+    force: complex = 0j
+    moment: float = 0.0
+    resistance: float = 0.0
+    stroke: str = "working"
+    span: float | None = None
+
+
+@dataclass(frozen=True)
+class ChainSpec:
+    """A validated chain spec (SI, radians inside).
+
+    Attributes
+    ----------
+    kind : str
+        ``"chain"``.
+    name : str
+    mechanism : linkage.chain.Mechanism
+        Frame joints, driver, groups, links (mass, J, centre of mass, points).
+    output : str
+        The output link (its extremes, stroke or swing, time ratio; the resistance).
+    omega, epsilon, gravity : float
+        The crank's ω [rad/s] and ε [rad/s²]; g [m/s²].
+    links : mapping of str to linkage.chain.Link
+    loads : tuple of ChainLoad
+    positions, crank_angles_deg, working_stroke
+        The analysis plan, as in :class:`linkage.spec.MechanismSpec`.
+    raw : mapping
+        The file's content as read.
+    """
+
+    kind: str
+    name: str
+    mechanism: object
+    output: str
+    omega: float
+    epsilon: float
+    gravity: float
+    links: MappingProxyType
+    loads: tuple
+    positions: int | None
+    crank_angles_deg: tuple | None
+    working_stroke: str | None
+    raw: MappingProxyType
+    source: str | None = None
+
+    @property
+    def crank(self) -> float:
+        return self.mechanism.driver.length
+
+    @property
+    def link_names(self):
+        return tuple(self.mechanism.link_names)
+
+    @property
+    def output_kind(self) -> str:
+        """``"slider"`` (the slider of an RRP on a frame guide: a stroke) or ``"rocker"``."""
+        return output_kind(self.mechanism, self.output)
+
+    def link(self, name: str) -> ch.Link:
+        return self.links[name]
+
+
+def output_kind(mech, output) -> str:
+    """``"slider"`` when ``output`` is the slider of an RRP group on a frame guide or the
+    yoke of an RPP group on a frame guide (it translates), else ``"rocker"``."""
+    for grp in mech.groups:
+        if grp.kind in ("RRP", "RPP") and grp.links[1] == output and grp.guide.link == ch.FRAME:
+            return "slider"
+    return "rocker"
+
+
+def _xy(value):
+    return complex(*value) if value else 0j
+
+
+def load_chain_spec(data: dict, source=None) -> ChainSpec:
+    """Read a chain spec from its TOML content ``data`` (``source``: its file).
+
+    Raises
+    ------
+    SpecError
+        Every problem at once: a key of the schema, an unknown joint or link, a group
+        attached to a joint not yet solved, a mobility other than 1.
+    """
+    ck = SpecReader()
+    ck.top(data, CHAIN_SCHEMA)
+    m = ck.sub(data, CHAIN_MECHANISM)
+
+    def mech(key, **kw):
+        return ck.get(m, CHAIN_MECHANISM, key, **kw)
+
+    name = mech("name")
+    crank = mech("crank")
+    crank_link, pivot, pin = mech("crank_link"), mech("pivot"), mech("pin")
+    output = mech("output")
+    omega, epsilon, gravity = mech("omega_rad_s"), mech("epsilon_rad_s2"), mech("gravity_m_s2")
+    frame = {}
+    ftable = m.get("frame", {})
+    if not isinstance(ftable, dict) or not ftable:
+        ck.add("mechanism.frame", Text("errors.linkage.chain.frame_table"))
+        ftable = {}
+    for jn in ftable:
+        xy = ck.numbers(ftable, jn, "mechanism.frame", length=2)
+        if xy:
+            frame[jn] = complex(*xy)
+
+    groups = []
+    for path, t in ck.rows(data, GROUP, required=True):
+
+        def get(key, **kw):
+            return ck.get(t, GROUP, key, path=path, **kw)
+
+        kind = get("kind")
+        links = get("links")
+        joints = get("joints")
+        need = _LENGTHS.get(kind, 0)
+        lengths = get("lengths", required=need > 0)
+        if kind is None or links is None or joints is None or (need and lengths is None):
+            continue
+        if lengths is not None and len(lengths) != need:
+            ck.add(f"{path}.lengths", Text("errors.linkage.chain.lengths",
+                                           {"kind": kind, "n": need}))
+            continue
+        if need == 0 and "lengths" in t:
+            ck.add(f"{path}.lengths", Text("errors.linkage.chain.no_lengths", {"kind": kind}))
+
+        def guide(prefix):
+            return ch.Guide(get(prefix + "_link"), _xy(get(prefix + "_point")),
+                            math.radians(get(prefix + "_angle_deg")), get(prefix + "_offset"))
+
+        asm = int(get("assembly"))
+        if kind == "RRR":
+            groups.append(ch.RRR(links, joints, tuple(lengths), asm))
+        elif kind == "RRP":
+            groups.append(ch.RRP(links, joints, lengths[0], guide("guide"), asm))
+        elif kind == "RPR":
+            groups.append(ch.RPR(links, joints, get("offset"), asm))
+        elif kind == "PRP":
+            groups.append(ch.PRP(links, joints, (guide("guide"), guide("guide2"))))
+        else:
+            groups.append(ch.RPP(links, joints, guide("guide"),
+                                 math.radians(get("slot_angle_deg"))))
+    ck.raise_if_any()
+
+    names = [crank_link]
+    for grp in groups:
+        names += [n for n in grp.links if n not in names]
+    lengths_of = {crank_link: crank}
+    for grp in groups:
+        if grp.kind == "RRR":
+            lengths_of.update(zip(grp.links, grp.lengths))
+        elif grp.kind == "RRP":
+            lengths_of[grp.links[0]] = grp.length
+
+    lt = ck.table(data, "links", required=False)
+    for lname in lt:
+        if lname not in names:
+            ck.add(f"links.{lname}", Text("errors.linkage.chain.unknown_link",
+                                          {"valid": ", ".join(names)}))
+    links, chain_links = {}, {}
+    for lname in names:
+        path = f"links.{lname}"
+        t = ck.sub(lt, LINK, path=path, required=False)
+        mass = ck.get(t, LINK, "mass_kg", path=path)
+        inertia = ck.get(t, LINK, "inertia_kg_m2", path=path)
+        cg = _xy(ck.get(t, LINK, "cg", path=path)) if "cg" in t else \
+            complex(lengths_of.get(lname, 0.0) / 2.0, 0.0)
+        pts = {}
+        ptable = t.get("points", {})
+        if not isinstance(ptable, dict):
+            ck.add(f"{path}.points", Text("errors.linkage.spec.table_name_x", {"ptable": ptable}))
+            ptable = {}
+        for pname in ptable:
+            xy = ck.numbers(ptable, pname, f"{path}.points", length=2)
+            if xy:
+                pts[pname] = complex(*xy)
+        links[lname] = chain_links[lname] = ch.Link(mass or 0.0, inertia or 0.0, cg, pts)
+    if output is not None and output not in names:
+        ck.add("mechanism.output", Text("errors.linkage.chain.unknown_link",
+                                        {"valid": ", ".join(names)}))
+    ck.raise_if_any()
+    mechanism = ch.Mechanism(frame, ch.Driver(crank, crank_link, pivot, pin), groups,
+                             chain_links, name)          # structure checked: SpecError
+    out_kind = output_kind(mechanism, output)
+
+    loads = []
+    for path, t in ck.rows(data, LOAD):
+
+        def get(key, **kw):
+            return ck.get(t, LOAD, key, path=path, **kw)
+
+        link = get("link", choices=tuple(names))
+        which = [k for k in ("force_N", "moment_Nm", "resistance_Nm", "resistance_N") if k in t]
+        if len(which) != 1:
+            ck.add(path, Text("errors.linkage.spec.needs_exactly_one",
+                              {"value": ', '.join(which) or Text("errors.none")}))
+            continue
+        key = which[0]
+        at = _xy(get("at")) if "at" in t else 0j
+        if key == "force_N":
+            f = get("force_N", required=True)
+            if f and link:
+                loads.append(ChainLoad(link, "force", at=at, force=complex(*f)))
+            continue
+        if key == "moment_Nm":
+            mval = get("moment_Nm", required=True)
+            if mval is not None and link:
+                loads.append(ChainLoad(link, "moment", moment=mval))
+            continue
+        want = "resistance_N" if out_kind == "slider" else "resistance_Nm"
+        if key != want:
+            ck.add(f"{path}.{key}", Text("errors.linkage.chain.resistance_key",
+                                         {"want": want, "output": output}))
+            continue
+        if link is not None and link != output:
+            ck.add(f"{path}.link", Text("errors.linkage.spec.resistance_acts_on",
+                                        {"output": output, "link": link}))
+        r = get(key, required=True)
+        span_key = "span_m" if out_kind == "slider" else "span_deg"
+        span = get(span_key)
+        if span is not None and span_key == "span_deg":
+            span = math.radians(span)
+        if r is not None:
+            loads.append(ChainLoad(output, "resistance", resistance=r,
+                                  stroke=get("stroke") or "working", span=span))
+
+    a = ck.sub(data, ANALYSIS)
+    positions = ck.get(a, ANALYSIS, "positions")
+    angles = None
+    if "crank_angles_deg" in a:
+        angles = ck.get(a, ANALYSIS, "crank_angles_deg", required=True)
+        angles = tuple(angles) if angles else None
+        if "positions" in a:
+            ck.add("analysis", Text("errors.linkage.spec.give_either_positions"))
+    strokes = ("away", "toward") if out_kind == "slider" else ("ccw", "cw")
+    working = ck.get(a, ANALYSIS, "working_stroke", choices=strokes)
+    if omega == 0.0 and angles is None:
+        ck.add("analysis.crank_angles_deg", Text("errors.linkage.spec.missing_with_mechanism"))
+    ck.raise_if_any()
+    return ChainSpec(kind="chain", name=name, mechanism=mechanism, output=output,
+                     omega=omega, epsilon=epsilon, gravity=gravity,
+                     links=MappingProxyType(links), loads=tuple(loads),
+                     positions=None if angles else positions, crank_angles_deg=angles,
+                     working_stroke=working or strokes[0], raw=MappingProxyType(dict(data)),
+                     source=source)
+
+
+def is_chain(data) -> bool:
+    """True when the TOML content ``data`` is a chain spec (``[mechanism] kind = "chain"``)."""
+    m = data.get("mechanism") if isinstance(data, dict) else None
+    return isinstance(m, dict) and m.get("kind") == "chain"
