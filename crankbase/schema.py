@@ -61,7 +61,7 @@ README_END = "<!-- spec-reference:end -->"
 
 #: Kinds of key: how the value is read.
 KINDS = ("number", "integer", "choice", "string", "name", "numbers", "bool", "path",
-         "points")
+         "points", "names")
 
 _UNSET = object()
 
@@ -80,7 +80,8 @@ class Key:
         ``string``; a ``name`` (:func:`crankbase.validation.name_problem`); a list of
         ``numbers`` (``length``, ``min_length``, at most ``max_length``, default
         :data:`~crankbase.validation.MAX_ROWS`); a ``bool``; a file ``path``; a table of
-        named ``points`` ``name = [x, y]``.
+        named ``points`` ``name = [x, y]``; a list of ``names`` (each a ``name``, at most
+        ``max_length``).
     unit : str
         The unit of the value as written (``mm``, ``MPa``, ``deg`` ...; "" for none).
     si : float
@@ -408,6 +409,9 @@ class SpecReader(Checker):
             value = self.string(raw, name, path, required=req, default=key.default)
         elif kind == "name":
             value = self.name(raw, name, path, default=key.default)
+        elif kind == "names":
+            value = self.names(raw, name, path, default=key.default,
+                               max_length=key.max_length or MAX_ROWS)
         elif kind == "numbers":
             value = self.numbers(raw, name, path, required=req, default=key.default,
                                  length=key.length, min_length=key.min_length,

@@ -403,6 +403,27 @@ class Checker:
             return default
         return value.strip()
 
+    def names(self, data, key, path="", *, default, max_length=MAX_ROWS):
+        """An optional list of names (each as :meth:`name`, stripped), at most
+        ``max_length`` of them (checked before the items); ``default`` on a problem."""
+        full, value = self._lookup(data, key, path, False, "")
+        if value is _MISSING:
+            return default
+        if not isinstance(value, (list, tuple)):
+            self.addk(full, "common.names.type", value=shown_value(value))
+            return default
+        if len(value) > max_length:
+            self.addk(full, "common.names.too_many", n=len(value), max=max_length)
+            return default
+        out = []
+        for i, item in enumerate(value):
+            why = name_text(item)
+            if why:
+                self.add(f"{full}[{i}]", why)
+                return default
+            out.append(item.strip())
+        return out
+
     def numbers(self, data, key, path="", *, required=True, default=None, length=None,
                 min_length=None, max_length=None, gt=None, ge=None):
         """A list of finite numbers (fixed ``length`` if given; at most ``max_length``,
