@@ -222,3 +222,17 @@ def test_each_bad_input_one_error_exit_2_nothing_written(tmp_path, capsys, case)
     assert err[0].startswith(f"crankdyn torsion: error: {key}: "), err
     assert words in err[0], err
     assert not out.exists()
+
+
+# ------------------------------------------------------------------ the workbook
+def test_workbook_text_cells_stand_apart_from_the_number_before_them(six):
+    """The modes sheet: ω (a number, right-aligned) then the nodes ("1.203; 3.428 …", a
+    text): rendered, "2467.2 6.604" read as one cell; every text cell of a table is
+    left-aligned with an indent."""
+    wb, _ = build_outputs(six, "en")
+    ws = wb.worksheets[1]
+    header = {c.value: c.column for c in ws[4] if c.value}      # the machine-name row
+    col = header["nodes"]
+    cells = [ws.cell(r, col) for r in range(5, 5 + six.modes.count)]
+    assert all(isinstance(c.value, str) for c in cells)
+    assert all(c.alignment.horizontal == "left" and c.alignment.indent >= 1 for c in cells)
