@@ -236,3 +236,26 @@ def test_workbook_text_cells_stand_apart_from_the_number_before_them(six):
     cells = [ws.cell(r, col) for r in range(5, 5 + six.modes.count)]
     assert all(isinstance(c.value, str) for c in cells)
     assert all(c.alignment.horizontal == "left" and c.alignment.indent >= 1 for c in cells)
+
+
+def test_names_are_bounded_before_they_are_read():
+    d = {"name": "rig", "torsion": {**HAND["torsion"], "names": ["m"] * 65}}
+    with pytest.raises(SpecError) as e:
+        load(d)
+    assert e.value.lines() == ["torsion.names: has 65 names; at most 64 are allowed"]
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_a_bad_name_in_either_language_through_the_cli(tmp_path, capsys, lang):
+    from test_error_language import cyrillic, english_words
+
+    spec = tmp_path / "rig.toml"
+    spec.write_text(_toml({"name": "rig", "torsion": {**HAND["torsion"],
+                                                      "names": ["a", "b"]}}),
+                    encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["torsion", str(spec), "-o", str(out), "--lang", lang]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert len(err) == 1 and "torsion.names: " in err[0] and not out.exists()
+    body = err[0].split("torsion.names: ", 1)[1]
+    assert not (cyrillic(body) if lang == "en" else english_words(body)), body
