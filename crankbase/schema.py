@@ -80,8 +80,8 @@ class Key:
         ``string``; a ``name`` (:func:`crankbase.validation.name_problem`); a list of
         ``numbers`` (``length``, ``min_length``, at most ``max_length``, default
         :data:`~crankbase.validation.MAX_ROWS`); a ``bool``; a file ``path``; a table of
-        named ``points`` ``name = [x, y]``; a list of ``names`` (strings, ``length`` of
-        them when set).
+        named ``points`` ``name = [x, y]``; a list of ``names`` (each a ``name``; ``length``
+        of them when set, at most ``max_length``).
     unit : str
         The unit of the value as written (``mm``, ``MPa``, ``deg`` ...; "" for none).
     si : float
@@ -409,6 +409,10 @@ class SpecReader(Checker):
             value = self.string(raw, name, path, required=req, default=key.default)
         elif kind == "name":
             value = self.name(raw, name, path, default=key.default)
+        elif kind == "names":
+            value = self.names(raw, name, path, required=req, default=key.default,
+                               length=key.length, max_length=key.max_length or MAX_ROWS,
+                               what=key.wanted())
         elif kind == "numbers":
             value = self.numbers(raw, name, path, required=req, default=key.default,
                                  length=key.length, min_length=key.min_length,
@@ -425,19 +429,6 @@ class SpecReader(Checker):
                                   valid=bounds_text(lt=key.lt, le=key.le))
                         value = key.default
                         break
-        elif kind == "names":
-            value = raw.get(name, key.default) if isinstance(raw, dict) else key.default
-            if value is None and req:
-                self.addk(join_words(path, name), "errors.missing", wanted=key.wanted())
-            elif value is not None and not (
-                    isinstance(value, list) and value
-                    and all(isinstance(x, str) and x.strip() for x in value)
-                    and (key.length is None or len(value) == key.length)):
-                self.addk(join_words(path, name), "errors.names.type",
-                          value=shown_value(value), n=key.length or "")
-                value = key.default
-            elif value is not None:
-                value = tuple(value)
         else:                                  # points: read by the loader
             value = raw.get(name, key.default) if isinstance(raw, dict) else key.default
         return key.to_si(value) if si else value

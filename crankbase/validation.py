@@ -403,6 +403,33 @@ class Checker:
             return default
         return value.strip()
 
+    def names(self, data, key, path="", *, required=False, default=None, length=None,
+              max_length=MAX_ROWS, what=None):
+        """A list of names (each as :meth:`name`, stripped), ``length`` of them when set, at
+        most ``max_length`` (checked before the items); a tuple, or ``default`` on a
+        problem.  ``what`` (a :class:`Text`) names it when missing."""
+        full, value = self._lookup(data, key, path, required,
+                                   what or Text("errors.wanted.names"))
+        if value is _MISSING:
+            return default
+        if not isinstance(value, (list, tuple)) or not value:
+            self.addk(full, "common.names.type", value=shown_value(value))
+            return default
+        if len(value) > max_length:
+            self.addk(full, "common.names.too_many", n=len(value), max=max_length)
+            return default
+        if length is not None and len(value) != length:
+            self.addk(full, "errors.names.type", n=length, value=shown_value(value))
+            return default
+        out = []
+        for i, item in enumerate(value):
+            why = name_text(item)
+            if why:
+                self.add(f"{full}[{i}]", why)
+                return default
+            out.append(item.strip())
+        return tuple(out)
+
     def numbers(self, data, key, path="", *, required=True, default=None, length=None,
                 min_length=None, max_length=None, gt=None, ge=None):
         """A list of finite numbers (fixed ``length`` if given; at most ``max_length``,

@@ -186,6 +186,7 @@ TORSION = Table("torsion", (
         max_length=MAX_TORSION_MASSES, min_length=2),
     Key("stiffnesses_Nm_rad", "numbers", gt=0, unit="N·m/rad", required=True,
         max_length=_MAX_SECTIONS, min_length=1),
+    Key("names", "names", max_length=MAX_TORSION_MASSES),
     Key("throws", "numbers", ge=0, max_length=MAX_TORSION_MASSES),
     Key("damping_ratio", ge=0, lt=1, default=0.02, symbol=True),
     Key("speed_range_rpm", "numbers", gt=0, length=2, unit="rpm", required="cond"),

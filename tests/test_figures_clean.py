@@ -113,6 +113,15 @@ def _balance(example):
     return lambda lang: balance_figures(report, lang)
 
 
+def _torsion(name):
+    """The torsion report's figures (torsion.study.build_outputs): the inline six beside
+    its throws (all five figures) or the three-rotor chain by hand (the mode shapes)."""
+    from torsion.study import build_outputs, load, run_study
+
+    report = run_study(load(example_path(name)))
+    return lambda lang: build_outputs(report, lang)[1]
+
+
 def _rotor():
     return _balance("rotor_two_plane.toml")
 
@@ -137,6 +146,8 @@ EXAMPLES = {
     "dynamics-hoist": (lambda: _dynamics("hoist_machine.toml"), True),
     "balance-rotor": (_rotor, True),
     "balance-ratchet": (_shaking, True),
+    "torsion-six": (lambda: _torsion("torsion_inline6.toml"), True),
+    "torsion-three-rotor": (lambda: _torsion("torsion_three_rotor.toml"), True),
 }
 
 

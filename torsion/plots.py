@@ -75,8 +75,10 @@ def _legend(ax, x=1.02, **kw):
 
 
 def plot_mode_shapes(modes, names=None, ax=None, lang="ru"):
-    """The shape of every elastic mode along the shaft (mass 1 = 1), its nodes marked.
-    Returns the Axes."""
+    """The shape of every elastic mode along the shaft, its nodes marked.  Each shape is
+    drawn scaled to its largest |θ| = 1 (mass 1 positive), so that a low mode stays
+    readable beside a high one whose amplitudes relative to mass 1 run into tens (the
+    CSV keeps θ_1 = 1).  Returns the Axes."""
     t = _words(lang)
     n = modes.shapes.shape[1]
     names = mass_names(n, names)
@@ -84,7 +86,9 @@ def plot_mode_shapes(modes, names=None, ax=None, lang="ru"):
     ax = _axes(ax, bottom=0.2 if long_names else MARGINS["bottom"])
     x = np.arange(1, n + 1)
     for m in range(modes.count):
-        ax.plot(x, modes.shapes[m], **_style(m),
+        shape = np.asarray(modes.shapes[m], float)
+        ax.plot(x, shape / np.max(np.abs(shape)) * (1.0 if shape[0] >= 0 else -1.0),
+                **_style(m),
                 label=t("torsionplot.mode", m=m + 1, f=float(modes.f_Hz[m])))
     nodes = np.concatenate(modes.nodes) if modes.count else np.array([])
     if nodes.size:
@@ -103,7 +107,8 @@ def plot_mode_shapes(modes, names=None, ax=None, lang="ru"):
     return ax
 
 
-def plot_campbell(modes, critical, speed_range, orders, ax=None, lang="ru"):
+def plot_campbell(modes, critical, speed_range, orders, ax=None, lang="ru",
+                  phases_deg=None):
     """The Campbell diagram: natural frequencies (horizontal), order lines f = k·n/60
     (major orders solid black, minor thin grey), the critical speeds inside the range
     (filled: major, open: minor).  Returns the Axes.
@@ -116,6 +121,10 @@ def plot_campbell(modes, critical, speed_range, orders, ax=None, lang="ru"):
     speed_range : (float, float) [rpm]
     orders : array_like
         The order lines to draw (order 0 is skipped).
+    phases_deg : array_like, optional
+        Each cylinder's phase (:func:`engine.train.layout`): the major orders are then
+        those of the engine (:func:`torsion.response.is_major`), with or without a
+        critical speed in the range; without it, those of ``critical``.
     """
     t = _words(lang)
     ax = _axes(ax, right=0.66)
@@ -129,7 +138,11 @@ def plot_campbell(modes, critical, speed_range, orders, ax=None, lang="ru"):
     ymax = 1.15 * float(shown.max())
     xmax = hi * 1.02
     major = set()
-    if critical is not None and len(critical):
+    if phases_deg is not None:
+        from .response import is_major
+
+        major = {float(o) for o in k[is_major(k, phases_deg)]}
+    elif critical is not None and len(critical):
         major = {float(o) for o in critical.loc[critical["major"], "order"]}
     n = np.array([0.0, xmax])
     first = {True: True, False: True}
@@ -256,11 +269,12 @@ def plot_response_angles(response, names=None, ax=None, lang="ru"):
 
 
 def torsion_figures(modes, critical, harmonics, response, names, speed_range_rpm,
-                    lang="ru") -> dict:
+                    lang="ru", phases_deg=None) -> dict:
     """Every torsion figure, ``{stem: Figure}`` in :data:`TORSION_PLOT_NAMES` order; a
     figure whose input is None (no engine: no harmonics, critical speeds or response) is
     left out, and the Campbell diagram then has no order lines unless ``critical`` is
-    given."""
+    given.  ``phases_deg`` (the cylinders' phases) tells the Campbell diagram the major
+    orders (:func:`plot_campbell`)."""
     out = {"torsion_modes": plot_mode_shapes(modes, names, None, lang).figure}
     if critical is not None or harmonics is not None:
         if harmonics is not None:
@@ -268,7 +282,7 @@ def torsion_figures(modes, critical, harmonics, response, names, speed_range_rpm
         else:
             orders = np.unique(critical["order"].to_numpy())
         out["campbell"] = plot_campbell(modes, critical, speed_range_rpm, orders, None,
-                                        lang).figure
+                                        lang, phases_deg).figure
     if harmonics is not None:
         out["torque_spectrum"] = plot_spectrum(harmonics, None, lang).figure
     if response is not None:

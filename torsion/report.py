@@ -59,11 +59,18 @@ def _table(ws, row, df, lang):
     """``df`` with its two header rows from ``row``; returns the row after it."""
     from crankbase.workbook import header_rows, sheet_rows
 
+    from openpyxl.styles import Alignment
+
     first = header_rows(ws, row, [column_label(c, lang) for c in df.columns],
                         list(df.columns))
+    # a text cell (a mass's name, the nodes "1.203; 3.428") stands indented from the
+    # right-aligned number before it: "2467.2 6.604" would read as one row of numbers
+    text = Alignment(horizontal="left", indent=1)
     for r, rec in enumerate(sheet_rows(df).itertuples(index=False), start=first):
         for j, v in enumerate(rec, start=1):
-            ws.cell(r, j, _cell(v))
+            cell = ws.cell(r, j, _cell(v))
+            if isinstance(v, str):
+                cell.alignment = text
     return first + len(sheet_rows(df))
 
 

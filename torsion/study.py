@@ -64,7 +64,8 @@ class Chain:
     Attributes
     ----------
     names : tuple of str
-        Mass names (``damper``, ``throw1`` … ``flywheel``; ``1`` … ``n`` by hand).
+        Mass names (``damper``, ``throw1`` … ``flywheel``; by hand ``names``, else ``1``
+        … ``n``).
     J : ndarray (n,)
         Moments of inertia [kg·m²].
     k : ndarray (n − 1,)
@@ -233,7 +234,7 @@ def build_chain(inputs, spec=None, lay=None) -> Chain:
         for t, m in mass_of_throw.items():
             throw_number[m] = t + 1
     else:
-        names = [str(i) for i in range(1, len(inputs.inertias) + 1)]
+        names = list(inputs.names or (str(i) for i in range(1, len(inputs.inertias) + 1)))
         J = list(inputs.inertias)
         cylinder_mass = None
         throw_number = [0] * len(names)
@@ -260,6 +261,8 @@ def build_chain(inputs, spec=None, lay=None) -> Chain:
                 d=len(d), need=n - 1)
     dampers = {}
     for i, (at, cv) in enumerate(inputs.dampers):
+        if at not in names and inputs.by_hand and at.isdigit() and 1 <= int(at) <= n:
+            at = names[int(at) - 1]            # a by-hand mass by its number 1 … n
         if at not in names:
             bad(f"torsion.dampers[{i}].at", "torsion.error.no_such_mass", name=at,
                 names=", ".join(repr(n) for n in names))
@@ -494,7 +497,8 @@ def build_outputs(report: TorsionReport, lang="ru"):
 
     figs = torsion_figures(report.modes, report.critical, report.harmonics,
                            report.response, list(report.chain.names),
-                           report.study.inputs.speed_range_rpm, lang)
+                           report.study.inputs.speed_range_rpm, lang,
+                           report.chain.phases_deg)
     return build_workbook(report, lang), {n: figs[n] for n in report.plot_names}
 
 

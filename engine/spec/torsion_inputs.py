@@ -18,6 +18,7 @@ Two forms (exactly one):
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 from crankbase.errors import Text
@@ -25,7 +26,8 @@ from crankbase.validation import MAX_ROWS
 
 from ..schema import TORSION, TORSION_DAMPERS, TORSION_MASSES
 
-__all__ = ["TorsionInputs", "ExtraMass", "read_torsion", "base_order_problem", "PLACES"]
+__all__ = ["TorsionInputs", "ExtraMass", "read_torsion", "base_order_problem", "PLACES",
+           "mass_name_problem"]
 
 #: The words ``before``/``after`` accept beside a throw number.
 PLACES = ("first", "last")
@@ -54,6 +56,8 @@ class TorsionInputs:
         The extra masses beside the throws, in the file's order.
     inertias : tuple of float or None
         Every mass of a by-hand chain, from the free end [kg·m²].
+    names : tuple of str or None
+        By hand: the masses' names (``names``; None: numbered 1 … n).
     throws : tuple of int or None
         By hand: the throw (1-based) each mass carries, 0 for none.
     stiffnesses : tuple of float
@@ -75,6 +79,7 @@ class TorsionInputs:
     throw_J: float | None = None
     masses: tuple = ()
     inertias: tuple | None = None
+    names: tuple | None = None
     throws: tuple | None = None
     damping_ratio: float = 0.02
     dampers: tuple = ()
@@ -88,6 +93,25 @@ class TorsionInputs:
     def by_hand(self) -> bool:
         """The chain is given mass by mass (``inertias_kgm2``)."""
         return self.inertias is not None
+
+
+#: What a mass name may hold: it becomes a column name (``theta_<name>``) and, joined by
+#: ``-``, a section's name, so letters (any script), digits, ``_`` and ``.`` only.
+_MASS_NAME = re.compile(r"[\w.]+")
+
+
+def mass_name_problem(c, where, name, seen) -> bool:
+    """Record the problem of one mass ``name`` at ``where`` (characters, a throw's name,
+    given twice among ``seen``); True if there is one."""
+    if not _MASS_NAME.fullmatch(name):
+        c.addk(where, "torsion.error.mass_name_chars", name=name)
+    elif name.lower().startswith("throw"):
+        c.addk(where, "torsion.error.mass_throw_name", name=name)
+    elif name in seen:
+        c.addk(where, "torsion.error.mass_twice", name=name)
+    else:
+        return False
+    return True
 
 
 def _place(c, item, where):
@@ -122,7 +146,7 @@ def read_torsion(c, data, strokes=4):
         return c.get(t, TORSION, key, **kw)
 
     has_throw_J, has_hand = "throw_J_kgm2" in t, "inertias_kgm2" in t
-    throw_J = inertias = throws = None
+    throw_J = inertias = throws = names = None
     masses = []
     if has_throw_J and has_hand:
         c.addk("torsion.inertias_kgm2", "torsion.error.one_form")
@@ -130,6 +154,19 @@ def read_torsion(c, data, strokes=4):
         inertias = get("inertias_kgm2", required=True, si=True)
         if "masses" in t:
             c.addk("torsion.masses", "torsion.error.masses_by_hand")
+        names = get("names")
+        if names is not None:
+            seen = set()
+            for i, name in enumerate(names):
+                if mass_name_problem(c, f"torsion.names[{i}]", name, seen):
+                    names = None
+                    break
+                seen.add(name)
+            else:
+                if inertias is not None and len(names) != len(inertias):
+                    c.addk("torsion.names", "torsion.error.names_count",
+                           n=len(names), masses=len(inertias))
+                    names = None
         throws = get("throws")
         if throws is not None:
             if any(x != int(x) for x in throws):
@@ -156,16 +193,16 @@ def read_torsion(c, data, strokes=4):
         throw_J = get("throw_J_kgm2", required=True, si=True)
         if "throws" in t:
             c.addk("torsion.throws", "torsion.error.throws_beside")
+        if "names" in t:
+            c.addk("torsion.names", "torsion.error.names_beside")
         seen = set()
         for where, item in c.rows(t, TORSION_MASSES):
             name = c.get(item, TORSION_MASSES, "name", path=where)
             J = c.get(item, TORSION_MASSES, "J_kgm2", path=where, si=True)
             if "name" not in item:
                 c.addk(f"{where}.name", "torsion.error.mass_name")
-            elif name is not None and name in seen:
-                c.addk(f"{where}.name", "torsion.error.mass_twice", name=name)
-            elif name is not None and name.lower().startswith("throw"):
-                c.addk(f"{where}.name", "torsion.error.mass_throw_name", name=name)
+            elif name is not None and mass_name_problem(c, f"{where}.name", name, seen):
+                name = None
             place = _place(c, item, where)
             if name is not None:
                 seen.add(name)
@@ -201,7 +238,8 @@ def read_torsion(c, data, strokes=4):
         return None
     return TorsionInputs(
         stiffnesses=tuple(k), throw_J=throw_J, masses=tuple(masses),
-        inertias=None if inertias is None else tuple(inertias), throws=throws,
+        inertias=None if inertias is None else tuple(inertias),
+        names=None if names is None else tuple(names), throws=throws,
         damping_ratio=zeta, dampers=tuple(dampers),
         speed_range_rpm=None if rng is None else tuple(rng), speed_step_rpm=step,
         orders_max=orders_max, shaft_diameters=None if d is None else tuple(d),
