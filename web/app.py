@@ -1,0 +1,373 @@
+"""The Starlette application of ``crankdyn serve``: pages rendered on the server.
+
+:func:`build_app` makes the app with its limits; :mod:`web.engine_page` does the engine
+page's work through the library, :mod:`web.sessions` isolates each browser session in its
+own folder, :mod:`web.jobs` runs the computations in a bounded pool of threads.
+Starlette, Jinja2 and python-multipart are the ``web`` extra; nothing here is imported by
+``import engine`` (or any other library package), and matplotlib and openpyxl are
+imported only by the first computation, not by a page.
+"""
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import logging
+import shutil
+from pathlib import Path
+
+from starlette.applications import Starlette
+from starlette.requests import Request
+from starlette.responses import FileResponse, HTMLResponse, RedirectResponse, Response
+from starlette.routing import Mount, Route
+from starlette.staticfiles import StaticFiles
+from starlette.templating import Jinja2Templates
+
+from crankbase.errors import CrankdynError, SpecError, Text
+from crankbase.texts import languages, texts
+
+from . import engine_form as form
+from . import engine_page as page
+from .jobs import Busy, JobPool
+from .sessions import COOKIE, SessionStore
+
+__all__ = ["build_app", "UPLOAD_LIMIT", "LANG_COOKIE"]
+
+HERE = Path(__file__).resolve().parent
+#: Largest request body (an uploaded spec and its pressure file) [bytes].
+UPLOAD_LIMIT = 2_000_000
+#: The cookie of the page language.
+LANG_COOKIE = "crankdyn_lang"
+#: Rows of Table 2 shown before the table scrolls (all rows are in the page).
+log = logging.getLogger("crankdyn.web")
+
+
+# ----------------------------------------------------------------------------- body limit
+class BodyLimit:
+    """ASGI middleware: a request whose body is over ``limit`` bytes is answered with a
+    page saying so (413) before the body is read (by its Content-Length) or as soon as
+    it passes the limit (a body sent in chunks)."""
+
+    def __init__(self, app, limit: int):
+        self.app, self.limit = app, int(limit)
+
+    async def __call__(self, scope, receive, send):
+        if scope["type"] != "http":
+            return await self.app(scope, receive, send)
+        headers = dict(scope.get("headers") or [])
+        length = headers.get(b"content-length")
+        lang = _cookie_lang(headers.get(b"cookie", b"").decode("latin-1"))
+        if length is not None and length.isdigit() and int(length) > self.limit:
+            return await self._refuse(scope, receive, send, lang)
+        if scope.get("method") not in ("POST", "PUT", "PATCH"):
+            return await self.app(scope, receive, send)
+        # read the body first (at most the limit), then hand it on
+        messages, seen = [], 0
+        while True:
+            msg = await receive()
+            messages.append(msg)
+            if msg["type"] != "http.request":
+                break
+            seen += len(msg.get("body", b""))
+            if seen > self.limit:
+                return await self._refuse(scope, receive, send, lang)
+            if not msg.get("more_body", False):
+                break
+
+        async def replay():
+            return messages.pop(0) if messages else await receive()
+        await self.app(scope, replay, send)
+
+    async def _refuse(self, scope, receive, send, lang):
+        t = texts(lang)
+        body = _page_html(t("web.error.title"), t("web.upload.too_large",
+                                                  mb=self.limit / 1e6), lang)
+        await HTMLResponse(body, status_code=413)(scope, receive, send)
+
+
+def _cookie_lang(cookie: str) -> str:
+    for part in cookie.split(";"):
+        k, _, v = part.strip().partition("=")
+        if k == LANG_COOKIE and v in languages():
+            return v
+    return languages()[0]
+
+
+def _page_html(title, message, lang) -> str:
+    import html
+
+    return (f'<!doctype html><html lang="{lang}"><meta charset="utf-8"><title>'
+            f'{html.escape(title)}</title><link rel="stylesheet" href="/static/style.css">'
+            f'<main><h1>{html.escape(title)}</h1><p class="problem" id="page-error">'
+            f'{html.escape(message)}</p><p><a href="/engine">crankdyn</a></p></main></html>')
+
+
+# ----------------------------------------------------------------------------- the app
+def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: float = 3600.0,
+              workers: int = 2, queue: int = 32, timeout: float = 120.0,
+              max_sessions: int = 500):
+    """The ``crankdyn serve`` app.
+
+    Parameters
+    ----------
+    root : path, optional
+        Folder under which every session gets its own folder (default: a new temporary
+        folder, removed at shutdown).
+    upload_limit : int
+        Largest request body [bytes].
+    idle_seconds : float
+        A session idle this long is removed with its files.
+    workers, queue : int
+        Computations at once, and waiting beyond them (more are refused with a message).
+    timeout : float
+        Longest wait of a page for its computation [s].
+    max_sessions : int
+        Live sessions at most (a new one beyond removes the one idle longest).
+    """
+    store = SessionStore(root, idle_seconds, max_sessions)
+    pool = JobPool(workers, queue, timeout)
+    templates = Jinja2Templates(directory=str(HERE / "templates"))
+    templates.env.globals["languages"] = languages
+
+    @contextlib.asynccontextmanager
+    async def lifespan(app):
+        async def sweeper():
+            while True:
+                await asyncio.sleep(60)
+                store.sweep()
+        task = asyncio.create_task(sweeper())
+        try:
+            yield
+        finally:
+            task.cancel()
+            pool.close()
+            store.close()
+
+    # ---- helpers
+    def lang_of(request: Request) -> str:
+        q = request.query_params.get("lang")
+        if q in languages():
+            return q
+        c = request.cookies.get(LANG_COOKIE)
+        return c if c in languages() else languages()[0]
+
+    def session_of(request: Request):
+        s = store.get(request.cookies.get(COOKIE))
+        return s if s is not None else store.new()
+
+    def state_of(session) -> page.EngineState:
+        return session.pages.setdefault("engine", page.EngineState())
+
+    def finish(response: Response, session, lang) -> Response:
+        response.set_cookie(COOKIE, session.id, httponly=True, samesite="lax")
+        response.set_cookie(LANG_COOKIE, lang, samesite="lax")
+        return response
+
+    def back(session, lang, anchor=""):
+        return finish(RedirectResponse(f"/engine{anchor}", status_code=303), session, lang)
+
+    def error_page(request, session, lang, message, status):
+        t = texts(lang)
+        return finish(HTMLResponse(_page_html(t("web.error.title"), message, lang),
+                                   status_code=status), session, lang)
+
+    async def read_form(request):
+        return await request.form(max_files=4, max_fields=400, max_part_size=upload_limit)
+
+    # ---- pages
+    async def home(request):
+        return RedirectResponse("/engine", status_code=307)
+
+    async def engine_get(request):
+        lang = lang_of(request)
+        session = session_of(request)
+        st = state_of(session)
+        t = texts(lang)
+        secs = form.sections(lang)
+        fields = {f.path for s in secs for f in s.fields} | {form.FILE_KEY}
+        by_field, general = {}, []
+        for p in st.problems:
+            f = form.problem_field(p.key, fields)
+            (by_field.setdefault(f, []) if f else general).append(p.render(lang))
+        run = st.run
+        ctx = dict(t=t, lang=lang, sections=secs, values=st.values, source=st.source,
+                   bearings=st.bearings, drawing=st.drawing, errors=by_field,
+                   general=general, notice=st.notice.render(lang) if st.notice else "",
+                   examples=list(page.EXAMPLES), pressure=st.pressure, run=None,
+                   sources=form.PRESSURE_SOURCES, file_key=form.FILE_KEY)
+        if run is not None:
+            r = run.report
+            head, rows = page.table_rows(r.tables["forces.csv"])
+            head2, rows2 = page.table_rows(r.tables["table2.csv"])
+            ctx["run"] = dict(
+                number=run.number, name=r.name, head=head, rows=rows, head2=head2,
+                rows2=rows2, form=r.study.settings.form,
+                summary=r.summary_lines(lang), plots=list(r.plot_names),
+                tables=[r.file_names[n] for n in r.tables], xlsx=f"{r.name}.xlsx",
+                zip=f"{r.name}_report.zip", toml=f"{r.name}.toml",
+                pressure=run.pressure[0] if run.pressure else None, drawings=[])
+            if run.drawing:                 # the drawing PDFs: listed once written
+                with contextlib.suppress(Exception):
+                    files = await pool.wait(run.write_future)
+                    ctx["run"]["drawings"] = [n for n in files if n.endswith(".pdf")]
+        return finish(templates.TemplateResponse(request, "engine.html", ctx), session, lang)
+
+    async def engine_example(request):
+        lang = lang_of(request)
+        session = session_of(request)
+        st = state_of(session)
+        name = (await read_form(request)).get("example")
+        if name not in page.EXAMPLES:
+            return error_page(request, session, lang, texts(lang)("web.example.unknown"), 400)
+        data, pressure = page.example_spec(name)
+        with st.lock:
+            st.values, st.source = form.values_from_spec(data)
+            st.pressure, st.problems = pressure, []
+            st.notice = Text("web.example.loaded", {"name": name})
+        return back(session, lang, "#form")
+
+    async def engine_upload(request):
+        lang = lang_of(request)
+        session = session_of(request)
+        st = state_of(session)
+        f = await read_form(request)
+        spec, pfile = f.get("spec"), f.get("pressure")
+        if not hasattr(spec, "read"):
+            return error_page(request, session, lang, texts(lang)("web.upload.no_spec"), 400)
+        import tomllib
+
+        raw = await spec.read()
+        try:
+            data = tomllib.loads(raw.decode("utf-8"))
+        except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
+            with st.lock:
+                st.problems = [_problem("", Text("web.upload.bad_toml", {"reason": str(exc)}))]
+                st.notice = None
+            return back(session, lang, "#form")
+        pressure = None
+        spec_file = (data.get("pressure") or {}).get("file") \
+            if isinstance(data.get("pressure"), dict) else None
+        if hasattr(pfile, "read") and pfile.filename:
+            pressure = (page.pressure_name(pfile.filename, spec_file), await pfile.read())
+        values, source = form.values_from_spec(data)
+        with st.lock:
+            st.values, st.source, st.pressure = values, source, pressure
+            st.notice, st.problems = Text("web.upload.loaded"), []
+        if spec_file is not None and pressure is None:
+            with st.lock:
+                st.problems = [_problem(form.FILE_KEY, Text("web.upload.pressure_missing",
+                                                            {"file": str(spec_file)}))]
+            return back(session, lang, "#form")
+        # the file as uploaded through the library: every problem of it (unknown keys too)
+        if spec_file is None:
+            pressure = None
+        else:
+            data["pressure"]["file"] = pressure[0]
+        return await run_spec(request, session, lang, st, data, pressure)
+
+    async def engine_run(request):
+        lang = lang_of(request)
+        session = session_of(request)
+        st = state_of(session)
+        f = await read_form(request)
+        values = {k: v for k, v in f.items() if isinstance(v, str)}
+        source = values.pop("pressure_source", "cycle")
+        source = source if source in form.PRESSURE_SOURCES else "cycle"
+        bearings, drawing = values.pop("bearings", "") == "on", values.pop("drawing", "") == "on"
+        pfile = f.get("pressure_upload")
+        upload = None
+        if hasattr(pfile, "read") and pfile.filename:
+            upload = (page.pressure_name(pfile.filename), await pfile.read())
+        with st.lock:
+            st.values, st.source, st.bearings, st.drawing = values, source, bearings, drawing
+            if upload is not None:
+                st.pressure = upload
+        data = form.spec_from_values(values, source, st.pressure[0] if st.pressure else None)
+        return await run_spec(request, session, lang, st, data,
+                              st.pressure if source == "file" else None)
+
+    async def run_spec(request, session, lang, st, data, pressure):
+        with st.lock:
+            st.runs += 1
+            number = st.runs
+        folder = session.folder / f"run-{number}"
+        try:
+            report = await pool.run(page.compute, data, folder / "input", pressure,
+                                    st.bearings)
+        except SpecError as exc:
+            shutil.rmtree(folder, ignore_errors=True)
+            with st.lock:
+                st.problems, st.notice = list(exc.problems), None
+            return back(session, lang, "#form")
+        except CrankdynError as exc:
+            shutil.rmtree(folder, ignore_errors=True)
+            with st.lock:
+                st.problems = [_problem("", Text("web.run.failed",
+                                                 {"reason": "; ".join(exc.lines(lang))}))]
+                st.notice = None
+            return back(session, lang, "#form")
+        except Busy:
+            shutil.rmtree(folder, ignore_errors=True)
+            return error_page(request, session, lang, texts(lang)("web.run.busy"), 503)
+        except asyncio.TimeoutError:
+            return error_page(request, session, lang, texts(lang)("web.run.timeout",
+                                                                  s=pool.timeout), 504)
+        except Exception as exc:          # a bug in a job: this session's error only
+            log.exception("engine job failed")
+            shutil.rmtree(folder, ignore_errors=True)
+            return error_page(request, session, lang, texts(lang)(
+                "web.run.crashed", what=type(exc).__name__), 500)
+        run = page.Run(number=number, folder=folder, report=report, spec=data, lang=lang,
+                       pressure=pressure, drawing=st.drawing)
+        try:
+            run.write_future = pool.submit(page.write, run, st.drawing)
+        except Busy:
+            return error_page(request, session, lang, texts(lang)("web.run.busy"), 503)
+        with st.lock:
+            old, st.run, st.problems, st.notice = st.run, run, [], None
+        if old is not None:                # its files go once its writing is over
+            old.write_future.add_done_callback(
+                lambda _f, d=old.folder: shutil.rmtree(d, ignore_errors=True))
+        return back(session, lang, "#results")
+
+    async def run_file(request):
+        """A file of the session's current run, by the name the server gave it."""
+        lang = lang_of(request)
+        s = store.get(request.cookies.get(COOKIE))
+        st = s.pages.get("engine") if s is not None else None
+        run = st.run if st is not None else None
+        if run is None or str(run.number) != request.path_params["number"]:
+            return Response(texts(lang)("web.file.gone"), status_code=404)
+        try:
+            files = await pool.wait(run.write_future)
+        except asyncio.TimeoutError:
+            return Response(texts(lang)("web.run.timeout", s=pool.timeout), status_code=504)
+        except Exception as exc:
+            log.exception("engine report failed")
+            return Response(texts(lang)("web.run.crashed", what=type(exc).__name__),
+                            status_code=500)
+        name = request.path_params["name"]
+        path = files.get(name)
+        if path is None:
+            return Response(texts(lang)("web.file.gone"), status_code=404)
+        inline = name.endswith(".png") or request.query_params.get("view") == "1"
+        return FileResponse(path, filename=None if inline else name,
+                            content_disposition_type="inline" if inline else "attachment")
+
+    routes = [
+        Route("/", home),
+        Route("/engine", engine_get),
+        Route("/engine/example", engine_example, methods=["POST"]),
+        Route("/engine/upload", engine_upload, methods=["POST"]),
+        Route("/engine/run", engine_run, methods=["POST"]),
+        Route("/engine/run/{number:str}/{name:str}", run_file),
+        Mount("/static", StaticFiles(directory=str(HERE / "static")), name="static"),
+    ]
+    app = Starlette(routes=routes, lifespan=lifespan)
+    app.state.store, app.state.pool = store, pool
+    return BodyLimit(app, upload_limit) if upload_limit else app
+
+
+def _problem(key, text):
+    from crankbase.errors import Problem
+
+    return Problem(key, text)

@@ -1,0 +1,245 @@
+"""The engine form, generated from the spec schema (:data:`engine.schema.SCHEMA`).
+
+Every key of every table of the engine spec becomes one field named by its dotted path
+(``engine.bore_mm``, ``pressure.cycle.n1``); its label, symbol, unit, allowed range,
+default and help come from the schema and the ``spec`` catalogue in the page's language.
+:func:`values_from_spec` turns a spec dict (a bundled example, an uploaded TOML) into the
+field texts; :func:`spec_from_values` turns the posted field texts back into the dict that
+:func:`engine.load` reads, so that every check is the library's: nothing is validated here
+beyond reading a number, and a text that is not a number is passed on as text for the
+library to name.  The pressure comes from one source chosen on the form: the cycle
+parameters, a pasted table, or the uploaded file (kept by the server under its own name).
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+__all__ = ["Field", "Section", "sections", "values_from_spec", "spec_from_values",
+           "problem_field", "PRESSURE_SOURCES", "FILE_KEY", "ARRAY_KEYS"]
+
+#: The three ways of giving the pressure (radio ``pressure_source``).
+PRESSURE_SOURCES = ("cycle", "table", "file")
+#: The one key of the schema that names a file: never a form field (the upload is).
+FILE_KEY = "pressure.file"
+#: Arrays of tables are one text field, a line per table, its keys in the schema's order.
+ARRAY_KEYS = ("balance.counterweight",)
+
+_INT = re.compile(r"[+-]?\d+")
+_SPLIT = re.compile(r"[\s,;]+")
+
+
+@dataclass(frozen=True)
+class Field:
+    """One field of the form: the key's path and everything the page shows of it."""
+
+    path: str
+    kind: str
+    label: str
+    symbol: str
+    unit: str
+    range: str
+    default: str
+    help: str
+    choices: tuple = ()
+    required: object = False
+    multiline: bool = False
+
+
+@dataclass(frozen=True)
+class Section:
+    """One table of the spec (a fieldset of the form)."""
+
+    path: str
+    title: str
+    fields: tuple
+
+
+def _tables(schema):
+    from crankbase.schema import Table
+
+    def walk(tables):
+        for t in tables:
+            yield t
+            yield from walk([e for e in t.entries if isinstance(e, Table)])
+    return list(walk(schema.tables))
+
+
+def _schema():
+    from engine.schema import SCHEMA
+
+    return SCHEMA
+
+
+def sections(lang: str) -> list[Section]:
+    """The form's sections in ``lang``: one per table of the engine schema, in order."""
+    from crankbase.schema import ArrayOfTables
+    from crankbase.texts import texts
+
+    t = texts(lang)
+    out = []
+    for tab in _tables(_schema()):
+        fields = []
+        if isinstance(tab, ArrayOfTables):
+            keys = tab.keys()
+            cols = ", ".join(f"{k.name} [{k.unit_text(lang)}]" if k.unit else k.name
+                             for k in keys)
+            fields.append(Field(path=tab.path, kind="rows", label=t(f"spec.{tab.text_path}.title"),
+                                symbol="", unit="", range=t("web.form.rows", columns=cols),
+                                default="", help=t("web.form.rows_help", columns=cols),
+                                multiline=True))
+        else:
+            for k in tab.keys():
+                path = f"{tab.path}.{k.name}"
+                if path == FILE_KEY:
+                    continue
+                fields.append(Field(path=path, kind=k.kind, label=k.label(lang),
+                                    symbol=k.symbol_text(lang), unit=k.unit_text(lang),
+                                    range=k.range_text(lang), default=k.default_text(lang),
+                                    help=k.help(lang), required=k.required,
+                                    choices=tuple(k.choices or ((True, False)
+                                                                if k.kind == "bool" else ())),
+                                    multiline=(k.kind == "numbers"
+                                               and tab.path == "pressure")))
+        if fields:
+            out.append(Section(tab.path, t(f"spec.{tab.text_path}.title"), tuple(fields)))
+    return out
+
+
+# ----------------------------------------------------------------------------- dict -> texts
+def _text(value) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return repr(value)
+    if isinstance(value, (list, tuple)):
+        return ", ".join(_text(v) for v in value)
+    return str(value)
+
+
+def _get(data, path):
+    node = data
+    for part in path.split("."):
+        if not isinstance(node, dict) or part not in node:
+            return None
+        node = node[part]
+    return node
+
+
+def values_from_spec(data: dict) -> tuple[dict, str]:
+    """``(field texts, pressure source)`` of a spec dict: every key of the schema found in
+    it as the text its field shows (floats by ``repr``, so they read back exactly)."""
+    from crankbase.schema import ArrayOfTables
+
+    values = {}
+    for tab in _tables(_schema()):
+        if isinstance(tab, ArrayOfTables):
+            rows = _get(data, tab.path)
+            if isinstance(rows, list):
+                names = [k.name for k in tab.keys()]
+                values[tab.path] = "\n".join(
+                    ", ".join(_text(r.get(n, "")) for n in names) if isinstance(r, dict)
+                    else _text(r) for r in rows)
+            continue
+        for k in tab.keys():
+            path = f"{tab.path}.{k.name}"
+            v = _get(data, path)
+            if v is not None and path != FILE_KEY:
+                values[path] = _text(v)
+    pr = data.get("pressure") if isinstance(data.get("pressure"), dict) else {}
+    source = ("file" if "file" in pr else "cycle" if "cycle" in pr or not pr else "table")
+    return values, source
+
+
+# ----------------------------------------------------------------------------- texts -> dict
+def _number(text: str):
+    """A number read as TOML would (``4`` an integer, ``4.0`` a float); a decimal comma
+    is a point; anything else stays text, for the library to name."""
+    s = text.strip()
+    if _INT.fullmatch(s):
+        return int(s)
+    try:
+        return float(s.replace(",", "."))
+    except ValueError:
+        return s
+
+
+def _numbers(text: str) -> list:
+    return [_number(s) for s in _SPLIT.split(text.strip()) if s]
+
+
+def _put(data, path, value):
+    *parents, name = path.split(".")
+    node = data
+    for p in parents:
+        node = node.setdefault(p, {})
+    node[name] = value
+
+
+def spec_from_values(values: dict, source: str, pressure_file: str | None = None) -> dict:
+    """The spec dict of the posted field texts (empty fields left out, so the library's
+    defaults and "missing" problems apply); the pressure keys of the chosen ``source``
+    only, with ``pressure.file`` the server's own name of the uploaded file for "file"."""
+    from crankbase.schema import ArrayOfTables
+
+    data: dict = {}
+    for tab in _tables(_schema()):
+        in_pressure = tab.path == "pressure" or tab.path.startswith("pressure.")
+        if isinstance(tab, ArrayOfTables):
+            text = (values.get(tab.path) or "").strip()
+            if text:
+                names = [k.name for k in tab.keys()]
+                rows = []
+                for line in text.splitlines():
+                    nums = _numbers(line)
+                    if nums:
+                        rows.append(dict(zip(names, nums)))
+                _put(data, tab.path, rows)
+            continue
+        for k in tab.keys():
+            path = f"{tab.path}.{k.name}"
+            if path == FILE_KEY:
+                continue
+            if in_pressure:
+                if tab.path == "pressure.cycle" and source != "cycle":
+                    continue
+                if tab.path == "pressure" and (
+                        (source == "table" and k.name == "firing_tdc_deg")
+                        or (source == "file" and k.name != "firing_tdc_deg")
+                        or source == "cycle"):
+                    continue
+            text = (values.get(path) or "").strip()
+            if not text:
+                continue
+            if k.kind in ("number", "integer"):
+                value = _number(text)
+            elif k.kind == "numbers":
+                value = _numbers(text)
+            elif k.kind == "bool":
+                value = {"true": True, "false": False}.get(text.lower(), text)
+            elif k.kind == "choice":
+                value = next((c for c in k.choices if str(c) == text), text)
+            else:
+                value = text
+            _put(data, path, value)
+    if source == "file" and pressure_file:
+        _put(data, FILE_KEY, pressure_file)
+    return data
+
+
+def problem_field(key, fields: set) -> str | None:
+    """The form field a problem's key path belongs to (``engine.firing_order[2]`` →
+    ``engine.firing_order``; ``balance.counterweight[0].z_mm`` → the counterweight rows),
+    or None when it is no field's (it is then shown above the form)."""
+    if not isinstance(key, str) or not key:
+        return None
+    path = key
+    while path:
+        plain = re.sub(r"\[\d+\]", "", path)
+        if plain in fields:
+            return plain
+        for a in ARRAY_KEYS:
+            if plain.startswith(a) and a in fields:
+                return a
+        path = path.rpartition(".")[0]
+    return None
