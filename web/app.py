@@ -125,6 +125,10 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
     """
     store = SessionStore(root, idle_seconds, max_sessions)
     pool = JobPool(workers, queue, timeout)
+    # matplotlib draws one figure at a time (its text layout is not thread-safe: two
+    # reports drawn at once broke each other's mathtext), so the reports are written by
+    # one thread, in turn; a page waits for its files longer than for its numbers
+    render = JobPool(1, max(queue, 4 * workers), 4 * timeout)
     templates = Jinja2Templates(directory=str(HERE / "templates"))
     templates.env.globals["languages"] = languages
 
@@ -140,6 +144,7 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         finally:
             task.cancel()
             pool.close()
+            render.close()
             store.close()
 
     # ---- helpers
@@ -170,8 +175,9 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         return finish(HTMLResponse(_page_html(t("web.error.title"), message, lang),
                                    status_code=status), session, lang)
 
-    async def read_form(request):
-        return await request.form(max_files=4, max_fields=400, max_part_size=upload_limit)
+    def read_form(request):
+        """The posted form (``async with``: its uploaded files are closed after)."""
+        return request.form(max_files=4, max_fields=400, max_part_size=upload_limit)
 
     # ---- pages
     async def home(request):
@@ -192,8 +198,10 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         ctx = dict(t=t, lang=lang, sections=secs, values=st.values, source=st.source,
                    bearings=st.bearings, drawing=st.drawing, errors=by_field,
                    general=general, notice=st.notice.render(lang) if st.notice else "",
-                   examples=list(page.EXAMPLES), pressure=st.pressure, run=None,
-                   sources=form.PRESSURE_SOURCES, file_key=form.FILE_KEY)
+                   examples=[(n, t(f"web.example.{n}")) for n in page.EXAMPLES],
+                   pressure=st.pressure, run=None, file_key=form.FILE_KEY,
+                   upload_mb=upload_limit / 1e6,
+                   sources=[(s, t(f"web.form.source.{s}")) for s in form.PRESSURE_SOURCES])
         if run is not None:
             r = run.report
             head, rows = page.table_rows(r.tables["forces.csv"])
@@ -207,7 +215,7 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
                 pressure=run.pressure[0] if run.pressure else None, drawings=[])
             if run.drawing:                 # the drawing PDFs: listed once written
                 with contextlib.suppress(Exception):
-                    files = await pool.wait(run.write_future)
+                    files = await render.wait(run.write_future)
                     ctx["run"]["drawings"] = [n for n in files if n.endswith(".pdf")]
         return finish(templates.TemplateResponse(request, "engine.html", ctx), session, lang)
 
@@ -215,7 +223,8 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         lang = lang_of(request)
         session = session_of(request)
         st = state_of(session)
-        name = (await read_form(request)).get("example")
+        async with read_form(request) as f:
+            name = f.get("example")
         if name not in page.EXAMPLES:
             return error_page(request, session, lang, texts(lang)("web.example.unknown"), 400)
         data, pressure = page.example_spec(name)
@@ -229,13 +238,17 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         lang = lang_of(request)
         session = session_of(request)
         st = state_of(session)
-        f = await read_form(request)
-        spec, pfile = f.get("spec"), f.get("pressure")
-        if not hasattr(spec, "read"):
+        raw = pname = praw = None
+        async with read_form(request) as f:
+            spec, pfile = f.get("spec"), f.get("pressure")
+            if hasattr(spec, "read"):
+                raw = await spec.read()
+            if hasattr(pfile, "read") and pfile.filename:
+                pname, praw = pfile.filename, await pfile.read()
+        if raw is None:
             return error_page(request, session, lang, texts(lang)("web.upload.no_spec"), 400)
         import tomllib
 
-        raw = await spec.read()
         try:
             data = tomllib.loads(raw.decode("utf-8"))
         except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
@@ -246,8 +259,8 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         pressure = None
         spec_file = (data.get("pressure") or {}).get("file") \
             if isinstance(data.get("pressure"), dict) else None
-        if hasattr(pfile, "read") and pfile.filename:
-            pressure = (page.pressure_name(pfile.filename, spec_file), await pfile.read())
+        if pname is not None:
+            pressure = (page.pressure_name(pname, spec_file), praw)
         values, source = form.values_from_spec(data)
         with st.lock:
             st.values, st.source, st.pressure = values, source, pressure
@@ -268,15 +281,15 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         lang = lang_of(request)
         session = session_of(request)
         st = state_of(session)
-        f = await read_form(request)
-        values = {k: v for k, v in f.items() if isinstance(v, str)}
+        upload = None
+        async with read_form(request) as f:
+            values = {k: v for k, v in f.items() if isinstance(v, str)}
+            pfile = f.get("pressure_upload")
+            if hasattr(pfile, "read") and pfile.filename:
+                upload = (page.pressure_name(pfile.filename), await pfile.read())
         source = values.pop("pressure_source", "cycle")
         source = source if source in form.PRESSURE_SOURCES else "cycle"
         bearings, drawing = values.pop("bearings", "") == "on", values.pop("drawing", "") == "on"
-        pfile = f.get("pressure_upload")
-        upload = None
-        if hasattr(pfile, "read") and pfile.filename:
-            upload = (page.pressure_name(pfile.filename), await pfile.read())
         with st.lock:
             st.values, st.source, st.bearings, st.drawing = values, source, bearings, drawing
             if upload is not None:
@@ -297,6 +310,7 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
             shutil.rmtree(folder, ignore_errors=True)
             with st.lock:
                 st.problems, st.notice = list(exc.problems), None
+                drop(st)
             return back(session, lang, "#form")
         except CrankdynError as exc:
             shutil.rmtree(folder, ignore_errors=True)
@@ -304,6 +318,7 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
                 st.problems = [_problem("", Text("web.run.failed",
                                                  {"reason": "; ".join(exc.lines(lang))}))]
                 st.notice = None
+                drop(st)
             return back(session, lang, "#form")
         except Busy:
             shutil.rmtree(folder, ignore_errors=True)
@@ -319,15 +334,21 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         run = page.Run(number=number, folder=folder, report=report, spec=data, lang=lang,
                        pressure=pressure, drawing=st.drawing)
         try:
-            run.write_future = pool.submit(page.write, run, st.drawing)
+            run.write_future = render.submit(page.write, run, st.drawing)
         except Busy:
             return error_page(request, session, lang, texts(lang)("web.run.busy"), 503)
         with st.lock:
-            old, st.run, st.problems, st.notice = st.run, run, [], None
-        if old is not None:                # its files go once its writing is over
+            drop(st)
+            st.run, st.problems, st.notice = run, [], None
+        return back(session, lang, "#results")
+
+    def drop(st):
+        """Forget the session's last run (the page shows results of its form only); its
+        files go once its writing is over."""
+        old, st.run = st.run, None
+        if old is not None:
             old.write_future.add_done_callback(
                 lambda _f, d=old.folder: shutil.rmtree(d, ignore_errors=True))
-        return back(session, lang, "#results")
 
     async def run_file(request):
         """A file of the session's current run, by the name the server gave it."""
@@ -338,9 +359,9 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         if run is None or str(run.number) != request.path_params["number"]:
             return Response(texts(lang)("web.file.gone"), status_code=404)
         try:
-            files = await pool.wait(run.write_future)
+            files = await render.wait(run.write_future)
         except asyncio.TimeoutError:
-            return Response(texts(lang)("web.run.timeout", s=pool.timeout), status_code=504)
+            return Response(texts(lang)("web.run.timeout", s=render.timeout), status_code=504)
         except Exception as exc:
             log.exception("engine report failed")
             return Response(texts(lang)("web.run.crashed", what=type(exc).__name__),
@@ -363,7 +384,7 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         Mount("/static", StaticFiles(directory=str(HERE / "static")), name="static"),
     ]
     app = Starlette(routes=routes, lifespan=lifespan)
-    app.state.store, app.state.pool = store, pool
+    app.state.store, app.state.pool, app.state.render = store, pool, render
     return BodyLimit(app, upload_limit) if upload_limit else app
 
 
