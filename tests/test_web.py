@@ -454,3 +454,21 @@ def test_crankdyn_serve_starts_the_app_and_prints_its_address():
         proc.wait(30)
         proc.stdout.close()
         proc.stderr.close()
+
+
+def test_the_bearing_and_drawing_options_add_their_tables_figures_and_pdfs(app):
+    c = client(app)
+    c.post("/engine/example", data={"example": "petrol"})
+    vals = form_values(c.get("/engine").text)
+    html = c.post("/engine/run", data={**vals, "bearings": "on", "drawing": "on"}).text
+    assert 'id="results"' in html
+    urls = links(html)
+    for name in ("crankpins.csv", "journals.csv", "journal_torques.csv", "wear.csv"):
+        assert any(u.endswith("_" + name) for u in urls), name
+    figs = re.findall(r'<img src="(/engine/run/\d+/[^"]+\.png)"', html)
+    assert len(figs) > 13 and any("wear" in u for u in figs)
+    pdfs = [u for u in urls if u.endswith(".pdf")]
+    assert len(pdfs) >= 3 and all("_drawing_" in u for u in pdfs)
+    r = c.get(pdfs[0])
+    assert r.status_code == 200 and r.content[:5] == b"%PDF-"
+    assert 'id="opt-bearings" checked' in html
