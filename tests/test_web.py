@@ -56,7 +56,7 @@ def field_value(html, path):
 
 
 def form_values(html):
-    """Every field of the engine form as the page shows it (what a browser posts)."""
+    """Every field of a page's form as the page shows it (what a browser posts)."""
     vals = dict(re.findall(r'<input type="text" name="([^"]+)" id="[^"]+" value="([^"]*)"', html))
     for name, body in re.findall(r'<textarea name="([^"]+)"[^>]*>([^<]*)</textarea>', html):
         vals[name] = body
@@ -64,8 +64,9 @@ def form_values(html):
         sel = re.search(r'<option value="([^"]*)" selected>', body)
         vals[name] = sel.group(1) if sel else ""
     src = re.search(r'name="pressure_source" value="(\w+)" id="source-\w+" checked', html)
-    vals["pressure_source"] = src.group(1)
-    return vals
+    if src:
+        vals["pressure_source"] = src.group(1)
+    return {k: htmllib.unescape(v) for k, v in vals.items()}
 
 
 def cli_report(spec, out, lang="en"):
@@ -472,3 +473,62 @@ def test_the_bearing_and_drawing_options_add_their_tables_figures_and_pdfs(app):
     r = c.get(pdfs[0])
     assert r.status_code == 200 and r.content[:5] == b"%PDF-"
     assert 'id="opt-bearings" checked' in html
+
+
+# ----------------------------------------------------------------------------- linkage page
+def test_the_linkage_page_runs_the_ratchet_like_the_cli(app, tmp_path):
+    """The ratchet drive with a new crank speed: every CSV byte for byte and the workbook
+    value for value equal to ``crankdyn linkage`` on the downloaded spec."""
+    from crankdyn.cli import main
+
+    c = client(app)
+    html = c.get("/linkage").text
+    assert 'id="mechanism.crank"' in html and 'id="links.coupler.points"' in html
+    c.post("/linkage/example", data={"example": "ratchet"})
+    vals = form_values(c.get("/linkage").text)
+    assert vals["mechanism.omega_rad_s"] == "17.0" and vals["links.coupler.points"] == "E = 0.365, 0.0"
+    assert vals["load"].startswith('link = "rocker", resistance_Nm = 1500.0')
+    vals["mechanism.omega_rad_s"] = "12.5"
+    vals["step"] = "2"
+    r = c.post("/linkage/run", data=vals)
+    assert 'id="results"' in r.text, r.text[:3000]
+    urls = re.findall(r'href="(/linkage/run/\d+/[^"]+)"', r.text)
+    got = {u.rsplit("/", 1)[1]: c.get(u).content for u in urls}
+    spec = tmp_path / "ratchet-drive.toml"
+    spec.write_bytes(got["ratchet-drive.toml"])
+    assert "omega_rad_s = 12.5" in spec.read_text(encoding="utf-8")
+    out = tmp_path / "cli"
+    assert main(["linkage", str(spec), "-o", str(out), "--lang", "en", "--step", "2"]) == 0
+    for name in ("ratchet-drive_kinematics.csv", "ratchet-drive_forces.csv"):
+        assert got[name] == (out / name).read_bytes(), name
+    (tmp_path / "w.xlsx").write_bytes(got["ratchet-drive.xlsx"])
+    assert workbook_values(tmp_path / "w.xlsx") == workbook_values(out / "ratchet-drive.xlsx")
+    head, rows = page_table(r.text)
+    with open(out / "ratchet-drive_kinematics.csv", newline="") as fh:
+        assert [head, *rows] == list(csv.reader(fh))
+    figs = re.findall(r'<img src="(/linkage/run/\d+/[^"]+\.png)"', r.text)
+    assert len(figs) == 5 and all(c.get(u).content[:4] == b"\x89PNG" for u in figs)
+    base = tmp_path / "base"
+    assert main(["linkage", "--example", "ratchet", "-o", str(base), "--lang", "en"]) == 0
+    assert (base / "ratchet-drive_forces.csv").read_bytes() != got["ratchet-drive_forces.csv"]
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_linkage_problems_stand_at_their_fields(app, lang):
+    c = client(app, lang)
+    c.post("/linkage/example", data={"example": "press"})
+    vals = form_values(c.get("/linkage").text)
+    vals["mechanism.crank"] = "0"
+    vals["links.slider.mass_kg"] = "-35"
+    vals["step"] = "45"
+    html = c.post("/linkage/run", data=vals).text
+    assert 'id="results"' not in html
+    if "err-step" in html:                 # a bad step is refused before the spec is read
+        assert "45" in htmllib.unescape(re.search(r'id="err-step">([^<]*)<', html).group(1))
+        vals["step"] = "1"
+        html = c.post("/linkage/run", data=vals).text
+    crank = htmllib.unescape(re.search(r'id="err-mechanism.crank">([^<]*)<', html).group(1))
+    assert "mechanism.crank" in crank and ("> 0" in crank)
+    mass = htmllib.unescape(re.search(r'id="err-links.slider.mass_kg">([^<]*)<', html).group(1))
+    assert "links.slider.mass_kg" in mass and "-35" in mass
+    assert 'id="results"' not in html

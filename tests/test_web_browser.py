@@ -213,3 +213,31 @@ def test_a_bad_bore_is_named_next_to_its_field_in_the_browser(server, browser, t
     d.execute_script("document.getElementById('field-engine.bore_mm')"
                      ".scrollIntoView({block: 'center'})")
     _shot(d, f"web_engine_form_{lang}.png", tmp_path)
+
+
+def test_the_linkage_page_in_the_browser(server, browser, tmp_path):
+    """The ratchet drive: its kinematics table on the page is the CLI's, in both
+    languages; the screenshots of the page."""
+    from selenium.webdriver.common.by import By
+
+    from crankdyn.cli import main
+
+    out = tmp_path / "cli"
+    assert main(["linkage", "--example", "ratchet", "-o", str(out), "--lang", "en"]) == 0
+    with open(out / "ratchet-drive_kinematics.csv", newline="") as fh:
+        want = list(csv.reader(fh))
+    d = browser
+    for lang in ("en", "ru"):
+        d.get(server + f"/linkage?lang={lang}")
+        d.find_element(By.ID, "example-ratchet").click()
+        _by_id(d, "notice")
+        _compute(d)
+        table = d.find_element(By.ID, "table2")
+        head = [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
+        rows = [[td.text for td in tr.find_elements(By.TAG_NAME, "td")]
+                for tr in table.find_elements(By.CSS_SELECTOR, "tbody tr")[:3]]
+        assert head == want[0] and rows == want[1:4]
+        _wait(d, _images_loaded)
+        assert len(d.find_elements(By.CSS_SELECTOR, "#figures img")) == 5
+        d.execute_script("document.getElementById('results').scrollIntoView()")
+        _shot(d, f"web_linkage_results_{lang}.png", tmp_path)

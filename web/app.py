@@ -26,8 +26,10 @@ from crankbase.errors import CrankdynError, SpecError, Text
 from crankbase.texts import languages, texts
 
 from . import engine_form as form
-from . import engine_page as page
+from .engine_page import EnginePage
 from .jobs import Busy, JobPool
+from .linkage_page import LinkagePage
+from .pages import PageState, Run, spec_toml
 from .sessions import COOKIE, SessionStore
 
 __all__ = ["build_app", "UPLOAD_LIMIT", "LANG_COOKIE"]
@@ -37,8 +39,9 @@ HERE = Path(__file__).resolve().parent
 UPLOAD_LIMIT = 2_000_000
 #: The cookie of the page language.
 LANG_COOKIE = "crankdyn_lang"
-#: Rows of Table 2 shown before the table scrolls (all rows are in the page).
 log = logging.getLogger("crankdyn.web")
+#: The pages, in the menu's order.
+KINDS = (EnginePage(), LinkagePage())
 
 
 # ----------------------------------------------------------------------------- body limit
@@ -159,16 +162,10 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         s = store.get(request.cookies.get(COOKIE))
         return s if s is not None else store.new()
 
-    def state_of(session) -> page.EngineState:
-        return session.pages.setdefault("engine", page.EngineState())
-
     def finish(response: Response, session, lang) -> Response:
         response.set_cookie(COOKIE, session.id, httponly=True, samesite="lax")
         response.set_cookie(LANG_COOKIE, lang, samesite="lax")
         return response
-
-    def back(session, lang, anchor=""):
-        return finish(RedirectResponse(f"/engine{anchor}", status_code=303), session, lang)
 
     def error_page(request, session, lang, message, status):
         t = texts(lang)
@@ -179,62 +176,89 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         """The posted form (``async with``: its uploaded files are closed after)."""
         return request.form(max_files=4, max_fields=400, max_part_size=upload_limit)
 
-    # ---- pages
     async def home(request):
         return RedirectResponse("/engine", status_code=307)
 
-    async def engine_get(request):
+    routes = [Route("/", home)]
+    for kind in KINDS:
+        routes += _page_routes(kind, templates=templates, store=store, pool=pool,
+                               render=render, upload_limit=upload_limit, lang_of=lang_of,
+                               session_of=session_of, finish=finish, error_page=error_page,
+                               read_form=read_form)
+    routes.append(Mount("/static", StaticFiles(directory=str(HERE / "static")),
+                        name="static"))
+    app = Starlette(routes=routes, lifespan=lifespan)
+    app.state.store, app.state.pool, app.state.render = store, pool, render
+    return BodyLimit(app, upload_limit) if upload_limit else app
+
+
+def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of, session_of,
+                 finish, error_page, read_form):
+    """The routes of one page (:class:`web.pages.Kind`): ``/<name>`` (GET), its
+    ``/example``, ``/upload`` and ``/run`` (POST) and ``/run/<n>/<file>``."""
+    base = f"/{kind.name}"
+
+    def state_of(session) -> PageState:
+        return session.pages.setdefault(kind.name, PageState())
+
+    def back(session, lang, anchor=""):
+        return finish(RedirectResponse(f"{base}{anchor}", status_code=303), session, lang)
+
+    def drop(st):
+        """Forget the session's last run (the page shows results of its form only); its
+        files go once its writing is over."""
+        old, st.run = st.run, None
+        if old is not None:
+            old.write_future.add_done_callback(
+                lambda _f, d=old.folder: shutil.rmtree(d, ignore_errors=True))
+
+    async def get(request):
         lang = lang_of(request)
         session = session_of(request)
         st = state_of(session)
         t = texts(lang)
-        secs = form.sections(lang)
-        fields = {f.path for s in secs for f in s.fields} | {form.FILE_KEY}
+        secs = form.sections(lang, kind.schema())
+        fields = {f.path for s in secs for f in s.fields} | set(kind.extra_fields)
         by_field, general = {}, []
         for p in st.problems:
             f = form.problem_field(p.key, fields)
             (by_field.setdefault(f, []) if f else general).append(p.render(lang))
         run = st.run
-        ctx = dict(t=t, lang=lang, sections=secs, values=st.values, source=st.source,
-                   bearings=st.bearings, drawing=st.drawing, errors=by_field,
-                   general=general, notice=st.notice.render(lang) if st.notice else "",
-                   examples=[(n, t(f"web.example.{n}")) for n in page.EXAMPLES],
+        ctx = dict(t=t, lang=lang, page=kind, sections=secs, values=st.values,
+                   source=st.source, options=st.options, errors=by_field, general=general,
+                   notice=st.notice.render(lang) if st.notice else "",
+                   examples=[(n, t(kind.example_prefix + n)) for n in kind.examples],
                    pressure=st.pressure, run=None, file_key=form.FILE_KEY,
-                   upload_mb=upload_limit / 1e6,
+                   upload_mb=upload_limit / 1e6, kinds=KINDS,
                    sources=[(s, t(f"web.form.source.{s}")) for s in form.PRESSURE_SOURCES])
         if run is not None:
-            r = run.report
-            head, rows = page.table_rows(r.tables["forces.csv"])
-            head2, rows2 = page.table_rows(r.tables["table2.csv"])
-            ctx["run"] = dict(
-                number=run.number, name=r.name, head=head, rows=rows, head2=head2,
-                rows2=rows2, form=r.study.settings.form,
-                summary=r.summary_lines(lang), plots=list(r.plot_names),
-                tables=[r.file_names[n] for n in r.tables], xlsx=f"{r.name}.xlsx",
-                zip=f"{r.name}_report.zip", toml=f"{r.name}.toml",
-                pressure=run.pressure[0] if run.pressure else None, drawings=[])
-            if run.drawing:                 # the drawing PDFs: listed once written
+            ctx["run"] = dict(kind.results(run, lang), number=run.number,
+                              zip=f"{run.report.name}_report.zip",
+                              toml=f"{run.report.name}.toml",
+                              pressure=run.pressure[0] if run.pressure else None,
+                              drawings=[])
+            if run.options.get("drawing"):     # the drawing PDFs: listed once written
                 with contextlib.suppress(Exception):
                     files = await render.wait(run.write_future)
                     ctx["run"]["drawings"] = [n for n in files if n.endswith(".pdf")]
-        return finish(templates.TemplateResponse(request, "engine.html", ctx), session, lang)
+        return finish(templates.TemplateResponse(request, "page.html", ctx), session, lang)
 
-    async def engine_example(request):
+    async def example(request):
         lang = lang_of(request)
         session = session_of(request)
         st = state_of(session)
         async with read_form(request) as f:
             name = f.get("example")
-        if name not in page.EXAMPLES:
+        if name not in kind.examples:
             return error_page(request, session, lang, texts(lang)("web.example.unknown"), 400)
-        data, pressure = page.example_spec(name)
+        data, pressure = kind.example_spec(name)
+        values, source = form.values_from_spec(data, kind.schema())
         with st.lock:
-            st.values, st.source = form.values_from_spec(data)
-            st.pressure, st.problems = pressure, []
+            st.values, st.source, st.pressure, st.problems = values, source, pressure, []
             st.notice = Text("web.example.loaded", {"name": name})
         return back(session, lang, "#form")
 
-    async def engine_upload(request):
+    async def upload(request):
         lang = lang_of(request)
         session = session_of(request)
         st = state_of(session)
@@ -257,11 +281,14 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
                 st.notice = None
             return back(session, lang, "#form")
         pressure = None
-        spec_file = (data.get("pressure") or {}).get("file") \
-            if isinstance(data.get("pressure"), dict) else None
-        if pname is not None:
-            pressure = (page.pressure_name(pname, spec_file), praw)
-        values, source = form.values_from_spec(data)
+        spec_file = None
+        if kind.has_pressure and isinstance(data.get("pressure"), dict):
+            spec_file = data["pressure"].get("file")
+        if pname is not None and kind.has_pressure:
+            from .engine_page import pressure_name
+
+            pressure = (pressure_name(pname, spec_file), praw)
+        values, source = form.values_from_spec(data, kind.schema())
         with st.lock:
             st.values, st.source, st.pressure = values, source, pressure
             st.notice, st.problems = Text("web.upload.loaded"), []
@@ -277,7 +304,7 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
             data["pressure"]["file"] = pressure[0]
         return await run_spec(request, session, lang, st, data, pressure)
 
-    async def engine_run(request):
+    async def run_form(request):
         lang = lang_of(request)
         session = session_of(request)
         st = state_of(session)
@@ -285,27 +312,36 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         async with read_form(request) as f:
             values = {k: v for k, v in f.items() if isinstance(v, str)}
             pfile = f.get("pressure_upload")
-            if hasattr(pfile, "read") and pfile.filename:
-                upload = (page.pressure_name(pfile.filename), await pfile.read())
+            if kind.has_pressure and hasattr(pfile, "read") and pfile.filename:
+                from .engine_page import pressure_name
+
+                upload = (pressure_name(pfile.filename), await pfile.read())
         source = values.pop("pressure_source", "cycle")
         source = source if source in form.PRESSURE_SOURCES else "cycle"
-        bearings, drawing = values.pop("bearings", "") == "on", values.pop("drawing", "") == "on"
+        options = kind.options(values)
         with st.lock:
-            st.values, st.source, st.bearings, st.drawing = values, source, bearings, drawing
+            st.values, st.source, st.options = values, source, options
             if upload is not None:
                 st.pressure = upload
-        data = form.spec_from_values(values, source, st.pressure[0] if st.pressure else None)
+        data = form.spec_from_values(values, source, st.pressure[0] if st.pressure else None,
+                                     kind.schema())
         return await run_spec(request, session, lang, st, data,
-                              st.pressure if source == "file" else None)
+                              st.pressure if kind.has_pressure and source == "file" else None)
 
     async def run_spec(request, session, lang, st, data, pressure):
+        # computed from the spec TOML the page offers for download, read back: the CLI
+        # on that file repeats the run exactly (the order of the keys too)
+        import tomllib
+
+        with contextlib.suppress(TypeError, ValueError):
+            data = tomllib.loads(spec_toml(data))
         with st.lock:
             st.runs += 1
             number = st.runs
+            options = dict(st.options)
         folder = session.folder / f"run-{number}"
         try:
-            report = await pool.run(page.compute, data, folder / "input", pressure,
-                                    st.bearings)
+            report = await pool.run(kind.compute, data, folder / "input", pressure, options)
         except SpecError as exc:
             shutil.rmtree(folder, ignore_errors=True)
             with st.lock:
@@ -327,14 +363,14 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
             return error_page(request, session, lang, texts(lang)("web.run.timeout",
                                                                   s=pool.timeout), 504)
         except Exception as exc:          # a bug in a job: this session's error only
-            log.exception("engine job failed")
+            log.exception("%s job failed", kind.name)
             shutil.rmtree(folder, ignore_errors=True)
             return error_page(request, session, lang, texts(lang)(
                 "web.run.crashed", what=type(exc).__name__), 500)
-        run = page.Run(number=number, folder=folder, report=report, spec=data, lang=lang,
-                       pressure=pressure, drawing=st.drawing)
+        run = Run(number=number, folder=folder, report=report, spec=data, lang=lang,
+                  pressure=pressure, options=options)
         try:
-            run.write_future = render.submit(page.write, run, st.drawing)
+            run.write_future = render.submit(kind.write, run)
         except Busy:
             return error_page(request, session, lang, texts(lang)("web.run.busy"), 503)
         with st.lock:
@@ -342,19 +378,11 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
             st.run, st.problems, st.notice = run, [], None
         return back(session, lang, "#results")
 
-    def drop(st):
-        """Forget the session's last run (the page shows results of its form only); its
-        files go once its writing is over."""
-        old, st.run = st.run, None
-        if old is not None:
-            old.write_future.add_done_callback(
-                lambda _f, d=old.folder: shutil.rmtree(d, ignore_errors=True))
-
     async def run_file(request):
         """A file of the session's current run, by the name the server gave it."""
         lang = lang_of(request)
         s = store.get(request.cookies.get(COOKIE))
-        st = s.pages.get("engine") if s is not None else None
+        st = s.pages.get(kind.name) if s is not None else None
         run = st.run if st is not None else None
         if run is None or str(run.number) != request.path_params["number"]:
             return Response(texts(lang)("web.file.gone"), status_code=404)
@@ -363,29 +391,21 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         except asyncio.TimeoutError:
             return Response(texts(lang)("web.run.timeout", s=render.timeout), status_code=504)
         except Exception as exc:
-            log.exception("engine report failed")
+            log.exception("%s report failed", kind.name)
             return Response(texts(lang)("web.run.crashed", what=type(exc).__name__),
                             status_code=500)
         name = request.path_params["name"]
         path = files.get(name)
         if path is None:
             return Response(texts(lang)("web.file.gone"), status_code=404)
-        inline = name.endswith(".png") or request.query_params.get("view") == "1"
+        inline = name.endswith(".png")
         return FileResponse(path, filename=None if inline else name,
                             content_disposition_type="inline" if inline else "attachment")
 
-    routes = [
-        Route("/", home),
-        Route("/engine", engine_get),
-        Route("/engine/example", engine_example, methods=["POST"]),
-        Route("/engine/upload", engine_upload, methods=["POST"]),
-        Route("/engine/run", engine_run, methods=["POST"]),
-        Route("/engine/run/{number:str}/{name:str}", run_file),
-        Mount("/static", StaticFiles(directory=str(HERE / "static")), name="static"),
-    ]
-    app = Starlette(routes=routes, lifespan=lifespan)
-    app.state.store, app.state.pool, app.state.render = store, pool, render
-    return BodyLimit(app, upload_limit) if upload_limit else app
+    return [Route(base, get), Route(f"{base}/example", example, methods=["POST"]),
+            Route(f"{base}/upload", upload, methods=["POST"]),
+            Route(f"{base}/run", run_form, methods=["POST"]),
+            Route(base + "/run/{number:str}/{name:str}", run_file)]
 
 
 def _problem(key, text):

@@ -16,14 +16,12 @@ import re
 from dataclasses import dataclass
 
 __all__ = ["Field", "Section", "sections", "values_from_spec", "spec_from_values",
-           "problem_field", "PRESSURE_SOURCES", "FILE_KEY", "ARRAY_KEYS"]
+           "problem_field", "PRESSURE_SOURCES", "FILE_KEY", "PLACEHOLDERS"]
 
 #: The three ways of giving the pressure (radio ``pressure_source``).
 PRESSURE_SOURCES = ("cycle", "table", "file")
 #: The one key of the schema that names a file: never a form field (the upload is).
 FILE_KEY = "pressure.file"
-#: Arrays of tables are one text field, a line per table, its keys in the schema's order.
-ARRAY_KEYS = ("balance.counterweight",)
 
 _INT = re.compile(r"[+-]?\d+")
 _SPLIT = re.compile(r"[\s,;]+")
@@ -55,42 +53,66 @@ class Section:
     fields: tuple
 
 
+#: Names a placeholder table stands for (``[links.<link>]`` of the linkage spec is one
+#: table per link: ``[links.crank]`` ...).
+PLACEHOLDERS = {"<link>": ("crank", "coupler", "rocker", "slider")}
+
+
 def _tables(schema):
+    """``[(path, table)]`` of every table of ``schema`` in order, a placeholder table once
+    per name it stands for."""
     from crankbase.schema import Table
 
-    def walk(tables):
+    def walk(tables, prefix):
         for t in tables:
-            yield t
-            yield from walk([e for e in t.entries if isinstance(e, Table)])
-    return list(walk(schema.tables))
+            last = t.path.rsplit(".", 1)[-1]
+            names = PLACEHOLDERS.get(last, (last,))
+            for n in names:
+                path = f"{prefix}{n}"
+                yield path, t
+                yield from walk([e for e in t.entries if isinstance(e, Table)], path + ".")
+    return list(walk(schema.tables, ""))
 
 
-def _schema():
+def _schema(schema=None):
+    if schema is not None:
+        return schema
     from engine.schema import SCHEMA
 
     return SCHEMA
 
 
-def sections(lang: str) -> list[Section]:
-    """The form's sections in ``lang``: one per table of the engine schema, in order."""
+def _plain_rows(array) -> bool:
+    """An array of tables whose keys are all single numbers is written as number columns
+    (``z, mr, angle``); any other as one inline table per line (``link = "rocker",
+    resistance_Nm = 1500``)."""
+    return all(k.kind in ("number", "integer") for k in array.keys())
+
+
+def sections(lang: str, schema=None) -> list[Section]:
+    """The form's sections in ``lang``: one per table of the schema (the engine's by
+    default), in order."""
     from crankbase.schema import ArrayOfTables
     from crankbase.texts import texts
 
     t = texts(lang)
     out = []
-    for tab in _tables(_schema()):
+    for tpath, tab in _tables(_schema(schema)):
         fields = []
         if isinstance(tab, ArrayOfTables):
             keys = tab.keys()
             cols = ", ".join(f"{k.name} [{k.unit_text(lang)}]" if k.unit else k.name
                              for k in keys)
-            fields.append(Field(path=tab.path, kind="rows", label=t(f"spec.{tab.text_path}.title"),
-                                symbol="", unit="", range=t("web.form.rows", columns=cols),
-                                default="", help=t("web.form.rows_help", columns=cols),
+            plain = _plain_rows(tab)
+            fields.append(Field(path=tpath, kind="rows", label=t(f"spec.{tab.text_path}.title"),
+                                symbol="", unit="", range=t("web.form.rows", columns=cols)
+                                if plain else t("web.form.inline_rows"),
+                                default="", help=t("web.form.rows_help", columns=cols)
+                                if plain else t("web.form.inline_help", columns=cols),
                                 multiline=True))
         else:
             for k in tab.keys():
-                path = f"{tab.path}.{k.name}"
+                path = f"{tpath}.{k.name}"
                 if path == FILE_KEY:
                     continue
                 fields.append(Field(path=path, kind=k.kind, label=k.label(lang),
@@ -99,10 +121,10 @@ def sections(lang: str) -> list[Section]:
                                     help=k.help(lang), required=k.required,
                                     choices=tuple(k.choices or ((True, False)
                                                                 if k.kind == "bool" else ())),
-                                    multiline=(k.kind == "numbers"
-                                               and tab.path == "pressure")))
+                                    multiline=((k.kind == "numbers" and tpath == "pressure")
+                                               or k.kind == "points")))
         if fields:
-            out.append(Section(tab.path, t(f"spec.{tab.text_path}.title"), tuple(fields)))
+            out.append(Section(tpath, t(f"spec.{tab.text_path}.title"), tuple(fields)))
     return out
 
 
@@ -126,25 +148,40 @@ def _get(data, path):
     return node
 
 
-def values_from_spec(data: dict) -> tuple[dict, str]:
+def _inline(v) -> str:
+    import tomli_w
+
+    return tomli_w.dumps({"x": v}).strip()[4:]
+
+
+def values_from_spec(data: dict, schema=None) -> tuple[dict, str]:
     """``(field texts, pressure source)`` of a spec dict: every key of the schema found in
     it as the text its field shows (floats by ``repr``, so they read back exactly)."""
     from crankbase.schema import ArrayOfTables
 
     values = {}
-    for tab in _tables(_schema()):
+    for tpath, tab in _tables(_schema(schema)):
         if isinstance(tab, ArrayOfTables):
-            rows = _get(data, tab.path)
+            rows = _get(data, tpath)
             if isinstance(rows, list):
                 names = [k.name for k in tab.keys()]
-                values[tab.path] = "\n".join(
-                    ", ".join(_text(r.get(n, "")) for n in names) if isinstance(r, dict)
-                    else _text(r) for r in rows)
+                if _plain_rows(tab):
+                    values[tpath] = "\n".join(
+                        ", ".join(_text(r.get(n, "")) for n in names) if isinstance(r, dict)
+                        else _text(r) for r in rows)
+                else:
+                    values[tpath] = "\n".join(
+                        ", ".join(f"{k} = {_inline(v)}" for k, v in r.items())
+                        if isinstance(r, dict) else _text(r) for r in rows)
             continue
         for k in tab.keys():
-            path = f"{tab.path}.{k.name}"
+            path = f"{tpath}.{k.name}"
             v = _get(data, path)
-            if v is not None and path != FILE_KEY:
+            if v is None or path == FILE_KEY:
+                continue
+            if k.kind == "points" and isinstance(v, dict):
+                values[path] = "\n".join(f"{n} = {_text(xy)}" for n, xy in v.items())
+            else:
                 values[path] = _text(v)
     pr = data.get("pressure") if isinstance(data.get("pressure"), dict) else {}
     source = ("file" if "file" in pr else "cycle" if "cycle" in pr or not pr else "table")
@@ -176,34 +213,64 @@ def _put(data, path, value):
     node[name] = value
 
 
-def spec_from_values(values: dict, source: str, pressure_file: str | None = None) -> dict:
+def _inline_row(line: str):
+    """One line of an array of tables: the inside of a TOML inline table; a line that is
+    not one stays text (the library names it: not a table)."""
+    import tomllib
+
+    try:
+        return tomllib.loads("x = {" + line + "}")["x"]
+    except tomllib.TOMLDecodeError:
+        return line
+
+
+def _points(text: str):
+    """``name = x, y`` lines as ``{name: [x, y]}`` (a line without ``=`` stays text)."""
+    out = {}
+    for line in text.splitlines():
+        if not line.strip():
+            continue
+        name, eq, rest = line.partition("=")
+        if not eq:
+            return text
+        out[name.strip()] = _numbers(rest)
+    return out
+
+
+def spec_from_values(values: dict, source: str = "cycle", pressure_file: str | None = None,
+                     schema=None) -> dict:
     """The spec dict of the posted field texts (empty fields left out, so the library's
     defaults and "missing" problems apply); the pressure keys of the chosen ``source``
     only, with ``pressure.file`` the server's own name of the uploaded file for "file"."""
     from crankbase.schema import ArrayOfTables
 
     data: dict = {}
-    for tab in _tables(_schema()):
-        in_pressure = tab.path == "pressure" or tab.path.startswith("pressure.")
+    schema = _schema(schema)
+    engine = schema.name == "engine"
+    for tpath, tab in _tables(schema):
+        in_pressure = engine and (tpath == "pressure" or tpath.startswith("pressure."))
         if isinstance(tab, ArrayOfTables):
-            text = (values.get(tab.path) or "").strip()
+            text = (values.get(tpath) or "").strip()
             if text:
                 names = [k.name for k in tab.keys()]
                 rows = []
                 for line in text.splitlines():
-                    nums = _numbers(line)
-                    if nums:
-                        rows.append(dict(zip(names, nums)))
-                _put(data, tab.path, rows)
+                    if not line.strip():
+                        continue
+                    if _plain_rows(tab):
+                        rows.append(dict(zip(names, _numbers(line))))
+                    else:
+                        rows.append(_inline_row(line))
+                _put(data, tpath, rows)
             continue
         for k in tab.keys():
-            path = f"{tab.path}.{k.name}"
-            if path == FILE_KEY:
+            path = f"{tpath}.{k.name}"
+            if engine and path == FILE_KEY:
                 continue
             if in_pressure:
-                if tab.path == "pressure.cycle" and source != "cycle":
+                if tpath == "pressure.cycle" and source != "cycle":
                     continue
-                if tab.path == "pressure" and (
+                if tpath == "pressure" and (
                         (source == "table" and k.name == "firing_tdc_deg")
                         or (source == "file" and k.name != "firing_tdc_deg")
                         or source == "cycle"):
@@ -219,10 +286,12 @@ def spec_from_values(values: dict, source: str, pressure_file: str | None = None
                 value = {"true": True, "false": False}.get(text.lower(), text)
             elif k.kind == "choice":
                 value = next((c for c in k.choices if str(c) == text), text)
+            elif k.kind == "points":
+                value = _points(text)
             else:
                 value = text
             _put(data, path, value)
-    if source == "file" and pressure_file:
+    if engine and source == "file" and pressure_file:
         _put(data, FILE_KEY, pressure_file)
     return data
 
@@ -238,8 +307,8 @@ def problem_field(key, fields: set) -> str | None:
         plain = re.sub(r"\[\d+\]", "", path)
         if plain in fields:
             return plain
-        for a in ARRAY_KEYS:
-            if plain.startswith(a) and a in fields:
+        for a in fields:
+            if plain.startswith(a + ".") or plain == a:
                 return a
         path = path.rpartition(".")[0]
     return None

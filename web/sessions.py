@@ -30,7 +30,7 @@ class Session:
     id: str
     folder: Path
     last_used: float
-    #: per-page state (``"engine"``: :class:`web.engine_page.EngineState`)
+    #: per-page state (``"engine"``, ``"linkage"``: :class:`web.pages.PageState`)
     pages: dict = field(default_factory=dict)
     lock: threading.Lock = field(default_factory=threading.Lock)
 

@@ -1,0 +1,119 @@
+"""What every page of the app shares: a session's state of a page, one run, and the
+description of a page (:class:`Kind`): its schema, examples, computation and results.
+
+:mod:`web.engine_page` and :mod:`web.linkage_page` each define one :class:`Kind`;
+:mod:`web.app` serves every kind through the same handlers (example, upload, form, files).
+"""
+from __future__ import annotations
+
+import csv
+import io
+import threading
+import zipfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+__all__ = ["PageState", "Run", "Kind", "table_rows", "spec_toml", "finish_files"]
+
+
+@dataclass
+class Run:
+    """One computation of a session: the report, its spec and, once written, its files
+    (``{file name: path}``, the only names a download may ask for)."""
+
+    number: int
+    folder: Path
+    report: object
+    spec: dict
+    lang: str
+    pressure: tuple | None = None          # (server name, bytes)
+    options: dict = field(default_factory=dict)
+    write_future: object = None
+
+
+@dataclass
+class PageState:
+    """What a session holds of one page between requests."""
+
+    values: dict = field(default_factory=dict)
+    source: str = "cycle"
+    options: dict = field(default_factory=dict)
+    pressure: tuple | None = None          # (server name, bytes) of the uploaded file
+    problems: list = field(default_factory=list)
+    notice: object = None                  # a crankbase.errors.Text
+    run: Run | None = None
+    runs: int = 0
+    lock: threading.Lock = field(default_factory=threading.Lock)
+
+
+class Kind:
+    """One page: override the attributes and methods."""
+
+    name = ""                  # the URL: /<name>
+    nav_key = ""               # its name in the menu
+    title_key = intro_key = ""
+    results_template = options_template = ""
+    examples: dict = {}        # short name: bundled file
+    example_prefix = ""        # text keys of the examples' labels: <prefix><short name>
+    has_pressure = False
+    extra_fields: tuple = ()   # problem keys shown at a field outside the schema's
+
+    def schema(self):
+        raise NotImplementedError
+
+    def example_spec(self, name) -> tuple:
+        """``(spec dict, pressure file as (server name, bytes) or None)``."""
+        import tomllib
+
+        from crankbase.resources import example_path
+
+        return tomllib.loads(example_path(self.examples[name]).read_text(
+            encoding="utf-8")), None
+
+    def options(self, values: dict) -> dict:
+        """The page's options, taken out of the posted ``values``."""
+        return {}
+
+    def compute(self, data, input_dir, pressure, options):
+        raise NotImplementedError
+
+    def write(self, run: Run) -> dict:
+        raise NotImplementedError
+
+    def results(self, run: Run, lang: str) -> dict:
+        raise NotImplementedError
+
+
+def table_rows(df) -> tuple[list, list]:
+    """``(header, rows)`` of a table as its CSV holds them: the same pandas call as
+    :func:`crankbase.output.write_csv` (shortest round-trip floats), read back as text,
+    so the page shows exactly the numbers of the downloaded CSV."""
+    text = df.to_csv(index=False, float_format=None, lineterminator="\n")
+    rows = list(csv.reader(io.StringIO(text)))
+    return rows[0], rows[1:]
+
+
+def spec_toml(spec: dict) -> str:
+    import tomli_w
+
+    return tomli_w.dumps(spec)
+
+
+def finish_files(run: Run, name: str, files: dict) -> dict:
+    """Add the run's spec TOML (and pressure file) and a zip of every file to ``files``
+    (``{file name: path}`` of the written report)."""
+    spec = run.folder / "spec"
+    spec.mkdir(exist_ok=True)
+    toml = spec / f"{name}.toml"
+    toml.write_text(spec_toml(run.spec), encoding="utf-8")
+    files[toml.name] = toml
+    if run.pressure is not None:
+        p = spec / run.pressure[0]
+        p.write_bytes(run.pressure[1])
+        files[p.name] = p
+    zpath = run.folder / f"{name}_report.zip"
+    with zipfile.ZipFile(zpath, "w", zipfile.ZIP_DEFLATED) as z:
+        for fname, path in files.items():
+            z.write(path, arcname=fname)
+    files[zpath.name] = zpath
+    return files
