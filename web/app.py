@@ -131,7 +131,7 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
     # matplotlib draws one figure at a time (its text layout is not thread-safe: two
     # reports drawn at once broke each other's mathtext), so the reports are written by
     # one thread, in turn; a page waits for its files longer than for its numbers
-    render = JobPool(1, max(queue, 4 * workers), 4 * timeout)
+    render = JobPool(1, 2 * queue, 4 * timeout)
     templates = Jinja2Templates(directory=str(HERE / "templates"))
     templates.env.globals["languages"] = languages
 
