@@ -532,3 +532,54 @@ def test_linkage_problems_stand_at_their_fields(app, lang):
     mass = htmllib.unescape(re.search(r'id="err-links.slider.mass_kg">([^<]*)<', html).group(1))
     assert "links.slider.mass_kg" in mass and "-35" in mass
     assert 'id="results"' not in html
+
+
+# ----------------------------------------------------------------------------- dynamics page
+@pytest.mark.parametrize("example,key,value", [("flywheel", "machine.J_red_kgm2", "0.3"),
+                                               ("hoist", "dynamics.motor_start_torque_Nm",
+                                                "4500.0")])
+def test_the_dynamics_page_equals_crankdyn_dynamics(app, tmp_path, example, key, value):
+    from crankdyn.cli import main
+
+    c = client(app)
+    c.post("/dynamics/example", data={"example": example})
+    vals = form_values(c.get("/dynamics").text)
+    assert vals[key] != value
+    vals[key] = value
+    r = c.post("/dynamics/run", data=vals)
+    assert 'id="results"' in r.text, r.text[:3000]
+    urls = re.findall(r'(?:href|src)="(/dynamics/run/\d+/[^"]+)"', r.text)
+    got = {u.rsplit("/", 1)[1]: c.get(u).content for u in urls}
+    toml = next(n for n in got if n.endswith(".toml"))
+    spec = tmp_path / toml
+    spec.write_bytes(got[toml])
+    out = tmp_path / "cli"
+    assert main(["dynamics", str(spec), "-o", str(out), "--lang", "en"]) == 0
+    csvs = sorted(p.name for p in out.glob("*.csv"))
+    assert csvs and all(got[n] == (out / n).read_bytes() for n in csvs), csvs
+    xlsx = next(p.name for p in out.glob("*.xlsx"))
+    (tmp_path / "w.xlsx").write_bytes(got[xlsx])
+    assert workbook_values(tmp_path / "w.xlsx") == workbook_values(out / xlsx)
+    pngs = sorted(p.name for p in out.glob("*.png"))
+    assert pngs and all(got[n][:4] == b"\x89PNG" for n in pngs)
+    head, rows = page_table(r.text)
+    with open(next(out.glob("*_motion.csv")), newline="") as fh:
+        want = list(csv.reader(fh))
+    from web.pages import PAGE_ROWS
+
+    assert head == want[0] and rows == want[1:PAGE_ROWS + 1]       # the first rows
+    if len(want) - 1 > PAGE_ROWS:
+        assert f"The first {PAGE_ROWS} of {len(want) - 1} rows" in r.text
+
+
+@pytest.mark.parametrize("lang,words", [("en", "must be > 0 and < 1"),
+                                        ("ru", "должно быть > 0 и < 1")])
+def test_a_bad_delta_is_named_at_its_field(app, lang, words):
+    c = client(app, lang)
+    c.post("/dynamics/example", data={"example": "flywheel"})
+    vals = form_values(c.get("/dynamics").text)
+    vals["dynamics.delta"] = "2"
+    html = c.post("/dynamics/run", data=vals).text
+    err = htmllib.unescape(re.search(r'id="err-dynamics.delta">([^<]*)<', html).group(1))
+    assert "dynamics.delta" in err and words in err
+    assert 'id="results"' not in html

@@ -241,3 +241,31 @@ def test_the_linkage_page_in_the_browser(server, browser, tmp_path):
         assert len(d.find_elements(By.CSS_SELECTOR, "#figures img")) == 5
         d.execute_script("document.getElementById('results').scrollIntoView()")
         _shot(d, f"web_linkage_results_{lang}.png", tmp_path)
+
+
+def test_the_dynamics_page_in_the_browser(server, browser, tmp_path):
+    """The seed's flywheel example: the motion table on the page is the CLI's, in both
+    languages; the screenshots of the page."""
+    from selenium.webdriver.common.by import By
+
+    from crankdyn.cli import main
+
+    out = tmp_path / "cli"
+    assert main(["dynamics", "--example", "flywheel", "-o", str(out), "--lang", "en"]) == 0
+    with open(next(out.glob("*_motion.csv")), newline="") as fh:
+        want = list(csv.reader(fh))
+    d = browser
+    for lang in ("en", "ru"):
+        d.get(server + f"/dynamics?lang={lang}")
+        d.find_element(By.ID, "example-flywheel").click()
+        _by_id(d, "notice")
+        _compute(d)
+        table = d.find_element(By.ID, "table2")
+        head = [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
+        rows = [[td.text for td in tr.find_elements(By.TAG_NAME, "td")]
+                for tr in table.find_elements(By.CSS_SELECTOR, "tbody tr")[:3]]
+        assert head == want[0] and rows == want[1:4]
+        _wait(d, _images_loaded)
+        assert d.find_elements(By.CSS_SELECTOR, "#figures img")
+        d.execute_script("document.getElementById('results').scrollIntoView()")
+        _shot(d, f"web_dynamics_results_{lang}.png", tmp_path)

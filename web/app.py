@@ -28,6 +28,7 @@ from crankbase.texts import languages, texts
 from . import engine_form as form
 from .engine_page import EnginePage
 from .jobs import Busy, JobPool
+from .dynamics_page import DynamicsPage
 from .linkage_page import LinkagePage
 from .pages import PageState, Run, spec_toml
 from .sessions import COOKIE, SessionStore
@@ -41,7 +42,7 @@ UPLOAD_LIMIT = 2_000_000
 LANG_COOKIE = "crankdyn_lang"
 log = logging.getLogger("crankdyn.web")
 #: The pages, in the menu's order.
-KINDS = (EnginePage(), LinkagePage())
+KINDS = (EnginePage(), LinkagePage(), DynamicsPage())
 
 
 # ----------------------------------------------------------------------------- body limit
@@ -232,15 +233,15 @@ def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of,
                    upload_mb=upload_limit / 1e6, kinds=KINDS,
                    sources=[(s, t(f"web.form.source.{s}")) for s in form.PRESSURE_SOURCES])
         if run is not None:
-            ctx["run"] = dict(kind.results(run, lang), number=run.number,
-                              zip=f"{run.report.name}_report.zip",
-                              toml=f"{run.report.name}.toml",
-                              pressure=run.pressure[0] if run.pressure else None,
-                              drawings=[])
-            if run.options.get("drawing"):     # the drawing PDFs: listed once written
+            files = None
+            if kind.wait_for_files or run.options.get("drawing"):   # listed once written
                 with contextlib.suppress(Exception):
                     files = await render.wait(run.write_future)
-                    ctx["run"]["drawings"] = [n for n in files if n.endswith(".pdf")]
+            res = kind.results(run, lang, files)
+            ctx["run"] = dict(res, number=run.number, zip=f"{res['name']}_report.zip",
+                              toml=f"{res['name']}.toml",
+                              pressure=run.pressure[0] if run.pressure else None,
+                              drawings=[n for n in files or () if n.endswith(".pdf")])
         return finish(templates.TemplateResponse(request, "page.html", ctx), session, lang)
 
     async def example(request):

@@ -83,10 +83,10 @@ def _schema(schema=None):
 
 
 def _plain_rows(array) -> bool:
-    """An array of tables whose keys are all single numbers is written as number columns
-    (``z, mr, angle``); any other as one inline table per line (``link = "rocker",
+    """An array of tables whose keys are all required single numbers is written as number
+    columns (``z, mr, angle``); any other as one inline table per line (``link = "rocker",
     resistance_Nm = 1500``)."""
-    return all(k.kind in ("number", "integer") for k in array.keys())
+    return all(k.kind in ("number", "integer") and k.required is True for k in array.keys())
 
 
 def sections(lang: str, schema=None) -> list[Section]:
@@ -148,10 +148,27 @@ def _get(data, path):
     return node
 
 
-def _inline(v) -> str:
-    import tomli_w
+_BARE = re.compile(r"[A-Za-z0-9_-]+")
 
-    return tomli_w.dumps({"x": v}).strip()[4:]
+
+def _inline(v) -> str:
+    """A value as TOML writes it on one line (an array or table inline)."""
+    import json
+    import math
+
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, float):
+        return ("nan" if math.isnan(v) else ("inf" if v > 0 else "-inf")) \
+            if not math.isfinite(v) else repr(v)
+    if isinstance(v, int):
+        return str(v)
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(_inline(x) for x in v) + "]"
+    if isinstance(v, dict):
+        return "{" + ", ".join(f"{k if _BARE.fullmatch(str(k)) else json.dumps(str(k))} = "
+                               f"{_inline(x)}" for k, x in v.items()) + "}"
+    return json.dumps(str(v), ensure_ascii=False)
 
 
 def values_from_spec(data: dict, schema=None) -> tuple[dict, str]:

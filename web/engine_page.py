@@ -81,7 +81,7 @@ class EnginePage(Kind):
                                       drawing=run.options.get("drawing", False))
         return finish_files(run, report.name, {p.name: p for p in written})
 
-    def results(self, run, lang):
+    def results(self, run, lang, files=None):
         from crankbase.texts import texts
 
         t = texts(lang)
@@ -89,6 +89,7 @@ class EnginePage(Kind):
         head, rows = table_rows(r.tables["forces.csv"])
         head2, rows2 = table_rows(r.tables["table2.csv"])
         return dict(head=head, rows=rows, head2=head2, rows2=rows2,
+                    total=len(r.tables["forces.csv"]), total2=len(r.tables["table2.csv"]),
                     form=r.study.settings.form, summary=r.summary_lines(lang),
                     figures=[f"{r.name}_{p}.{FIGURE_FORMAT}" for p in r.plot_names],
                     tables=[r.file_names[n] for n in r.tables], xlsx=f"{r.name}.xlsx",

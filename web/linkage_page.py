@@ -52,7 +52,7 @@ class LinkagePage(Kind):
         files = {n: written.folder / n for n in written.files}
         return finish_files(run, report.name, files)
 
-    def results(self, run, lang):
+    def results(self, run, lang, files=None):
         from crankbase.texts import texts
         from linkage.study import PLOTS, notice_lines, summary_lines
 
@@ -63,6 +63,7 @@ class LinkagePage(Kind):
         head, rows = table_rows(tables[kin])
         head2, rows2 = table_rows(tables[frc])
         return dict(head=head, rows=rows, head2=head2, rows2=rows2,
+                    total=len(tables[kin]), total2=len(tables[frc]),
                     summary=summary_lines(r, lang) + notice_lines(r, lang=lang),
                     figures=[f"{r.name}_{p}.png" for p in PLOTS],
                     tables=[kin, frc], xlsx=f"{r.name}.xlsx", name=r.name,

@@ -13,7 +13,7 @@ import zipfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
-__all__ = ["PageState", "Run", "Kind", "table_rows", "spec_toml", "finish_files"]
+__all__ = ["PageState", "Run", "Kind", "table_rows", "spec_toml", "finish_files", "PAGE_ROWS"]
 
 
 @dataclass
@@ -57,6 +57,7 @@ class Kind:
     example_prefix = ""        # text keys of the examples' labels: <prefix><short name>
     has_pressure = False
     extra_fields: tuple = ()   # problem keys shown at a field outside the schema's
+    wait_for_files = False     # the results list files known only once written
 
     def schema(self):
         raise NotImplementedError
@@ -80,15 +81,25 @@ class Kind:
     def write(self, run: Run) -> dict:
         raise NotImplementedError
 
-    def results(self, run: Run, lang: str) -> dict:
+    def results(self, run: Run, lang: str, files=None) -> dict:
+        """What the results show: ``name`` (the file stem), ``head``/``rows`` and
+        ``head2``/``rows2`` (two tables), ``title1``/``title2``, ``summary`` (lines),
+        ``figures`` and ``tables`` (file names), ``xlsx``, ``toml_label``; ``files``:
+        the written files, when :attr:`wait_for_files`."""
         raise NotImplementedError
 
 
-def table_rows(df) -> tuple[list, list]:
+#: Rows of a table the page shows at most (the CSV holds them all): a fine step can make
+#: tens of thousands, too many for a page.
+PAGE_ROWS = 1000
+
+
+def table_rows(df, limit: int = PAGE_ROWS) -> tuple[list, list]:
     """``(header, rows)`` of a table as its CSV holds them: the same pandas call as
     :func:`crankbase.output.write_csv` (shortest round-trip floats), read back as text,
-    so the page shows exactly the numbers of the downloaded CSV."""
-    text = df.to_csv(index=False, float_format=None, lineterminator="\n")
+    so the page shows exactly the numbers of the downloaded CSV; the first ``limit``
+    rows (``len(df)`` tells how many there are)."""
+    text = df.iloc[:limit].to_csv(index=False, float_format=None, lineterminator="\n")
     rows = list(csv.reader(io.StringIO(text)))
     return rows[0], rows[1:]
 
