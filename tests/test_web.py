@@ -583,3 +583,67 @@ def test_a_bad_delta_is_named_at_its_field(app, lang, words):
     err = htmllib.unescape(re.search(r'id="err-dynamics.delta">([^<]*)<', html).group(1))
     assert "dynamics.delta" in err and words in err
     assert 'id="results"' not in html
+
+
+# ----------------------------------------------------------------------------- balance page
+def test_the_balance_page_equals_crankdyn_balance(app, tmp_path):
+    """The textbook's two-plane rotor (example 11-1: plane I 285.60 g·mm at 53.54°) with
+    its second mass moved: the page's CSVs equal ``crankdyn balance`` on its spec."""
+    from crankdyn.cli import main
+
+    c = client(app)
+    c.post("/balance/example", data={"example": "rotor"})
+    vals = form_values(c.get("/balance").text)
+    assert vals["rotor.mass"].splitlines() == ["mr_gmm = 90, angle_deg = 270, z_mm = 100",
+                                               "mr_gmm = 600, angle_deg = 45, z_mm = 420"]
+    r = c.post("/balance/run", data=vals)
+    assert 'id="results"' in r.text, r.text[:3000]
+    head, rows = page_table(r.text)
+    row = dict(zip(head, rows[0]))
+    assert round(float(row["mr_gmm"]), 2) == 285.60 and round(float(row["angle_deg"]), 2) == 53.54
+    vals["rotor.mass"] = vals["rotor.mass"].replace("z_mm = 420", "z_mm = 380")
+    r = c.post("/balance/run", data=vals)
+    urls = re.findall(r'(?:href|src)="(/balance/run/\d+/[^"]+)"', r.text)
+    got = {u.rsplit("/", 1)[1]: c.get(u).content for u in urls}
+    toml = next(n for n in got if n.endswith(".toml"))
+    (tmp_path / toml).write_bytes(got[toml])
+    out = tmp_path / "cli"
+    assert main(["balance", str(tmp_path / toml), "-o", str(out), "--lang", "en"]) == 0
+    csvs = sorted(p.name for p in out.glob("*.csv"))
+    assert len(csvs) == 2 and all(got[n] == (out / n).read_bytes() for n in csvs)
+    assert any(n.endswith("_rotor_polygons.png") for n in got)
+    head, rows = page_table(r.text)
+    assert round(float(dict(zip(head, rows[0]))["mr_gmm"]), 2) != 285.60
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_a_bad_rotor_mass_line_is_named_at_its_field(app, lang):
+    c = client(app, lang)
+    c.post("/balance/example", data={"example": "rotor"})
+    vals = form_values(c.get("/balance").text)
+    vals["rotor.mass"] = "mr_gmm = -90, angle_deg = 270, z_mm = 100\nangle_deg = 45"
+    html = c.post("/balance/run", data=vals).text
+    errs = [htmllib.unescape(m) for m in re.findall(r'id="err-rotor.mass[^"]*">([^<]*)<', html)]
+    assert any("rotor.mass[0].mr_gmm" in e and "-90" in e for e in errs), errs
+    assert 'id="results"' not in html
+
+
+def test_the_pages_of_one_session_keep_their_files_apart(app):
+    """One session on every page in turn: each page's run has its own folder, so one
+    page's new run neither removes nor lists another page's files."""
+    c = client(app)
+    pages = {"engine": "petrol", "linkage": "ratchet", "dynamics": "flywheel",
+             "balance": "rotor"}
+    shown = {}
+    for page, example in pages.items():
+        c.post(f"/{page}/example", data={"example": example})
+        html = c.post(f"/{page}/run", data=form_values(c.get(f"/{page}").text)).text
+        assert 'id="results"' in html, page
+        shown[page] = re.findall(rf'(?:href|src)="(/{page}/run/\d+/[^"]+)"', html)
+    for page, urls in shown.items():
+        for u in urls:
+            assert c.get(u).status_code == 200, u
+    figs = [u for u in shown["balance"] if u.endswith(".png")]
+    assert len(figs) == 1 and figs[0].endswith("_rotor_polygons.png")
+    s = app.app.state.store.get(c.cookies["crankdyn_session"])
+    assert sorted(p.name.split("-")[0] for p in s.folder.iterdir()) == sorted(pages)

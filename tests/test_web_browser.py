@@ -269,3 +269,26 @@ def test_the_dynamics_page_in_the_browser(server, browser, tmp_path):
         assert d.find_elements(By.CSS_SELECTOR, "#figures img")
         d.execute_script("document.getElementById('results').scrollIntoView()")
         _shot(d, f"web_dynamics_results_{lang}.png", tmp_path)
+
+
+def test_the_balance_page_in_the_browser(server, browser, tmp_path):
+    """The textbook's two-plane rotor: plane I 285.60 g·mm at 53.54° on the page, in both
+    languages (Example 11-1 of the seed textbook, examples/rotor_two_plane.toml)."""
+    from selenium.webdriver.common.by import By
+
+    d = browser
+    for lang in ("en", "ru"):
+        d.get(server + f"/balance?lang={lang}")
+        d.find_element(By.ID, "example-rotor").click()
+        _by_id(d, "notice")
+        _compute(d)
+        table = d.find_element(By.ID, "table2")
+        head = [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
+        row = dict(zip(head, [td.text for td in table.find_elements(By.CSS_SELECTOR,
+                                                                     "tbody tr")[0]
+                              .find_elements(By.TAG_NAME, "td")]))
+        assert round(float(row["mr_gmm"]), 2) == 285.60
+        assert round(float(row["angle_deg"]), 2) == 53.54
+        _wait(d, _images_loaded)
+        d.execute_script("document.getElementById('results').scrollIntoView()")
+        _shot(d, f"web_balance_results_{lang}.png", tmp_path)

@@ -28,6 +28,7 @@ from crankbase.texts import languages, texts
 from . import engine_form as form
 from .engine_page import EnginePage
 from .jobs import Busy, JobPool
+from .balance_page import BalancePage
 from .dynamics_page import DynamicsPage
 from .linkage_page import LinkagePage
 from .pages import PageState, Run, spec_toml
@@ -42,7 +43,7 @@ UPLOAD_LIMIT = 2_000_000
 LANG_COOKIE = "crankdyn_lang"
 log = logging.getLogger("crankdyn.web")
 #: The pages, in the menu's order.
-KINDS = (EnginePage(), LinkagePage(), DynamicsPage())
+KINDS = (EnginePage(), LinkagePage(), DynamicsPage(), BalancePage())
 
 
 # ----------------------------------------------------------------------------- body limit
@@ -340,7 +341,7 @@ def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of,
             st.runs += 1
             number = st.runs
             options = dict(st.options)
-        folder = session.folder / f"run-{number}"
+        folder = session.folder / f"{kind.name}-{number}"     # each page its own folders
         try:
             report = await pool.run(kind.compute, data, folder / "input", pressure, options)
         except SpecError as exc:
