@@ -647,3 +647,60 @@ def test_the_pages_of_one_session_keep_their_files_apart(app):
     assert len(figs) == 1 and figs[0].endswith("_rotor_polygons.png")
     s = app.app.state.store.get(c.cookies["crankdyn_session"])
     assert sorted(p.name.split("-")[0] for p in s.folder.iterdir()) == sorted(pages)
+
+
+# ----------------------------------------------------------------------------- teacher page
+def test_the_teacher_page_runs_a_class_and_zips_every_report(app, tmp_path):
+    """Three variants of the petrol engine, one of them bad: the page's progress ends
+    with two reports and the bad row named; each report in the zip is what
+    ``crankdyn engine`` writes for the variant's own spec."""
+    import time
+
+    from crankdyn.cli import main
+
+    c = client(app)
+    assert "variants-form" in c.get("/teacher").text
+    table = ("variant,engine.bore_mm,engine.speed_rpm\n"
+             "v1,80,5000\nv2,-3,5000\nv3,82,4800\n").encode()
+    r = c.post("/teacher/variants", files={
+        "base": ("base.toml", example_path("petrol_vaz2106.toml").read_bytes(), "text/plain"),
+        "variants": ("class.csv", table, "text/csv")})
+    assert r.status_code == 200 and "batch-progress" in r.text
+    for _ in range(600):
+        html = c.get("/teacher").text
+        if 'id="batch-line"' in html or 'id="batch-error"' in html:
+            break
+        time.sleep(0.5)
+    line = htmllib.unescape(re.search(r'id="batch-line">([^<]*)<', html).group(1))
+    assert "3 variants: 2 written" in line and "1 failed (row 3)" in line
+    fails = htmllib.unescape(" ".join(re.findall(r'<li class="problem">([^<]*)</li>', html)))
+    assert "engine.bore_mm" in fails and "-3" in fails
+    assert 'value="3" max="3"' in html
+    zurl = re.search(r'href="(/teacher/batch/\d+/class_reports.zip)"', html).group(1)
+    z = zipfile.ZipFile(io.BytesIO(c.get(zurl).content))
+    names = z.namelist()
+    assert "variants_summary.csv" in names and "variants_errors.csv" in names
+    assert not any(n.startswith("v2/") for n in names)
+    spec = next(n for n in names if n.startswith("v3/") and n.endswith(".toml"))
+    (tmp_path / "v3").mkdir()
+    for n in names:
+        if n.startswith("v3/") and not n.endswith((".png", ".svg", ".xlsx")):
+            (tmp_path / n).write_bytes(z.read(n))
+    assert "bore_mm = 82" in (tmp_path / spec).read_text(encoding="utf-8")
+    out = tmp_path / "cli"
+    assert main(["engine", str(tmp_path / spec), "-o", str(out), "--lang", "ru"]) == 0
+    for p in out.glob("*.csv"):
+        assert z.read(f"v3/{p.name}") == p.read_bytes(), p.name
+
+
+def test_the_teacher_page_names_a_bad_table_and_too_many_variants(app):
+    c = client(app, "ru")
+    base = example_path("petrol_vaz2106.toml").read_bytes()
+    r = c.post("/teacher/variants", files={"base": ("b.toml", base, "text/plain"),
+                                           "variants": ("t.csv", b"bore\n1\n", "text/csv")})
+    assert "variant" in r.text and "batch-progress" not in r.text
+    assert "/input/" not in r.text                              # no server path shown
+    rows = "variant,engine.bore_mm\n" + "".join(f"v{i},80\n" for i in range(101))
+    r = c.post("/teacher/variants", files={"base": ("b.toml", base, "text/plain"),
+                                           "variants": ("t.csv", rows.encode(), "text/csv")})
+    assert "не более 100" in htmllib.unescape(r.text) and "batch-progress" not in r.text

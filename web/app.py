@@ -134,6 +134,9 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
     # reports drawn at once broke each other's mathtext), so the reports are written by
     # one thread, in turn; a page waits for its files longer than for its numbers
     render = JobPool(1, 2 * queue, 4 * timeout)
+    # a class's batch of reports draws in processes of its own (engine.variants); one
+    # batch at a time, a few waiting
+    batches = JobPool(1, 4, 3600.0)
     templates = Jinja2Templates(directory=str(HERE / "templates"))
     templates.env.globals["languages"] = languages
 
@@ -150,6 +153,7 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
             task.cancel()
             pool.close()
             render.close()
+            batches.close()
             store.close()
 
     # ---- helpers
@@ -187,10 +191,15 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
                                render=render, upload_limit=upload_limit, lang_of=lang_of,
                                session_of=session_of, finish=finish, error_page=error_page,
                                read_form=read_form)
+    routes += _teacher_routes(templates=templates, store=store, pool=pool, batches=batches,
+                              upload_limit=upload_limit, lang_of=lang_of,
+                              session_of=session_of, finish=finish, error_page=error_page,
+                              read_form=read_form)
     routes.append(Mount("/static", StaticFiles(directory=str(HERE / "static")),
                         name="static"))
     app = Starlette(routes=routes, lifespan=lifespan)
     app.state.store, app.state.pool, app.state.render = store, pool, render
+    app.state.batches = batches
     return BodyLimit(app, upload_limit) if upload_limit else app
 
 
@@ -408,6 +417,127 @@ def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of,
             Route(f"{base}/upload", upload, methods=["POST"]),
             Route(f"{base}/run", run_form, methods=["POST"]),
             Route(base + "/run/{number:str}/{name:str}", run_file)]
+
+
+class _Teacher:
+    """The teacher's page in the menu."""
+
+    name = "teacher"
+    nav_key = "web.nav.teacher"
+
+
+#: The files of a batch a download may ask for.
+BATCH_FILES = ("class_reports.zip", "variants_summary.csv", "variants_summary.xlsx",
+               "variants_errors.csv")
+
+
+def _teacher_routes(*, templates, store, pool, batches, upload_limit, lang_of, session_of,
+                    finish, error_page, read_form):
+    from . import teacher_page as tp
+
+    def state_of(session):
+        return session.pages.setdefault("teacher", tp.TeacherState())
+
+    async def get(request):
+        lang = lang_of(request)
+        session = session_of(request)
+        st = state_of(session)
+        t = texts(lang)
+        b = st.batch
+        ctx = dict(t=t, lang=lang, page=_Teacher, kinds=KINDS, problems=st.problems,
+                   upload_mb=upload_limit / 1e6, batch=None, max_variants=tp.MAX_VARIANTS)
+        if b is not None:
+            info = dict(number=b.number, done=b.done, total=b.total, running=True)
+            if b.future.done():
+                info["running"] = False
+                try:
+                    run = b.future.result()
+                except Exception as exc:
+                    info["error"] = ("; ".join(exc.lines(lang)) if isinstance(exc, CrankdynError)
+                                     else t("web.run.crashed", what=type(exc).__name__))
+                else:
+                    bad = run.failures
+                    rows = "" if not bad else t.n(
+                        "variants.summary.failed_rows", len(bad),
+                        rows=", ".join(str(o.variant.row) for o in bad))
+                    info["line"] = t.n("variants.summary.result", len(run.outcomes),
+                                       written=len(run.outcomes) - len(bad),
+                                       folder=b.zip_name, failed=len(bad), rows=rows)
+                    info["failures"] = [ln for o in bad for ln in o.problems]
+                    info["head"], info["rows"] = [], []
+                    if run.records:           # the summary CSV's own text
+                        import csv
+
+                        with open(run.summary_csv, newline="", encoding="utf-8") as fh:
+                            rows = list(csv.reader(fh))
+                        info["head"], info["rows"] = rows[0], rows[1:]
+                    info["files"] = [n for n in BATCH_FILES
+                                     if (b.folder / n).is_file()
+                                     or (b.folder / "reports" / n).is_file()]
+            ctx["batch"] = info
+        return finish(templates.TemplateResponse(request, "teacher.html", ctx), session, lang)
+
+    async def start(request):
+        lang = lang_of(request)
+        session = session_of(request)
+        st = state_of(session)
+        up = {}
+        async with read_form(request) as f:
+            for key in ("base", "pressure", "variants"):
+                item = f.get(key)
+                if hasattr(item, "read") and item.filename:
+                    up[key] = (item.filename, await item.read())
+        t = texts(lang)
+        if "base" not in up or "variants" not in up:
+            with st.lock:
+                st.problems = [t("web.teacher.need_both")]
+            return finish(RedirectResponse("/teacher", status_code=303), session, lang)
+        with st.lock:
+            st.runs += 1
+            number = st.runs
+        folder = session.folder / f"teacher-{number}"
+        xlsx = up["variants"][0].lower().endswith(".xlsx")
+        try:
+            base_path, vpath, n = await pool.run(tp.prepare, folder, up["base"][1],
+                                                 up.get("pressure"), up["variants"][1], xlsx)
+        except (CrankdynError, ValueError, UnicodeDecodeError) as exc:
+            shutil.rmtree(folder, ignore_errors=True)
+            lines = (exc.lines(lang) if isinstance(exc, CrankdynError)
+                     else [t("web.upload.bad_toml", reason=str(exc))])
+            inside = str(folder / "input") + "/"
+            with st.lock:
+                st.problems = [ln.replace(inside, "") for ln in lines]
+            return finish(RedirectResponse("/teacher", status_code=303), session, lang)
+        except Busy:
+            shutil.rmtree(folder, ignore_errors=True)
+            return error_page(request, session, lang, t("web.run.busy"), 503)
+        batch = tp.Batch(number=number, folder=folder, total=n, lang=lang)
+        try:
+            batch.future = batches.submit(tp.run_batch, batch, base_path, vpath)
+        except Busy:
+            shutil.rmtree(folder, ignore_errors=True)
+            return error_page(request, session, lang, t("web.run.busy"), 503)
+        with st.lock:
+            tp.remove(st.batch)
+            st.batch, st.problems = batch, []
+        return finish(RedirectResponse("/teacher", status_code=303), session, lang)
+
+    async def batch_file(request):
+        lang = lang_of(request)
+        s = store.get(request.cookies.get(COOKIE))
+        st = s.pages.get("teacher") if s is not None else None
+        b = st.batch if st is not None else None
+        name = request.path_params["name"]
+        if (b is None or str(b.number) != request.path_params["number"]
+                or name not in BATCH_FILES or not b.future.done()):
+            return Response(texts(lang)("web.file.gone"), status_code=404)
+        path = b.folder / name if name == b.zip_name else b.folder / "reports" / name
+        if not path.is_file():
+            return Response(texts(lang)("web.file.gone"), status_code=404)
+        return FileResponse(path, filename=name)
+
+    return [Route("/teacher", get), Route("/teacher/variants", start, methods=["POST"]),
+            Route("/teacher/batch/{number:str}/{name:str}", batch_file)]
 
 
 def _problem(key, text):
