@@ -292,3 +292,28 @@ def test_the_balance_page_in_the_browser(server, browser, tmp_path):
         _wait(d, _images_loaded)
         d.execute_script("document.getElementById('results').scrollIntoView()")
         _shot(d, f"web_balance_results_{lang}.png", tmp_path)
+
+
+def test_the_teacher_page_in_the_browser(server, browser, tmp_path):
+    """A class of two variants uploaded through the page's file inputs: the progress bar
+    reaches 2 of 2 and the summary table lists both; the page in both languages."""
+    from selenium.webdriver.common.by import By
+
+    table = tmp_path / "class.csv"
+    table.write_text("variant,engine.bore_mm,engine.speed_rpm\nivanov,80,5000\n"
+                     "petrova,82,4800\n", encoding="utf-8")
+    d = browser
+    d.get(server + "/teacher?lang=en")
+    d.find_element(By.ID, "teacher-base").send_keys(str(example_path("petrol_vaz2106.toml")))
+    d.find_element(By.ID, "teacher-variants").send_keys(str(table))
+    d.find_element(By.ID, "teacher-submit").click()
+    _by_id(d, "batch-progress")
+    line = _by_id(d, "batch-line", timeout=300)
+    assert "2 variants: 2 written" in line.text
+    assert d.find_element(By.ID, "batch-progress").get_attribute("value") == "2"
+    rows = d.find_elements(By.CSS_SELECTOR, "#summary-table tbody tr")
+    assert [r.find_elements(By.TAG_NAME, "td")[0].text for r in rows] == ["ivanov", "petrova"]
+    _shot(d, "web_teacher_en.png", tmp_path)
+    d.get(server + "/teacher?lang=ru")
+    assert "вариантов: 2; записано 2" in _by_id(d, "batch-line").text
+    _shot(d, "web_teacher_ru.png", tmp_path)
