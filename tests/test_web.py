@@ -115,7 +115,18 @@ def test_the_engine_page_shows_every_schema_key_with_its_words(app, lang):
     secs = sections(lang)
     paths = {f.path for s in secs for f in s.fields}
     # every key of the engine schema is a field (the file key is the upload)
-    from web.engine_form import _tables  # noqa: F401 pragma: no cover
+    from crankbase.schema import ArrayOfTables, Table
+
+    def walk(tables):
+        for tab in tables:
+            if isinstance(tab, ArrayOfTables):
+                yield tab.path                      # one field: a line per table
+                continue
+            yield from (f"{tab.path}.{k.name}" for k in tab.keys())
+            yield from walk([e for e in tab.entries if isinstance(e, Table)])
+    schema_paths = set(walk(SCHEMA.tables))
+    assert "pressure.cycle.n1" in schema_paths and len(schema_paths) > 60
+    assert schema_paths - {FILE_KEY} == paths
     bore = SCHEMA.describe("engine.bore_mm", lang)
     assert 'id="engine.bore_mm"' in html and bore["label"] in html and bore["help"] in html
     assert "(0" not in bore["range"] or bore["range"] in html
