@@ -43,8 +43,8 @@ def free_port() -> int:
 
 
 def start_server(port: int, workers: int):
-    code = ("import uvicorn, web; uvicorn.run(web.create_app(workers=%d), host='127.0.0.1', "
-            "port=%d, log_level='warning')" % (workers, port))
+    code = ("import uvicorn, web; uvicorn.run(web.create_app(workers=%d, render_workers=%d), "
+            "host='127.0.0.1', port=%d, log_level='warning')" % (workers, workers, port))
     proc = subprocess.Popen([sys.executable, "-c", code], cwd=ROOT)
     url = f"http://127.0.0.1:{port}"
     for _ in range(300):
@@ -136,8 +136,9 @@ def main(argv=None):
         same = sum(j["forces"] == expected_forces(j["spec"]) for j in jobs)
         pages = sorted(j["page"] for j in jobs)
         alls = sorted(j["all"] for j in jobs)
-        print(f"{args.sessions} sessions at once ({args.workers} compute threads, one "
-              f"drawing thread): wall {wall:.1f} s; results page min/median/max "
+        print(f"{args.sessions} sessions at once ({args.workers} compute threads, "
+              f"{args.workers} drawing processes): wall {wall:.1f} s; results page "
+              f"min/median/max "
               f"{pages[0]:.2f}/{statistics.median(pages):.2f}/{pages[-1]:.2f} s; all files "
               f"{alls[0]:.1f}/{statistics.median(alls):.1f}/{alls[-1]:.1f} s; "
               f"{wall / args.sessions:.2f} s per job; forces.csv equal to the CLI's: "

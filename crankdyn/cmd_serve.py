@@ -23,7 +23,8 @@ def add_parser(subparsers):
     p.add_argument("--port", type=int, default=8000, help="port (default 8000)")
     p.add_argument("--open", action="store_true", help="open the page in the browser")
     p.add_argument("--workers", type=int, default=2, metavar="N",
-                   help="computations at once (threads; default 2)")
+                   help="computations at once (threads) and processes drawing the "
+                        "reports (default 2)")
     p.set_defaults(func=run)
 
 
@@ -47,6 +48,7 @@ def run(args) -> int:
         import webbrowser
 
         threading.Timer(1.0, webbrowser.open, (url,)).start()
-    uvicorn.run(create_app(workers=max(1, args.workers)), host=args.host, port=args.port,
+    n = max(1, args.workers)
+    uvicorn.run(create_app(workers=n, render_workers=n), host=args.host, port=args.port,
                 log_level="warning")
     return 0

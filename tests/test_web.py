@@ -38,10 +38,10 @@ def app(tmp_path_factory):
 
 @pytest.fixture(autouse=True)
 def reports_written(app):
-    """After each test, every report it asked for is written: matplotlib draws in one
-    thread at a time, and a CLI run of the next test must not draw beside it."""
+    """After each test, every report it asked for is written (its files gone from the
+    machine before the next test asks for more)."""
     yield
-    app.app.state.render.submit(lambda: None).result(120)
+    app.app.state.render.drain(300)
 
 
 def client(app, lang="en"):

@@ -31,7 +31,7 @@ from .jobs import Busy, JobPool
 from .balance_page import BalancePage
 from .dynamics_page import DynamicsPage
 from .linkage_page import LinkagePage
-from .pages import PageState, Run, spec_toml
+from .pages import PageState, Run, render_job, spec_toml
 from .sessions import COOKIE, SessionStore
 
 __all__ = ["build_app", "UPLOAD_LIMIT", "LANG_COOKIE"]
@@ -109,7 +109,7 @@ def _page_html(title, message, lang) -> str:
 # ----------------------------------------------------------------------------- the app
 def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: float = 3600.0,
               workers: int = 2, queue: int = 32, timeout: float = 120.0,
-              max_sessions: int = 500):
+              max_sessions: int = 500, render_workers: int = 2):
     """The ``crankdyn serve`` app.
 
     Parameters
@@ -122,7 +122,10 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
     idle_seconds : float
         A session idle this long is removed with its files.
     workers, queue : int
-        Computations at once, and waiting beyond them (more are refused with a message).
+        Computations at once (threads), and waiting beyond them (more are refused with a
+        message).
+    render_workers : int
+        Processes drawing and writing the reports.
     timeout : float
         Longest wait of a page for its computation [s].
     max_sessions : int
@@ -130,10 +133,10 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
     """
     store = SessionStore(root, idle_seconds, max_sessions)
     pool = JobPool(workers, queue, timeout)
-    # matplotlib draws one figure at a time (its text layout is not thread-safe: two
-    # reports drawn at once broke each other's mathtext), so the reports are written by
-    # one thread, in turn; a page waits for its files longer than for its numbers
-    render = JobPool(1, 2 * queue, 4 * timeout)
+    # the reports are drawn and written in processes: matplotlib's text layout is not
+    # thread-safe (two reports drawn by two threads broke each other's mathtext), and
+    # processes use every core; a page waits for its files longer than for its numbers
+    render = JobPool(render_workers, 2 * queue, 4 * timeout, processes=True)
     # a class's batch of reports draws in processes of its own (engine.variants); one
     # batch at a time, a few waiting
     batches = JobPool(1, 4, 3600.0)
@@ -381,7 +384,8 @@ def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of,
         run = Run(number=number, folder=folder, report=report, spec=data, lang=lang,
                   pressure=pressure, options=options)
         try:
-            run.write_future = render.submit(kind.write, run)
+            run.write_future = render.submit(render_job, kind, number, folder, data, lang,
+                                             pressure, options)
         except Busy:
             return error_page(request, session, lang, texts(lang)("web.run.busy"), 503)
         with st.lock:

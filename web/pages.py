@@ -13,7 +13,8 @@ import zipfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
-__all__ = ["PageState", "Run", "Kind", "table_rows", "spec_toml", "finish_files", "PAGE_ROWS"]
+__all__ = ["PageState", "Run", "Kind", "table_rows", "spec_toml", "finish_files", "PAGE_ROWS",
+           "render_job"]
 
 
 @dataclass
@@ -128,3 +129,13 @@ def finish_files(run: Run, name: str, files: dict) -> dict:
             z.write(path, arcname=fname)
     files[zpath.name] = zpath
     return files
+
+
+def render_job(kind: Kind, number: int, folder: Path, spec: dict, lang: str, pressure,
+               options: dict) -> dict:
+    """Write one run's report in a drawing process (:mod:`web.jobs`, "spawn"): the study
+    computed again from its spec (cheap beside the drawing; a report does not cross
+    processes), then :meth:`Kind.write`; ``{file name: path}``."""
+    report = kind.compute(spec, folder / "input", pressure, options)
+    return kind.write(Run(number=number, folder=folder, report=report, spec=spec, lang=lang,
+                          pressure=pressure, options=options))
