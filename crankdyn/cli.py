@@ -19,7 +19,7 @@ import sys
 from . import __version__
 
 #: Subcommand modules, in the order ``--help`` lists them.
-SUBCOMMANDS = ("engine", "linkage", "synth", "dynamics", "balance", "torsion", "check")
+SUBCOMMANDS = ("engine", "linkage", "synth", "dynamics", "balance", "torsion", "check", "serve")
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -13,7 +13,7 @@ from crankbase import texts as T
 from crankbase.errors import SpecError
 
 ROOT = Path(__file__).resolve().parent.parent
-LIBRARIES = ("crankbase", "linkage", "engine", "dynamics", "plans", "crankdyn")
+LIBRARIES = ("crankbase", "linkage", "engine", "dynamics", "plans", "crankdyn", "web")
 
 
 def _entries(lang):
@@ -134,7 +134,7 @@ def test_every_key_the_code_uses_is_in_the_catalogue():
     known = T.keys("en")
     missing = []
     for pkg in LIBRARIES + ("templates",):
-        for path in (ROOT / pkg).rglob("*.py"):
+        for path in [*(ROOT / pkg).rglob("*.py"), *(ROOT / pkg).rglob("*.html")]:
             for key in _CALL.findall(path.read_text(encoding="utf-8")):
                 if key not in known:
                     missing.append(f"{path.relative_to(ROOT)}: {key}")

@@ -1,0 +1,717 @@
+"""``crankdyn serve`` through Starlette's TestClient: every page, the form's problems next
+to their fields, downloads equal to the CLI's files, sessions isolated, limits, a crash.
+
+The reference of every number is the CLI (``crankdyn engine``) on the same spec: the
+page computes through the same library calls, so its CSVs must be byte-identical and its
+workbook equal value for value.
+"""
+from __future__ import annotations
+
+import csv
+import html as htmllib
+import io
+import re
+import subprocess
+import sys
+import zipfile
+from pathlib import Path
+
+import pytest
+
+pytest.importorskip("starlette")  # the test extra installs it; a bare core install skips
+from starlette.testclient import TestClient  # noqa: E402
+
+from crankbase.resources import example_path  # noqa: E402
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+@pytest.fixture(scope="module")
+def app(tmp_path_factory):
+    import web
+
+    root = tmp_path_factory.mktemp("webroot")
+    a = web.create_app(root=root, upload_limit=300_000, workers=2)
+    a.root = root
+    return a
+
+
+@pytest.fixture(autouse=True)
+def reports_written(app):
+    """After each test, every report it asked for is written (its files gone from the
+    machine before the next test asks for more)."""
+    yield
+    app.app.state.render.drain(300)
+
+
+def client(app, lang="en"):
+    c = TestClient(app)
+    c.get(f"/engine?lang={lang}")
+    return c
+
+
+def field_value(html, path):
+    m = re.search(rf'id="{re.escape(path)}" value="([^"]*)"', html)
+    return m.group(1) if m else None
+
+
+def form_values(html):
+    """Every field of a page's form as the page shows it (what a browser posts)."""
+    vals = dict(re.findall(r'<input type="text" name="([^"]+)" id="[^"]+" value="([^"]*)"', html))
+    for name, body in re.findall(r'<textarea name="([^"]+)"[^>]*>([^<]*)</textarea>', html):
+        vals[name] = body
+    for name, body in re.findall(r'<select name="([^"]+)"[^>]*>(.*?)</select>', html, re.S):
+        sel = re.search(r'<option value="([^"]*)" selected>', body)
+        vals[name] = sel.group(1) if sel else ""
+    src = re.search(r'name="pressure_source" value="(\w+)" id="source-\w+" checked', html)
+    if src:
+        vals["pressure_source"] = src.group(1)
+    return {k: htmllib.unescape(v) for k, v in vals.items()}
+
+
+def cli_report(spec, out, lang="en"):
+    from crankdyn.cli import main
+
+    assert main(["engine", str(spec), "-o", str(out), "--lang", lang]) == 0
+    return out
+
+
+def page_table(html, table_id="table2"):
+    body = re.search(rf'<table id="{table_id}".*?</table>', html, re.S).group(0)
+    head = re.findall(r"<th>([^<]*)</th>", body)
+    rows = [re.findall(r"<td>([^<]*)</td>", r) for r in re.findall(r"<tr>(.*?)</tr>", body, re.S)]
+    return head, [r for r in rows if r]
+
+
+def workbook_values(path):
+    import openpyxl
+
+    wb = openpyxl.load_workbook(path)
+    return {ws.title: [[c.value for c in row] for row in ws.iter_rows()] for ws in wb}
+
+
+def run_petrol(c, speed="4000.0"):
+    c.post("/engine/example", data={"example": "petrol"})
+    vals = form_values(c.get("/engine").text)
+    assert vals["engine.speed_rpm"] == "5400.0"
+    vals["engine.speed_rpm"] = speed
+    r = c.post("/engine/run", data=vals)
+    assert r.status_code == 200 and 'id="results"' in r.text, r.text[:2000]
+    return r.text
+
+
+def links(html):
+    return re.findall(r'href="(/engine/run/\d+/[^"]+)"', html)
+
+
+# ----------------------------------------------------------------------------- pages
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_the_engine_page_shows_every_schema_key_with_its_words(app, lang):
+    from engine.schema import SCHEMA
+    from web.engine_form import FILE_KEY, sections
+
+    c = client(app, lang)
+    html = c.get("/engine").text
+    secs = sections(lang)
+    paths = {f.path for s in secs for f in s.fields}
+    # every key of the engine schema is a field (the file key is the upload)
+    from crankbase.schema import ArrayOfTables, Table
+
+    def walk(tables):
+        for tab in tables:
+            if isinstance(tab, ArrayOfTables):
+                yield tab.path                      # one field: a line per table
+                continue
+            yield from (f"{tab.path}.{k.name}" for k in tab.keys())
+            yield from walk([e for e in tab.entries if isinstance(e, Table)])
+    schema_paths = set(walk(SCHEMA.tables))
+    assert "pressure.cycle.n1" in schema_paths and len(schema_paths) > 60
+    assert schema_paths - {FILE_KEY} == paths
+    bore = SCHEMA.describe("engine.bore_mm", lang)
+    assert 'id="engine.bore_mm"' in html and bore["label"] in html and bore["help"] in html
+    assert "(0" not in bore["range"] or bore["range"] in html
+    assert bore["unit"] and bore["unit"] in html
+    for p in ("engine.speed_rpm", "pressure.cycle.n1", "table.force_scale_N_per_mm",
+              "flywheel.delta", "balance.counterweight", "bearings.wear_half_angle_deg",
+              "rod.model", "masses.rod_kg_m2"):
+        assert p in paths and f'id="{p}"' in html, p
+    assert FILE_KEY not in paths
+    n1 = SCHEMA.describe("pressure.cycle.n1", lang)
+    assert n1["range"] == "(1, 2)" and "(1, 2)" in html
+    if lang == "ru":
+        assert "Рассчитать" in html and "Compute" not in html and "Diagrams" not in html
+    else:
+        assert not re.search("[А-Яа-яЁё]", html), re.findall("[А-Яа-яЁё]+", html)[:5]
+
+
+def test_home_redirects_to_the_engine_page(app):
+    r = client(app).get("/", follow_redirects=False)
+    assert r.status_code == 307 and r.headers["location"] == "/engine"
+
+
+@pytest.mark.parametrize("name,want", [("petrol", "petrol-vaz2106"), ("diesel", "diesel-d240"),
+                                        ("six", "bmw"), ("v8", "kamaz")])
+def test_each_example_fills_the_form(app, name, want):
+    import tomllib
+
+    from web.engine_page import EXAMPLES
+
+    c = client(app)
+    html = c.post("/engine/example", data={"example": name}).text
+    assert want in field_value(html, "engine.name").lower()
+    spec = tomllib.loads(example_path(EXAMPLES[name]).read_text(encoding="utf-8"))
+    assert field_value(html, "engine.bore_mm") == repr(spec["engine"]["bore_mm"])
+    assert field_value(html, "engine.speed_rpm") == repr(spec["engine"]["speed_rpm"])
+    source = "file" if "file" in spec["pressure"] else "cycle"
+    assert f'value="{source}" id="source-{source}" checked' in html
+
+
+# ----------------------------------------------------------------------------- problems
+@pytest.mark.parametrize("lang,words", [("en", "must be > 0"), ("ru", "должно быть > 0")])
+def test_a_bad_bore_is_named_next_to_its_field_and_nothing_is_computed(app, lang, words):
+    c = client(app, lang)
+    c.post("/engine/example", data={"example": "petrol"})
+    vals = form_values(c.get("/engine").text)
+    vals["engine.bore_mm"] = "-5"
+    vals["pressure.cycle.n1"] = "2.5"          # a second problem, shown at once
+    html = c.post("/engine/run", data=vals).text
+    err = re.search(r'<p class="problem" id="err-engine.bore_mm">([^<]*)</p>', html)
+    assert err, html[:3000]
+    msg = htmllib.unescape(err.group(1))
+    assert "engine.bore_mm" in msg and "-5" in msg and words in msg
+    # it stands inside the bore's own field block
+    block = re.search(r'<div class="field bad" id="field-engine.bore_mm">(.*?)</div>', html, re.S)
+    assert block and "err-engine.bore_mm" in block.group(1)
+    n1 = htmllib.unescape(re.search(r'id="err-pressure.cycle.n1">([^<]*)<', html).group(1))
+    assert "pressure.cycle.n1" in n1 and "2.5" in n1 and "> 1" in n1 and "< 2" in n1
+    assert 'id="results"' not in html
+    assert field_value(html, "engine.bore_mm") == "-5"        # the form keeps what was typed
+
+
+def test_text_in_a_number_field_and_a_missing_key_are_the_library_s_problems(app):
+    c = client(app)
+    c.post("/engine/example", data={"example": "petrol"})
+    vals = form_values(c.get("/engine").text)
+    vals["engine.speed_rpm"] = "fast"
+    vals["engine.stroke_mm"] = ""
+    html = c.post("/engine/run", data=vals).text
+    assert "must be a number, got &#39;fast&#39;" in html
+    assert re.search(r'id="err-engine.stroke_mm">engine.stroke_mm: missing', html)
+    assert 'id="results"' not in html
+
+
+def test_a_bad_counterweight_row_is_shown_at_the_rows_field(app):
+    c = client(app)
+    c.post("/engine/example", data={"example": "petrol"})
+    vals = form_values(c.get("/engine").text)
+    vals["balance.counterweights"] = ""
+    vals["balance.counterweight"] = "0, 21.3, 180\n95, -1, 0"
+    html = c.post("/engine/run", data=vals).text
+    err = re.search(r'id="err-balance.counterweight">([^<]*)<', html)
+    assert err and "balance.counterweight[1].mr_kg_mm" in err.group(1), html[-4000:]
+
+
+# ----------------------------------------------------------------------------- results
+def test_table2_on_the_page_and_the_downloads_equal_the_cli_files(app, tmp_path):
+    c = client(app)
+    html = run_petrol(c, "4000.0")
+    urls = links(html)
+    got = tmp_path / "web"
+    got.mkdir()
+    for u in urls:
+        r = c.get(u)
+        assert r.status_code == 200, u
+        (got / u.rsplit("/", 1)[1]).write_bytes(r.content)
+    toml = got / "petrol-vaz2106.toml"
+    assert 'speed_rpm = 4000.0' in toml.read_text(encoding="utf-8")
+    cli = cli_report(toml, tmp_path / "cli")              # the same run from the CLI
+    csvs = sorted(p.name for p in cli.glob("*.csv"))
+    assert len(csvs) == 5
+    for name in csvs:
+        assert (got / name).read_bytes() == (cli / name).read_bytes(), name
+    assert workbook_values(got / "petrol-vaz2106.xlsx") == \
+        workbook_values(cli / "petrol-vaz2106.xlsx")
+    # Table 2 on the page: the CSV's own text, every row (the page scrolls)
+    head, rows = page_table(html)
+    with open(cli / "petrol-vaz2106_forces.csv", newline="") as fh:
+        want = list(csv.reader(fh))
+    assert head == want[0] and rows == want[1:]
+    # the speed was used: the inertia force differs from the example's at 5400 rpm
+    base = cli_report(example_path("petrol_vaz2106.toml"), tmp_path / "base")
+    assert (base / "petrol-vaz2106_forces.csv").read_bytes() != \
+        (cli / "petrol-vaz2106_forces.csv").read_bytes()
+    # the summary and every figure
+    assert "n = 4000 rpm" in html
+    figs = re.findall(r'<img src="(/engine/run/\d+/[^"]+\.png)"', html)
+    assert len(figs) == 13
+    for u in figs:
+        r = c.get(u)
+        assert r.status_code == 200 and r.content[:8] == b"\x89PNG\r\n\x1a\n"
+    # the zip holds the whole report and the spec
+    z = zipfile.ZipFile(io.BytesIO(c.get(next(u for u in urls if u.endswith(".zip"))).content))
+    names = set(z.namelist())
+    assert {"petrol-vaz2106.toml", "petrol-vaz2106.xlsx", *csvs} <= names
+    assert len([n for n in names if n.endswith(".png")]) == 13
+    assert z.read("petrol-vaz2106_torque.csv") == (cli / "petrol-vaz2106_torque.csv").read_bytes()
+
+
+def test_an_uploaded_spec_with_its_pressure_file_equals_the_cli(app, tmp_path):
+    """The diesel example as a student would upload it (the TOML naming its CSV): same
+    CSVs as the CLI on the bundled file; the spec and pressure file downloaded from the
+    page repeat the run from the command line."""
+    c = client(app)
+    spec = example_path("diesel_d240.toml")
+    pcsv = example_path("diesel_d240_indicator.csv")
+    r = c.post("/engine/upload", files={
+        "spec": ("my spec.toml", spec.read_bytes(), "application/toml"),
+        "pressure": ("../../etc/diesel_d240_indicator.csv", pcsv.read_bytes(), "text/csv")})
+    assert r.status_code == 200 and 'id="results"' in r.text, r.text[:3000]
+    urls = links(r.text)
+    got = {u.rsplit("/", 1)[1]: c.get(u).content for u in urls}   # waits for the writing
+    # (matplotlib draws in one thread at a time: the CLI runs after the page's report)
+    cli = cli_report(spec, tmp_path / "cli")
+    for name in sorted(p.name for p in cli.glob("*.csv")):
+        assert got[name] == (cli / name).read_bytes(), name
+    # the downloaded spec + pressure file (server names) repeat the run
+    again = tmp_path / "again"
+    again.mkdir()
+    for u in urls:
+        if u.endswith((".toml", "pressure.csv")):
+            (again / u.rsplit("/", 1)[1]).write_bytes(c.get(u).content)
+    assert (again / "pressure.csv").read_bytes() == pcsv.read_bytes()
+    out = cli_report(again / "diesel-d240.toml", tmp_path / "cli2")
+    for name in sorted(p.name for p in cli.glob("*.csv")):
+        assert (out / name).read_bytes() == (cli / name).read_bytes()
+    # no name from the user reached the disk
+    assert not list(Path(app.root).rglob("my spec*")) and \
+        not list(Path(app.root).rglob("diesel_d240_indicator*"))
+
+
+def test_an_upload_naming_a_pressure_file_it_did_not_send_is_a_problem(app):
+    c = client(app)
+    r = c.post("/engine/upload", files={
+        "spec": ("s.toml", example_path("diesel_d240.toml").read_bytes(), "text/plain")})
+    err = re.search(r'id="err-pressure.file">([^<]*)<', r.text)
+    assert err and "diesel_d240_indicator.csv" in err.group(1)
+    assert 'id="results"' not in r.text
+
+
+def test_an_upload_that_is_not_toml_or_has_unknown_keys(app):
+    c = client(app, "ru")
+    r = c.post("/engine/upload", files={"spec": ("s.toml", b"[engine\nbore = ", "text/plain")})
+    assert "не корректный TOML" in r.text and 'id="results"' not in r.text
+    text = example_path("petrol_vaz2106.toml").read_text(encoding="utf-8")
+    bad = text.replace("bore_mm = 79.0", "bore = 79.0")
+    r = c.post("/engine/upload", files={"spec": ("s.toml", bad.encode(), "text/plain")})
+    assert "engine.bore" in r.text and "bore_mm" in r.text and 'id="results"' not in r.text
+
+
+# ----------------------------------------------------------------------------- safety
+def test_two_sessions_do_not_see_each_other_s_files(app):
+    a, b = client(app), client(app)
+    ha = run_petrol(a, "3000.0")
+    b.post("/engine/example", data={"example": "diesel"})
+    hb = b.post("/engine/run", data=form_values(b.get("/engine").text)).text
+    assert "petrol-vaz2106" in ha and "diesel-d240" in hb
+    assert "diesel-d240" not in a.get("/engine").text
+    for u in links(hb):
+        assert a.get(u).status_code == 404                  # b's file, a's cookie
+    for u in links(ha):
+        assert b.get(u).status_code == 404
+        assert a.get(u).status_code == 200
+    sa = app.app.state.store.get(a.cookies["crankdyn_session"])
+    sb = app.app.state.store.get(b.cookies["crankdyn_session"])
+    assert sa.folder != sb.folder and sa.folder.parent == sb.folder.parent == Path(app.root)
+    assert not list(sa.folder.rglob("diesel*")) and not list(sb.folder.rglob("petrol*"))
+
+
+def test_a_forged_session_id_gets_a_new_session_and_no_path_is_used(app):
+    c = TestClient(app, cookies={"crankdyn_session": "../../etc"})
+    r = c.get("/engine")
+    assert r.status_code == 200
+    sid = re.search(r"crankdyn_session=([^;]+)", r.headers["set-cookie"]).group(1)
+    assert sid != "../../etc" and app.app.state.store.get(sid) is not None
+    assert c.get("/engine/run/1/..%2F..%2Fetc%2Fpasswd").status_code == 404
+
+
+def test_an_upload_over_the_limit_gets_a_clear_message(app):
+    for lang, words in (("en", "larger than the limit of 0.3 MB"), ("ru", "больше предела 0.3 МБ")):
+        c = client(app, lang)
+        r = c.post("/engine/upload", files={"spec": ("s.toml", b"#" * 400_000, "text/plain")})
+        assert r.status_code == 413 and words in r.text
+        assert c.get("/engine").status_code == 200             # the server goes on
+
+
+def test_a_crashing_job_shows_an_error_in_its_session_and_the_server_goes_on(app, monkeypatch):
+    import engine
+
+    real = engine.run_study
+
+    def boom(*a, **k):
+        raise ZeroDivisionError("a bug")
+    monkeypatch.setattr(engine, "run_study", boom)
+    c = client(app)
+    c.post("/engine/example", data={"example": "petrol"})
+    r = c.post("/engine/run", data=form_values(c.get("/engine").text))
+    assert r.status_code == 500 and "ZeroDivisionError" in r.text and "internal error" in r.text
+    monkeypatch.setattr(engine, "run_study", real)
+    other = client(app)
+    assert "petrol-vaz2106" in run_petrol(other)
+    assert 'id="results"' not in c.get("/engine").text        # the crashed one: no results
+
+
+def test_idle_sessions_and_shutdown_remove_their_folders(tmp_path):
+    import time
+
+    import web
+
+    a = web.create_app(root=tmp_path / "root", idle_seconds=60)
+    with TestClient(a) as c:
+        c.get("/engine")
+        c.post("/engine/example", data={"example": "diesel"})
+        store = a.app.state.store
+        s = store.get(c.cookies["crankdyn_session"])
+        assert s.folder.is_dir()
+        assert store.sweep(time.monotonic() + 30) == 0 and s.folder.is_dir()
+        assert store.sweep(time.monotonic() + 120) == 1 and not s.folder.exists()
+        c.get("/engine")                                         # a new session
+        assert len(store) == 1
+    assert not (tmp_path / "root").exists()                      # shutdown
+
+
+def test_the_job_pool_refuses_beyond_its_bound():
+    import threading
+
+    from web.jobs import Busy, JobPool
+
+    pool = JobPool(workers=1, queue=1)
+    gate = threading.Event()
+    f1, f2 = pool.submit(gate.wait), pool.submit(gate.wait)
+    with pytest.raises(Busy):
+        pool.submit(gate.wait)
+    gate.set()
+    f1.result(5), f2.result(5)
+    pool.submit(lambda: 1).result(5)
+    pool.close()
+
+
+def test_the_page_loads_without_the_heavy_libraries():
+    code = ("import sys, web\nfrom starlette.testclient import TestClient\n"
+            "c = TestClient(web.create_app())\nassert c.get('/engine').status_code == 200\n"
+            "c.post('/engine/example', data={'example': 'petrol'})\n"
+            "print(sorted({m.split('.')[0] for m in sys.modules} & {'matplotlib', 'openpyxl', 'scipy'}))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         cwd=ROOT, check=True)
+    assert out.stdout.strip().splitlines()[-1] == "[]"
+    mods = subprocess.run([sys.executable, "-c", "import engine, web, sys; print("
+                           "sorted(m for m in sys.modules if m.split('.')[0] in "
+                           "('starlette', 'jinja2', 'uvicorn', 'web')))"],
+                          capture_output=True, text=True, cwd=ROOT, check=True).stdout
+    assert mods.strip() == "['web']"
+
+
+def test_serve_without_the_web_extra_says_how_to_install_it(monkeypatch, capsys):
+    from crankdyn.cli import main
+
+    monkeypatch.setitem(sys.modules, "uvicorn", None)
+    assert main(["serve", "--port", "9"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and 'pip install "crankdyn[web]"' in err[0]
+
+
+def test_form_texts_round_trip_to_the_spec_dict():
+    """A spec read into the form and posted back is the same dict (floats by repr)."""
+    import tomllib
+
+    from web.engine_form import spec_from_values, values_from_spec
+
+    for name in ("petrol_vaz2106.toml", "petrol_bmw_m54.toml", "diesel_kamaz740.toml"):
+        spec = tomllib.loads(example_path(name).read_text(encoding="utf-8"))
+        values, source = values_from_spec(spec)
+        assert spec_from_values(values, source) == spec, name
+    d = tomllib.loads(example_path("diesel_d240.toml").read_text(encoding="utf-8"))
+    values, source = values_from_spec(d)
+    assert source == "file"
+    back = spec_from_values(values, source, "pressure.csv")
+    d["pressure"]["file"] = "pressure.csv"
+    assert back == d
+
+
+def test_crankdyn_serve_starts_the_app_and_prints_its_address():
+    import socket
+    import time
+    import urllib.request
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    proc = subprocess.Popen([sys.executable, "-m", "crankdyn", "serve", "--port", str(port)],
+                            cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True)
+    try:
+        line = proc.stdout.readline()
+        assert line.startswith(f"crankdyn serve: http://127.0.0.1:{port}/")
+        for _ in range(100):
+            try:
+                with urllib.request.urlopen(f"http://127.0.0.1:{port}/engine?lang=ru",
+                                            timeout=5) as r:
+                    assert r.status == 200 and "Двигатель" in r.read().decode("utf-8")
+                    break
+            except OSError:
+                time.sleep(0.1)
+        else:
+            pytest.fail("crankdyn serve did not answer")
+    finally:
+        proc.terminate()
+        proc.wait(30)
+        proc.stdout.close()
+        proc.stderr.close()
+
+
+def test_the_bearing_and_drawing_options_add_their_tables_figures_and_pdfs(app):
+    c = client(app)
+    c.post("/engine/example", data={"example": "petrol"})
+    vals = form_values(c.get("/engine").text)
+    html = c.post("/engine/run", data={**vals, "bearings": "on", "drawing": "on"}).text
+    assert 'id="results"' in html
+    urls = links(html)
+    for name in ("crankpins.csv", "journals.csv", "journal_torques.csv", "wear.csv"):
+        assert any(u.endswith("_" + name) for u in urls), name
+    figs = re.findall(r'<img src="(/engine/run/\d+/[^"]+\.png)"', html)
+    assert len(figs) > 13 and any("wear" in u for u in figs)
+    pdfs = [u for u in urls if u.endswith(".pdf")]
+    assert len(pdfs) >= 3 and all("_drawing_" in u for u in pdfs)
+    r = c.get(pdfs[0])
+    assert r.status_code == 200 and r.content[:5] == b"%PDF-"
+    assert 'id="opt-bearings" checked' in html
+
+
+# ----------------------------------------------------------------------------- linkage page
+def test_the_linkage_page_runs_the_ratchet_like_the_cli(app, tmp_path):
+    """The ratchet drive with a new crank speed: every CSV byte for byte and the workbook
+    value for value equal to ``crankdyn linkage`` on the downloaded spec."""
+    from crankdyn.cli import main
+
+    c = client(app)
+    html = c.get("/linkage").text
+    assert 'id="mechanism.crank"' in html and 'id="links.coupler.points"' in html
+    c.post("/linkage/example", data={"example": "ratchet"})
+    vals = form_values(c.get("/linkage").text)
+    assert vals["mechanism.omega_rad_s"] == "17.0" and vals["links.coupler.points"] == "E = 0.365, 0.0"
+    assert vals["load"].startswith('link = "rocker", resistance_Nm = 1500.0')
+    vals["mechanism.omega_rad_s"] = "12.5"
+    vals["step"] = "2"
+    r = c.post("/linkage/run", data=vals)
+    assert 'id="results"' in r.text, r.text[:3000]
+    urls = re.findall(r'href="(/linkage/run/\d+/[^"]+)"', r.text)
+    got = {u.rsplit("/", 1)[1]: c.get(u).content for u in urls}
+    spec = tmp_path / "ratchet-drive.toml"
+    spec.write_bytes(got["ratchet-drive.toml"])
+    assert "omega_rad_s = 12.5" in spec.read_text(encoding="utf-8")
+    out = tmp_path / "cli"
+    assert main(["linkage", str(spec), "-o", str(out), "--lang", "en", "--step", "2"]) == 0
+    for name in ("ratchet-drive_kinematics.csv", "ratchet-drive_forces.csv"):
+        assert got[name] == (out / name).read_bytes(), name
+    (tmp_path / "w.xlsx").write_bytes(got["ratchet-drive.xlsx"])
+    assert workbook_values(tmp_path / "w.xlsx") == workbook_values(out / "ratchet-drive.xlsx")
+    head, rows = page_table(r.text)
+    with open(out / "ratchet-drive_kinematics.csv", newline="") as fh:
+        assert [head, *rows] == list(csv.reader(fh))
+    figs = re.findall(r'<img src="(/linkage/run/\d+/[^"]+\.png)"', r.text)
+    assert len(figs) == 5 and all(c.get(u).content[:4] == b"\x89PNG" for u in figs)
+    base = tmp_path / "base"
+    assert main(["linkage", "--example", "ratchet", "-o", str(base), "--lang", "en"]) == 0
+    assert (base / "ratchet-drive_forces.csv").read_bytes() != got["ratchet-drive_forces.csv"]
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_linkage_problems_stand_at_their_fields(app, lang):
+    c = client(app, lang)
+    c.post("/linkage/example", data={"example": "press"})
+    vals = form_values(c.get("/linkage").text)
+    vals["mechanism.crank"] = "0"
+    vals["links.slider.mass_kg"] = "-35"
+    vals["step"] = "45"
+    html = c.post("/linkage/run", data=vals).text
+    assert 'id="results"' not in html
+    if "err-step" in html:                 # a bad step is refused before the spec is read
+        assert "45" in htmllib.unescape(re.search(r'id="err-step">([^<]*)<', html).group(1))
+        vals["step"] = "1"
+        html = c.post("/linkage/run", data=vals).text
+    crank = htmllib.unescape(re.search(r'id="err-mechanism.crank">([^<]*)<', html).group(1))
+    assert "mechanism.crank" in crank and ("> 0" in crank)
+    mass = htmllib.unescape(re.search(r'id="err-links.slider.mass_kg">([^<]*)<', html).group(1))
+    assert "links.slider.mass_kg" in mass and "-35" in mass
+    assert 'id="results"' not in html
+
+
+# ----------------------------------------------------------------------------- dynamics page
+@pytest.mark.parametrize("example,key,value", [("flywheel", "machine.J_red_kgm2", "0.3"),
+                                               ("hoist", "dynamics.motor_start_torque_Nm",
+                                                "4500.0")])
+def test_the_dynamics_page_equals_crankdyn_dynamics(app, tmp_path, example, key, value):
+    from crankdyn.cli import main
+
+    c = client(app)
+    c.post("/dynamics/example", data={"example": example})
+    vals = form_values(c.get("/dynamics").text)
+    assert vals[key] != value
+    vals[key] = value
+    r = c.post("/dynamics/run", data=vals)
+    assert 'id="results"' in r.text, r.text[:3000]
+    urls = re.findall(r'(?:href|src)="(/dynamics/run/\d+/[^"]+)"', r.text)
+    got = {u.rsplit("/", 1)[1]: c.get(u).content for u in urls}
+    toml = next(n for n in got if n.endswith(".toml"))
+    spec = tmp_path / toml
+    spec.write_bytes(got[toml])
+    out = tmp_path / "cli"
+    assert main(["dynamics", str(spec), "-o", str(out), "--lang", "en"]) == 0
+    csvs = sorted(p.name for p in out.glob("*.csv"))
+    assert csvs and all(got[n] == (out / n).read_bytes() for n in csvs), csvs
+    xlsx = next(p.name for p in out.glob("*.xlsx"))
+    (tmp_path / "w.xlsx").write_bytes(got[xlsx])
+    assert workbook_values(tmp_path / "w.xlsx") == workbook_values(out / xlsx)
+    pngs = sorted(p.name for p in out.glob("*.png"))
+    assert pngs and all(got[n][:4] == b"\x89PNG" for n in pngs)
+    head, rows = page_table(r.text)
+    with open(next(out.glob("*_motion.csv")), newline="") as fh:
+        want = list(csv.reader(fh))
+    from web.pages import PAGE_ROWS
+
+    assert head == want[0] and rows == want[1:PAGE_ROWS + 1]       # the first rows
+    if len(want) - 1 > PAGE_ROWS:
+        assert f"The first {PAGE_ROWS} of {len(want) - 1} rows" in r.text
+
+
+@pytest.mark.parametrize("lang,words", [("en", "must be > 0 and < 1"),
+                                        ("ru", "должно быть > 0 и < 1")])
+def test_a_bad_delta_is_named_at_its_field(app, lang, words):
+    c = client(app, lang)
+    c.post("/dynamics/example", data={"example": "flywheel"})
+    vals = form_values(c.get("/dynamics").text)
+    vals["dynamics.delta"] = "2"
+    html = c.post("/dynamics/run", data=vals).text
+    err = htmllib.unescape(re.search(r'id="err-dynamics.delta">([^<]*)<', html).group(1))
+    assert "dynamics.delta" in err and words in err
+    assert 'id="results"' not in html
+
+
+# ----------------------------------------------------------------------------- balance page
+def test_the_balance_page_equals_crankdyn_balance(app, tmp_path):
+    """The textbook's two-plane rotor (example 11-1: plane I 285.60 g·mm at 53.54°) with
+    its second mass moved: the page's CSVs equal ``crankdyn balance`` on its spec."""
+    from crankdyn.cli import main
+
+    c = client(app)
+    c.post("/balance/example", data={"example": "rotor"})
+    vals = form_values(c.get("/balance").text)
+    assert vals["rotor.mass"].splitlines() == ["mr_gmm = 90, angle_deg = 270, z_mm = 100",
+                                               "mr_gmm = 600, angle_deg = 45, z_mm = 420"]
+    r = c.post("/balance/run", data=vals)
+    assert 'id="results"' in r.text, r.text[:3000]
+    head, rows = page_table(r.text)
+    row = dict(zip(head, rows[0]))
+    assert round(float(row["mr_gmm"]), 2) == 285.60 and round(float(row["angle_deg"]), 2) == 53.54
+    vals["rotor.mass"] = vals["rotor.mass"].replace("z_mm = 420", "z_mm = 380")
+    r = c.post("/balance/run", data=vals)
+    urls = re.findall(r'(?:href|src)="(/balance/run/\d+/[^"]+)"', r.text)
+    got = {u.rsplit("/", 1)[1]: c.get(u).content for u in urls}
+    toml = next(n for n in got if n.endswith(".toml"))
+    (tmp_path / toml).write_bytes(got[toml])
+    out = tmp_path / "cli"
+    assert main(["balance", str(tmp_path / toml), "-o", str(out), "--lang", "en"]) == 0
+    csvs = sorted(p.name for p in out.glob("*.csv"))
+    assert len(csvs) == 2 and all(got[n] == (out / n).read_bytes() for n in csvs)
+    assert any(n.endswith("_rotor_polygons.png") for n in got)
+    head, rows = page_table(r.text)
+    assert round(float(dict(zip(head, rows[0]))["mr_gmm"]), 2) != 285.60
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_a_bad_rotor_mass_line_is_named_at_its_field(app, lang):
+    c = client(app, lang)
+    c.post("/balance/example", data={"example": "rotor"})
+    vals = form_values(c.get("/balance").text)
+    vals["rotor.mass"] = "mr_gmm = -90, angle_deg = 270, z_mm = 100\nangle_deg = 45"
+    html = c.post("/balance/run", data=vals).text
+    errs = [htmllib.unescape(m) for m in re.findall(r'id="err-rotor.mass[^"]*">([^<]*)<', html)]
+    assert any("rotor.mass[0].mr_gmm" in e and "-90" in e for e in errs), errs
+    assert 'id="results"' not in html
+
+
+def test_the_pages_of_one_session_keep_their_files_apart(app):
+    """One session on every page in turn: each page's run has its own folder, so one
+    page's new run neither removes nor lists another page's files."""
+    c = client(app)
+    pages = {"engine": "petrol", "linkage": "ratchet", "dynamics": "flywheel",
+             "balance": "rotor"}
+    shown = {}
+    for page, example in pages.items():
+        c.post(f"/{page}/example", data={"example": example})
+        html = c.post(f"/{page}/run", data=form_values(c.get(f"/{page}").text)).text
+        assert 'id="results"' in html, page
+        shown[page] = re.findall(rf'(?:href|src)="(/{page}/run/\d+/[^"]+)"', html)
+    for page, urls in shown.items():
+        for u in urls:
+            assert c.get(u).status_code == 200, u
+    figs = [u for u in shown["balance"] if u.endswith(".png")]
+    assert len(figs) == 1 and figs[0].endswith("_rotor_polygons.png")
+    s = app.app.state.store.get(c.cookies["crankdyn_session"])
+    assert sorted(p.name.split("-")[0] for p in s.folder.iterdir()) == sorted(pages)
+
+
+# ----------------------------------------------------------------------------- teacher page
+def test_the_teacher_page_runs_a_class_and_zips_every_report(app, tmp_path):
+    """Three variants of the petrol engine, one of them bad: the page's progress ends
+    with two reports and the bad row named; each report in the zip is what
+    ``crankdyn engine`` writes for the variant's own spec."""
+    import time
+
+    from crankdyn.cli import main
+
+    c = client(app)
+    assert "variants-form" in c.get("/teacher").text
+    table = ("variant,engine.bore_mm,engine.speed_rpm\n"
+             "v1,80,5000\nv2,-3,5000\nv3,82,4800\n").encode()
+    r = c.post("/teacher/variants", files={
+        "base": ("base.toml", example_path("petrol_vaz2106.toml").read_bytes(), "text/plain"),
+        "variants": ("class.csv", table, "text/csv")})
+    assert r.status_code == 200 and "batch-progress" in r.text
+    for _ in range(600):
+        html = c.get("/teacher").text
+        if 'id="batch-line"' in html or 'id="batch-error"' in html:
+            break
+        time.sleep(0.5)
+    line = htmllib.unescape(re.search(r'id="batch-line">([^<]*)<', html).group(1))
+    assert "3 variants: 2 written" in line and "1 failed (row 3)" in line
+    fails = htmllib.unescape(" ".join(re.findall(r'<li class="problem">([^<]*)</li>', html)))
+    assert "engine.bore_mm" in fails and "-3" in fails
+    assert 'value="3" max="3"' in html
+    zurl = re.search(r'href="(/teacher/batch/\d+/class_reports.zip)"', html).group(1)
+    z = zipfile.ZipFile(io.BytesIO(c.get(zurl).content))
+    names = z.namelist()
+    assert "variants_summary.csv" in names and "variants_errors.csv" in names
+    assert not any(n.startswith("v2/") for n in names)
+    spec = next(n for n in names if n.startswith("v3/") and n.endswith(".toml"))
+    (tmp_path / "v3").mkdir()
+    for n in names:
+        if n.startswith("v3/") and not n.endswith((".png", ".svg", ".xlsx")):
+            (tmp_path / n).write_bytes(z.read(n))
+    assert "bore_mm = 82" in (tmp_path / spec).read_text(encoding="utf-8")
+    out = tmp_path / "cli"
+    assert main(["engine", str(tmp_path / spec), "-o", str(out), "--lang", "ru"]) == 0
+    for p in out.glob("*.csv"):
+        assert z.read(f"v3/{p.name}") == p.read_bytes(), p.name
+
+
+def test_the_teacher_page_names_a_bad_table_and_too_many_variants(app):
+    c = client(app, "ru")
+    base = example_path("petrol_vaz2106.toml").read_bytes()
+    r = c.post("/teacher/variants", files={"base": ("b.toml", base, "text/plain"),
+                                           "variants": ("t.csv", b"bore\n1\n", "text/csv")})
+    assert "variant" in r.text and "batch-progress" not in r.text
+    assert "/input/" not in r.text                              # no server path shown
+    rows = "variant,engine.bore_mm\n" + "".join(f"v{i},80\n" for i in range(101))
+    r = c.post("/teacher/variants", files={"base": ("b.toml", base, "text/plain"),
+                                           "variants": ("t.csv", rows.encode(), "text/csv")})
+    assert "не более 100" in htmllib.unescape(r.text) and "batch-progress" not in r.text

@@ -1,0 +1,319 @@
+"""``crankdyn serve`` in a real browser: Debian's headless Chromium driven by Selenium.
+
+One server (uvicorn in a thread, on a free port of 127.0.0.1) and one browser for the
+module.  The browser loads the petrol example, changes the speed, computes, and the first
+rows of Table 2 on the page must be the CLI's ``forces.csv`` for the same spec; the
+workbook it downloads must equal the CLI's value for value; a bad bore is named next to
+its field.  Where the browser cannot start, the test fails: CI installs ``chromium`` and
+``chromium-driver`` (.ci/run).  With ``CRANKDYN_SCREENSHOTS=DIR`` the page's screenshots
+are kept in DIR (the README's, in docs/).
+"""
+from __future__ import annotations
+
+import csv
+import os
+import socket
+import threading
+import time
+import tomllib
+from pathlib import Path
+
+import pytest
+
+from crankbase.resources import example_path
+
+CHROMIUM = "/usr/bin/chromium"
+CHROMEDRIVER = "/usr/bin/chromedriver"
+SPEED = "4000.0"
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@pytest.fixture(scope="module")
+def server(tmp_path_factory):
+    import uvicorn
+
+    import web
+
+    port = _free_port()
+    config = uvicorn.Config(web.create_app(root=tmp_path_factory.mktemp("webroot")),
+                            host="127.0.0.1", port=port, log_level="warning")
+    srv = uvicorn.Server(config)
+    th = threading.Thread(target=srv.run, daemon=True)
+    th.start()
+    for _ in range(200):
+        if srv.started:
+            break
+        time.sleep(0.05)
+    assert srv.started, "the web app did not start"
+    yield f"http://127.0.0.1:{port}"
+    srv.should_exit = True
+    th.join(10)
+
+
+@pytest.fixture(scope="module")
+def browser(tmp_path_factory):
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+
+    assert Path(CHROMIUM).is_file() and Path(CHROMEDRIVER).is_file(), (
+        "the browser test needs Debian's chromium and chromium-driver: "
+        "apt-get install -y chromium chromium-driver")
+    downloads = tmp_path_factory.mktemp("downloads")
+    opts = webdriver.ChromeOptions()
+    opts.binary_location = CHROMIUM
+    for flag in ("--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
+                 "--no-first-run", "--disable-background-networking",
+                 "--disable-component-update", "--disable-sync",
+                 "--disable-dev-shm-usage", "--window-size=1400,1000",
+                 f"--user-data-dir={tmp_path_factory.mktemp('chromium-profile')}"):
+        opts.add_argument(flag)
+    opts.add_experimental_option("prefs", {
+        "download.default_directory": str(downloads), "download.prompt_for_download": False,
+        "safebrowsing.enabled": False})
+    driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=opts)
+    driver.downloads = downloads
+    yield driver
+    driver.quit()
+
+
+def _wait(driver, cond, timeout=60):
+    from selenium.webdriver.support.ui import WebDriverWait
+
+    return WebDriverWait(driver, timeout).until(cond)
+
+
+def _by_id(driver, id_, timeout=60):
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.support import expected_conditions as EC
+
+    return _wait(driver, EC.presence_of_element_located((By.ID, id_)), timeout)
+
+
+def _images_loaded(driver):
+    return driver.execute_script(
+        "return [...document.images].every(i => i.complete && i.naturalWidth > 0)")
+
+
+def _shot(driver, name, tmp_path):
+    folder = Path(os.environ.get("CRANKDYN_SCREENSHOTS") or tmp_path)
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / name
+    assert driver.save_screenshot(str(path)) and path.stat().st_size > 10_000
+    return path
+
+
+def _cli(spec: dict, out: Path, lang="en") -> Path:
+    import tomli_w
+
+    from crankdyn.cli import main
+
+    out.mkdir(parents=True, exist_ok=True)
+    f = out / "spec.toml"
+    f.write_text(tomli_w.dumps(spec), encoding="utf-8")
+    assert main(["engine", str(f), "-o", str(out), "--lang", lang]) == 0
+    return out
+
+
+def _compute(driver, speed=None):
+    from selenium.webdriver.common.by import By
+
+    if speed is not None:
+        box = driver.find_element(By.ID, "engine.speed_rpm")
+        box.clear()
+        box.send_keys(speed)
+    old = driver.find_elements(By.ID, "results")
+    driver.find_element(By.ID, "compute").click()
+    if old:
+        _wait(driver, lambda d: not _stale_check(old[0]))
+    _by_id(driver, "table2")
+
+
+def _stale_check(el):
+    from selenium.common.exceptions import StaleElementReferenceException
+
+    try:
+        el.tag_name
+        return True
+    except StaleElementReferenceException:
+        return False
+
+
+def test_the_petrol_example_in_the_browser_equals_the_cli(server, browser, tmp_path):
+    import openpyxl
+    from selenium.webdriver.common.by import By
+
+    d = browser
+    d.get(server + "/engine?lang=en")
+    d.find_element(By.ID, "example-petrol").click()
+    _by_id(d, "notice")
+    assert d.find_element(By.ID, "engine.speed_rpm").get_attribute("value") == "5400.0"
+    _compute(d, SPEED)
+    # Table 2's first rows on the page = the CLI's forces.csv for the same spec
+    spec = tomllib.loads(example_path("petrol_vaz2106.toml").read_text(encoding="utf-8"))
+    spec["engine"]["speed_rpm"] = float(SPEED)
+    cli = _cli(spec, tmp_path / "cli")
+    with open(cli / "petrol-vaz2106_forces.csv", newline="") as fh:
+        want = list(csv.reader(fh))
+    table = d.find_element(By.ID, "table2")
+    head = [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
+    rows = [[td.text for td in tr.find_elements(By.TAG_NAME, "td")]
+            for tr in table.find_elements(By.CSS_SELECTOR, "tbody tr")[:5]]
+    assert head == want[0]
+    assert rows == want[1:6]
+    assert float(rows[0][head.index("Pj_N")]) != 0.0
+    assert "n = 4000 rpm" in d.find_element(By.ID, "summary").text
+    # every figure is shown
+    _wait(d, _images_loaded)
+    assert len(d.find_elements(By.CSS_SELECTOR, "#figures img")) == 13
+    d.execute_script("document.getElementById('results').scrollIntoView()")
+    _shot(d, "web_engine_results_en.png", tmp_path)
+    d.execute_script("document.getElementById('figures').scrollIntoView()")
+    _shot(d, "web_engine_figures_en.png", tmp_path)
+    # the workbook, downloaded by the browser, equals the CLI's value for value
+    d.find_element(By.ID, "dl-xlsx").click()
+    target = d.downloads / "petrol-vaz2106.xlsx"
+    _wait(d, lambda _d: target.is_file() and not list(d.downloads.glob("*.crdownload")))
+    got, ref = openpyxl.load_workbook(target), openpyxl.load_workbook(
+        cli / "petrol-vaz2106.xlsx")
+    assert got.sheetnames == ref.sheetnames
+    for a, b in zip(got, ref):
+        assert [[c.value for c in r] for r in a.iter_rows()] == \
+            [[c.value for c in r] for r in b.iter_rows()], a.title
+
+
+@pytest.mark.parametrize("lang,words", [("en", "must be > 0"), ("ru", "должно быть > 0")])
+def test_a_bad_bore_is_named_next_to_its_field_in_the_browser(server, browser, tmp_path,
+                                                              lang, words):
+    from selenium.webdriver.common.by import By
+
+    d = browser
+    d.get(server + f"/engine?lang={lang}")
+    d.find_element(By.ID, "example-petrol").click()
+    _by_id(d, "notice")
+    if lang == "ru":                    # the results page in Russian, for its screenshot
+        _compute(d)
+        _wait(d, _images_loaded)
+        d.execute_script("document.getElementById('results').scrollIntoView()")
+        assert "Таблица 2" in d.find_element(By.ID, "results").text
+        _shot(d, "web_engine_results_ru.png", tmp_path)
+    box = d.find_element(By.ID, "engine.bore_mm")
+    box.clear()
+    box.send_keys("-5")
+    d.find_element(By.ID, "compute").click()
+    err = _by_id(d, "err-engine.bore_mm")
+    field = d.find_element(By.ID, "field-engine.bore_mm")
+    assert err in field.find_elements(By.CLASS_NAME, "problem")
+    assert "engine.bore_mm" in err.text and "-5" in err.text and words in err.text
+    assert not d.find_elements(By.ID, "results")
+    d.execute_script("document.getElementById('field-engine.bore_mm')"
+                     ".scrollIntoView({block: 'center'})")
+    _shot(d, f"web_engine_form_{lang}.png", tmp_path)
+
+
+def test_the_linkage_page_in_the_browser(server, browser, tmp_path):
+    """The ratchet drive: its kinematics table on the page is the CLI's, in both
+    languages; the screenshots of the page."""
+    from selenium.webdriver.common.by import By
+
+    from crankdyn.cli import main
+
+    out = tmp_path / "cli"
+    assert main(["linkage", "--example", "ratchet", "-o", str(out), "--lang", "en"]) == 0
+    with open(out / "ratchet-drive_kinematics.csv", newline="") as fh:
+        want = list(csv.reader(fh))
+    d = browser
+    for lang in ("en", "ru"):
+        d.get(server + f"/linkage?lang={lang}")
+        d.find_element(By.ID, "example-ratchet").click()
+        _by_id(d, "notice")
+        _compute(d)
+        table = d.find_element(By.ID, "table2")
+        head = [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
+        rows = [[td.text for td in tr.find_elements(By.TAG_NAME, "td")]
+                for tr in table.find_elements(By.CSS_SELECTOR, "tbody tr")[:3]]
+        assert head == want[0] and rows == want[1:4]
+        _wait(d, _images_loaded)
+        assert len(d.find_elements(By.CSS_SELECTOR, "#figures img")) == 5
+        d.execute_script("document.getElementById('results').scrollIntoView()")
+        _shot(d, f"web_linkage_results_{lang}.png", tmp_path)
+
+
+def test_the_dynamics_page_in_the_browser(server, browser, tmp_path):
+    """The seed's flywheel example: the motion table on the page is the CLI's, in both
+    languages; the screenshots of the page."""
+    from selenium.webdriver.common.by import By
+
+    from crankdyn.cli import main
+
+    out = tmp_path / "cli"
+    assert main(["dynamics", "--example", "flywheel", "-o", str(out), "--lang", "en"]) == 0
+    with open(next(out.glob("*_motion.csv")), newline="") as fh:
+        want = list(csv.reader(fh))
+    d = browser
+    for lang in ("en", "ru"):
+        d.get(server + f"/dynamics?lang={lang}")
+        d.find_element(By.ID, "example-flywheel").click()
+        _by_id(d, "notice")
+        _compute(d)
+        table = d.find_element(By.ID, "table2")
+        head = [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
+        rows = [[td.text for td in tr.find_elements(By.TAG_NAME, "td")]
+                for tr in table.find_elements(By.CSS_SELECTOR, "tbody tr")[:3]]
+        assert head == want[0] and rows == want[1:4]
+        _wait(d, _images_loaded)
+        assert d.find_elements(By.CSS_SELECTOR, "#figures img")
+        d.execute_script("document.getElementById('results').scrollIntoView()")
+        _shot(d, f"web_dynamics_results_{lang}.png", tmp_path)
+
+
+def test_the_balance_page_in_the_browser(server, browser, tmp_path):
+    """The textbook's two-plane rotor: plane I 285.60 g·mm at 53.54° on the page, in both
+    languages (Example 11-1 of the seed textbook, examples/rotor_two_plane.toml)."""
+    from selenium.webdriver.common.by import By
+
+    d = browser
+    for lang in ("en", "ru"):
+        d.get(server + f"/balance?lang={lang}")
+        d.find_element(By.ID, "example-rotor").click()
+        _by_id(d, "notice")
+        _compute(d)
+        table = d.find_element(By.ID, "table2")
+        head = [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
+        row = dict(zip(head, [td.text for td in table.find_elements(By.CSS_SELECTOR,
+                                                                     "tbody tr")[0]
+                              .find_elements(By.TAG_NAME, "td")]))
+        assert round(float(row["mr_gmm"]), 2) == 285.60
+        assert round(float(row["angle_deg"]), 2) == 53.54
+        _wait(d, _images_loaded)
+        d.execute_script("document.getElementById('results').scrollIntoView()")
+        _shot(d, f"web_balance_results_{lang}.png", tmp_path)
+
+
+def test_the_teacher_page_in_the_browser(server, browser, tmp_path):
+    """A class of two variants uploaded through the page's file inputs: the progress bar
+    reaches 2 of 2 and the summary table lists both; the page in both languages."""
+    from selenium.webdriver.common.by import By
+
+    table = tmp_path / "class.csv"
+    table.write_text("variant,engine.bore_mm,engine.speed_rpm\nivanov,80,5000\n"
+                     "petrova,82,4800\n", encoding="utf-8")
+    d = browser
+    d.get(server + "/teacher?lang=en")
+    d.find_element(By.ID, "teacher-base").send_keys(str(example_path("petrol_vaz2106.toml")))
+    d.find_element(By.ID, "teacher-variants").send_keys(str(table))
+    d.find_element(By.ID, "teacher-submit").click()
+    _by_id(d, "batch-progress")
+    line = _by_id(d, "batch-line", timeout=300)
+    assert "2 variants: 2 written" in line.text
+    assert d.find_element(By.ID, "batch-progress").get_attribute("value") == "2"
+    rows = d.find_elements(By.CSS_SELECTOR, "#summary-table tbody tr")
+    assert [r.find_elements(By.TAG_NAME, "td")[0].text for r in rows] == ["ivanov", "petrova"]
+    _shot(d, "web_teacher_en.png", tmp_path)
+    d.get(server + "/teacher?lang=ru")
+    assert "вариантов: 2; записано 2" in _by_id(d, "batch-line").text
+    _shot(d, "web_teacher_ru.png", tmp_path)
