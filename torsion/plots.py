@@ -221,7 +221,10 @@ def plot_spectrum(harmonics, ax=None, lang="ru"):
 
 
 def _mark_every(S):
-    return max(1, S // 12)
+    """About 12 marks along a curve of S points, the first half a step in: none on the
+    axes' ends, where the frame would cut it in half."""
+    step = max(1, S // 12)
+    return (step // 2, step)
 
 
 def plot_response(response, names=None, ax=None, lang="ru"):
