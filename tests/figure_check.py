@@ -12,7 +12,10 @@
   paths (every pixel or so) and no sample may fall inside a text's box.
 
 A ``margin_px`` lets a box touch what it does not cover (the ink of a glyph does not
-fill its box).  Line collections with ``gid="paper-grid"`` (the millimetre grid of the
+fill its box).  :func:`marker_problems` checks the lone marks (a line drawn as markers
+only: "the largest" circle, critical speeds): each must be drawn whole, neither cut by
+its axes' clip box (a mark at the axes' edge shows half a circle) nor by the figure's
+edge.  Line collections with ``gid="paper-grid"`` (the millimetre grid of the
 drawings, drawn under everything, like the grid lines of the axes) are background, not
 lines.  This is a test tool (tests import it), not part of the library.
 """
@@ -20,7 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["figure_problems", "texts_of", "line_samples"]
+__all__ = ["figure_problems", "marker_problems", "texts_of", "line_samples"]
 
 BACKGROUND_GIDS = {"paper-grid"}
 
@@ -207,4 +210,44 @@ def figure_problems(fig, margin_px=1.5, line_margin_px=2.0, edge=True):
             n = int(_inside(pts, bb, line_margin_px).sum())
             if n:
                 problems.append(f"crossed: {name} by {lname} ({n} px)")
+    return problems
+
+
+_NO_MARKER = (None, "None", "none", "", " ")
+
+
+def marker_problems(fig, margin_px=0.5, edge=True):
+    """Every lone mark of ``fig`` (a ``Line2D`` with markers and no line) that is not
+    drawn whole, as readable strings (empty: clean).
+
+    A mark's extent is its marker size plus its edge width (points → pixels); a clipped
+    mark (``clip_on``, the default) must lie inside its clip box (the axes), every mark
+    inside the figure (``edge``: False for a figure saved with a tight bounding box).
+    ``margin_px`` lets the extent touch the border.
+    """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    W, H = fig.bbox.width, fig.bbox.height
+    m = margin_px
+    problems = []
+    for ax in fig.axes:
+        if not ax.get_visible():
+            continue
+        for line in ax.lines:
+            if (not line.get_visible() or line.get_marker() in _NO_MARKER
+                    or line.get_linestyle() not in _NO_MARKER):
+                continue
+            r = (line.get_markersize() + line.get_markeredgewidth()) * fig.dpi / 72.0 / 2.0
+            xy = line.get_transform().transform(np.asarray(line.get_xydata(), float))
+            xy = xy[np.all(np.isfinite(xy), axis=1)]
+            box = line.get_clip_box() if line.get_clip_on() else None
+            for x, y in xy:
+                where = f"mark {line.get_label()!r} at ({x:.0f}, {y:.0f}) px"
+                if box is not None and (x - r < box.x0 - m or x + r > box.x1 + m
+                                        or y - r < box.y0 - m or y + r > box.y1 + m):
+                    problems.append(f"mark cut by its axes: {where}")
+                if edge and (x - r < -m or x + r > W + m or y - r < -m or y + r > H + m):
+                    problems.append(f"mark cut by the figure's edge: {where}")
     return problems

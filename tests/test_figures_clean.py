@@ -13,7 +13,7 @@ from crankbase.resources import example_path
 
 pytest.importorskip("matplotlib")
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from figure_check import figure_problems  # noqa: E402
+from figure_check import figure_problems, marker_problems  # noqa: E402
 
 LANGS = ("ru", "en")
 
@@ -191,6 +191,22 @@ def test_nothing_overlaps_nothing_is_cut(example, lang):
     assert not found, "\n".join(found[:60]) + f"\n({len(found)} problems)"
 
 
+@pytest.mark.parametrize("name", [k for k in EXAMPLES if k.startswith("torsion")])
+@pytest.mark.parametrize("lang", LANGS)
+def test_torsion_marks_are_drawn_whole(name, lang):
+    """Issue #21: the lone marks of the torsion figures (the response's "largest" circle,
+    the Campbell diagram's critical speeds) are drawn whole.  On the inline six the
+    largest vibration torque lies at the top of the speed range (6500 rpm, its right
+    edge): a mark clipped by the axes showed half a circle there."""
+    make, edge = EXAMPLES[name]
+    figs = make()(lang)
+    found = []
+    for stem, fig in figs.items():
+        found += [f"{name} [{lang}] {stem}: {p}" for p in marker_problems(fig, edge=edge)]
+        fig.clear()
+    assert not found, "\n".join(found)
+
+
 def test_the_check_finds_each_kind_of_fault():
     """The checker itself: two texts on top of each other, a text over a curve, an axis
     line through a text, a text cut at the edge; a clean figure has none."""
@@ -216,6 +232,12 @@ def test_the_check_finds_each_kind_of_fault():
     edge = fig_with(lambda ax: ax.annotate("far too long a text for this small figure",
                                            (9, 9)))
     assert any(p.startswith("cut") for p in figure_problems(edge))
+    mark = fig_with(lambda ax: ax.plot([10], [5], ls="none", marker="o", ms=11))
+    assert any(p.startswith("mark cut by its axes") for p in marker_problems(mark))
+    whole = fig_with(lambda ax: ax.plot([10], [5], ls="none", marker="o", ms=11,
+                                        clip_on=False))
+    assert marker_problems(whole) == []
+    assert marker_problems(fig_with(lambda ax: ax.plot([5], [5], "o"))) == []
     gap = fig_with(lambda ax: (ax.plot([0, 4, float("nan"), 6, 10], [5.1] * 5),
                                ax.text(5, 5, "x", va="center")))
     assert figure_problems(gap) == []                  # a broken line under a label

@@ -221,7 +221,10 @@ def plot_spectrum(harmonics, ax=None, lang="ru"):
 
 
 def _mark_every(S):
-    return max(1, S // 12)
+    """About 12 marks along a curve of S points, the first half a step in: none on the
+    axes' ends, where the frame would cut it in half."""
+    step = max(1, S // 12)
+    return (step // 2, step)
 
 
 def plot_response(response, names=None, ax=None, lang="ru"):
@@ -236,8 +239,9 @@ def plot_response(response, names=None, ax=None, lang="ru"):
         ax.plot(response.speeds_rpm, response.torque_Nm[:, i],
                 **_style(i, _mark_every(S)), label=t("torsionplot.section", name=sec))
     n, i, M = response.worst
+    # unclipped: at an end of the speed range the circle stands whole over the frame
     ax.plot([n], [M], ls="none", marker="o", ms=11, mfc="none", mec="black", mew=1.5,
-            label=t("torsionplot.worst", M=M, n=n))
+            clip_on=False, zorder=6, label=t("torsionplot.worst", M=M, n=n))
     ax.set_xlim(float(response.speeds_rpm.min()), float(response.speeds_rpm.max()))
     ax.set_ylim(0.0, 1.08 * M if M > 0 else 1.0)
     ax.set_xlabel(t("torsionplot.speed_axis"))
@@ -249,7 +253,10 @@ def plot_response(response, names=None, ax=None, lang="ru"):
 
 
 def plot_response_angles(response, names=None, ax=None, lang="ru"):
-    """The peak vibration angle of every mass over the speed range.  Returns the Axes."""
+    """The peak vibration angle of every mass over the speed range: the elastic
+    (twisting) amplitude, without the swing of the whole free chain
+    (:attr:`torsion.results.Response.amplitude_deg`), so that it peaks at the critical
+    speeds.  Returns the Axes."""
     t = _words(lang)
     ax = _axes(ax)
     names = mass_names(response.amplitude_deg.shape[1], names)

@@ -38,6 +38,8 @@ def column_label(column: str, lang: str = "ru") -> str:
         return t("torsion.col.theta_deg_of", mass=column[6:-4])
     if column.startswith("theta_"):
         return t("torsion.col.theta_of", mass=column[6:])
+    if column.startswith("swing_") and column.endswith("_deg"):
+        return t("torsion.col.swing_deg_of", mass=column[6:-4])
     if column.startswith("M_") and column.endswith("_Nm"):
         return t("torsion.col.M_of", section=column[2:-3])
     if column.startswith("tau_") and column.endswith("_MPa"):

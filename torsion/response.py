@@ -18,7 +18,9 @@ torque of frequency Ω = kω; the steady complex response of the damped chain is
 (K − Ω² J + iΩ C) Θ_k = F_k (:func:`harmonic_solve`), solved at once for every speed and
 order (batched :func:`numpy.linalg.solve`).  The angle of every mass over one cycle is
 the sum of the orders in time, θ(θ_c) = Re Σ_k Θ_k e^{ikθ_c}, and its peak over the cycle
-is reported (not the sum of the amplitudes, which overstates it); likewise the vibration
+is reported (not the sum of the amplitudes, which overstates it) without the rigid-body
+swing of the whole free chain (:func:`elastic_part`: the vibration amplitude is the
+twisting motion, relative to the rotation of the chain's mean inertia); likewise the vibration
 torque of section i, k_i(θ_i − θ_{i+1}), and its shear stress τ = 16 M/(π d³).  The gas
 torque's harmonics are kept from the indicator diagram at every speed; the inertia
 torque's scale with (n / n_ref)² (its force is mj·j ∝ ω²).
@@ -45,7 +47,7 @@ if TYPE_CHECKING:                       # annotations only: no pandas import at 
     import pandas as pd
 
 __all__ = ["critical_speeds", "forced_response", "harmonic_solve", "excitation_vectors",
-           "is_major", "check_speed_range", "SPEED_RANGE_KEY"]
+           "elastic_part", "is_major", "check_speed_range", "SPEED_RANGE_KEY"]
 
 SPEED_RANGE_KEY = "torsion.speed_range_rpm"
 #: |Σ_j e^{−ikφ_j}| within this fraction of the cylinder count: all phasors equal (major).
@@ -190,6 +192,29 @@ def excitation_vectors(n, throw_index, phases_deg, complex_Nm, orders) -> np.nda
     return F
 
 
+def elastic_part(theta, J_kgm2) -> np.ndarray:
+    """The elastic (twisting) part of complex angle amplitudes: Θ − Σ J Θ / Σ J.
+
+    The rigid-body part Σ J Θ / Σ J is the rotation of the chain's mean inertia (the
+    angle of a free rigid body of inertia Σ J under the same torques); what is left twists
+    the shaft, and Σ J Θ_elastic = 0 exactly.
+
+    Parameters
+    ----------
+    theta : ndarray (..., n)
+        Complex angle amplitudes of the n masses (any leading axes: speeds, orders). [rad]
+    J_kgm2 : array_like (n,)
+
+    Returns
+    -------
+    ndarray (..., n)
+        The same minus the inertia-weighted mean over the last axis. [rad]
+    """
+    J = np.asarray(J_kgm2, float)
+    theta = np.asarray(theta)
+    return theta - (theta @ J / J.sum())[..., None]
+
+
 def _in_time(amp, jj, nt):
     """x(θ) = Re Σ_k amp_k e^{i j_k 2πθ/cycle} on a grid of nt points over one cycle
     (amp (S, K, m), jj the integer harmonic index of each order): (S, m, nt)."""
@@ -232,16 +257,22 @@ def forced_response(J_kgm2, k_Nm_rad, C, throw_index, phases_deg, harmonics_gas,
     Returns
     -------
     Response
-        Peak angles of the masses [deg], peak vibration torques [N·m] (and stresses
+        Peak elastic vibration angles of the masses [deg] (and the absolute ones, swing
+        of the whole chain included), peak vibration torques [N·m] (and stresses
         [MPa]) of the sections at each speed, each order's amplitude, the worst section.
 
     Notes
     -----
     Order 0 (the mean torque) accelerates the free chain as a whole and twists it
-    steadily; it is no vibration and is left out.  The chain is free–free, so the
-    angles of the masses include the swing of the whole chain about its mean rotation
-    (the speed fluctuation the flywheel limits: large at low speed, falling as 1/n²);
-    the section torques, from the twists, hold none of it.  The peaks are taken on a grid of at
+    steadily; it is no vibration and is left out.  The chain is free–free, so each
+    order's response Θ_k holds, beside the twisting, a rigid-body part: the swing of the
+    whole chain with its mean rotation Σ J Θ_k / Σ J (the speed fluctuation the flywheel
+    limits: large at low speed, falling as 1/Ω²), which hides the resonances.  The
+    vibration amplitude (``amplitude_deg``, ``amplitude_by_order_deg``) is the elastic
+    motion without it, Θ_k − Σ J Θ_k / Σ J (:func:`elastic_part`), as the course and the
+    engine texts give it (Den Hartog [1]_ § 5.7: the amplitude curve peaks at the critical
+    speeds); the absolute angle, swing included, is ``swing_deg``.  The section torques,
+    from the twists, are the same either way.  The peaks are taken on a grid of at
     least 16 points per period of the highest order (error below 2 % of that order's
     share in the worst case).
     """
@@ -271,16 +302,19 @@ def forced_response(J_kgm2, k_Nm_rad, C, throw_index, phases_deg, harmonics_gas,
     omega = speeds * (2 * np.pi / 60.0)
     Omega = omega[:, None] * orders[None, :]                               # (S, K)
     theta = harmonic_solve(stiffness_matrix(k), J, C, F, Omega)            # (S, K, n)
+    elastic = elastic_part(theta, J)                                       # (S, K, n)
     base = base_order(hg.cycle_deg)
     jj = np.rint(orders / base).astype(int)
     nt = max(256, 16 * int(jj.max(initial=1)))
     x = _in_time(theta, jj, nt)                                            # (S, n, nt)
-    amp = np.degrees(_peak_abs(x))
+    swing = np.degrees(_peak_abs(x))
+    amp = np.degrees(_peak_abs(_in_time(elastic, jj, nt)))
     x = np.subtract(x[:, :-1], x[:, 1:], out=x[:, 1:])                     # the twists
     torque = k * _peak_abs(x)                                              # (S, n-1)
     stress = None if d is None else 16.0 * torque / (np.pi * d ** 3) / 1e6
     s, i = np.unravel_index(int(np.argmax(torque)), torque.shape)
     return Response(speeds_rpm=speeds, amplitude_deg=amp, torque_Nm=torque,
                     stress_MPa=stress, orders=orders,
-                    amplitude_by_order_deg=np.degrees(np.abs(theta)),
-                    worst=(float(speeds[s]), int(i), float(torque[s, i])))
+                    amplitude_by_order_deg=np.degrees(np.abs(elastic)),
+                    worst=(float(speeds[s]), int(i), float(torque[s, i])),
+                    swing_deg=swing)

@@ -167,7 +167,10 @@ class Response:
     ----------
     speeds_rpm : ndarray (S,)
     amplitude_deg : ndarray (S, n)
-        Peak vibration angle of each mass over one cycle (the orders summed in time). [deg]
+        Peak vibration angle of each mass over one cycle (the orders summed in time): the
+        elastic (twisting) motion, relative to the rotation of the whole chain's mean
+        inertia (Θ − Σ J Θ / Σ J per order, :func:`torsion.response.elastic_part`), which
+        peaks at the critical speeds. [deg]
     torque_Nm : ndarray (S, n − 1)
         Peak vibration torque k_i(θ_i − θ_{i+1}) of each section over one cycle. [N·m]
     stress_MPa : ndarray (S, n − 1) or None
@@ -175,9 +178,12 @@ class Response:
     orders : ndarray (K,)
         The excitation orders (order 0, the mean torque, is no vibration and is left out).
     amplitude_by_order_deg : ndarray (S, K, n)
-        |Θ_k| of each order alone. [deg]
+        |Θ_k − Σ J Θ_k / Σ J| of each order alone (elastic, as ``amplitude_deg``). [deg]
     worst : tuple
         (speed_rpm, section index (0-based), torque_Nm) of the largest vibration torque.
+    swing_deg : ndarray (S, n) or None
+        Peak absolute angle of each mass over one cycle: the elastic motion plus the
+        swing of the whole free chain (the speed fluctuation, ∝ 1/n² at low speed). [deg]
     """
 
     speeds_rpm: np.ndarray
@@ -187,10 +193,13 @@ class Response:
     orders: np.ndarray
     amplitude_by_order_deg: np.ndarray
     worst: tuple
+    swing_deg: np.ndarray | None = None
 
     def table(self, names=None) -> pd.DataFrame:
-        """Columns ``speed_rpm``, ``theta_<mass>_deg`` …, ``M_<section>_Nm`` …,
-        ``tau_<section>_MPa`` … (the last with diameters only)."""
+        """Columns ``speed_rpm``, ``theta_<mass>_deg`` … (elastic vibration amplitude),
+        ``M_<section>_Nm`` …, ``tau_<section>_MPa`` … (with diameters only), then
+        ``swing_<mass>_deg`` … (absolute angle, the whole chain's swing included; when
+        known)."""
         import pandas as pd
 
         names = mass_names(self.amplitude_deg.shape[1], names)
@@ -203,4 +212,7 @@ class Response:
         if self.stress_MPa is not None:
             for i, sec in enumerate(secs):
                 data[f"tau_{sec}_MPa"] = self.stress_MPa[:, i]
+        if self.swing_deg is not None:
+            for i, name in enumerate(names):
+                data[f"swing_{name}_deg"] = self.swing_deg[:, i]
         return pd.DataFrame(data)
