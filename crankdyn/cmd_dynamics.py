@@ -24,7 +24,8 @@ from crankbase.errors import Text
 
 #: Bundled examples by short name (``--example NAME``).
 EXAMPLES = {"flywheel": "flywheel_seed.toml", "press": "press_dynamics.toml",
-            "petrol": "petrol_dynamics.toml", "hoist": "hoist_machine.toml"}
+            "petrol": "petrol_dynamics.toml", "hoist": "hoist_machine.toml",
+            "shaper": "shaper_dynamics.toml"}
 
 
 def add_parser(subparsers):
