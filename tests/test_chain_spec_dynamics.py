@@ -118,3 +118,34 @@ def test_shaper_kinetostatic_drive_equals_motor_minus_flywheel(shaper):
     # the frame's reaction on the crank is a column of the chain's force table
     assert f.attrs["crank_bearing"] == "R_frame_crank_N"
     assert {"Rx_frame_ram_N", "R_lever_rod_N", "M_drive_Nm_const"} <= set(f.columns)
+
+
+def test_cli_dynamics_example_shaper(tmp_path):
+    """``crankdyn dynamics --example shaper``: the files, the chain's force columns, an
+    English summary without Cyrillic, the Russian one with its words."""
+    import contextlib
+    import io
+    import re
+
+    import pandas as pd
+
+    from crankdyn.cli import main
+
+    texts = {}
+    for lang in ("en", "ru"):
+        buf = io.StringIO()
+        with contextlib.redirect_stdout(buf):
+            assert main(["dynamics", "--example", "shaper", "-o", str(tmp_path / lang),
+                         "--lang", lang]) == 0
+        texts[lang] = buf.getvalue()
+    assert not re.search("[\u0400-\u04FF]", texts["en"])
+    assert "маховик" in texts["ru"] and "flywheel" in texts["en"]
+    out = tmp_path / "en"
+    for f in ("motion.csv", "forces_true_motion.csv", "startup.csv", "dynamics.xlsx",
+              "omega.png", "forces_true_motion.png"):
+        assert (out / f"shaper-machine_{f}").stat().st_size > 0, f
+    forces = pd.read_csv(out / "shaper-machine_forces_true_motion.csv")
+    assert {"R_frame_crank_N", "R_frame_crank_N_const", "Rx_frame_ram_N",
+            "M_drive_Nm"} <= set(forces.columns)
+    motion = pd.read_csv(out / "shaper-machine_motion.csv")
+    assert motion["omega_rad_s"].mean() == pytest.approx(6.28, rel=0.01)
