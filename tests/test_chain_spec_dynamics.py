@@ -149,3 +149,22 @@ def test_cli_dynamics_example_shaper(tmp_path):
             "M_drive_Nm"} <= set(forces.columns)
     motion = pd.read_csv(out / "shaper-machine_motion.csv")
     assert motion["omega_rad_s"].mean() == pytest.approx(6.28, rel=0.01)
+
+
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_shaper_dynamics_workbook_is_clean(shaper, lang, tmp_path):
+    """The shaper's dynamics workbook passes the reader's audit (tests/workbook_audit.py:
+    nothing cut off, no ###, one number format per column), its long chain column names
+    included; the forces sheet holds the chain's reactions."""
+    from openpyxl import load_workbook
+    from workbook_audit import problems
+
+    from dynamics.report import build_workbook
+    from engine.report import save_workbook
+
+    path = tmp_path / f"shaper_{lang}.xlsx"
+    save_workbook(build_workbook(shaper, lang, name=shaper.model.name), path)
+    wb = load_workbook(path)
+    assert problems(wb, path.name) == []
+    keys = {c.value for ws in wb.worksheets for row in ws.iter_rows(max_row=6) for c in row}
+    assert "R_frame_crank_N" in keys and "Rx_lever_rod_N_const" in keys
