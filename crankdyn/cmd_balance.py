@@ -2,7 +2,7 @@
 
     crankdyn balance ROTOR.toml -o DIR [--lang ru|en]
     crankdyn balance LINKAGE.toml -o DIR [--lang ru|en]     # optional [balance] section
-    crankdyn balance --example [NAME] -o DIR                 # rotor, ratchet
+    crankdyn balance --example [NAME] -o DIR                 # rotor, ratchet, shaper
 
 Every output is named after the spec's name (``<name>``: the rotor's or the
 mechanism's name as a file stem), so that the reports of several specs share a folder.
@@ -17,7 +17,9 @@ balance of a crank-slider: ``DIR/<name>_counterweights.csv`` (``link, mr_kgm, an
 radius_m, mass_kg``; a crank-slider adds ``fraction, m_rec_kg``), ``DIR/<name>_shaking.csv``
 (``phi_deg`` and the shaking force and moment before and after: ``F_x_N, F_y_N, F_N,
 M_O_Nm`` and ``*_after``) and the plots ``<name>_shaking_force`` and
-``<name>_shaking_locus``.
+``<name>_shaking_locus``.  A chain spec (``kind = "chain"``, any six-link mechanism): one
+crank counterweight cancelling the forward first harmonic of the shaking force (the least
+mean square; ``[balance] radius_m``), the same files.
 
 Everything is written at once through a staging folder as one report unit
 (``balance:<name>``, apart from the ``crankdyn linkage`` report of the same mechanism):
@@ -29,7 +31,8 @@ from crankbase.errors import Text
 
 
 #: Bundled examples by short name (``--example NAME``).
-EXAMPLES = {"rotor": "rotor_two_plane.toml", "ratchet": "ratchet_balance.toml"}
+EXAMPLES = {"rotor": "rotor_two_plane.toml", "ratchet": "ratchet_balance.toml",
+            "shaper": "shaper.toml"}
 
 
 def add_parser(subparsers):

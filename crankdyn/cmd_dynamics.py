@@ -10,7 +10,8 @@ name as a file stem), so that the reports of two specs share a folder:
 ``DIR/<name>_motion.csv`` (``phi_deg, J_red_kgm2, dJ_red_dphi_kgm2, M_drive_Nm,
 M_resist_Nm, omega_rad_s, eps_rad_s2, t_s`` and ``phi_rad, W_J, E_J``; a linkage adds
 ``M_resist_loads_Nm, M_resist_weights_Nm``), ``DIR/<name>_forces_true_motion.csv``
-(linkage, engine), ``DIR/<name>_startup.csv`` (motor), ``DIR/<name>_dynamics.xlsx`` and
+(linkage, engine; a chain spec's reactions are named after its links, ``Rx_frame_crank_N``
+…), ``DIR/<name>_startup.csv`` (motor), ``DIR/<name>_dynamics.xlsx`` and
 the plots ``DIR/<name>_<plot>.png|svg`` (``inertia``, ``moments``, ``wittenbauer``,
 ``omega``, ``startup``, ``forces_true_motion``), all at once through a staging folder
 as one report unit (``dynamics:<name>``): a rerun replaces only its own files, removing
@@ -24,7 +25,8 @@ from crankbase.errors import Text
 
 #: Bundled examples by short name (``--example NAME``).
 EXAMPLES = {"flywheel": "flywheel_seed.toml", "press": "press_dynamics.toml",
-            "petrol": "petrol_dynamics.toml", "hoist": "hoist_machine.toml"}
+            "petrol": "petrol_dynamics.toml", "hoist": "hoist_machine.toml",
+            "shaper": "shaper_dynamics.toml"}
 
 
 def add_parser(subparsers):

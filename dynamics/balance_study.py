@@ -202,9 +202,15 @@ def linkage_lines(res, lang="en"):
     kind = spec.kind.replace("-", "_")
     what = t("balance.linkage.partial") if spec.kind == "crank-slider" else t(
         "balance.linkage.full")
-    lines = [t("balance.linkage.head", name=spec.name,
-               kind=t(f"balance.linkage.{kind}") if kind in ("crank_rocker", "crank_slider")
-               else spec.kind, what=what)]
+    if spec.kind == "chain":                 # any chain: the first-harmonic counterweight
+        from linkage.chain import structure_formula
+
+        label = t("balance.linkage.chain", formula=structure_formula(spec.mechanism))
+        what = t("balance.linkage.harmonic")
+    else:
+        label = t(f"balance.linkage.{kind}") if kind in ("crank_rocker", "crank_slider") \
+            else spec.kind
+    lines = [t("balance.linkage.head", name=spec.name, kind=label, what=what)]
     cw = res.counterweights
     links = {"crank": t("balance.linkage.crank"), "rocker": t("balance.linkage.rocker")}
     width = max(len(links.get(r, r)) for r in cw["link"])

@@ -39,7 +39,7 @@ from dataclasses import dataclass
 import numpy as np
 
 __all__ = ["reduced_inertia", "reduced_moment", "chain_model", "spec_chain_model",
-           "spec_loads", "stroke_extremes", "ChainShaking", "chain_shaking", "frame_load"]
+           "chain_spec_model", "chain_spec_forces", "spec_loads", "stroke_extremes", "ChainShaking", "chain_shaking", "frame_load"]
 
 
 def _zero(res):
@@ -193,6 +193,8 @@ def spec_chain_model(spec, *, steps=720, phi0_deg=None):
     from linkage.analysis import build_mechanism
 
     spec = load_spec(spec)
+    if spec.kind == "chain":
+        return chain_spec_model(spec, steps=steps, phi0_deg=phi0_deg)
     mech = build_mechanism(spec)
     mech.check_rotatable()
     s = 1 if spec.omega >= 0 else -1
@@ -205,6 +207,112 @@ def spec_chain_model(spec, *, steps=720, phi0_deg=None):
                         omega_nominal=abs(spec.omega) or None, check=False)
     model.source = spec
     return model
+
+
+def _chain_summary(spec):
+    """The chain's summary (extremes, working stroke) by :func:`linkage.chain_analysis.
+    analyze_chain` at one position."""
+    from linkage.chain_analysis import analyze_chain
+
+    return analyze_chain(spec, [0.0]).summary
+
+
+def _chain_spec_loads(spec, summary, omega):
+    """``loads(res)`` of a chain spec (:func:`linkage.chain_analysis.chain_loads`, the
+    analysis's own load model) for a solution at the crank speed ``omega`` (the resistance
+    rule's at-rest threshold scales with it)."""
+    import dataclasses
+
+    from linkage.chain_analysis import chain_loads
+
+    spec_w = dataclasses.replace(spec, omega=float(omega), epsilon=0.0)
+
+    def loads(res):
+        forces, moments, _ = chain_loads(spec_w, res, summary)
+        return forces, moments
+    return loads
+
+
+def chain_spec_model(spec, *, steps=720, phi0_deg=None):
+    """The reduced model of a chain spec (:class:`linkage.chain_spec.ChainSpec`, any
+    linkage of class II groups) with its loads, as :func:`spec_chain_model` for a four-bar.
+
+    φ = 0 at the start of the output's working stroke (0° of the crank without extremes);
+    the loads are those of the chain's analysis (:func:`linkage.chain_analysis.chain_loads`:
+    forces, moments, the useful resistance over its span of the working stroke), evaluated
+    at unit crank speed; ``model.source`` is the spec and ``extra["summary"]`` the chain's
+    summary.
+    """
+    s = 1 if spec.omega >= 0 else -1
+    summary = _chain_summary(spec)
+    if phi0_deg is None:
+        phi0_deg = summary.phi_working_start_deg if summary.has_extremes else 0.0
+    model = chain_model(spec.mechanism, _chain_spec_loads(spec, summary, s), steps=steps,
+                        phi0_deg=phi0_deg, rotation=s, gravity=spec.gravity, name=spec.name,
+                        omega_nominal=abs(spec.omega) or None, check=True)
+    model.source = spec
+    model.extra["summary"] = summary
+    return model
+
+
+def _force_columns(cf):
+    """The reactions of a chain's kinetostatics as columns named as in the chain's force
+    table (:mod:`linkage.chain_analysis`): ``Rx_i_j_N``, ``Ry_i_j_N``, ``R_i_j_N`` (force
+    of link i on link j), ``M_drive_Nm``."""
+    F = {}
+    seen = set()
+    for (i, j), r in list(cf.reactions.items()):
+        if frozenset((i, j)) in seen and (j, i) in cf.reactions:
+            continue
+        seen.add(frozenset((i, j)))
+        tag = f"{i}_{j}"
+        if f"R_{tag}_N" in F:
+            tag += f"_{r.joint or 'P'}"
+        F[f"Rx_{tag}_N"], F[f"Ry_{tag}_N"] = r.force.x, r.force.y
+        F[f"R_{tag}_N"] = np.hypot(r.force.x, r.force.y)
+    F["M_drive_Nm"] = cf.M_drive
+    return F
+
+
+def chain_spec_forces(model, motion):
+    """The chain's kinetostatics under the true motion ω(φ), ε(φ) of the crank, beside the
+    one at the constant mean speed (ε = 0): the chain's counterpart of
+    :func:`dynamics.motion.true_motion_forces`.
+
+    Returns
+    -------
+    pandas.DataFrame
+        ``phi_deg``, ``omega_rad_s``, ``eps_rad_s2``; for every pair ``Rx_i_j_N``,
+        ``Ry_i_j_N``, ``R_i_j_N`` (force of link i on link j, the chain's force-table
+        names) and ``M_drive_Nm`` (Mур on the crank, + ccw, without the flywheel), each
+        also with the suffix ``_const``.  ``attrs["crank_bearing"]`` names the magnitude
+        column of the frame's reaction on the crank.
+    """
+    import pandas as pd
+    from linkage import chain as ch
+
+    spec = model.source
+    s = model.rotation
+    mech = spec.mechanism
+    summary = model.extra.get("summary") or _chain_summary(spec)
+    w_m = float(s * motion.omega_mean)
+    phi_deg = motion.table["phi_deg"].to_numpy()
+    phi = np.radians(phi_deg)                  # absolute crank angles (model.phi_deg)
+    w = motion.table["omega_rad_s"].to_numpy()
+    e = motion.table["eps_rad_s2"].to_numpy()
+    loads = _chain_spec_loads(spec, summary, w_m)
+    out = {}
+    for suffix, om, ep in (("", s * w, s * e), ("_const", w_m + 0.0 * w, 0.0 * w)):
+        res = ch.solve(mech, phi, om, ep, check=False)
+        forces, moments = loads(res)
+        cf = ch.kinetostatics(res, forces, moments, spec.gravity)
+        out[suffix] = _force_columns(cf)
+    df = pd.DataFrame({"phi_deg": phi_deg, "omega_rad_s": w, "eps_rad_s2": e})
+    for c in out[""]:
+        df[c] = out[""][c]
+        df[f"{c}_const"] = out["_const"][c]
+    df.attrs["crank_bearing"] = f"R_{ch.FRAME}_{mech.driver.link}_N"
+    return df
 
 
 def stroke_extremes(spec, mech):

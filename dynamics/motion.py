@@ -613,6 +613,10 @@ def true_motion_forces(model, motion: MotionResult):
     from .reduced import stroke_extremes
 
     spec = model.source
+    if getattr(spec, "kind", "") == "chain":        # any chain of class II groups
+        from .chain_model import chain_spec_forces
+
+        return chain_spec_forces(model, motion)
     s = model.rotation
     # the resistance rule's cycle (at-rest threshold) at the mean speed
     spec_m = dataclasses.replace(spec, omega=float(s * motion.omega_mean), epsilon=0.0)

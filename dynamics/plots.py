@@ -150,6 +150,8 @@ def plot_true_forces(forces, column="M_drive_Nm", ax=None, lang="en"):
     ax.set_xlabel(L["phi"])
     labels = {"M_drive_Nm": (L["Mur"], L["t_F"]), "R12_N": (L["R12"], L["t_R"]),
               "M_Nm": (L["Mkr"], L["t_Mkr"]), "R_N": (L["Rpin"], L["t_Rpin"])}
+    if column == forces.attrs.get("crank_bearing"):      # a chain's crank bearing
+        column = "R12_N"
     ylab, title = labels.get(column, (column, column))
     ax.set_ylabel(ylab)
     ax.set_title(title)
@@ -180,7 +182,8 @@ def dynamics_figures(result: dict, lang="en"):
         ax1, ax2 = fig.subplots(2, 1, sharex=True)
         eng = "alpha_deg" in result["forces"]
         plot_true_forces(result["forces"], "M_Nm" if eng else "M_drive_Nm", ax1, lang=lang)
-        plot_true_forces(result["forces"], "R_N" if eng else "R12_N", ax2, lang=lang)
+        bearing = result["forces"].attrs.get("crank_bearing", "R12_N")   # a chain's name
+        plot_true_forces(result["forces"], "R_N" if eng else bearing, ax2, lang=lang)
         ax1.set_xlabel("")
         figs["forces_true_motion"] = fig
     return figs

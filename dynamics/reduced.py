@@ -167,11 +167,13 @@ def machine_model(J_kgm2, moments, period_deg=360.0, *, name="machine", steps=14
 
 
 def linkage_model(spec, *, steps=720, phi0_deg=None, drive_power=False) -> ReducedModel:
-    """The reduced model of a crank-rocker or crank-slider of :mod:`linkage`.
+    """The reduced model of a crank-rocker or crank-slider of :mod:`linkage`, or of any
+    chain of class II groups (a ``kind = "chain"`` spec:
+    :func:`dynamics.chain_model.chain_spec_model`).
 
     Parameters
     ----------
-    spec : linkage spec (path, dict or MechanismSpec)
+    spec : linkage spec (path, dict, MechanismSpec or ChainSpec)
     steps : int
         Grid intervals over one turn.
     phi0_deg : float, optional

@@ -46,7 +46,7 @@ from crankbase.errors import Text
 from ._base import Problem, SpecError
 
 __all__ = ["ShakingResult", "shaking", "BalanceResult", "balance_fourbar",
-           "balance_crank_slider", "mechanism_balance", "plot_shaking_force",
+           "balance_crank_slider", "balance_chain", "mechanism_balance", "plot_shaking_force",
            "plot_shaking_locus"]
 
 
@@ -82,11 +82,17 @@ def shaking(spec, crank_angles_deg=None) -> ShakingResult:
     spec = load_spec(spec)
     phi_deg = np.arange(0.0, 361.0, 1.0) if crank_angles_deg is None else \
         np.atleast_1d(np.asarray(crank_angles_deg, float))
-    mech = build_mechanism(spec)
-    mech.check_rotatable()
-    chain = ch.from_mechanism(mech, spec.links)
+    if spec.kind == "chain":                  # any chain of class II groups
+        chain = spec.mechanism
+        ch.check_cycle(chain)
+        pivot = chain.frame[chain.driver.pivot]
+    else:
+        mech = build_mechanism(spec)
+        mech.check_rotatable()
+        chain = ch.from_mechanism(mech, spec.links)
+        pivot = mech.pivot
     sh = chain_shaking(ch.solve(chain, np.radians(phi_deg), spec.omega, spec.epsilon,
-                                check=False), mech.pivot)
+                                check=False), pivot)
     F = np.asarray(sh.F)
     M = sh.M
     table = pd.DataFrame({"phi_deg": phi_deg, "F_x_N": F.real, "F_y_N": F.imag,
@@ -212,6 +218,65 @@ def balance_crank_slider(spec, fraction=0.0, radius_m=None,
     return res
 
 
+def _chain_with_counterweight(spec, mass, pos):
+    """A chain spec with a point mass ``mass`` at the crank's local point ``pos`` merged
+    into the crank (mass, centre of mass, J_S by the parallel-axis theorem)."""
+    from linkage import chain as ch
+
+    mech = spec.mechanism
+    crank = mech.driver.link
+    lk = mech.links[crank]
+    M = lk.mass + mass
+    if M <= 0 or mass == 0:
+        return spec
+    cg = (lk.mass * lk.cg + mass * pos) / M
+    J = lk.inertia + lk.mass * abs(lk.cg - cg) ** 2 + mass * abs(pos - cg) ** 2
+    links = dict(mech.links)
+    links[crank] = ch.Link(float(M), float(J), complex(cg), dict(lk.points))
+    new = ch.Mechanism(dict(mech.frame), mech.driver, list(mech.groups), links, mech.name)
+    return dataclasses.replace(spec, mechanism=new, links=MappingProxyType(links))
+
+
+def balance_chain(spec, radius_m=None, crank_angles_deg=None) -> BalanceResult:
+    """Partial shaking-force balance of any chain of class II groups (a chain spec) by one
+    counterweight on the crank: the one that cancels the forward-rotating first harmonic
+    of the shaking force, which minimises its mean square over a turn.
+
+    With the shaking force written as a complex Fourier series over the crank angle,
+    ``F_sh(φ) = Σ_k c_k e^{ikφ}``, a point mass ``m`` at the crank's local point ``p`` adds
+    ``m ω² p e^{iφ}`` (its centrifugal force at constant ω), orthogonal to every other
+    term, so ``m p = −c_1/ω²`` (computed at the spec's ω, the coefficient by the mean over
+    a turn by 1°).  For a crank-slider this is the classic counterweight for all the
+    rotating mass and half the reciprocating one (the primary force m_rec ω² r cos φ is
+    half forward- and half backward-rotating).
+
+    Parameters
+    ----------
+    radius_m : float, optional
+        Counterweight radius from the crank's pivot; default the crank length.
+    """
+    from linkage import load_spec
+
+    spec = load_spec(spec)
+    if spec.kind != "chain":
+        raise SpecError(Problem("mechanism.kind",
+                                Text("errors.dynamics.shaking.chain_only",
+                                     {"kind": spec.kind})))
+    if spec.omega == 0:
+        raise SpecError(Problem("mechanism.omega_rad_s",
+                                Text("errors.dynamics.shaking.chain_needs_omega")))
+    grid = shaking(spec, np.arange(0.0, 360.0, 1.0)).table
+    phi = np.radians(grid["phi_deg"].to_numpy())
+    F = grid["F_x_N"].to_numpy() + 1j * grid["F_y_N"].to_numpy()
+    c1 = np.mean(F * np.exp(-1j * phi))
+    mr = -c1 / spec.omega ** 2
+    row, cw = _cw(spec.mechanism.driver.link, complex(mr), radius_m or spec.crank,
+                  "balance.radius_m")
+    bal = _chain_with_counterweight(spec, *cw)
+    return BalanceResult(_table([row]), bal, shaking(spec, crank_angles_deg),
+                         shaking(bal, crank_angles_deg))
+
+
 _L = {"ru": {"phi": "φ, °", "F": "Fин, Н", "b": "до уравновешивания",
              "a": "после уравновешивания", "t": "Главный вектор сил инерции",
              "loc": "Годограф главного вектора сил инерции", "x": "Fx, Н", "y": "Fy, Н",
@@ -296,7 +361,7 @@ def mechanism_balance(path_or_dict) -> BalanceResult:
     except SpecError as exc:
         raise SpecError(ck.problems + exc.problems) from None
     kind_keys = {"crank-rocker": ("radius_crank_m", "radius_rocker_m"),
-                 "crank-slider": ("fraction", "radius_m")}[spec.kind]
+                 "crank-slider": ("fraction", "radius_m"), "chain": ("radius_m",)}[spec.kind]
     for k in bal:
         if k in _BAL_KEYS and k not in kind_keys:
             ck.add(f"balance.{k}", Text("errors.dynamics.shaking.does_not_apply",
@@ -304,6 +369,8 @@ def mechanism_balance(path_or_dict) -> BalanceResult:
                                                       + spec.kind.replace("-", "_")),
                                          "items": ", ".join(kind_keys)}))
     ck.raise_if_any()
+    if spec.kind == "chain":
+        return balance_chain(spec, radius["radius_m"])
     if spec.kind == "crank-rocker":
         return balance_fourbar(spec, radius["radius_crank_m"], radius["radius_rocker_m"])
     return balance_crank_slider(spec, frac, radius["radius_m"])
