@@ -34,7 +34,16 @@ def pytest_collection_modifyitems(config, items):
     """Every test that uses a module-scoped fixture goes to the ``xdist_group`` of its
     module (and of the fixture's parameter, when the fixture is parametrized): under
     ``--dist loadgroup`` one worker builds that fixture once.  Other tests are spread
-    over the workers one by one."""
+    over the workers one by one.
+
+    The modules that hold a test marked ``slow`` run first (each module's tests stay
+    together and in their order), so the longest tests do not start last, with one
+    worker busy and the other idle at the end."""
+    def module(item):
+        return getattr(getattr(item, "module", None), "__name__", "")
+
+    slow = {module(item) for item in items if item.get_closest_marker("slow")}
+    items.sort(key=lambda item: module(item) not in slow)               # stable
     for item in items:
         info = getattr(item, "_fixtureinfo", None)
         if info is None or item.get_closest_marker("xdist_group"):
@@ -44,7 +53,7 @@ def pytest_collection_modifyitems(config, items):
         if not shared:
             continue
         params = getattr(getattr(item, "callspec", None), "params", {})
-        key = [item.module.__name__]
+        key = [module(item)]
         key += [f"{n}={params[n]!r}" for n in shared if n in params]
         item.add_marker(pytest.mark.xdist_group("|".join(key)))
 
@@ -80,11 +89,11 @@ def _run_cli(key, folder):
     return Report(folder, rc, o.getvalue(), e.getvalue())
 
 
-def _shared_run(root, key):
+def _shared_run(root, key, wait=True):
     """The report of ``key``, written by whichever process asks first: the writer holds
     the lock folder ``<name>.lock`` (``mkdir`` is atomic) and leaves ``<name>.json``
     (exit status and terminal text) when the report is complete; the others wait for
-    that file."""
+    that file (or, ``wait=False``, get None while it is being written)."""
     name = "_".join(k.lstrip("-") for k in key[:3]) + "_" + \
         hashlib.sha1("\0".join(key).encode()).hexdigest()[:10]
     done = root / f"{name}.json"
@@ -92,6 +101,8 @@ def _shared_run(root, key):
     try:
         (root / f"{name}.lock").mkdir()
     except FileExistsError:                         # another worker writes it
+        if not wait and not done.exists():
+            return None
         deadline = time.monotonic() + WAIT_S
         while not done.exists():
             if time.monotonic() > deadline:
@@ -121,7 +132,8 @@ def cli_report(tmp_path_factory):
     once per session for each distinct ``argv`` (once for all xdist workers) and shared
     by every test that asks for it.  Shared means read-only: a test that changes a
     report's files must run its own (at the end of the session every shared report is
-    checked against its manifest, so a test that altered one fails there)."""
+    checked against its manifest, so a test that altered one fails there).
+    ``cli_report.many([argv, ...])``: the reports of several runs, in that order."""
     root = _shared_root(tmp_path_factory)
     cache = {}
 
@@ -131,6 +143,19 @@ def cli_report(tmp_path_factory):
             cache[key] = _shared_run(root, key)
         return cache[key]
 
+    def many(argvs):
+        """``[run(*argv) for argv in argvs]``, but this worker first writes those no
+        other worker is writing, then waits for the rest (two workers asking for the
+        same reports in the same order do not wait for each other in turn)."""
+        keys = [tuple(str(a) for a in argv) for argv in argvs]
+        for key in keys:
+            if key not in cache:
+                rep = _shared_run(root, key, wait=False)
+                if rep is not None:
+                    cache[key] = rep
+        return [run(*key) for key in keys]
+
+    run.many = many
     yield run
     from crankbase.output import verify_report
 
