@@ -7,10 +7,18 @@ counter-examples are found (and then written into the tests).
 
 Reports rendered once per session (:func:`cli_report`): the end-to-end runs of the CLI
 that several test files only read (an engine report with its 13 plots costs about 3 s of
-CPU, most of it rendering PNG and SVG) are written once and shared."""
+CPU, most of it rendering PNG and SVG) are written once and shared, across the
+pytest-xdist workers too (the first worker that asks writes it, the others wait for it).
+
+Tests that share an expensive module-scoped fixture run on one xdist worker
+(:func:`pytest_collection_modifyitems` puts them in one ``xdist_group``; ``--dist
+loadgroup`` in ``pyproject.toml``), so the fixture is built once, not once per worker."""
 import contextlib
+import hashlib
 import io
+import json
 import os
+import time
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -22,6 +30,34 @@ if os.environ.get("CI"):
     settings.load_profile("ci")
 
 
+def pytest_collection_modifyitems(config, items):
+    """Every test that uses a module-scoped fixture goes to the ``xdist_group`` of its
+    module (and of the fixture's parameter, when the fixture is parametrized): under
+    ``--dist loadgroup`` one worker builds that fixture once.  Other tests are spread
+    over the workers one by one.
+
+    The modules that hold a test marked ``slow`` run first (each module's tests stay
+    together and in their order), so the longest tests do not start last, with one
+    worker busy and the other idle at the end."""
+    def module(item):
+        return getattr(getattr(item, "module", None), "__name__", "")
+
+    slow = {module(item) for item in items if item.get_closest_marker("slow")}
+    items.sort(key=lambda item: module(item) not in slow)               # stable
+    for item in items:
+        info = getattr(item, "_fixtureinfo", None)
+        if info is None or item.get_closest_marker("xdist_group"):
+            continue
+        shared = sorted(name for name, defs in info.name2fixturedefs.items()
+                        if defs and defs[-1].scope == "module")
+        if not shared:
+            continue
+        params = getattr(getattr(item, "callspec", None), "params", {})
+        key = [module(item)]
+        key += [f"{n}={params[n]!r}" for n in shared if n in params]
+        item.add_marker(pytest.mark.xdist_group("|".join(key)))
+
+
 @dataclass(frozen=True)
 class Report:
     """One run of ``crankdyn ARGV -o folder``: the folder, exit status and terminal text."""
@@ -31,27 +67,95 @@ class Report:
     err: str
 
 
+#: How long a worker waits for another one to write a shared report.
+WAIT_S = 900.0
+
+
+def _shared_root(tmp_path_factory):
+    """The folder every worker of this session sees: the session's base temporary folder
+    (under xdist, the parent of the workers' own ones)."""
+    base = tmp_path_factory.getbasetemp()
+    root = (base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base) / "cli_reports"
+    root.mkdir(exist_ok=True)
+    return root
+
+
+def _run_cli(key, folder):
+    from crankdyn.cli import main
+
+    o, e = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(o), contextlib.redirect_stderr(e):
+        rc = main([*key, "-o", str(folder)])
+    return Report(folder, rc, o.getvalue(), e.getvalue())
+
+
+def _shared_run(root, key, wait=True):
+    """The report of ``key``, written by whichever process asks first: the writer holds
+    the lock folder ``<name>.lock`` (``mkdir`` is atomic) and leaves ``<name>.json``
+    (exit status and terminal text) when the report is complete; the others wait for
+    that file (or, ``wait=False``, get None while it is being written)."""
+    name = "_".join(k.lstrip("-") for k in key[:3]) + "_" + \
+        hashlib.sha1("\0".join(key).encode()).hexdigest()[:10]
+    done = root / f"{name}.json"
+    folder = root / name
+    try:
+        (root / f"{name}.lock").mkdir()
+    except FileExistsError:                         # another worker writes it
+        if not wait and not done.exists():
+            return None
+        deadline = time.monotonic() + WAIT_S
+        while not done.exists():
+            if time.monotonic() > deadline:
+                raise TimeoutError(f"no shared report {key} after {WAIT_S} s")
+            time.sleep(0.05)
+        rec = json.loads(done.read_text(encoding="utf-8"))
+        if "error" in rec:
+            raise RuntimeError(f"the shared report {key} failed in another worker: "
+                               f"{rec['error']}")
+        return Report(folder, rec["rc"], rec["out"], rec["err"])
+    try:
+        rep = _run_cli(key, folder)
+        rec = {"rc": rep.rc, "out": rep.out, "err": rep.err}
+    except BaseException as exc:
+        rec = {"error": repr(exc)}
+        raise
+    finally:
+        tmp = root / f"{name}.json.part"
+        tmp.write_text(json.dumps(rec), encoding="utf-8")
+        os.replace(tmp, done)
+    return rep
+
+
 @pytest.fixture(scope="session")
 def cli_report(tmp_path_factory):
     """``cli_report(*argv)``: the :class:`Report` of ``crankdyn *argv -o <folder>``, run
-    once per session for each distinct ``argv`` and shared by every test that asks for it.
-    Shared means read-only: a test that changes a report's files must run its own (at the
-    end of the session every shared report is checked against its manifest, so a test
-    that altered one fails there)."""
-    from crankdyn.cli import main
-
+    once per session for each distinct ``argv`` (once for all xdist workers) and shared
+    by every test that asks for it.  Shared means read-only: a test that changes a
+    report's files must run its own (at the end of the session every shared report is
+    checked against its manifest, so a test that altered one fails there).
+    ``cli_report.many([argv, ...])``: the reports of several runs, in that order."""
+    root = _shared_root(tmp_path_factory)
     cache = {}
 
     def run(*argv):
         key = tuple(str(a) for a in argv)
         if key not in cache:
-            folder = tmp_path_factory.mktemp("_".join(k.lstrip("-") for k in key[:3]))
-            o, e = io.StringIO(), io.StringIO()
-            with contextlib.redirect_stdout(o), contextlib.redirect_stderr(e):
-                rc = main([*key, "-o", str(folder)])
-            cache[key] = Report(folder, rc, o.getvalue(), e.getvalue())
+            cache[key] = _shared_run(root, key)
         return cache[key]
 
+    def many(argvs):
+        """``[run(*argv) for argv in argvs]``, but this worker first writes those no
+        other worker is writing, then waits for the rest (two workers asking for the
+        same reports in the same order do not wait for each other in turn)."""
+        keys = [tuple(str(a) for a in argv) for argv in argvs]
+        for key in keys:
+            if key not in cache:
+                rep = _shared_run(root, key, wait=False)
+                if rep is not None:
+                    cache[key] = rep
+        return [run(*key) for key in keys]
+
+    run.many = many
     yield run
     from crankbase.output import verify_report
 

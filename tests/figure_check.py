@@ -203,11 +203,15 @@ def figure_problems(fig, margin_px=1.5, line_margin_px=2.0, edge=True):
             if (min(bb.x1, ob.x1) - max(bb.x0, ob.x0) > m
                     and min(bb.y1, ob.y1) - max(bb.y0, ob.y0) > m):
                 problems.append(f"overlap: {name} and {other}")
+    lm = line_margin_px
     for lname, pts in line_samples(fig):
-        if not len(pts):
-            continue
+        if not len(pts) or np.isnan(pts).all(axis=0).any():
+            continue                                   # no sample can be inside a box
+        (x0, y0), (x1, y1) = np.nanmin(pts, axis=0), np.nanmax(pts, axis=0)
         for name, bb, _ in texts:
-            n = int(_inside(pts, bb, line_margin_px).sum())
+            if x1 <= bb.x0 + lm or x0 >= bb.x1 - lm or y1 <= bb.y0 + lm or y0 >= bb.y1 - lm:
+                continue                               # the line's extent misses the box
+            n = int(_inside(pts, bb, lm).sum())
             if n:
                 problems.append(f"crossed: {name} by {lname} ({n} px)")
     return problems

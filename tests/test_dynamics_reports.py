@@ -47,13 +47,14 @@ def runs(cli_report):
     """Every bundled example of both commands in both languages, each in its own folder
     (the session's shared reports, read-only): (command, example, lang) → (folder,
     stdout, stderr)."""
+    keys = [(command, ex, lang) for command, examples in (("dynamics", DYNAMICS),
+                                                          ("balance", BALANCE))
+            for ex in examples for lang in ("ru", "en")]
     out = {}
-    for command, examples in (("dynamics", DYNAMICS), ("balance", BALANCE)):
-        for ex in examples:
-            for lang in ("ru", "en"):
-                rep = cli_report(command, "--example", ex, "--lang", lang)
-                assert rep.rc == 0, rep.err
-                out[(command, ex, lang)] = (rep.folder, rep.out, rep.err)
+    for key, rep in zip(keys, cli_report.many([(c, "--example", ex, "--lang", lang)
+                                               for c, ex, lang in keys])):
+        assert rep.rc == 0, rep.err
+        out[key] = (rep.folder, rep.out, rep.err)
     return out
 
 

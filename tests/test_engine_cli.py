@@ -280,7 +280,9 @@ def test_readme_states_the_symbol_table():
 def test_terminal_summary_speaks_the_report_language(cli_report):
     """The whole engine and its bearings (V8: flywheel, counterweights, every line) print
     in the report's language: no English word in a Russian run, no Cyrillic letter in an
-    English one."""
+    English one.  Russian: the CLI's run (the session's shared one).  English: the study's
+    summary (the lines the CLI prints above its last one) and the CLI's own English
+    terminal text, last line included, of the shared petrol run."""
     import re
     rep = cli_report("engine", "--example", "v8", "--bearings")      # shared, read-only
     assert rep.rc == 0
@@ -292,12 +294,17 @@ def test_terminal_summary_speaks_the_report_language(cli_report):
     assert "diesel-kamaz740_journals.csv" in written
     words = set(re.findall(r"[A-Za-z]{3,}", summary.replace("diesel-kamaz740", "")))
     assert words <= {"max", "min"}, words
-    rep = cli_report("engine", "--example", "v8", "--bearings", "--lang", "en")
-    assert rep.rc == 0
-    text = rep.out
+    report = engine.run_study(engine.load(example_path("diesel_kamaz740.toml")),
+                              bearings=True)
+    ru = report.summary_lines("ru")               # the study prints what the CLI printed
+    assert summary.rstrip("\n").splitlines() == ru
+    text = "\n".join(report.summary_lines("en"))
     assert not re.search("[\u0400-\u04ff]", text), text
     for word in ("whole engine: 8 cylinders vee", "counterweight", "most loaded"):
         assert word in text
+    rep = cli_report("engine", "--example", "petrol", "--lang", "en")   # shared
+    assert rep.rc == 0 and rep.out.splitlines()[-1].startswith("wrote ")
+    assert not re.search("[\u0400-\u04ff]", rep.out), rep.out
 
 
 def test_step_option_and_spec_path(tmp_path):

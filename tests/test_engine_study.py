@@ -225,18 +225,8 @@ def test_the_balance_line_agrees_with_the_number_of_counterweights(petrol):
         engine.report.summary.whole_engine_lines(whole, "en")[4]
 
 
-def test_the_readme_example_runs_as_written(tmp_path, monkeypatch, capsys):
-    """The README's "Scripting a study" example, run as written (in a scratch folder as
-    the current one): it writes the report into out/ and prints the summary."""
-    text = (Path(__file__).resolve().parents[1] / "README.md").read_text(encoding="utf-8")
-    section = text.split("### Scripting a study", 1)[1]
-    code = section.split("```python\n", 1)[1].split("```", 1)[0]
-    monkeypatch.chdir(tmp_path)
-    exec(compile(code, "README.md", "exec"), {})
-    printed = capsys.readouterr().out
-    assert "whole engine: 4 cylinders inline" in printed
-    assert "petrol-vaz2106.xlsx, 22 plots (PNG, SVG) in out" in printed
-    assert (tmp_path / "out" / "petrol-vaz2106_crankpins.csv").is_file()
+# The README's "Scripting a study" example runs as written, and prints and writes what it
+# says, in tests/test_readme_blocks.py (PROMISES): every README block runs there once.
 
 
 def test_the_command_line_names_its_options_where_the_library_names_arguments(tmp_path,

@@ -93,8 +93,7 @@ REPORTS = [("engine", "--example", "petrol", "--lang", "ru"),
 
 def test_every_file_of_every_example_has_a_windows_name(cli_report):
     seen = 0
-    for argv in REPORTS:
-        rep = cli_report(*argv)
+    for argv, rep in zip(REPORTS, cli_report.many(REPORTS)):
         assert rep.rc == 0, (argv, rep.err)
         listed = set(verify_report(rep.folder))
         on_disk = {p.name for p in rep.folder.iterdir()}

@@ -23,8 +23,25 @@ def test_the_readme_has_its_python_blocks():
     assert any("synthesis as syn" in code for _, code in BLOCKS)
 
 
+#: What a block prints and writes, beyond running: {a line of the block: (texts it
+#: prints, files it writes)}.  The "Scripting a study" example writes the engine's report
+#: into out/ and prints its summary (its words are the library's, its last line names
+#: the files written).
+PROMISES = {
+    'files = engine.write_report(report, "out", lang="en")':
+        (("whole engine: 4 cylinders inline",
+          "petrol-vaz2106.xlsx, 22 plots (PNG, SVG) in out"),
+         ("out/petrol-vaz2106_crankpins.csv",)),
+}
+
+
+def test_every_promise_names_a_block():
+    for marker in PROMISES:
+        assert sum(marker in code for _, code in BLOCKS) == 1, marker
+
+
 @pytest.mark.parametrize("line, code", BLOCKS, ids=[f"line{n}" for n, _ in BLOCKS])
-def test_readme_block_runs_as_written(line, code, tmp_path, monkeypatch):
+def test_readme_block_runs_as_written(line, code, tmp_path, monkeypatch, capsys):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -41,3 +58,10 @@ def test_readme_block_runs_as_written(line, code, tmp_path, monkeypatch):
     # a block that saves a file saves it where it says (the current folder)
     for saved in re.findall(r"savefig\(\"([^\"]+)\"\)", code):
         assert (tmp_path / saved).stat().st_size > 1000, saved
+    printed = capsys.readouterr().out
+    for marker, (texts, files) in PROMISES.items():
+        if marker in code:
+            for t in texts:
+                assert t in printed, (t, printed)
+            for f in files:
+                assert (tmp_path / f).is_file(), f

@@ -23,17 +23,46 @@ RUSSIAN_SYMBOLS = ("ΔPг", "Pj", "Sш", "Mкр", "Kr.ш", "Rшш", "Ψ", "Lш",
                    "β", "α", "μP", "Mкр.ср", "Rшш.ср", "vп.ср")
 
 
+def study_workbook(ex, lang, form, folder):
+    """The workbook and ``_table2.csv`` of ``crankdyn engine --example ex --lang lang
+    --form form``, written through the study layer (engine.run_study, report_workbook,
+    the table's CSV), without the plots: (xlsx path, table2 path)."""
+    from crankbase.output import write_csv
+    from engine.report import save_workbook
+    from engine.study import report_workbook
+
+    report = engine.run_study(engine.load(example_path(EXAMPLES[ex])), form=form)
+    folder.mkdir(parents=True, exist_ok=True)
+    xlsx = folder / f"{report.name}.xlsx"
+    save_workbook(report_workbook(report, lang), xlsx)
+    table2 = folder / report.file_names["table2.csv"]
+    write_csv(report.tables["table2.csv"], table2)
+    return xlsx, table2
+
+
+#: The Kolchin-form report the CLI writes for these tests (the teacher's check reads the
+#: same shared run); the other Kolchin-form workbooks are the study layer's, and
+#: test_the_study_layer_writes_the_cli_workbook proves the two write the same.
+KOLCHIN_BY_CLI = ("diesel", "ru")
+
+
 @pytest.fixture(scope="module")
 def runs(tmp_path_factory, cli_report):
     """Every workbook the CLI writes: engine (both examples × languages × forms),
     linkage (two examples), synthesis.  The engine reports in the seed's form, the
-    examples' own ([table] form absent), are the session's shared ones."""
+    examples' own ([table] form absent), are the session's shared ones; of the other
+    form, one is the CLI's (shared) and the rest the study layer's (no plots drawn)."""
     out = {}
     for ex in ("petrol", "diesel"):
         for lang in ("ru", "en"):
             for form in ("seed", "kolchin"):
                 study = engine.load(example_path(EXAMPLES[ex]))
                 own = () if study.settings.form == form else ("--form", form)
+                if own and (ex, lang) != KOLCHIN_BY_CLI:
+                    out[("engine", ex, lang, form)], out[("table2", ex, lang, form)] = \
+                        study_workbook(ex, lang, form,
+                                       tmp_path_factory.mktemp(f"{ex}_{lang}_{form}"))
+                    continue
                 rep = cli_report("engine", "--example", ex, "--lang", lang, *own)
                 assert rep.rc == 0
                 d = rep.folder
@@ -53,6 +82,27 @@ def runs(tmp_path_factory, cli_report):
                      str(d), "--no-plots", "--lang", lang]) == 0
         out[("synth", lang)] = next(d.glob("*.xlsx"))
     return out
+
+
+def _cells(path):
+    """{sheet: [row values]} of every sheet of a workbook, as a reader gets them."""
+    wb = load_workbook(path, read_only=True)
+    try:
+        return {ws.title: [tuple(r) for r in ws.iter_rows(values_only=True)]
+                for ws in wb.worksheets}
+    finally:
+        wb.close()
+
+
+def test_the_study_layer_writes_the_cli_workbook(runs, tmp_path):
+    """The study layer (:func:`study_workbook`) writes the Kolchin-form workbook and
+    Table 2 the CLI writes: every cell of every sheet, and the CSV byte for byte."""
+    ex, lang = KOLCHIN_BY_CLI
+    xlsx, table2 = study_workbook(ex, lang, "kolchin", tmp_path)
+    assert table2.read_bytes() == runs[("table2", ex, lang, "kolchin")].read_bytes()
+    cli = _cells(runs[("engine", ex, lang, "kolchin")])
+    assert list(cli) == list(_cells(xlsx))
+    assert cli == _cells(xlsx)
 
 
 def _chart_series(path):

@@ -183,12 +183,14 @@ def test_linkage_study_arguments_are_named_and_renamed_by_the_cli(tmp_path, caps
 @pytest.mark.parametrize("example, lang", [("flywheel_seed.toml", "ru"),
                                            ("press_dynamics.toml", "en")])
 def test_dynamics_study_gives_the_cli_tables_and_writes_what_it_lists(example, lang,
-                                                                      tmp_path):
+                                                                      tmp_path, cli_report):
     from dynamics.study import run_study, summary_lines, write_report
 
-    cli = tmp_path / "cli"
-    stdout, _ = _cli(["dynamics", str(example_path(example)), "-o", str(cli),
-                      "--lang", lang])
+    # the CLI's report of the example (the session's shared run, read-only)
+    short = {"flywheel_seed.toml": "flywheel", "press_dynamics.toml": "press"}[example]
+    rep = cli_report("dynamics", "--example", short, "--lang", lang)
+    assert rep.rc == 0, rep.err
+    cli, stdout = rep.folder, rep.out
     report = run_study(example_path(example))
     assert report["motion"] is report.motion                # read as the old mapping too
     _same_tables(report.tables(), cli)

@@ -20,14 +20,6 @@ DYNAMICS = ("flywheel_seed.toml", "press_dynamics.toml", "petrol_dynamics.toml",
 LANGS = ("ru", "en")
 
 
-def engine_workbook(name, lang, bearings=False):
-    """The engine report workbook of a bundled example, as ``crankdyn engine`` builds it
-    (engine.study.report_workbook of the study's report)."""
-    from engine.study import report_workbook
-
-    return report_workbook(engine.run_study(example_path(name), bearings=bearings), lang)
-
-
 def _saved(wb, path):
     from engine.report import save_workbook
 
@@ -44,15 +36,24 @@ def _all(tmp):
     from linkage import synthesis_report as rep
     from linkage.report import write_workbook
 
+    from engine.study import report_workbook
+
+    # each example computed once, its workbook built in each language
+    studies = {name: engine.run_study(example_path(name),
+                                      bearings=name == "petrol_vaz2106.toml")
+               for name in ENGINES}
+    mechanisms = {name: linkage.analyze(linkage.load_spec(example_path(name)))
+                  for name in LINKAGES}
+    machines = {name: (job, run_job(job)) for name in DYNAMICS
+                for job in [load_dynamics_spec(example_path(name))]}
     out = {}
     for lang in LANGS:
         for name in ENGINES:
-            out[("engine", name, lang)] = _saved(
-                engine_workbook(name, lang, bearings=name == "petrol_vaz2106.toml"),
-                tmp / f"{name}_{lang}.xlsx")
+            out[("engine", name, lang)] = _saved(report_workbook(studies[name], lang),
+                                                 tmp / f"{name}_{lang}.xlsx")
         for name in LINKAGES:
             p = tmp / f"{name}_{lang}.xlsx"
-            write_workbook(linkage.analyze(linkage.load_spec(example_path(name))), p, lang)
+            write_workbook(mechanisms[name], p, lang)
             out[("linkage", name, lang)] = p
         design = syn.design_equal_l2_l3(0.15, 30.0)
         p = tmp / f"synth_{lang}.xlsx"
@@ -60,9 +61,9 @@ def _all(tmp):
                            lang=lang)
         out[("synth", lang)] = p
         for name in DYNAMICS:
-            job = load_dynamics_spec(example_path(name))
+            job, result = machines[name]
             out[("dynamics", name, lang)] = _saved(
-                dyn_workbook(run_job(job), lang, name=job.model.name),
+                dyn_workbook(result, lang, name=job.model.name),
                 tmp / f"dyn_{name}_{lang}.xlsx")
         out[("variants", lang)] = variants_summary(tmp / f"variants_{lang}", lang)
         out[("check", lang)] = checked_copy(out[("engine", "diesel_d240.toml", lang)],
