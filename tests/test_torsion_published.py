@@ -13,8 +13,9 @@ from torsion.chain import (holzer_residual, holzer_table, natural_modes,
 
 # --------------------------------------------------------------------------------------
 # W. T. Thomson, "Theory of Vibration with Applications" (Taylor & Francis printing,
-# 2010), § 12.4 "Holzer Method", Example 12.4-1, book pp. 388-389, Table 12.4-1.  Read at digilib.universitaspertamina.ac.id/ebook/Theory%20of%20Vibration
-# %20with%20Applications/files/basic-html/page401.html and page402.html.
+# 2010), § 12.4 "Holzer Method", Example 12.4-1, book pp. 388-389, Table 12.4-1.
+# Read at digilib.universitaspertamina.ac.id/ebook/Theory%20of%20Vibration%20with
+# %20Applications/files/basic-html/page401.html and page402.html.
 # Printed parameters: J1 = 5, J2 = 11, J3 = 22 kg·m²; K1 = 0.10e6, K2 = 0.20e6 N·m/rad
 # (free-free; K3 = 0).  The table starts θ1 = 1.0 at disk 1 and prints, per trial ω,
 # θ1, θ2, θ3 and the running torque T1 = ω²J1θ1, T2 = T1 + ω²J2θ2, T3 = T2 + ω²J3θ3
