@@ -27,6 +27,7 @@ from crankbase.tolerances import SAME_ANGLE_RAD
 from crankbase.validation import angles_argument, step_argument
 
 from . import groups as g
+from .groups import CHUNK  # positions per chunk (one constant for every table)
 from .columns import derived_kinematics_columns, force_columns, kinematics_columns, point_names
 from .derived import fill_derived
 from .fourbar import GrashofType, SliderCrankType
@@ -43,11 +44,6 @@ __all__ = ["build_mechanism", "analyze", "full_turn", "AnalysisResult", "Analysi
 
 _DEG = 180.0 / math.pi
 
-#: Crank positions per chunk.  Each numpy call costs ~0.4 µs however short its arrays,
-#: and the group routines make a few hundred per chunk; past ~16k positions the
-#: intermediate arrays of a chunk (128 KB each) no longer stay in cache, and whole arrays
-#: of a million positions are memory-bound (benchmarks/bench_linkage.py).
-CHUNK = 16384
 
 
 class SingularPositionWarning(UserWarning):
