@@ -337,6 +337,8 @@ def analyze(spec, crank_angles_deg=None, *, course_tables=True) -> AnalysisResul
         (``v_BA_m_s``, ``a_BA_n_m_s2``, ...), weights and inertia loads (``Gi_N``,
         ``Fui_x_N``, ``Fui_N``, ``Mui_Nm``) and reaction magnitudes (``R12_N``, ...).
         False leaves them out (large sweeps: about 40 % fewer columns to fill).
+        A chain: False leaves out the magnitudes ``v_P_m_s``, ``a_P_m_s2``,
+        ``acor_…_m_s2`` and ``R_i_j_N`` (:func:`linkage.chain_analysis.analyze_chain`).
 
     Returns
     -------
@@ -361,7 +363,7 @@ def analyze(spec, crank_angles_deg=None, *, course_tables=True) -> AnalysisResul
     if spec.kind == "chain":        # any linkage of class II groups (linkage.chain_analysis)
         from .chain_analysis import analyze_chain
 
-        return analyze_chain(spec, crank_angles_deg)
+        return analyze_chain(spec, crank_angles_deg, course_tables=course_tables)
     mech = build_mechanism(spec)
     mech.check_rotatable()
     rot = 1 if spec.omega > 0 else -1

@@ -321,10 +321,12 @@ def _point_columns(name, pm, cols):
     cols[f"y_{name}_m"] = z.y
     cols[f"vx_{name}_m_s"] = v.x
     cols[f"vy_{name}_m_s"] = v.y
-    np.hypot(v.x, v.y, out=cols.out(f"v_{name}_m_s"))
+    if cols.course:
+        np.hypot(v.x, v.y, out=cols.out(f"v_{name}_m_s"))
     cols[f"ax_{name}_m_s2"] = a.x
     cols[f"ay_{name}_m_s2"] = a.y
-    np.hypot(a.x, a.y, out=cols.out(f"a_{name}_m_s2"))
+    if cols.course:
+        np.hypot(a.x, a.y, out=cols.out(f"a_{name}_m_s2"))
 
 
 def _slide_columns(grp, s, cols):
@@ -335,7 +337,8 @@ def _slide_columns(grp, s, cols):
         k = "_".join(grp.links)
         cols[f"s_{k}_m"], cols[f"vrel_{k}_m_s"], cols[f"arel_{k}_m_s2"] = s.s, s.v_rel, s.a_rel
         cols[f"acorx_{k}_m_s2"], cols[f"acory_{k}_m_s2"] = s.coriolis.x, s.coriolis.y
-        np.hypot(s.coriolis.x, s.coriolis.y, out=cols.out(f"acor_{k}_m_s2"))
+        if cols.course:
+            np.hypot(s.coriolis.x, s.coriolis.y, out=cols.out(f"acor_{k}_m_s2"))
     elif grp.kind == "PRP":
         a, b = grp.links
         cols[f"s_{a}_m"], cols[f"v_{a}_m_s"], cols[f"a_{a}_m_s2"] = s.s1, s.v1, s.a1
@@ -360,10 +363,11 @@ def new_joints(grp) -> tuple:
 class _Sink:
     """The columns of one chunk of positions, by name, in the order written: fresh arrays
     (the first chunk, which tells the names) or the rows of the two preallocated blocks
-    (every later chunk, written in place)."""
+    (every later chunk, written in place).  ``course``: also the course tables' magnitudes
+    (|v|, |a|, |a_cor|, |R|)."""
 
-    def __init__(self, n, rows=None):
-        self.n, self.rows, self.cols = n, rows, {}
+    def __init__(self, n, course=True, rows=None):
+        self.n, self.course, self.rows, self.cols = n, course, rows, {}
 
     def __contains__(self, name):
         return name in self.cols
@@ -418,10 +422,11 @@ def _columns(spec, res, cf, res_force, K, F):
             continue
         seen.add(frozenset((i, j)))
         tag = f"{i}_{j}"
-        if f"R_{tag}_N" in F:
+        if f"Rx_{tag}_N" in F:
             tag += f"_{r.joint or 'P'}"
         F[f"Rx_{tag}_N"], F[f"Ry_{tag}_N"] = r.force.x, r.force.y
-        np.hypot(r.force.x, r.force.y, out=F.out(f"R_{tag}_N"))
+        if F.course:
+            np.hypot(r.force.x, r.force.y, out=F.out(f"R_{tag}_N"))
         if r.n is not None:
             F[f"Rn_{tag}_N"], F[f"Rt_{tag}_N"] = r.n, r.t
         if r.couple is not None:
@@ -431,7 +436,7 @@ def _columns(spec, res, cf, res_force, K, F):
     F["M_drive_Nm"] = cf.M_drive
 
 
-def _tables(spec, summary, phi, positions):
+def _tables(spec, summary, phi, positions, course_tables=True):
     """The kinematics and force DataFrames at crank angles ``phi`` [rad], as the
     four-bar's (:func:`linkage.analysis._table`): the chain solved chunk by chunk
     (:data:`linkage.groups.CHUNK` positions), each chunk's columns written straight into
@@ -446,7 +451,7 @@ def _tables(spec, summary, phi, positions):
         b = min(n, a + g.CHUNK)
         res, cf, loads, r = _solve_positions(spec, summary, phi[a:b])
         if a == 0:                        # the first chunk names the columns
-            K, F = _Sink(b), _Sink(b)
+            K, F = _Sink(b, course_tables), _Sink(b, course_tables)
             _columns(spec, res, cf, r, K, F)
             kcols, fcols = list(K.cols), list(F.cols)
             kblock, fblock = np.empty((len(kcols), n)), np.empty((len(fcols), n))
@@ -456,8 +461,8 @@ def _tables(spec, summary, phi, positions):
             if b == n:
                 whole = (res, cf, loads)
             continue
-        K = _Sink(b - a, {c: row[a:b] for c, row in zip(kcols, kblock)})
-        F = _Sink(b - a, {c: row[a:b] for c, row in zip(fcols, fblock)})
+        K = _Sink(b - a, course_tables, {c: row[a:b] for c, row in zip(kcols, kblock)})
+        F = _Sink(b - a, course_tables, {c: row[a:b] for c, row in zip(fcols, fblock)})
         _columns(spec, res, cf, r, K, F)
     if positions is None:
         pos = pd.arrays.IntegerArray(np.zeros(n, np.int64), np.ones(n, bool))
@@ -471,10 +476,15 @@ def _tables(spec, summary, phi, positions):
     return frames[0], frames[1], whole
 
 
-def analyze_chain(spec, crank_angles_deg=None) -> ChainAnalysis:
+def analyze_chain(spec, crank_angles_deg=None, *, course_tables=True) -> ChainAnalysis:
     """Kinematics and kinetostatics of a chain spec at its plan of positions (position 1
     at the start of the working stroke, then every 360°/N in the direction of rotation),
     its ``crank_angles_deg`` or the ``crank_angles_deg`` given here [deg].
+
+    ``course_tables=False`` leaves out the magnitudes ``v_P_m_s``, ``a_P_m_s2``,
+    ``acor_…_m_s2`` and ``R_i_j_N`` (their components stay; large sweeps).  The tables
+    are built chunk by chunk (:data:`linkage.groups.CHUNK` positions) into two
+    preallocated blocks, the storage of the two DataFrames.
 
     Raises
     ------
@@ -501,7 +511,7 @@ def analyze_chain(spec, crank_angles_deg=None) -> ChainAnalysis:
         phi = np.mod(math.radians(summary.phi_working_start_deg)
                      + rot * np.arange(n) * (2.0 * math.pi / n), 2.0 * math.pi)
         positions = np.arange(1, n + 1)
-    kin, frc, whole = _tables(spec, summary, phi, positions)
+    kin, frc, whole = _tables(spec, summary, phi, positions, course_tables)
     return ChainAnalysis(spec, kin, frc, summary, phi, _whole=whole)
 
 
