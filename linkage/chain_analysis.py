@@ -468,12 +468,12 @@ def _tables(spec, summary, phi, positions, course_tables=True):
         pos = pd.arrays.IntegerArray(np.zeros(n, np.int64), np.ones(n, bool))
     else:
         pos = pd.array(positions, dtype="Int64")
-    frames = []
-    for cols, block in ((kcols, kblock), (fcols, fblock)):  # the block is the storage
-        df = pd.DataFrame(block.T, columns=cols, copy=False)
-        df.insert(0, "position", pd.Series(pos, index=df.index, copy=True))
-        frames.append(df)
-    return frames[0], frames[1], whole
+    kin = pd.DataFrame(kblock.T, columns=kcols, copy=False)     # the block is the storage
+    frc = pd.DataFrame(fblock.T, columns=fcols, copy=False)
+    pos = pd.Series(pos, index=kin.index, copy=False)  # one array, shared copy-on-write
+    kin.insert(0, "position", pos)
+    frc.insert(0, "position", pos)
+    return kin, frc, whole
 
 
 def analyze_chain(spec, crank_angles_deg=None, *, course_tables=True) -> ChainAnalysis:
