@@ -1,14 +1,23 @@
-"""Speed of linkage.chain on a six-bar: the crank-slotted-lever shaper (crank + RPR + RRP)
-with masses, inertias, weight and a cutting force, kinematics plus kinetostatics at
-1,000,000 crank positions, on one core, beside pylinkage.
+"""Speed of the chain on a six-bar: the bundled crank-slotted-lever shaper
+(examples/shaper.toml: crank + RPR + RRP) with masses, inertias, weight and a cutting
+force, kinematics plus kinetostatics at 1,000,000 crank positions, on one core, beside the
+four-bar through the same public API and beside pylinkage on the same six-bar.
 
     python benchmarks/bench_chain.py [--positions N] [--pylinkage-positions M] [--wall]
 
 Times: best of several repeats of the CPU time of this process (``time.process_time``),
 one thread (BLAS/OpenMP pinned to one); ``--wall`` times wall-clock instead.
 
-* chain, kinematics: :func:`linkage.chain.solve` (driver, RPR, RRP) chunk by chunk
-  (``linkage.analysis.CHUNK`` positions), every joint's and link's motion kept as arrays;
+* analyze (the issue's figure): the public ``linkage.analyze(spec,
+  crank_angles_deg=..., course_tables=False)`` of the shaper example: check of the cycle,
+  summary (extremes, K, μmin), the loads of the spec (the cutting force over its span of
+  the working stroke), kinetostatics, and the two pandas DataFrames (fresh memory every
+  call), chunk by chunk (``linkage.groups.CHUNK`` positions); also with the default
+  ``course_tables=True`` (plus |v|, |a|, |a_cor|, |R|);
+* the four-bar (the ratchet example) through ``linkage.analyze(..., course_tables=False)``
+  in the same run: the ratio shaper/four-bar does not depend on the machine's load;
+* chain, kinematics: :func:`linkage.chain.solve` (driver, RPR, RRP) chunk by chunk, every
+  joint's and link's motion kept as arrays, no tables;
 * chain, kinematics + forces: the same plus :func:`linkage.chain.kinetostatics` with the
   links' weight and inertia, a cutting force on the ram opposing its motion and a
   moment on the lever: every pair's reaction and the driving moment Mур;
@@ -38,23 +47,16 @@ import numpy as np  # noqa: E402
 
 CLOCK = time.process_time
 
-#: The shaper: crank OA = 0.11 m, lever pivot C 0.38 m below O, lever CD = 0.54 m, rod
-#: DE = 0.135 m, the ram's guide 0.53 m above C (a quick-return ratio of about 1.4).
-OA, OC, CD, DE, H = 0.11, 0.38, 0.54, 0.135, 0.53
-OMEGA = 6.7
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SHAPER = os.path.join(ROOT, "examples", "shaper.toml")
+FOURBAR = os.path.join(ROOT, "examples", "ratchet.toml")
+OMEGA = 6.28                     # the shaper example's ω [rad/s] (checked in main)
 
 
 def shaper():
-    from linkage import chain as ch
-    return ch.Mechanism(
-        {"O": 0j, "C": -OC * 1j}, ch.Driver(OA),
-        [ch.RPR(("block", "lever"), ("A", "C")),
-         ch.RRP(("rod", "ram"), ("D", "E"), DE, ch.Guide("frame", (H - OC) * 1j, math.pi), 1)],
-        {"crank": ch.Link(2.0, 0.01, 0.02 + 0j),
-         "block": ch.Link(1.0, 0.002),
-         "lever": ch.Link(20.0, 0.5, 0.27 + 0j, {"D": complex(CD)}),
-         "rod": ch.Link(3.0, 0.01, 0.0675 + 0j),
-         "ram": ch.Link(60.0, 0.0, 0.05 + 0.02j)}, "shaper")
+    """The shaper example's mechanism (:class:`linkage.chain.Mechanism`)."""
+    import linkage
+    return linkage.load_spec(SHAPER).mechanism
 
 
 def best_of(fn, repeat):
@@ -70,15 +72,14 @@ def best_of(fn, repeat):
 def run_chain(mech, phi, forces=True):
     """The chain chunk by chunk; returns the ram's pin E (x, y), (vx, vy), (ax, ay) and Mур."""
     from linkage import chain as ch
-    from linkage.analysis import CHUNK
-    from linkage.groups import Vec
+    from linkage.groups import CHUNK, Vec
 
     n = len(phi)
     E = np.empty((6, n))
     M = np.empty(n)
     for a in range(0, n, CHUNK):
         b = min(n, a + CHUNK)
-        res = ch.solve(mech, phi[a:b], OMEGA, 0.0)
+        res = ch.solve(mech, phi[a:b], OMEGA, 0.0)   # (the example's ω)
         P = res.joints["E"]
         E[0, a:b], E[1, a:b] = P.z.x, P.z.y
         E[2, a:b], E[3, a:b] = P.v.x, P.v.y
@@ -103,21 +104,27 @@ def pylinkage_run(n_pl, phi, ours):
     except ImportError:
         return None
     step = phi[1] - phi[0]
-    y = H - OC
+    mech = shaper()
+    O0, C0 = mech.frame["O"], mech.frame["C"]
+    OA = mech.driver.length
+    CD = abs(mech.links["lever"].points["D"])
+    rrp = mech.groups[1]
+    DE, gp, ga = rrp.length, rrp.guide.point, rrp.guide.angle
+    u = complex(math.cos(ga), math.sin(ga))
 
     def build():
-        O = Ground(0.0, 0.0, name="O")
-        C = Ground(0.0, -OC, name="C")
-        L1 = Ground(-1.0, y, name="L1")
-        L2 = Ground(1.0, y, name="L2")
+        O = Ground(O0.real, O0.imag, name="O")
+        C = Ground(C0.real, C0.imag, name="C")
+        L1 = Ground((gp - u).real, (gp - u).imag, name="L1")
+        L2 = Ground((gp + u).real, (gp + u).imag, name="L2")
         cr = Crank(anchor=O, radius=OA, angular_velocity=step, initial_angle=phi[0] - step,
                    name="A")
         D = FixedDyad(C, cr.output, distance=CD, angle=0.0, name="D")
-        x0 = float(ours[0, 0])
-        E = RRPDyad(D, L1, L2, distance=DE, x=x0, y=y, name="E")
-        mech = Linkage([O, C, L1, L2, cr, D, E], name="shaper")
-        mech.set_input_velocity(cr, omega=OMEGA, alpha=0.0)
-        return mech
+        E = RRPDyad(D, L1, L2, distance=DE, x=float(ours[0, 0]), y=float(ours[1, 0]),
+                    name="E")
+        link = Linkage([O, C, L1, L2, cr, D, E], name="shaper")
+        link.set_input_velocity(cr, omega=OMEGA, alpha=0.0)
+        return link
 
     def fast():
         pos, vel, acc = build().step_fast_with_kinematics(iterations=n_pl)
@@ -149,6 +156,22 @@ def pylinkage_run(n_pl, phi, ours):
     return label, t, getattr(pylinkage, "__version__", "?")
 
 
+def analyze_timings(n, repeat):
+    """``linkage.analyze`` of the shaper (course_tables False and True) and of the four-bar
+    (course_tables False) at ``n`` crank angles: best CPU times [s] and the shaper's result."""
+    import linkage
+
+    deg = 0.3 + (360.0 / n) * np.arange(n)
+    six, four = linkage.load_spec(SHAPER), linkage.load_spec(FOURBAR)
+    t_six = best_of(lambda: linkage.analyze(six, crank_angles_deg=deg, course_tables=False),
+                    repeat)
+    t_six_ct = best_of(lambda: linkage.analyze(six, crank_angles_deg=deg), repeat)
+    t_four = best_of(lambda: linkage.analyze(four, crank_angles_deg=deg, course_tables=False),
+                     repeat)
+    return t_six, t_six_ct, t_four, linkage.analyze(six, crank_angles_deg=deg[:8],
+                                                    course_tables=False)
+
+
 def main():
     global CLOCK
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -161,6 +184,9 @@ def main():
         CLOCK = time.perf_counter
     from linkage import chain as ch
 
+    global OMEGA
+    import linkage
+    OMEGA = linkage.load_spec(SHAPER).omega
     mech = shaper()
     n = args.positions
     phi = 0.3 + (2 * math.pi / n) * np.arange(n)
@@ -170,10 +196,17 @@ def main():
         warnings.simplefilter("error")
         t_kin = best_of(lambda: run_chain(mech, phi, forces=False), args.repeat)
         t_all = best_of(lambda: run_chain(mech, phi, forces=True), args.repeat)
+        t_an, t_an_ct, t_four, small = analyze_timings(n, args.repeat)
     E, M = run_chain(mech, phi)
+    print(f"  analyze, course_tables=False {n:>9,d} positions  {n / t_an / 1e6:8.3f} M/s"
+          f"   (target ≥ 2.5 M/s; {small.kinematics.shape[1]} + {small.forces.shape[1]} "
+          "columns)")
+    print(f"  analyze, course_tables=True  {n:>9,d} positions  {n / t_an_ct / 1e6:8.3f} M/s")
+    print(f"  four-bar (ratchet) analyze, course_tables=False, same run  "
+          f"{n / t_four / 1e6:8.3f} M/s; shaper/four-bar = {t_four / t_an:.3f}")
     print(f"  chain kinematics             {n:>9,d} positions  {n / t_kin / 1e6:8.3f} M/s")
     print(f"  chain kinematics + forces    {n:>9,d} positions  {n / t_all / 1e6:8.3f} M/s"
-          f"   (target ≥ 2.5 M/s; Mур from {M.min():.1f} to {M.max():.1f} N·m)")
+          f"   (no tables; Mур from {M.min():.1f} to {M.max():.1f} N·m)")
     print("\npylinkage, the same shaper's kinematics (joints only, no forces):")
     pl = pylinkage_run(min(args.pylinkage_positions, n), phi, E)
     if pl is None:
@@ -181,7 +214,8 @@ def main():
     else:
         label, t_pl, version = pl
         print(f"  pylinkage {version} ({label}) {1 / t_pl / 1e6:.4f} M/s: chain kinematics "
-              f"{t_pl * n / t_kin:,.0f} ×, kinematics + forces {t_pl * n / t_all:,.0f} × faster")
+              f"{t_pl * n / t_kin:,.0f} ×, kinematics + forces {t_pl * n / t_all:,.0f} ×, "
+              f"analyze with forces and tables {t_pl * n / t_an:,.0f} × faster")
 
 
 if __name__ == "__main__":

@@ -27,6 +27,7 @@ from crankbase.tolerances import SAME_ANGLE_RAD
 from crankbase.validation import angles_argument, step_argument
 
 from . import groups as g
+from .groups import CHUNK  # positions per chunk (one constant for every table)
 from .columns import derived_kinematics_columns, force_columns, kinematics_columns, point_names
 from .derived import fill_derived
 from .fourbar import GrashofType, SliderCrankType
@@ -43,11 +44,6 @@ __all__ = ["build_mechanism", "analyze", "full_turn", "AnalysisResult", "Analysi
 
 _DEG = 180.0 / math.pi
 
-#: Crank positions per chunk.  Each numpy call costs ~0.4 µs however short its arrays,
-#: and the group routines make a few hundred per chunk; past ~16k positions the
-#: intermediate arrays of a chunk (128 KB each) no longer stay in cache, and whole arrays
-#: of a million positions are memory-bound (benchmarks/bench_linkage.py).
-CHUNK = 16384
 
 
 class SingularPositionWarning(UserWarning):
@@ -341,6 +337,8 @@ def analyze(spec, crank_angles_deg=None, *, course_tables=True) -> AnalysisResul
         (``v_BA_m_s``, ``a_BA_n_m_s2``, ...), weights and inertia loads (``Gi_N``,
         ``Fui_x_N``, ``Fui_N``, ``Mui_Nm``) and reaction magnitudes (``R12_N``, ...).
         False leaves them out (large sweeps: about 40 % fewer columns to fill).
+        A chain: False leaves out the magnitudes ``v_P_m_s``, ``a_P_m_s2``,
+        ``acor_…_m_s2`` and ``R_i_j_N`` (:func:`linkage.chain_analysis.analyze_chain`).
 
     Returns
     -------
@@ -365,7 +363,7 @@ def analyze(spec, crank_angles_deg=None, *, course_tables=True) -> AnalysisResul
     if spec.kind == "chain":        # any linkage of class II groups (linkage.chain_analysis)
         from .chain_analysis import analyze_chain
 
-        return analyze_chain(spec, crank_angles_deg)
+        return analyze_chain(spec, crank_angles_deg, course_tables=course_tables)
     mech = build_mechanism(spec)
     mech.check_rotatable()
     rot = 1 if spec.omega > 0 else -1

@@ -98,12 +98,16 @@ class ChainAnalysis:
     kinematics, forces : pandas.DataFrame
         One row per position (columns: the module's docstring).
     summary : ChainSummary
+    phi : ndarray
+        The crank angles of the rows. [rad]
     motion : linkage.chain.ChainResult
-        Every joint's and link's motion as arrays.
+        Every joint's and link's motion as arrays (kept from the tables when they are one
+        chunk of :data:`linkage.groups.CHUNK` positions, else solved again on first use).
     reactions : linkage.chain.ChainForces
-        Every pair's reaction and Mур.
+        Every pair's reaction and Mур (likewise).
     loads : tuple
-        (forces, moments): link → [(force, global point)], link → [moment], as applied.
+        (forces, moments): link → [(force, global point)], link → [moment], as applied
+        (likewise).
     extremes : None
         (The chain's extremes are in :attr:`summary`.)
     warnings : list of str
@@ -113,12 +117,28 @@ class ChainAnalysis:
     kinematics: object
     forces: object
     summary: ChainSummary
-    motion: object
-    reactions: object
-    loads: tuple
+    phi: np.ndarray
     extremes: object = None
     warnings: list = field(default_factory=list)
+    _whole: tuple | None = field(default=None, repr=False, compare=False)
     chain = True
+
+    def _solved(self):
+        if self._whole is None:               # the same routine as the tables' chunks
+            self._whole = _solve_positions(self.spec, self.summary, self.phi)[:3]
+        return self._whole
+
+    @property
+    def motion(self):
+        return self._solved()[0]
+
+    @property
+    def reactions(self):
+        return self._solved()[1]
+
+    @property
+    def loads(self):
+        return self._solved()[2]
 
 
 # ----------------------------------------------------------------------------- output
@@ -301,10 +321,12 @@ def _point_columns(name, pm, cols):
     cols[f"y_{name}_m"] = z.y
     cols[f"vx_{name}_m_s"] = v.x
     cols[f"vy_{name}_m_s"] = v.y
-    cols[f"v_{name}_m_s"] = np.hypot(v.x, v.y)
+    if cols.course:
+        np.hypot(v.x, v.y, out=cols.out(f"v_{name}_m_s"))
     cols[f"ax_{name}_m_s2"] = a.x
     cols[f"ay_{name}_m_s2"] = a.y
-    cols[f"a_{name}_m_s2"] = np.hypot(a.x, a.y)
+    if cols.course:
+        np.hypot(a.x, a.y, out=cols.out(f"a_{name}_m_s2"))
 
 
 def _slide_columns(grp, s, cols):
@@ -315,7 +337,8 @@ def _slide_columns(grp, s, cols):
         k = "_".join(grp.links)
         cols[f"s_{k}_m"], cols[f"vrel_{k}_m_s"], cols[f"arel_{k}_m_s2"] = s.s, s.v_rel, s.a_rel
         cols[f"acorx_{k}_m_s2"], cols[f"acory_{k}_m_s2"] = s.coriolis.x, s.coriolis.y
-        cols[f"acor_{k}_m_s2"] = np.hypot(s.coriolis.x, s.coriolis.y)
+        if cols.course:
+            np.hypot(s.coriolis.x, s.coriolis.y, out=cols.out(f"acor_{k}_m_s2"))
     elif grp.kind == "PRP":
         a, b = grp.links
         cols[f"s_{a}_m"], cols[f"v_{a}_m_s"], cols[f"a_{a}_m_s2"] = s.s1, s.v1, s.a1
@@ -337,12 +360,42 @@ def new_joints(grp) -> tuple:
     return (grp.joints[0],) if grp.kind == "PRP" else ()
 
 
-def _tables(spec, res, cf, res_force, positions):
-    import pandas as pd
+class _Sink:
+    """The columns of one chunk of positions, by name, in the order written: fresh arrays
+    (the first chunk, which tells the names) or the rows of the two preallocated blocks
+    (every later chunk, written in place).  ``course``: also the course tables' magnitudes
+    (|v|, |a|, |a_cor|, |R|)."""
 
+    def __init__(self, n, course=True, rows=None):
+        self.n, self.course, self.rows, self.cols = n, course, rows, {}
+
+    def __contains__(self, name):
+        return name in self.cols
+
+    def __setitem__(self, name, value):
+        self.out(name)[...] = value
+
+    def out(self, name):
+        """The array that column ``name`` of this chunk is written into."""
+        row = np.empty(self.n) if self.rows is None else self.rows[name]
+        self.cols[name] = row
+        return row
+
+
+def _solve_positions(spec, summary, phi):
+    """The chain at crank angles ``phi`` [rad]: motion, loads, kinetostatics:
+    ``(motion, reactions, (forces, moments), resistance)``."""
+    res = ch.solve(spec.mechanism, phi, spec.omega, spec.epsilon)
+    forces, moments, r = chain_loads(spec, res, summary)
+    cf = ch.kinetostatics(res, forces, moments, spec.gravity)
+    return res, cf, (forces, moments), r
+
+
+def _columns(spec, res, cf, res_force, K, F):
+    """One chunk's kinematics columns into ``K`` and force columns into ``F``
+    (:class:`_Sink`), in the order of the tables."""
     mech = spec.mechanism
-    n = len(res.phi)
-    K = {"phi_deg": np.degrees(res.phi)}
+    np.degrees(res.phi, out=K.out("phi_deg"))
     names = [mech.driver.joint] + list(mech.links[mech.driver.link].points)
     for grp in mech.groups:
         for ln in grp.links:
@@ -361,18 +414,19 @@ def _tables(spec, res, cf, res_force, positions):
     for grp, s in zip(mech.groups, res.solutions):
         _slide_columns(grp, s, K)
     for key, mu in transmission_angles(res).items():
-        K[f"mu_{key}_deg"] = np.degrees(mu)
-    F = {"phi_deg": K["phi_deg"]}
+        np.degrees(mu, out=K.out(f"mu_{key}_deg"))
+    F["phi_deg"] = K.cols["phi_deg"]
     seen = set()
     for (i, j), r in list(cf.reactions.items()):
         if frozenset((i, j)) in seen and (j, i) in cf.reactions:
             continue
         seen.add(frozenset((i, j)))
         tag = f"{i}_{j}"
-        if f"R_{tag}_N" in F:
+        if f"Rx_{tag}_N" in F:
             tag += f"_{r.joint or 'P'}"
         F[f"Rx_{tag}_N"], F[f"Ry_{tag}_N"] = r.force.x, r.force.y
-        F[f"R_{tag}_N"] = np.hypot(r.force.x, r.force.y)
+        if F.course:
+            np.hypot(r.force.x, r.force.y, out=F.out(f"R_{tag}_N"))
         if r.n is not None:
             F[f"Rn_{tag}_N"], F[f"Rt_{tag}_N"] = r.n, r.t
         if r.couple is not None:
@@ -380,25 +434,57 @@ def _tables(spec, res, cf, res_force, positions):
     if res_force is not None:
         F["F_res_N" if spec.output_kind == "slider" else "M_res_Nm"] = res_force
     F["M_drive_Nm"] = cf.M_drive
+
+
+def _tables(spec, summary, phi, positions, course_tables=True):
+    """The kinematics and force DataFrames at crank angles ``phi`` [rad], as the
+    four-bar's (:func:`linkage.analysis._table`): the chain solved chunk by chunk
+    (:data:`linkage.groups.CHUNK` positions), each chunk's columns written straight into
+    two preallocated float blocks (columns × positions) that become the frames' storage
+    without a copy.  Also returns ``(motion, reactions, loads)`` of the whole ``phi`` when
+    it is one chunk, else None."""
+    import pandas as pd
+
+    n = len(phi)
+    whole = None
+    for a in range(0, max(n, 1), g.CHUNK):
+        b = min(n, a + g.CHUNK)
+        res, cf, loads, r = _solve_positions(spec, summary, phi[a:b])
+        if a == 0:                        # the first chunk names the columns
+            K, F = _Sink(b, course_tables), _Sink(b, course_tables)
+            _columns(spec, res, cf, r, K, F)
+            kcols, fcols = list(K.cols), list(F.cols)
+            kblock, fblock = np.empty((len(kcols), n)), np.empty((len(fcols), n))
+            for block, sink in ((kblock, K), (fblock, F)):
+                for row, v in zip(block, sink.cols.values()):
+                    row[:b] = v
+            if b == n:
+                whole = (res, cf, loads)
+            continue
+        K = _Sink(b - a, course_tables, {c: row[a:b] for c, row in zip(kcols, kblock)})
+        F = _Sink(b - a, course_tables, {c: row[a:b] for c, row in zip(fcols, fblock)})
+        _columns(spec, res, cf, r, K, F)
     if positions is None:
         pos = pd.arrays.IntegerArray(np.zeros(n, np.int64), np.ones(n, bool))
     else:
         pos = pd.array(positions, dtype="Int64")
-    frames = []
-    for cols in (K, F):      # one float block per frame, its storage without a copy
-        block = np.empty((len(cols), n))
-        for row, v in zip(block, cols.values()):
-            row[:] = v
-        df = pd.DataFrame(block.T, columns=list(cols), copy=False)
-        df.insert(0, "position", pd.Series(pos, index=df.index, copy=True))
-        frames.append(df)
-    return frames[0], frames[1]
+    kin = pd.DataFrame(kblock.T, columns=kcols, copy=False)     # the block is the storage
+    frc = pd.DataFrame(fblock.T, columns=fcols, copy=False)
+    pos = pd.Series(pos, index=kin.index, copy=False)  # one array, shared copy-on-write
+    kin.insert(0, "position", pos)
+    frc.insert(0, "position", pos)
+    return kin, frc, whole
 
 
-def analyze_chain(spec, crank_angles_deg=None) -> ChainAnalysis:
+def analyze_chain(spec, crank_angles_deg=None, *, course_tables=True) -> ChainAnalysis:
     """Kinematics and kinetostatics of a chain spec at its plan of positions (position 1
     at the start of the working stroke, then every 360°/N in the direction of rotation),
     its ``crank_angles_deg`` or the ``crank_angles_deg`` given here [deg].
+
+    ``course_tables=False`` leaves out the magnitudes ``v_P_m_s``, ``a_P_m_s2``,
+    ``acor_…_m_s2`` and ``R_i_j_N`` (their components stay; large sweeps).  The tables
+    are built chunk by chunk (:data:`linkage.groups.CHUNK` positions) into two
+    preallocated blocks, the storage of the two DataFrames.
 
     Raises
     ------
@@ -425,11 +511,8 @@ def analyze_chain(spec, crank_angles_deg=None) -> ChainAnalysis:
         phi = np.mod(math.radians(summary.phi_working_start_deg)
                      + rot * np.arange(n) * (2.0 * math.pi / n), 2.0 * math.pi)
         positions = np.arange(1, n + 1)
-    res = ch.solve(mech, phi, spec.omega, spec.epsilon)
-    forces, moments, r = chain_loads(spec, res, summary)
-    cf = ch.kinetostatics(res, forces, moments, spec.gravity)
-    kin, frc = _tables(spec, res, cf, r, positions)
-    return ChainAnalysis(spec, kin, frc, summary, res, cf, (forces, moments))
+    kin, frc, whole = _tables(spec, summary, phi, positions, course_tables)
+    return ChainAnalysis(spec, kin, frc, summary, phi, _whole=whole)
 
 
 def full_turn_chain(spec, step_deg=1.0) -> ChainAnalysis:

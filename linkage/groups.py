@@ -33,8 +33,15 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+#: Crank positions per chunk of every table built from these routines
+#: (:func:`linkage.analyze` of a four-bar and of a chain).  Each numpy call costs ~0.4 µs
+#: however short its arrays, and the routines make a few hundred per chunk; past ~16k
+#: positions the intermediate arrays of a chunk (128 KB each) no longer stay in cache, and
+#: whole arrays of a million positions are memory-bound (benchmarks/bench_linkage.py).
+CHUNK = 16384
+
 __all__ = [
-    "Vec", "PointMotion", "LinkMotion", "Wrench",
+    "CHUNK", "Vec", "PointMotion", "LinkMotion", "Wrench",
     "cross", "dot",
     "crank", "rrr", "rrp", "RRRSolution", "RRPSolution",
     "inertia_load", "link_wrench", "rrr_reactions", "rrp_reactions", "driver_reactions",
