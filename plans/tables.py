@@ -30,7 +30,7 @@ def plans_table(plans):
         for kind, plan in pp.plans.items():
             for v in plan.vectors:
                 rows.append((_pos(pp), kind, v.name, v.length_mm, v.value, v.unit, v.scale))
-        for v in pp.lever.arrows():
+        for v in (pp.lever.arrows() if pp.lever is not None else []):
             rows.append((_pos(pp), "lever", v.name, v.length_mm, v.value, v.unit, v.scale))
     return pd.DataFrame(rows, columns=PLANS_COLUMNS)
 
