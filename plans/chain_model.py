@@ -41,7 +41,7 @@ from linkage import chain as ch
 from linkage import groups as g
 
 from .errors import PlanError, Problem, Text
-from .model import MAX_PLAN_MM, Plan, PositionPlans, Vector, round_scale
+from .model import MAX_PLAN_MM, Plan, PositionPlans, Vector, balancing_force, round_scale
 
 __all__ = ["build_chain_plans", "CHAIN_PLAN_KINDS"]
 
@@ -393,6 +393,87 @@ def _plan(kind, rows, polys, pts, mu, which):
     return P
 
 
+def _force_items(result, P: _Position):
+    """The force polygons of one position, in N: ``{kind: (items, polygons)}`` with
+    ``force_<i>_<j>`` for each group (links i, j by their numbers) and ``force_crank``;
+    items ``(name, quantity, label ru, label en, force, kind)`` head to tail."""
+    res, cf, mech = result.motion, result.reactions, result.spec.mechanism
+    gvec = -1j * result.spec.gravity
+    num = P.number
+    sub = lambda k: str(k).translate(_SUB)             # noqa: E731
+
+    def own(ln, later=()):
+        """G, Fu and the rest of the link's own loads: the resultant of its wrench less
+        the ``later`` groups' reactions on it (the crank's wrench holds none)."""
+        link, lm = mech.links[ln], res.links[ln]
+        G = link.mass * gvec
+        aS = P.c(g.coincident(lm, lm.origin.z + lm.e * complex(link.cg)).a)
+        Fu = -link.mass * aS
+        W = P.c(cf.wrenches[ln].force)
+        n = num[ln]
+        out = []
+        if G != 0:
+            out.append((f"G{n}", f"G{n}", f"G{sub(n)}", f"G{sub(n)}", G, "load"))
+        if Fu != 0:
+            out.append((f"Fu{n}", f"Fu{n}", f"Fи{sub(n)}", f"Fi{sub(n)}", Fu, "load"))
+        rest = W - G - Fu - sum(it[4] for it in later)
+        if abs(rest) > 1e-9 * max(1.0, abs(W)):
+            out.append((f"F{n}", f"F{n}", f"F{sub(n)}", f"F{sub(n)}", rest, "load"))
+        return out + list(later)
+
+    def reaction(by, on, r):
+        a, b = num.get(by, 0), num.get(on, 0)
+        return (f"R{a}{b}", f"R{a}{b}", f"R{sub(a)}{sub(b)}", f"R{sub(a)}{sub(b)}",
+                P.c(r.force), "reaction")
+
+    table = [r for _, r in cf.reactions.items()]
+    out = {}
+    for k, grp in enumerate(mech.groups):
+        l2, l3 = grp.links
+        mine = (l2, l3)
+        after = {ln for gr in mech.groups[k + 1:] for ln in gr.links}
+        later = {ln: [reaction(r.by, r.on, r) for r in table if r.on == ln and r.by in after]
+                 for ln in mine}
+        outer = {ln: [reaction(r.by, r.on, r) for r in table
+                      if r.on == ln and r.by not in mine and r.by not in after]
+                 for ln in mine}
+        inner = [reaction(r.by, r.on, r) for r in table if r.on == l2 and r.by == l3]
+        items2 = own(l2, later[l2]) + outer[l2]
+        items3 = own(l3, later[l3]) + outer[l3]
+        polys = [[(it[0], 1) for it in items2 + items3]]
+        out[f"force_{num[l2]}_{num[l3]}"] = (items2 + items3, polys, inner, len(items2))
+    d = mech.driver
+    items = own(d.link) + [reaction(r.by, r.on, r) for r in table
+                           if r.on == d.link and r.by not in (ch.FRAME, d.link)]
+    zO, zA = P.point(d.pivot)[0], P.point(d.joint)[0]
+    M = P.f(cf.M_drive)
+    Fb = balancing_force(M, zA - zO)
+    items.append(("Fb", "F_b", "Fур", "Fb", Fb, "balancing"))
+    R0 = [r for r in table if r.on == d.link and r.by == ch.FRAME][0]
+    # with Mур as the force Fур at A, the frame's reaction is R01 − Fур
+    items.append((f"R0{num[d.link]}", f"R0{num[d.link]}", f"R₀{sub(num[d.link])}",
+                  f"R₀{sub(num[d.link])}", P.c(R0.force) - Fb, "reaction"))
+    out["force_crank"] = (items, [[(it[0], 1) for it in items]], [], len(items))
+    return out
+
+
+def _force_plan(kind, items, polys, inner, n2, mu):
+    P = Plan(kind, mu, "N", {}, {}, [])
+    z = 0j
+    ends = [z]
+    for name, quantity, lru, len_, F, vkind in items:
+        P.vectors.append(Vector(kind, name, quantity, lru, len_, z, z + F / mu, abs(F), "N",
+                                mu, vkind))
+        z = z + F / mu
+        ends.append(z)
+    P.polygons = [list(p) for p in polys]
+    for name, quantity, lru, len_, F, vkind in inner:       # R32 closes link 2's forces
+        P.vectors.append(Vector(kind, name, quantity, lru, len_, ends[n2], ends[n2] + F / mu,
+                                abs(F), "N", mu, vkind))
+        P.polygons.append([(it[0], 1) for it in items[:n2]] + [(name, 1)])
+    return P
+
+
 def build_chain_plans(result, positions=None, *, scales=None):
     """Velocity and acceleration plans of the chosen positions of an analysed chain.
 
@@ -458,6 +539,17 @@ def build_chain_plans(result, positions=None, *, scales=None):
                 mu = max(round_scale(ref), round_scale(max(x1 - x0, y1 - y0) or 1.0,
                                                        MAX_PLAN_MM))
             plans[kind] = _plan(kind, rows_, polys, B.pts, mu, which)
+        for kind, (items, polys, inner, n2) in _force_items(result, P).items():
+            fixed = scales.get("force_dyad" if kind != "force_crank" else "force_crank")
+            if fixed:
+                mu = fixed
+            else:
+                unit = _force_plan(kind, items, polys, inner, n2, 1.0)
+                x0, y0, x1, y1 = unit.bbox()
+                ref = max(v.length_mm for v in unit.vectors) or 1.0
+                mu = max(round_scale(ref), round_scale(max(x1 - x0, y1 - y0) or 1.0,
+                                                       MAX_PLAN_MM))
+            plans[kind] = _force_plan(kind, items, polys, inner, n2, mu)
         angular = []
         geo = {}
         for j in list(res.mech.frame) + list(res.joints):

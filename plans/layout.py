@@ -299,7 +299,11 @@ def diagram_block(pp, kind, lang="ru") -> Block:
         items.append(placer.place(_label_candidates(v.start, v.end), lab, H_LABEL))
     bbox = _items_bbox(items)
     w = plan_words(lang)
-    title, mu, unit = w["title"][kind], w["mu"][kind], w["unit"][kind]
+    if kind in w["title"]:
+        title, mu, unit = w["title"][kind], w["mu"][kind], w["unit"][kind]
+    else:                                   # a chain's group: force_<i>_<j>
+        title = w["title"]["force_group"].format(links=",".join(kind.split("_")[1:]))
+        mu, unit = w["mu"]["force_dyad"], w["unit"]["force_dyad"]
     lines = [(title, H_TITLE),
              (f"{_where(pp, lang)}, {mu} = {fmt(plan.scale, lang)} {unit}", H_POINT)]
     if kind.startswith("force") and _degenerate(plan.vectors):
