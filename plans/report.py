@@ -140,7 +140,8 @@ def summary_lines(plans, size, sheets, lang="ru", errors=None):
     from crankbase.tolerances import format_snapped
 
     t = texts(lang)
-    lines = ["  " + t("plans.summary.plans",
+    chain = any(pp.lever is None for pp in plans)
+    lines = ["  " + t("plans.summary.plans_chain" if chain else "plans.summary.plans",
                       positions=t.n("plans.summary.positions", len(plans)),
                       sheets=t.n("plans.summary.sheets", sheets, size=size))]
     for pp in plans:

@@ -217,7 +217,8 @@ def test_cli_writes_the_chain_plans(tmp_path, monkeypatch):
     tables = rep.tables()
     assert f"{rep.name}_plans.csv" in tables and f"{rep.name}_lever.csv" not in tables
     df = tables[f"{rep.name}_plans.csv"]
-    assert set(df["plan"]) == {"velocity", "acceleration"}
+    assert set(df["plan"]) == {"velocity", "acceleration", "force_2_3", "force_4_5",
+                               "force_crank"}
     assert np.allclose(df["length_mm"], df["value"] / df["scale"])
     from plans.report import write_plans
 
@@ -236,3 +237,53 @@ def test_bad_position_is_a_keyed_error():
     with pytest.raises(PlanError) as e:
         build_chain_plans(res, [99])
     assert e.value.problems[0].text.key == "errors.plans.model.position_not_analysis"
+
+
+def test_force_polygons_are_the_chain_reactions(case):
+    """Each group's polygon: its links' G, Fu, loads and the reactions of the chain's
+    kinetostatics, closing; R32 closes link 2's own polygon; every reaction vector is
+    the chain's (direction too)."""
+    res, _, pps = case
+    cf, mech = res.reactions, res.spec.mechanism
+    num = {ln: k + 1 for k, ln in enumerate(mech.link_names)}
+    name = {0: "frame", **{v: k for k, v in num.items()}}
+    for pp in pps:
+        i = _row(res, pp)
+        for k, grp in enumerate(mech.groups):
+            kind = f"force_{num[grp.links[0]]}_{num[grp.links[1]]}"
+            plan = pp.plans[kind]
+            assert len(plan.polygons) == 2 and max(plan.closure()) < 1e-12
+            rs = [v for v in plan.vectors if v.kind == "reaction"]
+            assert len(rs) >= 3
+            for v in rs:
+                by, on = name[int(v.name[1])], name[int(v.name[2])]
+                R = cf.R(by, on)
+                exact = complex(np.broadcast_to(R.x, res.motion.phi.shape)[i],
+                                np.broadcast_to(R.y, res.motion.phi.shape)[i])
+                assert (v.end - v.start) * plan.scale == pytest.approx(exact, rel=1e-9,
+                                                                       abs=1e-9)
+        crank = pp.plans["force_crank"]
+        assert max(crank.closure()) < 1e-12
+
+
+def test_zhukovsky_lever_agrees_with_the_crank_polygon(case):
+    """Fур of the crank's polygon (from the kinetostatic Mур) equals Zhukovsky's lever's
+    (linkage.chain_lever, an independent power balance on the turned velocity plan)."""
+    from linkage.chain_lever import zhukovsky
+
+    res, _, pps = case
+    forces, moments = res.loads
+    lev = zhukovsky(res.motion, forces, moments, res.spec.gravity)
+    n = res.motion.phi.shape
+    for pp in pps:
+        i = _row(res, pp)
+        fb = pp.plans["force_crank"].vector("Fb")
+        F = (fb.end - fb.start) * fb.scale
+        d = complex(np.broadcast_to(lev.balancing_dir.x, n)[i],
+                    np.broadcast_to(lev.balancing_dir.y, n)[i])
+        assert F == pytest.approx(lev.balancing_force[i] * d, rel=1e-7, abs=1e-7)
+        zA, zO = pp.geometry["A"], pp.geometry["O"]
+        # Mур = Fур·l_OA with its sign (+ ccw), and the kinetostatic Mур
+        assert (F / d).real * abs(zA - zO) == pytest.approx(lev.M_balance[i], rel=1e-7)
+        assert lev.M_balance[i] == pytest.approx(
+            float(np.broadcast_to(res.reactions.M_drive, n)[i]), rel=1e-7)
