@@ -242,7 +242,8 @@ def test_plans_of_a_chain_are_drawn():
     rep = run_plans(example_path("shaper.toml"), plots=False, plans=[1])
     assert getattr(rep, "chain", False)
     assert [pp.position for pp in rep.plans] == [1]
-    assert set(rep.plans[0].plans) == {"velocity", "acceleration"}
+    assert set(rep.plans[0].plans) == {"velocity", "acceleration", "force_2_3", "force_4_5",
+                                       "force_crank"}
     # without plans the chain's own report comes back
     assert getattr(run_plans(example_path("shaper.toml"), plots=False), "chain", False)
 
