@@ -27,6 +27,15 @@ number in the structure formula, ``a₃`` the point of link 3 under A):
 The Coriolis acceleration is ``aᵏ = 2·ω_j × V_rel`` (``2ω_j·i·V_rel``), ω_j of the link that
 carries the guide or slot.
 
+Force polygons (plan kinds ``force_<i>_<j>``, links i, j by their numbers, and
+``force_crank``), head to tail at a round μF: each group's links' weights G, inertia
+forces Fu = −m·a_S, their other loads F (applied forces and the useful resistance), the
+reactions of the groups attached later (R43 …) and the outer pairs' reactions of
+:func:`linkage.chain.kinetostatics`; the group's sum closes, and the inner reaction R32
+closes link 2's own.  The crank's polygon takes Mур as the force Fур at A ⟂ OA
+(:func:`plans.model.balancing_force`), so its frame reaction is R01 − Fур, as for the
+four-bar.
+
 References
 ----------
 .. [1] Артоболевский И. И. Теория механизмов и машин. 4-е изд. М.: Наука, 1988, гл. 4.
@@ -45,7 +54,7 @@ from .model import MAX_PLAN_MM, Plan, PositionPlans, Vector, balancing_force, ro
 
 __all__ = ["build_chain_plans", "CHAIN_PLAN_KINDS"]
 
-#: The plans of a chain position.
+#: The kinematic plans of a chain position (then ``force_<i>_<j>`` …, ``force_crank``).
 CHAIN_PLAN_KINDS = ("velocity", "acceleration")
 _POLE = "_pole"
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
@@ -484,15 +493,16 @@ def build_chain_plans(result, positions=None, *, scales=None):
     positions : iterable of int or "all", optional
         Position numbers of the plan of positions (default: all).
     scales : dict, optional
-        Fixed ``velocity`` [(m/s)/mm] and ``acceleration`` [(m/s²)/mm] scales; missing
-        ones are the textbook's round scales (:func:`plans.model.round_scale`: pa and πa at
+        Fixed ``velocity`` [(m/s)/mm], ``acceleration`` [(m/s²)/mm], ``force_dyad`` (every
+        group's polygon) and ``force_crank`` [N/mm] scales; missing ones are the textbook's round scales (:func:`plans.model.round_scale`: pa and πa at
         most 150 mm, the whole plan at most :data:`plans.model.MAX_PLAN_MM`).
 
     Returns
     -------
     list of plans.PositionPlans
-        ``plans`` holds ``velocity`` and ``acceleration``; ``lever`` is None (the
-        chain's lever is :func:`linkage.chain_lever.zhukovsky`) and ``angular`` empty.
+        ``plans`` holds ``velocity``, ``acceleration``, ``force_<i>_<j>`` of each group
+        and ``force_crank``; ``lever`` is None (the chain's lever is
+        :func:`linkage.chain_lever.zhukovsky`) and ``angular`` empty.
     """
     spec = result.spec
     K = result.kinematics
