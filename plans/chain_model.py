@@ -177,12 +177,6 @@ def _build(P: _Position):
             B.absolute(k, joint)
         return k
 
-    count = [0]
-
-    def nname():
-        count[0] += 1
-        return f"n{n1 + count[0]}"
-
     def rot_rel(k_from, k_to, z_from, z_to, link, jf, jt):
         """Velocity and acceleration of ``k_to`` about ``k_from`` on a turning ``link``:
         V = iω·r, aⁿ = −ω²·r, aᵗ = iε·r; returns (velocity vector name, [a names])."""
@@ -197,7 +191,8 @@ def _build(P: _Position):
         nl = nk.translate(_SUB)
         lab1, len1 = (("π", "o′") if k_from == _POLE else
                       (B.pts[k_from][2], B.pts[k_from][2] + "′"))
-        names = B.chain_a(k_from, [(f"{k_from.lstrip('_')}_{nk}", q + "_n", lab1 + nl, len1 + nl + "′",
+        names = B.chain_a(k_from, [(f"{k_from.lstrip('_')}_{nk}", q + "_n", lab1 + nl,
+                                    len1 + nl + "′",
                                     -w * w * r, "normal"),
                                    (f"{nk}_{k_to}", q + "_t", nl + B.pts[k_to][2],
                                     nl + "′" + B.pts[k_to][2] + "′", 1j * e * r,
@@ -494,7 +489,8 @@ def build_chain_plans(result, positions=None, *, scales=None):
         Position numbers of the plan of positions (default: all).
     scales : dict, optional
         Fixed ``velocity`` [(m/s)/mm], ``acceleration`` [(m/s²)/mm], ``force_dyad`` (every
-        group's polygon) and ``force_crank`` [N/mm] scales; missing ones are the textbook's round scales (:func:`plans.model.round_scale`: pa and πa at
+        group's polygon) and ``force_crank`` [N/mm] scales; missing ones are the
+        textbook's round scales (:func:`plans.model.round_scale`: pa and πa at
         most 150 mm, the whole plan at most :data:`plans.model.MAX_PLAN_MM`).
 
     Returns

@@ -143,8 +143,7 @@ def test_a_wrong_coriolis_sign_does_not_close(shaper):
     _, pps = shaper
     ap = pps[0].plans["acceleration"]
     k = ap.vector("a_k_a3")
-    bad = [v if v.name != "a_k_a3" else type(v)(**{**vars(v), "end": 2 * k.start - k.end
-                                                   + (k.end - k.start) * 0})
+    bad = [v if v.name != "a_k_a3" else type(v)(**{**vars(v), "end": 2 * k.start - k.end})
            for v in ap.vectors]
     wrong = Plan(ap.kind, ap.scale, ap.unit, ap.points, ap.point_labels, bad, ap.polygons)
     assert max(wrong.closure()) > 0.1
