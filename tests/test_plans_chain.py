@@ -286,3 +286,15 @@ def test_zhukovsky_lever_agrees_with_the_crank_polygon(case):
         assert (F / d).real * abs(zA - zO) == pytest.approx(lev.M_balance[i], rel=1e-7)
         assert lev.M_balance[i] == pytest.approx(
             float(np.broadcast_to(res.reactions.M_drive, n)[i]), rel=1e-7)
+
+
+def test_summary_lines_in_each_language(shaper):
+    from plans.report import summary_lines
+
+    _, pps = shaper
+    ru = summary_lines(pps, "A1", 1, "ru")
+    en = summary_lines(pps, "A1", 1, "en")
+    assert len(ru) == len(en) == 1 + len(pps)
+    assert "0.005" in ru[1] and "0.03" in ru[1]          # μV and μa of position 2
+    assert not [s for s in en if re.search("[а-яА-ЯёЁ]", s)]
+    assert not [s for s in ru if re.search(r"\b(plan|position|velocity|lever)\b", s)]
