@@ -105,6 +105,7 @@ class _Builder:
         self.pts = {}
         self.vel, self.acc = [], []          # (name, quantity, lru, len, start, end, kind)
         self.vpoly, self.apoly = [], []
+        self.angular = []        # (link number, V segment, aᵗ segment, l, ω, ε)
 
     def _key(self, joint, link=None):
         k = joint.lower() + ("" if link is None else str(self.P.number[link]))
@@ -188,6 +189,8 @@ def _build(P: _Position):
             k_from = _POLE
         vn = B.rel_v(k_from, k_to, 1j * w * r, q) if k_to in B.pts else None
         nk = f"n{P.number[link]}"
+        # ω = V_rel/l from the relative vector (pb itself from a frame pivot), ε = aᵗ/l
+        B.angular.append((P.number[link], vn or f"p{k_to}", f"{nk}_{k_to}", abs(r), w, e))
         nl = nk.translate(_SUB)
         lab1, len1 = (("π", "o′") if k_from == _POLE else
                       (B.pts[k_from][2], B.pts[k_from][2] + "′"))
@@ -498,7 +501,8 @@ def build_chain_plans(result, positions=None, *, scales=None):
     list of plans.PositionPlans
         ``plans`` holds ``velocity``, ``acceleration``, ``force_<i>_<j>`` of each group
         and ``force_crank``; ``lever`` is None (the chain's lever is
-        :func:`linkage.chain_lever.zhukovsky`) and ``angular`` empty.
+        :func:`linkage.chain_lever.zhukovsky`) and ``angular`` the ω and ε of every
+        turning link of the groups read off the plans (ω = V_rel/l, ε = aᵗ/l).
     """
     spec = result.spec
     K = result.kinematics
@@ -557,6 +561,15 @@ def build_chain_plans(result, positions=None, *, scales=None):
                                                        MAX_PLAN_MM))
             plans[kind] = _force_plan(kind, items, polys, inner, n2, mu)
         angular = []
+        for n, vseg, aseg, length, w, e in B.angular:
+            for q, kind, seg, exact, unit in ((f"omega{n}", "velocity", vseg, w, "rad/s"),
+                                              (f"eps{n}", "acceleration", aseg, e, "rad/s2")):
+                p = plans[kind]
+                vec = p.vector(seg)
+                angular.append({"quantity": q, "plan": kind, "segment": seg,
+                                "link_length_m": length, "length_mm": vec.length_mm,
+                                "value": vec.length_mm * p.scale / length,
+                                "signed_value": exact, "unit": unit, "scale": p.scale})
         geo = {}
         for j in list(res.mech.frame) + list(res.joints):
             geo[j] = P.point(j)[0]

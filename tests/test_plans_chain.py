@@ -298,3 +298,20 @@ def test_summary_lines_in_each_language(shaper):
     assert "0.005" in ru[1] and "0.03" in ru[1]          # μV and μa of position 2
     assert not [s for s in en if re.search("[а-яА-ЯёЁ]", s)]
     assert not [s for s in ru if re.search(r"\b(plan|position|velocity|lever)\b", s)]
+
+
+def test_angular_values_read_off_the_plans(case):
+    """ω = V_rel/l and ε = aᵗ/l of every turning group link, read off the segments, are the
+    chain's |omega_<link>| and |eps_<link>| columns."""
+    res, _, pps = case
+    K = res.kinematics
+    names = res.spec.mechanism.link_names
+    for pp in pps:
+        i = _row(res, pp)
+        assert pp.angular
+        for a in pp.angular:
+            n = int(a["quantity"].lstrip("omegaps"))
+            col = ("omega_{}_rad_s" if a["quantity"].startswith("omega")
+                   else "eps_{}_rad_s2").format(names[n - 1])
+            assert a["signed_value"] == pytest.approx(K[col].iat[i], rel=1e-12)
+            assert a["value"] == pytest.approx(abs(K[col].iat[i]), rel=1e-9)
