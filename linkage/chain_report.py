@@ -132,7 +132,7 @@ def write_chain_workbook(result, path, lang="ru"):
 # ----------------------------------------------------------------------------- figures
 
 
-def _segments(mech, res):
+def link_segments(mech, res):
     """Per link, the names (or global arrays) of the points its drawing joins, from its
     origin: ``[(link, origin Vec, [Vec ...])]``."""
     out = []
@@ -161,7 +161,10 @@ def _segments(mech, res):
     return out
 
 
-def _sliders(mech, res):
+_segments = link_segments
+
+
+def slider_outlines(mech, res):
     """(centre, direction) of every block and slider drawn as a small rectangle."""
     out = []
     for grp in mech.groups:
@@ -188,7 +191,7 @@ def plot_chain_plan(result, ax=None, lang="en"):
         fig = Figure(figsize=(9.0, 7.5), layout="tight")
         ax = fig.add_subplot()
     mech, res = result.spec.mechanism, result.motion
-    segs = _segments(mech, res)
+    segs = link_segments(mech, res)
     n = len(res.phi)
     span = []
     for _, o, pts in segs:
@@ -207,7 +210,7 @@ def plot_chain_plan(result, ax=None, lang="en"):
             if len(ring) > 1:
                 ax.plot([q.real for q in ring], [q.imag for q in ring], color=col, lw=lw,
                         zorder=3 if first else 2)
-        for c, e in _sliders(mech, res):
+        for c, e in slider_outlines(mech, res):
             zc = complex(np.asarray(c, complex).reshape(-1)[k if np.size(c) > 1 else 0])
             ze = complex(np.asarray(e, complex).reshape(-1)[k if np.size(e) > 1 else 0])
             w = 0.05 * size

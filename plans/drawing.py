@@ -114,7 +114,10 @@ def _mm_figure(width, height):
 
 
 def position_blocks(pp, lang="ru"):
-    """The five diagrams of a position, in the course project's order."""
+    """The diagrams of a position, in the course project's order: five for a four-bar or
+    a crank-slider; a chain's (no lever) the plans it has."""
+    if pp.lever is None:
+        return [diagram_block(pp, kind, lang) for kind in pp.plans]
     return [diagram_block(pp, "velocity", lang), diagram_block(pp, "acceleration", lang),
             lever_block(pp, lang), diagram_block(pp, "force_dyad", lang),
             diagram_block(pp, "force_crank", lang)]
@@ -289,9 +292,15 @@ def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
     for pp in plans:
         hit = [i for i in range(len(K)) if abs(K["phi_deg"].iat[i] - pp.phi_deg) < 1e-9]
         chosen += hit[:1]
-    blocks = [positions_block(result, chosen, lang, longest_mm=0.3 * W)]
-    for pp in plans:
-        blocks += position_blocks(pp, lang)
+    if getattr(result, "motion", None) is not None:          # a chain
+        from .layout import chain_positions_block
+
+        blocks = [chain_positions_block(result, chosen, lang, longest_mm=0.3 * W)]
+    else:
+        blocks = [positions_block(result, chosen, lang, longest_mm=0.3 * W)]
+    per = [position_blocks(pp, lang) for pp in plans]
+    for group in per:
+        blocks += group
     x0, x1 = 20.0 + GAP, W - 5.0 - GAP
     y0, y1 = 5.0 + GAP, H - 5.0 - GAP
     tb_left, tb_top = W - 5.0 - 185.0, 5.0 + 55.0
@@ -339,8 +348,8 @@ def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
     pending = blocks[:1]                               # the plan of positions
     k = 0
     while k < len(plans):
-        mine = blocks[1 + 5 * k: 6 + 5 * k]
-        nxt = blocks[6 + 5 * k: 11 + 5 * k]
+        mine = per[k]
+        nxt = per[k + 1] if k + 1 < len(per) else []
         if fits_in(pending + mine, x0, x1):
             if nxt and fits_in(pending + mine, x0, xm) and fits_in(nxt, xm, x1):
                 make([(pending + mine, x0, xm), (nxt, xm, x1)])

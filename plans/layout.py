@@ -216,8 +216,11 @@ def vector_label(v, lang):
     q = v.quantity
     if q in _QUANTITY_RU:
         return _QUANTITY_RU[q]
-    kind, point = q.split("_", 1)               # V_S3, a_E
-    return kind + point.translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
+    kind, point = q.split("_", 1)               # V_S3, a_E; a chain's a_ED_n, a_A3A2_k
+    sup = ""
+    if point[-2:] in ("_n", "_t", "_k", "_r"):
+        point, sup = point[:-2], {"n": "ⁿ", "t": "ᵗ", "k": "ᵏ", "r": "ʳ"}[point[-1]]
+    return kind + sup + point.translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
 
 
 def plan_words(lang):
@@ -296,7 +299,11 @@ def diagram_block(pp, kind, lang="ru") -> Block:
         items.append(placer.place(_label_candidates(v.start, v.end), lab, H_LABEL))
     bbox = _items_bbox(items)
     w = plan_words(lang)
-    title, mu, unit = w["title"][kind], w["mu"][kind], w["unit"][kind]
+    if kind in w["title"]:
+        title, mu, unit = w["title"][kind], w["mu"][kind], w["unit"][kind]
+    else:                                   # a chain's group: force_<i>_<j>
+        title = w["title"]["force_group"].format(links=",".join(kind.split("_")[1:]))
+        mu, unit = w["mu"]["force_dyad"], w["unit"]["force_dyad"]
     lines = [(title, H_TITLE),
              (f"{_where(pp, lang)}, {mu} = {fmt(plan.scale, lang)} {unit}", H_POINT)]
     if kind.startswith("force") and _degenerate(plan.vectors):
@@ -444,6 +451,88 @@ def positions_block(result, chosen, lang="ru", longest_mm=220.0) -> Block:
     for z, name in [(0j, "O")] + ([(C / mu, "C")] if C is not None else []):
         items.append(placer.place([z - 6 + 2j, z + 6 + 2j, z - 6 - 1j, z + 6 - 1j], name,
                                   H_POINT))
+    bbox = _items_bbox(items)
+    w = plan_words(lang)
+    title, mul, unit = w["title"]["positions"], w["mu"]["positions"], w["unit"]["positions"]
+    return _titled(items, bbox, [(title, H_TITLE), (f"{mul} = {fmt(mu, lang)} {unit}", H_POINT)],
+                   "positions")
+
+
+def chain_positions_block(result, chosen, lang="ru", longest_mm=220.0) -> Block:
+    """The plan of positions of a chain (:mod:`linkage.chain`): every link at every
+    analysed position (thin lines), at the chosen rows (main lines, the joints lettered),
+    the blocks and sliders as small rectangles, the frame's joints hatched, the positions
+    numbered at the crank pin; at the round length scale μl that keeps it within
+    ``longest_mm``."""
+    import numpy as np
+
+    from linkage.chain_report import link_segments, slider_outlines
+
+    from .model import round_scale
+
+    mech, res = result.spec.mechanism, result.motion
+    n = len(res.phi)
+
+    def at(z, k):
+        z = np.asarray(z, complex) if not hasattr(z, "x") else (
+            np.broadcast_to(np.asarray(z.x, float), (n,))
+            + 1j * np.broadcast_to(np.asarray(z.y, float), (n,)))
+        return complex(np.broadcast_to(z, (n,))[k])
+
+    segs_all = link_segments(mech, res)
+    zs = [at(p, k) for _, o, pts in segs_all for p in [o] + pts for k in range(n)]
+    zs += list(mech.frame.values())
+    zs = np.array(zs, complex)
+    extent = max(np.ptp(zs.real), np.ptp(zs.imag)) or 1.0
+    mu = round_scale(extent, longest_mm)
+    items, segs = [], []
+    chosen = set(chosen)
+    pos = result.kinematics["position"]
+    for k in range(n):
+        layer = "MAIN" if k in chosen else "THIN"
+        for _, o, pts in segs_all:
+            ring = [at(p, k) / mu for p in [o] + pts]
+            if len(ring) > 2:
+                ring.append(ring[0])
+            for z1, z2 in zip(ring[:-1], ring[1:]):
+                if abs(z2 - z1) > 1e-9:
+                    items.append(Line(z1, z2, layer))
+                    segs.append((z1, z2))
+        for c, e in slider_outlines(mech, res):
+            zc, ze = at(c, k) / mu, at(e, k)
+            ze = ze / abs(ze) if abs(ze) else 1
+            corners = [zc + ze * complex(sx * 4.0, sy * 2.5)
+                       for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+            for j in range(4):
+                items.append(Line(corners[j], corners[(j + 1) % 4], layer))
+                segs.append((corners[j], corners[(j + 1) % 4]))
+        items.append(Circle(at(res.point(mech.driver.joint).z, k) / mu, 0.8, layer))
+    for name, z in mech.frame.items():
+        z = complex(z) / mu
+        items.append(Circle(z, 1.2, "MAIN"))
+        items.append(Line(z - 3 - 3j, z + 3 - 3j, "MAIN"))
+        for j in range(4):
+            items.append(Line(z - 3 + 1.5 * j - 3j, z - 4.5 + 1.5 * j - 4.5j, "THIN"))
+        segs.append((z - 3 - 3j, z + 3 - 3j))
+    placer = _Placer(segs)
+    zO = complex(mech.frame[mech.driver.pivot]) / mu
+    for k in range(n):
+        lab = str(pos.iat[k]) if pos.notna().iat[k] else str(k + 1)
+        zA = at(res.point(mech.driver.joint).z, k) / mu
+        out = (zA - zO) / abs(zA - zO) if abs(zA - zO) > 0 else 1
+        items.append(placer.place([zA + out * d for d in (3.5, 5.5, 8.0)]
+                                  + _point_candidates(zA, 4.0), lab, H_POINT))
+    for name, z in mech.frame.items():
+        z = complex(z) / mu
+        items.append(placer.place([z - 6 + 2j, z + 6 + 2j, z - 6 - 1j, z + 6 - 1j], name,
+                                  H_POINT))
+    first = min(chosen) if chosen else 0
+    names = [j for j in res.joints if j not in mech.frame]
+    for ln in mech.link_names:
+        names += [p for p in mech.links[ln].points if p not in names]
+    for j in dict.fromkeys(names):
+        z = at(res.point(j).z, first) / mu
+        items.append(placer.place(_point_candidates(z, 3.5), j, H_POINT))
     bbox = _items_bbox(items)
     w = plan_words(lang)
     title, mul, unit = w["title"]["positions"], w["mu"]["positions"], w["unit"]["positions"]

@@ -71,10 +71,11 @@ class PlansReport(LinkageReport):
 
         n = self.name
         st = student_table(self.plans)
-        out.update({f"{n}_plans.csv": plans_table(self.plans),
-                    f"{n}_lever.csv": lever_table(self.plans),
-                    f"{n}_lever_forces.csv": lever_forces_table(self.plans),
-                    f"{n}_student_table.csv": st})
+        out[f"{n}_plans.csv"] = plans_table(self.plans)
+        if all(pp.lever is not None for pp in self.plans):   # a chain's: no lever
+            out.update({f"{n}_lever.csv": lever_table(self.plans),
+                        f"{n}_lever_forces.csv": lever_forces_table(self.plans)})
+        out[f"{n}_student_table.csv"] = st
         if self.measured is not None:
             out[f"{n}_plan_errors.csv"] = error_table(st, self.measured)
         return out
@@ -114,6 +115,14 @@ class PlansReport(LinkageReport):
         errors = (self.tables()[f"{self.name}_plan_errors.csv"]
                   if self.measured is not None else None)
         return summary_lines(self.plans, self.sheet, sheets, lang, errors=errors)
+
+
+@dataclass
+class ChainPlansReport(PlansReport):
+    """A :class:`PlansReport` of a chain spec: the chain's files (as
+    :class:`linkage.study.ChainReport`) and its velocity and acceleration plans."""
+
+    chain = True
 
 
 def _positions(plans, problems):
@@ -202,11 +211,16 @@ def run_study(spec, *, step=1.0, plots=True, plans=None, sheet="A1", measured=No
         raise SpecError(problems)
 
     base = run_linkage(spec, step=step, plots=plots)
-    if getattr(base, "chain", False):           # a chain: its plans are not drawn yet
-        if plans is not None:
-            raise SpecError([Problem("plans", Text("errors.plans.study.chain"))])
-        return base
     plan_list = table = measured_source = None
+    if getattr(base, "chain", False):           # a chain: velocity and acceleration plans
+        if plans is None:
+            return base
+        from .chain_model import build_chain_plans
+        from .drawing import title_fields
+
+        title_fields(base.spec)
+        plan_list = build_chain_plans(base.result, positions, scales=scales)
+        return ChainPlansReport(**vars(base), plans=plan_list, sheet=sheet)
     if plans is not None:
         from . import build_plans
         from .drawing import title_fields

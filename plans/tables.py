@@ -30,7 +30,7 @@ def plans_table(plans):
         for kind, plan in pp.plans.items():
             for v in plan.vectors:
                 rows.append((_pos(pp), kind, v.name, v.length_mm, v.value, v.unit, v.scale))
-        for v in pp.lever.arrows():
+        for v in (pp.lever.arrows() if pp.lever is not None else []):
             rows.append((_pos(pp), "lever", v.name, v.length_mm, v.value, v.unit, v.scale))
     return pd.DataFrame(rows, columns=PLANS_COLUMNS)
 
@@ -93,8 +93,9 @@ def student_table(plans):
                 rows.append((_pos(pp), kind, v.name, v.label_ru, v.label_en, v.quantity,
                              v.length_mm, v.scale, v.value, v.unit))
         for a in pp.angular:
-            lab = {"omega3": ("ω₃", "ω₃"), "omega4": ("ω₄", "ω₄"), "eps3": ("ε₃", "α₃"),
-                   "eps4": ("ε₄", "α₄")}[a["quantity"]]
+            q = a["quantity"]                # omega3, eps4 … (a chain's: any link number)
+            n = q.lstrip("omegaps").translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
+            lab = ("ω" + n, "ω" + n) if q.startswith("omega") else ("ε" + n, "α" + n)
             rows.append((_pos(pp), a["plan"], a["segment"], lab[0], lab[1], a["quantity"],
                          a["length_mm"], a["scale"] / a["link_length_m"], a["value"],
                          a["unit"]))

@@ -236,13 +236,14 @@ def test_chain_figures_and_workbook_read_cleanly(name, lang, tmp_path):
     assert [c.value for c in ws[2]][:len(res.kinematics.columns)] == list(res.kinematics.columns)
 
 
-def test_plans_of_a_chain_are_a_keyed_error():
+def test_plans_of_a_chain_are_drawn():
     from plans.study import run_study as run_plans
 
-    with pytest.raises(SpecError) as e:
-        run_plans(example_path("shaper.toml"), plots=False, plans=[1])
-    assert [p.key for p in e.value.problems] == ["plans"]
-    assert e.value.problems[0].text.key == "errors.plans.study.chain"
+    rep = run_plans(example_path("shaper.toml"), plots=False, plans=[1])
+    assert getattr(rep, "chain", False)
+    assert [pp.position for pp in rep.plans] == [1]
+    assert set(rep.plans[0].plans) == {"velocity", "acceleration", "force_2_3", "force_4_5",
+                                       "force_crank"}
     # without plans the chain's own report comes back
     assert getattr(run_plans(example_path("shaper.toml"), plots=False), "chain", False)
 
