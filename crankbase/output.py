@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import OutputError, Text, os_reason
+from .errors import OutputError, Problem, SpecError, Text, os_reason
 
 __all__ = ["atomic_path", "staged_output", "recover_output", "verify_report", "read_manifest",
            "write_csv", "check_not_input", "ensure_finite", "full_precision_xlsx",
@@ -593,3 +593,41 @@ def save_figure(fig, stem, formats=("png", "svg"), dpi=110, tight=False) -> list
             fig.savefig(tmp, format=fmt, dpi=dpi, **extra)
         paths.append(path)
     return paths
+
+
+#: File formats a report's figures can be saved in (:func:`figure_formats`).
+FIGURE_FORMATS = ("png", "svg", "pdf")
+
+
+def figure_formats(formats) -> tuple:
+    """``formats`` (one of :data:`FIGURE_FORMATS` or a sequence of them, each once) as a
+    tuple.
+
+    Raises
+    ------
+    SpecError
+        Named ``formats``: empty, unknown or repeated.
+    """
+    if isinstance(formats, str):
+        formats = (formats,)
+    formats = tuple(formats)
+    bad = [f for f in formats if f not in FIGURE_FORMATS]
+    if not formats or bad or len(set(formats)) != len(formats):
+        raise SpecError(Problem("formats", Text("errors.output.formats",
+                                                {"formats": formats,
+                                                 "items": ", ".join(FIGURE_FORMATS)})))
+    return formats
+
+
+def output_folder(out) -> Path:
+    """``out`` as a :class:`~pathlib.Path` of a report folder (it may not exist yet).
+
+    Raises
+    ------
+    SpecError
+        Named ``out``: it exists and is not a folder.
+    """
+    out = Path(out)
+    if out.exists() and not out.is_dir():
+        raise SpecError(Problem("out", Text("errors.output.not_a_folder", {"out": out})))
+    return out

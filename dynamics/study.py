@@ -23,7 +23,6 @@ import contextlib
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from crankbase.errors import Text
 from .results import MOTION_COLUMNS, DynamicsReport
 
 __all__ = ["DynamicsReport", "WrittenReport", "run_study", "write_report", "summary_lines",
@@ -94,18 +93,16 @@ def write_report(report: DynamicsReport, out, lang="ru",
     OutputError
         A table holds a non-finite number, or an output is an input file.
     """
-    from crankbase.errors import Problem, SpecError
     from crankbase.output import (check_not_input, ensure_finite, full_precision_xlsx,
                                   save_figure, staged_output, write_csv)
+    from crankbase.output import output_folder
     from crankbase.validation import check_lang
 
     from .plots import PLOT_NAMES, dynamics_figures
     from .report import build_workbook
 
     check_lang(lang)
-    out = Path(out)
-    if out.exists() and not out.is_dir():
-        raise SpecError(Problem("out", Text("errors.dynamics.study.exists_and_not", {"out": out})))
+    out = output_folder(out)
     tables = report.tables()
     what = {"motion.csv": "motion table", "forces_true_motion.csv":
             "forces under the true motion", "startup.csv": "start-up"}

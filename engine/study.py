@@ -29,12 +29,10 @@ from pathlib import Path
 from types import MappingProxyType
 
 from crankbase.errors import Problem, SpecError, Text
+from crankbase.output import FIGURE_FORMATS    # the formats write_report takes
 
 __all__ = ["EngineReport", "BearingReport", "ReportFiles", "run_study", "write_report", "report_workbook",
            "with_options", "output_names", "FIGURE_FORMATS"]
-
-#: File formats :func:`write_report` can save the figures in.
-FIGURE_FORMATS = ("png", "svg", "pdf")
 
 
 @dataclass(frozen=True)
@@ -313,18 +311,6 @@ def _bearings(spec, table, fine, inputs, whole) -> BearingReport:
                          plot_names=names)
 
 
-def _formats(formats) -> tuple:
-    if isinstance(formats, str):
-        formats = (formats,)
-    formats = tuple(formats)
-    bad = [f for f in formats if f not in FIGURE_FORMATS]
-    if not formats or bad or len(set(formats)) != len(formats):
-        raise SpecError(Problem("formats", Text("errors.engine.study.give_one_or",
-                                                {"formats": formats,
-                                                 "items": ", ".join(FIGURE_FORMATS)})))
-    return formats
-
-
 def report_workbook(report: EngineReport, lang: str = "ru"):
     """The report's workbook, built in memory (not saved): the template's sheets of the
     cylinder, the whole engine's sheets, the bearing sheets when the report has them, A4
@@ -382,7 +368,8 @@ def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "s
     """
     import matplotlib
 
-    from crankbase.output import check_not_input, save_figure, staged_output, write_csv
+    from crankbase.output import (check_not_input, figure_formats, output_folder, save_figure,
+                                  staged_output, write_csv)
     from crankbase.validation import check_lang
 
     from .plots.bearing import BEARING_PLOT_NAMES
@@ -392,10 +379,8 @@ def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "s
     from .report.workbook import save_workbook
 
     check_lang(lang)
-    formats = _formats(formats)
-    out = Path(out)
-    if out.exists() and not out.is_dir():
-        raise SpecError(Problem("out", Text("errors.engine.study.exists_and_not", {"out": out})))
+    formats = figure_formats(formats)
+    out = output_folder(out)
     name, result, whole = report.name, report.cylinder, report.whole
     files = report.file_names
     pdfs = output_names(name, DRAWING_NAMES) if drawing else {}

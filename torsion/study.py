@@ -32,6 +32,7 @@ from types import MappingProxyType
 import numpy as np
 
 from crankbase.errors import Problem, SpecError, Text
+from crankbase.output import FIGURE_FORMATS    # the formats write_report takes
 
 __all__ = ["TorsionStudy", "Chain", "TorsionReport", "TorsionFiles", "load", "build_chain",
            "run_study", "write_report", "TABLE_NAMES", "FIGURE_FORMATS"]
@@ -40,8 +41,6 @@ __all__ = ["TorsionStudy", "Chain", "TorsionReport", "TorsionFiles", "load", "bu
 #: written; a free-vibration report has the first two only.
 TABLE_NAMES = ("torsion_modes.csv", "holzer.csv", "torque_harmonics.csv",
                "critical_speeds.csv", "torsion_response.csv")
-#: File formats the figures can be saved in.
-FIGURE_FORMATS = ("png", "svg", "pdf")
 
 
 @dataclass(frozen=True)
@@ -377,8 +376,6 @@ def run_study(study, *, source=None) -> TorsionReport:
         The chain does not fit the engine (:func:`build_chain`), or no ``[torsion]``; a
         chain with throws but no ``speed_range_rpm``.
     """
-    import pandas as pd
-
     from crankbase.output import ensure_finite, safe_name
 
     from .chain import damping_matrix, holzer_table, natural_modes
@@ -466,18 +463,6 @@ class TorsionFiles:
         return len(self.paths)
 
 
-def _formats(formats) -> tuple:
-    if isinstance(formats, str):
-        formats = (formats,)
-    formats = tuple(formats)
-    bad = [f for f in formats if f not in FIGURE_FORMATS]
-    if not formats or bad or len(set(formats)) != len(formats):
-        raise SpecError(Problem("formats", Text("errors.engine.study.give_one_or",
-                                                {"formats": formats,
-                                                 "items": ", ".join(FIGURE_FORMATS)})))
-    return formats
-
-
 def output_paths(report: TorsionReport, out, formats=("png", "svg")) -> dict:
     """``{"tables": …, "workbook": …, "plots": …}``: the paths :func:`write_report` (or
     an engine report with ``[torsion]``) writes into ``out``."""
@@ -531,15 +516,12 @@ def write_report(report: TorsionReport, out, lang: str = "ru", formats=("png", "
     """
     import matplotlib
 
-    from crankbase.output import check_not_input, staged_output
+    from crankbase.output import check_not_input, figure_formats, output_folder, staged_output
     from crankbase.validation import check_lang
 
     check_lang(lang)
-    formats = _formats(formats)
-    out = Path(out)
-    if out.exists() and not out.is_dir():
-        raise SpecError(Problem("out", Text("errors.engine.study.exists_and_not",
-                                            {"out": out})))
+    formats = figure_formats(formats)
+    out = output_folder(out)
     paths = output_paths(report, out, formats)
     inputs = [*inputs, *([report.source] if report.source is not None else [])]
     check_not_input([paths["workbook"], *paths["tables"], *paths["plots"]], inputs)
