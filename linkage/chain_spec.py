@@ -23,6 +23,7 @@ from crankbase.errors import Text
 from crankbase.schema import SpecReader
 
 from . import chain as ch
+from .loads import LoadSpec
 from .schema import ANALYSIS, CHAIN_MECHANISM, CHAIN_SCHEMA, GROUP, LINK, LOAD
 
 __all__ = ["ChainLoad", "ChainSpec", "load_chain_spec", "output_kind", "is_chain"]
@@ -31,22 +32,9 @@ __all__ = ["ChainLoad", "ChainSpec", "load_chain_spec", "output_kind", "is_chain
 _LENGTHS = {"RRR": 2, "RRP": 1, "RPR": 0, "PRP": 0, "RPP": 0}
 
 
-@dataclass(frozen=True)
-class ChainLoad:
-    """One external load on a link of a chain (as :class:`linkage.spec.LoadSpec`):
-    ``kind`` ``"force"`` (global ``force`` [N] at the local point ``at`` [m]), ``"moment"``
-    [N·m, + ccw] or ``"resistance"`` (``resistance`` [N] on a slider, [N·m] on a rocker,
-    opposing the output's motion in ``stroke``, over ``span`` [m or rad] from the
-    stroke's start)."""
-
-    link: str
-    kind: str
-    at: complex = 0j
-    force: complex = 0j
-    moment: float = 0.0
-    resistance: float = 0.0
-    stroke: str = "working"
-    span: float | None = None
+#: One external load on a link of a chain: the four-bar's :class:`linkage.loads.LoadSpec`
+#: (``kind`` "force", "moment" or "resistance" on the link named ``link``).
+ChainLoad = LoadSpec
 
 
 @dataclass(frozen=True)

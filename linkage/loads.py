@@ -150,3 +150,24 @@ def external_loads(spec, mech, kin, cycle: StrokeCycle):
             else:
                 forces[ld.link].append((Vec.of(mech.u) * value, kin["dyad"].B.z))
     return forces, moments, res
+
+
+@dataclass(frozen=True)
+class LoadSpec:
+    """One external load.
+
+    ``kind`` is ``"force"`` (global components ``force`` [N] at local point ``at`` [m]),
+    ``"moment"`` (``moment`` [N·m], + ccw) or ``"resistance"`` (magnitude ``resistance``
+    [N·m] on a rocker or [N] on a slider, always opposing the link's motion, only in
+    ``stroke`` and, if ``span`` is set, only over that much swing [rad] or travel [m] from
+    the start of the stroke).
+    """
+
+    link: str
+    kind: str
+    at: complex = 0j
+    force: complex = 0j
+    moment: float = 0.0
+    resistance: float = 0.0
+    stroke: str = "working"
+    span: float | None = None

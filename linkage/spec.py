@@ -15,6 +15,7 @@ from crankbase.errors import SpecError, Text
 from crankbase.schema import SpecReader
 from crankbase.validation import read_toml, rows_problem
 
+from .loads import LoadSpec  # one load's spec: shared with linkage.chain_spec
 from .schema import (ANALYSIS, KINDS, LINK, LINK_NAMES, LOAD, MECHANISM, SCHEMA,
                      WORKING_STROKES)
 
@@ -44,27 +45,6 @@ class LinkSpec:
     inertia: float = 0.0
     cg: complex = 0j
     points: MappingProxyType = field(default_factory=lambda: MappingProxyType({}))
-
-
-@dataclass(frozen=True)
-class LoadSpec:
-    """One external load.
-
-    ``kind`` is ``"force"`` (global components ``force`` [N] at local point ``at`` [m]),
-    ``"moment"`` (``moment`` [N·m], + ccw) or ``"resistance"`` (magnitude ``resistance``
-    [N·m] on a rocker or [N] on a slider, always opposing the link's motion, only in
-    ``stroke`` and, if ``span`` is set, only over that much swing [rad] or travel [m] from
-    the start of the stroke).
-    """
-
-    link: str
-    kind: str
-    at: complex = 0j
-    force: complex = 0j
-    moment: float = 0.0
-    resistance: float = 0.0
-    stroke: str = "working"
-    span: float | None = None
 
 
 @dataclass(frozen=True)
