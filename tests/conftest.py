@@ -162,3 +162,30 @@ def cli_report(tmp_path_factory):
     for key, rep in cache.items():
         if rep.rc == 0:
             verify_report(rep.folder)       # no test altered a shared report
+
+
+@pytest.fixture
+def unrendered_figures(monkeypatch):
+    """Figures saved without being drawn: ``Figure.savefig`` writes a short text naming
+    the format instead of rendering PNG, SVG or PDF (a third of a report's CPU).  For the
+    tests that check which files a run writes, keeps and removes (names, manifest, stale
+    files), not what a plot shows; each such test relies on a rendered end-to-end report
+    (the session's :func:`cli_report`) to prove the real files are written.  Returns the
+    list of the formats saved so, one per file."""
+    from pathlib import PurePath
+
+    from matplotlib.figure import Figure
+
+    saved = []
+
+    def savefig(self, fname, *args, format=None, **kwargs):
+        fmt = format or PurePath(str(fname)).suffix.lstrip(".") or "png"
+        data = f"figure not rendered ({fmt}), tests/conftest.py\n".encode()
+        if hasattr(fname, "write"):
+            fname.write(data)
+        else:
+            Path(fname).write_bytes(data)
+        saved.append(fmt)
+
+    monkeypatch.setattr(Figure, "savefig", savefig)
+    return saved

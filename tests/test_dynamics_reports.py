@@ -64,10 +64,17 @@ def test_every_output_is_named_after_the_spec(runs):
         want = dynamics_files(ex) if command == "dynamics" else BALANCE[ex]
         assert _names(d) == want, (command, ex, lang)
         assert set(verify_report(d)) == want
+        for n in want:          # the plots are rendered (the other tests here do not draw)
+            head = (d / n).read_bytes()[:300]
+            if n.endswith(".png"):
+                assert head.startswith(b"\x89PNG\r\n\x1a\n"), (command, ex, lang, n)
+            elif n.endswith(".svg"):
+                assert b"<svg" in head, (command, ex, lang, n)
 
 
 def test_two_specs_share_a_folder_and_a_rerun_replaces_only_its_own(tmp_path, capsys,
-                                                                    cli_report):
+                                                                    cli_report,
+                                                                    unrendered_figures):
     import shutil
 
     out = tmp_path / "o"            # the hoist first: a copy of the session's report
@@ -96,9 +103,11 @@ def test_two_specs_share_a_folder_and_a_rerun_replaces_only_its_own(tmp_path, ca
     units = {n: f["unit"] for n, f in read_manifest(out)["files"].items()}
     assert units["hoist_motion.csv"] == "dynamics:hoist"
     assert units["two-plane-example_rotor_shares.csv"] == "balance:two-plane-example"
+    assert unrendered_figures          # the plots were saved (names only, not drawn)
 
 
-def test_stale_copies_are_removed_and_said_so(tmp_path, capsys, cli_report):
+def test_stale_copies_are_removed_and_said_so(tmp_path, capsys, cli_report,
+                                              unrendered_figures):
     """A file of this spec the manifest does not list (copied back by hand) that this run
     does not write goes too, with a line on stderr in the report's language."""
     import shutil
@@ -114,9 +123,11 @@ def test_stale_copies_are_removed_and_said_so(tmp_path, capsys, cli_report):
     assert "удалён" in err and "hoist_forces_true_motion.png" in err
     assert (out / "motion.csv").exists() and "motion.csv" in err     # named, left alone
     assert not _latin_words(_strip(err, out))
+    assert unrendered_figures
 
 
-def test_linkage_engine_and_dynamics_reports_of_one_mechanism_stay_together(tmp_path):
+def test_linkage_engine_and_dynamics_reports_of_one_mechanism_stay_together(
+        tmp_path, unrendered_figures):
     """``crankdyn linkage`` and ``crankdyn dynamics`` of the same press (and engine and
     dynamics of the same petrol engine) name their files after the same spec: each is
     its own report unit, so neither takes the other's files for stale ones."""
@@ -133,6 +144,7 @@ def test_linkage_engine_and_dynamics_reports_of_one_mechanism_stay_together(tmp_
     assert _names(out) == (linkage_files | engine_files | dynamics_files("press")
                            | dynamics_files("petrol") | BALANCE["ratchet"])
     verify_report(out)
+    assert unrendered_figures
 
 
 # ------------------------------------------------------------------ language
@@ -206,20 +218,33 @@ def test_summaries_carry_the_same_numbers_in_both_languages(runs):
 
 
 # ------------------------------------------------------------------ workbook
-def _workbook(runs, ex, lang):
-    d = runs[("dynamics", ex, lang)][0]
-    return load_workbook(d / f"{DYNAMICS[ex][0]}_dynamics.xlsx")
+@pytest.fixture(scope="module")
+def workbooks(runs):
+    """The workbook of each dynamics run, loaded once for the tests that read it
+    (read-only): (example, lang) → openpyxl workbook."""
+    cache = {}
+
+    def get(ex, lang):
+        if (ex, lang) not in cache:
+            d = runs[("dynamics", ex, lang)][0]
+            cache[(ex, lang)] = load_workbook(d / f"{DYNAMICS[ex][0]}_dynamics.xlsx")
+        return cache[(ex, lang)]
+    return get
 
 
-def test_dynamics_workbook_speaks_the_report_language(runs):
+def _workbook(workbooks, ex, lang):
+    return workbooks(ex, lang)
+
+
+def test_dynamics_workbook_speaks_the_report_language(workbooks):
     for ex in DYNAMICS:
-        en = _workbook(runs, ex, "en")
+        en = _workbook(workbooks, ex, "en")
         for ws in en.worksheets:
             assert not CYRILLIC.search(ws.title)
             for row in ws.iter_rows(values_only=True):
                 for v in row:
                     assert not (isinstance(v, str) and CYRILLIC.search(v)), (ex, ws.title, v)
-        ru = _workbook(runs, ex, "ru")
+        ru = _workbook(workbooks, ex, "ru")
         text = "\n".join([ws.title for ws in ru.worksheets] + [
             str(v) for ws in ru.worksheets
             for row in ws.iter_rows(max_row=40, values_only=True) for v in row])
@@ -228,12 +253,12 @@ def test_dynamics_workbook_speaks_the_report_language(runs):
             assert symbol in text, (ex, symbol)
 
 
-def test_dynamics_workbook_headers_and_print_setup(runs):
+def test_dynamics_workbook_headers_and_print_setup(workbooks):
     from dynamics.report import column_label
 
     for ex in DYNAMICS:
         for lang in ("ru", "en"):
-            wb = _workbook(runs, ex, lang)
+            wb = _workbook(workbooks, ex, lang)
             assert wb.worksheets[0]["A1"].value.startswith(DYNAMICS[ex][0])
             for ws in wb.worksheets:
                 ps = ws.page_setup
@@ -248,7 +273,7 @@ def test_dynamics_workbook_headers_and_print_setup(runs):
                                                                  or None) for n in names]
                 assert ws.print_title_rows == "$1:$2" or ws.print_title_rows == "1:2"
     # the linkage's forces sheet: its M_drive is the core's balancing moment Mур
-    forces = _workbook(runs, "press", "ru")["Силы"]
+    forces = _workbook(workbooks, "press", "ru")["Силы"]
     header = dict(zip((c.value for c in forces[2]), (c.value for c in forces[1])))
     assert header["M_drive_Nm"] == "Mур, Н·м"
     assert header["M_drive_Nm_const"] == "Mур, Н·м (ω = const)"
@@ -280,7 +305,8 @@ def test_dynamics_workbooks_render_on_a4_pages(runs, tmp_path):
         assert len(pages) >= 4
 
 
-def test_crank_slider_balance_summary_in_both_languages(tmp_path, capsys):
+def test_crank_slider_balance_summary_in_both_languages(tmp_path, capsys,
+                                                        unrendered_figures):
     """The partial balance of a crank-slider (press.toml with [balance] fraction = 0.5):
     named after the mechanism, its summary in the report's language with the fraction."""
     spec = tmp_path / "slider.toml"
@@ -300,6 +326,7 @@ def test_crank_slider_balance_summary_in_both_languages(tmp_path, capsys):
     assert "частичное" in ru and "кривошипно-ползунный" in ru and ": 0.5" in ru
     en = text["en"].out + text["en"].err
     assert not CYRILLIC.search(en) and "partial" in en and ": 0.5" in en
+    assert unrendered_figures
 
 
 def test_the_readme_names_the_headers_the_workbook_prints():

@@ -4,27 +4,51 @@ column of each table, one font family.  Used by tests/test_workbooks_audit.py ov
 workbook the tool writes."""
 from __future__ import annotations
 
+from collections import namedtuple
+
 from crankbase.workbook import (LINE_PT, _cell_need, _col_width, _is_number, _merged,
                                 _span_width, _used_width, table_blocks, wrapped_lines)
+
+
+#: What the check reads of a cell: its value and the style it shares with every cell of
+#: the same style (openpyxl builds a new font, alignment and format object at each
+#: access; a long table holds a few styles over many thousand cells).
+_Cell = namedtuple("_Cell", "value row column coordinate font alignment number_format")
+
+
+def _styled(c, styles):
+    """``c`` as a :data:`_Cell`, its style objects looked up once per distinct style."""
+    key = tuple(c._style) if c.has_style else None
+    style = styles.get(key)
+    if style is None:
+        style = styles[key] = (c.font, c.alignment, c.number_format)
+    return _Cell(c.value, c.row, c.column, c.coordinate, *style)
 
 
 def problems(wb, name=""):
     """Every defect of ``wb`` as a list of strings (empty: the workbook is clean)."""
     out = []
     families = {}
+    styles = {}
     for ws in wb.worksheets:
         if ws.sheet_state != "visible":
             continue
         first, covered = _merged(ws)
+        widths = {}
         for row in ws.iter_rows():
-            for c in row:
-                if c.value is None or (c.row, c.column) in covered \
-                        or not _col_width(ws, c.column):          # a hidden column
+            for cell in row:
+                if cell.value is None or (cell.row, cell.column) in covered:
                     continue
+                if cell.column not in widths:
+                    widths[cell.column] = _col_width(ws, cell.column)
+                if not widths[cell.column]:                          # a hidden column
+                    continue
+                c = _styled(cell, styles)
                 where = f"{name} {ws.title}!{c.coordinate}"
                 families.setdefault(c.font.name if c.font else None, where)
                 need, wrap = _cell_need(c)
-                width = _span_width(ws, c, first)
+                width = (_span_width(ws, c, first) if (c.row, c.column) in first
+                         else widths[c.column])
                 if _is_number(c.value):
                     if need > width:
                         out.append(f"{where}: number {c.value!r} shown as ### "
