@@ -118,6 +118,20 @@ def petrol_page(app):
     return c, run_petrol(c, "4000.0")
 
 
+@pytest.fixture(scope="module")
+def diesel_upload(app):
+    """One session's upload of the diesel example as a student would send it (the TOML
+    naming its CSV, under names of the user's), shared by the tests that only read it:
+    ``(client, response)``."""
+    c = client(app)
+    r = c.post("/engine/upload", files={
+        "spec": ("my spec.toml", example_path("diesel_d240.toml").read_bytes(),
+                 "application/toml"),
+        "pressure": ("../../etc/diesel_d240_indicator.csv",
+                     example_path("diesel_d240_indicator.csv").read_bytes(), "text/csv")})
+    return c, r
+
+
 # ----------------------------------------------------------------------------- pages
 @pytest.mark.parametrize("lang", ["en", "ru"])
 def test_the_engine_page_shows_every_schema_key_with_its_words(app, lang):
@@ -275,16 +289,13 @@ def test_table2_on_the_page_and_the_downloads_equal_the_cli_files(petrol_page, t
     assert z.read("petrol-vaz2106_torque.csv") == (cli / "petrol-vaz2106_torque.csv").read_bytes()
 
 
-def test_an_uploaded_spec_with_its_pressure_file_equals_the_cli(app, tmp_path, cli_report):
+def test_an_uploaded_spec_with_its_pressure_file_equals_the_cli(app, tmp_path, cli_report,
+                                                               diesel_upload):
     """The diesel example as a student would upload it (the TOML naming its CSV): same
     CSVs as the CLI on the bundled file; the spec and pressure file downloaded from the
     page repeat the run from the command line."""
-    c = client(app)
-    spec = example_path("diesel_d240.toml")
+    c, r = diesel_upload
     pcsv = example_path("diesel_d240_indicator.csv")
-    r = c.post("/engine/upload", files={
-        "spec": ("my spec.toml", spec.read_bytes(), "application/toml"),
-        "pressure": ("../../etc/diesel_d240_indicator.csv", pcsv.read_bytes(), "text/csv")})
     assert r.status_code == 200 and 'id="results"' in r.text, r.text[:3000]
     urls = links(r.text)
     got = {u.rsplit("/", 1)[1]: c.get(u).content for u in urls}   # waits for the writing
@@ -327,11 +338,11 @@ def test_an_upload_that_is_not_toml_or_has_unknown_keys(app):
 
 
 # ----------------------------------------------------------------------------- safety
-def test_two_sessions_do_not_see_each_other_s_files(app, petrol_page):
+def test_two_sessions_do_not_see_each_other_s_files(app, petrol_page, diesel_upload):
     a, ha = petrol_page                     # a's run: the petrol example at 4000 rpm
-    b = client(app)
-    b.post("/engine/example", data={"example": "diesel"})
-    hb = b.post("/engine/run", data=form_values(b.get("/engine").text)).text
+    b, rb = diesel_upload                   # b's run: the diesel example, uploaded
+    hb = rb.text
+    assert 'id="results"' in hb
     assert "petrol-vaz2106" in ha and "diesel-d240" in hb
     assert "diesel-d240" not in a.get("/engine").text
     for u in links(hb):
