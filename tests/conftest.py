@@ -189,3 +189,36 @@ def unrendered_figures(monkeypatch):
 
     monkeypatch.setattr(Figure, "savefig", savefig)
     return saved
+
+
+@pytest.fixture(scope="session")
+def petrol_at_4000(tmp_path_factory, cli_report):
+    """The petrol example (``examples/petrol_vaz2106.toml``) with ``engine.speed_rpm =
+    4000.0`` and its shared CLI report (``crankdyn engine <that spec> --lang en``, run once
+    for the session, read-only): ``(spec dict, Report)``.  The web tests compare the
+    page's run at 4000 rpm with it.  The spec is written once in the workers' shared
+    folder and named relative to it (a report's name is made from its argv, which must
+    hold no folder), so every worker asks for the same report."""
+    import tomllib
+
+    import tomli_w
+
+    from crankbase.resources import example_path
+
+    spec = tomllib.loads(example_path("petrol_vaz2106.toml").read_text(encoding="utf-8"))
+    spec["engine"]["speed_rpm"] = 4000.0
+    text = tomli_w.dumps(spec)
+    root = _shared_root(tmp_path_factory)
+    path = root / "petrol_at_4000.toml"
+    if not path.is_file() or path.read_text(encoding="utf-8") != text:
+        tmp = path.with_name(f"{path.name}.{os.getpid()}.part")
+        tmp.write_text(text, encoding="utf-8")
+        os.replace(tmp, path)                       # atomic: a reader sees all or nothing
+    here = os.getcwd()
+    os.chdir(root)
+    try:
+        rep = cli_report("engine", path.name, "--lang", "en")
+    finally:
+        os.chdir(here)
+    assert rep.rc == 0, rep.err
+    return spec, rep

@@ -69,11 +69,17 @@ def form_values(html):
     return {k: htmllib.unescape(v) for k, v in vals.items()}
 
 
-def cli_report(spec, out, lang="en"):
+def run_cli(spec, out, lang="en"):
     from crankdyn.cli import main
 
     assert main(["engine", str(spec), "-o", str(out), "--lang", lang]) == 0
     return out
+
+
+def shared(rep):
+    """The folder of a session-shared CLI report (conftest ``cli_report``: read-only)."""
+    assert rep.rc == 0, rep.err
+    return rep.folder
 
 
 def page_table(html, table_id="table2"):
@@ -102,6 +108,28 @@ def run_petrol(c, speed="4000.0"):
 
 def links(html):
     return re.findall(r'href="(/engine/run/\d+/[^"]+)"', html)
+
+
+@pytest.fixture(scope="module")
+def petrol_page(app):
+    """One session's run of the petrol example at 4000 rpm through the page, shared by
+    the tests that only read it (its downloads, its links): ``(client, html)``."""
+    c = client(app)
+    return c, run_petrol(c, "4000.0")
+
+
+@pytest.fixture(scope="module")
+def diesel_upload(app):
+    """One session's upload of the diesel example as a student would send it (the TOML
+    naming its CSV, under names of the user's), shared by the tests that only read it:
+    ``(client, response)``."""
+    c = client(app)
+    r = c.post("/engine/upload", files={
+        "spec": ("my spec.toml", example_path("diesel_d240.toml").read_bytes(),
+                 "application/toml"),
+        "pressure": ("../../etc/diesel_d240_indicator.csv",
+                     example_path("diesel_d240_indicator.csv").read_bytes(), "text/csv")})
+    return c, r
 
 
 # ----------------------------------------------------------------------------- pages
@@ -212,9 +240,11 @@ def test_a_bad_counterweight_row_is_shown_at_the_rows_field(app):
 
 
 # ----------------------------------------------------------------------------- results
-def test_table2_on_the_page_and_the_downloads_equal_the_cli_files(app, tmp_path):
-    c = client(app)
-    html = run_petrol(c, "4000.0")
+def test_table2_on_the_page_and_the_downloads_equal_the_cli_files(petrol_page, tmp_path,
+                                                                  cli_report, petrol_at_4000):
+    import tomllib
+
+    c, html = petrol_page
     urls = links(html)
     got = tmp_path / "web"
     got.mkdir()
@@ -224,7 +254,11 @@ def test_table2_on_the_page_and_the_downloads_equal_the_cli_files(app, tmp_path)
         (got / u.rsplit("/", 1)[1]).write_bytes(r.content)
     toml = got / "petrol-vaz2106.toml"
     assert 'speed_rpm = 4000.0' in toml.read_text(encoding="utf-8")
-    cli = cli_report(toml, tmp_path / "cli")              # the same run from the CLI
+    # the downloaded spec is the example at 4000 rpm (the CLI reads a spec as this dict),
+    # so the session's shared CLI run of that spec is the same run from the CLI
+    spec, report = petrol_at_4000
+    assert tomllib.loads(toml.read_text(encoding="utf-8")) == spec
+    cli = shared(report)
     csvs = sorted(p.name for p in cli.glob("*.csv"))
     assert len(csvs) == 5
     for name in csvs:
@@ -237,7 +271,7 @@ def test_table2_on_the_page_and_the_downloads_equal_the_cli_files(app, tmp_path)
         want = list(csv.reader(fh))
     assert head == want[0] and rows == want[1:]
     # the speed was used: the inertia force differs from the example's at 5400 rpm
-    base = cli_report(example_path("petrol_vaz2106.toml"), tmp_path / "base")
+    base = shared(cli_report("engine", "--example", "petrol", "--lang", "en"))
     assert (base / "petrol-vaz2106_forces.csv").read_bytes() != \
         (cli / "petrol-vaz2106_forces.csv").read_bytes()
     # the summary and every figure
@@ -255,21 +289,18 @@ def test_table2_on_the_page_and_the_downloads_equal_the_cli_files(app, tmp_path)
     assert z.read("petrol-vaz2106_torque.csv") == (cli / "petrol-vaz2106_torque.csv").read_bytes()
 
 
-def test_an_uploaded_spec_with_its_pressure_file_equals_the_cli(app, tmp_path):
+def test_an_uploaded_spec_with_its_pressure_file_equals_the_cli(app, tmp_path, cli_report,
+                                                               diesel_upload):
     """The diesel example as a student would upload it (the TOML naming its CSV): same
     CSVs as the CLI on the bundled file; the spec and pressure file downloaded from the
     page repeat the run from the command line."""
-    c = client(app)
-    spec = example_path("diesel_d240.toml")
+    c, r = diesel_upload
     pcsv = example_path("diesel_d240_indicator.csv")
-    r = c.post("/engine/upload", files={
-        "spec": ("my spec.toml", spec.read_bytes(), "application/toml"),
-        "pressure": ("../../etc/diesel_d240_indicator.csv", pcsv.read_bytes(), "text/csv")})
     assert r.status_code == 200 and 'id="results"' in r.text, r.text[:3000]
     urls = links(r.text)
     got = {u.rsplit("/", 1)[1]: c.get(u).content for u in urls}   # waits for the writing
     # (matplotlib draws in one thread at a time: the CLI runs after the page's report)
-    cli = cli_report(spec, tmp_path / "cli")
+    cli = shared(cli_report("engine", "--example", "diesel", "--lang", "en"))
     for name in sorted(p.name for p in cli.glob("*.csv")):
         assert got[name] == (cli / name).read_bytes(), name
     # the downloaded spec + pressure file (server names) repeat the run
@@ -279,7 +310,7 @@ def test_an_uploaded_spec_with_its_pressure_file_equals_the_cli(app, tmp_path):
         if u.endswith((".toml", "pressure.csv")):
             (again / u.rsplit("/", 1)[1]).write_bytes(c.get(u).content)
     assert (again / "pressure.csv").read_bytes() == pcsv.read_bytes()
-    out = cli_report(again / "diesel-d240.toml", tmp_path / "cli2")
+    out = run_cli(again / "diesel-d240.toml", tmp_path / "cli2")   # on the downloaded files
     for name in sorted(p.name for p in cli.glob("*.csv")):
         assert (out / name).read_bytes() == (cli / name).read_bytes()
     # no name from the user reached the disk
@@ -307,11 +338,11 @@ def test_an_upload_that_is_not_toml_or_has_unknown_keys(app):
 
 
 # ----------------------------------------------------------------------------- safety
-def test_two_sessions_do_not_see_each_other_s_files(app):
-    a, b = client(app), client(app)
-    ha = run_petrol(a, "3000.0")
-    b.post("/engine/example", data={"example": "diesel"})
-    hb = b.post("/engine/run", data=form_values(b.get("/engine").text)).text
+def test_two_sessions_do_not_see_each_other_s_files(app, petrol_page, diesel_upload):
+    a, ha = petrol_page                     # a's run: the petrol example at 4000 rpm
+    b, rb = diesel_upload                   # b's run: the diesel example, uploaded
+    hb = rb.text
+    assert 'id="results"' in hb
     assert "petrol-vaz2106" in ha and "diesel-d240" in hb
     assert "diesel-d240" not in a.get("/engine").text
     for u in links(hb):
@@ -487,7 +518,7 @@ def test_the_bearing_and_drawing_options_add_their_tables_figures_and_pdfs(app):
 
 
 # ----------------------------------------------------------------------------- linkage page
-def test_the_linkage_page_runs_the_ratchet_like_the_cli(app, tmp_path):
+def test_the_linkage_page_runs_the_ratchet_like_the_cli(app, tmp_path, cli_report):
     """The ratchet drive with a new crank speed: every CSV byte for byte and the workbook
     value for value equal to ``crankdyn linkage`` on the downloaded spec."""
     from crankdyn.cli import main
@@ -519,8 +550,7 @@ def test_the_linkage_page_runs_the_ratchet_like_the_cli(app, tmp_path):
         assert [head, *rows] == list(csv.reader(fh))
     figs = re.findall(r'<img src="(/linkage/run/\d+/[^"]+\.png)"', r.text)
     assert len(figs) == 5 and all(c.get(u).content[:4] == b"\x89PNG" for u in figs)
-    base = tmp_path / "base"
-    assert main(["linkage", "--example", "ratchet", "-o", str(base), "--lang", "en"]) == 0
+    base = shared(cli_report("linkage", "--example", "ratchet", "--lang", "en"))
     assert (base / "ratchet-drive_forces.csv").read_bytes() != got["ratchet-drive_forces.csv"]
 
 
@@ -639,14 +669,16 @@ def test_a_bad_rotor_mass_line_is_named_at_its_field(app, lang):
     assert 'id="results"' not in html
 
 
-def test_the_pages_of_one_session_keep_their_files_apart(app):
+def test_the_pages_of_one_session_keep_their_files_apart(app, petrol_page):
     """One session on every page in turn: each page's run has its own folder, so one
-    page's new run neither removes nor lists another page's files."""
-    c = client(app)
+    page's new run neither removes nor lists another page's files.  The engine page's
+    run is the shared petrol run's session (its run came first)."""
+    c, html = petrol_page
     pages = {"engine": "petrol", "linkage": "ratchet", "dynamics": "flywheel",
              "balance": "rotor"}
-    shown = {}
-    for page, example in pages.items():
+    assert 'id="results"' in html
+    shown = {"engine": re.findall(r'(?:href|src)="(/engine/run/\d+/[^"]+)"', html)}
+    for page, example in list(pages.items())[1:]:
         c.post(f"/{page}/example", data={"example": example})
         html = c.post(f"/{page}/run", data=form_values(c.get(f"/{page}").text)).text
         assert 'id="results"' in html, page

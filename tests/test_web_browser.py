@@ -107,16 +107,10 @@ def _shot(driver, name, tmp_path):
     return path
 
 
-def _cli(spec: dict, out: Path, lang="en") -> Path:
-    import tomli_w
-
-    from crankdyn.cli import main
-
-    out.mkdir(parents=True, exist_ok=True)
-    f = out / "spec.toml"
-    f.write_text(tomli_w.dumps(spec), encoding="utf-8")
-    assert main(["engine", str(f), "-o", str(out), "--lang", lang]) == 0
-    return out
+def _shared(rep) -> Path:
+    """The folder of a session-shared CLI report (conftest ``cli_report``: read-only)."""
+    assert rep.rc == 0, rep.err
+    return rep.folder
 
 
 def _compute(driver, speed=None):
@@ -143,7 +137,8 @@ def _stale_check(el):
         return False
 
 
-def test_the_petrol_example_in_the_browser_equals_the_cli(server, browser, tmp_path):
+def test_the_petrol_example_in_the_browser_equals_the_cli(server, browser, tmp_path,
+                                                          petrol_at_4000):
     import openpyxl
     from selenium.webdriver.common.by import By
 
@@ -156,7 +151,9 @@ def test_the_petrol_example_in_the_browser_equals_the_cli(server, browser, tmp_p
     # Table 2's first rows on the page = the CLI's forces.csv for the same spec
     spec = tomllib.loads(example_path("petrol_vaz2106.toml").read_text(encoding="utf-8"))
     spec["engine"]["speed_rpm"] = float(SPEED)
-    cli = _cli(spec, tmp_path / "cli")
+    shared_spec, report = petrol_at_4000                # the session's shared spec and run
+    assert shared_spec == spec
+    cli = _shared(report)
     with open(cli / "petrol-vaz2106_forces.csv", newline="") as fh:
         want = list(csv.reader(fh))
     table = d.find_element(By.ID, "table2")
@@ -215,15 +212,12 @@ def test_a_bad_bore_is_named_next_to_its_field_in_the_browser(server, browser, t
     _shot(d, f"web_engine_form_{lang}.png", tmp_path)
 
 
-def test_the_linkage_page_in_the_browser(server, browser, tmp_path):
+def test_the_linkage_page_in_the_browser(server, browser, tmp_path, cli_report):
     """The ratchet drive: its kinematics table on the page is the CLI's, in both
     languages; the screenshots of the page."""
     from selenium.webdriver.common.by import By
 
-    from crankdyn.cli import main
-
-    out = tmp_path / "cli"
-    assert main(["linkage", "--example", "ratchet", "-o", str(out), "--lang", "en"]) == 0
+    out = _shared(cli_report("linkage", "--example", "ratchet", "--lang", "en"))
     with open(out / "ratchet-drive_kinematics.csv", newline="") as fh:
         want = list(csv.reader(fh))
     d = browser
@@ -243,15 +237,12 @@ def test_the_linkage_page_in_the_browser(server, browser, tmp_path):
         _shot(d, f"web_linkage_results_{lang}.png", tmp_path)
 
 
-def test_the_dynamics_page_in_the_browser(server, browser, tmp_path):
+def test_the_dynamics_page_in_the_browser(server, browser, tmp_path, cli_report):
     """The seed's flywheel example: the motion table on the page is the CLI's, in both
     languages; the screenshots of the page."""
     from selenium.webdriver.common.by import By
 
-    from crankdyn.cli import main
-
-    out = tmp_path / "cli"
-    assert main(["dynamics", "--example", "flywheel", "-o", str(out), "--lang", "en"]) == 0
+    out = _shared(cli_report("dynamics", "--example", "flywheel", "--lang", "en"))
     with open(next(out.glob("*_motion.csv")), newline="") as fh:
         want = list(csv.reader(fh))
     d = browser
