@@ -80,12 +80,24 @@ def _shared_root(tmp_path_factory):
     return root
 
 
+#: matplotlib's own ``Figure.savefig``, kept by :func:`unrendered_figures` before it
+#: patches it, so that a shared report is always rendered for real.
+_REAL_SAVEFIG = {}
+
+
 def _run_cli(key, folder):
     from crankdyn.cli import main
 
     o, e = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(o), contextlib.redirect_stderr(e):
-        rc = main([*key, "-o", str(folder)])
+    with contextlib.ExitStack() as stack:
+        real = _REAL_SAVEFIG.get("savefig")
+        if real is not None:       # a test with unrendered_figures may be asking for it
+            from matplotlib.figure import Figure
+
+            stack.callback(setattr, Figure, "savefig", Figure.savefig)
+            Figure.savefig = real
+        with contextlib.redirect_stdout(o), contextlib.redirect_stderr(e):
+            rc = main([*key, "-o", str(folder)])
     return Report(folder, rc, o.getvalue(), e.getvalue())
 
 
@@ -187,6 +199,7 @@ def unrendered_figures(monkeypatch):
             Path(fname).write_bytes(data)
         saved.append(fmt)
 
+    _REAL_SAVEFIG.setdefault("savefig", Figure.savefig)
     monkeypatch.setattr(Figure, "savefig", savefig)
     return saved
 
