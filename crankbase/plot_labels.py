@@ -16,8 +16,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["Obstacles", "renderer_of", "text_size", "place_label", "label_points",
-           "frozen_frame", "segment_hits_box"]
+__all__ = ["Obstacles", "add_axes_lines", "renderer_of", "text_size", "place_label",
+           "label_points", "frozen_frame", "segment_hits_box"]
 
 
 def renderer_of(fig):
@@ -220,6 +220,25 @@ def label_points(ax, obstacles, xy_px, texts, normals, order, merge_px=3.0, **kw
         t = place_label(ax, obstacles, xy_px[i], text, normals[i], far=n == 0, **kw)
         (placed.append(t) if t is not None else thinned.append(text))
     return placed, thinned
+
+
+def add_axes_lines(obstacles, ax, to_px=None):
+    """Add every line of ``ax`` to ``obstacles``: its segments (when it has a line style)
+    and its finite markers (at their size in pixels, plus one); ``to_px`` the data → display
+    transform (default ``ax.transData.transform``).  Returns ``obstacles``."""
+    import numpy as np
+
+    to_px = ax.transData.transform if to_px is None else to_px
+    dpi = ax.figure.dpi
+    for line in ax.lines:
+        xy = to_px(line.get_xydata())
+        if line.get_linestyle() not in ("None", "none", "", " "):
+            obstacles.add_line(xy)
+        if line.get_marker() not in (None, "None", "none", ""):
+            for p in xy:
+                if np.all(np.isfinite(p)):
+                    obstacles.add_marker(p, line.get_markersize() * dpi / 72 + 1)
+    return obstacles
 
 
 def frozen_frame(ax):

@@ -253,7 +253,8 @@ def plot_chain_plan(result, ax=None, lang="en"):
 def _plan_labels(ax, result, joints):
     """The joints' names at position 1 and the position numbers at the crank pin, each
     where no link or other label crosses it (:mod:`crankbase.plot_labels`)."""
-    from crankbase.plot_labels import Obstacles, label_points, place_label, renderer_of
+    from crankbase.plot_labels import (Obstacles, add_axes_lines, label_points, place_label,
+                                       renderer_of)
 
     fig = ax.figure
     renderer_of(fig)
@@ -266,14 +267,7 @@ def _plan_labels(ax, result, joints):
     tr = ax.transData.transform
     bb = ax.get_window_extent()
     obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
-    for line in ax.lines:
-        xy = tr(line.get_xydata())
-        if line.get_linestyle() not in ("None", "none", "", " "):
-            obs.add_line(xy)
-        if line.get_marker() not in (None, "None", "none", ""):
-            for p in xy:
-                if np.all(np.isfinite(p)):
-                    obs.add_marker(p, line.get_markersize() * fig.dpi / 72 + 1)
+    add_axes_lines(obs, ax, tr)
     mech = result.spec.mechanism
     zc = complex(mech.frame[mech.driver.pivot])
     centre = tr([(zc.real, zc.imag)])[0]

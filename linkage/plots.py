@@ -265,7 +265,8 @@ def _plan_labels(ax, k, numbers, pivots):
     """The position numbers at A and at B and the pivots' names, each where no link,
     path or other label crosses it; positions whose points (nearly) coincide share one
     label ("12/1"), a label with no free place is left out."""
-    from crankbase.plot_labels import Obstacles, label_points, place_label, renderer_of
+    from crankbase.plot_labels import (Obstacles, add_axes_lines, label_points, place_label,
+                                       renderer_of)
 
     fig = ax.figure
     renderer_of(fig)
@@ -278,14 +279,7 @@ def _plan_labels(ax, k, numbers, pivots):
     tr = ax.transData.transform
     bb = ax.get_window_extent()
     obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
-    for line in ax.lines:
-        xy = tr(line.get_xydata())
-        if line.get_linestyle() not in ("None", "none", "", " "):
-            obs.add_line(xy)
-        if line.get_marker() not in (None, "None", "none", ""):
-            for p in xy:
-                if np.all(np.isfinite(p)):
-                    obs.add_marker(p, line.get_markersize() * fig.dpi / 72 + 1)
+    add_axes_lines(obs, ax, tr)
     for patch in ax.patches:
         obs.add_line(patch.get_transform().transform_path(patch.get_path()).vertices)
     leg = ax.get_legend()
