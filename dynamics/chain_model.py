@@ -259,15 +259,10 @@ def _force_columns(cf):
     """The reactions of a chain's kinetostatics as columns named as in the chain's force
     table (:mod:`linkage.chain_analysis`): ``Rx_i_j_N``, ``Ry_i_j_N``, ``R_i_j_N`` (force
     of link i on link j), ``M_drive_Nm``."""
+    from linkage.chain_analysis import reaction_tags
+
     F = {}
-    seen = set()
-    for (i, j), r in list(cf.reactions.items()):
-        if frozenset((i, j)) in seen and (j, i) in cf.reactions:
-            continue
-        seen.add(frozenset((i, j)))
-        tag = f"{i}_{j}"
-        if f"R_{tag}_N" in F:
-            tag += f"_{r.joint or 'P'}"
+    for tag, r in reaction_tags(cf.reactions):
         F[f"Rx_{tag}_N"], F[f"Ry_{tag}_N"] = r.force.x, r.force.y
         F[f"R_{tag}_N"] = np.hypot(r.force.x, r.force.y)
     F["M_drive_Nm"] = cf.M_drive

@@ -41,7 +41,25 @@ from . import groups as g
 from .loads import StrokeCycle, resistance
 
 __all__ = ["ChainAnalysis", "ChainSummary", "analyze_chain", "transmission_angles",
-           "output_motion", "output_extremes", "chain_loads"]
+           "output_motion", "output_extremes", "chain_loads", "reaction_tags"]
+
+
+def reaction_tags(reactions):
+    """``[(tag, reaction), ...]``: each pair's reaction once (the force of link i on link
+    j; its opposite, j on i, left out), tagged ``"<i>_<j>"`` as the force columns name it
+    (``Rx_<tag>_N`` …), with ``_<joint>`` added (``_P`` for a prismatic pair) when two
+    pairs join the same two links.  The one naming rule of the chain's reaction columns."""
+    out, seen, tags = [], set(), set()
+    for (i, j), r in list(reactions.items()):
+        if frozenset((i, j)) in seen and (j, i) in reactions:
+            continue
+        seen.add(frozenset((i, j)))
+        tag = f"{i}_{j}"
+        if tag in tags:
+            tag += f"_{r.joint or 'P'}"
+        tags.add(tag)
+        out.append((tag, r))
+    return out
 
 
 @dataclass
@@ -416,14 +434,7 @@ def _columns(spec, res, cf, res_force, K, F):
     for key, mu in transmission_angles(res).items():
         np.degrees(mu, out=K.out(f"mu_{key}_deg"))
     F["phi_deg"] = K.cols["phi_deg"]
-    seen = set()
-    for (i, j), r in list(cf.reactions.items()):
-        if frozenset((i, j)) in seen and (j, i) in cf.reactions:
-            continue
-        seen.add(frozenset((i, j)))
-        tag = f"{i}_{j}"
-        if f"Rx_{tag}_N" in F:
-            tag += f"_{r.joint or 'P'}"
+    for tag, r in reaction_tags(cf.reactions):
         F[f"Rx_{tag}_N"], F[f"Ry_{tag}_N"] = r.force.x, r.force.y
         if F.course:
             np.hypot(r.force.x, r.force.y, out=F.out(f"R_{tag}_N"))
