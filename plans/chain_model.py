@@ -50,7 +50,8 @@ from linkage import chain as ch
 from linkage import groups as g
 
 from .errors import PlanError, Problem, Text
-from .model import MAX_PLAN_MM, Plan, PositionPlans, Vector, balancing_force, round_scale
+from .model import (MAX_PLAN_MM, Plan, PositionPlans, Vector, balancing_force, position_rows,
+                    round_scale)
 
 __all__ = ["build_chain_plans", "CHAIN_PLAN_KINDS"]
 
@@ -514,24 +515,9 @@ def build_chain_plans(result, positions=None, *, scales=None):
     scales = dict(scales or {})
     if problems:
         raise PlanError(problems)
+    rows = position_rows(K, positions)
     pos_col = K["position"]
     numbered = pos_col.notna().all()
-    if positions is None or positions == "all":
-        rows = list(range(len(K)))
-    else:
-        rows = []
-        for p in positions:
-            hit = (np.flatnonzero((pos_col == int(p)).to_numpy(dtype=bool, na_value=False))
-                   if numbered else ([int(p) - 1] if 1 <= int(p) <= len(K) else []))
-            if len(hit) == 0:
-                valid = f"1…{int(pos_col.max())}" if numbered and len(K) else f"1…{len(K)}"
-                problems.append(Problem("positions",
-                                        Text("errors.plans.model.position_not_analysis",
-                                             {"p": p, "valid": valid})))
-            else:
-                rows.append(int(hit[0]))
-        if problems:
-            raise PlanError(problems)
     out = []
     for i in rows:
         P = _Position(res, i)

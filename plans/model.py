@@ -783,26 +783,9 @@ def build_plans(result, positions=None, *, scales=None, crank_angles_deg=None):
             problems.append(f"scales.{k}: got {v!r}; must be a positive number")
     if problems:
         raise PlanError(problems)
+    rows = position_rows(K, positions)
     pos_col = K["position"]
     numbered = pos_col.notna().all()
-    if positions is None or positions == "all":
-        rows = list(range(len(K)))
-    else:
-        rows = []
-        for p in positions:
-            if numbered:
-                hit = np.flatnonzero((pos_col == int(p)).to_numpy(dtype=bool, na_value=False))
-            else:
-                hit = [int(p) - 1] if 1 <= int(p) <= len(K) else []
-            if len(hit) == 0:
-                valid = (f"1…{int(pos_col.max())}" if numbered and len(K) else f"1…{len(K)}")
-                problems.append(Problem("positions",
-                                        Text("errors.plans.model.position_not_analysis",
-                                             {"p": p, "valid": valid})))
-            else:
-                rows.append(int(hit[0]))
-        if problems:
-            raise PlanError(problems)
     pts = list(point_names(spec))
     out = []
     for i in rows:
@@ -844,3 +827,35 @@ def build_plans(result, positions=None, *, scales=None, crank_angles_deg=None):
     if problems:
         raise PlanError(problems)
     return out
+
+
+def position_rows(K, positions) -> list:
+    """The row indices of the analysis table ``K`` at the given ``positions`` (the
+    course's numbers of the ``position`` column, or 1-based rows when the table has no
+    numbers; ``None`` or ``"all"``: every row).
+
+    Raises
+    ------
+    PlanError
+        A position the analysis does not have (each named, with the valid range).
+    """
+    pos_col = K["position"]
+    numbered = pos_col.notna().all()
+    if positions is None or positions == "all":
+        return list(range(len(K)))
+    rows, problems = [], []
+    for p in positions:
+        if numbered:
+            hit = np.flatnonzero((pos_col == int(p)).to_numpy(dtype=bool, na_value=False))
+        else:
+            hit = [int(p) - 1] if 1 <= int(p) <= len(K) else []
+        if len(hit) == 0:
+            valid = f"1…{int(pos_col.max())}" if numbered and len(K) else f"1…{len(K)}"
+            problems.append(Problem("positions",
+                                    Text("errors.plans.model.position_not_analysis",
+                                         {"p": p, "valid": valid})))
+        else:
+            rows.append(int(hit[0]))
+    if problems:
+        raise PlanError(problems)
+    return rows
