@@ -397,3 +397,37 @@ def test_every_error_class_renders_in_the_run_language():
                               Text("errors.engine.variants.column_empty", {"value": "v"}))])
     assert str(spec) == "row 3: column 'v' is empty"
     assert spec.lines("ru") == ["строка 3: столбец 'v' пуст"]
+
+
+# --------------------------------------------------------------------------- argparse
+ARGPARSE_CASES = [
+    ("bad choice", ["engine", "--example", "petrol", "--form", "nosuch", "-o", "{o}"],
+     "--form"),
+    ("unknown option", ["linkage", "--example", "ratchet", "--bogus", "-o", "{o}"], "--bogus"),
+    ("no output", ["dynamics", "--example", "flywheel"], "-o/--output"),
+    ("not a number", ["engine", "--example", "petrol", "--step", "abc", "-o", "{o}"],
+     "'abc'"),
+    ("no value", ["engine", "--example", "petrol", "-o"], "-o/--output"),
+]
+
+
+@pytest.mark.parametrize("argv, names", [(a, n) for _, a, n in ARGPARSE_CASES],
+                         ids=[c for c, _, _ in ARGPARSE_CASES])
+def test_argparse_complaints_in_the_run_language(argv, names, tmp_path, capsys):
+    """argparse's own messages (crankdyn/cli.py ARGPARSE_TEXTS) speak the language asked
+    with --lang, Russian by default: one line, exit 2, nothing written, the option named."""
+    argv = [a.format(o=tmp_path / "o") for a in argv]
+    lines = {}
+    for lang in ("ru", "en", None):
+        capsys.readouterr()
+        with pytest.raises(SystemExit) as exit_:
+            main(argv if lang is None else [argv[0], "--lang", lang, *argv[1:]])
+        assert exit_.value.code == 2
+        err = [ln for ln in capsys.readouterr().err.splitlines()
+               if not ln.startswith(("usage:", " "))]
+        assert len(err) == 1 and _PREFIX.match(err[0]) and names in err[0], err
+        lines[lang] = err[0]
+    assert not (tmp_path / "o").exists()
+    assert lines[None] == lines["ru"]
+    assert re.search(r"[А-Яа-яЁё]", lines["ru"]) and not english_words(lines["ru"]), lines
+    assert not cyrillic(lines["en"]), lines
