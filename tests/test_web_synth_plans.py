@@ -210,3 +210,30 @@ def test_a_bad_position_list_stands_at_its_field(app, lang):
     assert "'x'" in msg and ("5,11" in msg)
     assert ("получено" in msg) if lang == "ru" else ("got" in msg)
     assert 'class="field bad" id="field-plans"' in html
+
+
+# ----------------------------------------------------------------------------- the one check
+def test_check_inputs_reads_texts_and_numbers_alike_and_names_each_problem():
+    """The library's check of ``crankdyn synth`` and the page: a text and a number give
+    the same value; each problem is named as the caller names the input."""
+    from crankbase.errors import SpecError
+    from linkage.synthesis_study import OPTIONS, check_inputs, command_line
+
+    a, mode = check_inputs({"l2": "0.8", "mu_min_deg": "40", "ground_m": "0.5"})
+    b, _ = check_inputs({"l2": 0.8, "mu_min_deg": 40, "ground_m": 0.5})
+    assert a == b and mode == "mu_min" and a["phi0_deg"] == 30.0 and a["l1"] is None
+    assert check_inputs({"l1": 0.15})[1] == "l1"
+    assert check_inputs({"l2": 0.9, "l3": 0.5})[1] == "l2_l3"
+    assert check_inputs({})[1] == "region"
+    assert command_line(a, "en") == ("crankdyn synth --phi0 30 --l2 0.8 --mu-min 40 "
+                                     "--ground 0.5 --lang en -o OUT")
+    with pytest.raises(SpecError) as e:
+        check_inputs({"phi0_deg": "180", "l1": 0.1, "l3": "-1", "omega_rad_s": 0,
+                      "l1_step": "0.01"}, {**OPTIONS, "mode": "options"})
+    lines = e.value.lines("en")
+    keys = [ln.split(": ")[0] for ln in lines]
+    assert keys == ["--phi0", "--l3", "--omega", "options", "--l1-step", "--omega"], lines
+    assert "got --l1 --l3; choose one of: --l2 and --l3, --l1 alone" in lines[3]
+    with pytest.raises(SpecError) as e:
+        check_inputs({"mu_min_deg": "40,5"})
+    assert e.value.lines("en")[0].startswith("mu_min_deg: got '40,5'; must be a number")
