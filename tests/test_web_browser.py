@@ -239,8 +239,8 @@ def test_the_linkage_page_in_the_browser(server, browser, tmp_path, cli_report):
 
 def test_the_synthesis_page_in_the_browser(server, browser, tmp_path, cli_report):
     """The README's synthesis (λ2 = 0.8, μmin = 40°, ground 0.5 m): the chosen mechanism
-    on the page is the CLI's ``kkm-30_mechanism.csv``, in both languages; the screenshots
-    of the page."""
+    on the page is the CLI's ``kkm-30_mechanism.csv``, in both languages; a bad μmin at
+    its field; the screenshots of the page."""
     from selenium.webdriver.common.by import By
 
     out = _shared(cli_report("synth", "--l2", "0.8", "--mu-min", "40", "--ground", "0.5",
@@ -262,6 +262,15 @@ def test_the_synthesis_page_in_the_browser(server, browser, tmp_path, cli_report
         assert len(d.find_elements(By.CSS_SELECTOR, "#figures img")) == 3
         d.execute_script("document.getElementById('results').scrollIntoView()")
         _shot(d, f"web_synth_results_{lang}.png", tmp_path)
+    box = d.find_element(By.ID, "synth.mu_min_deg")     # ru: a bad μmin at its field
+    box.clear()
+    box.send_keys("95")
+    d.find_element(By.ID, "compute").click()
+    err = _by_id(d, "err-synth.mu_min_deg")
+    assert "95" in err.text and "углом в градусах" in err.text
+    assert not d.find_elements(By.ID, "results")
+    d.execute_script("document.getElementById('form').scrollIntoView()")
+    _shot(d, "web_synth_form_ru.png", tmp_path)
 
 
 def test_the_dynamics_page_in_the_browser(server, browser, tmp_path, cli_report):
