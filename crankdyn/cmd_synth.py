@@ -9,25 +9,15 @@ too), the paper's Table 1 for that φ0 (``<name>_table1.csv``, and the workbook
 ``<name>_synthesis.xlsx``), μ(φ) over a turn (``<name>_transmission_angle.csv``), with
 ``--ground`` a spec TOML for ``crankdyn linkage`` (``<name>.toml``), and the plots
 ``<name>_region``, ``_mu_min`` and ``_transmission_angle`` (PNG and SVG).  Every input
-is checked before anything is written; bad input prints one line per problem and exits 2.
+is checked before anything is written, by the library's one check
+(:func:`linkage.synthesis_study.check_inputs`, the synthesis page's too); bad input
+prints one line per problem, each naming its option, and exits 2.
 ``--lang`` (default ru) is the language of the plots, the workbook (its title, sheet names
 and the values that are words; both header rows, Russian and English, stay) and the
 terminal summary; English output holds no Cyrillic letter (the family is KKM-φ0).
 numpy, pandas, matplotlib and openpyxl are imported inside :func:`run` only.
 """
 from __future__ import annotations
-
-import math
-
-from crankbase.errors import Problem, Text
-
-MODES = {
-    frozenset(): "region",
-    frozenset({"l2", "l3"}): "l2_l3",
-    frozenset({"l1"}): "l1",
-    frozenset({"l2", "mu_min"}): "mu_min",
-}   # the same as linkage.synthesis_study.MODES (not imported: the CLI loads lazily)
-OPTION = {"l1": "--l1", "l2": "--l2", "l3": "--l3", "mu_min": "--mu-min"}
 
 
 def add_parser(sub):
@@ -71,71 +61,17 @@ def add_parser(sub):
     return p
 
 
-def _number(problems, option, text, check, valid):
-    """Parse one option value; record a problem naming the option, the value and what is
-    valid when it is not a number or fails ``check``."""
-    if text is None:
-        return None
-    try:
-        value = float(text)
-    except (TypeError, ValueError):
-        problems.append(Problem(option, Text("errors.cli.synth.not_number",
-                                             {"value": text, "valid": Text(valid)})))
-        return None
-    if not (math.isfinite(value) and check(value)):
-        problems.append(Problem(option, Text("errors.cli.synth.bad",
-                                             {"value": text, "valid": Text(valid)})))
-        return None
-    from crankbase.validation import magnitude_text
-    why = magnitude_text(value)          # the same bound as every spec number
-    if why:
-        problems.append(Problem(option, why))
-        return None
-    return value
-
-
-def _validate(args):
-    """Every problem with the options at once; returns the parsed values."""
-    problems = []
-    positive = (lambda v: v > 0, "errors.cli.synth.positive")
-    v = {
-        "phi0": _number(problems, "--phi0", args.phi0, lambda x: 0 < x < 180,
-                        "errors.cli.synth.phi0"),
-        "l1": _number(problems, "--l1", args.l1, *positive),
-        "l2": _number(problems, "--l2", args.l2, *positive),
-        "l3": _number(problems, "--l3", args.l3, *positive),
-        "mu_min": _number(problems, "--mu-min", args.mu_min, lambda x: 0 <= x < 90,
-                          "errors.cli.synth.mu_min"),
-        "l1_step": _number(problems, "--l1-step", args.l1_step, lambda x: x > 0,
-                           "errors.cli.synth.l1_step"),
-        "ground": _number(problems, "--ground", args.ground, lambda x: x > 0,
-                          "errors.cli.synth.ground"),
-        "omega": _number(problems, "--omega", args.omega, lambda x: x != 0,
-                         "errors.cli.synth.omega"),
-    }
-    given = frozenset(k for k in ("l1", "l2", "l3", "mu_min") if getattr(args, k) is not None)
-    mode = MODES.get(given)
-    if mode is None:
-        got = " ".join(OPTION[k] for k in ("l1", "l2", "l3", "mu_min") if k in given)
-        problems.append(Problem("options", Text("errors.cli.synth.modes", {"got": got})))
-    if args.l1_step is not None and mode != "mu_min":
-        problems.append(Problem("--l1-step", Text("errors.cli.synth.l1_step_only")))
-    if args.ground is not None and mode == "region":
-        problems.append(Problem("--ground", Text("errors.cli.synth.ground_needs")))
-    if args.omega is not None and args.ground is None:
-        problems.append(Problem("--omega", Text("errors.cli.synth.omega_only")))
-    if args.name is not None:
-        from crankbase.validation import name_text
-        why = name_text(args.name)
-        if why:
-            problems.append(Problem("--name", why))
-    return v, mode, problems
+def _values(args) -> dict:
+    """The options as the inputs of :func:`linkage.synthesis_study.check_inputs`."""
+    return {"phi0_deg": args.phi0, "l1": args.l1, "l2": args.l2, "l3": args.l3,
+            "mu_min_deg": args.mu_min, "l1_step": args.l1_step, "ground_m": args.ground,
+            "omega_rad_s": args.omega, "name": args.name}
 
 
 #: Python argument names of linkage.synthesis → the options that set them.
 ARG_OPTION = {"l1": "--l1", "l2": "--l2", "l3": "--l3", "mu_min_deg": "--mu-min",
               "mu_min": "--mu-min", "l1_step": "--l1-step", "phi0_deg": "--phi0",
-              "ground_m": "--ground", "omega": "--omega"}
+              "ground_m": "--ground", "omega": "--omega", "omega_rad_s": "--omega"}
 
 
 def _as_options(exc):
@@ -151,16 +87,14 @@ def _as_options(exc):
 
 def run(args) -> int:
     from crankbase.errors import SpecError
-    from linkage.synthesis_study import run_study, summary_lines, write_report
+    from linkage.synthesis_study import (OPTIONS, check_inputs, run_study, study_arguments,
+                                         summary_lines, write_report)
 
-    v, mode, problems = _validate(args)
-    if problems:
-        raise SpecError(problems)
+    # the library's one check of the inputs (the synthesis page's too), named as options
+    inputs, _mode = check_inputs(_values(args), {**OPTIONS, "mode": "options"})
     # compute everything first (a problem leaves the output untouched)
     try:
-        report = run_study(v["phi0"], l1=v["l1"], l2=v["l2"], l3=v["l3"], mu_min=v["mu_min"],
-                           l1_step=v["l1_step"], ground=v["ground"], name=args.name,
-                           omega=v["omega"], plots=not args.no_plots)
+        report = run_study(**study_arguments(inputs), plots=not args.no_plots)
     except SpecError as exc:
         raise _as_options(exc) from None
     written = write_report(report, args.output, lang=args.lang)

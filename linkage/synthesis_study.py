@@ -26,9 +26,11 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from crankbase.errors import Problem, SpecError, Text
+from crankbase.schema import Key, Schema, Table
 
 __all__ = ["SynthesisReport", "WrittenReport", "run_study", "write_report", "summary_lines",
-           "MODES"]
+           "MODES", "INPUTS", "SCHEMA", "check_inputs", "inputs_from_spec", "study_arguments",
+           "command_line", "OPTIONS"]
 
 #: The design task by the lengths and angle given.
 MODES = {
@@ -37,6 +39,189 @@ MODES = {
     frozenset({"l1"}): "l1",
     frozenset({"l2", "mu_min"}): "mu_min",
 }
+
+# ----------------------------------------------------------------------------- the inputs
+#: The inputs of a synthesis, declared once (:mod:`crankbase.schema`; words in the
+#: ``spec`` catalogue under ``spec.synth.<key>``): the synthesis page's form and the
+#: options of ``crankdyn synth`` (:data:`OPTIONS`), both checked by :func:`check_inputs`.
+INPUTS = Table("synth", (
+    Key("phi0_deg", gt=0, lt=180, unit="deg", default=30.0, symbol=True),
+    Key("l1", gt=0, symbol=True),
+    Key("l2", gt=0, symbol=True),
+    Key("l3", gt=0, symbol=True),
+    Key("mu_min_deg", ge=0, lt=90, unit="deg", symbol=True),
+    Key("l1_step", gt=0),
+    Key("ground_m", gt=0, unit="m", symbol=True),
+    Key("omega_rad_s", unit="rad/s", symbol=True),
+    Key("name", "name", shown_default="kkm-<φ0>"),
+), required=True)
+
+#: The inputs as a spec (``[synth]``: the synthesis page's upload and its spec download).
+SCHEMA = Schema("synth", (INPUTS,))
+
+#: Each input's option of ``crankdyn synth``.
+OPTIONS = {"phi0_deg": "--phi0", "l1": "--l1", "l2": "--l2", "l3": "--l3",
+           "mu_min_deg": "--mu-min", "l1_step": "--l1-step", "ground_m": "--ground",
+           "omega_rad_s": "--omega", "name": "--name"}
+
+#: ``(test, what is valid)`` of each number (the words in ``errors.po``).
+_VALID = {"phi0_deg": (lambda x: 0 < x < 180, "errors.cli.synth.phi0"),
+          "l1": (lambda x: x > 0, "errors.cli.synth.positive"),
+          "l2": (lambda x: x > 0, "errors.cli.synth.positive"),
+          "l3": (lambda x: x > 0, "errors.cli.synth.positive"),
+          "mu_min_deg": (lambda x: 0 <= x < 90, "errors.cli.synth.mu_min"),
+          "l1_step": (lambda x: x > 0, "errors.cli.synth.l1_step"),
+          "ground_m": (lambda x: x > 0, "errors.cli.synth.ground"),
+          "omega_rad_s": (lambda x: x != 0, "errors.cli.synth.omega")}
+
+#: The design-task inputs, by their names in :data:`MODES`.
+_TASK = (("l1", "l1"), ("l2", "l2"), ("l3", "l3"), ("mu_min_deg", "mu_min"))
+
+
+def _number(problems, key, value, names):
+    """One input as a float (None when not given or bad); a problem naming the input,
+    the value and what is valid when it is not a number or out of its range."""
+    import math
+
+    if value is None:
+        return None
+    test, valid = _VALID[key]
+    if isinstance(value, bool) or not isinstance(value, (str, int, float)):
+        value = str(value)
+    try:
+        x = float(value)
+    except (TypeError, ValueError, OverflowError):
+        problems.append(Problem(names[key], Text("errors.cli.synth.not_number",
+                                                 {"value": value, "valid": Text(valid)})))
+        return None
+    if not (math.isfinite(x) and test(x)):
+        problems.append(Problem(names[key], Text("errors.cli.synth.bad",
+                                                 {"value": value, "valid": Text(valid)})))
+        return None
+    from crankbase.validation import magnitude_text
+
+    why = magnitude_text(x)              # the same bound as every spec number
+    if why:
+        problems.append(Problem(names[key], why))
+        return None
+    return x
+
+
+def check_inputs(values: dict, names: dict | None = None) -> tuple[dict, str]:
+    """Check the inputs of a synthesis: every problem at once, one per input.
+
+    The one check of ``crankdyn synth`` and the synthesis page.
+
+    Parameters
+    ----------
+    values : dict
+        The inputs by their :data:`INPUTS` key (``phi0_deg``, ``l1``, ``l2``, ``l3``,
+        ``mu_min_deg``, ``l1_step``, ``ground_m``, ``omega_rad_s``, ``name``): a number,
+        its text as typed, or None (not given; ``phi0_deg`` then 30°).
+    names : dict, optional
+        How the problems name each input (default: its key; ``crankdyn synth`` gives
+        :data:`OPTIONS`, a form its fields); ``"mode"`` names a wrong choice of the
+        design task (default ``"mode"``).
+
+    Returns
+    -------
+    (dict, str)
+        The inputs as numbers (``name`` a text; None where not given) and the design
+        task, one of :data:`MODES`' values.
+
+    Raises
+    ------
+    SpecError
+        Every problem: a value that is no number or out of its range (what is valid
+        named), a wrong set of lengths and angle, ``l1_step`` without ``mu_min_deg``,
+        ``ground_m`` without a mechanism, ``omega_rad_s`` without ``ground_m``, a bad
+        ``name``.
+
+    Examples
+    --------
+    >>> check_inputs({"l2": "0.8", "mu_min_deg": 40})[1]
+    'mu_min'
+    """
+    names = {**{k: k for k in OPTIONS}, "mode": "mode", **(names or {})}
+    unknown = set(values) - set(OPTIONS)
+    if unknown:
+        raise ValueError(f"check_inputs: unknown inputs {sorted(unknown)}")
+    given = {k: v for k, v in values.items() if v is not None}
+    problems = []
+    out = {k: _number(problems, k, given.get(k), names) for k in _VALID}
+    if out["phi0_deg"] is None and "phi0_deg" not in given:
+        out["phi0_deg"] = 30.0
+    task = frozenset(m for k, m in _TASK if k in given)
+    mode = MODES.get(task)
+    if mode is None:
+        got = " ".join(names[k] for k, _ in _TASK if k in given)
+        problems.append(Problem(names["mode"], Text(
+            "errors.linkage.synthesis_study.modes",
+            {"got": got, "l1": names["l1"], "l2": names["l2"], "l3": names["l3"],
+             "mu_min": names["mu_min_deg"]})))
+    if "l1_step" in given and mode != "mu_min":
+        problems.append(Problem(names["l1_step"], Text(
+            "errors.linkage.synthesis_study.l1_step_only",
+            {"l2": names["l2"], "mu_min": names["mu_min_deg"]})))
+    if "ground_m" in given and mode == "region":
+        problems.append(Problem(names["ground_m"], Text(
+            "errors.linkage.synthesis_study.ground_needs",
+            {"l1": names["l1"], "l2": names["l2"], "l3": names["l3"],
+             "mu_min": names["mu_min_deg"]})))
+    if "omega_rad_s" in given and "ground_m" not in given:
+        problems.append(Problem(names["omega_rad_s"], Text(
+            "errors.linkage.synthesis_study.omega_only", {"ground": names["ground_m"]})))
+    out["name"] = None
+    if "name" in given:
+        from crankbase.validation import name_text
+
+        why = name_text(given["name"])
+        if why:
+            problems.append(Problem(names["name"], why))
+        else:
+            out["name"] = given["name"]
+    if problems:
+        raise SpecError(problems)
+    return out, mode
+
+
+def inputs_from_spec(data: dict) -> tuple[dict, str]:
+    """The checked inputs of a ``[synth]`` spec (the synthesis page's form or upload):
+    :func:`check_inputs`, each problem named by its key path (``synth.mu_min_deg``),
+    unknown tables and keys reported ("did you mean")."""
+    from crankbase.schema import SpecReader
+
+    r = SpecReader()
+    if not isinstance(data, dict):
+        data = {}
+    r.top(data, SCHEMA)
+    raw = r.sub(data, INPUTS)
+    r.raise_if_any()
+    values = {k: raw.get(k) for k in OPTIONS}
+    return check_inputs(values, {**{k: f"synth.{k}" for k in OPTIONS}, "mode": "synth"})
+
+
+def study_arguments(inputs: dict) -> dict:
+    """The keyword arguments of :func:`run_study` for checked ``inputs``
+    (:func:`check_inputs`' first value)."""
+    return dict(phi0=inputs["phi0_deg"], l1=inputs["l1"], l2=inputs["l2"],
+                l3=inputs["l3"], mu_min=inputs["mu_min_deg"], l1_step=inputs["l1_step"],
+                ground=inputs["ground_m"], name=inputs["name"], omega=inputs["omega_rad_s"])
+
+
+def command_line(inputs: dict, lang="ru", output="OUT") -> str:
+    """The ``crankdyn synth`` command that repeats a synthesis of checked ``inputs``."""
+    import shlex
+
+    parts = ["crankdyn", "synth"]
+    for key, option in OPTIONS.items():
+        v = inputs.get(key)
+        if v is None:
+            continue
+        parts += [option, v if isinstance(v, str) else f"{v!r}".removesuffix(".0")
+                  if float(v).is_integer() else repr(v)]
+    parts += ["--lang", lang, "-o", output]
+    return " ".join(shlex.quote(p) for p in parts)
 
 
 @dataclass

@@ -237,6 +237,42 @@ def test_the_linkage_page_in_the_browser(server, browser, tmp_path, cli_report):
         _shot(d, f"web_linkage_results_{lang}.png", tmp_path)
 
 
+def test_the_synthesis_page_in_the_browser(server, browser, tmp_path, cli_report):
+    """The README's synthesis (λ2 = 0.8, μmin = 40°, ground 0.5 m): the chosen mechanism
+    on the page is the CLI's ``kkm-30_mechanism.csv``, in both languages; a bad μmin at
+    its field; the screenshots of the page."""
+    from selenium.webdriver.common.by import By
+
+    out = _shared(cli_report("synth", "--l2", "0.8", "--mu-min", "40", "--ground", "0.5",
+                             "--lang", "en"))
+    with open(out / "kkm-30_mechanism.csv", newline="") as fh:
+        want = list(csv.reader(fh))
+    d = browser
+    for lang in ("en", "ru"):
+        d.get(server + f"/synth?lang={lang}")
+        d.find_element(By.ID, "example-readme").click()
+        _by_id(d, "notice")
+        _compute(d)
+        table = d.find_element(By.ID, "table2-form")
+        head = [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
+        rows = [[td.text for td in tr.find_elements(By.TAG_NAME, "td")]
+                for tr in table.find_elements(By.CSS_SELECTOR, "tbody tr")]
+        assert [head, *rows] == want
+        _wait(d, _images_loaded)
+        assert len(d.find_elements(By.CSS_SELECTOR, "#figures img")) == 3
+        d.execute_script("document.getElementById('results').scrollIntoView()")
+        _shot(d, f"web_synth_results_{lang}.png", tmp_path)
+    box = d.find_element(By.ID, "synth.mu_min_deg")     # ru: a bad μmin at its field
+    box.clear()
+    box.send_keys("95")
+    d.find_element(By.ID, "compute").click()
+    err = _by_id(d, "err-synth.mu_min_deg")
+    assert "95" in err.text and "углом в градусах" in err.text
+    assert not d.find_elements(By.ID, "results")
+    d.execute_script("document.getElementById('form').scrollIntoView()")
+    _shot(d, "web_synth_form_ru.png", tmp_path)
+
+
 def test_the_dynamics_page_in_the_browser(server, browser, tmp_path, cli_report):
     """The seed's flywheel example: the motion table on the page is the CLI's, in both
     languages; the screenshots of the page."""

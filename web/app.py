@@ -31,6 +31,7 @@ from .jobs import Busy, JobPool
 from .balance_page import BalancePage
 from .dynamics_page import DynamicsPage
 from .linkage_page import LinkagePage
+from .synth_page import SynthPage
 from .pages import PageState, Run, render_job, spec_toml
 from .sessions import COOKIE, SessionStore
 
@@ -43,7 +44,7 @@ UPLOAD_LIMIT = 2_000_000
 LANG_COOKIE = "crankdyn_lang"
 log = logging.getLogger("crankdyn.web")
 #: The pages, in the menu's order.
-KINDS = (EnginePage(), LinkagePage(), DynamicsPage(), BalancePage())
+KINDS = (EnginePage(), LinkagePage(), SynthPage(), DynamicsPage(), BalancePage())
 
 
 # ----------------------------------------------------------------------------- body limit
@@ -231,7 +232,8 @@ def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of,
         session = session_of(request)
         st = state_of(session)
         t = texts(lang)
-        secs = form.sections(lang, kind.schema())
+        schema = kind.schema_for(values=st.values)
+        secs = form.sections(lang, schema, st.values)
         fields = {f.path for s in secs for f in s.fields} | set(kind.extra_fields)
         by_field, general = {}, []
         for p in st.problems:
@@ -247,14 +249,15 @@ def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of,
                    sources=[(s, t(f"web.form.source.{s}")) for s in form.PRESSURE_SOURCES])
         if run is not None:
             files = None
-            if kind.wait_for_files or run.options.get("drawing"):   # listed once written
+            if kind.waits(run):                 # listed once written
                 with contextlib.suppress(Exception):
                     files = await render.wait(run.write_future)
             res = kind.results(run, lang, files)
-            ctx["run"] = dict(res, number=run.number, zip=f"{res['name']}_report.zip",
-                              toml=f"{res['name']}.toml",
-                              pressure=run.pressure[0] if run.pressure else None,
-                              drawings=[n for n in files or () if n.endswith(".pdf")])
+            ctx["run"] = dict(dict(zip=f"{res['name']}_report.zip", toml=f"{res['name']}.toml",
+                                   drawings=[n for n in files or ()
+                                             if n.endswith((".pdf", ".dxf"))]),
+                              **res, number=run.number,
+                              pressure=run.pressure[0] if run.pressure else None)
         return finish(templates.TemplateResponse(request, "page.html", ctx), session, lang)
 
     async def example(request):
@@ -266,7 +269,7 @@ def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of,
         if name not in kind.examples:
             return error_page(request, session, lang, texts(lang)("web.example.unknown"), 400)
         data, pressure = kind.example_spec(name)
-        values, source = form.values_from_spec(data, kind.schema())
+        values, source = form.values_from_spec(data, kind.schema_for(data=data))
         with st.lock:
             st.values, st.source, st.pressure, st.problems = values, source, pressure, []
             st.notice = Text("web.example.loaded", {"name": name})
@@ -302,7 +305,7 @@ def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of,
             from .engine_page import pressure_name
 
             pressure = (pressure_name(pname, spec_file), praw)
-        values, source = form.values_from_spec(data, kind.schema())
+        values, source = form.values_from_spec(data, kind.schema_for(data=data))
         with st.lock:
             st.values, st.source, st.pressure = values, source, pressure
             st.notice, st.problems = Text("web.upload.loaded"), []
@@ -338,7 +341,7 @@ def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of,
             if upload is not None:
                 st.pressure = upload
         data = form.spec_from_values(values, source, st.pressure[0] if st.pressure else None,
-                                     kind.schema())
+                                     kind.schema_for(values=values))
         return await run_spec(request, session, lang, st, data,
                               st.pressure if kind.has_pressure and source == "file" else None)
 

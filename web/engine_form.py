@@ -58,15 +58,48 @@ class Section:
 PLACEHOLDERS = {"<link>": ("crank", "coupler", "rocker", "slider")}
 
 
-def _tables(schema):
+def _link_names(schema, names=None) -> dict:
+    """The names a placeholder table stands for: a chain's links are named by its spec
+    (``names``, found in the spec or the posted fields; the crank at least), a four-bar's
+    are :data:`PLACEHOLDERS`'."""
+    if getattr(schema, "name", "") != "chain":
+        return PLACEHOLDERS
+    return {"<link>": tuple(dict.fromkeys(names or ())) or ("crank",)}
+
+
+def _names_in_values(values) -> list:
+    """The link names of the posted fields ``links.<name>.<key>``."""
+    return [k.split(".")[1] for k in values or () if k.startswith("links.")
+            and k.count(".") == 2]
+
+
+def _names_in_spec(data) -> list:
+    """The link names of a spec dict: its ``[links.<name>]`` tables, the crank and the
+    groups' links (a link without a table gets empty fields)."""
+    out = []
+    if isinstance(data, dict):
+        mech = data.get("mechanism") if isinstance(data.get("mechanism"), dict) else {}
+        crank = mech.get("crank_link", "crank")
+        out += [crank] if isinstance(crank, str) else []
+        for g in data.get("group") or () if isinstance(data.get("group"), list) else ():
+            if isinstance(g, dict) and isinstance(g.get("links"), list):
+                out += [n for n in g["links"] if isinstance(n, str)]
+        links = data.get("links")
+        out += [n for n in links if isinstance(n, str)] if isinstance(links, dict) else []
+    return out
+
+
+def _tables(schema, placeholders=None):
     """``[(path, table)]`` of every table of ``schema`` in order, a placeholder table once
     per name it stands for."""
     from crankbase.schema import Table
 
+    placeholders = PLACEHOLDERS if placeholders is None else placeholders
+
     def walk(tables, prefix):
         for t in tables:
             last = t.path.rsplit(".", 1)[-1]
-            names = PLACEHOLDERS.get(last, (last,))
+            names = placeholders.get(last, (last,))
             for n in names:
                 path = f"{prefix}{n}"
                 yield path, t
@@ -89,15 +122,16 @@ def _plain_rows(array) -> bool:
     return all(k.kind in ("number", "integer") and k.required is True for k in array.keys())
 
 
-def sections(lang: str, schema=None) -> list[Section]:
+def sections(lang: str, schema=None, values=None) -> list[Section]:
     """The form's sections in ``lang``: one per table of the schema (the engine's by
-    default), in order."""
+    default), in order (a chain's links: those named in the field texts ``values``)."""
     from crankbase.schema import ArrayOfTables
     from crankbase.texts import texts
 
     t = texts(lang)
     out = []
-    for tpath, tab in _tables(_schema(schema)):
+    schema = _schema(schema)
+    for tpath, tab in _tables(schema, _link_names(schema, _names_in_values(values))):
         fields = []
         if isinstance(tab, ArrayOfTables):
             keys = tab.keys()
@@ -177,7 +211,8 @@ def values_from_spec(data: dict, schema=None) -> tuple[dict, str]:
     from crankbase.schema import ArrayOfTables
 
     values = {}
-    for tpath, tab in _tables(_schema(schema)):
+    schema = _schema(schema)
+    for tpath, tab in _tables(schema, _link_names(schema, _names_in_spec(data))):
         if isinstance(tab, ArrayOfTables):
             rows = _get(data, tpath)
             if isinstance(rows, list):
@@ -264,7 +299,7 @@ def spec_from_values(values: dict, source: str = "cycle", pressure_file: str | N
     data: dict = {}
     schema = _schema(schema)
     engine = schema.name == "engine"
-    for tpath, tab in _tables(schema):
+    for tpath, tab in _tables(schema, _link_names(schema, _names_in_values(values))):
         in_pressure = engine and (tpath == "pressure" or tpath.startswith("pressure."))
         if isinstance(tab, ArrayOfTables):
             text = (values.get(tpath) or "").strip()

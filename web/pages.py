@@ -63,6 +63,16 @@ class Kind:
     def schema(self):
         raise NotImplementedError
 
+    def schema_for(self, data: dict | None = None, values: dict | None = None):
+        """The schema of the form for a spec dict ``data`` or the posted field texts
+        ``values`` (a page whose spec has several shapes chooses; default
+        :meth:`schema`)."""
+        return self.schema()
+
+    def waits(self, run: Run) -> bool:
+        """Whether the results list files known only once written."""
+        return self.wait_for_files or bool(run.options.get("drawing"))
+
     def example_spec(self, name) -> tuple:
         """``(spec dict, pressure file as (server name, bytes) or None)``."""
         import tomllib
@@ -85,8 +95,10 @@ class Kind:
     def results(self, run: Run, lang: str, files=None) -> dict:
         """What the results show: ``name`` (the file stem), ``head``/``rows`` and
         ``head2``/``rows2`` (two tables), ``title1``/``title2``, ``summary`` (lines),
-        ``figures`` and ``tables`` (file names), ``xlsx``, ``toml_label``; ``files``:
-        the written files, when :attr:`wait_for_files`."""
+        ``figures`` and ``tables`` (file names), ``xlsx``, ``toml_label``; optionally
+        ``toml`` and ``zip`` (other names of the spec and the zip), ``command`` (the
+        command line that repeats the run), ``drawings`` (the drawings' files); ``files``:
+        the written files, when :meth:`waits`."""
         raise NotImplementedError
 
 
@@ -111,12 +123,13 @@ def spec_toml(spec: dict) -> str:
     return tomli_w.dumps(spec)
 
 
-def finish_files(run: Run, name: str, files: dict) -> dict:
-    """Add the run's spec TOML (and pressure file) and a zip of every file to ``files``
-    (``{file name: path}`` of the written report)."""
+def finish_files(run: Run, name: str, files: dict, spec_name: str | None = None) -> dict:
+    """Add the run's spec TOML (``spec_name``, default ``<name>.toml``; and the pressure
+    file) and a zip of every file to ``files`` (``{file name: path}`` of the written
+    report)."""
     spec = run.folder / "spec"
     spec.mkdir(exist_ok=True)
-    toml = spec / f"{name}.toml"
+    toml = spec / (spec_name or f"{name}.toml")
     toml.write_text(spec_toml(run.spec), encoding="utf-8")
     files[toml.name] = toml
     if run.pressure is not None:
