@@ -336,14 +336,14 @@ def test_the_teacher_s_check_of_a_workbook_in_the_browser(server, browser, tmp_p
     assert _by_id(d, "check-status").text == status
     verdict = d.find_element(By.ID, "check-verdict").text.splitlines()
     assert verdict[0].startswith("ivanov.xlsx")
-    assert [ln for ln in verdict if ln.startswith("T_N ")][0].split()[1] in ("WRONG",
-                                                                               "НЕВЕРНО")
+    (t_line,) = [ln.split() for ln in verdict if ln.split()[:1] == ["T_N"]]
+    assert t_line[1] in ("WRONG", "НЕВЕРНО"), verdict
     cells = [[td.text for td in tr.find_elements(By.TAG_NAME, "td")]
              for tr in d.find_elements(By.CSS_SELECTOR, "#check-wrong tbody tr")]
     assert [c[:2] for c in cells] == [["30.0", "T_N"]]
     assert d.find_element(By.ID, "dl-check-marked").get_attribute("href").endswith(
         "/ivanov_checked.xlsx")
-    d.execute_script("document.getElementById('check-form').scrollIntoView()")
+    d.execute_script("document.getElementById('check-result').scrollIntoView()")
     _shot(d, f"web_teacher_check_{lang}.png", tmp_path)
 
 
@@ -372,5 +372,6 @@ def test_the_torsion_example_in_the_browser(server, browser, tmp_path, lang):
     assert [head] + rows == want
     _wait(d, _images_loaded)
     assert d.find_elements(By.ID, "fig-bmw-m54b30_campbell.png")
-    d.execute_script("document.getElementById('torsion-modes').scrollIntoView()")
+    d.execute_script("document.getElementById('fig-bmw-m54b30_campbell.png')"
+                     ".parentElement.scrollIntoView()")
     _shot(d, f"web_engine_torsion_{lang}.png", tmp_path)
