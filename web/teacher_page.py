@@ -181,6 +181,8 @@ def check_work(folder: Path, number: int, spec: tuple, pressure, student: tuple,
     folder : Path
         The session's folder of this check: the uploads go into ``folder/input`` under
         the server's names, the outputs into ``folder/check``.
+    number : int
+        The check's number in its session (the downloads' URLs name it).
     spec, student : (upload name, bytes)
         The spec TOML (an engine's or a linkage's) and the student's ``.xlsx``/``.xlsm``/
         ``.csv`` (the upload name gives the kind and the names shown; it is never a path).
@@ -192,7 +194,9 @@ def check_work(folder: Path, number: int, spec: tuple, pressure, student: tuple,
     Raises
     ------
     CheckProblem
-        Every problem, by the form field it belongs to.
+        The problems of the first input that fails (the student's file kind, the spec's
+        TOML, the pressure file, the spec, then the table and the options all at once),
+        each by the form field it belongs to.
     """
     import tomllib
     from dataclasses import replace
