@@ -132,7 +132,8 @@ def read_student_table(path, key, known, mapping=None) -> StudentTable:
     Raises
     ------
     SpecError
-        The file is missing, or no sheet/CSV has the key column.
+        The file is missing or cannot be read (a damaged workbook, a file that is not
+        one, a CSV that is not UTF-8 text), or no sheet/CSV has the key column.
     """
     path = Path(path)
     mapping = dict(mapping or {})
@@ -142,7 +143,11 @@ def read_student_table(path, key, known, mapping=None) -> StudentTable:
     if path.suffix.lower() in (".xlsx", ".xlsm"):
         from openpyxl import load_workbook
 
-        wb = load_workbook(path, data_only=True)
+        try:
+            wb = load_workbook(path, data_only=True)
+        except _unreadable() as exc:        # a damaged workbook, a file that is not one
+            raise SpecError(Problem(path.name, Text("errors.checking.cannot_read",
+                                                    {"reason": str(exc)}))) from None
         frames, cells, ignored = [], {}, []
         for ws in wb.worksheets:
             rows = list(ws.iter_rows(max_row=_HEADER_SCAN_ROWS, values_only=True))
@@ -184,7 +189,11 @@ def read_student_table(path, key, known, mapping=None) -> StudentTable:
         return StudentTable(data, _repoint(cells, frames, data, key, sheets), path, ignored)
     import csv
 
-    text = path.read_text(encoding="utf-8-sig")
+    try:
+        text = path.read_text(encoding="utf-8-sig")
+    except UnicodeDecodeError as exc:       # not a text file (or not UTF-8)
+        raise SpecError(Problem(path.name, Text("errors.checking.cannot_read",
+                                                {"reason": str(exc)}))) from None
     lines = text.splitlines()
     head = lines[0] if lines else ""
     delim = ";" if head.count(";") > head.count(",") else ","

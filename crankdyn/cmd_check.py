@@ -21,7 +21,6 @@ verdict, detail``), ``DIR/<student>/`` the student's ``check.csv`` and checked w
 Exit status 0 when every student is matched and right, 1 otherwise.
 """
 from __future__ import annotations
-from crankbase.errors import Text
 
 
 def add_parser(sub):
@@ -66,26 +65,13 @@ def run(args) -> int:
 
     from crankbase.checking import check_table, write_check
     from crankbase.errors import SpecError
-    from crankbase.validation import read_toml
+    from engine.check import spec_check_side
 
     spec_path, student_path = Path(args.spec), Path(args.student)
     if getattr(args, "variants", None):
         return _run_class(args, spec_path, student_path)
     try:
-        raw, _ = read_toml(spec_path)
-        if "engine" in raw:
-            import engine
-            from engine.check import check_side
-
-            side = check_side(engine.load(spec_path))
-        elif "mechanism" in raw:
-            import linkage
-            from linkage.check import check_side
-
-            side = check_side(linkage.load_spec(spec_path))
-        else:
-            raise SpecError(Text("errors.crankdyn.cli_check.neither_engine_spec",
-                                 {"spec_path": spec_path}))
+        side = spec_check_side(spec_path)
         result = check_table(side, student_path, args.rtol, args.atol, args.map)
         written = write_check(result, Path(args.output), args.lang, inputs=[spec_path])
     except SpecError as exc:            # the library's arguments → this command's options

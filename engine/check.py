@@ -1,13 +1,14 @@
 """The computed side of ``crankdyn check`` for an engine: every column a student's Table 2
 may hold (either textbook form, and the force-table columns), at the student's own crank
 angles.  Computed by :func:`engine.force_table` and :func:`engine.table2.table2`; the
-comparison itself is :mod:`crankbase.checking`.
+comparison itself is :mod:`crankbase.checking`.  :func:`spec_check_side` is the side of
+any spec file ``crankdyn check`` takes (an engine's or a linkage's, by its tables).
 """
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["KEY", "known_columns", "computed_rows", "check_side"]
+__all__ = ["KEY", "known_columns", "computed_rows", "check_side", "spec_check_side"]
 
 #: The row key of an engine table.
 KEY = "alpha_deg"
@@ -52,3 +53,42 @@ def check_side(study):
 
     return CheckSide(KEY, tuple(known_columns()),
                      partial(computed_rows, study.spec, study.settings), numeric_key=True)
+
+
+def spec_check_side(spec_path):
+    """The computed side of ``crankdyn check SPEC.toml STUDENT``: an engine spec
+    (``[engine]``) checks Table 2 (:func:`check_side`), a linkage spec (``[mechanism]``)
+    the course tables (:func:`linkage.check.check_side`).
+
+    Parameters
+    ----------
+    spec_path : str or Path
+        The spec file (a pressure file it names is read beside it).
+
+    Returns
+    -------
+    crankbase.checking.CheckSide
+
+    Raises
+    ------
+    SpecError
+        An unreadable spec, every problem of it, or a spec with neither table.
+    """
+    from pathlib import Path
+
+    from crankbase.errors import SpecError, Text
+    from crankbase.validation import read_toml
+
+    spec_path = Path(spec_path)
+    raw, _ = read_toml(spec_path)
+    if "engine" in raw:
+        from .spec import load
+
+        return check_side(load(spec_path))
+    if "mechanism" in raw:
+        import linkage
+        from linkage.check import check_side as linkage_side
+
+        return linkage_side(linkage.load_spec(spec_path))
+    raise SpecError(Text("errors.crankdyn.cli_check.neither_engine_spec",
+                         {"spec_path": spec_path}))

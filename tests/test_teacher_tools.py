@@ -357,3 +357,17 @@ def test_check_bad_input_exits_2(tmp_path, capsys):
     assert "no column 'alpha_deg'" in capsys.readouterr().err
     assert not (tmp_path / "o").exists()
     shutil.rmtree(tmp_path, ignore_errors=True)
+
+
+def test_check_an_unreadable_student_file_exits_2_with_one_line(tmp_path, capsys):
+    """A file named .xlsx that is not a workbook, and a CSV that is not UTF-8 text: one
+    line naming the file (exit 2), not a traceback; nothing written."""
+    (tmp_path / "s.xlsx").write_bytes(b"not a workbook")
+    (tmp_path / "s.csv").write_bytes("alpha_deg;T_N\n0;1\n".encode("utf-16"))
+    for name in ("s.xlsx", "s.csv"):
+        assert main(["check", "--lang", "en", str(PETROL), str(tmp_path / name), "-o",
+                     str(tmp_path / "o")]) == 2
+        err = capsys.readouterr().err.splitlines()
+        assert err == [f"crankdyn check: error: {name}: cannot be read: " + err[0].split(
+            "cannot be read: ", 1)[1]], err
+    assert not (tmp_path / "o").exists()

@@ -344,3 +344,70 @@ def test_the_teacher_page_in_the_browser(server, browser, tmp_path):
     d.get(server + "/teacher?lang=ru")
     assert "вариантов: 2; записано 2" in _by_id(d, "batch-line").text
     _shot(d, "web_teacher_ru.png", tmp_path)
+
+
+@pytest.mark.parametrize("lang,status", [("en", "1 value is wrong"),
+                                         ("ru", "1 значение неверно")])
+def test_the_teacher_s_check_of_a_workbook_in_the_browser(server, browser, tmp_path,
+                                                          cli_report, lang, status):
+    """A student's workbook (the CLI's petrol workbook, one cell of T changed by 30 %)
+    checked through the page's second form: the T_N column is flagged at that angle, the
+    checked workbook is offered; the screenshots of the verdict."""
+    import openpyxl
+    from selenium.webdriver.common.by import By
+
+    src = _shared(cli_report("engine", "--example", "petrol", "--lang", lang))
+    wb = openpyxl.load_workbook(src / "petrol-vaz2106.xlsx")
+    ws = wb.worksheets[1]                           # Table 2: keys in hidden row 5
+    keys = [ws.cell(5, j).value for j in range(1, ws.max_column + 1)]
+    row = next(r for r in range(6, ws.max_row + 1) if ws.cell(r, 1).value == 30)
+    ws.cell(row, keys.index("T_N") + 1).value *= 1.3
+    student = tmp_path / "ivanov.xlsx"
+    wb.save(student)
+    d = browser
+    d.get(server + f"/teacher?lang={lang}")
+    d.find_element(By.ID, "check-spec").send_keys(str(example_path("petrol_vaz2106.toml")))
+    d.find_element(By.ID, "check-student").send_keys(str(student))
+    d.find_element(By.ID, "check-submit").click()
+    assert _by_id(d, "check-status").text == status
+    verdict = d.find_element(By.ID, "check-verdict").text.splitlines()
+    assert verdict[0].startswith("ivanov.xlsx")
+    (t_line,) = [ln.split() for ln in verdict if ln.split()[:1] == ["T_N"]]
+    assert t_line[1] in ("WRONG", "НЕВЕРНО"), verdict
+    cells = [[td.text for td in tr.find_elements(By.TAG_NAME, "td")]
+             for tr in d.find_elements(By.CSS_SELECTOR, "#check-wrong tbody tr")]
+    assert [c[:2] for c in cells] == [["30.0", "T_N"]]
+    assert d.find_element(By.ID, "dl-check-marked").get_attribute("href").endswith(
+        "/ivanov_checked.xlsx")
+    d.execute_script("document.getElementById('check-result').scrollIntoView()")
+    _shot(d, f"web_teacher_check_{lang}.png", tmp_path)
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_the_torsion_example_in_the_browser(server, browser, tmp_path, lang):
+    """The torsion example computed with the option on: the natural frequencies table on
+    the page is the library's torsion_modes.csv, Campbell's diagram is shown; the
+    screenshots of the torsion results."""
+    import engine
+    from selenium.webdriver.common.by import By
+
+    report = engine.run_study(engine.load(example_path("torsion_inline6.toml")),
+                              torsion=True)
+    want = list(csv.reader(report.torsion.tables["torsion_modes.csv"].to_csv(
+        index=False, lineterminator="\n").splitlines()))
+    d = browser
+    d.get(server + f"/engine?lang={lang}")
+    d.find_element(By.ID, "example-torsion").click()
+    _by_id(d, "notice")
+    assert d.find_element(By.ID, "opt-torsion").is_selected()
+    _compute(d)
+    table = d.find_element(By.ID, "torsion-modes")
+    head = [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
+    rows = [[td.text for td in tr.find_elements(By.TAG_NAME, "td")]
+            for tr in table.find_elements(By.CSS_SELECTOR, "tbody tr")]
+    assert [head] + rows == want
+    _wait(d, _images_loaded)
+    assert d.find_elements(By.ID, "fig-bmw-m54b30_campbell.png")
+    d.execute_script("document.getElementById('fig-bmw-m54b30_campbell.png')"
+                     ".parentElement.scrollIntoView()")
+    _shot(d, f"web_engine_torsion_{lang}.png", tmp_path)

@@ -273,6 +273,7 @@ def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of,
         with st.lock:
             st.values, st.source, st.pressure, st.problems = values, source, pressure, []
             st.notice = Text("web.example.loaded", {"name": name})
+            st.options = kind.spec_options(data, st.options)
         return back(session, lang, "#form")
 
     async def upload(request):
@@ -309,6 +310,7 @@ def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of,
         with st.lock:
             st.values, st.source, st.pressure = values, source, pressure
             st.notice, st.problems = Text("web.upload.loaded"), []
+            st.options = kind.spec_options(data, st.options)
         if spec_file is not None and pressure is None:
             with st.lock:
                 st.problems = [_problem(form.FILE_KEY, Text("web.upload.pressure_missing",
@@ -340,8 +342,9 @@ def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of,
             st.values, st.source, st.options = values, source, options
             if upload is not None:
                 st.pressure = upload
-        data = form.spec_from_values(values, source, st.pressure[0] if st.pressure else None,
-                                     kind.schema_for(values=values))
+        data = kind.form_spec(form.spec_from_values(
+            values, source, st.pressure[0] if st.pressure else None,
+            kind.schema_for(values=values)), options)
         return await run_spec(request, session, lang, st, data,
                               st.pressure if kind.has_pressure and source == "file" else None)
 
@@ -452,7 +455,9 @@ def _teacher_routes(*, templates, store, pool, batches, upload_limit, lang_of, s
         t = texts(lang)
         b = st.batch
         ctx = dict(t=t, lang=lang, page=_Teacher, kinds=KINDS, problems=st.problems,
-                   upload_mb=upload_limit / 1e6, batch=None, max_variants=tp.MAX_VARIANTS)
+                   upload_mb=upload_limit / 1e6, batch=None, max_variants=tp.MAX_VARIANTS,
+                   check=st.check, check_errors=st.check_problems,
+                   check_values=st.check_values)
         if b is not None:
             info = dict(number=b.number, done=b.done, total=b.total, running=True)
             if b.future.done():
@@ -543,8 +548,81 @@ def _teacher_routes(*, templates, store, pool, batches, upload_limit, lang_of, s
             return Response(texts(lang)("web.file.gone"), status_code=404)
         return FileResponse(path, filename=name)
 
+    async def check(request):
+        """One student's work checked (``crankdyn check SPEC STUDENT``)."""
+        lang = lang_of(request)
+        session = session_of(request)
+        st = state_of(session)
+        up, values = {}, {}
+        async with read_form(request) as f:
+            for key in ("spec", "pressure", "student"):
+                item = f.get(key)
+                if hasattr(item, "read") and item.filename:
+                    up[key] = (item.filename, await item.read())
+            for key in ("rtol", "atol", "map"):
+                v = f.get(key)
+                values[key] = v if isinstance(v, str) else ""
+        t = texts(lang)
+        back = finish(RedirectResponse("/teacher#check", status_code=303), session, lang)
+        missing = {k: [t("web.check.choose")] for k in ("spec", "student") if k not in up}
+        with st.lock:
+            st.check_values = values
+        if missing:
+            with st.lock:
+                st.check_problems = missing
+            return back
+        with st.lock:
+            st.runs += 1
+            number = st.runs
+        folder = session.folder / f"check-{number}"
+        try:
+            run = await pool.run(tp.check_work, folder, number, up["spec"], up.get("pressure"),
+                                 up["student"], values["rtol"], values["atol"],
+                                 values["map"], lang)
+        except tp.CheckProblem as exc:
+            shutil.rmtree(folder, ignore_errors=True)
+            with st.lock:
+                st.check_problems = exc.lines(lang)
+            return back
+        except CrankdynError as exc:
+            shutil.rmtree(folder, ignore_errors=True)
+            with st.lock:
+                st.check_problems = {"student": [t("web.run.failed",
+                                                   reason="; ".join(exc.lines(lang)))]}
+            return back
+        except Busy:
+            shutil.rmtree(folder, ignore_errors=True)
+            return error_page(request, session, lang, t("web.run.busy"), 503)
+        except asyncio.TimeoutError:
+            return error_page(request, session, lang, t("web.run.timeout", s=pool.timeout),
+                              504)
+        except Exception as exc:          # a bug in a job: this session's error only
+            log.exception("teacher check failed")
+            shutil.rmtree(folder, ignore_errors=True)
+            return error_page(request, session, lang, t("web.run.crashed",
+                                                        what=type(exc).__name__), 500)
+        with st.lock:
+            old, st.check, st.check_problems = st.check, run, {}
+        if old is not None:
+            shutil.rmtree(old.folder, ignore_errors=True)
+        return back
+
+    async def check_file(request):
+        """A file of the session's last check, by the name the page offered."""
+        lang = lang_of(request)
+        s = store.get(request.cookies.get(COOKIE))
+        st = s.pages.get("teacher") if s is not None else None
+        run = st.check if st is not None else None
+        path = None if run is None or str(run.number) != request.path_params["number"] \
+            else run.files.get(request.path_params["name"])
+        if path is None or not path.is_file():
+            return Response(texts(lang)("web.file.gone"), status_code=404)
+        return FileResponse(path, filename=request.path_params["name"])
+
     return [Route("/teacher", get), Route("/teacher/variants", start, methods=["POST"]),
-            Route("/teacher/batch/{number:str}/{name:str}", batch_file)]
+            Route("/teacher/batch/{number:str}/{name:str}", batch_file),
+            Route("/teacher/check", check, methods=["POST"]),
+            Route("/teacher/check/{number:str}/{name:str}", check_file)]
 
 
 def _problem(key, text):

@@ -86,6 +86,14 @@ class Kind:
         """The page's options, taken out of the posted ``values``."""
         return {}
 
+    def spec_options(self, data: dict, options: dict) -> dict:
+        """The page's options once a spec (an example, an upload) is loaded."""
+        return options
+
+    def form_spec(self, data: dict, options: dict) -> dict:
+        """The spec dict the form's fields make, as the page's options take it."""
+        return data
+
     def compute(self, data, input_dir, pressure, options):
         raise NotImplementedError
 

@@ -6,6 +6,13 @@ batch is :func:`engine.variants.run_variants` (each variant's complete report, i
 the summary table, the bad rows' problems), run in processes (its figures are drawn there,
 not in the server's drawing thread) while the page shows a progress bar; the result is one
 zip of every report and the summary.
+
+The second form checks one student's work (:func:`check_work`, ``crankdyn check SPEC
+STUDENT``): the spec (with its pressure file) and the student's workbook or CSV, written
+under the server's own names into the session's folder, go through the library
+(:func:`engine.check.spec_check_side`, :func:`crankbase.checking.check_table` and
+:func:`~crankbase.checking.write_check`); the page shows the verdict per column, the wrong
+cells, and offers ``check.csv`` and the checked workbook (wrong cells red, with comments).
 """
 from __future__ import annotations
 
@@ -15,7 +22,8 @@ import zipfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
-__all__ = ["Batch", "TeacherState", "MAX_VARIANTS", "prepare", "run_batch"]
+__all__ = ["Batch", "TeacherState", "MAX_VARIANTS", "prepare", "run_batch", "CheckRun",
+           "CheckProblem", "check_work", "CHECK_FIELDS", "STUDENT_NAMES"]
 
 #: Variants of one batch at most (a class is 20 to 40; each report takes seconds).
 MAX_VARIANTS = 100
@@ -35,10 +43,28 @@ class Batch:
 
 
 @dataclass
+class CheckRun:
+    """One student's work checked: the verdict, the wrong cells and the files."""
+
+    number: int
+    folder: Path
+    lines: tuple            # the verdict, as ``crankdyn check`` prints it
+    ok: bool
+    head: list              # the wrong cells (check.csv's columns and text)
+    rows: list
+    wrong: int
+    files: dict             # {download name: path}
+    marked: str | None      # the checked workbook's download name
+
+
+@dataclass
 class TeacherState:
     batch: Batch | None = None
     problems: list = field(default_factory=list)        # rendered lines
     runs: int = 0
+    check: CheckRun | None = None
+    check_problems: dict = field(default_factory=dict)  # field: [rendered lines]
+    check_values: dict = field(default_factory=dict)    # rtol, atol, map as typed
     lock: threading.Lock = field(default_factory=threading.Lock)
 
 
@@ -101,3 +127,139 @@ def remove(batch: Batch | None) -> None:
     if batch is not None:
         batch.future.add_done_callback(
             lambda _f, d=batch.folder: shutil.rmtree(d, ignore_errors=True))
+
+
+# ----------------------------------------------------------------------------- one student
+#: The fields of the check form (a problem is shown next to one of them).
+CHECK_FIELDS = ("spec", "pressure", "student", "rtol", "atol", "map")
+#: The server's names of a student's file, by its kind (only the kind is taken from the
+#: uploaded name).
+STUDENT_NAMES = {".xlsx": "student.xlsx", ".xlsm": "student.xlsm", ".csv": "student.csv"}
+
+
+class CheckProblem(Exception):
+    """Bad input of the check form: ``{field: [Problem or Text]}``; ``names`` maps the
+    server's paths to the names the teacher gave (a problem names the upload, never a
+    path of the server)."""
+
+    def __init__(self, problems: dict, names: dict | None = None):
+        super().__init__(problems)
+        self.problems = problems
+        self.names = dict(names or {})
+
+    def lines(self, lang: str) -> dict:
+        """``{field: [line]}`` in ``lang``."""
+        out = {}
+        for f, items in self.problems.items():
+            for item in items:
+                line = item.render(lang)
+                for path, name in sorted(self.names.items(), key=lambda kv: -len(kv[0])):
+                    line = line.replace(path, name)
+                out.setdefault(f, []).append(line)
+        return out
+
+
+def _tolerance(text):
+    """A tolerance as typed: empty is the library's default (None), a number is read (a
+    decimal comma too), anything else is passed on as text for the library to name."""
+    s = (text or "").strip()
+    if not s:
+        return None
+    try:
+        return float(s.replace(",", "."))
+    except ValueError:
+        return s
+
+
+def check_work(folder: Path, number: int, spec: tuple, pressure, student: tuple,
+               rtol: str = "", atol: str = "", mapping: str = "",
+               lang: str = "ru") -> CheckRun:
+    """Check a student's table as ``crankdyn check SPEC STUDENT -o DIR`` does.
+
+    Parameters
+    ----------
+    folder : Path
+        The session's folder of this check: the uploads go into ``folder/input`` under
+        the server's names, the outputs into ``folder/check``.
+    number : int
+        The check's number in its session (the downloads' URLs name it).
+    spec, student : (upload name, bytes)
+        The spec TOML (an engine's or a linkage's) and the student's ``.xlsx``/``.xlsm``/
+        ``.csv`` (the upload name gives the kind and the names shown; it is never a path).
+    pressure : (upload name, bytes) or None
+        The pressure file the spec names, if it names one.
+    rtol, atol, mapping : str
+        As typed: tolerances (empty: the library's defaults) and ``HEADER=column`` lines.
+
+    Raises
+    ------
+    CheckProblem
+        The problems of the first input that fails (the student's file kind, the spec's
+        TOML, the pressure file, the spec, then the table and the options all at once),
+        each by the form field it belongs to.
+    """
+    import tomllib
+    from dataclasses import replace
+
+    import tomli_w
+
+    from crankbase.checking import CheckFiles, check_table, write_check
+    from crankbase.errors import SpecError, Text
+    from crankbase.output import safe_name
+    from engine.check import spec_check_side
+
+    from .engine_page import pressure_name
+    from .pages import table_rows
+
+    spec_name = Path(spec[0]).name or "spec.toml"
+    shown = Path(Path(student[0]).name or "student")
+    kind = shown.suffix.lower()
+    if kind not in STUDENT_NAMES:
+        raise CheckProblem({"student": [Text("web.check.student_kind", {"name": shown.name})]})
+    try:
+        data = tomllib.loads(spec[1].decode("utf-8"))
+    except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
+        raise CheckProblem({"spec": [Text("web.upload.bad_toml", {"reason": str(exc)})]})
+    inp = folder / "input"
+    inp.mkdir(parents=True, exist_ok=True)
+    pr = data.get("pressure") if isinstance(data.get("pressure"), dict) else None
+    if pr is not None and isinstance(pr.get("file"), str):
+        if pressure is None:
+            raise CheckProblem({"pressure": [Text("web.upload.pressure_missing",
+                                                  {"file": pr["file"]})]})
+        pr["file"] = pressure_name(pressure[0], pr["file"])
+        (inp / pr["file"]).write_bytes(pressure[1])
+    spec_path = inp / "spec.toml"
+    spec_path.write_text(tomli_w.dumps(data), encoding="utf-8")
+    student_path = inp / STUDENT_NAMES[kind]
+    student_path.write_bytes(student[1])
+    names = {str(spec_path): spec_name, str(student_path): shown.name,
+             str(inp) + "/": "", student_path.name: shown.name}
+    try:
+        side = spec_check_side(spec_path)
+    except SpecError as exc:
+        raise CheckProblem({"spec": list(exc.problems)}, names)
+    maps = [ln.strip() for ln in (mapping or "").splitlines() if ln.strip()]
+    try:
+        result = check_table(side, student_path, _tolerance(rtol), _tolerance(atol), maps)
+    except SpecError as exc:
+        by = {}
+        for p in exc.problems:
+            by.setdefault({"rtol": "rtol", "atol": "atol", "mapping": "map"}.get(
+                p.key, "student"), []).append(p)
+        raise CheckProblem(by, names)
+    written = write_check(result, folder / "check", lang, inputs=[spec_path])
+    # the verdict names the files as the teacher knows them, never the server's paths
+    marked = (f"{safe_name(shown.stem, 'student')}_checked.xlsx"
+              if written.marked is not None else None)
+    view = replace(result, student=replace(result.student, source=shown))
+    lines = view.summary_lines(lang, CheckFiles(Path(written.check_csv.name),
+                                                Path(marked) if marked else None,
+                                                written.n_marked))
+    files = {written.check_csv.name: written.check_csv}
+    if marked:
+        files[marked] = written.marked
+    bad = result.table[~result.table["ok"]].drop(columns=["row_index"])
+    head, rows = table_rows(bad)
+    return CheckRun(number=number, folder=folder, lines=tuple(lines), ok=result.ok,
+                    head=head, rows=rows, wrong=len(bad), files=files, marked=marked)
