@@ -115,9 +115,12 @@ def _mm_figure(width, height):
 
 def position_blocks(pp, lang="ru"):
     """The diagrams of a position, in the course project's order: five for a four-bar or
-    a crank-slider; a chain's (no lever) the plans it has."""
-    if pp.lever is None:
-        return [diagram_block(pp, kind, lang) for kind in pp.plans]
+    a crank-slider; a chain's the plans it has, its lever after the acceleration plan."""
+    if pp.kind == "chain" or pp.lever is None:
+        out = [diagram_block(pp, kind, lang) for kind in pp.plans]
+        if pp.lever is not None:
+            out.insert(list(pp.plans).index("acceleration") + 1, lever_block(pp, lang))
+        return out
     return [diagram_block(pp, "velocity", lang), diagram_block(pp, "acceleration", lang),
             lever_block(pp, lang), diagram_block(pp, "force_dyad", lang),
             diagram_block(pp, "force_crank", lang)]

@@ -214,7 +214,10 @@ def test_cli_writes_the_chain_plans(tmp_path, monkeypatch):
 
     rep = run_study(example_path("press6.toml"), plots=False, plans="2,5", sheet="A3")
     tables = rep.tables()
-    assert f"{rep.name}_plans.csv" in tables and f"{rep.name}_lever.csv" not in tables
+    assert f"{rep.name}_plans.csv" in tables and f"{rep.name}_lever.csv" in tables
+    lev = tables[f"{rep.name}_lever.csv"]
+    assert list(lev["position"]) == [2, 5]
+    assert np.allclose(lev["M_lever_Nm"], lev["M_kinetostatic_Nm"], rtol=1e-9, atol=0)
     df = tables[f"{rep.name}_plans.csv"]
     assert set(df["plan"]) == {"velocity", "acceleration", "force_2_3", "force_4_5",
                                "force_crank"}
@@ -226,7 +229,7 @@ def test_cli_writes_the_chain_plans(tmp_path, monkeypatch):
     assert info["sheets"] >= 1
     assert (tmp_path / "p_sheet.pdf").stat().st_size > 0
     assert (tmp_path / "p_sheet.dxf").exists()
-    assert not (tmp_path / "p_lever.csv").exists()
+    assert (tmp_path / "p_lever.csv").exists() and (tmp_path / "p_lever_forces.csv").exists()
 
 
 def test_bad_position_is_a_keyed_error():
