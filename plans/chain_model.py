@@ -512,6 +512,33 @@ def _link_points(P: _Position, ln):
     return first, second
 
 
+#: The largest extent of a chain's lever drawing, turned plan and force arrows, at its
+#: default force scale (an A3 sheet's field is 271 mm high with the block's titles). [mm]
+LEVER_MAX_MM = 200.0
+
+
+def _lever_scale(forces, at_a, Fb, points):
+    """The lever's default round force scale: the four-bar's (the largest force
+    :data:`plans.model.LEVER_LONGEST_MM` long at most), coarser while the arrows make the
+    drawing larger than :data:`LEVER_MAX_MM` (a chain's velocity plan may be long)."""
+    big = max([abs(fc.force) for fc in forces] + [abs(Fb)]) or 1.0
+    mu = round_scale(big, LEVER_LONGEST_MM)
+    base = [0j] + list(points.values())
+
+    def extent(zs):
+        xs, ys = [z.real for z in zs], [z.imag for z in zs]
+        return max(max(xs) - min(xs), max(ys) - min(ys))
+
+    plan = extent(base)
+    for _ in range(30):
+        ends = [fc.at + fc.force / mu for fc in forces] + [at_a + Fb / mu]
+        size = extent(base + ends)
+        if size <= LEVER_MAX_MM or size - plan < 1.0:
+            break
+        mu = round_scale(big, 0.99 * big / mu)           # the next round scale
+    return mu
+
+
 def _lever(result, zl, P: _Position, vplan: Plan, scale=None) -> Lever:
     """Zhukovsky's lever of one position for the drawing: the loads of
     :func:`linkage.chain_lever.zhukovsky` (``zl``, every position) on the velocity plan
@@ -586,8 +613,7 @@ def _lever(result, zl, P: _Position, vplan: Plan, scale=None) -> Lever:
     segments = [(v.name, rot * v.start, rot * v.end, v.label_ru, v.label_en)
                 for v in vplan.vectors]
     if scale is None:
-        big = max([abs(fc.force) for fc in forces] + [abs(Fb)])
-        scale = round_scale(big or 1.0, LEVER_LONGEST_MM)
+        scale = _lever_scale(forces, at_a, Fb * 1j * e2, points)
     return Lever(forces, float(Fb), at_a, 1j * e2, abs(vA) / mu, float(M_lever), M_kin,
                  float(diff), points, segments, scale, F_kin)
 
