@@ -152,6 +152,15 @@ def summary_lines(plans, size, sheets, lang="ru", errors=None):
                                      mv=f"{pp.plans['velocity'].scale:g}",
                                      ma=f"{pp.plans['acceleration'].scale:g}",
                                      err=f"{err:.0e}"))
+            if L is not None:
+                scale = max(abs(L.M_lever_Nm), abs(L.M_kinetostatic_Nm))
+                lines.append("      " + t("plans.summary.chain_lever",
+                                           lever=format_snapped(L.M_lever_Nm, ".4f", scale),
+                                           kin=format_snapped(L.M_kinetostatic_Nm, ".4f",
+                                                              scale),
+                                           diff=format_snapped(L.difference_percent, ".1e"),
+                                           Fb=format_snapped(L.balancing_force_N, ".3f"),
+                                           mf=f"{L.scale:g}"))
             continue
         scale = max(abs(L.M_lever_Nm), abs(L.M_kinetostatic_Nm))
         lines.append("    " + t("plans.summary.lever", tag=pp.tag,

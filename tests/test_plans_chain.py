@@ -297,8 +297,12 @@ def test_summary_lines_in_each_language(shaper):
     _, pps = shaper
     ru = summary_lines(pps, "A1", 1, "ru")
     en = summary_lines(pps, "A1", 1, "en")
-    assert len(ru) == len(en) == 1 + len(pps)
+    assert len(ru) == len(en) == 1 + 2 * len(pps)
     assert "0.005" in ru[1] and "0.03" in ru[1]          # μV and μa of position 2
+    # the lever's line under each position: Mур of the lever and of the kinetostatics
+    L = pps[0].lever
+    assert f"{L.M_lever_Nm:.4f}" in en[2] and en[2].count(f"{L.M_kinetostatic_Nm:.4f}") == 2
+    assert "Жуковского" in ru[2] and f"μF = {L.scale:g}" in ru[2]
     assert not [s for s in en if re.search("[а-яА-ЯёЁ]", s)]
     assert not [s for s in ru if re.search(r"\b(plan|position|velocity|lever)\b", s)]
 
