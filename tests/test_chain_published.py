@@ -12,7 +12,9 @@ motion mechanisms).  The books' answers there are exact trigonometric results (t
 tangent to the crank circle, or perpendicular to the line of centres, at the extremes),
 printed as round numbers (30°, 2, 450 mm; 20 mm, 75 mm, 240°, 120°), so the chain, whose
 extremes are refined to round-off, must reproduce them to round-off: the tolerance is
-1e-9 relative, not the 2-3 figures of a graphical answer.
+1e-9 relative, not the 2-3 figures of a graphical answer.  A second, independent worked
+answer (a Whitworth time ratio printed to 4 figures from an angle rounded to 0.1°) is
+compared at the precision of its rounding.
 
 What was looked for and not found in a form that fixes the geometry: a six-link worked
 example with printed velocities and accelerations (the ram's v and a, the lever's ω and
@@ -138,3 +140,31 @@ def test_khurmi_whitworth_other_centre_distance_fails():
     s = linkage.analyze(spec).summary
     assert s.time_ratio == pytest.approx(3.0, rel=1e-9)          # β = 90°: 270/90
     assert s.time_ratio != pytest.approx(k["time_ratio"], rel=1e-3)
+
+
+# A Whitworth quick return problem with a worked answer from a second, independent
+# source: assignmentexpert.com, Engineering / Mechanical Engineering, question 133648
+# ("The Whitworth quick return motion mechanism has the driving crank AC = 150 mm long.
+# The distance between fixed centres CD = 100 mm. The line of stroke of the ram passes
+# through the centre of rotation of the slotted lever whose free end is connected to the
+# ram by a connecting link. Find the ratio of time of cutting to time of return."),
+# worked answer cos(β/2) = CD/AC, β/2 = 48.2°, β = 96.4°, ratio 2.735.  The answer goes
+# through an angle rounded to 0.1° (2.734 from 96.4° exactly), so the tolerance is 2e-3
+# on the ratio and 0.1° on β; the lever's arm and the rod are not given (two tried: the
+# ratio does not depend on them).
+ASSIGNMENTEXPERT_133648 = {"crank_m": 0.150, "CD_m": 0.100, "time_ratio": 2.735,
+                           "beta_deg": 96.4}
+
+
+@pytest.mark.parametrize("arm, rod", [(0.10, 0.30), (0.25, 0.60)])
+def test_whitworth_time_ratio_second_source(arm, rod):
+    k = ASSIGNMENTEXPERT_133648
+    spec = quick_return((0.0, 0.0), (0.0, k["CD_m"]), k["crank_m"], -arm, rod, k["CD_m"],
+                        "toward")
+    s = linkage.analyze(spec).summary
+    assert s.time_ratio == pytest.approx(k["time_ratio"], abs=2e-3)
+    assert s.idle_crank_angle_deg == pytest.approx(k["beta_deg"], abs=0.1)
+    # and the exact value of the book's construction, to round-off
+    beta = 2.0 * math.degrees(math.acos(k["CD_m"] / k["crank_m"]))
+    assert s.idle_crank_angle_deg == pytest.approx(beta, rel=1e-9)
+    assert s.travel == pytest.approx(2.0 * arm, rel=1e-9)
