@@ -512,28 +512,32 @@ def _link_points(P: _Position, ln):
     return first, second
 
 
-#: The largest extent of a chain's lever drawing, turned plan and force arrows, at its
-#: default force scale (an A3 sheet's field is 271 mm high with the block's titles). [mm]
-LEVER_MAX_MM = 200.0
+#: The largest width and height of a chain's lever drawing, turned plan and force arrows,
+#: at its default force scale, unless the turned plan alone is larger (an A3 sheet's field
+#: beside the title block is 186 mm wide). [mm]
+LEVER_MAX_MM = 140.0
 
 
 def _lever_scale(forces, at_a, Fb, points):
     """The lever's default round force scale: the four-bar's (the largest force
     :data:`plans.model.LEVER_LONGEST_MM` long at most), coarser while the arrows make the
-    drawing larger than :data:`LEVER_MAX_MM` (a chain's velocity plan may be long)."""
+    drawing wider or higher than :data:`LEVER_MAX_MM` or than the turned plan and 10 mm
+    (a chain's velocity plan may be long)."""
     big = max([abs(fc.force) for fc in forces] + [abs(Fb)]) or 1.0
     mu = round_scale(big, LEVER_LONGEST_MM)
-    base = [0j] + list(points.values())
+    base = [0j, at_a] + list(points.values()) + [fc.at for fc in forces]
 
     def extent(zs):
         xs, ys = [z.real for z in zs], [z.imag for z in zs]
-        return max(max(xs) - min(xs), max(ys) - min(ys))
+        return max(xs) - min(xs), max(ys) - min(ys)
 
-    plan = extent(base)
+    # each side no longer than LEVER_MAX_MM, or than the turned plan and the loads' points
+    # with arrows 10 mm beyond them
+    limit = [max(LEVER_MAX_MM, p + 10.0) for p in extent(base)]
     for _ in range(30):
         ends = [fc.at + fc.force / mu for fc in forces] + [at_a + Fb / mu]
         size = extent(base + ends)
-        if size <= LEVER_MAX_MM or size - plan < 1.0:
+        if all(s <= m + 1e-9 for s, m in zip(size, limit)):
             break
         mu = round_scale(big, 0.99 * big / mu)           # the next round scale
     return mu

@@ -311,7 +311,8 @@ def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
     def fits(b):
         if b.width > x1 - x0 or b.height > y1 - y0:
             return False
-        return b.height <= y1 - tb_top - GAP or b.width <= tb_left - GAP - x0
+        # clear of the title block by GAP as _pack places it (its corner holds a GAP too)
+        return b.height <= y1 - tb_top - 2 * GAP or b.width <= tb_left - 2 * GAP - x0
 
     too_big = [b.title for b in blocks if not fits(b)]
     if too_big:
