@@ -48,10 +48,11 @@ import numpy as np
 
 from linkage import chain as ch
 from linkage import groups as g
+from linkage.chain_lever import zhukovsky
 
 from .errors import PlanError, Problem, Text
-from .model import (MAX_PLAN_MM, Plan, PositionPlans, Vector, balancing_force, position_rows,
-                    round_scale)
+from .model import (LEVER_LONGEST_MM, MAX_PLAN_MM, Lever, LeverForce, Plan, PositionPlans,
+                    Vector, balancing_force, position_rows, round_scale)
 
 __all__ = ["build_chain_plans", "CHAIN_PLAN_KINDS"]
 
@@ -482,6 +483,145 @@ def _force_plan(kind, items, polys, inner, n2, mu):
     return P
 
 
+def _link_points(P: _Position, ln):
+    """The two points of link ``ln`` a couple on it is put at on the lever, as
+    ``(key, z, v)`` (key: the point's key on the velocity plan): the joints and named
+    points that move with the link at this position (v = v_O + iω·(z − z_O)), the one
+    nearest its origin and the one farthest from that; a link with a single such point
+    (a block) takes the point at the crank's length along its x axis as the second."""
+    res = P.res
+    L = res.links[ln]
+    zo, vo = P.c(L.origin.z), P.c(L.origin.v)
+    w = P.f(L.omega)
+    names = list(res.mech.frame) + list(res.joints)
+    names += [q for lk in res.mech.links.values() for q in lk.points]
+    out = []
+    for name in dict.fromkeys(names):
+        z, v, _a = P.point(name)
+        rigid = vo + 1j * w * (z - zo)
+        if abs(v - rigid) <= 1e-9 * (abs(vo) + abs(w) * abs(z - zo) + 1e-12):
+            key = name.lower()
+            out.append((key + "_pt" if key in ("p", "pi") else key, z, v))
+    if not out:
+        out = [("", zo, vo)]
+    first = min(out, key=lambda p: abs(p[1] - zo))
+    second = max(out, key=lambda p: abs(p[1] - first[1]))
+    if abs(second[1] - first[1]) < 1e-9:
+        p2 = L.point(res.mech.driver.length)
+        second = ("", P.c(p2.z), P.c(p2.v))
+    return first, second
+
+
+#: The largest width and height of a chain's lever drawing, turned plan and force arrows,
+#: at its default force scale, unless the turned plan alone is larger (an A3 sheet's field
+#: beside the title block is 186 mm wide). [mm]
+LEVER_MAX_MM = 140.0
+
+
+def _lever_scale(forces, at_a, Fb, points):
+    """The lever's default round force scale: the four-bar's (the largest force
+    :data:`plans.model.LEVER_LONGEST_MM` long at most), coarser while the arrows make the
+    drawing wider or higher than :data:`LEVER_MAX_MM` or than the turned plan and 10 mm
+    (a chain's velocity plan may be long)."""
+    big = max([abs(fc.force) for fc in forces] + [abs(Fb)]) or 1.0
+    mu = round_scale(big, LEVER_LONGEST_MM)
+    base = [0j, at_a] + list(points.values()) + [fc.at for fc in forces]
+
+    def extent(zs):
+        xs, ys = [z.real for z in zs], [z.imag for z in zs]
+        return max(xs) - min(xs), max(ys) - min(ys)
+
+    # each side no longer than LEVER_MAX_MM, or than the turned plan and the loads' points
+    # with arrows 10 mm beyond them
+    limit = [max(LEVER_MAX_MM, p + 10.0) for p in extent(base)]
+    for _ in range(30):
+        ends = [fc.at + fc.force / mu for fc in forces] + [at_a + Fb / mu]
+        size = extent(base + ends)
+        if all(s <= m + 1e-9 for s, m in zip(size, limit)):
+            break
+        mu = round_scale(big, 0.99 * big / mu)           # the next round scale
+    return mu
+
+
+def _lever(result, zl, P: _Position, vplan: Plan, scale=None) -> Lever:
+    """Zhukovsky's lever of one position for the drawing: the loads of
+    :func:`linkage.chain_lever.zhukovsky` (``zl``, every position) on the velocity plan
+    turned 90° clockwise at its scale (a point of velocity v at ``−i·v/μV`` mm), each
+    force at its point, the couples of a link (its inertia moment and applied moments,
+    summed) as a pair of forces ⟂ the link at two of its points, as the four-bar's lever
+    draws them.  Σ moments + Fур·pa = 0 is solved again on the drawing, so that Mур of the
+    sheet is checked against the lever's and the kinetostatic one."""
+    res, mech = P.res, P.res.mech
+    mu = vplan.scale
+    rot = -1j
+    w1 = P.f(res.omega(mech.driver.link))
+    sub = lambda k: str(k).translate(_SUB)             # noqa: E731
+    forces = []
+
+    def add(name, lru, len_, key, v, F):
+        at = complex(rot * v / mu)
+        m = float(g.cross(at, F))
+        size = abs(F)
+        forces.append(LeverForce(name, lru, len_, key, at, F, m / size if size else 0.0, m))
+
+    couples = {}
+    count = {}
+    for ld in zl.loads:
+        n = P.number[ld.link]
+        F = P.c(ld.force)
+        kind = ld.name.split("_", 1)[0]
+        if kind in ("Mu", "M"):                        # a couple: ±M (l = 1 m) pairs
+            if ld.name.endswith("+"):
+                e = P.c(res.links[ld.link].e)
+                M = (F * (1j * e).conjugate()).real
+                couples.setdefault(ld.link, []).append((f"{kind}{n}", M))
+            continue
+        v = P.c(ld.at) * w1 * 1j                       # the point's velocity: at = −i·v/ω₁
+        if kind == "G":
+            add(f"G{n}", f"G{sub(n)}", f"G{sub(n)}", f"s{n}", v, F)
+        elif kind == "Fu":
+            add(f"Fu{n}", f"Fи{sub(n)}", f"Fi{sub(n)}", f"s{n}", v, F)
+        else:                                          # F_<link>_<k>: applied, resistance
+            count[n] = count.get(n, 0) + 1
+            k = count[n]
+            add(f"F{n}_{k}", f"F{sub(n)}" + ("" if k == 1 else f".{k}"),
+                f"F{sub(n)}" + ("" if k == 1 else f".{k}"), "", v, F)
+    for ln, items in couples.items():
+        M = sum(m for _, m in items)
+        if M == 0 or np.all(np.asarray(res.links[ln].omega) == 0):
+            continue                                   # a link that only slides: no turn
+        n = P.number[ln]
+        names = "+".join(k for k, _ in items)
+        lab_ru = "+".join(("Mи" if k.startswith("Mu") else "M") + sub(n) for k, _ in items)
+        lab_en = "+".join(("Mi" if k.startswith("Mu") else "M") + sub(n) for k, _ in items)
+        (k1, z1, v1), (k2, z2, v2) = _link_points(P, ln)
+        d = z2 - z1
+        f = M * 1j * d / abs(d) ** 2                   # ±f at the two points: moment M
+        add(f"{names}_{k2 or 'x'}", f"F({lab_ru})", f"F({lab_en})", k2, v2, f)
+        add(f"{names}_{k1 or 'o'}", f"F({lab_ru})", f"F({lab_en})", k1, v1, -f)
+    d = mech.driver
+    zO, zA = P.point(d.pivot)[0], P.point(d.joint)[0]
+    vA = P.point(d.joint)[1]
+    e2 = (zA - zO) / abs(zA - zO)                      # along OA
+    at_a = rot * vA / mu
+    total = sum(fc.moment_Nmm for fc in forces)
+    Fb = -total / g.cross(at_a, 1j * e2) + 0.0
+    M_lever = Fb * d.length
+    M_kin = P.f(result.reactions.M_drive)
+    F_kin = (balancing_force(M_kin, zA - zO) / (1j * e2)).real + 0.0
+    if M_kin != 0:
+        diff = 100.0 * (M_lever - M_kin) / abs(M_kin)
+    else:
+        diff = 0.0 if M_lever == 0 else math.copysign(math.inf, M_lever)
+    points = {k: rot * z for k, z in vplan.points.items()}
+    segments = [(v.name, rot * v.start, rot * v.end, v.label_ru, v.label_en)
+                for v in vplan.vectors]
+    if scale is None:
+        scale = _lever_scale(forces, at_a, Fb * 1j * e2, points)
+    return Lever(forces, float(Fb), at_a, 1j * e2, abs(vA) / mu, float(M_lever), M_kin,
+                 float(diff), points, segments, scale, F_kin)
+
+
 def build_chain_plans(result, positions=None, *, scales=None):
     """Velocity and acceleration plans of the chosen positions of an analysed chain.
 
@@ -518,6 +658,8 @@ def build_chain_plans(result, positions=None, *, scales=None):
     rows = position_rows(K, positions)
     pos_col = K["position"]
     numbered = pos_col.notna().all()
+    forces, moments = result.loads
+    zl = zhukovsky(res, forces, moments, spec.gravity)
     out = []
     for i in rows:
         P = _Position(res, i)
@@ -560,6 +702,7 @@ def build_chain_plans(result, positions=None, *, scales=None):
         for j in list(res.mech.frame) + list(res.joints):
             geo[j] = P.point(j)[0]
         pos = int(pos_col.iat[i]) if numbered else None
+        lever = _lever(result, zl, P, plans["velocity"], scales.get("lever"))
         out.append(PositionPlans(pos, math.degrees(float(res.phi[i])) % 360.0, "chain",
-                                 plans, None, angular, geo))
+                                 plans, lever, angular, geo))
     return out

@@ -115,9 +115,12 @@ def _mm_figure(width, height):
 
 def position_blocks(pp, lang="ru"):
     """The diagrams of a position, in the course project's order: five for a four-bar or
-    a crank-slider; a chain's (no lever) the plans it has."""
-    if pp.lever is None:
-        return [diagram_block(pp, kind, lang) for kind in pp.plans]
+    a crank-slider; a chain's the plans it has, its lever after the acceleration plan."""
+    if pp.kind == "chain" or pp.lever is None:
+        out = [diagram_block(pp, kind, lang) for kind in pp.plans]
+        if pp.lever is not None:
+            out.insert(list(pp.plans).index("acceleration") + 1, lever_block(pp, lang))
+        return out
     return [diagram_block(pp, "velocity", lang), diagram_block(pp, "acceleration", lang),
             lever_block(pp, lang), diagram_block(pp, "force_dyad", lang),
             diagram_block(pp, "force_crank", lang)]
@@ -308,7 +311,8 @@ def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
     def fits(b):
         if b.width > x1 - x0 or b.height > y1 - y0:
             return False
-        return b.height <= y1 - tb_top - GAP or b.width <= tb_left - GAP - x0
+        # clear of the title block by GAP as _pack places it (its corner holds a GAP too)
+        return b.height <= y1 - tb_top - 2 * GAP or b.width <= tb_left - 2 * GAP - x0
 
     too_big = [b.title for b in blocks if not fits(b)]
     if too_big:

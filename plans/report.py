@@ -103,7 +103,7 @@ def write_plans(result, plans, folder, *, name=None, lang="ru", sheet="A1",
         if previews:
             save_figure(fig, folder / f"{stem}_plans_{pp.tag}", formats=("png",), dpi=150)
     _csv(plans_table(plans), folder / f"{stem}_plans.csv")
-    if all(pp.lever is not None for pp in plans):     # a chain's plans have no lever
+    if all(pp.lever is not None for pp in plans):
         _csv(lever_table(plans), folder / f"{stem}_lever.csv")
         _csv(lever_forces_table(plans), folder / f"{stem}_lever_forces.csv")
     st = student_table(plans)
@@ -140,18 +140,27 @@ def summary_lines(plans, size, sheets, lang="ru", errors=None):
     from crankbase.tolerances import format_snapped
 
     t = texts(lang)
-    chain = any(pp.lever is None for pp in plans)
+    chain = any(pp.kind == "chain" for pp in plans)
     lines = ["  " + t("plans.summary.plans_chain" if chain else "plans.summary.plans",
                       positions=t.n("plans.summary.positions", len(plans)),
                       sheets=t.n("plans.summary.sheets", sheets, size=size))]
     for pp in plans:
         L = pp.lever
-        if L is None:                                  # a chain: scales and closure
+        if pp.kind == "chain":                         # a chain: scales and closure
             err = max([0.0] + [e for p in pp.plans.values() for e in p.closure()])
             lines.append("    " + t("plans.summary.chain", tag=pp.tag,
                                      mv=f"{pp.plans['velocity'].scale:g}",
                                      ma=f"{pp.plans['acceleration'].scale:g}",
                                      err=f"{err:.0e}"))
+            if L is not None:
+                scale = max(abs(L.M_lever_Nm), abs(L.M_kinetostatic_Nm))
+                lines.append("      " + t("plans.summary.chain_lever",
+                                           lever=format_snapped(L.M_lever_Nm, ".4f", scale),
+                                           kin=format_snapped(L.M_kinetostatic_Nm, ".4f",
+                                                              scale),
+                                           diff=format_snapped(L.difference_percent, ".1e"),
+                                           Fb=format_snapped(L.balancing_force_N, ".3f"),
+                                           mf=f"{L.scale:g}"))
             continue
         scale = max(abs(L.M_lever_Nm), abs(L.M_kinetostatic_Nm))
         lines.append("    " + t("plans.summary.lever", tag=pp.tag,

@@ -72,7 +72,7 @@ class PlansReport(LinkageReport):
         n = self.name
         st = student_table(self.plans)
         out[f"{n}_plans.csv"] = plans_table(self.plans)
-        if all(pp.lever is not None for pp in self.plans):   # a chain's: no lever
+        if all(pp.lever is not None for pp in self.plans):
             out.update({f"{n}_lever.csv": lever_table(self.plans),
                         f"{n}_lever_forces.csv": lever_forces_table(self.plans)})
         out[f"{n}_student_table.csv"] = st

@@ -22,7 +22,9 @@ def plans_table(plans):
     """One row per drawn vector: ``position, plan, segment, length_mm, value, unit, scale``
     (``value`` in the unit, ``scale`` in unit per mm; ``length_mm = value/scale``): the
     plans and polygons (the crank's with Fур, segment ``Fb``), then the force arrows of
-    the Zhukovsky lever (plan ``lever``, at the lever's force scale)."""
+    the Zhukovsky lever (plan ``lever``, at the lever's force scale; a chain's lever is
+    in :func:`lever_forces_table` alone, its plans table as before the lever was
+    drawn)."""
     import pandas as pd
 
     rows = []
@@ -30,6 +32,8 @@ def plans_table(plans):
         for kind, plan in pp.plans.items():
             for v in plan.vectors:
                 rows.append((_pos(pp), kind, v.name, v.length_mm, v.value, v.unit, v.scale))
+        if pp.kind == "chain":      # its lever's arrows: <name>_lever_forces.csv only
+            continue
         for v in (pp.lever.arrows() if pp.lever is not None else []):
             rows.append((_pos(pp), "lever", v.name, v.length_mm, v.value, v.unit, v.scale))
     return pd.DataFrame(rows, columns=PLANS_COLUMNS)

@@ -214,7 +214,10 @@ def test_cli_writes_the_chain_plans(tmp_path, monkeypatch):
 
     rep = run_study(example_path("press6.toml"), plots=False, plans="2,5", sheet="A3")
     tables = rep.tables()
-    assert f"{rep.name}_plans.csv" in tables and f"{rep.name}_lever.csv" not in tables
+    assert f"{rep.name}_plans.csv" in tables and f"{rep.name}_lever.csv" in tables
+    lev = tables[f"{rep.name}_lever.csv"]
+    assert list(lev["position"]) == [2, 5]
+    assert np.allclose(lev["M_lever_Nm"], lev["M_kinetostatic_Nm"], rtol=1e-9, atol=0)
     df = tables[f"{rep.name}_plans.csv"]
     assert set(df["plan"]) == {"velocity", "acceleration", "force_2_3", "force_4_5",
                                "force_crank"}
@@ -226,7 +229,7 @@ def test_cli_writes_the_chain_plans(tmp_path, monkeypatch):
     assert info["sheets"] >= 1
     assert (tmp_path / "p_sheet.pdf").stat().st_size > 0
     assert (tmp_path / "p_sheet.dxf").exists()
-    assert not (tmp_path / "p_lever.csv").exists()
+    assert (tmp_path / "p_lever.csv").exists() and (tmp_path / "p_lever_forces.csv").exists()
 
 
 def test_bad_position_is_a_keyed_error():
@@ -294,8 +297,12 @@ def test_summary_lines_in_each_language(shaper):
     _, pps = shaper
     ru = summary_lines(pps, "A1", 1, "ru")
     en = summary_lines(pps, "A1", 1, "en")
-    assert len(ru) == len(en) == 1 + len(pps)
+    assert len(ru) == len(en) == 1 + 2 * len(pps)
     assert "0.005" in ru[1] and "0.03" in ru[1]          # μV and μa of position 2
+    # the lever's line under each position: Mур of the lever and of the kinetostatics
+    L = pps[0].lever
+    assert f"{L.M_lever_Nm:.4f}" in en[2] and en[2].count(f"{L.M_kinetostatic_Nm:.4f}") == 2
+    assert "Жуковского" in ru[2] and f"μF = {L.scale:g}" in ru[2]
     assert not [s for s in en if re.search("[а-яА-ЯёЁ]", s)]
     assert not [s for s in ru if re.search(r"\b(plan|position|velocity|lever)\b", s)]
 
@@ -315,3 +322,96 @@ def test_angular_values_read_off_the_plans(case):
                    else "eps_{}_rad_s2").format(names[n - 1])
             assert a["signed_value"] == pytest.approx(K[col].iat[i], rel=1e-12)
             assert a["value"] == pytest.approx(abs(K[col].iat[i]), rel=1e-9)
+
+
+def test_the_lever_on_the_sheet_balances_as_the_lever_and_the_kinetostatics(case):
+    """The chain's lever as drawn (plans.chain_model: the loads on the turned velocity
+    plan at μV, a link's couples moved to two of its points, Fур solved again from the
+    drawing's moments) gives the Mур of :func:`linkage.chain_lever.zhukovsky` and of the
+    kinetostatics, sign included, to 1e-9; each force's moment about the pole is its
+    power over μV (v·F/μV, v the chain's own velocity of its point), so a force put at a
+    wrong point or the plan turned the wrong way shows."""
+    from linkage.chain_lever import zhukovsky
+
+    res, _, pps = case
+    forces, moments = res.loads
+    zl = zhukovsky(res.motion, forces, moments, res.spec.gravity)
+    n = res.motion.phi.shape
+    M_kin = np.broadcast_to(res.reactions.M_drive, n)
+    mech = res.spec.mechanism
+    for pp in pps:
+        i = _row(res, pp)
+        L = pp.lever
+        assert L.M_lever_Nm == pytest.approx(float(zl.M_balance[i]), rel=1e-9)
+        assert L.M_lever_Nm == pytest.approx(float(M_kin[i]), rel=1e-9)
+        assert L.M_kinetostatic_Nm == pytest.approx(float(M_kin[i]), rel=1e-12)
+        assert abs(L.difference_percent) < 1e-7
+        mu = pp.plans["velocity"].scale
+        total = 0.0
+        for f in L.forces:
+            total += f.moment_Nmm
+            m = re.fullmatch(r"(G|Fu)(\d+)", f.name)
+            if not m:
+                continue
+            ln = mech.link_names[int(m.group(2)) - 1]
+            lk, lm = mech.links[ln], res.motion.links[ln]
+            vS = g_vec(lm.point(lk.cg).v, i, n)
+            assert f.moment_Nmm == pytest.approx((vS.conjugate() * f.force).real / mu,
+                                                 rel=1e-9, abs=1e-9 * abs(f.force))
+        # the drawing's balance: Σ moments + Fур·(a × its direction) = 0, |pa| = V_A/μV
+        zA, zO = pp.geometry["A"], pp.geometry["O"]
+        assert abs(L.balancing_dir) == pytest.approx(1.0)
+        assert (L.balancing_dir * (zA - zO).conjugate()).real == pytest.approx(
+            0.0, abs=1e-12)
+        arm = (L.balancing_at.conjugate() * L.balancing_dir).imag
+        assert total + L.balancing_force_N * arm == pytest.approx(0.0, abs=1e-9 * max(
+            abs(total), 1.0))
+        assert L.M_lever_Nm == pytest.approx(L.balancing_force_N * abs(zA - zO), rel=1e-12)
+
+
+def g_vec(v, i, n):
+    return complex(np.broadcast_to(v.x, n)[i], np.broadcast_to(v.y, n)[i])
+
+
+def test_the_lever_is_drawn_on_the_pdf_and_dxf_sheet(case, tmp_path):
+    """Each chosen position's lever is a block of the sheet, every force arrow (and Fур)
+    one LINE of the LEVER layer in the DXF, |F|/μF mm long; its texts give Mур from the
+    lever beside the kinetostatic one; no two texts overlap."""
+    import ezdxf
+
+    from plans.dxf import APPID, write_dxf
+
+    res, chosen, pps = case
+    for lang, size in (("ru", "A1"), ("en", "A3")):
+        sheets = drawing.layout_sheets(res, pps, lang, size)
+        keys = [k for sh in sheets for k in sh.blocks]
+        found = {}
+        texts = []
+        for k, sh in enumerate(sheets):
+            assert drawing.check_no_overlap(sh.items) == []
+            texts += [t.text for t in sh.items if isinstance(t, layout.Text)]
+            path = tmp_path / f"{lang}_{k}.dxf"
+            write_dxf(sh, path)
+            msp = ezdxf.readfile(path).modelspace()
+            for e in msp.query("LINE[layer=='LEVER']"):
+                found[e.get_xdata(APPID)[0].value] = (e.dxf.end - e.dxf.start).magnitude
+        for pp in pps:
+            assert f"{pp.tag}:lever" in keys
+            L = pp.lever
+            for v in L.arrows():
+                if v.length_mm < 1e-6:
+                    continue
+                assert found[f"{pp.tag}:lever:{v.name}"] == pytest.approx(
+                    v.value / L.scale, rel=1e-9)
+            M = layout.fmt(L.M_lever_Nm, lang, 6)
+            assert sum(M in t for t in texts) >= 2         # the lever's and kinetostatics'
+        if lang == "en":
+            assert not [t for t in texts if re.search("[а-яА-ЯёЁ]", t)]
+
+
+def test_a_fixed_lever_scale_is_kept():
+    res = linkage.analyze(example_path("shaper.toml"))
+    pp, = build_chain_plans(res, [2], scales={"lever": 50.0})
+    assert pp.lever.scale == 50.0
+    Fb = [v for v in pp.lever.arrows() if v.name == "Fb"][0]
+    assert Fb.length_mm == pytest.approx(abs(pp.lever.balancing_force_N) / 50.0, rel=1e-12)
