@@ -26,7 +26,11 @@ thread (BLAS/OpenMP pinned to one); ``--wall`` times wall-clock instead:
   It runs on fewer positions (``--pylinkage-positions``) and its time per position is
   extrapolated to the full count.  Its B is checked against ours.
 
-Prints a table of positions per second and the ratios.  No assertions on time.
+Prints a table of positions per second and the ratios, the load average at the start and
+the end (on a shared machine a load above the number of cores shares the cores and their
+caches: compare runs at similar loads), and the targets of issues #20 and #9 (four-bar
+``analyze(course_tables=False)`` ≥ 5 M positions/s, ≥ 100 × pylinkage; the default
+``analyze`` ≥ 2 M/s), each marked met or not.  No assertions on time.
 """
 from __future__ import annotations
 
