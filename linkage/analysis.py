@@ -174,8 +174,8 @@ def _blocks(spec, phi, mech, ext, course_tables):
     ``position``) and the blocks (columns × positions)."""
     n = len(phi)
     t = _Tables(spec, mech, ext, course_tables, max(1, min(n, CHUNK)))
-    kblock = np.empty((len(t.kcols), n))
-    fblock = np.empty((len(t.fcols), n))
+    kblock = g.column_block(len(t.kcols), n)
+    fblock = g.column_block(len(t.fcols), n)
     t.fill(phi, kblock, fblock)
     return t.kcols, t.fcols, kblock, fblock
 

@@ -244,8 +244,9 @@ def transmission_angles(res: ch.ChainResult) -> dict:
                 x = g.cross(s.link2.e, s.link3.e)
             else:
                 x = g.cross(s.block.e, s.yoke.e)
-            out[key] = np.arcsin(np.minimum(np.abs(np.asarray(x, float)), 1.0)) \
-                * np.ones(res.phi.shape)
+            mu = np.arcsin(np.minimum(np.abs(np.asarray(x, float)), 1.0))
+            # a constant angle (two fixed guides) as an array over the positions
+            out[key] = mu if mu.shape == res.phi.shape else mu * np.ones(res.phi.shape)
     return out
 
 
@@ -426,7 +427,7 @@ def _columns(spec, res, cf, res_force, K, F):
         if lk.mass:
             _point_columns(f"S_{ln}", res.links[ln].point(lk.cg), K)
     for ln in mech.link_names:
-        K[f"theta_{ln}_deg"] = np.degrees(res.links[ln].theta)
+        np.degrees(res.links[ln].theta, out=K.out(f"theta_{ln}_deg"))
         K[f"omega_{ln}_rad_s"] = res.omega(ln)
         K[f"eps_{ln}_rad_s2"] = res.eps(ln)
     for grp, s in zip(mech.groups, res.solutions):
@@ -465,7 +466,7 @@ def _tables(spec, summary, phi, positions, course_tables=True):
             K, F = _Sink(b, course_tables), _Sink(b, course_tables)
             _columns(spec, res, cf, r, K, F)
             kcols, fcols = list(K.cols), list(F.cols)
-            kblock, fblock = np.empty((len(kcols), n)), np.empty((len(fcols), n))
+            kblock, fblock = g.column_block(len(kcols), n), g.column_block(len(fcols), n)
             for block, sink in ((kblock, K), (fblock, F)):
                 for row, v in zip(block, sink.cols.values()):
                     row[:b] = v

@@ -40,8 +40,28 @@ import numpy as np
 #: whole arrays of a million positions are memory-bound (benchmarks/bench_linkage.py).
 CHUNK = 16384
 
+#: Bytes of one page of memory (a small page; a huge page is a multiple of it).
+_PAGE = 4096
+
+
+def column_block(rows, n):
+    """A float block of ``rows`` columns × ``n`` positions (uninitialised), the storage
+    of a table filled chunk by chunk, with every page of it mapped now.
+
+    A fresh block of a million positions is hundreds of MB that the operating system
+    maps (and zeroes) on first touch.  Touched chunk by chunk, every chunk's writes
+    land on pages not yet mapped, across all its rows, and the zeroing of each new
+    (huge) page evicts the chunk's intermediate arrays from the cache; one write per
+    page here maps the whole block in one sweep before the first chunk
+    (benchmarks/bench_linkage.py: about 10 % of ``analyze`` at 1,000,000 positions).
+    The values written are overwritten by the chunks."""
+    block = np.empty((rows, n))
+    block.reshape(-1)[::_PAGE // block.itemsize] = 0.0
+    return block
+
+
 __all__ = [
-    "CHUNK", "Vec", "PointMotion", "LinkMotion", "Wrench",
+    "CHUNK", "column_block", "Vec", "PointMotion", "LinkMotion", "Wrench",
     "cross", "dot",
     "crank", "rrr", "rrp", "RRRSolution", "RRPSolution",
     "inertia_load", "link_wrench", "rrr_reactions", "rrp_reactions", "driver_reactions",
@@ -278,6 +298,8 @@ class LinkMotion:
     eps: object
     _points: dict = field(default_factory=dict, init=False, repr=False, compare=False)
     _theta: object = field(default=None, init=False, repr=False, compare=False)
+    #: A link with the same ``e`` (an RPR's block and lever): its angle is this one's.
+    _same_e: object = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self):
         self.e = Vec.of(self.e)
@@ -289,7 +311,7 @@ class LinkMotion:
         Kept once computed: the tables and the resistance rule (the rocker's angle) ask
         for the same angle."""
         if self._theta is None:
-            self._theta = self.e.angle
+            self._theta = self.e.angle if self._same_e is None else self._same_e.theta
         return self._theta
 
     def point(self, local) -> PointMotion:
@@ -587,9 +609,13 @@ def link_wrench(link: LinkMotion, mass=0.0, inertia=0.0, cg=0j, gravity=0.0,
     return Wrench(F, M, S.z)
 
 
-def _split(W, e1, e2):
-    """Solve n1·e1 + n2·e2 = W for the real magnitudes n1, n2 (vectorised)."""
-    idet = 1.0 / cross(e1, e2)
+def _split(W, e1, e2, idet=None):
+    """Solve n1·e1 + n2·e2 = W for the real magnitudes n1, n2 (vectorised).
+
+    ``idet`` is ``1/(e1 × e2)`` when the caller has it already: a group solves the same
+    pair of directions for its velocities and its accelerations."""
+    if idet is None:
+        idet = 1.0 / cross(e1, e2)
     return cross(W, e2) * idet, cross(e1, W) * idet
 
 
@@ -799,10 +825,12 @@ def rrp_guided(A: PointMotion, L: float, guide: LinkMotion, point=0j, angle=0.0,
     Bj = coincident(guide, zB)
     r3 = zB - A.z
     ir3 = r3.perp()
-    v, w3 = _split(A.v - Bj.v, u, -ir3)
+    mir3 = -ir3
+    idet = 1.0 / cross(u, mir3)               # (one 2×2 system for v and a)
+    v, w3 = _split(A.v - Bj.v, u, mir3, idet)
     iu = u.perp()
     rhs = A.a - r3 * (w3 * w3) - Bj.a - iu * (2.0 * guide.omega * v)
-    a, e3 = _split(rhs, u, -ir3)
+    a, e3 = _split(rhs, u, mir3, idet)
     B = PointMotion(zB, Bj.v + u * v, Bj.a + u * a + iu * (2.0 * guide.omega * v))
     link3 = LinkMotion(A, r3 * (1.0 / L), w3, e3)
     link4 = LinkMotion(B, u, guide.omega, guide.eps)
@@ -868,13 +896,16 @@ def rpr(A: PointMotion, C: PointMotion, offset=0.0, assembly: int = 1) -> RPRSol
     # e = (A − C)/(s + i·offset); with no offset s = ±|AC| and e = (A − C)/s
     e = d * Vec(s, -offset) * (1.0 / D2) if offset else d * (1.0 / s)
     idd = d.perp()
-    vr, w = _split(A.v - C.v, e, idd)
+    idet = 1.0 / cross(e, idd)                # (one 2×2 system for v and a)
+    vr, w = _split(A.v - C.v, e, idd, idet)
     ie = e.perp()
     cor = ie * (2.0 * w * vr)
-    ar, eps = _split(A.a - C.a + d * (w * w) - cor, e, idd)
+    dww = d * (w * w)
+    ar, eps = _split(A.a - C.a + dww - cor, e, idd, idet)
     lever = LinkMotion(C, e, w, eps)
     block = LinkMotion(A, e, w, eps)
-    A3 = PointMotion(A.z, C.v + idd * w, C.a + idd * eps - d * (w * w))
+    block._same_e = lever                     # one angle θ for both
+    A3 = PointMotion(A.z, C.v + idd * w, C.a + idd * eps - dww)
     return RPRSolution(block, lever, s, vr, ar, A3, cor, h2, s)
 
 
@@ -914,13 +945,15 @@ def prp(guide1: LinkMotion, guide2: LinkMotion, point1=0j, angle1=0.0, point2=0j
     """
     G1, u1 = _guide_line(guide1, point1, angle1)
     G2, u2 = _guide_line(guide2, point2, angle2)
-    s1, s2 = _split(G2 - G1, u1, -u2)
+    mu2 = -u2
+    idet = 1.0 / cross(u1, mu2)               # (one 2×2 system for s, v and a)
+    s1, s2 = _split(G2 - G1, u1, mu2, idet)
     zB = G1 + u1 * s1
     B1, B2 = coincident(guide1, zB), coincident(guide2, zB)
-    v1, v2 = _split(B2.v - B1.v, u1, -u2)
+    v1, v2 = _split(B2.v - B1.v, u1, mu2, idet)
     iu1, iu2 = u1.perp(), u2.perp()
     c1, c2 = iu1 * (2.0 * guide1.omega * v1), iu2 * (2.0 * guide2.omega * v2)
-    a1, a2 = _split(B2.a - B1.a + c2 - c1, u1, -u2)
+    a1, a2 = _split(B2.a - B1.a + c2 - c1, u1, mu2, idet)
     B = PointMotion(zB, B1.v + u1 * v1, B1.a + u1 * a1 + c1)
     return PRPSolution(LinkMotion(B, u1, guide1.omega, guide1.eps),
                        LinkMotion(B, u2, guide2.omega, guide2.eps),
@@ -964,13 +997,14 @@ def rpp(A: PointMotion, guide: LinkMotion, point=0j, angle=0.0, slot_angle=0.5 *
     """
     G, u = _guide_line(guide, point, angle)
     w = u * complex(math.cos(slot_angle), math.sin(slot_angle))
-    y, x = _split(A.z - G, u, w)
+    idet = 1.0 / cross(u, w)                  # (one 2×2 system for y, x and rates)
+    y, x = _split(A.z - G, u, w, idet)
     zO = G + u * y
     Aj, Oj = coincident(guide, A.z), coincident(guide, zO)
-    vy, vx = _split(A.v - Aj.v, u, w)
+    vy, vx = _split(A.v - Aj.v, u, w, idet)
     wj = guide.omega
     cor = (u * vy + w * vx).perp() * (2.0 * wj)
-    ay, ax = _split(A.a - Aj.a - cor, u, w)
+    ay, ax = _split(A.a - Aj.a - cor, u, w, idet)
     iu = u.perp()
     O = PointMotion(zO, Oj.v + u * vy, Oj.a + u * ay + iu * (2.0 * wj * vy))
     return RPPSolution(LinkMotion(A, w, wj, guide.eps), LinkMotion(O, u, wj, guide.eps),

@@ -80,3 +80,26 @@ def test_one_chunk_keeps_its_motion(shaper):
     an = linkage.analyze(shaper)                 # the plan of 12 positions
     assert an.motion is an.motion and len(an.motion.phi) == 12
     assert np.array_equal(an.forces["M_drive_Nm"].to_numpy(), an.reactions.M_drive)
+
+
+def test_column_block_is_the_tables_storage():
+    """The blocks the chunks are written into: columns × positions of float, every page
+    mapped (a value written per page) and then overwritten by the tables' own numbers,
+    rows of the same positions analysed alone, across the chunk boundaries of a
+    four-bar too."""
+    from linkage.groups import column_block
+
+    b = column_block(3, 2 * CHUNK + 5)
+    assert b.shape == (3, 2 * CHUNK + 5) and b.dtype == np.float64
+    assert b.flags.c_contiguous and b.flags.writeable
+    assert column_block(2, 0).shape == (2, 0)
+    ratchet = linkage.load_spec(example_path("ratchet.toml"))
+    deg = np.random.default_rng(9).uniform(-400.0, 800.0, 2 * CHUNK + 5)
+    an = linkage.analyze(ratchet, crank_angles_deg=deg, course_tables=False)
+    rows = [0, 512, CHUNK - 1, CHUNK, 2 * CHUNK, len(deg) - 1]     # 512: a page's start
+    alone = linkage.analyze(ratchet, crank_angles_deg=deg[rows], course_tables=False)
+    for big, small in ((an.kinematics, alone.kinematics), (an.forces, alone.forces)):
+        for k, i in enumerate(rows):
+            np.testing.assert_allclose(_row(big, i), _row(small, k), rtol=1e-12, atol=1e-9)
+    # no row keeps a page's placeholder: the crank angle column is every angle given
+    np.testing.assert_allclose(an.kinematics["phi_deg"], deg, rtol=1e-15, atol=0)

@@ -77,3 +77,21 @@ def test_offset_slot_and_arrays():
         np.testing.assert_allclose(back.x, A.z.x, atol=1e-14)
         np.testing.assert_allclose(back.y, A.z.y, atol=1e-14)
         assert np.all(np.sign(s.s) == asm)
+
+
+def test_block_and_lever_share_one_angle():
+    """The block slides in the lever's slot: one angle θ for both, that of the slot's
+    direction e (the block's is the lever's, computed once), on both branches and with
+    an offset slot; at the published instant the slot points at 30° (assembly +1) or at
+    30° − 180° (−1: the slot's x axis points from A towards C)."""
+    for asm, want in ((1, 30.0), (-1, -150.0)):
+        s = _published(asm)
+        assert math.degrees(float(s.block.theta)) == pytest.approx(want, abs=1e-12)
+        assert float(s.block.theta) == float(s.lever.theta)
+    phi = np.linspace(0.0, 2 * math.pi, 13)
+    A = g.crank(phi, 3.0, -2.0).point(0.1)
+    for asm in (1, -1):
+        s = g.rpr(A, g.PointMotion(-0.3j, 0j, 0j), 0.04, asm)
+        e = s.lever.e
+        np.testing.assert_array_equal(s.block.theta, np.arctan2(e.y, e.x))
+        np.testing.assert_array_equal(s.lever.theta, s.block.theta)
