@@ -26,6 +26,7 @@ from crankbase.errors import Problem, SpecError, Text
 from crankbase.tolerances import SAME_ANGLE_RAD
 from crankbase.validation import angles_argument, step_argument
 
+from . import chain as ch
 from . import groups as g
 from .groups import CHUNK  # positions per chunk (one constant for every table)
 from .columns import derived_kinematics_columns, force_columns, kinematics_columns, point_names
@@ -38,7 +39,7 @@ from .spec import MechanismSpec, load_spec
 if TYPE_CHECKING:  # pandas is imported when a table is built
     import pandas as pd
 
-__all__ = ["build_mechanism", "analyze", "full_turn", "AnalysisResult", "AnalysisSummary",
+__all__ = ["build_mechanism", "spec_chain", "analyze", "full_turn", "AnalysisResult", "AnalysisSummary",
            "solve_columns", "kinematics_columns", "force_columns", "plan_angles",
            "SingularPositionWarning", "CHUNK"]
 
@@ -58,6 +59,23 @@ def build_mechanism(spec: MechanismSpec):
                            spec.ground_angle, spec.assembly)
     return CrankSlider(spec.crank, spec.coupler, spec.ground_angle, spec.offset,
                        spec.assembly)
+
+
+def spec_chain(spec):
+    """The chain of any linkage spec (:mod:`linkage.chain`), its crank checked to turn
+    fully: a chain spec's own, or the chain of a crank-rocker's or crank-slider's
+    mechanism (:func:`linkage.chain.from_mechanism`, the spec's masses and points).
+
+    Raises
+    ------
+    AssemblyError
+        The crank cannot turn fully (the four-bar's Grashof check, or the chain's cycle)."""
+    if spec.kind == "chain":
+        ch.check_cycle(spec.mechanism)
+        return spec.mechanism
+    mech = build_mechanism(spec)
+    mech.check_rotatable()
+    return ch.from_mechanism(mech, spec.links)
 
 
 class _Tables:
