@@ -49,6 +49,12 @@ class Course:
     summary_fields : tuple of str
         The :class:`~linkage.analysis.AnalysisSummary` fields of the output at the start
         and the end of the working stroke and of its swing or stroke.
+    summary_keys : tuple of str
+        Their rows' catalogue keys (``linkage.cycle.<key>``, :mod:`linkage.report`).
+    type_key : str
+        The row of the mechanism's type: the Grashof type of a four-bar
+        (``linkage.cycle.grashof``) or the rotatability of a crank-slider
+        (``linkage.cycle.rotatable``).
     """
 
     kind: str
@@ -61,6 +67,8 @@ class Course:
     relative: tuple
     default_working_stroke: str
     summary_fields: tuple
+    summary_keys: tuple
+    type_key: str
 
 
 #: The reactions the course tabulates: column stem → (link i, link j), the force of link
@@ -80,7 +88,8 @@ COURSES = {
         resistance_column="M_res_Nm",
         relative=(_BA, ("BC", None, "omega4_rad_s", "eps4_rad_s2", "rocker")),
         default_working_stroke="ccw",
-        summary_fields=("theta4_working_start_deg", "theta4_working_end_deg", "swing_deg")),
+        summary_fields=("theta4_working_start_deg", "theta4_working_end_deg", "swing_deg"),
+        summary_keys=("th_ws", "th_we", "swing"), type_key="grashof"),
     "crank-slider": Course(
         kind="crank-slider", output="slider", angular=False,
         output_columns=("s4_m", "v4_m_s", "a4_m_s2"),
@@ -89,7 +98,8 @@ COURSES = {
         resistance_column="F_res_N",
         relative=(_BA,),
         default_working_stroke="away",
-        summary_fields=("s4_working_start_m", "s4_working_end_m", "stroke_m")),
+        summary_fields=("s4_working_start_m", "s4_working_end_m", "stroke_m"),
+        summary_keys=("s_ws", "s_we", "stroke"), type_key="rotatable"),
 }
 
 
