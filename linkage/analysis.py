@@ -2,12 +2,19 @@
 
 The pipeline, vectorised over crank positions and run in cache-sized chunks:
 
-1. build the mechanism (:mod:`linkage.mechanisms`), check that the crank turns fully;
-2. kinematics: driver, then the dyad;
+1. build the mechanism (:mod:`linkage.mechanisms`: the closed forms of the cycle —
+   Grashof type, extremes, μmin, singular positions), check that the crank turns fully,
+   and its chain (:func:`linkage.chain.from_mechanism`: ``I(0,1) → II RRR(2,3)`` or
+   ``I(0,1) → II RRP(2,3)``);
+2. kinematics: the chain solved, driver then the dyad (:func:`linkage.chain.solve`);
 3. the loads on every link at every position: external forces and moments, useful
    resistance (by stroke and span), weight ``−m·g·j`` and d'Alembert inertia
    ``−m·a_S``, ``−J_S·ε``;
-4. kinetostatics: the dyad, then the driver (balancing moment Mур).
+4. kinetostatics: the dyad, then the driver (balancing moment Mур)
+   (:func:`linkage.chain.kinetostatics`).
+
+The chain's quantities go into the columns under the names the course gives them,
+declared once for both kinds in :mod:`linkage.course` (no branch on the kind).
 
 Columns are SI with the unit in the name (``omega3_rad_s``, ``R23_x_N``); angles in
 degrees.  ``Rij`` is the force of link i on link j (1 ground, 2 crank, 3 coupler or rod,
@@ -56,6 +63,7 @@ class SingularPositionWarning(UserWarning):
 
 def build_mechanism(spec: MechanismSpec):
     """The mechanism object of a spec (geometry only)."""
+    # the two closed-form models take different geometry (the spec's keys differ)
     if spec.kind == "crank-rocker":
         return CrankRocker(spec.crank, spec.coupler, spec.rocker, spec.ground,
                            spec.ground_angle, spec.assembly)
