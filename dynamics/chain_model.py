@@ -314,7 +314,9 @@ def stroke_extremes(spec, mech):
     """The extremes the core's load model needs (None without a working stroke)."""
     if spec.working_stroke is None:
         return None
-    default = "ccw" if spec.kind == "crank-rocker" else "away"
+    from linkage.course import course_of
+
+    default = course_of(spec).default_working_stroke
     with np.errstate(divide="ignore", invalid="ignore"):
         return mech.extremes(1 if spec.omega >= 0 else -1, spec.working_stroke or default)
 

@@ -542,11 +542,11 @@ def linkage_forces(spec, phi, omega, eps, mech=None, ext=None):
     """The core's kinetostatics at crank angles ``phi`` [rad] with the crank's ω and ε given
     per position (arrays or scalars, signed, + ccw).
 
-    The same steps as the core's table (``linkage.analysis``): kinematics driver → dyad
-    (``mech.kinematics``), the external loads by the core's rule
+    The same steps as the core's table (``linkage.analysis``): the mechanism's chain
+    solved (:func:`linkage.chain.solve`), the external loads by the core's rule
     (:func:`linkage.loads.external_loads`, its stroke cycle from the spec's constant ω),
-    each link's wrench with weight and d'Alembert inertia (:func:`linkage.groups.link_wrench`),
-    then dyad → driver (``mech.reactions``).
+    then its kinetostatics group by group (:func:`linkage.chain.kinetostatics`), the
+    reactions named as the course names them (:data:`linkage.course.REACTIONS`).
 
     Returns
     -------
@@ -554,27 +554,28 @@ def linkage_forces(spec, phi, omega, eps, mech=None, ext=None):
         ``R12_x_N, R12_y_N, R23_x_N, R23_y_N, R43_x_N, R43_y_N, R14_x_N, R14_y_N,
         M_drive_Nm`` (+ ``M14_Nm`` for a slider), as the core's columns of the same names.
     """
-    from linkage import groups as g
+    from linkage import chain as ch
     from linkage.analysis import build_mechanism
+    from linkage.course import REACTIONS, course_of
     from linkage.loads import external_loads, stroke_cycle
 
     mech = mech or build_mechanism(spec)
-    kin = mech.kinematics(phi, omega, eps)
+    course = course_of(spec)
+    res = ch.solve(ch.from_mechanism(mech, spec.links), phi, omega, eps, check=False)
+    kin = {"crank": res.links["crank"], "A": res.joints["A"], "dyad": res.solutions[0],
+           "links": res.links}
     forces, moments, _ = external_loads(spec, mech, kin, stroke_cycle(mech, spec, ext))
-    W = {}
-    for lname in spec.link_names:
-        ls = spec.links[lname]
-        W[lname] = g.link_wrench(kin["links"][lname], ls.mass, ls.inertia, ls.cg,
-                                 spec.gravity, forces[lname], moments[lname])
-    r, drv = mech.reactions(kin, W)
-    R14 = r.RC if spec.kind == "crank-rocker" else r.RG
+    cf = ch.kinetostatics(res, forces, moments, spec.gravity)
+    link = {"output": course.output}
     out = {}
-    for name, v in (("R12", drv.R12), ("R23", r.RA), ("R43", r.RB), ("R14", R14)):
+    for name, (i, j) in REACTIONS:
+        v = cf.R(link.get(i, i), link.get(j, j))
         out[f"{name}_x_N"] = np.broadcast_to(v.real, np.shape(phi)).astype(float)
         out[f"{name}_y_N"] = np.broadcast_to(v.imag, np.shape(phi)).astype(float)
-    out["M_drive_Nm"] = np.broadcast_to(drv.M_drive, np.shape(phi)).astype(float)
-    if spec.kind != "crank-rocker":
-        out["M14_Nm"] = np.broadcast_to(r.MG, np.shape(phi)).astype(float)
+    out["M_drive_Nm"] = np.broadcast_to(cf.M_drive, np.shape(phi)).astype(float)
+    couple = cf.reactions[("frame", course.output)].couple    # a prismatic pair's only
+    if couple is not None:
+        out["M14_Nm"] = np.broadcast_to(couple, np.shape(phi)).astype(float)
     return out
 
 

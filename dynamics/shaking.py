@@ -75,24 +75,16 @@ def shaking(spec, crank_angles_deg=None) -> ShakingResult:
     import pandas as pd
     from linkage import load_spec
     from linkage import chain as ch
-    from linkage.analysis import build_mechanism
+    from linkage.analysis import spec_chain
 
     from .chain_model import chain_shaking
 
     spec = load_spec(spec)
     phi_deg = np.arange(0.0, 361.0, 1.0) if crank_angles_deg is None else \
         np.atleast_1d(np.asarray(crank_angles_deg, float))
-    if spec.kind == "chain":                  # any chain of class II groups
-        chain = spec.mechanism
-        ch.check_cycle(chain)
-        pivot = chain.frame[chain.driver.pivot]
-    else:
-        mech = build_mechanism(spec)
-        mech.check_rotatable()
-        chain = ch.from_mechanism(mech, spec.links)
-        pivot = mech.pivot
+    chain = spec_chain(spec)            # every kind: a chain of class II groups
     sh = chain_shaking(ch.solve(chain, np.radians(phi_deg), spec.omega, spec.epsilon,
-                                check=False), pivot)
+                                check=False), chain.frame[chain.driver.pivot])
     F = np.asarray(sh.F)
     M = sh.M
     table = pd.DataFrame({"phi_deg": phi_deg, "F_x_N": F.real, "F_y_N": F.imag,
@@ -165,7 +157,7 @@ def balance_fourbar(spec, radius_crank_m=None, radius_rocker_m=None,
     from linkage import load_spec
 
     spec = load_spec(spec)
-    if spec.kind != "crank-rocker":
+    if spec.kind != "crank-rocker":     # the closed form below is the four-bar's loop
         raise SpecError(Problem("mechanism.kind",
                                 Text("errors.dynamics.shaking.full_force_balance",
                                      {"kind": spec.kind})))
@@ -196,7 +188,7 @@ def balance_crank_slider(spec, fraction=0.0, radius_m=None,
     from linkage import load_spec
 
     spec = load_spec(spec)
-    if spec.kind != "crank-slider":
+    if spec.kind != "crank-slider":     # the slider's reciprocating mass: no other kind
         raise SpecError(Problem("mechanism.kind",
                                 Text("errors.dynamics.shaking.partial_balance_for",
                                      {"kind": spec.kind})))
@@ -360,8 +352,7 @@ def mechanism_balance(path_or_dict) -> BalanceResult:
         spec = load_spec(rest)
     except SpecError as exc:
         raise SpecError(ck.problems + exc.problems) from None
-    kind_keys = {"crank-rocker": ("radius_crank_m", "radius_rocker_m"),
-                 "crank-slider": ("fraction", "radius_m"), "chain": ("radius_m",)}[spec.kind]
+    method, kind_keys = _BALANCE[spec.kind]
     for k in bal:
         if k in _BAL_KEYS and k not in kind_keys:
             ck.add(f"balance.{k}", Text("errors.dynamics.shaking.does_not_apply",
@@ -369,8 +360,14 @@ def mechanism_balance(path_or_dict) -> BalanceResult:
                                                       + spec.kind.replace("-", "_")),
                                          "items": ", ".join(kind_keys)}))
     ck.raise_if_any()
-    if spec.kind == "chain":
-        return balance_chain(spec, radius["radius_m"])
-    if spec.kind == "crank-rocker":
-        return balance_fourbar(spec, radius["radius_crank_m"], radius["radius_rocker_m"])
-    return balance_crank_slider(spec, frac, radius["radius_m"])
+    return method(spec, **{k: frac if k == "fraction" else radius[k] for k in kind_keys})
+
+
+#: The balance of each kind and the ``[balance]`` keys it takes.  Genuinely different
+#: methods, hence one entry each: the four-bar's full force balance by linearly
+#: independent vectors (Berkof & Lowen) exists in closed form for the crank-rocker only;
+#: the crank-slider's is the textbook partial balance of the reciprocating mass; a chain
+#: cancels the first harmonic.
+_BALANCE = {"crank-rocker": (balance_fourbar, ("radius_crank_m", "radius_rocker_m")),
+            "crank-slider": (balance_crank_slider, ("fraction", "radius_m")),
+            "chain": (balance_chain, ("radius_m",))}

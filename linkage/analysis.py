@@ -2,12 +2,19 @@
 
 The pipeline, vectorised over crank positions and run in cache-sized chunks:
 
-1. build the mechanism (:mod:`linkage.mechanisms`), check that the crank turns fully;
-2. kinematics: driver, then the dyad;
+1. build the mechanism (:mod:`linkage.mechanisms`: the closed forms of the cycle —
+   Grashof type, extremes, μmin, singular positions), check that the crank turns fully,
+   and its chain (:func:`linkage.chain.from_mechanism`: ``I(0,1) → II RRR(2,3)`` or
+   ``I(0,1) → II RRP(2,3)``);
+2. kinematics: the chain solved, driver then the dyad (:func:`linkage.chain.solve`);
 3. the loads on every link at every position: external forces and moments, useful
    resistance (by stroke and span), weight ``−m·g·j`` and d'Alembert inertia
    ``−m·a_S``, ``−J_S·ε``;
-4. kinetostatics: the dyad, then the driver (balancing moment Mур).
+4. kinetostatics: the dyad, then the driver (balancing moment Mур)
+   (:func:`linkage.chain.kinetostatics`).
+
+The chain's quantities go into the columns under the names the course gives them,
+declared once for both kinds in :mod:`linkage.course` (no branch on the kind).
 
 Columns are SI with the unit in the name (``omega3_rad_s``, ``R23_x_N``); angles in
 degrees.  ``Rij`` is the force of link i on link j (1 ground, 2 crank, 3 coupler or rod,
@@ -26,9 +33,12 @@ from crankbase.errors import Problem, SpecError, Text
 from crankbase.tolerances import SAME_ANGLE_RAD
 from crankbase.validation import angles_argument, step_argument
 
+from . import chain as ch
 from . import groups as g
 from .groups import CHUNK  # positions per chunk (one constant for every table)
 from .columns import derived_kinematics_columns, force_columns, kinematics_columns, point_names
+from .chain_analysis import output_motion
+from .course import REACTIONS, course_of
 from .derived import fill_derived
 from .fourbar import GrashofType, SliderCrankType
 from .loads import external_loads, stroke_cycle
@@ -38,7 +48,7 @@ from .spec import MechanismSpec, load_spec
 if TYPE_CHECKING:  # pandas is imported when a table is built
     import pandas as pd
 
-__all__ = ["build_mechanism", "analyze", "full_turn", "AnalysisResult", "AnalysisSummary",
+__all__ = ["build_mechanism", "spec_chain", "analyze", "full_turn", "AnalysisResult", "AnalysisSummary",
            "solve_columns", "kinematics_columns", "force_columns", "plan_angles",
            "SingularPositionWarning", "CHUNK"]
 
@@ -53,6 +63,7 @@ class SingularPositionWarning(UserWarning):
 
 def build_mechanism(spec: MechanismSpec):
     """The mechanism object of a spec (geometry only)."""
+    # the two closed-form models take different geometry (the spec's keys differ)
     if spec.kind == "crank-rocker":
         return CrankRocker(spec.crank, spec.coupler, spec.rocker, spec.ground,
                            spec.ground_angle, spec.assembly)
@@ -60,71 +71,81 @@ def build_mechanism(spec: MechanismSpec):
                        spec.assembly)
 
 
+def spec_chain(spec):
+    """The chain of any linkage spec (:mod:`linkage.chain`), its crank checked to turn
+    fully: a chain spec's own, or the chain of a crank-rocker's or crank-slider's
+    mechanism (:func:`linkage.chain.from_mechanism`, the spec's masses and points).
+
+    Raises
+    ------
+    AssemblyError
+        The crank cannot turn fully (the four-bar's Grashof check, or the chain's cycle)."""
+    if spec.kind == "chain":
+        ch.check_cycle(spec.mechanism)
+        return spec.mechanism
+    mech = build_mechanism(spec)
+    mech.check_rotatable()
+    return ch.from_mechanism(mech, spec.links)
+
+
 class _Tables:
     """Everything a table needs that does not depend on the crank angle: the spec, the
-    mechanism, the cycle of the resistance rule, the column names, a scratch row."""
+    mechanism and its chain, the course's names, the cycle of the resistance rule, the
+    column names, a scratch row."""
 
     def __init__(self, spec, mech, ext, course_tables, size):
         self.spec, self.mech, self.course_tables = spec, mech, course_tables
+        self.course = course = course_of(spec)
+        self.chain = ch.from_mechanism(mech, spec.links)
         self.cycle = stroke_cycle(mech, spec, ext)
         self.kcols = [c for c in kinematics_columns(spec, course_tables) if c != "position"]
         self.fcols = [c for c in force_columns(spec, course_tables) if c != "position"]
         self.points = [(p, lname, local, tuple(f"{p}_{q}" for q in _POINT_COLUMNS))
                        for p, (lname, local) in point_names(spec).items()]
+        link = {"output": course.output}
+        self.reactions = [(stem, (link.get(i, i), link.get(j, j))) for stem, (i, j) in REACTIONS]
         self.scratch = np.empty(size)
 
     def solve(self, phi, K, F):
         """Kinematics and forces at the crank angles ``phi`` [rad] into the column rows
-        ``K`` and ``F`` (dicts column → array of ``len(phi)``): driver → dyad, loads, then
-        dyad → driver (:mod:`linkage.groups`)."""
-        spec, mech = self.spec, self.mech
-        kin = mech.kinematics(phi, spec.omega, spec.epsilon)
-        d = kin["dyad"]
+        ``K`` and ``F`` (dicts column → array of ``len(phi)``): the chain solved and its
+        kinetostatics run (:mod:`linkage.chain`), the chain's quantities written under the
+        course's names (:mod:`linkage.course`)."""
+        spec, mech, course = self.spec, self.mech, self.course
+        res = ch.solve(self.chain, phi, spec.omega, spec.epsilon, check=False)
+        links = res.links
+        d = res.solutions[0]          # the dyad, as the four-bar's own kinematics names it
+        kin = {"crank": links["crank"], "A": res.joints["A"], "dyad": d, "links": links}
         np.multiply(phi, _DEG, out=K["phi_deg"])
-        np.multiply(d.link3.theta, _DEG, out=K["theta3_deg"])
-        K["omega3_rad_s"][:] = d.link3.omega
-        K["eps3_rad_s2"][:] = d.link3.eps
-        if mech.kind == "crank-rocker":
-            np.multiply(d.link4.theta, _DEG, out=K["theta4_deg"])
-            K["omega4_rad_s"][:] = d.link4.omega
-            K["eps4_rad_s2"][:] = d.link4.eps
-        else:
-            K["s4_m"][:] = d.s
-            K["v4_m_s"][:] = d.v
-            K["a4_m_s2"][:] = d.a
-        links = kin["links"]
+        np.multiply(links["coupler"].theta, _DEG, out=K["theta3_deg"])
+        K["omega3_rad_s"][:] = links["coupler"].omega
+        K["eps3_rad_s2"][:] = links["coupler"].eps
+        c, rate, acc = course.output_columns
+        coord, r, a = output_motion(res, course.output)
+        np.multiply(coord, course.coordinate_scale, out=K[c])
+        K[rate][:] = r
+        K[acc][:] = a
         for pname, lname, local, cols in self.points:
-            P = d.B if pname == "B" else links[lname].point(local)
+            P = res.joints["B"] if pname == "B" else links[lname].point(local)
             for col, value in zip(cols, (P.z.x, P.z.y, P.v.x, P.v.y, P.a.x, P.a.y)):
                 K[col][:] = value
         np.multiply(mech.transmission_angle(kin), _DEG, out=K["mu_deg"])
 
-        forces, moments, res = external_loads(spec, mech, kin, self.cycle)
-        W = {}
-        for lname in spec.link_names:
-            ls = spec.links[lname]
-            W[lname] = g.link_wrench(links[lname], ls.mass, ls.inertia, ls.cg, spec.gravity,
-                                     forces[lname], moments[lname])
-        r, drv = mech.reactions(kin, W)
+        forces, moments, res_load = external_loads(spec, mech, kin, self.cycle)
+        cf = ch.kinetostatics(res, forces, moments, spec.gravity)
         F["phi_deg"][:] = K["phi_deg"]
-        for name, v in (("R12", drv.R12), ("R23", r.RA), ("R43", r.RB)):
-            F[f"{name}_x_N"][:] = v.x
-            F[f"{name}_y_N"][:] = v.y
-        F["M_drive_Nm"][:] = drv.M_drive
-        F["R23_n_N"][:] = r.RA_n
-        F["R23_t_N"][:] = r.RA_t
-        if mech.kind == "crank-rocker":
-            F["R14_x_N"][:] = r.RC.x
-            F["R14_y_N"][:] = r.RC.y
-            F["R14_n_N"][:] = r.RC_n
-            F["R14_t_N"][:] = r.RC_t
-            F["M_res_Nm"][:] = res
-        else:
-            F["R14_x_N"][:] = r.RG.x
-            F["R14_y_N"][:] = r.RG.y
-            F["N14_N"][:] = r.RG_n
-            F["M14_Nm"][:] = r.MG
-            F["F_res_N"][:] = res
+        for stem, pair in self.reactions:
+            v = cf.R(*pair)
+            F[f"{stem}_x_N"][:] = v.x
+            F[f"{stem}_y_N"][:] = v.y
+        F["M_drive_Nm"][:] = cf.M_drive
+        r23 = cf.reactions[("crank", "coupler")]
+        F["R23_n_N"][:] = r23.n
+        F["R23_t_N"][:] = r23.t
+        r14 = cf.reactions[("frame", course.output)]
+        for col, attr in course.frame_pair:
+            F[col][:] = getattr(r14, attr)
+        F[course.resistance_column][:] = res_load
         if self.course_tables:
             fill_derived(spec, K, F, self.scratch[:len(phi)])
 
@@ -310,14 +331,14 @@ def _summary(spec, mech, ext):
         s.working_crank_angle_deg = math.degrees(ext.working_crank_angle)
         s.idle_crank_angle_deg = math.degrees(ext.idle_crank_angle)
         s.time_ratio = ext.time_ratio
-        if spec.kind == "crank-rocker":
-            s.theta4_working_start_deg = math.degrees(c[0])
-            s.theta4_working_end_deg = math.degrees(c[1])
-            s.swing_deg = abs(math.degrees(np.angle(np.exp(1j * (c[1] - c[0])))))
-        else:
-            s.s4_working_start_m = float(c[0])
-            s.s4_working_end_m = float(c[1])
-            s.stroke_m = abs(float(c[1] - c[0]))
+        course = course_of(spec)
+        if course.angular:           # a rocker's angles and its swing, wrapped
+            values = (math.degrees(c[0]), math.degrees(c[1]),
+                      abs(math.degrees(np.angle(np.exp(1j * (c[1] - c[0]))))))
+        else:                        # a slider's positions and its stroke
+            values = (float(c[0]), float(c[1]), abs(float(c[1] - c[0])))
+        for name, value in zip(course.summary_fields, values):
+            setattr(s, name, value)
     return s
 
 
@@ -369,7 +390,7 @@ def analyze(spec, crank_angles_deg=None, *, course_tables=True) -> AnalysisResul
     rot = 1 if spec.omega > 0 else -1
     ext = None                 # statics (ω = 0): no rotation, hence no strokes
     if spec.omega != 0:
-        default = "ccw" if spec.kind == "crank-rocker" else "away"
+        default = course_of(spec).default_working_stroke
         with np.errstate(divide="ignore", invalid="ignore"):  # a change point at an extreme
             ext = mech.extremes(rot, spec.working_stroke or default)
     if ext is None and (spec.positions is not None and crank_angles_deg is None

@@ -2,6 +2,7 @@
 :func:`linkage.analysis.solve_columns`, the reports)."""
 from __future__ import annotations
 
+from .course import course_of
 from .spec import LINK_NUMBER, MechanismSpec
 
 __all__ = ["point_names", "kinematics_columns", "force_columns", "derived_kinematics_columns",
@@ -24,10 +25,7 @@ def kinematics_columns(spec: MechanismSpec, course_tables=True):
     """Names of the kinematics table's columns, in order (with the course tables'
     magnitudes at the end unless ``course_tables`` is False)."""
     cols = ["position", "phi_deg", "theta3_deg", "omega3_rad_s", "eps3_rad_s2"]
-    if spec.kind == "crank-rocker":
-        cols += ["theta4_deg", "omega4_rad_s", "eps4_rad_s2"]
-    else:
-        cols += ["s4_m", "v4_m_s", "a4_m_s2"]
+    cols += course_of(spec).output_columns
     for p in point_names(spec):
         cols += [f"{p}_x_m", f"{p}_y_m", f"{p}_vx_m_s", f"{p}_vy_m_s",
                  f"{p}_ax_m_s2", f"{p}_ay_m_s2"]
@@ -40,11 +38,11 @@ def derived_kinematics_columns(spec: MechanismSpec):
     :mod:`linkage.derived`): speed and acceleration of every point, and the relative
     motion of B about A (and about C for a crank-rocker)."""
     pts = list(point_names(spec))
+    rel = [r[0] for r in course_of(spec).relative]
     cols = [f"{p}_v_m_s" for p in pts] + [f"{p}_a_m_s2" for p in pts]
-    cols += ["v_BA_m_s"] + (["v_BC_m_s"] if spec.kind == "crank-rocker" else [])
-    cols += ["a_BA_n_m_s2", "a_BA_t_m_s2", "a_BA_m_s2"]
-    if spec.kind == "crank-rocker":
-        cols += ["a_BC_n_m_s2", "a_BC_t_m_s2", "a_BC_m_s2"]
+    cols += [f"v_{r}_m_s" for r in rel]
+    for r in rel:
+        cols += [f"a_{r}_n_m_s2", f"a_{r}_t_m_s2", f"a_{r}_m_s2"]
     return cols
 
 
@@ -53,10 +51,8 @@ def force_columns(spec: MechanismSpec, course_tables=True):
     magnitudes at the end unless ``course_tables`` is False)."""
     cols = ["position", "phi_deg", "R12_x_N", "R12_y_N", "R23_x_N", "R23_y_N",
             "R43_x_N", "R43_y_N", "R14_x_N", "R14_y_N", "M_drive_Nm", "R23_n_N", "R23_t_N"]
-    if spec.kind == "crank-rocker":
-        cols += ["R14_n_N", "R14_t_N", "M_res_Nm"]
-    else:
-        cols += ["N14_N", "M14_Nm", "F_res_N"]
+    course = course_of(spec)
+    cols += [c for c, _ in course.frame_pair] + [course.resistance_column]
     return cols + (derived_force_columns(spec) if course_tables else [])
 
 

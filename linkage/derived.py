@@ -16,6 +16,7 @@ import numpy as np
 
 from . import groups as g
 from .columns import point_names
+from .course import course_of
 from .spec import LINK_NUMBER, MechanismSpec
 
 __all__ = ["fill_derived"]
@@ -50,14 +51,11 @@ def fill_derived(spec: MechanismSpec, K, F, scratch=None):
     """
     n = len(K["phi_deg"])
     t = np.empty(n) if scratch is None else scratch
-    rocker = spec.kind == "crank-rocker"
     for p in point_names(spec):
         _norm(K[f"{p}_vx_m_s"], K[f"{p}_vy_m_s"], K[f"{p}_v_m_s"], t)
         _norm(K[f"{p}_ax_m_s2"], K[f"{p}_ay_m_s2"], K[f"{p}_a_m_s2"], t)
-    rel = [("BA", "A", "omega3_rad_s", "eps3_rad_s2", spec.coupler)]
-    if rocker:
-        rel.append(("BC", None, "omega4_rad_s", "eps4_rad_s2", spec.rocker))
-    for name, pivot, w, e, length in rel:
+    for name, pivot, w, e, link in course_of(spec).relative:
+        length = getattr(spec, link)           # |AB| or |CB|
         # VBA = |ω3|·lAB, aBAⁿ = ω3²·lAB, aBAᵗ = |ε3|·lAB; |aB − aA| from the columns
         np.abs(K[w], out=t)
         np.multiply(t, length, out=K[f"v_{name}_m_s"])

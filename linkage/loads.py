@@ -18,6 +18,7 @@ import numpy as np
 
 from crankbase.tolerances import AT_REST_RTOL, ROUNDOFF_RTOL
 
+from .course import course_of
 from .groups import Vec
 
 __all__ = ["StrokeCycle", "stroke_cycle", "resistance", "external_loads"]
@@ -64,7 +65,7 @@ def stroke_cycle(mech, spec, ext) -> StrokeCycle:
     for an output that turns fully); without it, or without ``working_stroke`` in the
     spec, the strokes are not known and a resistance acts whenever its link moves (only
     ``stroke = "both"`` is valid then)."""
-    rocker = spec.kind == "crank-rocker"
+    rocker = course_of(spec).angular
     at_rest = AT_REST_RTOL * abs(spec.omega) * (1.0 if rocker else spec.crank)
     if spec.working_stroke is None or ext is None:
         return StrokeCycle(1, None, None, rocker, at_rest)

@@ -32,7 +32,9 @@ import numpy as np
 
 from crankbase.tolerances import SAME_ANGLE_DEG
 
+from . import chain as ch
 from .analysis import build_mechanism
+from .course import course_of
 
 __all__ = ["plot_plan", "plot_velocities", "plot_accelerations", "plot_driving_moment",
            "plot_transmission_angle", "all_figures", "MAX_PLAN_POSITIONS"]
@@ -133,15 +135,16 @@ def _rates(result, ax, lang, plan, order):
     """Link 3 and 4 rates of the given ``order`` (1: velocities, 2: accelerations)."""
     t, k, name = _text(lang), result.kinematics, result.spec.name
     ax = _axes(ax)
-    w3, w4, s4 = (("omega3_rad_s", "omega4_rad_s", "v4") if order == 1
-                  else ("eps3_rad_s2", "eps4_rad_s2", "a4"))
+    w3, s4 = ("omega3_rad_s", "v4") if order == 1 else ("eps3_rad_s2", "a4")
     sym, kind = ("omega", "vel") if order == 1 else ("eps", "acc")
-    if result.spec.kind == "crank-rocker":
-        return _curves(ax, result, plan, t, [(w3, t[f"{sym}3_c"], k), (w4, t[f"{sym}4"], k)],
+    course = course_of(result.spec)
+    col = course.output_columns[order]           # the output's rate or acceleration
+    if course.angular:       # a rocker's ω4, ε4 share the coupler's axis and unit
+        return _curves(ax, result, plan, t, [(w3, t[f"{sym}3_c"], k), (col, t[f"{sym}4"], k)],
                        t[f"ang_{kind}"], t[f"{kind}_title"].format(name=name))
+    # a slider's v4, a4 are linear: a second axis of their own
     _curves(ax, result, plan, t, [(w3, t[f"{sym}3_r"], k)], t["w3" if order == 1 else "e3"],
             t[f"{kind}_title_s"].format(name=name))
-    col = "v4_m_s" if order == 1 else "a4_m_s2"
     return _twin(ax, result, plan, t, col, t[s4], t[f"{s4}_unit"])
 
 
@@ -164,9 +167,10 @@ def plot_driving_moment(result, ax=None, lang="en", *, plan=None):
     t, f = _text(lang), result.forces
     ax = _axes(ax)
     series = [("M_drive_Nm", t["Md"], f)]
-    res = f["M_res_Nm"].to_numpy(float) if result.spec.kind == "crank-rocker" else None
+    course = course_of(result.spec)    # a resistance moment shares Mур's axis, a force not
+    res = f[course.resistance_column].to_numpy(float) if course.angular else None
     if res is not None and np.any(np.nan_to_num(res) != 0):   # NaN: left-out singular rows
-        series.append(("M_res_Nm", t["Mr"], f))
+        series.append((course.resistance_column, t["Mr"], f))
     _curves(ax, result, plan, t, series, t["moment"],
             t["Md_title"].format(name=result.spec.name))
     x = _plan_x(plan) if plan is not None else None
@@ -216,10 +220,8 @@ def plot_plan(result, ax=None, lang="en", *, full=None):
         for name, ls_ in zip(["B"] + extras, ["--", ":", "-.", (0, (5, 1, 1, 1))] * 4):
             ax.plot(path_df[f"{name}_x_m"], path_df[f"{name}_y_m"], ls=ls_, lw=0.9,
                     color="0.25", label=t["path"].format(p=name))
-    if spec.kind == "crank-rocker":
-        zC = mech.zC
-    else:
-        zC = None
+    zC = ch.from_mechanism(mech).frame.get("C")    # a rocker's pivot on the frame
+    if zC is None:                                  # a slider's guide instead
         u = mech.u
         s4 = path_df["s4_m"].to_numpy()
         lo, hi = np.nanmin(s4) - 0.15 * spec.coupler, np.nanmax(s4) + 0.15 * spec.coupler

@@ -45,6 +45,8 @@ import numpy as np
 from crankbase.errors import Text
 from crankbase.tolerances import SAME_ANGLE_DEG
 
+from .course import course_of
+
 __all__ = ["column_label", "unit_text", "kind_text", "warning_text", "write_csvs",
            "write_workbook",
            "sheet_columns", "force_sheet_columns", "summary_lines", "text", "LANGS"]
@@ -232,23 +234,17 @@ def summary_lines(result, lang: str = "ru"):
         return unit_text(unit, lang)
 
     s = result.summary
-    label = t("linkage.cycle.grashof") if s.kind == "crank-rocker" else t(
-        "linkage.cycle.rotatable")
-    rows = [(label, grashof_text(s.grashof, lang), "")]
+    course = course_of(s)
+    rows = [(c(course.type_key), grashof_text(s.grashof, lang), "")]
     if s.has_extremes:
         rows += [(c("phi_ws"), s.phi_working_start_deg, "°"),
                  (c("phi_we"), s.phi_working_end_deg, "°"),
                  (c("phi_w"), s.working_crank_angle_deg, "°"),
                  (c("phi_i"), s.idle_crank_angle_deg, "°"),
                  (c("K"), s.time_ratio, "")]
-        if s.swing_deg is not None:
-            rows += [(c("th_ws"), s.theta4_working_start_deg, "°"),
-                     (c("th_we"), s.theta4_working_end_deg, "°"),
-                     (c("swing"), s.swing_deg, "°")]
-        else:
-            rows += [(c("s_ws"), s.s4_working_start_m, u("m")),
-                     (c("s_we"), s.s4_working_end_m, u("m")),
-                     (c("stroke"), s.stroke_m, u("m"))]
+        unit = "°" if course.angular else u("m")       # the output's swing or stroke
+        rows += [(c(key), getattr(s, name), unit)
+                 for key, name in zip(course.summary_keys, course.summary_fields)]
     rows += [(c("mu"), s.mu_min_deg, "°"),
              (c("mu_phi"), s.mu_min_phi_deg, "°")]
     if s.singular_phi_deg:

@@ -15,6 +15,7 @@ from crankbase.errors import SpecError, Text
 from crankbase.schema import SpecReader
 from crankbase.validation import read_toml, rows_problem
 
+from .course import COURSES
 from .loads import LoadSpec  # one load's spec: shared with linkage.chain_spec
 from .schema import (ANALYSIS, KINDS, LINK, LINK_NAMES, LOAD, MECHANISM, SCHEMA,
                      WORKING_STROKES)
@@ -137,6 +138,7 @@ def load_spec(path_or_dict) -> MechanismSpec:
     crank = mech("crank")
     coupler = mech("coupler")
     rocker = ground = None
+    # the two kinds' geometry keys differ (the input schema itself): one check each
     if kind == "crank-rocker":
         rocker = mech("rocker", required=True)
         ground = mech("ground", required=True)
@@ -199,7 +201,7 @@ def load_spec(path_or_dict) -> MechanismSpec:
                                 MappingProxyType(pts))
 
     loads, resistance_paths = [], []
-    output = "rocker" if kind == "crank-rocker" else "slider"
+    output = COURSES[kind].output if kind in COURSES else "slider"
     for path, t in ck.rows(data, LOAD):
 
         def get(key, **kw):

@@ -384,6 +384,8 @@ def positions_block(result, chosen, lang="ru", longest_mm=220.0) -> Block:
     length scale μl that keeps the drawing within ``longest_mm``."""
     import numpy as np
 
+    from linkage.course import course_of
+
     from .model import round_scale
 
     spec = result.spec
@@ -392,7 +394,7 @@ def positions_block(result, chosen, lang="ru", longest_mm=220.0) -> Block:
     B = K["B_x_m"].to_numpy() + 1j * K["B_y_m"].to_numpy()
     pts = np.concatenate([A, B, [0j]])
     C = None
-    if spec.kind == "crank-rocker":
+    if course_of(spec).angular:            # the rocker's pivot C on the frame
         C = spec.ground * complex(math.cos(spec.ground_angle), math.sin(spec.ground_angle))
         pts = np.append(pts, C)
     extent = max(np.ptp(pts.real), np.ptp(pts.imag))

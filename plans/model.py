@@ -41,6 +41,7 @@ import numpy as np
 
 from linkage import groups as g
 from linkage.columns import point_names
+from linkage.course import course_of
 from linkage.spec import LINK_NUMBER
 
 from .errors import PlanError, Problem, Text
@@ -383,7 +384,7 @@ def _link_motions(spec, K, i):
                                    spec.epsilon),
              "coupler": g.LinkMotion(A, complex(math.cos(th3), math.sin(th3)),
                                      _row(K, i, "omega3_rad_s"), _row(K, i, "eps3_rad_s2"))}
-    if spec.kind == "crank-rocker":
+    if course_of(spec).angular:     # a rocker turns about the fixed C, a slider slides
         th4 = math.radians(_row(K, i, "theta4_deg"))
         e4 = complex(math.cos(th4), math.sin(th4))
         C = g.PointMotion(B.z - spec.rocker * e4, zero, zero)
@@ -397,7 +398,7 @@ def _link_motions(spec, K, i):
 
 def _velocity_plan(spec, K, i, mu, pts):
     P = Plan("velocity", mu, "m/s", {"p": 0j}, {"p": ("p", "o")}, [])
-    rocker = spec.kind == "crank-rocker"
+    rocker = course_of(spec).angular        # the fixed C of a rocker sits at the pole
     if rocker:
         P.point_labels["p"] = ("p, o, c", "o, c")
     else:
@@ -429,7 +430,9 @@ def _velocity_plan(spec, K, i, mu, pts):
 
 
 def _acceleration_plan(spec, K, i, mu, pts):
-    rocker = spec.kind == "crank-rocker"
+    # two constructions of the course: the RRR's B about A and about the fixed C, the
+    # RRP's B about A and along the guide
+    rocker = course_of(spec).angular
     P = Plan("acceleration", mu, "m/s2", {"pi": 0j},
              {"pi": ("π, o, c" if rocker else "π, o", "o′, c′" if rocker else "o′")}, [])
     V = P.vectors
@@ -554,8 +557,10 @@ def _loads_of(spec, lname, F, i):
 
 
 def _force_dyad(spec, K, F, i, mu):
-    rocker = spec.kind == "crank-rocker"
-    out = "rocker" if rocker else "slider"
+    # the force polygon of the dyad: a rocker's R14 in its two components along and
+    # across the rocker, a slider's R14 whole (its line is the guide's normal)
+    course = course_of(spec)
+    rocker, out = course.angular, course.output
     th3 = math.radians(_row(K, i, "theta3_deg"))
     e3 = complex(math.cos(th3), math.sin(th3))
     R23t = _row(F, i, "R23_t_N") * 1j * e3
@@ -725,7 +730,7 @@ def _angular(spec, K, i, vplan, aplan):
     rows = [("omega3", "velocity", "ab", spec.coupler, _row(K, i, "omega3_rad_s"), "rad/s"),
             ("eps3", "acceleration", "n3_b", spec.coupler, _row(K, i, "eps3_rad_s2"),
              "rad/s2")]
-    if spec.kind == "crank-rocker":
+    if course_of(spec).angular:       # ω4, ε4 of a rocker from the plans' segments
         rows += [("omega4", "velocity", "pb", spec.rocker, _row(K, i, "omega4_rad_s"), "rad/s"),
                  ("eps4", "acceleration", "n4_b", spec.rocker, _row(K, i, "eps4_rad_s2"),
                   "rad/s2")]
@@ -814,7 +819,7 @@ def build_plans(result, positions=None, *, scales=None, crank_angles_deg=None):
                          lambda p: max(v.length_mm for v in p.vectors) or 1.0)
         lever = _lever(spec, K, F, i, vplan, scales.get("lever"))
         geo = {"O": 0j, "A": _c(K, i, "A", ""), "B": _c(K, i, "B", "")}
-        if spec.kind == "crank-rocker":
+        if course_of(spec).angular:           # the rocker's pivot C on the frame
             geo["C"] = complex(spec.ground * math.cos(spec.ground_angle),
                                spec.ground * math.sin(spec.ground_angle))
         for pname in pts:
