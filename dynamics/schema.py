@@ -3,10 +3,12 @@
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 from crankbase.schema import ArrayOfTables, Key, Schema, Table
 
 __all__ = ["SCHEMA", "SCHEMAS", "ROTOR_SCHEMA", "DYNAMICS", "MACHINE", "ELEMENT", "MOMENT",
-           "ROTOR", "ROTOR_MASS", "DRIVINGS"]
+           "ROTOR", "ROTOR_MASS", "DRIVINGS", "LINKAGE_BALANCE"]
 
 #: How the machine is driven ([dynamics] driving).
 DRIVINGS = ("constant", "table", "motor")
@@ -62,6 +64,30 @@ ROTOR = Table("rotor", (
     Key("correction_radius_mm", gt=0, unit="mm"),
     ROTOR_MASS,
 ), required=True)
+
+#: ``[balance]`` of a linkage spec (``crankdyn balance LINKAGE.toml``, read by
+#: :func:`dynamics.shaking.mechanism_balance`, which names a key given for another kind of
+#: mechanism): a crank-rocker's two counterweight radii, a crank-slider's balanced share
+#: and radius, a chain's crank counterweight radius.  Declared for the forms (the web's
+#: balance page); the reference of the linkage spec tells it in words.
+@dataclass(frozen=True)
+class _WordsTable(Table):
+    """A table whose words are under another path of the catalogue (``[balance]`` of a
+    linkage is not the engine's ``[balance]``: ``spec.linkage_balance.*``)."""
+
+    words: str = ""
+
+    @property
+    def text_path(self) -> str:
+        return self.words or super().text_path
+
+
+LINKAGE_BALANCE = _WordsTable("balance", (
+    Key("fraction", ge=0, le=1, default=0.0),
+    Key("radius_m", gt=0, unit="m"),
+    Key("radius_crank_m", gt=0, unit="m"),
+    Key("radius_rocker_m", gt=0, unit="m"),
+), words="linkage_balance")
 
 #: The dynamics spec file (``crankdyn dynamics``): ``[machine]`` + ``[dynamics]``, or a
 #: linkage or engine spec with ``[dynamics]``.

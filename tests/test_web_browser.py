@@ -274,26 +274,31 @@ def test_the_synthesis_page_in_the_browser(server, browser, tmp_path, cli_report
 
 
 def test_the_dynamics_page_in_the_browser(server, browser, tmp_path, cli_report):
-    """The seed's flywheel example: the motion table on the page is the CLI's, in both
-    languages; the screenshots of the page."""
+    """The shaper (a six-link chain driven by a motor, ``crankdyn dynamics --example
+    shaper``): the motion table and the forces under the true motion on the page are the
+    CLI's, in both languages; the screenshots of the page."""
     from selenium.webdriver.common.by import By
 
-    out = _shared(cli_report("dynamics", "--example", "flywheel", "--lang", "en"))
-    with open(next(out.glob("*_motion.csv")), newline="") as fh:
-        want = list(csv.reader(fh))
+    out = _shared(cli_report("dynamics", "--example", "shaper", "--lang", "en"))
+    want = {}
+    for key, name in (("table2", "shaper-machine_motion.csv"),
+                      ("table2-form", "shaper-machine_forces_true_motion.csv")):
+        with open(out / name, newline="") as fh:
+            want[key] = list(csv.reader(fh))
     d = browser
     for lang in ("en", "ru"):
         d.get(server + f"/dynamics?lang={lang}")
-        d.find_element(By.ID, "example-flywheel").click()
+        d.find_element(By.ID, "example-shaper").click()
         _by_id(d, "notice")
         _compute(d)
-        table = d.find_element(By.ID, "table2")
-        head = [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
-        rows = [[td.text for td in tr.find_elements(By.TAG_NAME, "td")]
-                for tr in table.find_elements(By.CSS_SELECTOR, "tbody tr")[:3]]
-        assert head == want[0] and rows == want[1:4]
+        for key, rows_want in want.items():
+            table = d.find_element(By.ID, key)
+            head = [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
+            rows = [[td.text for td in tr.find_elements(By.TAG_NAME, "td")]
+                    for tr in table.find_elements(By.CSS_SELECTOR, "tbody tr")[:3]]
+            assert head == rows_want[0] and rows == rows_want[1:4]
         _wait(d, _images_loaded)
-        assert d.find_elements(By.CSS_SELECTOR, "#figures img")
+        assert len(d.find_elements(By.CSS_SELECTOR, "#figures img")) >= 5
         d.execute_script("document.getElementById('results').scrollIntoView()")
         _shot(d, f"web_dynamics_results_{lang}.png", tmp_path)
 
