@@ -1,7 +1,7 @@
 """``crankdyn check``: check a student's table against the computed one.
 
     crankdyn check SPEC.toml STUDENT.xlsx|csv -o DIR [--rtol 0.02] [--atol A]
-                   [--map "HEADER=column" ...] [--lang ru|en]
+                   [--map "HEADER=column" ...] [--lang ru|en|zh]
     crankdyn check BASE.toml --variants variants.csv STUDENTS_DIR -o DIR [...]
 
 An engine spec (``[engine]``) checks Table 2 (either textbook form, by ``alpha_deg``); a
@@ -22,6 +22,7 @@ Exit status 0 when every student is matched and right, 1 otherwise.
 """
 from __future__ import annotations
 from crankbase.errors import Text
+from .langs import LANG_CHOICES
 
 
 def add_parser(sub):
@@ -55,7 +56,7 @@ def add_parser(sub):
     p.add_argument("--map", action="append", metavar="HEADER=column", default=[],
                    help="the student's header HEADER holds our column (repeatable), e.g. "
                         "--map 'T, Н=T_N' --map 'α=alpha_deg'")
-    p.add_argument("--lang", choices=("ru", "en"), default="ru",
+    p.add_argument("--lang", choices=LANG_CHOICES, default="ru",
                    help="language of the verdicts and comments (default ru)")
     p.set_defaults(func=run)
     return p

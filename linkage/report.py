@@ -43,6 +43,7 @@ import re
 import numpy as np
 
 from crankbase.errors import Text
+from crankbase.texts import OFFERED
 from crankbase.tolerances import SAME_ANGLE_DEG
 
 __all__ = ["column_label", "unit_text", "kind_text", "warning_text", "write_csvs",
@@ -50,7 +51,7 @@ __all__ = ["column_label", "unit_text", "kind_text", "warning_text", "write_csvs
            "sheet_columns", "force_sheet_columns", "summary_lines", "text", "LANGS"]
 
 #: Report languages.
-LANGS = ("ru", "en")
+LANGS = OFFERED              # every offered language (crankbase.texts.languages)
 
 _UNITS = {"m": "m", "m_s": "m/s", "m_s2": "m/s²", "deg": "°", "rad_s": "rad/s",
           "rad_s2": "rad/s²", "N": "N", "Nm": "N·m"}
@@ -132,7 +133,7 @@ def _column_label_en(col):
 
 def _check_lang(lang):
     if lang not in LANGS:
-        raise ValueError(f"lang: got {lang!r}; one of 'ru', 'en'")
+        raise ValueError(f"lang: got {lang!r}; one of {', '.join(LANGS)}")
 
 
 def sheet_columns(kinematics_cols):

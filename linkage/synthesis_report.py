@@ -138,8 +138,10 @@ _MU_METHOD = re.compile(r"^given l2 and mu_min >= (\S+) deg"
 
 def _lang(lang) -> int:
     """0 for ru, 1 for en (the index into the (ru, en) word pairs)."""
-    if lang not in ("ru", "en"):
-        raise ValueError(f"lang: got {lang!r}; one of 'en', 'ru'")
+    from crankbase.texts import OFFERED
+
+    if lang not in OFFERED:
+        raise ValueError(f"lang: got {lang!r}; one of {', '.join(OFFERED)}")
     return 0 if lang == "ru" else 1
 
 
