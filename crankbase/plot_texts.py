@@ -113,8 +113,8 @@ _COMMANDS = {"\\Delta": "Δ", "\\delta": "δ", "\\omega": "ω", "\\varphi": "φ"
 
 def plain_math(text: str) -> str:
     """``text`` with its mathtext (``$…$``) set as plain Unicode: a subscript in Unicode
-    subscript letters where they all exist (``$M_{mean}$`` → "Mₘₑₐₙ"), else on the line
-    ("$R_{cp}$" → "Rcp"); ``\\Delta`` → Δ.  Matplotlib's mathtext draws its plain parts
+    subscript letters where a subscript of two or more letters has them all
+    (``$M_{mean}$`` → "Mₘₑₐₙ"), else on the line ("$R_{cp}$" → "Rcp", "$F_x$" → "Fx"); ``\\Delta`` → Δ.  Matplotlib's mathtext draws its plain parts
     in one font without fallback, so a label mixing mathtext and Chinese would show boxes;
     as plain text every glyph falls back to a CJK font (:func:`plot_fonts`)."""
     def one(m):
@@ -124,23 +124,31 @@ def plain_math(text: str) -> str:
 
         def sub(g):
             part = g.group(1) or g.group(2)
-            return ("".join(_SUB[c] for c in part) if all(c in _SUB for c in part)
-                    else part)
+            return ("".join(_SUB[c] for c in part)
+                    if len(part) > 1 and all(c in _SUB for c in part) else part)
         body = re.sub(r"_\{([^{}]*)\}|_(\w)", sub, body)
         return body.replace("{", "").replace("}", "")
     return _MATH.sub(one, text)
 
 
 def cjk_texts(fig) -> int:
-    """Every text of ``fig`` that holds Chinese characters and mathtext set as plain
-    Unicode (:func:`plain_math`); the number changed.  Texts without Chinese characters
+    """Every text of ``fig`` that holds Chinese characters: drawn in DejaVu Sans with the
+    installed CJK fonts as fallback (:func:`plot_fonts`), and its mathtext set as plain
+    Unicode (:func:`plain_math`); returns the number of texts whose mathtext changed.  Texts without Chinese characters
     (every Russian and English figure) are left exactly as they are."""
     from matplotlib.text import Text
 
     n = 0
+    family = None
     for art in fig.findobj(Text):
         s = art.get_text()
-        if "$" in s and _CJK.search(s):
+        if not _CJK.search(s):
+            continue
+        if family is None:
+            family = [FONT_FAMILY[0], *plot_fonts("zh")]
+        if len(family) > 1:
+            art.set_fontfamily(family)     # drawn before plot_fonts was called: its fonts
+        if "$" in s:
             new = plain_math(s)
             if new != s:
                 art.set_text(new)
