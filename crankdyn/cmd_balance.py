@@ -28,7 +28,7 @@ speaks the report's language (``--lang``).
 """
 from __future__ import annotations
 from crankbase.errors import Text
-from .langs import LANG_CHOICES
+from .langs import LANG_CHOICES, LANG_HELP
 
 
 #: Bundled examples by short name (``--example NAME``).
@@ -56,8 +56,9 @@ def add_parser(subparsers):
                         + ", ".join(EXAMPLES) + " (default rotor)")
     p.add_argument("-o", "--output", required=True, metavar="DIR",
                    help="output folder (created if needed)")
-    p.add_argument("--lang", choices=LANG_CHOICES, default="ru",
-                   help="language of the plots and the terminal summary (default ru, the "
+    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
+                   help=LANG_HELP
+                   + "language of the plots and the terminal summary (default ru, the "
                         "Russian textbook symbols)")
     p.set_defaults(func=run)
 

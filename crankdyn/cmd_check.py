@@ -22,7 +22,7 @@ Exit status 0 when every student is matched and right, 1 otherwise.
 """
 from __future__ import annotations
 from crankbase.errors import Text
-from .langs import LANG_CHOICES
+from .langs import LANG_CHOICES, LANG_HELP
 
 
 def add_parser(sub):
@@ -56,8 +56,9 @@ def add_parser(sub):
     p.add_argument("--map", action="append", metavar="HEADER=column", default=[],
                    help="the student's header HEADER holds our column (repeatable), e.g. "
                         "--map 'T, Н=T_N' --map 'α=alpha_deg'")
-    p.add_argument("--lang", choices=LANG_CHOICES, default="ru",
-                   help="language of the verdicts and comments (default ru)")
+    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
+                   help=LANG_HELP
+                   + "language of the verdicts and comments (default ru)")
     p.set_defaults(func=run)
     return p
 

@@ -18,7 +18,7 @@ in both.
 from __future__ import annotations
 
 import sys
-from .langs import LANG_CHOICES
+from .langs import LANG_CHOICES, LANG_HELP
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
 EXAMPLES = {"ratchet": "ratchet.toml", "press": "press.toml", "shaper": "shaper.toml",
@@ -46,8 +46,9 @@ def add_parser(sub):
     p.add_argument("--step", type=float, default=1.0, metavar="DEG",
                    help="crank-angle step of the full-turn plots (default 1°)")
     p.add_argument("--no-plots", action="store_true", help="write the tables only")
-    p.add_argument("--lang", choices=LANG_CHOICES, default="ru",
-                   help="language of every output: the workbook (sheet titles, labels, "
+    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
+                   help=LANG_HELP
+                   + "language of every output: the workbook (sheet titles, labels, "
                         "units, symbols), the plots, the plan drawings and this terminal "
                         "summary; ru (the Russian textbook's symbols Mур, Mпс, Fпс and "
                         "units Н·м, м/с, default) or en (English symbols Mb, Mr, Fr, no "

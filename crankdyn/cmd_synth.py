@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 
 from crankbase.errors import Problem, Text
-from .langs import LANG_CHOICES
+from .langs import LANG_CHOICES, LANG_HELP
 
 MODES = {
     frozenset(): "region",
@@ -63,11 +63,13 @@ def add_parser(sub):
                         "with --ground)")
     p.add_argument("-o", "--output", required=True, metavar="DIR", help="output folder")
     p.add_argument("--no-plots", action="store_true", help="write the tables only")
-    p.add_argument("--lang", choices=LANG_CHOICES, default="ru",
-                   help="language of the plots, the workbook's titles, sheet names and "
+    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
+                   help=LANG_HELP
+                   + "language of the plots, the workbook's titles, sheet names and "
                         "words, and the terminal summary: ru (the paper's Russian terms, "
-                        "ККМ-φ0; default) or en (English, no Cyrillic: KKM-φ0). The "
-                        "workbook keeps its Russian and English header rows in both")
+                        "ККМ-φ0; default), en (English, no Cyrillic: KKM-φ0) or zh "
+                        "(Chinese, KKM-φ0). The workbook keeps its Russian (Chinese in zh) "
+                        "and English header rows")
     p.set_defaults(func=run)
     return p
 

@@ -15,7 +15,7 @@ library's (:func:`torsion.study.run_study`, :func:`torsion.study.write_report`,
 from __future__ import annotations
 
 from crankbase.errors import Text
-from .langs import LANG_CHOICES
+from .langs import LANG_CHOICES, LANG_HELP
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
 EXAMPLES = {"three-rotor": "torsion_three_rotor.toml", "six": "torsion_inline6.toml"}
@@ -37,8 +37,9 @@ def add_parser(subparsers):
                         + ", ".join(EXAMPLES) + " (default three-rotor)")
     p.add_argument("-o", "--output", required=True, metavar="DIR",
                    help="output folder (created if needed)")
-    p.add_argument("--lang", choices=LANG_CHOICES, default="ru",
-                   help="language of the workbook, the plots and the summary (default ru)")
+    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
+                   help=LANG_HELP
+                   + "language of the workbook, the plots and the summary (default ru)")
     p.set_defaults(func=run)
 
 
