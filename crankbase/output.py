@@ -585,6 +585,9 @@ def save_figure(fig, stem, formats=("png", "svg"), dpi=110, tight=False) -> list
     ``stem`` is a path without suffix.  ``tight`` crops to the drawn content (keeps a
     legend placed outside the axes inside the image).  Returns the paths written.
     """
+    from .plot_texts import cjk_texts
+
+    cjk_texts(fig)           # Chinese labels: their mathtext as plain text (CJK fallback)
     paths = []
     extra = {"bbox_inches": "tight", "pad_inches": 0.15} if tight else {}
     for fmt in formats:

@@ -33,10 +33,11 @@ import functools
 import io
 import re
 import string
+from collections.abc import Sequence
 from pathlib import Path
 
 __all__ = ["Texts", "texts", "languages", "catalogue_languages", "keys",
-           "LOCALE_DIR", "REFERENCE"]
+           "LOCALE_DIR", "REFERENCE", "OfferedLanguages", "OFFERED"]
 
 #: Folder of the catalogues (shipped as package data of ``crankbase``).
 LOCALE_DIR = Path(__file__).resolve().parent / "locale"
@@ -154,6 +155,28 @@ def languages() -> tuple[str, ...]:
     ref = keys(REFERENCE)
     done = [lang for lang in catalogue_languages() if ref <= keys(lang)]
     return tuple(sorted(done, key=lambda code: (code != "ru", code != "en", code)))
+
+
+class OfferedLanguages(Sequence):
+    """:func:`languages` as a lazy, read-only sequence: the catalogues are read when it
+    is first asked (``"zh" in OFFERED``, iterated, indexed), not when it is imported, so
+    a module constant or argparse ``choices`` can be it at no cost."""
+
+    def __getitem__(self, i):
+        return languages()[i]
+
+    def __len__(self):
+        return len(languages())
+
+    def __contains__(self, value):
+        return value in languages()
+
+    def __repr__(self):
+        return f"OfferedLanguages({languages()!r})"
+
+
+#: The offered languages (:func:`languages`), lazily: ``lang in OFFERED``.
+OFFERED = OfferedLanguages()
 
 
 def fields(template: str) -> set[str]:

@@ -1,7 +1,7 @@
 """``crankdyn balance``: balancing of a rigid rotor or of a linkage's mechanism.
 
-    crankdyn balance ROTOR.toml -o DIR [--lang ru|en]
-    crankdyn balance LINKAGE.toml -o DIR [--lang ru|en]     # optional [balance] section
+    crankdyn balance ROTOR.toml -o DIR [--lang ru|en|zh]
+    crankdyn balance LINKAGE.toml -o DIR [--lang ru|en|zh]     # optional [balance] section
     crankdyn balance --example [NAME] -o DIR                 # rotor, ratchet, shaper
 
 Every output is named after the spec's name (``<name>``: the rotor's or the
@@ -28,6 +28,7 @@ speaks the report's language (``--lang``).
 """
 from __future__ import annotations
 from crankbase.errors import Text
+from .langs import LANG_CHOICES, LANG_HELP
 
 
 #: Bundled examples by short name (``--example NAME``).
@@ -55,8 +56,9 @@ def add_parser(subparsers):
                         + ", ".join(EXAMPLES) + " (default rotor)")
     p.add_argument("-o", "--output", required=True, metavar="DIR",
                    help="output folder (created if needed)")
-    p.add_argument("--lang", choices=("ru", "en"), default="ru",
-                   help="language of the plots and the terminal summary (default ru, the "
+    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
+                   help=LANG_HELP
+                   + "language of the plots and the terminal summary (default ru, the "
                         "Russian textbook symbols)")
     p.set_defaults(func=run)
 

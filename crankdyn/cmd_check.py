@@ -1,7 +1,7 @@
 """``crankdyn check``: check a student's table against the computed one.
 
     crankdyn check SPEC.toml STUDENT.xlsx|csv -o DIR [--rtol 0.02] [--atol A]
-                   [--map "HEADER=column" ...] [--lang ru|en]
+                   [--map "HEADER=column" ...] [--lang ru|en|zh]
     crankdyn check BASE.toml --variants variants.csv STUDENTS_DIR -o DIR [...]
 
 An engine spec (``[engine]``) checks Table 2 (either textbook form, by ``alpha_deg``); a
@@ -21,6 +21,7 @@ verdict, detail``), ``DIR/<student>/`` the student's ``check.csv`` and checked w
 Exit status 0 when every student is matched and right, 1 otherwise.
 """
 from __future__ import annotations
+from .langs import LANG_CHOICES, LANG_HELP
 
 
 def add_parser(sub):
@@ -54,8 +55,9 @@ def add_parser(sub):
     p.add_argument("--map", action="append", metavar="HEADER=column", default=[],
                    help="the student's header HEADER holds our column (repeatable), e.g. "
                         "--map 'T, Н=T_N' --map 'α=alpha_deg'")
-    p.add_argument("--lang", choices=("ru", "en"), default="ru",
-                   help="language of the verdicts and comments (default ru)")
+    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
+                   help=LANG_HELP
+                   + "language of the verdicts and comments (default ru)")
     p.set_defaults(func=run)
     return p
 

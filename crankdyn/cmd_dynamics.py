@@ -1,7 +1,7 @@
 """``crankdyn dynamics``: the true motion of a machine over its steady cycle, the flywheel,
 a motor drive with the start-up, the forces under the true motion.
 
-    crankdyn dynamics SPEC.toml -o DIR [--lang ru|en]
+    crankdyn dynamics SPEC.toml -o DIR [--lang ru|en|zh]
     crankdyn dynamics --example [NAME] -o DIR
 
 SPEC is a machine given by its reduced quantities (``[machine]``) or a linkage spec, with a
@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import sys
 from crankbase.errors import Text
+from .langs import LANG_CHOICES, LANG_HELP
 
 #: Bundled examples by short name (``--example NAME``).
 EXAMPLES = {"flywheel": "flywheel_seed.toml", "press": "press_dynamics.toml",
@@ -46,8 +47,9 @@ def add_parser(subparsers):
                         + ", ".join(EXAMPLES) + " (default flywheel)")
     p.add_argument("-o", "--output", required=True, metavar="DIR",
                    help="output folder (created if needed)")
-    p.add_argument("--lang", choices=("ru", "en"), default="ru",
-                   help="language of the workbook, the plots and the terminal summary "
+    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
+                   help=LANG_HELP
+                   + "language of the workbook, the plots and the terminal summary "
                         "(default ru, the Russian textbook symbols)")
     p.set_defaults(func=run)
 

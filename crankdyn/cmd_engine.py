@@ -1,6 +1,6 @@
 """``crankdyn engine``: the engine force table (Table 2), its workbook and plots.
 
-    crankdyn engine SPEC.toml -o DIR [--lang ru|en] [--step DEG] [--form seed|kolchin]
+    crankdyn engine SPEC.toml -o DIR [--lang ru|en|zh] [--step DEG] [--form seed|kolchin]
                                      [--bearings] [--drawing] [--torsion]
     crankdyn engine --example [NAME] -o DIR
     crankdyn engine SPEC.toml --variants variants.csv|xlsx -o DIR [--jobs N]
@@ -17,6 +17,7 @@ stays fast.
 """
 from __future__ import annotations
 from crankbase.errors import Text
+from .langs import LANG_CHOICES, LANG_HELP
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
 EXAMPLES = {"petrol": "petrol_vaz2106.toml", "diesel": "diesel_d240.toml",
@@ -36,8 +37,9 @@ def add_parser(subparsers):
                         + ", ".join(EXAMPLES) + " (default petrol)")
     p.add_argument("-o", "--output", required=True, metavar="DIR",
                    help="output folder (created if needed)")
-    p.add_argument("--lang", choices=("ru", "en"), default="ru",
-                   help="report and plot language (default ru, the textbook symbols)")
+    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
+                   help=LANG_HELP
+                   + "report and plot language (default ru, the textbook symbols)")
     p.add_argument("--step", type=float, metavar="DEG",
                    help="table step in crank degrees (overrides [table] step_deg)")
     p.add_argument("--bearings", action="store_true",

@@ -10,7 +10,7 @@ same way (``<name>_plans.csv``, ``<name>_sheet.pdf`` …, see :mod:`plans.report
 outputs are produced in a staging folder and moved into place only when every one of them
 is complete; the reports of other mechanisms in the folder stay.
 
-``--lang ru|en`` (default ru) chooses the language of the workbook (sheet titles, labels,
+``--lang ru|en|zh`` (default ru) chooses the language of the workbook (sheet titles, labels,
 units, symbols: :mod:`linkage.report`), the plots, the plan drawings and the terminal
 summary; the CSV files, the workbook's numbers and its CSV-name header row are the same
 in both.
@@ -18,6 +18,7 @@ in both.
 from __future__ import annotations
 
 import sys
+from .langs import LANG_CHOICES, LANG_HELP
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
 EXAMPLES = {"ratchet": "ratchet.toml", "press": "press.toml", "shaper": "shaper.toml",
@@ -45,8 +46,9 @@ def add_parser(sub):
     p.add_argument("--step", type=float, default=1.0, metavar="DEG",
                    help="crank-angle step of the full-turn plots (default 1°)")
     p.add_argument("--no-plots", action="store_true", help="write the tables only")
-    p.add_argument("--lang", choices=("ru", "en"), default="ru",
-                   help="language of every output: the workbook (sheet titles, labels, "
+    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
+                   help=LANG_HELP
+                   + "language of every output: the workbook (sheet titles, labels, "
                         "units, symbols), the plots, the plan drawings and this terminal "
                         "summary; ru (the Russian textbook's symbols Mур, Mпс, Fпс and "
                         "units Н·м, м/с, default) or en (English symbols Mb, Mr, Fr, no "

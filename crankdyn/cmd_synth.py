@@ -1,7 +1,7 @@
 """``crankdyn synth``: synthesis of a crank-rocker by the transmission angle (ККМ-φ0).
 
     crankdyn synth --phi0 30 [--l2 L2 --l3 L3 | --l1 L1 | --l2 L2 --mu-min DEG]
-                   [--ground M] [--lang ru|en] -o DIR
+                   [--ground M] [--lang ru|en|zh] -o DIR
 
 Writes, named after the design (``<name>``: ``--name``, default ``kkm-<φ0>``, so that two
 designs in one folder never mix), the chosen mechanism (``<name>_mechanism.csv``, printed
@@ -18,6 +18,8 @@ terminal summary; English output holds no Cyrillic letter (the family is KKM-φ0
 numpy, pandas, matplotlib and openpyxl are imported inside :func:`run` only.
 """
 from __future__ import annotations
+
+from .langs import LANG_CHOICES, LANG_HELP
 
 
 def add_parser(sub):
@@ -52,11 +54,13 @@ def add_parser(sub):
                         "with --ground)")
     p.add_argument("-o", "--output", required=True, metavar="DIR", help="output folder")
     p.add_argument("--no-plots", action="store_true", help="write the tables only")
-    p.add_argument("--lang", choices=("ru", "en"), default="ru",
-                   help="language of the plots, the workbook's titles, sheet names and "
+    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
+                   help=LANG_HELP
+                   + "language of the plots, the workbook's titles, sheet names and "
                         "words, and the terminal summary: ru (the paper's Russian terms, "
-                        "ККМ-φ0; default) or en (English, no Cyrillic: KKM-φ0). The "
-                        "workbook keeps its Russian and English header rows in both")
+                        "ККМ-φ0; default), en (English, no Cyrillic: KKM-φ0) or zh "
+                        "(Chinese, KKM-φ0). The workbook keeps its Russian (Chinese in zh) "
+                        "and English header rows")
     p.set_defaults(func=run)
     return p
 

@@ -1,6 +1,6 @@
 """``crankdyn torsion``: torsional vibration of the crankshaft.
 
-    crankdyn torsion SPEC.toml -o DIR [--lang ru|en]
+    crankdyn torsion SPEC.toml -o DIR [--lang ru|en|zh]
     crankdyn torsion --example [NAME] -o DIR            # three-rotor, six
 
 SPEC is an engine spec with a ``[torsion]`` table, or a file with only ``name`` and a
@@ -15,6 +15,7 @@ library's (:func:`torsion.study.run_study`, :func:`torsion.study.write_report`,
 from __future__ import annotations
 
 from crankbase.errors import Text
+from .langs import LANG_CHOICES, LANG_HELP
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
 EXAMPLES = {"three-rotor": "torsion_three_rotor.toml", "six": "torsion_inline6.toml"}
@@ -36,8 +37,9 @@ def add_parser(subparsers):
                         + ", ".join(EXAMPLES) + " (default three-rotor)")
     p.add_argument("-o", "--output", required=True, metavar="DIR",
                    help="output folder (created if needed)")
-    p.add_argument("--lang", choices=("ru", "en"), default="ru",
-                   help="language of the workbook, the plots and the summary (default ru)")
+    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
+                   help=LANG_HELP
+                   + "language of the workbook, the plots and the summary (default ru)")
     p.set_defaults(func=run)
 
 

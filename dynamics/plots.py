@@ -19,7 +19,9 @@ def _words(lang):
     """The words of the dynamics plots in ``lang`` (``plot.dynamics.*``)."""
     from crankbase.plot_texts import plot_words
 
-    if lang not in ("ru", "en"):
+    from crankbase.texts import OFFERED
+
+    if lang not in OFFERED:
         raise KeyError(lang)
     return plot_words(lang, "dynamics")
 

@@ -335,7 +335,10 @@ def plot_mr_polygon(result: RotorBalance, plane=0, ax=None, lang="en"):
     if (centre.real * nrm.real + centre.imag * nrm.imag) > 0:
         nrm = -nrm
     cm = 0.5 * end + 0.2 * span * nrm
-    b_lab = "(m r)б" if lang == "ru" else "(m r)b"
+    from crankbase.plot_texts import plot_words
+
+    w = plot_words(lang, "rotor")
+    b_lab = w["b"]
     ax.text(cm.real, cm.imag, f"{b_lab} = {abs(corr):.4g}\n{_angle_deg(corr):.2f}°",
             fontsize=9, color="0.2", ha="center", va="center",
             bbox=dict(boxstyle="round,pad=0.2", fc="white", ec="0.7", lw=0.5))
@@ -347,14 +350,8 @@ def plot_mr_polygon(result: RotorBalance, plane=0, ax=None, lang="en"):
     ax.set_ylim(ys.min() - pad, ys.max() + pad)
     ax.set_aspect("equal", adjustable="box")
     ax.grid(True, lw=0.3)
-    if lang == "ru":
-        ax.set_title(f"Многоугольник m·r, плоскость {label} (z = "
-                     f"{result.corrections['z_mm'].iloc[plane]:g} мм)")
-        ax.set_xlabel("m r, x, г·мм")
-        ax.set_ylabel("m r, y, г·мм")
-    else:
-        ax.set_title(f"m·r polygon, plane {label} (z = "
-                     f"{result.corrections['z_mm'].iloc[plane]:g} mm)")
-        ax.set_xlabel("m r, x [g·mm]")
-        ax.set_ylabel("m r, y [g·mm]")
+    z = f"{result.corrections['z_mm'].iloc[plane]:g}"
+    ax.set_title(w["title"].format(plane=label, z=z))
+    ax.set_xlabel(w["x"])
+    ax.set_ylabel(w["y"])
     return ax

@@ -269,19 +269,16 @@ def balance_chain(spec, radius_m=None, crank_angles_deg=None) -> BalanceResult:
                          shaking(bal, crank_angles_deg))
 
 
-_L = {"ru": {"phi": "φ, °", "F": "Fин, Н", "b": "до уравновешивания",
-             "a": "после уравновешивания", "t": "Главный вектор сил инерции",
-             "loc": "Годограф главного вектора сил инерции", "x": "Fx, Н", "y": "Fy, Н",
-             "zero": "после уравновешивания: Fин = 0"},
-      "en": {"phi": "φ [deg]", "F": "$F_{sh}$ [N]", "b": "before balancing",
-             "a": "after balancing", "t": "Shaking force", "loc": "Shaking force locus",
-             "x": "$F_x$ [N]", "y": "$F_y$ [N]",
-             "zero": "after balancing: $F_{sh}$ = 0"}}
+def _words(lang):
+    """The words of the shaking-force plots in ``lang`` (``plot.shaking.*``)."""
+    from crankbase.plot_texts import plot_words
+
+    return plot_words(lang, "shaking")
 
 
 def plot_shaking_force(result: BalanceResult, ax=None, lang="en"):
     """|F_sh|(φ) before (solid) and after (dashed) balancing."""
-    L = _L[lang]
+    L = _words(lang)
     if ax is None:
         from matplotlib.figure import Figure
         ax = Figure(figsize=(7, 4), layout="constrained").add_subplot()
@@ -298,7 +295,7 @@ def plot_shaking_force(result: BalanceResult, ax=None, lang="en"):
 def plot_shaking_locus(result: BalanceResult, ax=None, lang="en"):
     """Polar loci of the shaking force vector (its tip over a turn), before and after;
     equal aspect, the pole marked."""
-    L = _L[lang]
+    L = _words(lang)
     if ax is None:
         from matplotlib.figure import Figure
         ax = Figure(figsize=(5.5, 5.5), layout="constrained").add_subplot()

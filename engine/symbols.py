@@ -7,7 +7,7 @@ Inputs sheet of the English workbook and in the README.  Plain data, no imports.
 """
 from __future__ import annotations
 
-__all__ = ["SYMBOLS", "MEANING_RU", "MASS_INPUTS", "sym", "math_symbol", "correspondence",
+__all__ = ["SYMBOLS", "MEANING_RU", "MASS_INPUTS", "sym", "symbol_set", "math_symbol", "correspondence",
            "to_english", "mass_inputs"]
 
 #: key → (Russian symbol, English symbol, English meaning).
@@ -100,6 +100,13 @@ MASS_INPUTS = {
 }
 
 
+def symbol_set(lang: str) -> str:
+    """Which symbols a report in ``lang`` uses: "ru" (the Russian textbook's) for Russian,
+    "en" (Latin and Greek, no Cyrillic) for every other language (English, Chinese: the
+    Chinese textbooks use the same Latin symbols)."""
+    return "ru" if lang == "ru" else "en"
+
+
 def sym(key: str, lang: str) -> str:
     """The symbol ``key`` in ``lang`` ("ru" or "en")."""
     ru, en, _ = SYMBOLS[key]
@@ -124,8 +131,13 @@ def _sub(body):
 
 
 def correspondence(lang="en"):
-    """Rows (English symbol, Russian symbol, meaning in ``lang``) where the two differ."""
-    return [(en, ru, what if lang == "en" else MEANING_RU[key])
+    """Rows (English symbol, Russian symbol, meaning in ``lang``) where the two differ; the
+    meaning is ``sheet.engine.meaning.<key>`` of the text layer (the English one is
+    :data:`SYMBOLS`' third item, the Russian one :data:`MEANING_RU`)."""
+    from crankbase.texts import texts
+
+    t = texts(lang)
+    return [(en, ru, t(f"sheet.engine.meaning.{key}"))
             for key, (ru, en, what) in SYMBOLS.items() if ru != en]
 
 

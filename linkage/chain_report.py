@@ -183,10 +183,12 @@ def plot_chain_plan(result, ax=None, lang="en"):
     """The plan of positions: every link drawn at each position of ``result`` (position 1
     bold with the joints named, the others thin; the positions numbered at the crank
     pin), the frame's joints and the guides on the frame."""
+    from crankbase.plot_texts import plot_fonts
     from crankbase.texts import texts
     from matplotlib.figure import Figure
 
     t = texts(lang)
+    plot_fonts(lang)
     if ax is None:
         fig = Figure(figsize=(9.0, 7.5), layout="tight")
         ax = fig.add_subplot()
@@ -291,12 +293,14 @@ def _plan_labels(ax, result, joints):
 
 def plot_chain_moment(full, ax=None, lang="en"):
     """Mур(φ) over the full turn."""
+    from crankbase.plot_texts import plot_fonts
     from crankbase.texts import texts
     from matplotlib.figure import Figure
 
     from .report import column_label
 
     t = texts(lang)
+    plot_fonts(lang)
     if ax is None:
         ax = Figure(figsize=(8.0, 5.0)).add_subplot()
     F = full.forces
@@ -314,12 +318,14 @@ def plot_chain_moment(full, ax=None, lang="en"):
 def plot_output_motion(full, fig=None, lang="en"):
     """The output link's motion diagrams over the full turn: its position (s or θ), its
     velocity (v or ω) and acceleration (a or ε), one above the other."""
+    from crankbase.plot_texts import plot_fonts
     from crankbase.texts import texts
     from matplotlib.figure import Figure
 
     from .chain_analysis import output_motion
 
     t = texts(lang)
+    plot_fonts(lang)
     if fig is None:
         fig = Figure(figsize=(8.0, 8.0))
     axes = fig.subplots(3, 1, sharex=True)

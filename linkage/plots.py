@@ -47,8 +47,10 @@ _STYLES = [dict(ls="-", marker=None), dict(ls="--", marker=None), dict(ls="-.", 
 
 def _text(lang):
     """The words of these plots in ``lang`` (``plot.linkage.*``)."""
-    if lang not in ("en", "ru"):
-        raise ValueError(f"lang: got {lang!r}; one of 'en', 'ru'")
+    from crankbase.texts import OFFERED
+
+    if lang not in OFFERED:
+        raise ValueError(f"lang: got {lang!r}; one of {', '.join(OFFERED)}")
     from crankbase.plot_texts import plot_words
 
     return plot_words(lang, "linkage")

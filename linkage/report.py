@@ -43,6 +43,7 @@ import re
 import numpy as np
 
 from crankbase.errors import Text
+from crankbase.texts import OFFERED
 from crankbase.tolerances import SAME_ANGLE_DEG
 
 from .course import course_of
@@ -52,7 +53,7 @@ __all__ = ["column_label", "unit_text", "kind_text", "warning_text", "write_csvs
            "sheet_columns", "force_sheet_columns", "summary_lines", "text", "LANGS"]
 
 #: Report languages.
-LANGS = ("ru", "en")
+LANGS = OFFERED              # every offered language (crankbase.texts.languages)
 
 _UNITS = {"m": "m", "m_s": "m/s", "m_s2": "m/s²", "deg": "°", "rad_s": "rad/s",
           "rad_s2": "rad/s²", "N": "N", "Nm": "N·m"}
@@ -134,7 +135,7 @@ def _column_label_en(col):
 
 def _check_lang(lang):
     if lang not in LANGS:
-        raise ValueError(f"lang: got {lang!r}; one of 'ru', 'en'")
+        raise ValueError(f"lang: got {lang!r}; one of {', '.join(LANGS)}")
 
 
 def sheet_columns(kinematics_cols):
@@ -326,45 +327,73 @@ def _spec_rows(raw, prefix=""):
 #: Meaning of the spec keys on the inputs sheet: key (last part) → (ru, en); ``{link}``
 #: is the link's name in the genitive (кривошипа / of the crank).
 _KEY_MEANING = {
-    "kind": ("вид механизма", "mechanism kind"),
-    "name": ("название механизма", "mechanism name"),
-    "crank": ("длина кривошипа lOA", "crank length |OA|"),
-    "coupler": ("длина шатуна lAB", "coupler (rod) length |AB|"),
-    "rocker": ("длина коромысла lBC", "rocker length |CB|"),
-    "ground": ("межосевое расстояние lOC (стойка)", "ground length |OC|"),
+    "kind": ("вид механизма", "mechanism kind",
+        "机构类型"),
+    "name": ("название механизма", "mechanism name",
+        "机构名称"),
+    "crank": ("длина кривошипа lOA", "crank length |OA|",
+        "曲柄长度 lOA"),
+    "coupler": ("длина шатуна lAB", "coupler (rod) length |AB|",
+        "连杆长度 lAB"),
+    "rocker": ("длина коромысла lBC", "rocker length |CB|",
+        "摇杆长度 lBC"),
+    "ground": ("межосевое расстояние lOC (стойка)", "ground length |OC|",
+        "机架长度 lOC（中心距）"),
     "ground_angle_deg": ("угол стойки OC (направляющей) к оси x",
-                         "angle of the ground line (guide) to +x"),
-    "offset": ("смещение направляющей (дезаксаж) e", "guide offset e"),
-    "assembly": ("вариант сборки (+1 или −1)", "assembly branch (+1 or −1)"),
+                         "angle of the ground line (guide) to +x",
+        "机架线 OC（导路）与 x 轴的夹角"),
+    "offset": ("смещение направляющей (дезаксаж) e", "guide offset e",
+        "导路偏距 e"),
+    "assembly": ("вариант сборки (+1 или −1)", "assembly branch (+1 or −1)",
+        "装配分支（+1 或 −1）"),
     "omega_rad_s": ("угловая скорость кривошипа ω2 (+ против часовой стрелки)",
-                    "crank angular velocity ω2 (+ ccw)"),
-    "epsilon_rad_s2": ("угловое ускорение кривошипа ε2", "crank angular acceleration ε2"),
-    "gravity_m_s2": ("ускорение свободного падения g", "gravity g"),
-    "mass_kg": ("масса {link} m{n}", "mass {link} m{n}"),
+                    "crank angular velocity ω2 (+ ccw)",
+        "曲柄角速度 ω2（逆时针为 +）"),
+    "epsilon_rad_s2": ("угловое ускорение кривошипа ε2", "crank angular acceleration ε2",
+        "曲柄角加速度 ε2"),
+    "gravity_m_s2": ("ускорение свободного падения g", "gravity g",
+        "重力加速度 g"),
+    "mass_kg": ("масса {link} m{n}", "mass {link} m{n}",
+        "{link}的质量 m{n}"),
     "inertia_kg_m2": ("момент инерции {link} JS{n} (относительно S{n})",
-                      "moment of inertia {link} JS{n} (about S{n})"),
+                      "moment of inertia {link} JS{n} (about S{n})",
+        "{link}的转动惯量 JS{n}（对 S{n}）"),
     "cg": ("центр масс {link} S{n} (x, y в системе звена)",
-           "centre of mass {link} S{n} (x, y in the link frame)"),
+           "centre of mass {link} S{n} (x, y in the link frame)",
+        "{link}的质心 S{n}（构件坐标系中的 x, y）"),
     "points": ("точка {point} {link} (x, y в системе звена)",
-               "point {point} {link} (x, y in the link frame)"),
-    "link": ("звено, к которому приложена нагрузка", "link carrying the load"),
+               "point {point} {link} (x, y in the link frame)",
+        "{link}上的点 {point}（构件坐标系中的 x, y）"),
+    "link": ("звено, к которому приложена нагрузка", "link carrying the load",
+        "承受载荷的构件"),
     "at": ("точка приложения силы (x, y в системе звена)",
-           "point of application (x, y in the link frame)"),
-    "force_N": ("сила (x, y)", "force (x, y)"),
-    "moment_Nm": ("момент (+ против часовой стрелки)", "moment (+ ccw)"),
-    "resistance_Nm": ("момент полезного сопротивления Mпс", "useful-resistance moment Mr"),
-    "resistance_N": ("сила полезного сопротивления Fпс", "useful-resistance force Fr"),
-    "stroke": ("ход, на котором действует сопротивление", "stroke carrying the resistance"),
+           "point of application (x, y in the link frame)",
+        "力的作用点（构件坐标系中的 x, y）"),
+    "force_N": ("сила (x, y)", "force (x, y)",
+        "力（x, y）"),
+    "moment_Nm": ("момент (+ против часовой стрелки)", "moment (+ ccw)",
+        "力矩（逆时针为 +）"),
+    "resistance_Nm": ("момент полезного сопротивления Mпс", "useful-resistance moment Mr",
+        "有效阻力矩 Mr"),
+    "resistance_N": ("сила полезного сопротивления Fпс", "useful-resistance force Fr",
+        "有效阻力 Fr"),
+    "stroke": ("ход, на котором действует сопротивление", "stroke carrying the resistance",
+        "阻力作用的行程"),
     "span_deg": ("участок действия сопротивления (поворот коромысла от начала рабочего "
-                 "хода)", "span of the resistance (rocker rotation from the stroke start)"),
+                 "хода)", "span of the resistance (rocker rotation from the stroke start)",
+        "阻力作用范围（自工作行程起点起的摇杆转角）"),
     "span_m": ("участок действия сопротивления (путь ползуна от начала рабочего хода)",
-               "span of the resistance (slider travel from the stroke start)"),
-    "positions": ("число положений плана", "number of plan positions"),
-    "crank_angles_deg": ("заданные углы кривошипа", "crank angles given"),
-    "working_stroke": ("направление рабочего хода", "direction of the working stroke"),
+               "span of the resistance (slider travel from the stroke start)",
+        "阻力作用范围（自工作行程起点起的滑块位移）"),
+    "positions": ("число положений плана", "number of plan positions",
+        "位置图的位置数"),
+    "crank_angles_deg": ("заданные углы кривошипа", "crank angles given",
+        "给定的曲柄转角"),
+    "working_stroke": ("направление рабочего хода", "direction of the working stroke",
+        "工作行程的方向"),
 }
-_LINK_GEN = {"crank": ("кривошипа", "of the crank"), "coupler": ("шатуна", "of the coupler"),
-             "rocker": ("коромысла", "of the rocker"), "slider": ("ползуна", "of the slider")}
+_LINK_GEN = {"crank": ("кривошипа", "of the crank", "曲柄"), "coupler": ("шатуна", "of the coupler", "连杆"),
+             "rocker": ("коромысла", "of the rocker", "摇杆"), "slider": ("ползуна", "of the slider", "滑块")}
 #: The spec's word values, explained beside them on the Russian inputs sheet.
 _VALUE_RU = {"crank-rocker": "кривошипно-коромысловый", "crank-slider": "кривошипно-ползунный",
              "crank": "кривошип", "coupler": "шатун", "rocker": "коромысло",
@@ -375,11 +404,13 @@ _VALUE_RU = {"crank-rocker": "кривошипно-коромысловый", "c
 
 
 def _key_meaning(key, value, lang):
-    """The meaning of a spec key in the report's language ('' when not known)."""
-    i = 0 if lang == "ru" else 1
+    """The meaning of a spec key in the report's language ('' when not known): the
+    (ru, en, zh) triples of :data:`_KEY_MEANING`."""
+    i = {"ru": 0, "en": 1}.get(lang, 2)
     parts = [re.sub(r"\[\d+\]$", "", p) for p in key.split(".")]
     if parts[0] == "drawing":
-        return ("поле основной надписи чертежа", "title-block field of the drawing")[i]
+        return ("поле основной надписи чертежа", "title-block field of the drawing",
+                "图纸标题栏字段")[i]
     last = parts[-1]
     link, point = None, None
     if parts[0] == "links" and len(parts) >= 3:
@@ -391,7 +422,7 @@ def _key_meaning(key, value, lang):
         return ""
     from .spec import LINK_NUMBER
 
-    out = meaning[i].format(link=_LINK_GEN.get(link, (link or "", link or ""))[i],
+    out = meaning[i].format(link=_LINK_GEN.get(link, (link or "",) * 3)[i],
                             point=point or "", n=LINK_NUMBER.get(link, ""))
     out = re.sub(r"\s+", " ", out).strip()
     if lang == "ru" and isinstance(value, str) and value in _VALUE_RU:

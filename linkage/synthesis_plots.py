@@ -40,8 +40,10 @@ _CURVE_DASHES = ("-", (0, (7, 2)), (0, (1, 1.5)), (0, (7, 2, 1.5, 2)), (0, (12, 
 
 def _text(lang):
     """The words of these plots in ``lang`` (``plot.synth.*``)."""
-    if lang not in ("en", "ru"):
-        raise ValueError(f"lang: got {lang!r}; one of 'en', 'ru'")
+    from crankbase.texts import OFFERED
+
+    if lang not in OFFERED:
+        raise ValueError(f"lang: got {lang!r}; one of {', '.join(OFFERED)}")
     from crankbase.plot_texts import plot_words
 
     return plot_words(lang, "synth")

@@ -138,8 +138,10 @@ _MU_METHOD = re.compile(r"^given l2 and mu_min >= (\S+) deg"
 
 def _lang(lang) -> int:
     """0 for ru, 1 for en (the index into the (ru, en) word pairs)."""
-    if lang not in ("ru", "en"):
-        raise ValueError(f"lang: got {lang!r}; one of 'en', 'ru'")
+    from crankbase.texts import OFFERED
+
+    if lang not in OFFERED:
+        raise ValueError(f"lang: got {lang!r}; one of {', '.join(OFFERED)}")
     return 0 if lang == "ru" else 1
 
 
@@ -258,6 +260,16 @@ _MECH_LABELS = {
     "rocker_m": ("Коромысло l3, м", "rocker_m"),
 }
 _MECH_HEADER = ("Параметр", "quantity")
+#: A Chinese workbook's first column (instead of the Russian seed's words): the same
+#: quantities in the Chinese textbook's words.
+_T1_HEADERS_ZH = ("长度 λ1", "长度 λ2", "长度 λ3", "μmin, °")
+_MECH_HEADER_ZH = "参数"
+_MECH_LABELS_ZH = {
+    "phi0_deg": "角 φ0, °", "l1": "曲柄 λ1", "l2": "连杆 λ2", "l3": "摇杆 λ3",
+    "mu_min_deg": "最小传动角 μmin, °", "mu_min_at_deg": "μmin 的位置：φ, °",
+    "mu_at_phi0_deg": "φ0 处的传动角, °", "grashof": "格拉霍夫类型", "method": "综合任务",
+    "ground_m": "机架 l0, m", "crank_m": "曲柄 l1, m", "coupler_m": "连杆 l2, m",
+    "rocker_m": "摇杆 l3, m"}
 #: Values of the mechanism sheet that are words, and their translation.
 _MECH_WORDS = {"grashof": grashof_text, "method": method_text}
 
@@ -308,8 +320,8 @@ def write_workbook(path, table, phi0_deg, mechanism=None, lang="en") -> None:
     ws["A1"].alignment = Alignment(wrap_text=True, vertical="top")
     ws.merge_cells("A1:D1")                    # the title wraps over the four columns
     ws.row_dimensions[1].height = 32
-    for hdr in _T1_HEADERS:
-        ws.append(list(hdr))
+    for k, hdr in enumerate(_T1_HEADERS):
+        ws.append(list(_T1_HEADERS_ZH if k == 0 and lang == "zh" else hdr))
     for cell in (*ws[2], *ws[3]):
         cell.font = Font(bold=True)
         cell.alignment = Alignment(horizontal="center")
@@ -325,12 +337,15 @@ def write_workbook(path, table, phi0_deg, mechanism=None, lang="en") -> None:
         wm = wb.create_sheet(tx("sheet.synth.mech_sheet"))
         wm.append([tx("sheet.synth.mech_title", kkm=kkm)])
         wm["A1"].font = Font(bold=True)
-        wm.append([*_MECH_HEADER, tx("sheet.synth.value")])
+        head = (_MECH_HEADER_ZH, _MECH_HEADER[1]) if lang == "zh" else _MECH_HEADER
+        wm.append([*head, tx("sheet.synth.value")])
         for cell in wm[2]:
             cell.font = Font(bold=True)
         width_c = 44
         for key, value in mechanism.iloc[0].items():
             ru, en = _MECH_LABELS.get(key, (key, key))
+            if lang == "zh":
+                ru = _MECH_LABELS_ZH.get(key, key)
             v = value.item() if hasattr(value, "item") else value
             if key in _MECH_WORDS:
                 v = _MECH_WORDS[key](v, lang)

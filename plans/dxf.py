@@ -24,6 +24,8 @@ application ``CRANKDYN``, so a CAD user (and the tests) can match it with ``plan
 """
 from __future__ import annotations
 
+import re
+
 from .layout import Arrow, Circle, Line, Text, arrow_parts
 
 __all__ = ["sheet_dxf", "write_dxf", "LAYERS", "APPID"]
@@ -31,6 +33,14 @@ __all__ = ["sheet_dxf", "write_dxf", "LAYERS", "APPID"]
 APPID = "CRANKDYN"
 LAYERS = {"FRAME": 70, "MAIN": 70, "VECTORS": 70, "LEVER": 70, "THIN": 30, "DASHED": 30,
           "TEXT": 25}
+
+
+#: The text style and font of a text with Chinese characters (GB/T 14691 lettering is
+#: set in a CJK font; SimHei ships with every Chinese Windows and AutoCAD substitutes
+#: its own CJK font where it is missing); other texts keep the GOST style.
+CJK_STYLE = "GOST_CJK"
+CJK_FONT = "simhei.ttf"
+CJK_TEXT = re.compile("[\u3000-\u303f\u3400-\u4dbf\u4e00-\u9fff\uff00-\uffef]")
 
 
 def sheet_dxf(sheet, names=None):
@@ -53,6 +63,9 @@ def sheet_dxf(sheet, names=None):
         if name == "DASHED":
             layer.dxf.linetype = "DASHED"
     doc.styles.add("GOST", font="isocpeur.ttf")
+    cjk = any(isinstance(it, Text) and CJK_TEXT.search(it.text) for it in sheet.items)
+    if cjk:     # a Chinese sheet: a text style whose font has the CJK glyphs
+        doc.styles.add(CJK_STYLE, font=CJK_FONT)
     msp = doc.modelspace()
     msp.reset_limits((0.0, 0.0), (sheet.width, sheet.height))
     msp.reset_extents((0.0, 0.0, 0.0), (sheet.width, sheet.height, 0.0))
@@ -77,8 +90,9 @@ def sheet_dxf(sheet, names=None):
             msp.add_solid([(tip.real, tip.imag), (left.real, left.imag),
                            (right.real, right.imag)], dxfattribs={"layer": it.layer})
         elif isinstance(it, Text):
+            style = CJK_STYLE if cjk and CJK_TEXT.search(it.text) else "GOST"
             t = msp.add_text(it.text, height=it.height,
-                             dxfattribs={"layer": "TEXT", "style": "GOST"})
+                             dxfattribs={"layer": "TEXT", "style": style})
             t.set_placement((it.at.real, it.at.imag), align=_align(align[(it.ha, it.va)]))
         elif isinstance(it, Circle):
             msp.add_circle((it.center.real, it.center.imag), it.r,

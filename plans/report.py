@@ -116,9 +116,12 @@ def write_plans(result, plans, folder, *, name=None, lang="ru", sheet="A1",
     def sheet_file(k, ext):
         return folder / f"{stem}_sheet{'' if k == 0 else f'_{k + 1}'}.{ext}"
 
+    from crankbase.plot_texts import cjk_texts
+
     with PdfPages(folder / f"{stem}_sheet.pdf") as pdf:
         for k, sh in enumerate(sheets):
             fig = sheet_figure(sh)
+            cjk_texts(fig)
             pdf.savefig(fig)
             if previews:
                 fig.savefig(sheet_file(k, "png"), dpi=60)

@@ -1,4 +1,5 @@
-"""Build the Excel templates of the engine report: ``engine_ru.xlsx`` and ``engine_en.xlsx``.
+"""Build the Excel templates of the engine report: ``engine_<lang>.xlsx`` (ru, en, zh: every
+offered language, :func:`crankbase.texts.languages`).
 
 The templates own the look (fonts, borders, merged two-row headers "мм | Н" per force as
 in the textbook's Table 2, column widths, number formats) and every word of text (taken
@@ -353,7 +354,7 @@ def build(lang: str, path: Path) -> None:
     ws_ch.merge_cells("A1:J1")
     _fit_width(ws_ch, "portrait")
 
-    if lang == "en":
+    if lang != "ru":                  # every other language: the Latin symbols
         for ws in wb.worksheets:
             for row in ws.iter_rows():
                 for c in row:
@@ -366,7 +367,9 @@ def build(lang: str, path: Path) -> None:
 
 
 def main():
-    for lang in ("ru", "en"):
+    from crankbase.texts import languages
+
+    for lang in languages():
         out = HERE / f"engine_{lang}.xlsx"
         build(lang, out)
         print("wrote", out)

@@ -643,3 +643,26 @@ crank_angles_deg = [30.0, 40.0]
         assert not any(CYRILLIC.search(v) for _, v in _workbook_strings(out / "cp.xlsx"))
     df = _sheet_frame(_sheet(load_workbook(out / "cp.xlsx"), "velocities"))
     assert math.isnan(df["omega4_rad_s"].iat[0]) and np.isfinite(df["omega4_rad_s"].iat[1])
+
+
+def test_a_chinese_run_prints_and_writes_chinese(tmp_path, capsys):
+    """Issue #19: ``crankdyn linkage --lang zh`` (ratchet, with its plans for position 5):
+    the summary and the workbook in Chinese, no Cyrillic letter, no English word beyond
+    the mechanism's own names and the Latin symbols; the same numbers as in English."""
+    num = re.compile(r"-?\d+\.\d+")
+    outs = {}
+    for lang in ("en", "zh"):
+        d = tmp_path / lang
+        assert main(["linkage", "--example", "-o", str(d), "--no-plots", "--plans", "5",
+                     "--lang", lang]) == 0
+        outs[lang] = capsys.readouterr()
+    out = outs["zh"].out + outs["zh"].err
+    assert not CYRILLIC.search(out), out
+    text = re.sub(r"\S*/\S*|ratchet-drive\S*|\S+\.(csv|xlsx|pdf|dxf|png|svg)", " ", out)
+    words = set(re.findall(r"(?<![\w-])[A-Za-z]{3,}(?![\w-])", text))
+    assert words <= {"max", "PNG", "SVG"}, words
+    assert "茹科夫斯基杠杆" in out and "曲柄摇杆机构" in out
+    assert num.findall(outs["zh"].out) == num.findall(outs["en"].out)
+    strings = [v for _, v in _workbook_strings(tmp_path / "zh" / "ratchet-drive.xlsx")]
+    assert not any(CYRILLIC.search(v) for v in strings)
+    assert "曲柄长度 lOA" in strings

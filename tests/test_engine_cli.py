@@ -511,3 +511,35 @@ def test_two_stroke_engine_end_to_end(tmp_path):
     df = pd.read_csv(tmp_path / "o" / "two-stroke_forces.csv")
     assert df["alpha_deg"].iloc[-1] == 360 and len(df) == 25
     assert (tmp_path / "o" / "two-stroke_polar_Rshsh.png").stat().st_size > 10000
+
+
+def test_chinese_summary_and_cli_run(tmp_path, capsys):
+    """Issue #19: a Chinese run (``--lang zh``) prints Chinese: no Cyrillic letter, no
+    English word beyond the Latin symbols and units, the same numbers as the English
+    summary; its workbook is the Chinese template (Chinese sheet names and labels)."""
+    import re
+
+    from openpyxl import load_workbook
+
+    report = engine.run_study(engine.load(example_path("diesel_kamaz740.toml")),
+                              bearings=True)
+    zh, en = report.summary_lines("zh"), report.summary_lines("en")
+    text = "\n".join(zh)
+    assert not re.search("[\u0400-\u04ff]", text), text
+    words = set(re.findall(r"[A-Za-z]{3,}", text.replace("diesel-kamaz740", "")))
+    assert words <= {"max", "min", "MPa"}, words                # symbols, units
+    for word in ("整机：8 缸", "平衡重", "飞轮", "曲柄销", "主轴颈"):
+        assert word in text, word
+    num = re.compile(r"-?\d+\.\d+")
+    assert num.findall(text) == num.findall("\n".join(en)) and num.findall(text)
+    # the CLI in Chinese
+    assert run_cli("--example", "-o", tmp_path, "--lang", "zh") == 0
+    out = capsys.readouterr().out
+    assert not re.search("[\u0400-\u04ff]", out), out
+    assert out.splitlines()[-1].startswith("已写入：")
+    wb = load_workbook(tmp_path / "petrol-vaz2106.xlsx")
+    assert [ws.title for ws in wb.worksheets][:3] == ["输入数据", "表 2", "汇总"]
+    cells = [v for ws in wb.worksheets for row in ws.iter_rows(values_only=True)
+             for v in row if isinstance(v, str)]
+    assert "活塞行程" in cells and "曲柄销载荷" in cells
+    assert not any(re.search("[\u0400-\u04ff]", v) for v in cells)

@@ -264,7 +264,7 @@ def _run(argv, capsys):
 def test_errors_in_the_run_language(case, build, tmp_path, capsys, monkeypatch):
     monkeypatch.chdir(tmp_path)
     lines = {}
-    for lang in ("ru", "en"):
+    for lang in ("ru", "en", "zh"):
         folder = tmp_path / lang
         folder.mkdir()
         argv = build(folder)
@@ -286,6 +286,13 @@ def test_errors_in_the_run_language(case, build, tmp_path, capsys, monkeypatch):
     # (or a Russian text equal to the English one) is caught here
     assert len(lines["ru"]) == len(lines["en"]), lines
     assert any(re.search(r"[А-Яа-яЁё]", ln) for ln in lines["ru"]), lines["ru"]
+    # Chinese (issue #19): no English word, no Cyrillic, the same problems, in Chinese
+    english = {ln: english_words(ln) for ln in lines["zh"] if english_words(ln)}
+    assert not english, english
+    russian = {ln: cyrillic(ln) for ln in lines["zh"] if cyrillic(ln)}
+    assert not russian, russian
+    assert len(lines["zh"]) == len(lines["en"]), lines
+    assert any(re.search(r"[\u4e00-\u9fff]", ln) for ln in lines["zh"]), lines["zh"]
 
 
 # --------------------------------------------------------------------------- static
@@ -418,7 +425,7 @@ def test_argparse_complaints_in_the_run_language(argv, names, tmp_path, capsys):
     with --lang, Russian by default: one line, exit 2, nothing written, the option named."""
     argv = [a.format(o=tmp_path / "o") for a in argv]
     lines = {}
-    for lang in ("ru", "en", None):
+    for lang in ("ru", "en", "zh", None):
         capsys.readouterr()
         with pytest.raises(SystemExit) as exit_:
             main(argv if lang is None else [argv[0], "--lang", lang, *argv[1:]])
@@ -431,3 +438,4 @@ def test_argparse_complaints_in_the_run_language(argv, names, tmp_path, capsys):
     assert lines[None] == lines["ru"]
     assert re.search(r"[А-Яа-яЁё]", lines["ru"]) and not english_words(lines["ru"]), lines
     assert not cyrillic(lines["en"]), lines
+    assert re.search(r"[\u4e00-\u9fff]", lines["zh"]) and not cyrillic(lines["zh"]), lines

@@ -241,3 +241,40 @@ def test_the_check_finds_each_kind_of_fault():
     gap = fig_with(lambda ax: (ax.plot([0, 4, float("nan"), 6, 10], [5.1] * 5),
                                ax.text(5, 5, "x", va="center")))
     assert figure_problems(gap) == []                  # a broken line under a label
+
+
+@pytest.mark.parametrize("name", ["engine-petrol", "linkage-ratchet"])
+def test_chinese_figures_nothing_overlaps_nothing_is_cut(name):
+    """Issue #19: the same checks on the Chinese figures of one engine and one linkage
+    (as saved: crankbase.output.save_figure sets their Chinese labels' mathtext as plain
+    text in a CJK font), and every Chinese label drawn in a font that has its glyphs."""
+    from crankbase.plot_texts import cjk_fonts, cjk_texts
+    from matplotlib.font_manager import findfont, get_font
+
+    han = re.compile("[\u3000-\u303f\u4e00-\u9fff\uff00-\uffef]")
+
+    if not cjk_fonts():
+        pytest.skip("no CJK font installed (fonts-noto-cjk, fonts-wqy-zenhei …)")
+    cheap = {"engine-petrol": lambda: _engine("petrol_vaz2106.toml", drawing=False)}
+    make, edge = EXAMPLES[name]
+    figs = cheap.get(name, make)()("zh")
+    found, chinese = [], 0
+    for stem, fig in figs.items():
+        cjk_texts(fig)
+        found += [f"{name} [zh] {stem}: {p}" for p in figure_problems(fig, edge=edge)]
+        found += [f"{name} [zh] {stem}: {p}" for p in _word_problems(fig, "zh")]
+        from matplotlib.text import Text
+
+        for t in fig.findobj(Text):
+            s = t.get_text()
+            if not han.search(s):
+                continue
+            chinese += 1
+            assert "$" not in s, (stem, s)
+            fonts = [get_font(findfont(f)) for f in t.get_fontfamily()]
+            missing = [c for c in set(s) if han.match(c)
+                       and not any(f.get_char_index(ord(c)) for f in fonts)]
+            assert not missing, (stem, s, missing)
+        fig.clear()
+    assert chinese > 10
+    assert not found, "\n".join(found[:60]) + f"\n({len(found)} problems)"

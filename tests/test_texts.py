@@ -147,3 +147,54 @@ def test_the_catalogues_ship_with_the_package():
     tree = ast.parse((ROOT / "crankbase" / "texts.py").read_text(encoding="utf-8"))
     assert tree  # the module parses; the catalogue folder is beside it
     assert (T.LOCALE_DIR / "ru" / "common.po").is_file()
+
+
+# ---- Chinese (issue #19): complete, offered, in en's order, one plural form -------------
+
+def _order(lang, area):
+    with (T.LOCALE_DIR / lang / f"{area}.po").open("rb") as fh:
+        return [m.id[0] if isinstance(m.id, (tuple, list)) else m.id
+                for m in read_po(fh) if m.id]
+
+
+def test_chinese_holds_every_english_key():
+    """zh is offered (crankbase.texts.languages) only while complete: when a merge adds
+    English keys, this names each missing one by its file, to be translated there."""
+    en, zh = _entries("en"), _entries("zh")
+    missing = {}
+    for key, (_, _, area) in en.items():
+        if key not in zh:
+            missing.setdefault(area, []).append(key)
+    report = "; ".join(f"crankbase/locale/zh/{area}.po lacks {len(keys)}: {', '.join(keys)}"
+                       for area, keys in sorted(missing.items()))
+    assert not missing, f"zh is not offered until complete: {report}"
+    assert "zh" in T.languages()
+
+
+def test_chinese_keys_are_in_the_english_order():
+    for path in sorted((T.LOCALE_DIR / "en").glob("*.po")):
+        en = _order("en", path.stem)
+        zh = [k for k in _order("zh", path.stem) if k in set(en)]
+        assert zh == [k for k in en if k in set(zh)], f"zh/{path.name}: keys out of en's order"
+
+
+def test_chinese_has_one_plural_form_and_no_cyrillic():
+    zh = T.texts("zh")
+    assert zh.n("common.plots", 1) == zh.n("common.plots", 22).replace("22", "1")
+    assert "22" in zh.n("common.plots", 22)
+    cyr = re.compile(r"[А-Яа-яЁё]")
+    han = re.compile(r"[\u4e00-\u9fff]")
+    en = _entries("en")
+    words = 0
+    for key, (_, strings, _) in _entries("zh").items():
+        for s in strings:
+            # one source text names the Russian workbook's own cell label «Вариант»
+            if key != "check.class.detail.no_variant":
+                assert not cyr.search(s), f"zh: {key}: Cyrillic in {s!r}"
+            if han.search(s):
+                words += 1
+            # a sentence left in English: a translation identical to en's with words in it
+            e = en[key][1][-1]
+            if s == e and len(re.findall(r"\b[a-z]{3,}\b", re.sub(r"\{[^}]*\}", "", e))) >= 3:
+                raise AssertionError(f"zh: {key}: left in English: {s!r}")
+    assert words > 1500

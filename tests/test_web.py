@@ -133,7 +133,7 @@ def diesel_upload(app):
 
 
 # ----------------------------------------------------------------------------- pages
-@pytest.mark.parametrize("lang", ["en", "ru"])
+@pytest.mark.parametrize("lang", ["en", "ru", "zh"])
 def test_the_engine_page_shows_every_schema_key_with_its_words(app, lang):
     from engine.schema import SCHEMA
     from web.engine_form import FILE_KEY, sections
@@ -747,3 +747,20 @@ def test_the_teacher_page_names_a_bad_table_and_too_many_variants(app):
     r = c.post("/teacher/variants", files={"base": ("b.toml", base, "text/plain"),
                                            "variants": ("t.csv", rows.encode(), "text/csv")})
     assert "не более 100" in htmllib.unescape(r.text) and "batch-progress" not in r.text
+
+
+def test_the_language_switch_offers_chinese_and_the_page_speaks_it(app):
+    """Issue #19: the switch lists every offered language (crankbase.texts.languages);
+    the Chinese engine page has the Chinese words and no Cyrillic."""
+    from crankbase.texts import languages, texts
+
+    c = client(app, "zh")
+    html = c.get("/engine").text
+    for lang in languages():
+        assert f'id="lang-{lang}"' in html
+    assert 'id="lang-zh" class="active"' in html
+    assert '<html lang="zh">' in html
+    t = texts("zh")
+    assert t("web.engine.title") in html and t("web.form.compute") in html
+    assert "发动机动力学" in html
+    assert not re.search(r"[А-Яа-яЁё]", re.sub(r'id="lang-\w+"[^<]*', "", html))

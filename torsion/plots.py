@@ -48,6 +48,9 @@ def _words(lang):
         raise SpecError(Problem("lang", Text("errors.torsion.lang",
                                              {"lang": lang,
                                               "items": ", ".join(catalogue_languages())})))
+    from crankbase.plot_texts import plot_fonts
+
+    plot_fonts(lang)
     return texts(lang)
 
 

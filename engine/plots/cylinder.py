@@ -11,8 +11,9 @@ from __future__ import annotations
 import numpy as np
 
 from crankbase.errors import Problem, Text
+from crankbase.texts import OFFERED
 from ..kinematics import guide_direction
-from ..symbols import math_symbol, sym
+from ..symbols import math_symbol, sym, symbol_set
 
 __all__ = ["plot_indicator", "plot_pressure", "plot_piston_forces", "plot_nkt",
            "plot_torque", "plot_polar", "plot_developed", "figures", "PLOT_NAMES", "LANGS"]
@@ -21,7 +22,7 @@ __all__ = ["plot_indicator", "plot_pressure", "plot_piston_forces", "plot_nkt",
 PLOT_NAMES = ("indicator", "forces_P", "forces_NKT", "torque", "polar_Rshsh",
               "developed_Rshsh")
 
-LANGS = ("ru", "en")
+LANGS = OFFERED              # every offered language (crankbase.texts.languages)
 
 #: Symbols of the quantities, from the one table :mod:`engine.symbols`: the Russian
 #: textbook's, and the English report's set as mathtext (no Cyrillic in an English plot).
@@ -43,7 +44,7 @@ def engine_words(lang):
                                                    {"lang": lang, "items": ', '.join(LANGS)})))
     from crankbase.plot_texts import plot_words
 
-    return dict(plot_words(lang, "engine"), sym=SYMBOLS[lang])
+    return dict(plot_words(lang, "engine"), sym=SYMBOLS[symbol_set(lang)])
 
 
 def figure_axes(ax, figsize=(10, 5.6), **margins):

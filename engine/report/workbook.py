@@ -25,16 +25,17 @@ import math
 import numpy as np
 
 from crankbase.errors import OutputError, Problem, Text
+from crankbase.texts import OFFERED
 from crankbase.workbook import A4_LANDSCAPE_PRINT_CM, sheet_rows, thinned_note
 
 from ..forces import COLUMNS, SUMMARY_QUANTITIES
 from ..spec import EngineSpecError
-from ..symbols import mass_inputs, sym
+from ..symbols import mass_inputs, sym, symbol_set
 
 __all__ = ["build_workbook", "add_engine_sheets", "save_workbook", "input_values",
            "TABLE2_FORCES", "LANGS"]
 
-LANGS = ("ru", "en")
+LANGS = OFFERED              # every offered language (crankbase.texts.languages)
 
 #: Table 2 force pairs (mm, N), in the textbook order: (column of the force table).
 TABLE2_FORCES = ("dPg_N", "Pj_N", "P_N", "S_N", "N_N", "K_N", "T_N", "R_N")
@@ -247,7 +248,7 @@ def build_workbook(result, lang="ru"):
     from crankbase.texts import texts
 
     tx = texts(lang)
-    y = _CHART_SYMBOLS[lang]
+    y = _CHART_SYMBOLS[symbol_set(lang)]
     N, Nm = tx("sheet.engine.newton"), tx("sheet.engine.newton_metre")
     charts = [
         (tx("sheet.engine.chart.forces_gas", dPg=y["dPg"]), N,
@@ -336,7 +337,8 @@ _CYL_DASHES = ("sysDot", "dash", "lgDashDot", "sysDash", "dashDot", "lgDash",
 
 #: Symbols in the native charts: Russian textbook ones, English ones without Cyrillic.
 _CHART_SYMBOLS = {lang: dict(dPg=sym("dPg", lang), M=sym("M", lang), S=sym("S", lang),
-                             R=sym("R", lang), pole=sym("pole_R", lang)) for lang in LANGS}
+                             R=sym("R", lang), pole=sym("pole_R", lang))
+                  for lang in ("ru", "en")}
 
 
 def _style_series(s, m):
@@ -400,7 +402,7 @@ def _polar_chart(ws_ch, cd, col, first, last, curves, spec, lang, row):
     from crankbase.texts import texts
 
     tx = texts(lang)
-    y = _CHART_SYMBOLS[lang]
+    y = _CHART_SYMBOLS[symbol_set(lang)]
     T = curves["T_N"].to_numpy(float)
     K = curves["K_N"].to_numpy(float)
     kr = spec.Kr
