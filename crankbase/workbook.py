@@ -26,6 +26,7 @@ openpyxl is imported inside the functions only.
 from __future__ import annotations
 
 import copy
+import functools
 import math
 import re
 
@@ -33,7 +34,7 @@ __all__ = ["A4_LANDSCAPE_PRINT_CM", "FONT", "HEAD_FILL", "MAX_ROWS", "MAX_WIDTH"
            "text_width", "wrapped_lines", "columns_cm", "number_format", "shown", "font",
            "style_header",
            "table_blocks", "unify_fonts", "fit_numbers", "fit_columns", "fit_rows",
-           "page_setup", "finish", "save", "bounded", "sheet_rows", "thinned_note", "summary_workbook", "new_workbook",
+           "page_setup", "finish", "save", "bounded", "filled_cells", "sheet_rows", "thinned_note", "summary_workbook", "new_workbook",
            "words", "Words", "header_rows"]
 
 #: The one font family of every workbook (metric twin: Liberation Sans).
@@ -72,6 +73,15 @@ def text_width(s, bold=False, size=11) -> float:
     """Printed width of a one-line text in Excel column-width units."""
     w = sum(_W.get(ch, _W_DEFAULT) for ch in str(s))
     return w * (1.08 if bold else 1.0) * (size or 11) / 11
+
+
+#: :func:`text_width` of the texts a workbook repeats (labels, units, the shapes of its
+#: numbers), each measured once.
+_text_width = functools.lru_cache(maxsize=1 << 16)(text_width)
+
+#: Every digit to ``0``: the digits are equally wide, so a number's shown text measures as
+#: its shape (``-000.000``), and a column of numbers is measured a few shapes at a time.
+_DIGITS_TO_0 = str.maketrans("123456789", "000000000")
 
 
 def wrapped_lines(s, width, bold=False, size=11) -> int:
@@ -121,6 +131,7 @@ def number_format(values) -> str:
     return "0." + "0" * decimals if decimals else "0"
 
 
+@functools.lru_cache(maxsize=256)
 def _decimals(fmt):
     """(decimals, optional decimals) of a simple number format ``0.00#``."""
     m = re.fullmatch(r"[#,]*0(?:\.(0*)(#*))?", fmt or "")
@@ -218,13 +229,34 @@ def _merged(ws):
     return first, covered
 
 
+def filled_cells(ws):
+    """The cells of ``ws`` that hold a value, row by row, each row left to right.
+
+    (``ws.iter_rows()`` visits every cell of the used rectangle and creates each empty one
+    it visits: on a long table most of a sheet's cells, and most of a workbook's build and
+    save time.)"""
+    return [c for _, c in sorted(ws._cells.items()) if c.value is not None]
+
+
+def _filled_rows(ws):
+    """:func:`filled_cells` as a list of rows (a row without a value left out)."""
+    rows = []
+    last = None
+    for c in filled_cells(ws):
+        if c.row != last:
+            rows.append([])
+            last = c.row
+        rows[-1].append(c)
+    return rows
+
+
 def table_blocks(ws):
     """The table columns of a sheet: ``[(column, first row, last row)]``, each a run of
     consecutive rows that hold a number in that column and at least two numbers in the
     row (a list of single values with labels is not a table, nor a list of one quantity
     a row: numbers after three texts such as quantity, unit and key)."""
     numeric = {}
-    for row in ws.iter_rows():
+    for row in _filled_rows(ws):
         cols = [c.column for c in row if _is_number(c.value)]
         lead = 0                  # texts before the first number (quantity, unit, key)
         for c in row:
@@ -258,53 +290,89 @@ def fit_numbers(ws):
         for c in cells:
             c.number_format = fmt
             in_table.add((c.row, col))
-    for row in ws.iter_rows():
-        for c in row:
-            if _is_number(c.value) and (c.row, c.column) not in in_table \
-                    and c.number_format != "@":
-                c.number_format = number_format([c.value])
+    for c in filled_cells(ws):
+        if _is_number(c.value) and (c.row, c.column) not in in_table \
+                and c.number_format != "@":
+            c.number_format = number_format([c.value])
+
+
+def _cell_style(c):
+    """(bold, size, wraps, number format) of a cell: what its width depends on besides
+    its value."""
+    f, al = c.font, c.alignment
+    return (bool(f and f.b), (f.sz if f and f.sz else 11), bool(al and al.wrap_text),
+            c.number_format)
+
+
+def _need(value, style):
+    """(width needed, wraps) of ``value`` shown on one line in ``style``
+    (:func:`_cell_style`)."""
+    bold, size, wrap, fmt = style
+    if _is_number(value):
+        return _text_width(shown(value, fmt).translate(_DIGITS_TO_0), bold, size), False
+    text = str(value)
+    if wrap and "\n" not in text and len(text.split()) > 1 and bold:
+        # a wrapped header: its longest word, or a third of it, sets the width
+        return max(max(_text_width(w, bold, size) for w in text.split()),
+                   _text_width(text, bold, size) / 3), True
+    return max(_text_width(p, bold, size) for p in text.split("\n")), wrap
 
 
 def _cell_need(c):
     """(width needed, wraps) of one cell's shown text on one line."""
-    bold, size = bool(c.font and c.font.b), (c.font.sz if c.font and c.font.sz else 11)
-    if _is_number(c.value):
-        return text_width(shown(c.value, c.number_format), bold, size), False
-    text = str(c.value)
-    wrap = bool(c.alignment and c.alignment.wrap_text)
-    if wrap and "\n" not in text and len(text.split()) > 1 and bold:
-        # a wrapped header: its longest word, or a third of it, sets the width
-        return max(max(text_width(w, bold, size) for w in text.split()),
-                   text_width(text, bold, size) / 3), True
-    return max(text_width(p, bold, size) for p in text.split("\n")), wrap
+    return _need(c.value, _cell_style(c))
 
 
-def _lone(ws, c):
-    """Whether ``c`` is the only value of its row (a title: it may run over empty cells;
-    a hidden column's key does not count)."""
-    return all(d.value is None or not _col_width(ws, d.column) for d in ws[c.row]
-               if d.column != c.column)
+def _style_key(c):
+    """What :func:`_cell_style` depends on, cheap to read (openpyxl builds a new font,
+    alignment and format object at each access)."""
+    st = c._style
+    return None if st is None else (st.fontId, st.alignmentId, st.numFmtId)
 
 
 def fit_columns(ws, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH):
     """Column widths from the text and the numbers they hold; a text longer than
     ``max_width`` wraps.  ``fixed``: {column letter: width} kept as given.  Titles (the
-    only value of their row) and merged cells do not widen a column."""
+    only value of their row) and merged cells do not widen a column.
+
+    Each cell is visited once per pass, its style read once per distinct style and each
+    text (each shape of a number) measured once."""
     from openpyxl.styles import Alignment
     from openpyxl.utils import get_column_letter
 
     fixed = fixed or {}
     first, covered = _merged(ws)
+    cells = filled_cells(ws)
+    hidden = {}                     # {column: hidden}
+    for c in cells:
+        if c.column not in hidden:
+            hidden[c.column] = not _col_width(ws, c.column)
+    shown_in_row = {}               # {row: columns of its values, hidden ones left out}
+    for c in cells:
+        if not hidden[c.column]:
+            shown_in_row.setdefault(c.row, set()).add(c.column)
+
+    def lone(c):                    # the only value of its row (a hidden key aside)
+        return shown_in_row.get(c.row, set()) <= {c.column}
+
+    styles = {}
+
+    def style(c):
+        key = _style_key(c)
+        st = styles.get(key)
+        if st is None:
+            st = styles[key] = _cell_style(c)
+        return st
+
     need = {}
-    for row in ws.iter_rows():
-        for c in row:
-            if c.value is None or (c.row, c.column) in covered or (c.row, c.column) in first:
-                continue
-            if isinstance(c.value, str) and _lone(ws, c) \
-                    and not (c.alignment and c.alignment.wrap_text):
-                continue                # a title runs over the empty cells beside it
-            w, _ = _cell_need(c)
-            need[c.column] = max(need.get(c.column, 0.0), w)
+    for c in cells:
+        if (c.row, c.column) in covered or (c.row, c.column) in first:
+            continue
+        st = style(c)
+        if isinstance(c.value, str) and lone(c) and not st[2]:
+            continue                # a title runs over the empty cells beside it
+        w, _ = _need(c.value, st)
+        need[c.column] = max(need.get(c.column, 0.0), w)
     for col, w in need.items():
         letter = get_column_letter(col)
         if letter in fixed or ws.column_dimensions[letter].hidden:
@@ -314,24 +382,35 @@ def fit_columns(ws, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH):
     for letter, w in fixed.items():
         ws.column_dimensions[letter].width = w
     # texts wider than their column wrap
-    for row in ws.iter_rows():
-        for c in row:
-            if not isinstance(c.value, str) or (c.row, c.column) in covered \
-                    or not _col_width(ws, c.column):
+    widths = {}
+
+    def col_width(col):
+        if col not in widths:
+            widths[col] = _col_width(ws, col)
+        return widths[col]
+
+    last = max(ws.max_column, _last_print_col(ws))
+    for c in cells:
+        if not isinstance(c.value, str) or (c.row, c.column) in covered \
+                or not col_width(c.column):
+            continue
+        m = first.get((c.row, c.column))
+        width = sum(col_width(j) for j in (range(m.min_col, m.max_col + 1) if m
+                                           else [c.column]))
+        st = style(c)
+        if st[2]:
+            continue
+        if m is None and lone(c):
+            used = sum(col_width(j) for j in range(c.column, max(last, c.column) + 1))
+            if _need(c.value, st)[0] <= used:
                 continue
-            width = _span_width(ws, c, first)
-            if c.alignment and c.alignment.wrap_text:
-                continue
-            if (c.row, c.column) not in first and _lone(ws, c):
-                if _cell_need(c)[0] <= _used_width(ws, c.column):
-                    continue
-                width = _used_width(ws, c.column)
-                ws.merge_cells(start_row=c.row, start_column=c.column, end_row=c.row,
-                               end_column=max(ws.max_column, c.column))
-            if _cell_need(c)[0] > width:
-                al = copy.copy(c.alignment) if c.alignment else Alignment()
-                c.alignment = Alignment(horizontal=al.horizontal, vertical="top",
-                                        wrap_text=True)
+            width = used
+            ws.merge_cells(start_row=c.row, start_column=c.column, end_row=c.row,
+                           end_column=max(ws.max_column, c.column))
+        if _need(c.value, st)[0] > width:
+            al = copy.copy(c.alignment) if c.alignment else Alignment()
+            c.alignment = Alignment(horizontal=al.horizontal, vertical="top",
+                                    wrap_text=True)
 
 
 def _col_width(ws, col):
@@ -377,15 +456,14 @@ def fit_rows(ws):
     width); other rows keep their height."""
     first, covered = _merged(ws)
     need = {}
-    for row in ws.iter_rows():
-        for c in row:
-            if not (isinstance(c.value, str) and c.alignment and c.alignment.wrap_text) \
-                    or (c.row, c.column) in covered or not _col_width(ws, c.column):
-                continue
-            bold, size = bool(c.font and c.font.b), (c.font.sz if c.font and c.font.sz
-                                                      else 11)
-            lines = wrapped_lines(c.value, _span_width(ws, c, first), bold, size)
-            need[c.row] = max(need.get(c.row, 0.0), lines * LINE_PT * size / 11 + 2)
+    for c in filled_cells(ws):
+        if not (isinstance(c.value, str) and c.alignment and c.alignment.wrap_text) \
+                or (c.row, c.column) in covered or not _col_width(ws, c.column):
+            continue
+        bold, size = bool(c.font and c.font.b), (c.font.sz if c.font and c.font.sz
+                                                  else 11)
+        lines = wrapped_lines(c.value, _span_width(ws, c, first), bold, size)
+        need[c.row] = max(need.get(c.row, 0.0), lines * LINE_PT * size / 11 + 2)
     for r, h in need.items():
         ws.row_dimensions[r].height = round(max(h, 15.0), 1)
 

@@ -6,7 +6,6 @@ import math
 import re
 import subprocess
 import sys
-import time
 import tomllib
 
 import numpy as np
@@ -208,10 +207,17 @@ def test_help_is_fast_and_lists_synth():
                          check=True).stdout.split()
     assert out[0] == "True"
     assert out[2] == "False"            # cmd_synth imports no heavy library at module top
-    t = time.perf_counter()
-    subprocess.run([sys.executable, "-m", "crankdyn", "--help"], capture_output=True,
-                   check=True)
-    assert time.perf_counter() - t < 0.3 + 0.2   # 0.3 s budget plus interpreter start slack
+    # ``python -m crankdyn --help`` as a whole loads none of them either (what kept it
+    # within its 0.3 s budget; a clock here failed on a busy machine, issue #19)
+    code = ("import runpy, sys; sys.argv = ['crankdyn', '--help']\n"
+            "try:\n    runpy.run_module('crankdyn', run_name='__main__')\n"
+            "except SystemExit as e:\n    rc = e.code\n"
+            "print(rc, sorted(m for m in ('numpy', 'pandas', 'matplotlib', 'openpyxl',"
+            " 'scipy') if m in sys.modules), file=sys.stderr)")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                       check=True)
+    assert "synth" in r.stdout
+    assert r.stderr.strip().splitlines()[-1] in ("0 []", "None []"), r.stderr
 
 
 def test_synth_help_mentions_the_modes(capsys):

@@ -99,9 +99,11 @@ def test_bearings_flag_writes_tables_equal_to_the_library(tmp_path, capsys):
                                                          rel=0.05)
 
 
-def test_one_cylinder_spec_with_bearing_tables(tmp_path, capsys):
+def test_one_cylinder_spec_with_bearing_tables(tmp_path, capsys, unrendered_figures):
     """A one-cylinder spec: the [bearings] journal positions and the statistics as the
-    library gives them on the fine grid."""
+    library gives them on the fine grid (the plots built, not drawn: the diesel's and the
+    V8's bearing plots are rendered in test_bearings_flag_writes_tables_equal_to_the_library
+    and the session's shared V8 report)."""
     d = tomllib.loads(example_path("diesel_d240.toml").read_text())
     d["pressure"]["file"] = str(example_path("diesel_d240_indicator.csv"))
     for k in ("cylinders", "firing_order", "cylinder_spacing_mm", "mechanical_efficiency"):

@@ -258,7 +258,10 @@ def test_engine_csvs_equal_the_workbook_and_the_library(run):
                     assert not (isinstance(v, str) and cyr.search(v)), (ws.title, v)
 
 
-def test_terminal_summary(tmp_path, capsys, cli_report):
+def test_terminal_summary(tmp_path, capsys, cli_report, unrendered_figures):
+    """The terminal text of a run with the defaults (petrol, Russian; its plots are not
+    drawn: the session's rendered petrol reports prove those) and of the shared English
+    run."""
     assert run_cli("--example", "-o", tmp_path / "ru") == 0
     text = capsys.readouterr().out             # Russian textbook symbols for ru
     for word in ("pг max", "Mкр.ср", "Rшш max", "χ =", "среднее индикаторное давление"):
@@ -307,7 +310,8 @@ def test_terminal_summary_speaks_the_report_language(cli_report):
     assert not re.search("[\u0400-\u04ff]", rep.out), rep.out
 
 
-def test_step_option_and_spec_path(tmp_path):
+def test_step_option_and_spec_path(tmp_path, unrendered_figures):
+    """--step and a spec's path (the CSV read; the plots are built, not drawn)."""
     spec = example_path("diesel_d240.toml")
     assert run_cli(spec, "-o", tmp_path, "--step", 10, "--lang", "en") == 0
     df = pd.read_csv(tmp_path / "diesel-d240_forces.csv")
@@ -456,9 +460,11 @@ def test_existing_report_survives_bad_input(tmp_path, cli_report):
 
 
 def test_existing_report_survives_a_crash_while_saving(tmp_path, monkeypatch, capsys,
-                                                      cli_report):
+                                                      cli_report, unrendered_figures):
     """A failure in the middle of saving the workbook leaves the old workbook whole and
-    no temporary file behind."""
+    no temporary file behind.  (The failing run's plots are not drawn: a placeholder
+    written over one of the old report's real plots would differ from it byte for
+    byte.)"""
     out = tmp_path / "out"          # a copy of the session's petrol report (--lang ru)
     shutil.copytree(cli_report("engine", "--example", "petrol", "--lang", "ru").folder, out)
     before = _snapshot(out)
@@ -488,7 +494,9 @@ def test_output_may_not_overwrite_an_input(tmp_path, capsys):
     assert (tmp_path / "t_forces.csv").read_text() == before
 
 
-def test_name_is_text_not_formula(tmp_path):
+def test_name_is_text_not_formula(tmp_path, unrendered_figures):
+    """A name starting with ``=`` is a text cell, and a file name (the workbook read; the
+    plots are built, not drawn: test_two_stroke_engine_end_to_end renders this spec's)."""
     spec = tmp_path / "spec.toml"
     spec.write_text(GOOD.replace('name = "t"', 'name = "=1+1"'))
     assert run_cli(spec, "-o", tmp_path / "o") == 0

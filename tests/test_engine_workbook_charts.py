@@ -113,36 +113,50 @@ def test_a_fine_step_is_thinned_on_the_sheets():
     assert _values(wb, total.yVal.numRef.f).max() == whole.summary.M_max_Nm
 
 
-@pytest.mark.slow
-@needs_office
-@pytest.mark.parametrize("lang", ["ru", "en"])
-def test_polar_chart_renders_with_equal_scales(lang, tmp_path):
-    """LibreOffice renders the polar chart with square grid cells (the same step on both
-    axes at the same length): a circle stays a circle."""
+@pytest.fixture(scope="module")
+def polar_pngs(tmp_path_factory):
+    """The first page of each language's polar chart alone on its sheet, as LibreOffice
+    renders it (one start of LibreOffice for both workbooks): lang → (PNG path, chart)."""
     import subprocess
-
-    from PIL import Image
 
     from engine.report import a4_setup, build_workbook, save_workbook
 
+    tmp = tmp_path_factory.mktemp("polar")
     res = _whole().cylinder
-    wb = build_workbook(res, lang)
-    ws = wb.worksheets[4]
-    polar = ws._charts[-1]
-    ws._charts = [polar]
-    polar.anchor = "A3"
-    ws.row_breaks.brk = []
-    for s in list(wb.worksheets):
-        if s is not ws and s.sheet_state == "visible":
-            wb.remove(s)
-    a4_setup(wb)
-    save_workbook(wb, tmp_path / "polar.xlsx")
-    subprocess.run(["soffice", "--headless", "--convert-to", "pdf", "--outdir",
-                    str(tmp_path), str(tmp_path / "polar.xlsx")], check=True,
-                   capture_output=True, timeout=300)
-    subprocess.run(["pdftoppm", "-png", "-r", "100", "-f", "1", "-l", "1",
-                    str(tmp_path / "polar.pdf"), str(tmp_path / "p")], check=True)
-    png = next(tmp_path.glob("p*.png"))
+    charts, books = {}, []
+    for lang in ("ru", "en"):
+        wb = build_workbook(res, lang)
+        ws = wb.worksheets[4]
+        polar = ws._charts[-1]
+        ws._charts = [polar]
+        polar.anchor = "A3"
+        ws.row_breaks.brk = []
+        for s in list(wb.worksheets):
+            if s is not ws and s.sheet_state == "visible":
+                wb.remove(s)
+        a4_setup(wb)
+        save_workbook(wb, tmp / f"polar_{lang}.xlsx")
+        books.append(tmp / f"polar_{lang}.xlsx")
+        charts[lang] = polar
+    subprocess.run(["soffice", "--headless", "--convert-to", "pdf", "--outdir", str(tmp),
+                    *map(str, books)], check=True, capture_output=True, timeout=420)
+    out = {}
+    for lang in ("ru", "en"):
+        subprocess.run(["pdftoppm", "-png", "-r", "100", "-f", "1", "-l", "1",
+                        str(tmp / f"polar_{lang}.pdf"), str(tmp / f"p_{lang}")], check=True)
+        out[lang] = (next(tmp.glob(f"p_{lang}*.png")), charts[lang])
+    return out
+
+
+@pytest.mark.slow
+@needs_office
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_polar_chart_renders_with_equal_scales(lang, polar_pngs):
+    """LibreOffice renders the polar chart with square grid cells (the same step on both
+    axes at the same length): a circle stays a circle."""
+    from PIL import Image
+
+    png, polar = polar_pngs[lang]
     im = np.asarray(Image.open(png).convert("RGB")).astype(int)
     grid = np.abs(im - 135).max(axis=2) <= 12          # LibreOffice's grey grid lines
 

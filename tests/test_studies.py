@@ -79,8 +79,9 @@ def test_linkage_study_gives_the_cli_tables_and_writes_what_it_lists(example, ar
         str(cli), str(out)).splitlines()
 
 
-def test_linkage_study_without_plans_writes_its_plots(tmp_path):
-    """linkage.study alone (no plans): the tables, the workbook and the five plots."""
+def test_linkage_study_without_plans_writes_its_plots(tmp_path, unrendered_figures):
+    """linkage.study alone (no plans): the tables, the workbook and the five plots (built,
+    not drawn: the session's rendered linkage reports prove the images)."""
     from linkage.study import PLOTS, run_study, summary_lines, write_report
 
     report = run_study(example_path("press.toml"), step=5.0)
@@ -96,6 +97,7 @@ def test_linkage_study_without_plans_writes_its_plots(tmp_path):
     assert sorted(p.name for p in again.removed) == sorted(f"crank-press_{p}.png"
                                                            for p in PLOTS)
     assert not list((tmp_path / "o").glob("*.png"))
+    assert unrendered_figures.count("png") == len(PLOTS)        # each plot saved once
 
 
 def test_linkage_summary_in_both_languages_with_plural_forms(tmp_path):
@@ -183,7 +185,10 @@ def test_linkage_study_arguments_are_named_and_renamed_by_the_cli(tmp_path, caps
 @pytest.mark.parametrize("example, lang", [("flywheel_seed.toml", "ru"),
                                            ("press_dynamics.toml", "en")])
 def test_dynamics_study_gives_the_cli_tables_and_writes_what_it_lists(example, lang,
-                                                                      tmp_path, cli_report):
+                                                                      tmp_path, cli_report,
+                                                                      unrendered_figures):
+    """The study layer's tables equal the CLI's, and its report lists what it writes (its
+    plots built, not drawn: the CLI's report, rendered, is the session's shared one)."""
     from dynamics.study import run_study, summary_lines, write_report
 
     # the CLI's report of the example (the session's shared run, read-only)
@@ -199,6 +204,7 @@ def test_dynamics_study_gives_the_cli_tables_and_writes_what_it_lists(example, l
     files = {p.name for p in out.iterdir() if p.name != MANIFEST}
     assert set(written.files) <= files
     assert len(files - set(written.files)) == written.plots * 2      # PNG and SVG
+    assert sorted(unrendered_figures) == ["png"] * written.plots + ["svg"] * written.plots
     assert summary_lines(report, lang, written) == stdout.replace(
         str(cli), str(out)).splitlines()
 

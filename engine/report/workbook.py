@@ -26,7 +26,7 @@ import numpy as np
 
 from crankbase.errors import OutputError, Problem, Text
 from crankbase.texts import OFFERED
-from crankbase.workbook import A4_LANDSCAPE_PRINT_CM, sheet_rows, thinned_note
+from crankbase.workbook import A4_LANDSCAPE_PRINT_CM, filled_cells, sheet_rows, thinned_note
 
 from ..forces import COLUMNS, SUMMARY_QUANTITIES
 from ..spec import EngineSpecError
@@ -572,7 +572,7 @@ def readable_numbers(ws, widths=None, default_width=None, per_column=True):
     def fmt(a):
         return "0" if a >= 1e5 else "0.0" if a >= 1e3 else "0.00" if a >= 1 else "0.0000"
 
-    cells = [c for row in ws.iter_rows() for c in row]
+    cells = filled_cells(ws)
     numbers = [c for c in cells if isinstance(c.value, (int, float))
                and not isinstance(c.value, bool)]
     top, whole = {}, {}
