@@ -141,6 +141,35 @@ def test_a_bad_row_on_the_command_line(tmp_path, capsys, unrendered_figures):
     _check_variant_reports(out, table, summary, pngs, "en")
 
 
+def test_a_report_without_figures(tmp_path, unrendered_figures):
+    """``engine.write_report(..., formats=())``: the tables and the workbook, no figure
+    built or written, and the figures of an earlier run of this engine removed as stale;
+    the tables are those of a report with figures, byte for byte."""
+    from crankbase.output import verify_report
+    from engine.report.summary import written_line
+
+    report = engine.run_study(engine.load(PETROL))
+    full = engine.write_report(report, tmp_path / "full", "en")
+    assert len(full.plots) == 2 * len(PLOT_NAMES + TRAIN_PLOT_NAMES) == \
+        len(unrendered_figures)
+    again = tmp_path / "bare"
+    shutil.copytree(tmp_path / "full", again)                   # an earlier run's files
+    del unrendered_figures[:]
+    bare = engine.write_report(report, again, "en", formats=())
+    assert unrendered_figures == []                             # nothing saved
+    assert bare.plots == () and bare.plot_count == 0 and bare.formats == ()
+    assert sorted(p.name for p in again.iterdir() if not p.name.startswith(".")) == \
+        sorted([p.name for p in full.tables] + [full.workbook.name])  # old figures gone
+    verify_report(again)                                        # its manifest agrees
+    for p in full.tables:
+        assert (again / p.name).read_bytes() == p.read_bytes()
+    line = written_line(bare, "en")
+    assert "plot" not in line and full.workbook.name in line
+    assert "13 plots (PNG, SVG)" in written_line(full, "en")
+    with pytest.raises(SpecError):
+        engine.write_report(report, tmp_path / "x", "en", formats=("png", "png"))
+
+
 def test_variants_from_xlsx_rerun_and_all_good(tmp_path, capsys):
     """Three variants from an .xlsx table, end to end with every plot rendered, written
     by two processes (--jobs 2): all good, the summary in the table's order and equal to
