@@ -346,7 +346,9 @@ def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "s
     lang : {"ru", "en"}, default "ru"
         Language of the workbook and the figures.
     formats : sequence of {"png", "svg", "pdf"}, default ("png", "svg")
-        Formats of the figures.
+        Formats of the figures; empty (``()``): no figure is built or written (the
+        tables and the workbook only, as a check of names or numbers needs; the figures
+        of an earlier run of this engine are removed as stale).
     drawing : bool, default False
         Also the diagrams at the drawing scale, 1:1 PDF on millimetre paper.
     inputs : sequence of path
@@ -379,7 +381,9 @@ def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "s
     from .report.workbook import save_workbook
 
     check_lang(lang)
-    formats = figure_formats(formats)
+    if not isinstance(formats, str):
+        formats = tuple(formats)
+    formats = figure_formats(formats) if formats != () else ()
     out = output_folder(out)
     name, result, whole = report.name, report.cylinder, report.whole
     files = report.file_names
@@ -401,9 +405,11 @@ def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "s
 
     # 1. build everything in memory
     wb = report_workbook(report, lang)
-    figs = figures(result, lang)
-    figs.update(train_figures(whole, lang))
-    if report.bearings is not None:
+    figs = {}
+    if formats:
+        figs.update(figures(result, lang))
+        figs.update(train_figures(whole, lang))
+    if formats and report.bearings is not None:
         from .plots.bearing import bearing_figures
 
         figs.update(bearing_figures(report.bearings.analysis, lang))
@@ -421,7 +427,7 @@ def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "s
             for n, df in report.tables.items():
                 write_csv(df, stage / files[n])
             save_workbook(wb, stage / xlsx.name)
-            for n in report.plot_names:
+            for n in (report.plot_names if formats else ()):
                 save_figure(figs[n], stage / files[n], formats=formats)
             for n, f in pdfs.items():                      # 1:1, vector only
                 save_figure(figs[n], stage / f, formats=("pdf",))
@@ -438,5 +444,6 @@ def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "s
             if path.name not in written and path.exists():
                 path.unlink()
     return ReportFiles(folder=out, tables=tables, workbook=xlsx, plots=plots,
-                       plot_count=len(report.plot_names), formats=formats,
+                       plot_count=len(report.plot_names) if formats else 0,
+                       formats=formats,
                        drawings=drawings, torsion=torsion_files)

@@ -376,12 +376,13 @@ def _one_variant(task) -> VariantOutcome:
 
     from .study import run_study, write_report
 
-    base, v, base_dir, inputs, folder, lang, step, form, bearings, drawing = task
+    base, v, base_dir, inputs, folder, lang, step, form, bearings, drawing, formats = task
     try:
         study = load_variant(base, v, base_dir)
         report = run_study(study, bearings=bearings, step=step, form=form,
                            source=apply_variant(base, v))
-        write_report(report, folder, lang, drawing=drawing, inputs=inputs)
+        write_report(report, folder, lang, formats=formats, drawing=drawing,
+                     inputs=inputs)
         spec = write_variant_spec(base, v, folder, base_dir, step, form, lang, inputs)
     except CrankdynError as exc:
         from crankbase.texts import texts
@@ -399,7 +400,7 @@ def _one_variant(task) -> VariantOutcome:
 
 def run_variants(base, variants, out, lang: str = "ru", step=None, form=None,
                  bearings: bool = False, drawing: bool = False, jobs: int = 1,
-                 progress=None) -> VariantsRun:
+                 progress=None, formats=("png", "svg")) -> VariantsRun:
     """One complete engine report per variant, and the summary table.
 
     Parameters
@@ -421,6 +422,11 @@ def run_variants(base, variants, out, lang: str = "ru", step=None, form=None,
     progress : callable, optional
         Called as ``progress(outcome, total)`` with each :class:`VariantOutcome` as it is
         done (in the order done) and the number of variants.
+    formats : sequence of {"png", "svg", "pdf"}, default ("png", "svg")
+        Formats of each variant's figures (:func:`engine.write_report`); empty
+        (``()``): no figure is built or written, each report has its tables and
+        workbook only (a check of the numbers or the names of many reports need not
+        draw 13 figures for each).
 
     Returns
     -------
@@ -435,11 +441,14 @@ def run_variants(base, variants, out, lang: str = "ru", step=None, form=None,
     OutputError
         A summary file would overwrite an input.
     """
-    from crankbase.output import check_not_input, safe_name
+    from crankbase.output import check_not_input, figure_formats, safe_name
     from crankbase.validation import check_lang
     from crankbase.validation import read_toml
 
     check_lang(lang)
+    if not isinstance(formats, str):
+        formats = tuple(formats)
+    formats = figure_formats(formats) if formats != () else ()
     if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1:
         raise SpecError(Problem("jobs", Text("errors.engine.variants.whole_number",
                                              {"jobs": jobs})))
@@ -460,7 +469,7 @@ def run_variants(base, variants, out, lang: str = "ru", step=None, form=None,
 
     inputs = (base_path, variants_path)
     tasks = [(base_dict, v, base_dir, inputs, out / folder, lang, step, form, bearings,
-              drawing) for folder, v in folders.items()]
+              drawing, formats) for folder, v in folders.items()]
     done = []
     if jobs == 1:
         for task in tasks:

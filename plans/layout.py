@@ -139,6 +139,44 @@ def _seg_hits_box(p1, p2, box, pad=0.3):
                             parallel_tol=1e-9)
 
 
+class _Scores:
+    """The conflicts of a label's box with the placed boxes and the lines, all at once
+    (numpy): ``1000 × (boxes it overlaps, :func:`boxes_overlap`) + (segments that cross
+    it, :func:`_seg_hits_box`)``, the same tests and the same floating-point operations
+    as those functions, one box or segment at a time."""
+
+    def __init__(self, boxes, segments, pad=0.4, seg_pad=0.3, parallel_tol=1e-9):
+        import numpy as np
+
+        self.b = np.array(boxes, float).reshape(-1, 4)
+        seg = np.array(segments, complex).reshape(-1, 2)
+        self.px, self.py = seg[:, 0].real, seg[:, 0].imag
+        self.dx, self.dy = seg[:, 1].real - self.px, seg[:, 1].imag - self.py
+        self.pad, self.seg_pad, self.tol = pad, seg_pad, parallel_tol
+
+    def __call__(self, box) -> int:
+        import numpy as np
+
+        b, pad = self.b, self.pad
+        over = ~((box[2] + pad <= b[:, 0]) | (b[:, 2] + pad <= box[0])
+                 | (box[3] + pad <= b[:, 1]) | (b[:, 3] + pad <= box[1]))
+        g = self.seg_pad
+        x0, y0, x1, y1 = box[0] - g, box[1] - g, box[2] + g, box[3] + g
+        px, py, dx, dy = self.px, self.py, self.dx, self.dy
+        t0 = np.zeros(len(px))
+        t1 = np.ones(len(px))
+        out = np.zeros(len(px), bool)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            for pk, qk in ((-dx, px - x0), (dx, x1 - px), (-dy, py - y0), (dy, y1 - py)):
+                flat = np.abs(pk) <= self.tol
+                out |= flat & (qk < 0)
+                t = qk / pk
+                t0 = np.where(~flat & (pk < 0), np.maximum(t0, t), t0)
+                t1 = np.where(~flat & (pk > 0), np.minimum(t1, t), t1)
+        hits = ~out & (t0 <= t1)
+        return int(over.sum()) * 1000 + int(hits.sum())
+
+
 class _Placer:
     """Greedy placement of labels: the first candidate that overlaps no placed label and
     crosses no line; else the one with the fewest conflicts."""
@@ -149,11 +187,11 @@ class _Placer:
 
     def place(self, candidates, text, height, _far=False):
         best, best_score = None, None
+        scores = _Scores(self.boxes, self.segments)
         for at in candidates:
             t = Text(at, text, height)
             box = text_box(t)
-            score = sum(boxes_overlap(box, b) for b in self.boxes) * 1000
-            score += sum(_seg_hits_box(p1, p2, box) for p1, p2 in self.segments)
+            score = scores(box)
             if score == 0:
                 best = t
                 break

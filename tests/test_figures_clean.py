@@ -191,15 +191,17 @@ def test_nothing_overlaps_nothing_is_cut(example, lang):
     assert not found, "\n".join(found[:60]) + f"\n({len(found)} problems)"
 
 
-@pytest.mark.parametrize("name", [k for k in EXAMPLES if k.startswith("torsion")])
+@pytest.mark.parametrize("example", [k for k in EXAMPLES if k.startswith("torsion")],
+                         indirect=True)
 @pytest.mark.parametrize("lang", LANGS)
-def test_torsion_marks_are_drawn_whole(name, lang):
+def test_torsion_marks_are_drawn_whole(example, lang):
     """Issue #21: the lone marks of the torsion figures (the response's "largest" circle,
     the Campbell diagram's critical speeds) are drawn whole.  On the inline six the
     largest vibration torque lies at the top of the speed range (6500 rpm, its right
-    edge): a mark clipped by the axes showed half a circle there."""
-    make, edge = EXAMPLES[name]
-    figs = make()(lang)
+    edge): a mark clipped by the axes showed half a circle there.  (The torsion study
+    is the module's, computed once for both tests.)"""
+    name, build, edge = example
+    figs = build(lang)
     found = []
     for stem, fig in figs.items():
         found += [f"{name} [{lang}] {stem}: {p}" for p in marker_problems(fig, edge=edge)]

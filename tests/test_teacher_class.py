@@ -28,12 +28,13 @@ RED = ("00FF7C80", "FFFF7C80")
 
 @pytest.fixture(scope="module")
 def petrol_variants(tmp_path_factory):
-    """Two petrol variants written by the variants batch (reports and specs)."""
+    """Two petrol variants written by the variants batch (reports and specs; without
+    figures, ``formats=()``: the tests read the tables, workbooks and specs only)."""
     d = tmp_path_factory.mktemp("variants")
     table = d / "variants.csv"
     table.write_text("variant,engine.bore_mm,engine.speed_rpm,masses.rod_kg_m2\n"
                      "v01,80,5000,140\nv02,82.5,5600,165\n", encoding="utf-8")
-    run = run_variants(PETROL, table, d / "out", "en")
+    run = run_variants(PETROL, table, d / "out", "en", formats=())
     assert [o.ok for o in run.outcomes] == [True, True]
     return table, d / "out"
 
@@ -63,10 +64,14 @@ def test_variant_spec_reproduces_its_report(petrol_variants):
         (out / "v02" / "v02_forces.csv").read_bytes()
 
 
-def test_variant_spec_carries_its_pressure_file_step_and_form(tmp_path):
+def test_variant_spec_carries_its_pressure_file_step_and_form(tmp_path,
+                                                             unrendered_figures):
+    """(The variant's report is written without figures and the CLI's figures are
+    saved unrendered: this test compares tables and specs.)"""
     table = tmp_path / "v.csv"
     table.write_text("variant,engine.speed_rpm\nd1,2000\n", encoding="utf-8")
-    run = run_variants(DIESEL, table, tmp_path / "out", "en", step=15, form="kolchin")
+    run = run_variants(DIESEL, table, tmp_path / "out", "en", step=15, form="kolchin",
+                       formats=())
     folder = tmp_path / "out" / "d1"
     assert run.outcomes[0].spec == folder / "d1.toml"
     raw = tomllib.loads((folder / "d1.toml").read_text(encoding="utf-8"))

@@ -41,13 +41,17 @@ def _variants_table(n, broken_row_index):
 def _check_variant_reports(out, table, summary, pngs, lang):
     """The summary equals the individual reports, variant by variant: the workbook's
     results and inputs, the form asked for, a direct computation of that variant; and
-    ``pngs(variant)`` (the PNG files of its report) are the engine's plots."""
+    ``pngs(variant)`` (the PNG files of its report) are the engine's plots (``pngs``
+    None: a report written with ``formats=()`` has no figure file)."""
     for rec in summary.itertuples(index=False):
         folder = out / rec.variant
         files = sorted(p.name for p in folder.iterdir())
         assert f"{rec.variant}.xlsx" in files and f"{rec.variant}_forces.csv" in files
-        assert sorted(pngs(rec.variant)) == sorted(f"{rec.variant}_{n}.png" for n in
-                                                   PLOT_NAMES + TRAIN_PLOT_NAMES)
+        if pngs is None:
+            assert not [f for f in files if f.endswith((".png", ".svg", ".pdf"))]
+        else:
+            assert sorted(pngs(rec.variant)) == sorted(f"{rec.variant}_{n}.png" for n in
+                                                       PLOT_NAMES + TRAIN_PLOT_NAMES)
         wb = load_workbook(folder / f"{rec.variant}.xlsx", read_only=True)
         rows = {r[0]: r for r in wb.worksheets[2].iter_rows(min_row=4, values_only=True)
                 if r[0]}
@@ -75,55 +79,95 @@ def _check_variant_reports(out, table, summary, pngs, lang):
 
 
 @pytest.mark.slow
-def test_thirty_variants_end_to_end(tmp_path, capsys, monkeypatch):
-    """Thirty variants, one broken, through ``crankdyn engine --variants`` (in this
-    process, --jobs 1): every report, the summary and the errors file are checked.  Two
-    variants' plots are rendered to PNG and SVG; the other 28 build every figure and
-    the file names they ask for are recorded, not rendered: rendering is checked end to end by the three-variant run below (--jobs 2)
-    and by the engine reports of tests/test_engine_cli.py."""
-    import crankbase.output
+def test_thirty_variants_end_to_end(tmp_path):
+    """Thirty variants, one broken, through the library's batch
+    (:func:`engine.variants.run_variants`, one process) with ``formats=()``: every
+    report's tables and workbook are written and named, the summary and the errors file
+    are checked, the bad row is reported by row and key without stopping the others.
+    No figure is built here: a variants run's figures (every plot, PNG and SVG, by name)
+    are proven by the three-variant run below (--jobs 2), the command line's report of
+    a bad row (exit 1, stderr, summary) by :func:`test_a_bad_row_on_the_command_line`."""
+    from engine.variants import run_variants
 
     n, broken = 30, 16
     table = _variants_table(n, broken)
     path = tmp_path / "variants.csv"
     table.to_csv(path, index=False)
     out = tmp_path / "out"
-    rendered = {"V01", "V02"}                       # a Kolchin-form and a seed-form one
-    real_save, asked = crankbase.output.save_figure, {}
-
-    def save_figure(fig, stem, formats=("png", "svg"), **kw):
-        variant = Path(stem).parent.parent.name       # out/<variant>/<staging>/<stem>
-        if variant in rendered:
-            return real_save(fig, stem, formats, **kw)
-        assert fig.axes and tuple(formats) == ("png", "svg")
-        asked.setdefault(variant, []).append(Path(stem).name + ".png")
-        return []
-
-    monkeypatch.setattr(crankbase.output, "save_figure", save_figure)
-    assert main(["engine", str(PETROL), "--variants", str(path), "-o", str(out),
-                 "--lang", "en", "--jobs", "1"]) == 1        # one row failed
-    cap = capsys.readouterr()
+    seen = []
+    done = run_variants(PETROL, path, out, "en", jobs=1, formats=(),
+                        progress=lambda outcome, total: seen.append((outcome, total)))
+    assert len(seen) == n and {total for _, total in seen} == {n}
     bad_row = broken + 2                                     # header is row 1
-    assert f"row {bad_row} (V{broken + 1:02d}): engine.bore_mm: got -5" in cap.err
-    assert f"{n - 1} written" in cap.out and "1 failed" in cap.out
+    assert [o.variant.row for o in done.failures] == [bad_row]
+    assert any(f"row {bad_row} (V{broken + 1:02d}): engine.bore_mm: got -5" in ln
+               for ln in done.failures[0].problems)
+    head = done.summary_lines("en")[0]
+    assert f"{n - 1} written" in head and "1 failed" in head
     summary = pd.read_csv(out / "variants_summary.csv")
     assert len(summary) == n - 1
     assert list(summary["variant"]) == [f"V{i:02d}" for i in range(1, n + 1)
                                         if i != broken + 1]          # the table's order
+    assert [r["variant"] for r in done.records] == list(summary["variant"])
     assert not (out / f"V{broken + 1:02d}").exists()
     errors = pd.read_csv(out / "variants_errors.csv")
     assert errors["row"].tolist() == [bad_row]
-    assert set(asked) | rendered == set(summary["variant"])
+    _check_variant_reports(out, table, summary, None, "en")
+
+
+def test_a_bad_row_on_the_command_line(tmp_path, capsys, unrendered_figures):
+    """``crankdyn engine --variants`` with one good and one broken row (--jobs 1): exit
+    status 1, the bad row named on stderr by row and key, the summary printed, the good
+    variant's report complete (its 13 figures built and saved as PNG and SVG; not
+    rendered: the three-variant run below renders them)."""
+    table = _variants_table(2, 1)
+    path = tmp_path / "variants.csv"
+    table.to_csv(path, index=False)
+    out = tmp_path / "out"
+    assert main(["engine", str(PETROL), "--variants", str(path), "-o", str(out),
+                 "--lang", "en", "--jobs", "1"]) == 1        # one row failed
+    cap = capsys.readouterr()
+    assert "row 3 (V02): engine.bore_mm: got -5" in cap.err
+    assert "1 written" in cap.out and "1 failed" in cap.out
+    assert unrendered_figures == ["png", "svg"] * len(PLOT_NAMES + TRAIN_PLOT_NAMES)
+    summary = pd.read_csv(out / "variants_summary.csv")
+    assert list(summary["variant"]) == ["V01"] and not (out / "V02").exists()
+    assert pd.read_csv(out / "variants_errors.csv")["row"].tolist() == [3]
 
     def pngs(variant):
-        on_disk = [p.name for p in (out / variant).glob("*.png")]
-        if variant in rendered:
-            assert len(list((out / variant).glob("*.svg"))) == len(on_disk)
-            return on_disk
-        assert on_disk == []
-        return asked[variant]
+        assert len(list((out / variant).glob("*.svg"))) == 13
+        return [p.name for p in (out / variant).glob("*.png")]
 
     _check_variant_reports(out, table, summary, pngs, "en")
+
+
+def test_a_report_without_figures(tmp_path, unrendered_figures):
+    """``engine.write_report(..., formats=())``: the tables and the workbook, no figure
+    built or written, and the figures of an earlier run of this engine removed as stale;
+    the tables are those of a report with figures, byte for byte."""
+    from crankbase.output import verify_report
+    from engine.report.summary import written_line
+
+    report = engine.run_study(engine.load(PETROL))
+    full = engine.write_report(report, tmp_path / "full", "en")
+    assert len(full.plots) == 2 * len(PLOT_NAMES + TRAIN_PLOT_NAMES) == \
+        len(unrendered_figures)
+    again = tmp_path / "bare"
+    shutil.copytree(tmp_path / "full", again)                   # an earlier run's files
+    del unrendered_figures[:]
+    bare = engine.write_report(report, again, "en", formats=())
+    assert unrendered_figures == []                             # nothing saved
+    assert bare.plots == () and bare.plot_count == 0 and bare.formats == ()
+    assert sorted(p.name for p in again.iterdir() if not p.name.startswith(".")) == \
+        sorted([p.name for p in full.tables] + [full.workbook.name])  # old figures gone
+    verify_report(again)                                        # its manifest agrees
+    for p in full.tables:
+        assert (again / p.name).read_bytes() == p.read_bytes()
+    line = written_line(bare, "en")
+    assert "plot" not in line and full.workbook.name in line
+    assert "13 plots (PNG, SVG)" in written_line(full, "en")
+    with pytest.raises(SpecError):
+        engine.write_report(report, tmp_path / "x", "en", formats=("png", "png"))
 
 
 def test_variants_from_xlsx_rerun_and_all_good(tmp_path, capsys):

@@ -290,10 +290,12 @@ def test_table2_on_the_page_and_the_downloads_equal_the_cli_files(petrol_page, t
 
 
 def test_an_uploaded_spec_with_its_pressure_file_equals_the_cli(app, tmp_path, cli_report,
-                                                               diesel_upload):
+                                                               diesel_upload,
+                                                               unrendered_figures):
     """The diesel example as a student would upload it (the TOML naming its CSV): same
     CSVs as the CLI on the bundled file; the spec and pressure file downloaded from the
-    page repeat the run from the command line."""
+    page repeat the run from the command line (whose figures are saved unrendered: the
+    CSVs are compared; the shared CLI report and the page's figures are rendered)."""
     c, r = diesel_upload
     pcsv = example_path("diesel_d240_indicator.csv")
     assert r.status_code == 200 and 'id="results"' in r.text, r.text[:3000]
@@ -518,9 +520,12 @@ def test_the_bearing_and_drawing_options_add_their_tables_figures_and_pdfs(app):
 
 
 # ----------------------------------------------------------------------------- linkage page
-def test_the_linkage_page_runs_the_ratchet_like_the_cli(app, tmp_path, cli_report):
+def test_the_linkage_page_runs_the_ratchet_like_the_cli(app, tmp_path, cli_report,
+                                                        unrendered_figures):
     """The ratchet drive with a new crank speed: every CSV byte for byte and the workbook
-    value for value equal to ``crankdyn linkage`` on the downloaded spec."""
+    value for value equal to ``crankdyn linkage`` on the downloaded spec (the CLI's
+    figures saved unrendered: the page's own, drawn in the app's render processes, are
+    checked as PNG)."""
     from crankdyn.cli import main
 
     c = client(app)
@@ -579,7 +584,11 @@ def test_linkage_problems_stand_at_their_fields(app, lang):
 @pytest.mark.parametrize("example,key,value", [("flywheel", "machine.J_red_kgm2", "0.3"),
                                                ("hoist", "dynamics.motor_start_torque_Nm",
                                                 "4500.0")])
-def test_the_dynamics_page_equals_crankdyn_dynamics(app, tmp_path, example, key, value):
+def test_the_dynamics_page_equals_crankdyn_dynamics(app, tmp_path, example, key, value,
+                                                    unrendered_figures):
+    """The page's files equal ``crankdyn dynamics`` on its downloaded spec: CSVs byte for
+    byte, the workbook value for value, the CLI's figures by name (saved unrendered) among
+    the page's, which are PNG (drawn in the app's render processes)."""
     from crankdyn.cli import main
 
     c = client(app)
@@ -627,9 +636,10 @@ def test_a_bad_delta_is_named_at_its_field(app, lang, words):
 
 
 # ----------------------------------------------------------------------------- balance page
-def test_the_balance_page_equals_crankdyn_balance(app, tmp_path):
+def test_the_balance_page_equals_crankdyn_balance(app, tmp_path, unrendered_figures):
     """The textbook's two-plane rotor (example 11-1: plane I 285.60 g·mm at 53.54°) with
-    its second mass moved: the page's CSVs equal ``crankdyn balance`` on its spec."""
+    its second mass moved: the page's CSVs equal ``crankdyn balance`` on its spec (whose
+    figures are saved unrendered)."""
     from crankdyn.cli import main
 
     c = client(app)
@@ -693,10 +703,11 @@ def test_the_pages_of_one_session_keep_their_files_apart(app, petrol_page):
 
 
 # ----------------------------------------------------------------------------- teacher page
-def test_the_teacher_page_runs_a_class_and_zips_every_report(app, tmp_path):
+def test_the_teacher_page_runs_a_class_and_zips_every_report(app, tmp_path, request):
     """Three variants of the petrol engine, one of them bad: the page's progress ends
     with two reports and the bad row named; each report in the zip is what
-    ``crankdyn engine`` writes for the variant's own spec."""
+    ``crankdyn engine`` writes for the variant's own spec (its CSVs; that run's figures
+    are saved unrendered, once the batch, with its real figures, is done)."""
     import time
 
     from crankdyn.cli import main
@@ -709,11 +720,11 @@ def test_the_teacher_page_runs_a_class_and_zips_every_report(app, tmp_path):
         "base": ("base.toml", example_path("petrol_vaz2106.toml").read_bytes(), "text/plain"),
         "variants": ("class.csv", table, "text/csv")})
     assert r.status_code == 200 and "batch-progress" in r.text
-    for _ in range(600):
+    for _ in range(3000):
         html = c.get("/teacher").text
         if 'id="batch-line"' in html or 'id="batch-error"' in html:
             break
-        time.sleep(0.5)
+        time.sleep(0.1)
     line = htmllib.unescape(re.search(r'id="batch-line">([^<]*)<', html).group(1))
     assert "3 variants: 2 written" in line and "1 failed (row 3)" in line
     fails = htmllib.unescape(" ".join(re.findall(r'<li class="problem">([^<]*)</li>', html)))
@@ -731,6 +742,7 @@ def test_the_teacher_page_runs_a_class_and_zips_every_report(app, tmp_path):
             (tmp_path / n).write_bytes(z.read(n))
     assert "bore_mm = 82" in (tmp_path / spec).read_text(encoding="utf-8")
     out = tmp_path / "cli"
+    assert request.getfixturevalue("unrendered_figures") == []
     assert main(["engine", str(tmp_path / spec), "-o", str(out), "--lang", "ru"]) == 0
     for p in out.glob("*.csv"):
         assert z.read(f"v3/{p.name}") == p.read_bytes(), p.name

@@ -146,8 +146,9 @@ def written_line(written, lang: str = "ru") -> str:
     drawing-scale PDFs by name, and the folder."""
     t = texts(lang)
     names = [p.name for p in written.tables] + [written.workbook.name]
-    names.append(t.n("engine.summary.plots", written.plot_count,
-                     formats=", ".join(f.upper() for f in written.formats)))
+    if written.plot_count:                       # none when written with formats=()
+        names.append(t.n("engine.summary.plots", written.plot_count,
+                         formats=", ".join(f.upper() for f in written.formats)))
     names += [p.name for p in written.drawings]
     if getattr(written, "torsion", ()):
         names.append(t.n("torsion.summary.files", len(written.torsion)))
