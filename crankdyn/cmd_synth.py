@@ -91,11 +91,11 @@ def _as_options(exc):
 
 def run(args) -> int:
     from crankbase.errors import SpecError
-    from linkage.synthesis_study import (OPTIONS, check_inputs, run_study, study_arguments,
+    from linkage.synthesis_study import (FLAGS, check_inputs, option, run_study, study_arguments,
                                          summary_lines, write_report)
 
     # the library's one check of the inputs (the synthesis page's too), named as options
-    inputs, _mode = check_inputs(_values(args), {**OPTIONS, "mode": "options"})
+    inputs, _mode = check_inputs(_values(args), {**{k: option(k) for k in FLAGS}, "mode": "options"})
     # compute everything first (a problem leaves the output untouched)
     try:
         report = run_study(**study_arguments(inputs), plots=not args.no_plots)

@@ -30,7 +30,7 @@ from crankbase.schema import Key, Schema, Table
 
 __all__ = ["SynthesisReport", "WrittenReport", "run_study", "write_report", "summary_lines",
            "MODES", "INPUTS", "SCHEMA", "check_inputs", "inputs_from_spec", "study_arguments",
-           "command_line", "OPTIONS"]
+           "command_line", "FLAGS", "option"]
 
 #: The design task by the lengths and angle given.
 MODES = {
@@ -43,7 +43,7 @@ MODES = {
 # ----------------------------------------------------------------------------- the inputs
 #: The inputs of a synthesis, declared once (:mod:`crankbase.schema`; words in the
 #: ``spec`` catalogue under ``spec.synth.<key>``): the synthesis page's form and the
-#: options of ``crankdyn synth`` (:data:`OPTIONS`), both checked by :func:`check_inputs`.
+#: options of ``crankdyn synth`` (:data:`FLAGS`), both checked by :func:`check_inputs`.
 INPUTS = Table("synth", (
     Key("phi0_deg", gt=0, lt=180, unit="deg", default=30.0, symbol=True),
     Key("l1", gt=0, symbol=True),
@@ -59,10 +59,17 @@ INPUTS = Table("synth", (
 #: The inputs as a spec (``[synth]``: the synthesis page's upload and its spec download).
 SCHEMA = Schema("synth", (INPUTS,))
 
-#: Each input's option of ``crankdyn synth``.
-OPTIONS = {"phi0_deg": "--phi0", "l1": "--l1", "l2": "--l2", "l3": "--l3",
-           "mu_min_deg": "--mu-min", "l1_step": "--l1-step", "ground_m": "--ground",
-           "omega_rad_s": "--omega", "name": "--name"}
+#: Each input's flag on ``crankdyn synth``'s command line, without its dashes (the CLI
+#: names a problem's input by it, :func:`command_line` writes it): declared here, beside
+#: the inputs, so the command line and the synthesis page's "repeat it" line agree.
+FLAGS = {"phi0_deg": "phi0", "l1": "l1", "l2": "l2", "l3": "l3", "mu_min_deg": "mu-min",
+         "l1_step": "l1-step", "ground_m": "ground", "omega_rad_s": "omega", "name": "name"}
+
+
+def option(key: str) -> str:
+    """The command-line option of input ``key`` (``"mu_min_deg"`` → ``--mu-min``), or of
+    a flag every subcommand shares (``"lang"`` → ``--lang``)."""
+    return "--" + FLAGS.get(key, key)
 
 #: ``(test, what is valid)`` of each number (the words in ``errors.po``).
 _VALID = {"phi0_deg": (lambda x: 0 < x < 180, "errors.cli.synth.phi0"),
@@ -120,7 +127,7 @@ def check_inputs(values: dict, names: dict | None = None) -> tuple[dict, str]:
         its text as typed, or None (not given; ``phi0_deg`` then 30°).
     names : dict, optional
         How the problems name each input (default: its key; ``crankdyn synth`` gives
-        :data:`OPTIONS`, a form its fields); ``"mode"`` names a wrong choice of the
+        :func:`option`, a form its fields); ``"mode"`` names a wrong choice of the
         design task (default ``"mode"``).
 
     Returns
@@ -142,8 +149,8 @@ def check_inputs(values: dict, names: dict | None = None) -> tuple[dict, str]:
     >>> check_inputs({"l2": "0.8", "mu_min_deg": 40})[1]
     'mu_min'
     """
-    names = {**{k: k for k in OPTIONS}, "mode": "mode", **(names or {})}
-    unknown = set(values) - set(OPTIONS)
+    names = {**{k: k for k in FLAGS}, "mode": "mode", **(names or {})}
+    unknown = set(values) - set(FLAGS)
     if unknown:
         raise ValueError(f"check_inputs: unknown inputs {sorted(unknown)}")
     given = {k: v for k, v in values.items() if v is not None}
@@ -197,8 +204,8 @@ def inputs_from_spec(data: dict) -> tuple[dict, str]:
     r.top(data, SCHEMA)
     raw = r.sub(data, INPUTS)
     r.raise_if_any()
-    values = {k: raw.get(k) for k in OPTIONS}
-    return check_inputs(values, {**{k: f"synth.{k}" for k in OPTIONS}, "mode": "synth"})
+    values = {k: raw.get(k) for k in FLAGS}
+    return check_inputs(values, {**{k: f"synth.{k}" for k in FLAGS}, "mode": "synth"})
 
 
 def study_arguments(inputs: dict) -> dict:
@@ -214,13 +221,13 @@ def command_line(inputs: dict, lang="ru", output="OUT") -> str:
     import shlex
 
     parts = ["crankdyn", "synth"]
-    for key, option in OPTIONS.items():
+    for key in FLAGS:
         v = inputs.get(key)
         if v is None:
             continue
-        parts += [option, v if isinstance(v, str) else f"{v!r}".removesuffix(".0")
+        parts += [option(key), v if isinstance(v, str) else f"{v!r}".removesuffix(".0")
                   if float(v).is_integer() else repr(v)]
-    parts += ["--lang", lang, "-o", output]
+    parts += [option("lang"), lang, "-o", output]
     return " ".join(shlex.quote(p) for p in parts)
 
 

@@ -217,7 +217,7 @@ def test_check_inputs_reads_texts_and_numbers_alike_and_names_each_problem():
     """The library's check of ``crankdyn synth`` and the page: a text and a number give
     the same value; each problem is named as the caller names the input."""
     from crankbase.errors import SpecError
-    from linkage.synthesis_study import OPTIONS, check_inputs, command_line
+    from linkage.synthesis_study import FLAGS, check_inputs, command_line, option
 
     a, mode = check_inputs({"l2": "0.8", "mu_min_deg": "40", "ground_m": "0.5"})
     b, _ = check_inputs({"l2": 0.8, "mu_min_deg": 40, "ground_m": 0.5})
@@ -229,7 +229,7 @@ def test_check_inputs_reads_texts_and_numbers_alike_and_names_each_problem():
                                      "--ground 0.5 --lang en -o OUT")
     with pytest.raises(SpecError) as e:
         check_inputs({"phi0_deg": "180", "l1": 0.1, "l3": "-1", "omega_rad_s": 0,
-                      "l1_step": "0.01"}, {**OPTIONS, "mode": "options"})
+                      "l1_step": "0.01"}, {**{k: option(k) for k in FLAGS}, "mode": "options"})
     lines = e.value.lines("en")
     keys = [ln.split(": ")[0] for ln in lines]
     assert keys == ["--phi0", "--l3", "--omega", "options", "--l1-step", "--omega"], lines
