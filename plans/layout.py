@@ -166,7 +166,7 @@ class _Scores:
         t0 = np.zeros(len(px))
         t1 = np.ones(len(px))
         out = np.zeros(len(px), bool)
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # flat ones masked
             for pk, qk in ((-dx, px - x0), (dx, x1 - px), (-dy, py - y0), (dy, y1 - py)):
                 flat = np.abs(pk) <= self.tol
                 out |= flat & (qk < 0)
