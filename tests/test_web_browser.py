@@ -94,6 +94,21 @@ def _by_id(driver, id_, timeout=60):
     return _wait(driver, EC.presence_of_element_located((By.ID, id_)), timeout)
 
 
+def _settled_text(driver, id_, text, timeout=60):
+    """Wait until element ``id_`` of the page now shown holds ``text`` (found anew at each
+    poll: the page that held it before the submit may still be on screen, and its element
+    goes stale when the answer arrives); the caller then asserts the text, so a wrong one
+    fails with what the page says."""
+    from selenium.common.exceptions import TimeoutException
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.support import expected_conditions as EC
+
+    try:
+        _wait(driver, EC.text_to_be_present_in_element((By.ID, id_), text), timeout)
+    except TimeoutException:
+        pass
+
+
 def _images_loaded(driver):
     return driver.execute_script(
         "return [...document.images].every(i => i.complete && i.naturalWidth > 0)")
@@ -374,7 +389,8 @@ def test_the_teacher_s_check_of_a_workbook_in_the_browser(server, browser, tmp_p
     d.find_element(By.ID, "check-spec").send_keys(str(example_path("petrol_vaz2106.toml")))
     d.find_element(By.ID, "check-student").send_keys(str(student))
     d.find_element(By.ID, "check-submit").click()
-    assert _by_id(d, "check-status").text == status
+    _settled_text(d, "check-status", status)
+    assert d.find_element(By.ID, "check-status").text == status
     verdict = d.find_element(By.ID, "check-verdict").text.splitlines()
     assert verdict[0].startswith("ivanov.xlsx")
     (t_line,) = [ln.split() for ln in verdict if ln.split()[:1] == ["T_N"]]
