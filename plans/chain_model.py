@@ -43,6 +43,7 @@ References
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -52,7 +53,7 @@ from linkage.chain_lever import zhukovsky
 
 from .errors import PlanError, Problem, Text
 from .model import (LEVER_LONGEST_MM, MAX_PLAN_MM, Lever, LeverForce, Plan, PositionPlans,
-                    Vector, balancing_force, position_rows, round_scale)
+                    Vector, balancing_force, close_lever, position_rows, round_scale)
 
 __all__ = ["build_chain_plans", "CHAIN_PLAN_KINDS"]
 
@@ -602,24 +603,11 @@ def _lever(result, zl, P: _Position, vplan: Plan, scale=None) -> Lever:
     d = mech.driver
     zO, zA = P.point(d.pivot)[0], P.point(d.joint)[0]
     vA = P.point(d.joint)[1]
-    e2 = (zA - zO) / abs(zA - zO)                      # along OA
-    at_a = rot * vA / mu
-    total = sum(fc.moment_Nmm for fc in forces)
-    Fb = -total / g.cross(at_a, 1j * e2) + 0.0
-    M_lever = Fb * d.length
-    M_kin = P.f(result.reactions.M_drive)
-    F_kin = (balancing_force(M_kin, zA - zO) / (1j * e2)).real + 0.0
-    if M_kin != 0:
-        diff = 100.0 * (M_lever - M_kin) / abs(M_kin)
-    else:
-        diff = 0.0 if M_lever == 0 else math.copysign(math.inf, M_lever)
-    points = {k: rot * z for k, z in vplan.points.items()}
-    segments = [(v.name, rot * v.start, rot * v.end, v.label_ru, v.label_en)
-                for v in vplan.vectors]
-    if scale is None:
-        scale = _lever_scale(forces, at_a, Fb * 1j * e2, points)
-    return Lever(forces, float(Fb), at_a, 1j * e2, abs(vA) / mu, float(M_lever), M_kin,
-                 float(diff), points, segments, scale, F_kin)
+    lever = close_lever(forces, vplan, zA - zO, vA, d.length, P.f(result.reactions.M_drive),
+                        scale, round_scale_of=_lever_scale)
+    return replace(lever, balancing_force_N=float(lever.balancing_force_N),
+                   M_lever_Nm=float(lever.M_lever_Nm),
+                   difference_percent=float(lever.difference_percent))
 
 
 def build_chain_plans(result, positions=None, *, scales=None):

@@ -698,17 +698,31 @@ def _lever(spec, K, F, i, vplan: Plan, scale=None):
             p1, p2 = ends[lname]
             add(f"{name}_{p2}", f"F({lru})", f"F({len_})", p2, second.v, f)
             add(f"{name}_{p1}", f"F({lru})", f"F({len_})", p1, first.v, -f)
-    # Fур at a, perpendicular to OA: its moment on the lever, Fур·(a × i·e2), balances
-    # the sum of the loads' moments about the pole
     vA, zA = _c(K, i, "A", "v"), _c(K, i, "A", "")
+    return close_lever(forces, vplan, zA, vA, spec.crank, _row(F, i, "M_drive_Nm"), scale)
+
+
+def close_lever(forces, vplan: Plan, zA, vA, crank_length, M_kin, scale=None,
+                round_scale_of=None) -> Lever:
+    """Close Zhukovsky's lever of one position: the balancing force Fур at the crank
+    pin's point a of the velocity plan turned 90° clockwise (``−i·vA/μV`` mm), ⟂ OA, whose
+    moment about the pole, Fур·(a × i·e2), balances the loads' moments (``forces``:
+    :class:`LeverForce`, each ``moment_Nmm`` about the pole); Mур = Fур·lOA [N·m, + ccw],
+    compared with the kinetostatic ``M_kin`` (its difference in % of |M_kin|); the plan's
+    points and vectors turned onto the lever.  ``zA`` is the crank pin relative to the
+    crank's pivot O [m].  The force scale: ``scale`` [N/mm] if given, else
+    ``round_scale_of(forces, a, Fур, points)`` if given, else the textbook's round scale of the largest
+    force (:func:`round_scale`, :data:`LEVER_LONGEST_MM`).  One construction for the
+    four-bar (:func:`build_plans`) and any chain (:mod:`plans.chain_model`)."""
+    mu = vplan.scale
+    rot = -1j
     e2 = zA / abs(zA)                               # along OA
     at_a = rot * vA / mu
     total = sum(fc.moment_Nmm for fc in forces)
     arm_a = g.cross(at_a, 1j * e2)                  # signed, |arm| = pa [mm]
     Fb = -total / arm_a + 0.0                       # + 0.0: no −0.0 without loads
-    M_lever = Fb * spec.crank                       # Mур = Fур·lOA, + ccw
+    M_lever = Fb * crank_length                     # Mур = Fур·lOA, + ccw
     pa = abs(vA) / mu
-    M_kin = _row(F, i, "M_drive_Nm")
     F_kin_N = (balancing_force(M_kin, zA) / (1j * e2)).real + 0.0
     if M_kin != 0:
         diff = 100.0 * (M_lever - M_kin) / abs(M_kin)
@@ -717,8 +731,10 @@ def _lever(spec, K, F, i, vplan: Plan, scale=None):
     points = {k: rot * z for k, z in vplan.points.items()}
     segments = [(v.name, rot * v.start, rot * v.end, v.label_ru, v.label_en)
                 for v in vplan.vectors]
-    # the lever's force scale: the textbook's round scale of its largest force
+    if scale is None and round_scale_of is not None:
+        scale = round_scale_of(forces, at_a, Fb * 1j * e2, points)
     if scale is None:
+        # the lever's force scale: the textbook's round scale of its largest force
         big = max([abs(fc.force) for fc in forces] + [abs(Fb)])
         scale = round_scale(big or 1.0, LEVER_LONGEST_MM)
     return Lever(forces, Fb, at_a, 1j * e2, pa, M_lever, M_kin, diff, points, segments,
