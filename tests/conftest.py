@@ -235,3 +235,23 @@ def petrol_at_4000(tmp_path_factory, cli_report):
         os.chdir(here)
     assert rep.rc == 0, rep.err
     return spec, rep
+
+
+# --------------------------------------------------------------------------- the web app
+#: The upload limit of the tests' app (big enough for the teacher's workbooks; the limit's
+#: message is checked in tests/test_web.py with a bigger upload).
+WEB_UPLOAD_LIMIT = 1_500_000
+
+
+@pytest.fixture(scope="session")
+def web_app(tmp_path_factory):
+    """One app (``web.create_app``, two render processes) for every web test module a
+    worker runs: each module built its own before, and each app's render processes import
+    the whole library.  ``app.root`` is its sessions' folder.  Each module's autouse
+    fixture drains the renders its tests asked for (``app.app.state.render.drain``)."""
+    import web
+
+    root = tmp_path_factory.mktemp("webroot")
+    a = web.create_app(root=root, upload_limit=WEB_UPLOAD_LIMIT, workers=2)
+    a.root = root
+    return a

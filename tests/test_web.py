@@ -27,13 +27,9 @@ ROOT = Path(__file__).resolve().parent.parent
 
 
 @pytest.fixture(scope="module")
-def app(tmp_path_factory):
-    import web
-
-    root = tmp_path_factory.mktemp("webroot")
-    a = web.create_app(root=root, upload_limit=300_000, workers=2)
-    a.root = root
-    return a
+def app(web_app):
+    """The session's app (tests/conftest.py ``web_app``)."""
+    return web_app
 
 
 @pytest.fixture(autouse=True)
@@ -368,9 +364,9 @@ def test_a_forged_session_id_gets_a_new_session_and_no_path_is_used(app):
 
 
 def test_an_upload_over_the_limit_gets_a_clear_message(app):
-    for lang, words in (("en", "larger than the limit of 0.3 MB"), ("ru", "больше предела 0.3 МБ")):
+    for lang, words in (("en", "larger than the limit of 1.5 MB"), ("ru", "больше предела 1.5 МБ")):
         c = client(app, lang)
-        r = c.post("/engine/upload", files={"spec": ("s.toml", b"#" * 400_000, "text/plain")})
+        r = c.post("/engine/upload", files={"spec": ("s.toml", b"#" * 1_600_000, "text/plain")})
         assert r.status_code == 413 and words in r.text
         assert c.get("/engine").status_code == 200             # the server goes on
 

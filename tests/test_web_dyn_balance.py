@@ -26,11 +26,9 @@ CYRILLIC = re.compile("[А-Яа-яЁё]")
 
 
 @pytest.fixture(scope="module")
-def app(tmp_path_factory):
-    import web
-
-    root = tmp_path_factory.mktemp("webroot")
-    return web.create_app(root=root, upload_limit=300_000, workers=2)
+def app(web_app):
+    """The session's app (tests/conftest.py ``web_app``)."""
+    return web_app
 
 
 @pytest.fixture(autouse=True)

@@ -23,13 +23,9 @@ from test_web import page_table as raw_table  # noqa: E402
 
 
 @pytest.fixture(scope="module")
-def app(tmp_path_factory):
-    import web
-
-    root = tmp_path_factory.mktemp("webroot_synth")
-    a = web.create_app(root=root, upload_limit=300_000, workers=2)
-    a.root = root
-    return a
+def app(web_app):
+    """The session's app (tests/conftest.py ``web_app``)."""
+    return web_app
 
 
 @pytest.fixture(autouse=True)

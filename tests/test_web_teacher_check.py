@@ -29,13 +29,9 @@ TORSION = example_path("torsion_inline6.toml")
 
 
 @pytest.fixture(scope="module")
-def app(tmp_path_factory):
-    import web
-
-    root = tmp_path_factory.mktemp("webroot")
-    a = web.create_app(root=root, upload_limit=1_500_000, workers=2)
-    a.root = root
-    return a
+def app(web_app):
+    """The session's app (tests/conftest.py ``web_app``)."""
+    return web_app
 
 
 @pytest.fixture(autouse=True)
