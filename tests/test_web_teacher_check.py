@@ -230,6 +230,126 @@ def test_bad_files_are_named_next_to_their_fields(app, petrol):
     assert folder.is_dir() and not list(folder.iterdir())
 
 
+# ----------------------------------------------------------------------------- a class
+@pytest.fixture(scope="module")
+def class_inputs(tmp_path_factory):
+    """Two petrol variants (``run_variants(..., formats=())``) and a class of two: Ivanov's
+    workbook of v01 as written (right), Petrov's forces CSV of v02 with T at 30° × 1.3."""
+    import pandas as pd
+
+    from engine.variants import run_variants
+
+    d = tmp_path_factory.mktemp("class")
+    table = d / "variants.csv"
+    table.write_text("variant,engine.bore_mm,engine.speed_rpm\nv01,80,5000\nv02,82.5,5600\n",
+                     encoding="utf-8")
+    run = run_variants(PETROL, table, d / "out", "en", formats=())
+    assert [o.ok for o in run.outcomes] == [True, True]
+    students = d / "students"
+    students.mkdir()
+    shutil.copyfile(d / "out" / "v01" / "v01.xlsx", students / "ivanov_v01.xlsx")
+    df = pd.read_csv(d / "out" / "v02" / "v02_forces.csv")
+    row = int(df.index[df["alpha_deg"] == 30][0])
+    assert abs(df.loc[row, "T_N"]) > 0.05 * df["T_N"].abs().max()
+    df.loc[row, "T_N"] *= 1.3
+    df.to_csv(students / "petrov_v02.csv", index=False)
+    return table, students
+
+
+def post_class(c, base, variants, students, pressure=None, **fields):
+    """Post the class form: ``base``, ``variants``, ``pressure`` are ``(name, bytes)``,
+    ``students`` a list of them."""
+    files = [("base", (base[0], base[1], "application/toml")),
+             ("variants", (variants[0], variants[1], "text/csv"))]
+    files += [("students", (n, b, "application/octet-stream")) for n, b in students]
+    if pressure is not None:
+        files.append(("pressure", (pressure[0], pressure[1], "text/csv")))
+    r = c.post("/teacher/class", files=files, data=fields)
+    assert r.status_code == 200, r.text[:2000]
+    return r.text
+
+
+def class_problems(html, name):
+    return [htmllib.unescape(m) for m in
+            re.findall(rf'<p class="problem" id="err-class-{name}(?:-\d+)?">([^<]*)</p>', html)]
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_a_class_check_equals_the_library_s(app, class_inputs, tmp_path, lang):
+    """The page's class_check.csv is what engine.variants.check_class writes for the same
+    inputs, byte for byte; Petrov's changed cell flags him (1 cell, 1 column), Ivanov is
+    right; the zip holds each student's check.csv."""
+    import io
+    import zipfile
+
+    from engine.variants import check_class
+
+    table, students = class_inputs
+    done = check_class(PETROL, table, students, tmp_path / "lib", lang)
+    recs = {r["student"]: r for r in done.records(lang)}
+    assert recs["petrov_v02.csv"]["cells_wrong"] == 1 and \
+        recs["petrov_v02.csv"]["columns_wrong"] == 1
+    assert recs["ivanov_v01.xlsx"]["cells_wrong"] == 0 and not done.ok
+    c = client(app, lang)
+    html = post_class(c, ("my base.toml", PETROL.read_bytes()),
+                      ("variants.csv", table.read_bytes()),
+                      [(p.name, p.read_bytes()) for p in sorted(students.iterdir())])
+    assert 'id="class-status" class="problem"' in html, html[-3000:]
+    url = re.search(r'href="(/teacher/class/\d+/class_check.csv)"', html).group(1)
+    assert c.get(url).content == (tmp_path / "lib" / "class_check.csv").read_bytes()
+    head, rows = page_table(html, "class-table")
+    text = (tmp_path / "lib" / "class_check.csv").read_text(encoding="utf-8").splitlines()
+    from crankbase.texts import texts
+
+    tx = texts(lang)
+    assert head == [tx(f"check.class.column.{k}") for k in text[0].split(",")]
+    assert head[0] == {"en": "student", "ru": "студент"}[lang] and len(rows) == 2
+    by = {r[0]: r for r in rows}
+    assert by["petrov_v02.csv"][1:4] == ["v02", "1", "1"]
+    assert by["ivanov_v01.xlsx"][1:4] == ["v01", "0", "0"]
+    assert by["petrov_v02.csv"][4] == recs["petrov_v02.csv"]["verdict"] != \
+        by["ivanov_v01.xlsx"][4]
+    lines = htmllib.unescape(re.search(r'<pre id="class-verdict">(.*?)</pre>', html,
+                                       re.S).group(1))
+    assert str(app.root) not in html and "class_check.csv" in lines
+    if lang == "ru":
+        assert "ошибки" in html and not re.search(r"\b(wrong|right)\b", lines)
+    else:
+        assert "1 student is not right" in html
+    z = zipfile.ZipFile(io.BytesIO(c.get(url.replace("class_check.csv",
+                                                     "class_check.zip")).content))
+    names = set(z.namelist())
+    assert {"class_check.csv", "class_check.xlsx", "petrov_v02/check.csv",
+            "ivanov_v01/check.csv", "ivanov_v01/ivanov_v01_checked.xlsx"} <= names, names
+    assert z.read("petrov_v02/check.csv") == \
+        (tmp_path / "lib" / "petrov_v02" / "check.csv").read_bytes()
+    assert c.get(url.replace("class_check.csv", "class_check.xlsx")).content[:2] == b"PK"
+
+
+@pytest.mark.parametrize("lang,words", [
+    ("en", "not a plain file name of a workbook (.xlsx, .xlsm) or a CSV"),
+    ("ru", "не простое имя файла книги (.xlsx, .xlsm) или CSV")])
+def test_a_bad_student_file_is_named_at_its_field(app, class_inputs, lang, words):
+    table, students = class_inputs
+    good = [(p.name, p.read_bytes()) for p in sorted(students.iterdir())]
+    c = client(app, lang)
+    html = post_class(c, ("b.toml", PETROL.read_bytes()), ("v.csv", table.read_bytes()),
+                      good + [("notes.txt", b"x"), ("../../etc/x.csv", b"alpha_deg\n1\n")])
+    assert class_problems(html, "students") == [f"notes.txt: {words}",
+                                                f"../../etc/x.csv: {words}"]
+    assert 'id="class-result"' not in html
+    html = post_class(c, ("b.toml", PETROL.read_bytes()), ("v.csv", b"variant\n"), good)
+    assert class_problems(html, "variants") and 'id="class-result"' not in html
+    html = post_class(c, ("b.toml", PETROL.read_bytes()), ("v.csv", table.read_bytes()),
+                      good, rtol="-1")
+    assert class_problems(html, "rtol")
+    r = c.post("/teacher/class", files={"base": ("b.toml", PETROL.read_bytes(), "text/plain")})
+    assert class_problems(r.text, "students") and class_problems(r.text, "variants")
+    # a failed check leaves no folder of it behind
+    folder = app.app.state.store.get(c.cookies["crankdyn_session"]).folder
+    assert folder.is_dir() and not list(folder.iterdir())
+
+
 # ----------------------------------------------------------------------------- torsion
 @pytest.fixture(scope="module")
 def torsion_page(app):

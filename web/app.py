@@ -182,9 +182,11 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         return finish(HTMLResponse(_page_html(t("web.error.title"), message, lang),
                                    status_code=status), session, lang)
 
-    def read_form(request):
-        """The posted form (``async with``: its uploaded files are closed after)."""
-        return request.form(max_files=4, max_fields=400, max_part_size=upload_limit)
+    def read_form(request, max_files=4):
+        """The posted form (``async with``: its uploaded files are closed after); at most
+        ``max_files`` files (the class check: a file per student)."""
+        return request.form(max_files=max_files, max_fields=400,
+                            max_part_size=upload_limit)
 
     async def home(request):
         return RedirectResponse("/engine", status_code=307)
@@ -457,7 +459,9 @@ def _teacher_routes(*, templates, store, pool, batches, upload_limit, lang_of, s
         ctx = dict(t=t, lang=lang, page=_Teacher, kinds=KINDS, problems=st.problems,
                    upload_mb=upload_limit / 1e6, batch=None, max_variants=tp.MAX_VARIANTS,
                    check=st.check, check_errors=st.check_problems,
-                   check_values=st.check_values)
+                   check_values=st.check_values, klass=st.class_run,
+                   class_errors=st.class_problems, class_values=st.class_values,
+                   class_files=tp.CLASS_FILES)
         if b is not None:
             info = dict(number=b.number, done=b.done, total=b.total, running=True)
             if b.future.done():
@@ -548,47 +552,57 @@ def _teacher_routes(*, templates, store, pool, batches, upload_limit, lang_of, s
             return Response(texts(lang)("web.file.gone"), status_code=404)
         return FileResponse(path, filename=name)
 
-    async def check(request):
-        """One student's work checked (``crankdyn check SPEC STUDENT``)."""
+    async def form_check(request, *, singles, multiple, typed, required, folder_name,
+                         attrs, job, anchor, field_of_failure, max_files=4):
+        """A check form posted (one student's, a class's): the uploads read (``singles``
+        one file each, ``multiple`` a list), ``typed`` values kept for the form, the
+        ``required`` fields named when empty, ``job(folder, number, *uploads, *values,
+        lang)`` run in the pool; its :class:`~web.teacher_page.CheckProblem` shown at its
+        fields, its result kept in the state's ``attrs`` = (result, problems, values)."""
         lang = lang_of(request)
         session = session_of(request)
         st = state_of(session)
         up, values = {}, {}
-        async with read_form(request) as f:
-            for key in ("spec", "pressure", "student"):
+        async with read_form(request, max_files) as f:
+            for key in singles:
                 item = f.get(key)
                 if hasattr(item, "read") and item.filename:
                     up[key] = (item.filename, await item.read())
-            for key in ("rtol", "atol", "map"):
+            for key in multiple:
+                items = [(i.filename, await i.read()) for i in f.getlist(key)
+                         if hasattr(i, "read") and i.filename]
+                if items:
+                    up[key] = items
+            for key in typed:
                 v = f.get(key)
                 values[key] = v if isinstance(v, str) else ""
         t = texts(lang)
-        back = finish(RedirectResponse("/teacher#check", status_code=303), session, lang)
-        missing = {k: [t("web.check.choose")] for k in ("spec", "student") if k not in up}
+        result_attr, problems_attr, values_attr = attrs
+        back = finish(RedirectResponse(f"/teacher#{anchor}", status_code=303), session, lang)
+        missing = {k: [t("web.check.choose")] for k in required if k not in up}
         with st.lock:
-            st.check_values = values
+            setattr(st, values_attr, values)
         if missing:
             with st.lock:
-                st.check_problems = missing
+                setattr(st, problems_attr, missing)
             return back
         with st.lock:
             st.runs += 1
             number = st.runs
-        folder = session.folder / f"check-{number}"
+        folder = session.folder / f"{folder_name}-{number}"
+        args = [up.get(k) for k in (*singles, *multiple)] + [values[k] for k in typed]
         try:
-            run = await pool.run(tp.check_work, folder, number, up["spec"], up.get("pressure"),
-                                 up["student"], values["rtol"], values["atol"],
-                                 values["map"], lang)
+            run = await pool.run(job, folder, number, *args, lang)
         except tp.CheckProblem as exc:
             shutil.rmtree(folder, ignore_errors=True)
             with st.lock:
-                st.check_problems = exc.lines(lang)
+                setattr(st, problems_attr, exc.lines(lang))
             return back
         except CrankdynError as exc:
             shutil.rmtree(folder, ignore_errors=True)
             with st.lock:
-                st.check_problems = {"student": [t("web.run.failed",
-                                                   reason="; ".join(exc.lines(lang)))]}
+                setattr(st, problems_attr, {field_of_failure: [t(
+                    "web.run.failed", reason="; ".join(exc.lines(lang)))]})
             return back
         except Busy:
             shutil.rmtree(folder, ignore_errors=True)
@@ -597,15 +611,34 @@ def _teacher_routes(*, templates, store, pool, batches, upload_limit, lang_of, s
             return error_page(request, session, lang, t("web.run.timeout", s=pool.timeout),
                               504)
         except Exception as exc:          # a bug in a job: this session's error only
-            log.exception("teacher check failed")
+            log.exception("teacher %s failed", folder_name)
             shutil.rmtree(folder, ignore_errors=True)
             return error_page(request, session, lang, t("web.run.crashed",
                                                         what=type(exc).__name__), 500)
         with st.lock:
-            old, st.check, st.check_problems = st.check, run, {}
+            old = getattr(st, result_attr)
+            setattr(st, result_attr, run)
+            setattr(st, problems_attr, {})
         if old is not None:
             shutil.rmtree(old.folder, ignore_errors=True)
         return back
+
+    async def check(request):
+        """One student's work checked (``crankdyn check SPEC STUDENT``)."""
+        return await form_check(
+            request, singles=("spec", "pressure", "student"), multiple=(),
+            typed=("rtol", "atol", "map"), required=("spec", "student"),
+            folder_name="check", attrs=("check", "check_problems", "check_values"),
+            job=tp.check_work, anchor="check", field_of_failure="student")
+
+    async def check_class(request):
+        """A whole class checked (``crankdyn check BASE --variants VARIANTS DIR``)."""
+        return await form_check(
+            request, singles=("base", "pressure", "variants"), multiple=("students",),
+            typed=("rtol", "atol"), required=("base", "variants", "students"),
+            folder_name="class", attrs=("class_run", "class_problems", "class_values"),
+            job=tp.check_class_work, anchor="class", field_of_failure="students",
+            max_files=3 + tp.MAX_VARIANTS)
 
     async def check_file(request):
         """A file of the session's last check, by the name the page offered."""
@@ -619,10 +652,24 @@ def _teacher_routes(*, templates, store, pool, batches, upload_limit, lang_of, s
             return Response(texts(lang)("web.file.gone"), status_code=404)
         return FileResponse(path, filename=request.path_params["name"])
 
+    async def class_file(request):
+        """A file of the session's last class check, by the name the page offered."""
+        lang = lang_of(request)
+        s = store.get(request.cookies.get(COOKIE))
+        st = s.pages.get("teacher") if s is not None else None
+        run = st.class_run if st is not None else None
+        path = None if run is None or str(run.number) != request.path_params["number"] \
+            else run.files.get(request.path_params["name"])
+        if path is None or not path.is_file():
+            return Response(texts(lang)("web.file.gone"), status_code=404)
+        return FileResponse(path, filename=request.path_params["name"])
+
     return [Route("/teacher", get), Route("/teacher/variants", start, methods=["POST"]),
             Route("/teacher/batch/{number:str}/{name:str}", batch_file),
             Route("/teacher/check", check, methods=["POST"]),
-            Route("/teacher/check/{number:str}/{name:str}", check_file)]
+            Route("/teacher/check/{number:str}/{name:str}", check_file),
+            Route("/teacher/class", check_class, methods=["POST"]),
+            Route("/teacher/class/{number:str}/{name:str}", class_file)]
 
 
 def _problem(key, text):

@@ -13,6 +13,13 @@ under the server's own names into the session's folder, go through the library
 (:func:`engine.check.spec_check_side`, :func:`crankbase.checking.check_table` and
 :func:`~crankbase.checking.write_check`); the page shows the verdict per column, the wrong
 cells, and offers ``check.csv`` and the checked workbook (wrong cells red, with comments).
+
+The third checks a whole class (:func:`check_class_work`, ``crankdyn check BASE.toml
+--variants variants.csv STUDENTS_DIR``): the base spec and the variants table are written
+as the first form writes them (:func:`prepare`), the students' files under their own
+sanitized base names into ``students/``, and :func:`engine.variants.check_class` grades
+each against its variant; the page shows ``class_check.csv`` and offers it, its workbook
+and a zip of the whole output folder.
 """
 from __future__ import annotations
 
@@ -23,7 +30,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 __all__ = ["Batch", "TeacherState", "MAX_VARIANTS", "prepare", "run_batch", "CheckRun",
-           "CheckProblem", "check_work", "CHECK_FIELDS", "STUDENT_NAMES"]
+           "CheckProblem", "check_work", "CHECK_FIELDS", "STUDENT_NAMES", "ClassRun",
+           "check_class_work", "CLASS_FIELDS", "CLASS_FILES", "student_file_name"]
 
 #: Variants of one batch at most (a class is 20 to 40; each report takes seconds).
 MAX_VARIANTS = 100
@@ -58,6 +66,20 @@ class CheckRun:
 
 
 @dataclass
+class ClassRun:
+    """A whole class checked: the verdict lines, the verdict table and the files."""
+
+    number: int
+    folder: Path
+    lines: tuple            # the class verdict, as ``crankdyn check --variants`` prints it
+    ok: bool
+    not_right: int          # students not right (wrong, unmatched or unreadable)
+    head: list              # class_check.csv's header (in the page's language)
+    rows: list              # and rows, as written
+    files: dict             # {download name: path}
+
+
+@dataclass
 class TeacherState:
     batch: Batch | None = None
     problems: list = field(default_factory=list)        # rendered lines
@@ -65,6 +87,9 @@ class TeacherState:
     check: CheckRun | None = None
     check_problems: dict = field(default_factory=dict)  # field: [rendered lines]
     check_values: dict = field(default_factory=dict)    # rtol, atol, map as typed
+    class_run: ClassRun | None = None
+    class_problems: dict = field(default_factory=dict)  # field: [rendered lines]
+    class_values: dict = field(default_factory=dict)    # rtol, atol as typed
     lock: threading.Lock = field(default_factory=threading.Lock)
 
 
@@ -263,3 +288,126 @@ def check_work(folder: Path, number: int, spec: tuple, pressure, student: tuple,
     head, rows = table_rows(bad)
     return CheckRun(number=number, folder=folder, lines=tuple(lines), ok=result.ok,
                     head=head, rows=rows, wrong=len(bad), files=files, marked=marked)
+
+
+# ----------------------------------------------------------------------------- a class
+#: The fields of the class form (a problem is shown next to one of them).
+CLASS_FIELDS = ("base", "pressure", "variants", "students", "rtol", "atol")
+#: The downloads of a class check.
+CLASS_FILES = ("class_check.csv", "class_check.xlsx", "class_check.zip")
+
+
+def student_file_name(upload: str) -> str | None:
+    """The name a student's upload is saved under: its stem made safe
+    (:func:`crankbase.output.safe_name`) and its kind (``.xlsx``, ``.xlsm``, ``.csv``,
+    lower case); ``None`` for a name that is not a plain file name (a folder in it, ``..``,
+    a leading dot) or of another kind."""
+    from crankbase.output import safe_name
+
+    name = upload or ""
+    if ("/" in name or "\\" in name or name.startswith(".") or not name.strip()
+            or "\x00" in name):
+        return None
+    path = Path(name)
+    kind = path.suffix.lower()
+    if kind not in STUDENT_NAMES or not path.stem.strip():
+        return None
+    return safe_name(path.stem, "student") + kind
+
+
+def _by_field(problems, default: str) -> dict:
+    """The library's problems by the class form's field (its key names it)."""
+    by = {}
+    for p in problems:
+        key = str(getattr(p, "key", ""))
+        f = ("pressure" if key.startswith("pressure") else
+             key if key in ("rtol", "atol", "variants") else default)
+        by.setdefault(f, []).append(p)
+    return by
+
+
+def check_class_work(folder: Path, number: int, base: tuple, pressure, variants: tuple,
+                     students: list, rtol: str = "", atol: str = "",
+                     lang: str = "ru") -> ClassRun:
+    """Check a whole class as ``crankdyn check BASE.toml --variants VARIANTS STUDENTS_DIR
+    -o DIR`` does, through :func:`engine.variants.check_class`.
+
+    Parameters
+    ----------
+    folder : Path
+        The session's folder of this check (``class-N``): the base spec and the variants
+        table go into ``folder/input`` (:func:`prepare`), the students' files into
+        ``folder/students`` under :func:`student_file_name`, the outputs into
+        ``folder/class_check`` and its zip ``folder/class_check.zip``.
+    number : int
+        The check's number in its session (the downloads' URLs name it).
+    base, variants : (upload name, bytes)
+        The base engine spec and the variants table (``.csv`` or ``.xlsx`` by its name).
+    pressure : (upload name, bytes) or None
+        The pressure file the base spec names, if it names one.
+    students : list of (upload name, bytes)
+        The students' workbooks and CSVs (only the base name of each is used).
+    rtol, atol : str
+        As typed (empty: the library's defaults).
+
+    Raises
+    ------
+    CheckProblem
+        Every student's file of a bad name or kind (one line each, at ``students``), a
+        name given twice, else the problems of the base spec, its pressure file, the
+        variants table or the tolerances, each by its field.
+    """
+    from dataclasses import replace
+
+    from crankbase.errors import SpecError, Text
+    from crankbase.texts import texts
+    from engine.variants import check_class
+
+    saved, bad = {}, []
+    for name, _data in students:
+        own = student_file_name(name)
+        if own is None:
+            bad.append(Text("web.class.student_name", {"name": name}))
+        elif own in saved:
+            bad.append(Text("web.class.student_twice", {"name": name, "saved": own}))
+        else:
+            saved[own] = _data
+    if bad:
+        raise CheckProblem({"students": bad})
+    inp = folder / "input"
+    names = {str(inp) + "/": "", str(folder / "students") + "/": ""}
+    try:
+        base_path, vpath, _n = prepare(folder, base[1], pressure, variants[1],
+                                       variants[0].lower().endswith(".xlsx"))
+    except SpecError as exc:
+        raise CheckProblem(_by_field(exc.problems, "base"), names)
+    except (ValueError, UnicodeDecodeError) as exc:     # the base spec's TOML
+        raise CheckProblem({"base": [Text("web.upload.bad_toml", {"reason": str(exc)})]})
+    sdir = folder / "students"
+    sdir.mkdir(parents=True, exist_ok=True)
+    for own, data in saved.items():
+        (sdir / own).write_bytes(data)
+    out = folder / "class_check"
+    try:
+        done = check_class(base_path, vpath, sdir, out, lang, _tolerance(rtol),
+                           _tolerance(atol), None)
+    except SpecError as exc:
+        raise CheckProblem(_by_field(exc.problems, "variants"), names)
+    zpath = folder / "class_check.zip"
+    with zipfile.ZipFile(zpath, "w", zipfile.ZIP_DEFLATED) as z:
+        for p in sorted(out.rglob("*")):
+            if p.is_file():
+                z.write(p, arcname=p.relative_to(out).as_posix())
+    # the verdict names the files by their download names, never the server's paths
+    view = replace(done, folder=Path(zpath.name), csv=Path(done.csv.name),
+                   xlsx=Path(done.xlsx.name))
+    import csv
+
+    with open(done.csv, newline="", encoding="utf-8") as fh:
+        table = list(csv.reader(fh))
+    files = {done.csv.name: done.csv, done.xlsx.name: done.xlsx, zpath.name: zpath}
+    t = texts(lang)          # the header in the page's language, as the workbook's
+    head = [t(f"check.class.column.{c}") for c in table[0]]
+    return ClassRun(number=number, folder=folder, lines=tuple(view.summary_lines(lang)),
+                    ok=done.ok, not_right=sum(s.status != "right" for s in done.students),
+                    head=head, rows=table[1:], files=files)
