@@ -21,6 +21,7 @@ pytest.importorskip("starlette")  # the test extra installs it; a bare core inst
 from starlette.testclient import TestClient  # noqa: E402
 
 from crankbase.resources import example_path  # noqa: E402
+from test_web import form_values  # noqa: E402
 
 CYRILLIC = re.compile("[А-Яа-яЁё]")
 
@@ -43,19 +44,6 @@ def client(app, page, lang="en"):
     return c
 
 
-def form_values(html):
-    """Every field of a page's form as the page shows it (what a browser posts)."""
-    vals = dict(re.findall(r'<input type="text" name="([^"]+)" id="[^"]+" value="([^"]*)"',
-                           html))
-    for name, body in re.findall(r'<textarea name="([^"]+)"[^>]*>([^<]*)</textarea>', html):
-        vals[name] = body
-    for name, body in re.findall(r'<select name="([^"]+)"[^>]*>(.*?)</select>', html, re.S):
-        sel = re.search(r'<option value="([^"]*)" selected>', body)
-        vals[name] = sel.group(1) if sel else ""
-    src = re.search(r'name="pressure_source" value="(\w+)" id="source-\w+" checked', html)
-    if src:
-        vals["pressure_source"] = src.group(1)
-    return {k: htmllib.unescape(v) for k, v in vals.items()}
 
 
 def page_table(html, table_id):

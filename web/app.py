@@ -640,29 +640,23 @@ def _teacher_routes(*, templates, store, pool, batches, upload_limit, lang_of, s
             job=tp.check_class_work, anchor="class", field_of_failure="students",
             max_files=3 + tp.MAX_VARIANTS)
 
-    async def check_file(request):
-        """A file of the session's last check, by the name the page offered."""
-        lang = lang_of(request)
-        s = store.get(request.cookies.get(COOKIE))
-        st = s.pages.get("teacher") if s is not None else None
-        run = st.check if st is not None else None
-        path = None if run is None or str(run.number) != request.path_params["number"] \
-            else run.files.get(request.path_params["name"])
-        if path is None or not path.is_file():
-            return Response(texts(lang)("web.file.gone"), status_code=404)
-        return FileResponse(path, filename=request.path_params["name"])
+    def last_run_file(attr):
+        """The handler of a file of the session's last run of a teacher's form
+        (``st.<attr>``: the one-student check or the class check), by the name the page
+        offered."""
+        async def handler(request):
+            lang = lang_of(request)
+            s = store.get(request.cookies.get(COOKIE))
+            st = s.pages.get("teacher") if s is not None else None
+            run = getattr(st, attr) if st is not None else None
+            path = None if run is None or str(run.number) != request.path_params["number"] \
+                else run.files.get(request.path_params["name"])
+            if path is None or not path.is_file():
+                return Response(texts(lang)("web.file.gone"), status_code=404)
+            return FileResponse(path, filename=request.path_params["name"])
+        return handler
 
-    async def class_file(request):
-        """A file of the session's last class check, by the name the page offered."""
-        lang = lang_of(request)
-        s = store.get(request.cookies.get(COOKIE))
-        st = s.pages.get("teacher") if s is not None else None
-        run = st.class_run if st is not None else None
-        path = None if run is None or str(run.number) != request.path_params["number"] \
-            else run.files.get(request.path_params["name"])
-        if path is None or not path.is_file():
-            return Response(texts(lang)("web.file.gone"), status_code=404)
-        return FileResponse(path, filename=request.path_params["name"])
+    check_file, class_file = last_run_file("check"), last_run_file("class_run")
 
     return [Route("/teacher", get), Route("/teacher/variants", start, methods=["POST"]),
             Route("/teacher/batch/{number:str}/{name:str}", batch_file),
