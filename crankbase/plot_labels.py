@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["Obstacles", "add_axes_lines", "renderer_of", "text_size", "place_label",
+__all__ = ["Obstacles", "add_axes_lines", "fixed_axes_obstacles", "renderer_of", "text_size", "place_label",
            "label_points", "frozen_frame", "segment_hits_box"]
 
 
@@ -254,3 +254,24 @@ def frozen_frame(ax):
     ax.set_autoscale_on(False)
     bb = ax.get_window_extent()
     return ax.transData.transform, Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+
+
+def fixed_axes_obstacles(ax):
+    """Fix ``ax`` as it will be saved — the final axes box (after a layout engine), the
+    aspect, the limits (autoscale off, so labels added later do not move them) — and
+    return ``(to_px, obstacles)``: its data → display transform and :class:`Obstacles`
+    framed by the axes' box holding every line of the axes (:func:`add_axes_lines`).
+    The first step of placing labels on a finished plot."""
+    fig = ax.figure
+    renderer_of(fig)
+    if fig.get_layout_engine() is not None:
+        fig.draw_without_rendering()              # the final axes box
+    ax.apply_aspect()
+    ax.set_xlim(ax.get_xlim())
+    ax.set_ylim(ax.get_ylim())
+    ax.set_autoscale_on(False)
+    to_px = ax.transData.transform
+    bb = ax.get_window_extent()
+    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
+    add_axes_lines(obs, ax, to_px)
+    return to_px, obs

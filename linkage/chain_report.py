@@ -255,21 +255,10 @@ def plot_chain_plan(result, ax=None, lang="en"):
 def _plan_labels(ax, result, joints):
     """The joints' names at position 1 and the position numbers at the crank pin, each
     where no link or other label crosses it (:mod:`crankbase.plot_labels`)."""
-    from crankbase.plot_labels import (Obstacles, add_axes_lines, label_points, place_label,
-                                       renderer_of)
+    from crankbase.plot_labels import fixed_axes_obstacles, label_points, place_label
 
     fig = ax.figure
-    renderer_of(fig)
-    if fig.get_layout_engine() is not None:
-        fig.draw_without_rendering()
-    ax.apply_aspect()
-    ax.set_xlim(ax.get_xlim())
-    ax.set_ylim(ax.get_ylim())
-    ax.set_autoscale_on(False)
-    tr = ax.transData.transform
-    bb = ax.get_window_extent()
-    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
-    add_axes_lines(obs, ax, tr)
+    tr, obs = fixed_axes_obstacles(ax)
     mech = result.spec.mechanism
     zc = complex(mech.frame[mech.driver.pivot])
     centre = tr([(zc.real, zc.imag)])[0]

@@ -269,21 +269,10 @@ def _plan_labels(ax, k, numbers, pivots):
     """The position numbers at A and at B and the pivots' names, each where no link,
     path or other label crosses it; positions whose points (nearly) coincide share one
     label ("12/1"), a label with no free place is left out."""
-    from crankbase.plot_labels import (Obstacles, add_axes_lines, label_points, place_label,
-                                       renderer_of)
+    from crankbase.plot_labels import fixed_axes_obstacles, label_points, place_label
 
     fig = ax.figure
-    renderer_of(fig)
-    if fig.get_layout_engine() is not None:
-        fig.draw_without_rendering()              # the final axes box
-    ax.apply_aspect()
-    ax.set_xlim(ax.get_xlim())
-    ax.set_ylim(ax.get_ylim())
-    ax.set_autoscale_on(False)
-    tr = ax.transData.transform
-    bb = ax.get_window_extent()
-    obs = Obstacles(frame=(bb.x0, bb.y0, bb.x1, bb.y1))
-    add_axes_lines(obs, ax, tr)
+    tr, obs = fixed_axes_obstacles(ax)
     for patch in ax.patches:
         obs.add_line(patch.get_transform().transform_path(patch.get_path()).vertices)
     leg = ax.get_legend()

@@ -11,7 +11,7 @@ and writes through :func:`dynamics.study.write_report`.
 """
 from __future__ import annotations
 
-from .pages import Kind, Run, finish_files, table_rows
+from .pages import Kind, Run, table_rows, write_and_list
 
 __all__ = ["EXAMPLES", "DynamicsPage", "spec_shape"]
 
@@ -114,11 +114,7 @@ class DynamicsPage(Kind):
     def write(self, run: Run) -> dict:
         from dynamics.study import write_report
 
-        out = run.folder / "report"
-        write_report(run.report, out, run.lang, formats=("png",))
-        files = {p.name: p for p in sorted(out.iterdir())
-                 if p.is_file() and not p.name.startswith(".")}
-        return finish_files(run, run.report.stem, files)
+        return write_and_list(run, write_report)
 
     def results(self, run, lang, files=None):
         from crankbase.texts import texts

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 __all__ = ["PageState", "Run", "Kind", "table_rows", "spec_toml", "finish_files", "PAGE_ROWS",
-           "render_job"]
+           "render_job", "write_and_list"]
 
 
 @dataclass
@@ -160,3 +160,14 @@ def render_job(kind: Kind, number: int, folder: Path, spec: dict, lang: str, pre
     report = kind.compute(spec, folder / "input", pressure, options)
     return kind.write(Run(number=number, folder=folder, report=report, spec=spec, lang=lang,
                           pressure=pressure, options=options))
+
+
+def write_and_list(run: Run, write_report) -> dict:
+    """Write ``run``'s report with a study layer's ``write_report(report, out, lang,
+    formats=…)`` into the run's ``report`` folder (PNG figures only: the page shows them),
+    and finish its files (:func:`finish_files`): every written file by its name."""
+    out = run.folder / "report"
+    write_report(run.report, out, run.lang, formats=("png",))
+    files = {p.name: p for p in sorted(out.iterdir())
+             if p.is_file() and not p.name.startswith(".")}
+    return finish_files(run, run.report.stem, files)
