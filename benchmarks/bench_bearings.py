@@ -10,20 +10,9 @@ assertions: the figures go into the README.
 """
 from __future__ import annotations
 
-import statistics
-import time
-
 import numpy as np
 
-
-def best_of(fn, repeat=5, number=5):
-    times = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        for _ in range(number):
-            fn()
-        times.append((time.perf_counter() - t0) / number)
-    return min(times), statistics.median(times)
+from timing import timed
 
 
 def main():
@@ -63,9 +52,11 @@ def main():
     for name, fn in (("8 force tables (7,200 angles each)", tables),
                      ("pin and journal loads, journal torques", lambda: loads(tabs)),
                      ("9 wear diagrams (360 points)", lambda: wear(res))):
-        best, med = best_of(fn)
+        t = timed(fn, repeat=5, number=5)
+        best, med = t.best, t.median
         print(f"{name:45s} {best * 1e3:8.1f} ms (median {med * 1e3:.1f} ms)")
-    best, med = best_of(lambda: wear(loads(tables())))
+    t = timed(lambda: wear(loads(tables())), repeat=5, number=5)
+    best, med = t.best, t.median
     print(f"{'all of it':45s} {best * 1e3:8.1f} ms (median {med * 1e3:.1f} ms)")
 
 

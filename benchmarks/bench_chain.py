@@ -36,18 +36,18 @@ from __future__ import annotations
 
 import os
 
-for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS",
-             "NUMEXPR_NUM_THREADS", "VECLIB_MAXIMUM_THREADS"):
-    os.environ[_var] = "1"
+from timing import load_average, one_thread, timed
+
+one_thread()
 
 import argparse  # noqa: E402
 import math  # noqa: E402
-import time  # noqa: E402
 import warnings  # noqa: E402
 
 import numpy as np  # noqa: E402
 
-CLOCK = time.process_time
+#: Time on the wall clock (``--wall``) instead of the process's CPU clock.
+WALL = False
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SHAPER = os.path.join(ROOT, "examples", "shaper.toml")
@@ -61,18 +61,10 @@ def shaper():
     return linkage.load_spec(SHAPER).mechanism
 
 
-def _load():
-    return ", ".join(f"{x:.1f}" for x in os.getloadavg())
-
-
 def best_of(fn, repeat):
-    fn()
-    times = []
-    for _ in range(repeat):
-        t0 = CLOCK()
-        fn()
-        times.append(CLOCK() - t0)
-    return min(times)
+    """Best time of ``repeat`` calls (after one warm-up call), CPU or wall (:data:`WALL`). [s]"""
+    t = timed(fn, repeat, warmup=True)
+    return t.best if WALL else t.cpu
 
 
 def run_chain(mech, phi, forces=True):
@@ -179,15 +171,14 @@ def analyze_timings(n, repeat):
 
 
 def main():
-    global CLOCK
+    global WALL
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--positions", type=int, default=1_000_000)
     ap.add_argument("--pylinkage-positions", type=int, default=20_000)
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--wall", action="store_true")
     args = ap.parse_args()
-    if args.wall:
-        CLOCK = time.perf_counter
+    WALL = args.wall
     from linkage import chain as ch
     from linkage.groups import CHUNK
 
@@ -200,7 +191,7 @@ def main():
     print(f"six-bar shaper {ch.structure_formula(mech, kinds=True)}, W = {ch.mobility(mech)[0]}, "
           f"{n:,d} positions, clock: {'wall' if args.wall else 'process CPU'}, best of "
           f"{args.repeat}; CHUNK = {CHUNK}; {os.cpu_count()} CPU(s), load average "
-          f"{_load()}")
+          f"{load_average()}")
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         t_kin = best_of(lambda: run_chain(mech, phi, forces=False), args.repeat)
@@ -225,7 +216,7 @@ def main():
         print(f"  pylinkage {version} ({label}) {1 / t_pl / 1e6:.4f} M/s: chain kinematics "
               f"{t_pl * n / t_kin:,.0f} ×, kinematics + forces {t_pl * n / t_all:,.0f} ×, "
               f"analyze with forces and tables {t_pl * n / t_an:,.0f} × faster")
-    print(f"\nload average at the end: {_load()} (on {os.cpu_count()} CPU(s): a load above "
+    print(f"\nload average at the end: {load_average()} (on {os.cpu_count()} CPU(s): a load above "
           "that shares the cores and the caches)")
     ok = n / t_an >= 2.5e6
     print(f"target (issue #19; kinematics + forces through the public API, one core, "

@@ -9,30 +9,10 @@ the figures go into the README.
 """
 from __future__ import annotations
 
-import statistics
-import subprocess
 import sys
 import tempfile
-import time
 
-
-def best_of(fn, repeat=5, number=3):
-    times = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        for _ in range(number):
-            fn()
-        times.append((time.perf_counter() - t0) / number)
-    return min(times), statistics.median(times)
-
-
-def wall(cmd, repeat=3):
-    times = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
-        times.append(time.perf_counter() - t0)
-    return min(times), statistics.median(times)
+from timing import timed, timed_process
 
 
 def main():
@@ -53,15 +33,19 @@ def main():
          lambda: balance_rotor([90, 600], [270, 45], [100, 420], [0, 300])),
     ]
     for name, fn in rows:
-        b, m = best_of(fn)
+        t = timed(fn, repeat=5, number=3)
+        b, m = t.best, t.median
         print(f"{name:<40} best {b * 1e3:8.2f} ms   median {m * 1e3:8.2f} ms")
     with tempfile.TemporaryDirectory() as d:
         for ex in ("flywheel_seed.toml", "press_dynamics.toml", "petrol_dynamics.toml"):
-            b, m = wall([sys.executable, "-m", "crankdyn", "dynamics",
-                         str(example_path(ex)), "-o", f"{d}/{ex}"])
+            t = timed_process([sys.executable, "-m", "crankdyn", "dynamics",
+                               str(example_path(ex)), "-o", f"{d}/{ex}"], repeat=3)
+            b, m = t.best, t.median
             print(f"crankdyn dynamics {ex:<22} best {b:6.2f} s   median {m:6.2f} s")
-        b, m = wall([sys.executable, "-m", "crankdyn", "balance",
-                     str(example_path("rotor_two_plane.toml")), "-o", f"{d}/rotor"])
+        t = timed_process([sys.executable, "-m", "crankdyn", "balance",
+                           str(example_path("rotor_two_plane.toml")), "-o", f"{d}/rotor"],
+                          repeat=3)
+        b, m = t.best, t.median
         print(f"crankdyn balance rotor_two_plane.toml     best {b:6.2f} s   median {m:6.2f} s")
 
 

@@ -36,31 +36,26 @@ from __future__ import annotations
 
 import os
 
-for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS",
-             "NUMEXPR_NUM_THREADS", "VECLIB_MAXIMUM_THREADS"):
-    os.environ[_var] = "1"
+from timing import cpu_model, load_average, one_thread, timed
+
+one_thread()
 
 import argparse  # noqa: E402
 import math  # noqa: E402
 import platform  # noqa: E402
-import time  # noqa: E402
 import warnings  # noqa: E402
 
 import numpy as np  # noqa: E402
 
 
-CLOCK = time.process_time
+#: Time on the wall clock (``--wall``) instead of the process's CPU clock.
+WALL = False
 
 
 def best_of(fn, repeat):
-    """Best time of ``repeat`` calls (after one warm-up call) on :data:`CLOCK`. [s]"""
-    fn()
-    times = []
-    for _ in range(repeat):
-        t0 = CLOCK()
-        fn()
-        times.append(CLOCK() - t0)
-    return min(times)
+    """Best time of ``repeat`` calls (after one warm-up call), CPU or wall (:data:`WALL`). [s]"""
+    t = timed(fn, repeat, warmup=True)
+    return t.best if WALL else t.cpu
 
 
 def crank_angles(n, phi0=0.3):
@@ -176,18 +171,6 @@ def pylinkage_timing(spec, n_pl, res_phi, res):
     return label, t, HAS_NUMBA, getattr(pylinkage, "__version__", "?")
 
 
-def cpu_model():
-    """The processor's model name (Linux: /proc/cpuinfo), else ``platform.processor()``."""
-    try:
-        with open("/proc/cpuinfo", encoding="utf-8") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown CPU"
-
-
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--positions", type=int, default=1_000_000)
@@ -195,9 +178,8 @@ def main(argv=None):
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--wall", action="store_true", help="wall-clock time instead of CPU time")
     args = ap.parse_args(argv)
-    global CLOCK
-    if args.wall:
-        CLOCK = time.perf_counter
+    global WALL
+    WALL = args.wall
     n = args.positions
 
     from linkage import analysis as an
@@ -206,7 +188,7 @@ def main(argv=None):
           f"pandas {pd.__version__}, "
           f"{os.cpu_count()} CPU(s) available, one thread used; CHUNK = {an.CHUNK}; "
           f"{'wall-clock' if args.wall else 'CPU'} time; load average "
-          f"{', '.join(f'{x:.1f}' for x in os.getloadavg())}")
+          f"{load_average()}")
     rows = []
     spec, phi, res, rocker = core_timings("ratchet.toml", n, args.repeat)
     _, _, _, slider = core_timings("press.toml", n, args.repeat)
@@ -243,7 +225,7 @@ def main(argv=None):
         if pl is not None and mech.startswith("crank-rocker"):
             line += f" {(npos / t) * t_pl:12.0f}"
         print(line)
-    print(f"\nload average at the end: {', '.join(f'{x:.1f}' for x in os.getloadavg())} "
+    print(f"\nload average at the end: {load_average()} "
           f"(on {os.cpu_count()} CPU(s): a load above that shares the cores and the caches)")
     lean = n / rocker["analyze-lean"][1] / 1e6
     print("targets (issues #20 and #9; kinematics + forces through the public API, one core, "

@@ -7,25 +7,15 @@ run.  Prints the best of ``--repeat`` runs; asserts nothing.
 from __future__ import annotations
 
 import argparse
-import subprocess
 import sys
 import tempfile
-import time
 from pathlib import Path
 
 import linkage
 import plans
 from crankbase.resources import example_path
 from plans import drawing, dxf
-
-
-def best(fn, repeat):
-    times = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t)
-    return min(times)
+from timing import timed, timed_process
 
 
 def main():
@@ -50,10 +40,10 @@ def main():
             for n in ("p.svg", "p.pdf", "p.png")]),
     ]
     for name, fn in rows:
-        print(f"{name}: {best(fn, a.repeat) * 1000:.0f} ms")
+        print(f"{name}: {timed(fn, a.repeat).best * 1000:.0f} ms")
     cli = [sys.executable, "-m", "crankdyn.cli", "linkage", str(spec), "-o", str(tmp / "o"),
            "--plans", "5,11"]
-    t = best(lambda: subprocess.run(cli, check=True, capture_output=True), max(1, a.repeat // 2))
+    t = timed_process(cli, max(1, a.repeat // 2)).best
     print(f"crankdyn linkage ratchet --plans 5,11 (fresh process, all outputs): {t:.1f} s")
 
 

@@ -14,22 +14,10 @@ into the README.
 from __future__ import annotations
 
 import os
-import statistics
-import time
 
 import numpy as np
 
-
-def best_of(fn, repeat=7, number=5):
-    """(best wall, median wall, best CPU) time per call [s]."""
-    walls, cpus = [], []
-    for _ in range(repeat):
-        t0, c0 = time.perf_counter(), time.process_time()
-        for _ in range(number):
-            fn()
-        walls.append((time.perf_counter() - t0) / number)
-        cpus.append((time.process_time() - c0) / number)
-    return min(walls), statistics.median(walls), min(cpus)
+from timing import load_average, timed
 
 
 def main():
@@ -79,7 +67,7 @@ def main():
                         speeds)
 
     print(f"V8 chain of {len(J)} masses; {len(speeds)} speeds x {len(h['total'].order) - 1} "
-          f"orders; load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")
+          f"orders; load average {load_average()} on {os.cpu_count()} cores")
     for label, fn in (("natural_modes", modes),
                       ("torque_harmonics x3 (gas, inertia, total)", harmonics),
                       ("cylinder_excitation (force table + harmonics)",
@@ -88,7 +76,8 @@ def main():
                       ("forced_response 600-6000 rpm / 10 rpm", response),
                       ("modes + harmonics + critical + response (target < 100 ms)",
                        everything)):
-        best, med, cpu = best_of(fn)
+        t = timed(fn, repeat=7, number=5)
+        best, med, cpu = t.best, t.median, t.cpu
         print(f"{label:<60s} best {best * 1e3:7.2f} ms  median {med * 1e3:7.2f} ms  "
               f"cpu {cpu * 1e3:7.2f} ms")
 
