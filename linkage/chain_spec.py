@@ -24,7 +24,8 @@ from crankbase.schema import SpecReader
 
 from . import chain as ch
 from .loads import LoadSpec
-from .schema import ANALYSIS, CHAIN_MECHANISM, CHAIN_SCHEMA, GROUP, LINK, LOAD
+from .schema import CHAIN_MECHANISM, CHAIN_SCHEMA, GROUP
+from .spec_tables import read_link, read_loads, read_plan
 
 __all__ = ["ChainLoad", "ChainSpec", "load_chain_spec", "output_kind", "is_chain"]
 
@@ -189,24 +190,12 @@ def load_chain_spec(data: dict, source=None) -> ChainSpec:
         if lname not in names:
             ck.add(f"links.{lname}", Text("errors.linkage.chain.unknown_link",
                                           {"valid": ", ".join(names)}))
-    links, chain_links = {}, {}
-    for lname in names:
-        path = f"links.{lname}"
-        t = ck.sub(lt, LINK, path=path, required=False)
-        mass = ck.get(t, LINK, "mass_kg", path=path)
-        inertia = ck.get(t, LINK, "inertia_kg_m2", path=path)
-        cg = _xy(ck.get(t, LINK, "cg", path=path)) if "cg" in t else \
-            complex(lengths_of.get(lname, 0.0) / 2.0, 0.0)
-        pts = {}
-        ptable = t.get("points", {})
-        if not isinstance(ptable, dict):
-            ck.add(f"{path}.points", Text("errors.linkage.spec.table_name_x", {"ptable": ptable}))
-            ptable = {}
-        for pname in ptable:
-            xy = ck.numbers(ptable, pname, f"{path}.points", length=2)
-            if xy:
-                pts[pname] = complex(*xy)
-        links[lname] = chain_links[lname] = ch.Link(mass or 0.0, inertia or 0.0, cg, pts)
+    point_names = set()
+    read = {lname: read_link(ck, lt, lname, complex(lengths_of.get(lname, 0.0) / 2.0, 0.0),
+                             point_names)
+            for lname in names}
+    links = chain_links = {lname: ch.Link(lk.mass, lk.inertia, lk.cg, dict(lk.points))
+                           for lname, lk in read.items()}
     if output is not None and output not in names:
         ck.add("mechanism.output", Text("errors.linkage.chain.unknown_link",
                                         {"valid": ", ".join(names)}))
@@ -215,65 +204,19 @@ def load_chain_spec(data: dict, source=None) -> ChainSpec:
                              chain_links, name)          # structure checked: SpecError
     out_kind = output_kind(mechanism, output)
 
-    loads = []
-    for path, t in ck.rows(data, LOAD):
-
-        def get(key, **kw):
-            return ck.get(t, LOAD, key, path=path, **kw)
-
-        link = get("link", choices=tuple(names))
-        which = [k for k in ("force_N", "moment_Nm", "resistance_Nm", "resistance_N") if k in t]
-        if len(which) != 1:
-            ck.add(path, Text("errors.linkage.spec.needs_exactly_one",
-                              {"value": ', '.join(which) or Text("errors.none")}))
-            continue
-        key = which[0]
-        at = _xy(get("at")) if "at" in t else 0j
-        if key == "force_N":
-            f = get("force_N", required=True)
-            if f and link:
-                loads.append(ChainLoad(link, "force", at=at, force=complex(*f)))
-            continue
-        if key == "moment_Nm":
-            mval = get("moment_Nm", required=True)
-            if mval is not None and link:
-                loads.append(ChainLoad(link, "moment", moment=mval))
-            continue
-        want = "resistance_N" if out_kind == "slider" else "resistance_Nm"
-        if key != want:
-            ck.add(f"{path}.{key}", Text("errors.linkage.chain.resistance_key",
-                                         {"want": want, "output": output}))
-            continue
-        if link is not None and link != output:
-            ck.add(f"{path}.link", Text("errors.linkage.spec.resistance_acts_on",
-                                        {"output": output, "link": link}))
-        r = get(key, required=True)
-        span_key = "span_m" if out_kind == "slider" else "span_deg"
-        span = get(span_key)
-        if span is not None and span_key == "span_deg":
-            span = math.radians(span)
-        if r is not None:
-            loads.append(ChainLoad(output, "resistance", resistance=r,
-                                  stroke=get("stroke") or "working", span=span))
-
-    a = ck.sub(data, ANALYSIS)
-    positions = ck.get(a, ANALYSIS, "positions")
-    angles = None
-    if "crank_angles_deg" in a:
-        angles = ck.get(a, ANALYSIS, "crank_angles_deg", required=True)
-        angles = tuple(angles) if angles else None
-        if "positions" in a:
-            ck.add("analysis", Text("errors.linkage.spec.give_either_positions"))
+    loads, resistance_paths = read_loads(
+        ck, data, names, output, rotary=out_kind != "slider",
+        wrong_resistance=lambda want: Text("errors.linkage.chain.resistance_key",
+                                           {"want": want, "output": output}))
     strokes = ("away", "toward") if out_kind == "slider" else ("ccw", "cw")
-    working = ck.get(a, ANALYSIS, "working_stroke", choices=strokes)
-    if omega == 0.0 and angles is None:
-        ck.add("analysis.crank_angles_deg", Text("errors.linkage.spec.missing_with_mechanism"))
+    positions, angles, working = read_plan(ck, data, strokes, loads, omega, resistance_paths,
+                                           working_default=strokes[0])
     ck.raise_if_any()
     return ChainSpec(kind="chain", name=name, mechanism=mechanism, output=output,
                      omega=omega, epsilon=epsilon, gravity=gravity,
                      links=MappingProxyType(links), loads=tuple(loads),
-                     positions=None if angles else positions, crank_angles_deg=angles,
-                     working_stroke=working or strokes[0], raw=MappingProxyType(dict(data)),
+                     positions=positions, crank_angles_deg=angles,
+                     working_stroke=working, raw=MappingProxyType(dict(data)),
                      source=source)
 
 

@@ -177,6 +177,40 @@ def test_structure_errors_are_keyed(edit, key):
     assert key in [p.text.key for p in e.value.problems if p.text is not None]
 
 
+@pytest.mark.parametrize("edit, path, key", [
+    # the four-bar's checks of points, loads and the plan, read by the same functions
+    # (linkage.spec.read_link, read_loads, read_plan)
+    (lambda d: d["links"]["rod"].update(points={"P_1": [0.1, 0.0]}),
+     "links.rod.points.P_1", "errors.linkage.spec.invalid_point_name_chain"),
+    (lambda d: d["links"]["rod"].update(points={"D": [0.1, 0.0]}),
+     "links.rod.points.D", "errors.linkage.spec.point_name_already"),
+    (lambda d: d["load"].append({"link": "rod", "force_N": [0.0, -10.0], "span_m": 0.1}),
+     "load[1].span_m", "errors.linkage.spec.applies_resistance_only"),
+    (lambda d: d["load"].append({"link": "lever", "moment_Nm": 5.0, "at": [0.1, 0.0]}),
+     "load[1].at", "errors.linkage.spec.does_not_apply_2"),
+    (lambda d: d["load"][0].update(at=[0.0, 0.1]),
+     "load[0].at", "errors.linkage.spec.resistance_acts_at"),
+    (lambda d: d["load"][0].update(span_deg=30.0),
+     "load[0].span_deg", "errors.linkage.spec.use_for"),
+    (lambda d: d["load"][0].update(link="rod"),
+     "load[0].link", "errors.linkage.spec.resistance_acts_on"),
+    (lambda d: (d["mechanism"].update(omega_rad_s=0.0),
+                d["analysis"].update(crank_angles_deg=[10.0, 20.0]),
+                d["analysis"].pop("positions", None)),
+     "load[0].resistance_N", "errors.linkage.spec.resistance_opposes_motion"),
+])
+def test_points_loads_and_plan_are_checked_like_the_four_bar(edit, path, key):
+    with pytest.raises(SpecError) as e:
+        linkage.load_spec(_bad(edit))
+    found = [(p.key, p.text.key) for p in e.value.problems if p.text is not None]
+    assert (path, key) in found, found
+
+
+def test_a_chain_spec_without_working_stroke_takes_the_first():
+    d = _bad(lambda d: d["analysis"].pop("working_stroke"))
+    assert linkage.load_spec(d).working_stroke == "away"     # the ram's first stroke
+
+
 def test_a_chain_that_cannot_be_assembled_is_an_error():
     d = _bad(lambda d: d["group"][1].update(lengths=[0.01]))
     with pytest.raises(AssemblyError):
