@@ -320,3 +320,24 @@ def test_shaper_cn_other_readings_miss_the_report(change):
             **{q: _shaper_cn_numbers(k, 4)[q] for q in SHAPER_CN_POSITION_4}}
     worst = max(abs(ours[q] / float(book[q]) - 1.0) for q in book)
     assert worst > 100 * SHAPER_CN_RTOL
+
+
+def test_shaper_cn_graphical_plans_are_the_reports():
+    """The graphical method's own plans (``crankdyn linkage --example shaper_cn --plans 4,9``,
+    :func:`plans.chain_model.build_chain_plans`) give the report's segments: at position 9
+    p→a4 (v_A4), a3→a4 (v_A4A3), p→b, p→c, b→c; at position 4 π→b, b→n (a^n_CB), π→c,
+    n→c (a^t_CB), each as its segment's length × the plan's scale."""
+    from plans.chain_model import build_chain_plans
+
+    res = linkage.analyze(example_path("shaper_cn.toml"))
+    pps = {pp.position: pp for pp in build_chain_plans(res, [4, 9])}
+    v9, a4 = pps[9].plans["velocity"], pps[4].plans["acceleration"]
+    p9, p4 = SHAPER_CN_POSITION_9, SHAPER_CN_POSITION_4
+    for plan, segment, key, book in ((v9, "pa3", "v_A4_m_s", p9), (v9, "a_a3", "v_A4A3_m_s", p9),
+                                     (v9, "pb", "v_B_m_s", p9), (v9, "pc", "v_C_m_s", p9),
+                                     (v9, "b_c", "v_CB_m_s", p9),
+                                     (a4, "pi_b", "a_B_m_s2", p4), (a4, "b_n4", "an_CB_m_s2", p4),
+                                     (a4, "pi_c", "a_C_m_s2", p4),
+                                     (a4, "n4_c", "at_CB_m_s2", p4)):
+        vec = plan.vector(segment)
+        assert vec.length_mm * plan.scale == printed(book[key]), (segment, key)
