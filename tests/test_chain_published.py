@@ -247,6 +247,10 @@ def test_shaper_cn_positions_are_the_course_positions(shaper_cn):
     psi = math.asin(0.110 / 0.380)                     # the lever's half swing
     assert s.time_ratio == pytest.approx((math.pi + 2 * psi) / (math.pi - 2 * psi), rel=1e-9)
     assert s.travel == pytest.approx(2 * L_O4B * math.sin(psi), rel=1e-9)
+    # the guide through the middle of the sagitta of B's arc (the spec's literal)
+    guide = r.spec.mechanism.groups[1].guide
+    assert complex(guide.point).imag == pytest.approx(L_O4B * (1 + math.cos(psi)) / 2,
+                                                      abs=1e-10)
     assert k.loc[1, "phi_deg"] == pytest.approx(s.phi_working_start_deg, abs=1e-9)
     assert np.diff(np.unwrap(np.radians(k["phi_deg"].to_numpy()))) == pytest.approx(
         np.full(11, math.radians(30.0)))
