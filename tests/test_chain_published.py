@@ -24,15 +24,18 @@ position 4 («机械原理课程设计 牛头刨床», https://m.qiqiwenku.com/p
 report's plans were drawn in CAD (scale 0.001 (m/s)/mm, lengths printed to 1e-4 mm) and
 printed to 5-8 figures; every one of its twelve numbers is reproduced to its last printed
 digit, so the tolerance is 1e-5 relative or half a unit of the last printed digit,
-whichever is coarser (a hand-drawn plan would warrant 2-5 %; these are far sharper).  The geometry the report does not print (where position 1
-is, the height of the ram's guide) is the course's rule, and the tests show that the
-other readings (numbering from the other extreme, the guide through the top of B's arc)
-miss the printed numbers by far more than the tolerance.
+whichever is coarser (a hand-drawn plan would warrant 2-5 %; these are far sharper).
+The geometry the report does not print (where position 1 is, the height of the ram's
+guide) is the course's rule, and the tests show that the other readings (numbering from
+the other extreme, the guide through the top or the chord of B's arc) miss the printed
+numbers by far more than the tolerance.
 
 Not found: a second, independent worked example of a six-link mechanism with printed
-velocities and accelerations whose dimensions and crank angle are stated in the text
-(Khurmi Ex. 7.x / 8.x and Rattan's Whitworth exercises give their dimensions in a
-figure only), and a published kinetostatic answer (reactions, Mур) for 方案 I.  The
+velocities and accelerations whose geometry is all stated in the text (Khurmi's
+Whitworth velocity example, OQ = 100, OP = 200, RQ = 150, RS = 500 mm, the crank at 60°
+to the vertical, 120 rpm, and the acceleration examples of ch. 8 fix the ram's line of
+stroke or some lengths only in their figures; Rattan's exercises likewise), and a
+published kinetostatic answer (reactions, Mур) for 方案 I.  The
 velocity and acceleration plans of the chain are also checked against their own closure
 and an independent solve in tests/test_chain*.py.
 """
