@@ -23,7 +23,7 @@ from .langs import LANG_CHOICES, LANG_HELP
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
 EXAMPLES = {"ratchet": "ratchet.toml", "press": "press.toml", "shaper": "shaper.toml",
             "press6": "press6.toml", "compressor_v": "compressor_v.toml",
-            "sixbar_rrr": "sixbar_rrr.toml"}
+            "sixbar_rrr": "sixbar_rrr.toml", "shaper_cn": "shaper_cn.toml"}
 
 
 
@@ -41,7 +41,8 @@ def add_parser(sub):
                           "of the course project; press: a crank-slider press; chains of "
                           "class II groups: shaper, the crank-slotted lever of a shaping "
                           "machine; press6, a six-bar press; compressor_v, a two-cylinder "
-                          "V compressor; sixbar_rrr, an RRR-RRR six-bar)")
+                          "V compressor; sixbar_rrr, an RRR-RRR six-bar; shaper_cn, the "
+                          "shaper of the Chinese course design, data set I)")
     p.add_argument("-o", "--output", required=True, metavar="DIR", help="output folder")
     p.add_argument("--step", type=float, default=1.0, metavar="DEG",
                    help="crank-angle step of the full-turn plots (default 1°)")

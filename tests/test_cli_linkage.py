@@ -185,7 +185,7 @@ def test_example_names_are_the_commands_own(tmp_path, capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert err == ["crankdyn linkage: error: --example: no linkage example "
                    "'petrol_vaz2106'; available: ratchet, press, shaper, press6, "
-                   "compressor_v, sixbar_rrr"]
+                   "compressor_v, sixbar_rrr, shaper_cn"]
     assert not (tmp_path / "o").exists()
     with pytest.raises(SystemExit):
         main(["linkage", "--lang", "en", "--help"])

@@ -23,7 +23,8 @@ from crankbase.resources import example_path
 from linkage import groups as g
 from linkage.study import run_study, summary_lines
 
-CHAINS = ("shaper.toml", "press6.toml", "compressor_v.toml", "sixbar_rrr.toml")
+CHAINS = ("shaper.toml", "press6.toml", "compressor_v.toml", "sixbar_rrr.toml",
+          "shaper_cn.toml")
 
 
 def _toml(name):

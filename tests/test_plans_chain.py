@@ -21,7 +21,8 @@ from plans.chain_model import build_chain_plans
 from plans.model import ROUND_MANTISSAS, Plan
 
 EXAMPLES = [("shaper.toml", [2, 5]), ("press6.toml", [1, 4]),
-            ("compressor_v.toml", [3, 7]), ("sixbar_rrr.toml", [2, 9])]
+            ("compressor_v.toml", [3, 7]), ("sixbar_rrr.toml", [2, 9]),
+            ("shaper_cn.toml", [4, 9])]
 
 
 @pytest.fixture(scope="module", params=EXAMPLES, ids=[e[0] for e in EXAMPLES])
@@ -284,7 +285,8 @@ def test_zhukovsky_lever_agrees_with_the_crank_polygon(case):
         d = complex(np.broadcast_to(lev.balancing_dir.x, n)[i],
                     np.broadcast_to(lev.balancing_dir.y, n)[i])
         assert F == pytest.approx(lev.balancing_force[i] * d, rel=1e-7, abs=1e-7)
-        zA, zO = pp.geometry["A"], pp.geometry["O"]
+        drv = res.spec.mechanism.driver                 # the spec's names of O and A
+        zA, zO = pp.geometry[drv.joint], pp.geometry[drv.pivot]
         # Mур = Fур·l_OA with its sign (+ ccw), and the kinetostatic Mур
         assert (F / d).real * abs(zA - zO) == pytest.approx(lev.M_balance[i], rel=1e-7)
         assert lev.M_balance[i] == pytest.approx(
@@ -359,7 +361,8 @@ def test_the_lever_on_the_sheet_balances_as_the_lever_and_the_kinetostatics(case
             assert f.moment_Nmm == pytest.approx((vS.conjugate() * f.force).real / mu,
                                                  rel=1e-9, abs=1e-9 * abs(f.force))
         # the drawing's balance: Σ moments + Fур·(a × its direction) = 0, |pa| = V_A/μV
-        zA, zO = pp.geometry["A"], pp.geometry["O"]
+        drv = mech.driver                               # the spec's names of O and A
+        zA, zO = pp.geometry[drv.joint], pp.geometry[drv.pivot]
         assert abs(L.balancing_dir) == pytest.approx(1.0)
         assert (L.balancing_dir * (zA - zO).conjugate()).real == pytest.approx(
             0.0, abs=1e-12)
