@@ -21,7 +21,8 @@ from .layout import (CAP_EM, FONT, H_LABEL, H_POINT, S_MAIN, S_THIN, Arrow, Bloc
 
 __all__ = ["position_blocks", "position_figure", "layout_sheets", "sheet_figure",
            "render_items", "SHEETS", "FORMATS", "title_fields", "TITLE_KEYS",
-           "frame_items", "fit_format", "fit_plans", "layout_fitted"]
+           "frame_items", "fit_format", "fit_plans", "layout_fitted", "block_fits",
+           "MIN_LONGEST_MM", "MIN_ARROW_MM"]
 
 PT = 72.0 / 25.4            # points per mm
 #: Sheet sizes, landscape (ГОСТ 2.301). [mm]
@@ -148,8 +149,8 @@ def _field(size):
             FRAME_OTHER + TITLE_BLOCK[1])
 
 
-def _fits(b, size):
-    """Does block ``b`` fit the field of a ``size`` sheet, beside or above the title
+def block_fits(b, size):
+    """Does block ``b`` (:class:`plans.layout.Block`) fit the field of a ``size`` sheet, beside or above the title
     block (clear of it by GAP as :func:`_pack` places it: its corner holds a GAP too)?"""
     x0, y0, x1, y1, tb_left, tb_top = _field(size)
     if b.width > x1 - x0 or b.height > y1 - y0:
@@ -224,20 +225,20 @@ def _fit_position(result, pp, size, lang):
     coarser copy of the velocity plan (its own μV, printed on the sheet).  What still
     does not fit is left as it is (:func:`layout_sheets` names it)."""
     blocks = position_blocks(pp, lang)
-    if all(_fits(b, size) for b in blocks):
+    if all(block_fits(b, size) for b in blocks):
         return pp, blocks
     scales = _given(pp)
     for kind in list(pp.plans):
-        if _fits(diagram_block(pp, kind, lang), size) or _is_fixed(pp, kind):
+        if block_fits(diagram_block(pp, kind, lang), size) or _is_fixed(pp, kind):
             continue
         mu0 = pp.plans[kind].scale
         top = mu0 * _longest(pp.plans[kind].vectors) / MIN_LONGEST_MM
         for mu in _series(mu0, top)[1:]:
             trial = _rebuild(result, pp, {**scales, kind: mu})
-            if _fits(diagram_block(trial, kind, lang), size):
+            if block_fits(diagram_block(trial, kind, lang), size):
                 pp, scales[kind] = trial, mu
                 break
-    if pp.lever is not None and not _fits(lever_block(pp, lang), size):
+    if pp.lever is not None and not block_fits(lever_block(pp, lang), size):
         pp = _fit_lever(result, pp, scales, size, lang)
     return pp, position_blocks(pp, lang)
 
@@ -245,26 +246,28 @@ def _fit_position(result, pp, size, lang):
 def _fit_lever(result, pp, scales, size, lang):
     """The lever of ``pp`` at the largest turned plan, then the largest force scale, at
     which it fits (see :func:`_fit_position`); ``pp`` unchanged when none does."""
-    mu_v0 = pp.plans["velocity"].scale
+    mu_v0 = pp.lever.plan_scale or pp.plans["velocity"].scale
     segs = [abs(s[2] - s[1]) for s in pp.lever.segments] + [0.0]
-    for mu_v in _series(mu_v0, mu_v0 * max(segs) / MIN_LONGEST_MM):
+    plan_scales = ([mu_v0] if "lever_velocity" in pp.fixed else
+                   _series(mu_v0, mu_v0 * max(segs) / MIN_LONGEST_MM))
+    for mu_v in plan_scales:
         base = dict(scales)
         if mu_v != mu_v0:
             base["lever_velocity"] = mu_v
         trial = _rebuild(result, pp, base) if base != scales else pp
         if "lever" in pp.fixed:
-            if _fits(lever_block(trial, lang), size):
+            if block_fits(lever_block(trial, lang), size):
                 return trial
             continue
         mu_f0 = trial.lever.scale
         forces = _series(mu_f0, mu_f0 * _longest(trial.lever.arrows()) / MIN_ARROW_MM)
         # the coarsest force scale first: when even it does not fit, the next plan scale
-        if not _fits(lever_block(_rebuild(result, pp, {**base, "lever": forces[-1]})
+        if not block_fits(lever_block(_rebuild(result, pp, {**base, "lever": forces[-1]})
                                  if len(forces) > 1 else trial, lang), size):
             continue
         for mu_f in forces:
             t = trial if mu_f == mu_f0 else _rebuild(result, pp, {**base, "lever": mu_f})
-            if _fits(lever_block(t, lang), size):
+            if block_fits(lever_block(t, lang), size):
                 return t
     return pp
 
@@ -491,7 +494,7 @@ def layout_fitted(result, plans, lang="ru", size="A1", fields=None):
     for group in per:
         blocks += group
     x0, y0, x1, y1, tb_left, tb_top = _field(size)
-    too_big = [b.title for b in blocks if not _fits(b, size)]
+    too_big = [b.title for b in blocks if not block_fits(b, size)]
     if too_big:
         raise PlanError([Problem("size", Words("errors.plans.drawing.does_not_fit",
                                                {"size": size, "t": t, "x1": x1 - x0,
