@@ -133,6 +133,15 @@ def write_plans(result, plans, folder, *, name=None, lang="ru", sheet="A1",
     return {"sheets": len(sheets), "errors": errors, "name": stem, "plans": plans}
 
 
+def _lever_plan(t, pp, size):
+    """The line that says a lever is drawn on a coarser copy of the velocity plan (to fit
+    the sheet, :func:`plans.drawing.fit_plans`), or none."""
+    mv = pp.lever.plan_scale
+    if mv is None or mv == pp.plans["velocity"].scale:
+        return []
+    return ["      " + t("plans.summary.lever_plan", mv=f"{mv:g}", size=size)]
+
+
 def summary_lines(plans, size, sheets, lang="ru", errors=None):
     """The graphical method's lines of the terminal summary in ``lang``: the positions
     and drawing sheets, then per position Mb by Zhukovsky's lever against the
@@ -167,6 +176,7 @@ def summary_lines(plans, size, sheets, lang="ru", errors=None):
                                            diff=format_snapped(L.difference_percent, ".1e"),
                                            Fb=format_snapped(L.balancing_force_N, ".3f"),
                                            mf=f"{L.scale:g}"))
+                lines += _lever_plan(t, pp, size)
             continue
         scale = max(abs(L.M_lever_Nm), abs(L.M_kinetostatic_Nm))
         lines.append("    " + t("plans.summary.lever", tag=pp.tag,
@@ -174,6 +184,7 @@ def summary_lines(plans, size, sheets, lang="ru", errors=None):
                                  kin=format_snapped(L.M_kinetostatic_Nm, ".4f", scale),
                                  diff=format_snapped(L.difference_percent, ".1e"),
                                  Fb=format_snapped(L.balancing_force_N, ".3f")))
+        lines += _lever_plan(t, pp, size)
     if errors is not None and len(errors):
         err = errors["error_percent"].to_numpy(float)
         if np.isfinite(err).any():

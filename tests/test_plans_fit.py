@@ -253,3 +253,45 @@ def test_the_four_bar_fits_a3_too():
     assert drawn[2].fixed == pps[2].fixed == ()
     for sh in sheets:
         assert drawing.check_no_overlap(sh.items) == []
+
+
+def test_the_written_files_hold_the_scales_drawn(tmp_path):
+    """``crankdyn linkage --example shaper --plans 10,11 --sheet A3`` (through the
+    library): the plans' CSV gives position 11's acceleration plan at μa = 0.05 as drawn,
+    the lever's forces at 10 sit on the μV = 0.008 plan, the report's tables are the
+    files written, and the summary says the lever is drawn on its own μV (ru and en)."""
+    import pandas as pd
+
+    from linkage.study import summary_lines, write_report
+    from plans.study import run_study
+
+    report = run_study(example_path("shaper.toml"), plans=[10, 11], sheet="A3",
+                       plots=False)
+    assert report.plans[1].plans["acceleration"].scale == 0.04        # not yet drawn
+    written = write_report(report, tmp_path, lang="en")
+    table = pd.read_csv(tmp_path / "shaper_plans.csv")
+    acc = table[(table["position"] == 11) & (table["plan"] == "acceleration")]
+    assert set(acc["scale"]) == {0.05}
+    assert (acc["length_mm"] * acc["scale"]).to_numpy() == pytest.approx(
+        acc["value"].to_numpy(), rel=1e-12)
+    forces = pd.read_csv(tmp_path / "shaper_lever_forces.csv")
+    L = report.plans[0].lever
+    assert L.plan_scale == 0.008
+    fu5 = forces[(forces["position"] == 10) & (forces["force"] == "Fu5")].iloc[0]
+    v_s5 = next(v for v in report.plans[0].plans["velocity"].vectors if v.name == "ps5")
+    # the ram's inertia force is horizontal: its arm on the lever (the plan turned 90°)
+    # is the ram's velocity over the lever's μV, 0.008, not the velocity plan's 0.006
+    assert v_s5.scale == 0.006 and abs(v_s5.end.imag) < 1e-9
+    assert abs(fu5["arm_mm"]) == pytest.approx(v_s5.value / 0.008, rel=1e-9)
+    assert abs(fu5["arm_mm"]) > 100
+    for name, df in report.tables().items():
+        if name.startswith("shaper_plans") or name.startswith("shaper_lever"):
+            assert df.to_csv(index=False, lineterminator="\n") == (
+                tmp_path / name).read_text(encoding="utf-8"), name
+    en = summary_lines(report, "en", written)
+    assert [ln.strip() for ln in en if "to fit the A3 sheet" in ln] == [
+        "the lever drawn on the velocity plan at kv = 0.008 (m/s)/mm, to fit the A3 sheet"]
+    assert not [ln for ln in en if re.search("[а-яА-ЯёЁ]", ln)]
+    ru = summary_lines(report, "ru", written)
+    assert sum("μV = 0.008 (м/с)/мм, чтобы поместиться на листе A3" in ln for ln in ru) == 1
+    assert any("μa = 0.05 (м/с²)/мм" in ln for ln in ru)
