@@ -150,8 +150,9 @@ def _field(size):
 
 
 def block_fits(b, size):
-    """Does block ``b`` (:class:`plans.layout.Block`) fit the field of a ``size`` sheet, beside or above the title
-    block (clear of it by GAP as :func:`_pack` places it: its corner holds a GAP too)?"""
+    """Does block ``b`` (:class:`plans.layout.Block`) fit the field of a ``size`` sheet,
+    beside or above the title block (clear of it by GAP as :func:`_pack` places it: its
+    corner holds a GAP too)?"""
     x0, y0, x1, y1, tb_left, tb_top = _field(size)
     if b.width > x1 - x0 or b.height > y1 - y0:
         return False
