@@ -621,7 +621,9 @@ def build_chain_plans(result, positions=None, *, scales=None):
         Position numbers of the plan of positions (default: all).
     scales : dict, optional
         Fixed ``velocity`` [(m/s)/mm], ``acceleration`` [(m/s²)/mm], ``force_dyad`` (every
-        group's polygon) and ``force_crank`` [N/mm] scales; missing ones are the
+        group's polygon; ``force_<i>_<j>`` one group's), ``force_crank`` and ``lever``
+        [N/mm] scales, ``lever_velocity`` (the turned velocity plan of the lever, default
+        the velocity plan's) [(m/s)/mm]; missing ones are the
         textbook's round scales (:func:`plans.model.round_scale`: pa and πa at
         most 150 mm, the whole plan at most :data:`plans.model.MAX_PLAN_MM`).
 
@@ -666,7 +668,7 @@ def build_chain_plans(result, positions=None, *, scales=None):
                                                        MAX_PLAN_MM))
             plans[kind] = _plan(kind, rows_, polys, B.pts, mu, which)
         for kind, (items, polys, inner, n2) in _force_items(result, P).items():
-            fixed = scales.get("force_dyad" if kind != "force_crank" else "force_crank")
+            fixed = scales.get(kind) or (kind != "force_crank" and scales.get("force_dyad"))
             if fixed:
                 mu = fixed
             else:
@@ -690,7 +692,11 @@ def build_chain_plans(result, positions=None, *, scales=None):
         for j in list(res.mech.frame) + list(res.joints):
             geo[j] = P.point(j)[0]
         pos = int(pos_col.iat[i]) if numbered else None
-        lever = _lever(result, zl, P, plans["velocity"], scales.get("lever"))
+        lplan = plans["velocity"]
+        if scales.get("lever_velocity"):            # the lever on a plan of its own scale
+            lplan = _plan("velocity", B.vel, B.vpoly, B.pts, scales["lever_velocity"], 0)
+        lever = _lever(result, zl, P, lplan, scales.get("lever"))
+        fixed = [k for k in scales if scales[k]]
         out.append(PositionPlans(pos, math.degrees(float(res.phi[i])) % 360.0, "chain",
-                                 plans, lever, angular, geo))
+                                 plans, lever, angular, geo, tuple(fixed)))
     return out

@@ -9,6 +9,10 @@ is printed at 100 %.
 """
 from __future__ import annotations
 
+from dataclasses import replace
+
+import numpy as np
+
 from .errors import PlanError, Problem
 from .errors import Text as Words
 from .layout import (CAP_EM, FONT, H_LABEL, H_POINT, S_MAIN, S_THIN, Arrow, Block, Circle,
@@ -17,7 +21,8 @@ from .layout import (CAP_EM, FONT, H_LABEL, H_POINT, S_MAIN, S_THIN, Arrow, Bloc
 
 __all__ = ["position_blocks", "position_figure", "layout_sheets", "sheet_figure",
            "render_items", "SHEETS", "FORMATS", "title_fields", "TITLE_KEYS",
-           "frame_items", "fit_format"]
+           "frame_items", "fit_format", "fit_plans", "layout_fitted", "block_fits",
+           "MIN_LONGEST_MM", "MIN_ARROW_MM"]
 
 PT = 72.0 / 25.4            # points per mm
 #: Sheet sizes, landscape (ГОСТ 2.301). [mm]
@@ -124,6 +129,176 @@ def position_blocks(pp, lang="ru"):
     return [diagram_block(pp, "velocity", lang), diagram_block(pp, "acceleration", lang),
             lever_block(pp, lang), diagram_block(pp, "force_dyad", lang),
             diagram_block(pp, "force_crank", lang)]
+
+
+# ----------------------------------------------------------------- fitting the sheet
+
+#: The coarsest sensible drawing of a plan: its longest vector at least this long. [mm]
+MIN_LONGEST_MM = 30.0
+#: The coarsest sensible force scale of Zhukovsky's lever: its largest force arrow at
+#: least this long. [mm]
+MIN_ARROW_MM = 10.0
+
+
+def _field(size):
+    """The working field of a ``size`` sheet inside its frame, GAP from it, and the title
+    block's left and top edges: ``(x0, y0, x1, y1, tb_left, tb_top)``. [mm]"""
+    W, H = SHEETS[size]
+    return (FRAME_LEFT + GAP, FRAME_OTHER + GAP, W - FRAME_OTHER - GAP,
+            H - FRAME_OTHER - GAP, W - FRAME_OTHER - TITLE_BLOCK[0],
+            FRAME_OTHER + TITLE_BLOCK[1])
+
+
+def block_fits(b, size):
+    """Does block ``b`` (:class:`plans.layout.Block`) fit the field of a ``size`` sheet,
+    beside or above the title block (clear of it by GAP as :func:`_pack` places it: its
+    corner holds a GAP too)?"""
+    x0, y0, x1, y1, tb_left, tb_top = _field(size)
+    if b.width > x1 - x0 or b.height > y1 - y0:
+        return False
+    return b.height <= y1 - tb_top - 2 * GAP or b.width <= tb_left - 2 * GAP - x0
+
+
+def _next_scale(mu):
+    """The next coarser round scale after ``mu`` (:data:`plans.model.ROUND_MANTISSAS`)."""
+    from .model import round_scale
+
+    return round_scale(mu * 1.001, 1.0)
+
+
+def _series(mu, limit):
+    """Round scales from ``mu`` (itself first) while they are at most ``limit``."""
+    out = [mu]
+    while True:
+        mu = _next_scale(mu)
+        if mu > limit * (1 + 1e-12):
+            return out
+        out.append(mu)
+
+
+def _longest(vectors):
+    return max([v.length_mm for v in vectors] + [0.0])
+
+
+def _rebuild(result, pp, scales):
+    """Position ``pp`` built again at ``scales`` (the others the textbook's defaults), its
+    ``fixed`` kept: the caller's scales stay the caller's."""
+    from .chain_model import build_chain_plans
+    from .model import build_plans
+
+    if pp.position is not None:
+        where = [pp.position]
+    else:                                  # an explicit crank angle: its 1-based row
+        phi = result.kinematics["phi_deg"].to_numpy(float)
+        where = [int(np.flatnonzero(np.abs(phi - pp.phi_deg) < 1e-9)[0]) + 1]
+    build = build_chain_plans if pp.kind == "chain" else build_plans
+    new, = build(result, where, scales=scales)
+    return replace(new, fixed=pp.fixed)
+
+
+def _given(pp):
+    """The caller's fixed scales of ``pp`` as a ``scales`` dict of the build."""
+    out = {}
+    for k in pp.fixed:
+        if k == "lever":
+            out[k] = pp.lever.scale
+        elif k == "lever_velocity":
+            out[k] = pp.lever.plan_scale
+        elif k in pp.plans:
+            out[k] = pp.plans[k].scale
+        elif k == "force_dyad":            # a chain: every group's polygon
+            out[k] = next(p.scale for n, p in pp.plans.items()
+                          if n.startswith("force_") and n != "force_crank")
+    return out
+
+
+def _is_fixed(pp, kind):
+    return kind in pp.fixed or (pp.kind == "chain" and "force_dyad" in pp.fixed
+                                and kind.startswith("force_") and kind != "force_crank")
+
+
+def _fit_position(result, pp, size, lang):
+    """``pp`` with every diagram at the largest round scale at which it fits the field
+    of a ``size`` sheet (a diagram that fits keeps its scale; the caller's fixed scales
+    are kept), and its blocks in ``lang``.  A plan is made coarser, one round step at a
+    time, while its longest vector stays :data:`MIN_LONGEST_MM` long; the lever first
+    at its force scale (the largest arrow down to :data:`MIN_ARROW_MM`), then on a
+    coarser copy of the velocity plan (its own μV, printed on the sheet).  What still
+    does not fit is left as it is (:func:`layout_sheets` names it)."""
+    blocks = position_blocks(pp, lang)
+    if all(block_fits(b, size) for b in blocks):
+        return pp, blocks
+    scales = _given(pp)
+    for kind in list(pp.plans):
+        if block_fits(diagram_block(pp, kind, lang), size) or _is_fixed(pp, kind):
+            continue
+        mu0 = pp.plans[kind].scale
+        top = mu0 * _longest(pp.plans[kind].vectors) / MIN_LONGEST_MM
+        for mu in _series(mu0, top)[1:]:
+            trial = _rebuild(result, pp, {**scales, kind: mu})
+            if block_fits(diagram_block(trial, kind, lang), size):
+                pp, scales[kind] = trial, mu
+                break
+    if pp.lever is not None and not block_fits(lever_block(pp, lang), size):
+        pp = _fit_lever(result, pp, scales, size, lang)
+    return pp, position_blocks(pp, lang)
+
+
+def _fit_lever(result, pp, scales, size, lang):
+    """The lever of ``pp`` at the largest turned plan, then the largest force scale, at
+    which it fits (see :func:`_fit_position`); ``pp`` unchanged when none does."""
+    mu_v0 = pp.lever.plan_scale or pp.plans["velocity"].scale
+    segs = [abs(s[2] - s[1]) for s in pp.lever.segments] + [0.0]
+    plan_scales = ([mu_v0] if "lever_velocity" in pp.fixed else
+                   _series(mu_v0, mu_v0 * max(segs) / MIN_LONGEST_MM))
+    for mu_v in plan_scales:
+        base = dict(scales)
+        if mu_v != mu_v0:
+            base["lever_velocity"] = mu_v
+        trial = _rebuild(result, pp, base) if base != scales else pp
+        if "lever" in pp.fixed:
+            if block_fits(lever_block(trial, lang), size):
+                return trial
+            continue
+        mu_f0 = trial.lever.scale
+        forces = _series(mu_f0, mu_f0 * _longest(trial.lever.arrows()) / MIN_ARROW_MM)
+        # the coarsest force scale first: when even it does not fit, the next plan scale
+        if not block_fits(lever_block(_rebuild(result, pp, {**base, "lever": forces[-1]})
+                                 if len(forces) > 1 else trial, lang), size):
+            continue
+        for mu_f in forces:
+            t = trial if mu_f == mu_f0 else _rebuild(result, pp, {**base, "lever": mu_f})
+            if block_fits(lever_block(t, lang), size):
+                return t
+    return pp
+
+
+def fit_plans(result, plans, size="A1", lang="ru"):
+    """The plans of ``plans`` made to fit a ``size`` sheet: each diagram that does not
+    fit the sheet's field (beside or above the title block) is built again at the
+    largest round scale at which it fits (the plans one round step at a time, the
+    lever at its force scale, then on a coarser copy of the velocity plan); the rest,
+    and the scales the caller fixed, stay as they are (the same objects).  The printed
+    scale of a diagram is the one it is drawn at.
+
+    Parameters
+    ----------
+    result : linkage.AnalysisResult or linkage.chain_analysis.ChainAnalysis
+    plans : list of PositionPlans
+        From :func:`plans.build_plans` or :func:`plans.build_chain_plans`.
+    size : {"A1", "A3"}
+    lang : str
+        The language of the drawing (its texts are part of each diagram's size).
+
+    Returns
+    -------
+    list of PositionPlans
+    """
+    return [pp for pp, _ in _fit(result, plans, size, lang)]
+
+
+def _fit(result, plans, size, lang):
+    return [_fit_position(result, pp, size, lang) for pp in plans]
 
 
 def _pack(blocks, x0, y0, x1, y1, corner=None, gap=GAP):
@@ -261,7 +436,15 @@ def _title_block_items(x0, y0, fields, number, count, lang):
 
 
 def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
-    """Lay out the plan of positions and the chosen plans on as many sheets as needed.
+    """Lay out the plan of positions and the chosen plans on as many sheets as needed
+    (:func:`layout_fitted`, the sheets alone)."""
+    return layout_fitted(result, plans, lang, size, fields)[0]
+
+
+def layout_fitted(result, plans, lang="ru", size="A1", fields=None):
+    """Lay out the plan of positions and the chosen plans on as many sheets as needed,
+    each diagram at the largest round scale at which it fits the field
+    (:func:`fit_plans`: a diagram that fits at its scale keeps it).
 
     Parameters
     ----------
@@ -275,21 +458,28 @@ def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
 
     Returns
     -------
-    list of Sheet
+    sheets : list of Sheet
         With the frame (ГОСТ 2.104: 20 mm on the left, 5 mm elsewhere), the title block
         185 × 55 mm in the lower right corner, and the diagrams packed in rows without
         overlap (at least 8 mm apart, clear of the title block).
+    plans : list of PositionPlans
+        The plans as drawn (:func:`fit_plans`).
 
     Raises
     ------
     PlanError
-        A diagram larger than the sheet's working field (choose a larger scale or A1).
+        A diagram larger than the sheet's working field even at the coarsest sensible
+        scale (its longest vector :data:`MIN_LONGEST_MM`, the lever's largest force
+        :data:`MIN_ARROW_MM`), or at a scale the caller fixed: choose A1 or a coarser
+        scale.
     """
     if size not in SHEETS:
         raise PlanError(Problem("size", Words("errors.plans.drawing.valid",
                                               {"size": size, "items": ', '.join(SHEETS)})))
     W, H = SHEETS[size]
     fields = fields or title_fields(result.spec)
+    fitted = _fit(result, plans, size, lang)
+    plans = [pp for pp, _ in fitted]
     chosen = []
     K = result.kinematics
     for pp in plans:
@@ -301,20 +491,11 @@ def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
         blocks = [chain_positions_block(result, chosen, lang, longest_mm=0.3 * W)]
     else:
         blocks = [positions_block(result, chosen, lang, longest_mm=0.3 * W)]
-    per = [position_blocks(pp, lang) for pp in plans]
+    per = [b for _, b in fitted]
     for group in per:
         blocks += group
-    x0, x1 = 20.0 + GAP, W - 5.0 - GAP
-    y0, y1 = 5.0 + GAP, H - 5.0 - GAP
-    tb_left, tb_top = W - 5.0 - 185.0, 5.0 + 55.0
-
-    def fits(b):
-        if b.width > x1 - x0 or b.height > y1 - y0:
-            return False
-        # clear of the title block by GAP as _pack places it (its corner holds a GAP too)
-        return b.height <= y1 - tb_top - 2 * GAP or b.width <= tb_left - 2 * GAP - x0
-
-    too_big = [b.title for b in blocks if not fits(b)]
+    x0, y0, x1, y1, tb_left, tb_top = _field(size)
+    too_big = [b.title for b in blocks if not block_fits(b, size)]
     if too_big:
         raise PlanError([Problem("size", Words("errors.plans.drawing.does_not_fit",
                                                {"size": size, "t": t, "x1": x1 - x0,
@@ -375,7 +556,7 @@ def layout_sheets(result, plans, lang="ru", size="A1", fields=None):
     for k, sh in enumerate(sheets):
         sh.number, sh.count = k + 1, len(sheets)
         sh.items = frame_items(W, H, fields, sh.number, sh.count, lang) + sh.items
-    return sheets
+    return sheets, plans
 
 
 def frame_items(W, H, fields, number=1, count=1, lang="ru"):

@@ -410,9 +410,14 @@ def lever_block(pp, lang="ru") -> Block:
     bbox = _items_bbox(items)
     title, mu, unit, note = w["title"]["lever"], w["mu"]["lever"], w["unit"]["lever"], \
         w["turned"]
+    scales = f"{mu} = {fmt(L.scale, lang)} {unit}"
+    mu_v = L.plan_scale
+    if mu_v is not None and mu_v != pp.plans["velocity"].scale:
+        # drawn on a coarser copy of the velocity plan (to fit the sheet): its μV too
+        scales = (f"{w['mu']['velocity']} = {fmt(mu_v, lang)} {w['unit']['velocity']}, "
+                  + scales)
     return _titled(items, bbox, [(title, H_TITLE),
-                                 (f"{_where(pp, lang)}, {mu} = {fmt(L.scale, lang)} {unit}",
-                                  H_POINT),
+                                 (f"{_where(pp, lang)}, {scales}", H_POINT),
                                  (note, H_LABEL)], f"{pp.tag}:lever")
 
 

@@ -54,8 +54,9 @@ __all__ = ["Vector", "Plan", "LeverForce", "Lever", "PositionPlans", "round_scal
 ROUND_MANTISSAS = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
 #: Plan kinds, in the order of the course project.
 PLAN_KINDS = ("velocity", "acceleration", "force_dyad", "force_crank")
-#: Scales that :func:`build_plans` accepts: the plans' and the Zhukovsky lever's forces.
-SCALE_KINDS = PLAN_KINDS + ("lever",)
+#: Scales that :func:`build_plans` accepts: the plans', the Zhukovsky lever's forces and
+#: the lever's own turned velocity plan (``lever_velocity``, default the velocity plan's).
+SCALE_KINDS = PLAN_KINDS + ("lever", "lever_velocity")
 _UNITS = {"velocity": "m/s", "acceleration": "m/s2", "force_dyad": "N", "force_crank": "N"}
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
@@ -265,6 +266,10 @@ class Lever:
     F_kinetostatic_N : float
         Fур = Mур/lOA from the kinetostatic Mур (:func:`balancing_force`), same sign
         convention as ``balancing_force_N``. [N]
+    plan_scale : float or None
+        μV of the turned velocity plan the lever is drawn on: the velocity plan's own
+        scale, or a coarser round one where the lever would not fit the sheet
+        (:func:`plans.drawing.fit_plans`; Fур and Mур do not depend on it). [(m/s)/mm]
     """
 
     forces: list
@@ -279,6 +284,7 @@ class Lever:
     segments: list
     scale: float
     F_kinetostatic_N: float
+    plan_scale: float | None = None
 
     @property
     def balancing_force(self) -> complex:
@@ -319,6 +325,9 @@ class PositionPlans:
         ``crank-rocker`` or ``crank-slider``.
     geometry : dict of str to complex
         Joint positions of the mechanism at this position (O, A, B, C …). [m]
+    fixed : tuple of str
+        The scales the caller fixed (keys of ``scales``: ``velocity``, ``force_dyad``,
+        ``lever`` …); :func:`plans.drawing.fit_plans` never changes them.
     """
 
     position: int | None
@@ -328,6 +337,7 @@ class PositionPlans:
     lever: Lever
     angular: list
     geometry: dict
+    fixed: tuple = ()
 
     @property
     def tag(self) -> str:
@@ -738,7 +748,7 @@ def close_lever(forces, vplan: Plan, zA, vA, crank_length, M_kin, scale=None,
         big = max([abs(fc.force) for fc in forces] + [abs(Fb)])
         scale = round_scale(big or 1.0, LEVER_LONGEST_MM)
     return Lever(forces, Fb, at_a, 1j * e2, pa, M_lever, M_kin, diff, points, segments,
-                 scale, F_kin_N)
+                 scale, F_kin_N, mu)
 
 
 def _angular(spec, K, i, vplan, aplan):
@@ -771,7 +781,8 @@ def build_plans(result, positions=None, *, scales=None, crank_angles_deg=None):
         Position numbers of the plan of positions (default: all rows of ``result``).
     scales : dict, optional
         Fixed scales: ``velocity`` [(m/s)/mm], ``acceleration`` [(m/s²)/mm],
-        ``force_dyad``, ``force_crank``, ``lever`` [N/mm]; missing ones are the
+        ``force_dyad``, ``force_crank``, ``lever`` [N/mm], ``lever_velocity`` (the
+        velocity plan the lever is drawn on) [(m/s)/mm]; missing ones are the
         textbook's round scales (:func:`round_scale`; pa, πa and the largest force of a
         polygon ≤ 150 mm, the largest force on the lever ≤ :data:`LEVER_LONGEST_MM`).
     crank_angles_deg : ignored unless ``result`` was analysed at explicit angles; then
@@ -833,7 +844,10 @@ def build_plans(result, positions=None, *, scales=None, crank_angles_deg=None):
                         or 1.0)
         crank = scale_of("force_crank", lambda m: _force_crank(spec, K, F, i, m),
                          lambda p: max(v.length_mm for v in p.vectors) or 1.0)
-        lever = _lever(spec, K, F, i, vplan, scales.get("lever"))
+        lplan = vplan
+        if scales.get("lever_velocity"):            # the lever on a plan of its own scale
+            lplan = _velocity_plan(spec, K, i, scales["lever_velocity"], pts)
+        lever = _lever(spec, K, F, i, lplan, scales.get("lever"))
         geo = {"O": 0j, "A": _c(K, i, "A", ""), "B": _c(K, i, "B", "")}
         if course_of(spec).angular:           # the rocker's pivot C on the frame
             geo["C"] = complex(spec.ground * math.cos(spec.ground_angle),
@@ -844,7 +858,8 @@ def build_plans(result, positions=None, *, scales=None, crank_angles_deg=None):
         out.append(PositionPlans(pos, _row(K, i, "phi_deg"), spec.kind,
                                  {"velocity": vplan, "acceleration": aplan,
                                   "force_dyad": dyad, "force_crank": crank},
-                                 lever, _angular(spec, K, i, vplan, aplan), geo))
+                                 lever, _angular(spec, K, i, vplan, aplan), geo,
+                                 tuple(k for k in SCALE_KINDS if scales.get(k))))
     if problems:
         raise PlanError(problems)
     return out

@@ -32,7 +32,7 @@ from pathlib import Path
 
 from crankbase.output import safe_name, save_figure
 
-from .drawing import layout_sheets, position_figure, sheet_figure, title_fields
+from .drawing import layout_fitted, position_figure, sheet_figure, title_fields
 from .dxf import write_dxf
 from .tables import (error_table, lever_forces_table, lever_table, plans_table,
                      student_table)
@@ -89,14 +89,17 @@ def write_plans(result, plans, folder, *, name=None, lang="ru", sheet="A1",
     -------
     dict
         ``{"sheets": number of sheets, "errors": the error table or None, "name": the
-        file stem}``.
+        file stem, "plans": the plans as drawn}``: a diagram too large for the sheet at
+        its default scale is drawn at a coarser round one (:func:`plans.drawing.fit_plans`)
+        and every file (the CSVs, each position's figure, the sheets) holds that scale.
     """
     from matplotlib.backends.backend_pdf import PdfPages
 
     folder = Path(folder)
     stem = name if name is not None else safe_name(result.spec.name, "linkage")
     fields = title_fields(result.spec)
-    sheets = layout_sheets(result, plans, lang, sheet, fields)   # raises before writing
+    # raises before writing; the plans at the scales drawn
+    sheets, plans = layout_fitted(result, plans, lang, sheet, fields)
     for pp in plans:
         fig = position_figure(pp, lang)
         save_figure(fig, folder / f"{stem}_plans_{pp.tag}", formats=("svg", "pdf"))
@@ -127,7 +130,16 @@ def write_plans(result, plans, folder, *, name=None, lang="ru", sheet="A1",
                 fig.savefig(sheet_file(k, "png"), dpi=60)
     for k, sh in enumerate(sheets):
         write_dxf(sh, sheet_file(k, "dxf"))
-    return {"sheets": len(sheets), "errors": errors, "name": stem}
+    return {"sheets": len(sheets), "errors": errors, "name": stem, "plans": plans}
+
+
+def _lever_plan(t, pp, size):
+    """The line that says a lever is drawn on a coarser copy of the velocity plan (to fit
+    the sheet, :func:`plans.drawing.fit_plans`), or none."""
+    mv = pp.lever.plan_scale
+    if mv is None or mv == pp.plans["velocity"].scale:
+        return []
+    return ["      " + t("plans.summary.lever_plan", mv=f"{mv:g}", size=size)]
 
 
 def summary_lines(plans, size, sheets, lang="ru", errors=None):
@@ -164,6 +176,7 @@ def summary_lines(plans, size, sheets, lang="ru", errors=None):
                                            diff=format_snapped(L.difference_percent, ".1e"),
                                            Fb=format_snapped(L.balancing_force_N, ".3f"),
                                            mf=f"{L.scale:g}"))
+                lines += _lever_plan(t, pp, size)
             continue
         scale = max(abs(L.M_lever_Nm), abs(L.M_kinetostatic_Nm))
         lines.append("    " + t("plans.summary.lever", tag=pp.tag,
@@ -171,6 +184,7 @@ def summary_lines(plans, size, sheets, lang="ru", errors=None):
                                  kin=format_snapped(L.M_kinetostatic_Nm, ".4f", scale),
                                  diff=format_snapped(L.difference_percent, ".1e"),
                                  Fb=format_snapped(L.balancing_force_N, ".3f")))
+        lines += _lever_plan(t, pp, size)
     if errors is not None and len(errors):
         err = errors["error_percent"].to_numpy(float)
         if np.isfinite(err).any():

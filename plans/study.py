@@ -44,7 +44,9 @@ class PlansReport(LinkageReport):
     Attributes
     ----------
     plans : list of plans.PositionPlans or None
-        The plans at the chosen positions (None: not asked).
+        The plans at the chosen positions (None: not asked); once written (or summed
+        up), as drawn on the sheet: a diagram that does not fit the sheet at its
+        default scale at a coarser round one (:func:`plans.drawing.fit_plans`).
     sheet : str
         Drawing sheet size, ``"A1"`` or ``"A3"``.
     measured : pandas.DataFrame or None
@@ -93,6 +95,7 @@ class PlansReport(LinkageReport):
         before = set(stage.iterdir())
         info = write_plans(self.result, self.plans, stage, name=self.name, lang=lang,
                            sheet=self.sheet, measurements=self.measured, previews=previews)
+        self.plans = info["plans"]          # as drawn: a diagram fitted to the sheet
         made = {p.name for p in set(stage.iterdir()) - before}
         listed = output_names(self.name, [pp.tag for pp in self.plans], info["sheets"],
                               self.measured is not None, previews)
@@ -108,10 +111,11 @@ class PlansReport(LinkageReport):
         if written is not None:
             sheets = written.sheets
         else:
-            from .drawing import layout_sheets, title_fields
+            from .drawing import layout_fitted, title_fields
 
-            sheets = len(layout_sheets(self.result, self.plans, lang, self.sheet,
-                                       title_fields(self.spec)))
+            drawn, self.plans = layout_fitted(self.result, self.plans, lang, self.sheet,
+                                              title_fields(self.spec))
+            sheets = len(drawn)
         errors = (self.tables()[f"{self.name}_plan_errors.csv"]
                   if self.measured is not None else None)
         return summary_lines(self.plans, self.sheet, sheets, lang, errors=errors)

@@ -320,10 +320,12 @@ def test_bad_input_exits_2_and_writes_nothing(tmp_path, capsys):
     assert err == ["crankdyn linkage: error: --plans: position 13 is not in the analysis; "
                    "valid: 1…12"]
     assert not out.exists()
-    # position 11's acceleration plan (≈ 250 mm) does not fit an A3 sheet beside the
-    # title block: refused before anything is written
-    assert main(["linkage", "--lang", "en",
-                 spec, "-o", str(out), "--plans", "11", "--sheet", "A3"]) == 2
+    # position 11's acceleration plan (≈ 250 mm at μa = 0.4) does not fit an A3 sheet
+    # beside the title block: at the default scale it is drawn at the next round one
+    # (plans.drawing.fit_plans), at the scale the student fixed it is refused before
+    # anything is written
+    assert main(["linkage", "--lang", "en", spec, "-o", str(out), "--plans", "11",
+                 "--sheet", "A3", "--mu-a", "0.4"]) == 2
     err = capsys.readouterr().err
     assert "does not fit" in err and "Traceback" not in err
     assert not out.exists()
