@@ -56,6 +56,12 @@ def add_parser(sub, t=None):
     return p
 
 
+#: The library's argument names in its problems → this command's options.
+OPTIONS = {"positions": "--plans", "size": "--sheet", "plans": "--plans", "sheet": "--sheet",
+           "step": "--step", "measured": "--measured", "mu_v": "--mu-v", "mu_a": "--mu-a",
+           "mu_f": "--mu-f", "mu_lever": "--mu-lever"}
+
+
 def run(args) -> int:
     from crankbase.errors import SpecError
 

@@ -222,13 +222,18 @@ def test_help_is_fast_and_lists_synth():
 
 def test_synth_help_mentions_the_modes(capsys):
     with pytest.raises(SystemExit):
-        main(["synth", "--help"])
+        main(["synth", "--help", "--lang", "en"])
     text = capsys.readouterr().out
     for opt in ("--phi0", "--l1", "--l2", "--l3", "--mu-min", "--ground", "--output",
                 "--lang"):
         assert opt in text
     assert "--lang LANG" in text and "one of ru, en, zh" in " ".join(text.split())
     assert "default" in text.split("--lang")[-1]
+    # the default help is Russian, the reports' default language
+    with pytest.raises(SystemExit):
+        main(["synth", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert "одно из ru, en, zh" in text and "по умолчанию" in text.split("--lang")[-1]
 
 
 def test_toml_writer_round_trip():
