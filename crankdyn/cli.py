@@ -66,6 +66,8 @@ class HelpFormatter(argparse.HelpFormatter):
 
     @staticmethod
     def _cjk_lines(text, width):
+        # a number keeps its unit on its line ("100–150 mm"): a no-break space between
+        text = re.sub(r"(?<=\d) (?=[A-Za-zμ°%])", "\u00a0", text)
         units = []                     # words, single CJK characters and spaces
         for m in re.finditer(r" |[^ ]", text):
             ch = m.group(0)
@@ -90,7 +92,7 @@ class HelpFormatter(argparse.HelpFormatter):
                 line += unit
         if line.strip():
             lines.append(line.rstrip())
-        return lines
+        return [line.replace("\u00a0", " ") for line in lines]
 
 
 class Parser(argparse.ArgumentParser):
