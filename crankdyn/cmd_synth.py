@@ -13,7 +13,8 @@ is checked before anything is written, by the library's one check
 (:func:`linkage.synthesis_study.check_inputs`, the synthesis page's too); bad input
 prints one line per problem, each naming its option, and exits 2.
 ``--lang`` (default ru) is the language of the plots, the workbook (its title, sheet names
-and the values that are words; both header rows, Russian and English, stay) and the
+and the values that are words; its header rows are the seed's Russian, Chinese in zh, over
+the CSV column names) and the
 terminal summary; English output holds no Cyrillic letter (the family is KKM-φ0).
 numpy, pandas, matplotlib and openpyxl are imported inside :func:`run` only.
 """

@@ -2,13 +2,10 @@
 ``crankdyn <command> --help`` are built in the language asked with ``--lang`` (Russian by
 default, as every report) from the text layer's ``cli`` area, read alone and without Babel.
 
-The rule of a help "in Russian": after taking out what is typed rather than read (option
-names, metavars, the choices and example names the parser accepts, the program's and the
-commands' names, `code spans`, ``%`` specifiers, file names and paths, TOML table names,
-identifiers with an underscore, all-capital acronyms such as CSV, TOML, PDF) and a short
-list of the textbooks' Latin symbols (Pj, Kr, pa, tg, cos, sin), no Latin word of two or
-more letters is left.  English: no Cyrillic letter.  Chinese: no Cyrillic letter, and every
-line that still holds a word after the same taking-out holds a CJK character."""
+The rule of a help "in Russian", "in English", "in Chinese" is tests/language_rules.py's;
+what is typed rather than read is what the parser knows: option names, metavars, the
+choices and example names it accepts, the program's and the commands' names.  Chinese: every
+line that still holds a word (not a unit) after the taking-out holds a CJK character."""
 from __future__ import annotations
 
 import re
@@ -24,17 +21,7 @@ from crankdyn.cli import HelpFormatter, build_parser, main
 COMMANDS = (None, "engine", "linkage", "synth", "dynamics", "balance", "torsion", "check",
             "serve")
 LANGS = ("ru", "en", "zh")
-CYRILLIC = re.compile(r"[А-Яа-яЁё]")
-CJK = re.compile(r"[\u4e00-\u9fff]")
-#: The textbooks' Latin symbols a Russian help writes as they are printed: Pj (inertia
-#: force of the reciprocating masses), Kr (Kr.ш, the rod's centrifugal force), pa (the
-#: velocity plan's segment from the pole), tg/cos/sin (the Russian names of the functions).
-SYMBOLS = {"Pj", "Kr", "pa", "tg", "cos", "sin"}
-#: SI unit symbols, which a Chinese text writes in Latin letters (GB 3102): a wrapped line
-#: may hold one beside its number.
-UNITS = {"mm", "Hz", "rad", "MPa", "kg", "rpm", "min", "N"}
-_FILE = re.compile(r"\S*(?:[_/<>=\[\]|]|\.(?:csv|xlsx|xlsm|toml|png|svg|pdf|dxf)\b)\S*")
-
+from language_rules import CJK, CYRILLIC, UNITS, latin_words, reading_text
 
 def _help(capsys, command, lang, columns=80, monkeypatch=None):
     argv = ([command] if command else []) + ["--help"]
@@ -69,21 +56,11 @@ def _typed_words(command):
 
 
 def _reading_text(text, command):
-    """``text`` without what is typed rather than read (the module docstring's rule); the
-    lines are kept (a code span or a file name becomes spaces)."""
-    blank = lambda m: re.sub(r"[^\n]", " ", m.group(0))          # noqa: E731
-    text = re.sub(r"`[^`]*`", blank, text)
-    text = re.sub(r"%\(\w+\)s|%%", " ", text)
-    for word in sorted(_typed_words(command), key=len, reverse=True):
-        text = re.sub(rf"(?<![\w-]){re.escape(word)}(?![\w-])", blank, text)
-    text = _FILE.sub(blank, text)
-    text = re.sub(r"\b[A-Z][A-Z0-9]+\b", blank, text)             # CSV, TOML, DIR, README
-    return text
+    return reading_text(text, _typed_words(command))
 
 
 def _latin_words(text, command):
-    return [w for w in re.findall(r"(?<![\w])[A-Za-z]{2,}(?![\w])",
-                                  _reading_text(text, command)) if w not in SYMBOLS]
+    return latin_words(text, _typed_words(command))
 
 
 def test_the_rule_catches_english_and_passes_typed_words():
