@@ -8,6 +8,8 @@ help), read alone and without Babel (:func:`crankbase.texts.area_texts`), so tha
 ``crankdyn --help`` stays fast."""
 from __future__ import annotations
 
+import functools
+
 from crankbase.texts import OFFERED
 
 __all__ = ["LANG_CHOICES", "LANG_HELP", "DEFAULT_LANG", "cli_texts", "lang_help"]
@@ -23,9 +25,10 @@ DEFAULT_LANG = "ru"
 LANG_HELP = "one of %(choices)s; "
 
 
+@functools.lru_cache(maxsize=None)
 def cli_texts(lang: str | None = None):
     """The command line's words (the ``cli`` area) in ``lang``; Russian, the reports'
-    default, when ``lang`` is None or has no catalogue."""
+    default, when ``lang`` is None or has no catalogue.  Cached: read once a process."""
     from crankbase.texts import area_texts, catalogue_languages
 
     if lang not in catalogue_languages():

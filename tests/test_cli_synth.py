@@ -105,7 +105,7 @@ def test_table1_csv_and_workbook(tmp_path):
     csv = pd.read_csv(out / "kkm-30_mechanism.csv").iloc[0]
     assert mech["l1"] == csv["l1"] and mech["mu_min_deg"] == csv["mu_min_deg"]
     labels = {r[1]: r[0] for r in wb["Механизм"].iter_rows(min_row=3, values_only=True)}
-    assert labels["l1"] == "Кривошип λ1" and labels["ground_m"] == "Стойка l0, м"
+    assert labels["l1"] == "Кривошип λ1" and labels["mu_min_deg"] == "Минимальный угол передачи μmin, °"
 
 
 def test_equal_l2_l3_example(tmp_path, capsys):
