@@ -185,9 +185,7 @@ def read_area(lang: str, area: str) -> dict[str, str]:
         m = _PO_LINE.match(line)
         if m:
             if m.group(1) in ("msgid", "msgctxt") and "msgstr" in entry:
-                keep = fuzzy
-                close()
-                fuzzy = keep
+                close()                # the entry before, with its own fuzzy flag
             field = m.group(1)
             entry[field] = _po_string(m.group(2))
         elif line.startswith('"') and line.endswith('"') and field:

@@ -143,6 +143,26 @@ def test_every_cli_key_in_every_language_and_read_alone_as_babel_reads_it(lang):
     assert all(k.startswith("cli.") for k in babel)
 
 
+def test_read_area_reads_what_babel_reads(tmp_path, monkeypatch):
+    """Continued lines, escapes, a fuzzy entry skipped (as texts() skips it) and the one
+    after it kept; a plural entry refused (the fast reader knows no plural rule)."""
+    (tmp_path / "xx").mkdir()
+    po = tmp_path / "xx" / "cli.po"
+    po.write_text('# header\nmsgid ""\nmsgstr ""\n"Language: xx\\n"\n\n'
+                  'msgid "cli.a"\nmsgstr ""\n"one \\"two\\" "\n"three\\n"\n\n'
+                  '#, fuzzy\nmsgid "cli.b"\nmsgstr "draft"\n'
+                  'msgid "cli.c"\nmsgstr "c\\\\d"\n', encoding="utf-8")
+    monkeypatch.setattr(T, "LOCALE_DIR", tmp_path)
+    assert T.read_area("xx", "cli") == {"cli.a": 'one "two" three\n', "cli.c": "c\\d"}
+    with po.open("rb") as fh:
+        babel = {m.id: m.string for m in read_po(fh) if m.id and not m.fuzzy}
+    assert T.read_area("xx", "cli") == babel
+    po.write_text('msgid "cli.n"\nmsgid_plural "cli.n"\nmsgstr[0] "a"\nmsgstr[1] "b"\n',
+                  encoding="utf-8")
+    with pytest.raises(ValueError, match="plural"):
+        T.read_area("xx", "cli")
+
+
 def test_top_level_help_reads_only_the_cli_catalogue():
     """``crankdyn --help`` builds the parser in the language asked and formats its help
     without Babel and without any other catalogue (what keeps it fast: Babel alone costs
