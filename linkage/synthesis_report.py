@@ -111,19 +111,8 @@ def mechanism_table(design, ground_m=None):
 
 #: Words of the terminal summary, the workbook and the spec header: (ru, en).  The
 #: numbers are formatted once and put into the words of either language.
-_WORDS = {
-    "kkm": ("ККМ-{phi0}°", "KKM-{phi0}°"),
-    "toml": ("{kkm}: кривошипно-коромысловый механизм с μ = 90° при φ = {phi0}° от линии "
-             "центров (стойка вдоль +x)\n"
-             "записано командой crankdyn synth; λ1 = {l1}, λ2 = {l2}, λ3 = {l3}, "
-             "μmin = {mu}°\n"
-             "звенья без масс, нагрузок нет: для сил добавьте [links.*] и [[load]]",
-             "{kkm}: crank-rocker with μ = 90° at φ = {phi0}° from the line of centres "
-             "(ground along +x)\n"
-             "written by crankdyn synth; λ1 = {l1}, λ2 = {l2}, λ3 = {l3}, μmin = {mu}°\n"
-             "massless links, no loads: add [links.*] and [[load]] for forces"),
-}
-# the workbook's own words (titles, sheet names): sheet.synth.* of crankbase/locale/*/sheet.po
+# the workbook's own words (titles, sheet names): sheet.synth.* of crankbase/locale/*/sheet.po;
+# the family's name, the header rows and labels, the spec TOML's comment: synth.* of synth.po
 
 #: The Grashof types (linkage.fourbar.GrashofType values) → catalogue keys (synth.po).
 _GRASHOF = {"crank-rocker": "crank_rocker", "double-crank": "double_crank",
@@ -234,11 +223,11 @@ def toml_header(design, lang="en") -> str:
 
     The lengths are written in their shortest round-trip form (``repr``), as in the spec.
     """
-    i = _lang(lang)
+    t = _texts(lang)
     d = design
-    return _WORDS["toml"][i].format(kkm=_WORDS["kkm"][i].format(phi0=f"{d.phi0_deg:g}"),
-                                    phi0=f"{d.phi0_deg:g}", l1=repr(d.l1), l2=repr(d.l2),
-                                    l3=repr(d.l3), mu=f"{d.mu_min_deg:.6g}")
+    return t("synth.toml.header", kkm=t("synth.summary.kkm", phi0=f"{d.phi0_deg:g}"),
+             phi0=f"{d.phi0_deg:g}", l1=repr(d.l1), l2=repr(d.l2), l3=repr(d.l3),
+             mu=f"{d.mu_min_deg:.6g}")
 
 
 # --------------------------------------------------------------------------- workbook
@@ -289,9 +278,7 @@ def write_workbook(path, table, phi0_deg, mechanism=None, lang="en") -> None:
 
     from crankbase.output import ensure_finite
 
-    i = _lang(lang)
-    W = {k: v[i] for k, v in _WORDS.items()}
-    kkm = W["kkm"].format(phi0=f"{phi0_deg:g}")
+    kkm = _texts(lang)("synth.summary.kkm", phi0=f"{phi0_deg:g}")
     ensure_finite(table, "Table 1")
     if mechanism is not None:
         ensure_finite(mechanism, "mechanism")
