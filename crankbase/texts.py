@@ -36,8 +36,8 @@ import string
 from collections.abc import Sequence
 from pathlib import Path
 
-__all__ = ["Texts", "texts", "languages", "catalogue_languages", "keys",
-           "LOCALE_DIR", "REFERENCE", "OfferedLanguages", "OFFERED"]
+__all__ = ["Texts", "texts", "area_texts", "read_area", "languages", "catalogue_languages",
+           "keys", "LOCALE_DIR", "REFERENCE", "OfferedLanguages", "OFFERED"]
 
 #: Folder of the catalogues (shipped as package data of ``crankbase``).
 LOCALE_DIR = Path(__file__).resolve().parent / "locale"
@@ -141,6 +141,86 @@ def texts(lang: str = "ru") -> Texts:
     tr, keys = _catalogue(lang)
     fallback = None if lang == REFERENCE else texts(REFERENCE)
     return Texts(lang, tr, keys, fallback)
+
+
+_PO_LINE = re.compile(r'^(msgctxt|msgid_plural|msgid|msgstr(?:\[\d+\])?)\s+"(.*)"\s*$')
+_PO_ESCAPES = {"n": "\n", "t": "\t", "r": "\r", '"': '"', "\\": "\\"}
+
+
+def _po_string(body: str) -> str:
+    return re.sub(r"\\(.)", lambda m: _PO_ESCAPES.get(m.group(1), m.group(0)), body)
+
+
+def read_area(lang: str, area: str) -> dict[str, str]:
+    """``{key: text}`` of one area's catalogue (``locale/<lang>/<area>.po``), read with the
+    standard library only: no Babel, no other area.  For an area read on a fast path (the
+    command line's ``--help``, area ``cli``); it holds singular entries only (a plural
+    entry is a :class:`ValueError`), fuzzy entries are skipped as :func:`texts` skips
+    them.  A test compares it with Babel's reading of every ``cli.po``."""
+    path = LOCALE_DIR / lang / f"{area}.po"
+    out: dict[str, str] = {}
+    entry: dict[str, str] = {}
+    field = None
+    fuzzy = False
+
+    def close():
+        nonlocal entry, fuzzy
+        if "msgid_plural" in entry:
+            raise ValueError(f"{lang}/{area}.po: {entry.get('msgid')!r} is a plural entry; "
+                             "read_area reads singular entries only")
+        if entry.get("msgid") and "msgstr" in entry and not fuzzy:
+            out[entry["msgid"]] = entry["msgstr"]
+        entry, fuzzy = {}, False
+
+    for raw in path.read_text(encoding="utf-8").splitlines():
+        line = raw.strip()
+        if not line:
+            continue
+        if line.startswith("#"):
+            if line.startswith("#,") and "fuzzy" in line:
+                if entry:
+                    close()
+                fuzzy = True
+            continue
+        m = _PO_LINE.match(line)
+        if m:
+            if m.group(1) in ("msgid", "msgctxt") and "msgstr" in entry:
+                close()                # the entry before, with its own fuzzy flag
+            field = m.group(1)
+            entry[field] = _po_string(m.group(2))
+        elif line.startswith('"') and line.endswith('"') and field:
+            entry[field] += _po_string(line[1:-1])
+        else:
+            raise ValueError(f"{lang}/{area}.po: cannot read the line {raw!r}")
+    close()
+    return out
+
+
+class _AreaTranslations:
+    """The two look-ups :class:`Texts` makes, over one area's ``{key: text}``."""
+
+    def __init__(self, words):
+        self._words = words
+
+    def gettext(self, key):
+        return self._words[key]
+
+    def ngettext(self, key, plural, n):  # read_area refuses plural entries
+        return self._words[key]
+
+
+@functools.lru_cache(maxsize=None)
+def area_texts(lang: str, area: str) -> Texts:
+    """The :class:`Texts` of one area only (:func:`read_area`), cached: read once a process,
+    a key missing in ``lang`` falls back to English's same area.  For the command line's
+    help (area ``cli``), which must not wait for every catalogue (:func:`texts` reads all
+    of them with Babel); the keys are the same as :func:`texts` gives."""
+    if lang not in catalogue_languages():
+        raise KeyError(f"no text catalogue for language {lang!r}; there are: "
+                       + ", ".join(catalogue_languages()))
+    words = read_area(lang, area) if (LOCALE_DIR / lang / f"{area}.po").is_file() else {}
+    fallback = None if lang == REFERENCE else area_texts(REFERENCE, area)
+    return Texts(lang, _AreaTranslations(words), frozenset(words), fallback)
 
 
 def keys(lang: str = REFERENCE) -> frozenset:

@@ -9,31 +9,110 @@ Bad input (a :class:`crankbase.errors.CrankdynError`) is reported one problem pe
 stderr, without a traceback, with exit status 2; no output file is written in that case.
 Any other exception is a bug and shows with its traceback.
 
-argparse's own complaints (an unknown option, a missing argument, a bad choice) are shown in
-the language asked with ``--lang`` (default Russian, as every report): their words come from
-the text layer (``errors.argparse.*``), handed to argparse as its message catalogue for
-this process (:func:`_speak_argparse`).
+The help (``crankdyn --help``, ``crankdyn <command> --help``) and argparse's own complaints
+(an unknown option, a missing argument, a bad choice) are in the language asked with
+``--lang`` (pre-scanned before parsing, :func:`_language_asked`; default Russian, as every
+report).  The help's words are the text layer's ``cli`` area (``cli.<command>.help``,
+``cli.<command>.description``, ``cli.<command>.opt.<option>``, argparse's own headings
+``cli.argparse.*``), read alone and without Babel (:func:`crankdyn.langs.cli_texts`), so
+that ``crankdyn --help`` stays fast; the complaints' words are ``errors.argparse.*``, read
+only when argparse has something to complain about.  Both are handed to argparse as its
+message catalogue for this process (:func:`_speak_argparse`).
 """
 from __future__ import annotations
 
 import argparse
 import importlib
 import os
+import re
 import sys
 
 from . import __version__
+from .langs import DEFAULT_LANG, cli_texts
 
 #: Subcommand modules, in the order ``--help`` lists them.
 SUBCOMMANDS = ("engine", "linkage", "synth", "dynamics", "balance", "torsion", "check", "serve")
 
 
-def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
-        prog="crankdyn",
-        description="Dynamics of crank mechanisms: engine force table (Table 2), "
-                    "planar linkage kinematics and kinetostatics, synthesis.")
-    parser.add_argument("--version", action="version", version=f"crankdyn {__version__}")
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+#: Characters a line may break before or after without a space (CJK ideographs, kana,
+#: fullwidth forms), and the punctuation that never starts a line.
+_CJK = re.compile(r"[\u2e80-\u9fff\uac00-\ud7af\uf900-\ufaff\ufe30-\ufe4f\uff00-\uffef]")
+_NO_LINE_START = set("，。、；：）」』》〉！？…,.;:)]")
+_NO_LINE_END = set("（「『《〈(")
+
+
+def _width(text: str) -> int:
+    """Terminal columns of ``text``: two for a wide (CJK) character, one otherwise."""
+    return sum(2 if _CJK.match(ch) else 1 for ch in text)
+
+
+class HelpFormatter(argparse.HelpFormatter):
+    """argparse's formatter, with Chinese (or any CJK) text wrapped as it is written: a
+    line may break between two CJK characters (there are no spaces to break at), never
+    inside a Latin word or file name, before a closing mark or after an opening one, and
+    a CJK character counts two columns.  Text without CJK is wrapped exactly as argparse does."""
+
+    def _split_lines(self, text, width):
+        if not _CJK.search(text):
+            return super()._split_lines(text, width)
+        return self._cjk_lines(self._whitespace_matcher.sub(" ", text).strip(), width)
+
+    def _fill_text(self, text, width, indent):
+        if not _CJK.search(text):
+            return super()._fill_text(text, width, indent)
+        text = self._whitespace_matcher.sub(" ", text).strip()
+        return "\n".join(indent + line
+                         for line in self._cjk_lines(text, width - len(indent)))
+
+    @staticmethod
+    def _cjk_lines(text, width):
+        # a number keeps its unit on its line ("100–150 mm"): a no-break space between
+        text = re.sub(r"(?<=\d) (?=[A-Za-zμ°%])", "\u00a0", text)
+        units = []                     # words, single CJK characters and spaces
+        for m in re.finditer(r" |[^ ]", text):
+            ch = m.group(0)
+            if (units and ch != " " and units[-1] != " "
+                    and not _CJK.match(ch) and not _CJK.match(units[-1][-1])):
+                units[-1] += ch        # a Latin word or a file name stays whole
+            elif units and ch != " " and (
+                    (ch in _NO_LINE_START and units[-1] != " ")
+                    or units[-1][-1] in _NO_LINE_END):
+                units[-1] += ch        # no line starts with a closing mark, or ends with
+                                       # an opening one
+            else:
+                units.append(ch)
+        lines, line = [], ""
+        for unit in units:
+            if unit == " " and not line:
+                continue
+            if line and _width(line + unit) > width and unit != " ":
+                lines.append(line.rstrip())
+                line = unit
+            else:
+                line += unit
+        if line.strip():
+            lines.append(line.rstrip())
+        return [line.replace("\u00a0", " ") for line in lines]
+
+
+class Parser(argparse.ArgumentParser):
+    """The parser of ``crankdyn`` and of each subcommand: :class:`HelpFormatter` unless
+    told otherwise."""
+
+    def __init__(self, *args, **kwargs):
+        kwargs.setdefault("formatter_class", HelpFormatter)
+        super().__init__(*args, **kwargs)
+
+
+def build_parser(lang: str = DEFAULT_LANG) -> argparse.ArgumentParser:
+    """The ``crankdyn`` parser with every subcommand, its help in ``lang`` (Russian when
+    that language has no catalogue); argparse's own words too (:func:`_speak_argparse`)."""
+    _speak_argparse(lang)
+    t = cli_texts(lang)
+    parser = Parser(prog="crankdyn", description=t("cli.description"))
+    parser.add_argument("--version", action="version", version=f"crankdyn {__version__}",
+                        help=t("cli.argparse.version"))
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
     for name in SUBCOMMANDS:
         try:
             module = importlib.import_module(f"crankdyn.cmd_{name}")
@@ -41,7 +120,7 @@ def build_parser() -> argparse.ArgumentParser:
             if exc.name != f"crankdyn.cmd_{name}":
                 raise
             continue
-        module.add_parser(sub)
+        module.add_parser(sub, t)
     parser.subcommands = sub.choices        # {name: its parser}, to name it in errors
     return parser
 
@@ -70,10 +149,21 @@ ARGPARSE_TEXTS = {
 }
 
 
+#: argparse's own words in a help (CPython 3.11–3.13) → the text key (area ``cli``).
+ARGPARSE_HELP_TEXTS = {
+    "usage: ": "cli.argparse.usage",
+    "positional arguments": "cli.argparse.positional",
+    "options": "cli.argparse.options",
+    "optional arguments": "cli.argparse.options",          # its name before 3.10
+    "show this help message and exit": "cli.argparse.help",
+    "show program's version number and exit": "cli.argparse.version",
+}
+
+
 def _language_asked(argv) -> str:
     """The ``--lang`` of a command line not parsed yet (``--lang X`` or ``--lang=X``),
     or the reports' default, Russian."""
-    lang = "ru"
+    lang = DEFAULT_LANG
     for i, arg in enumerate(argv):
         if arg == "--lang" and i + 1 < len(argv):
             lang = argv[i + 1]
@@ -84,13 +174,14 @@ def _language_asked(argv) -> str:
 
 def _speak_argparse(lang: str) -> None:
     """Give argparse, for this process, the words of ``lang`` (Russian if that language
-    is not offered) for its error messages.
+    is not offered) for its error messages and its help's own headings.
 
     argparse looks its messages up through the module-level ``_`` it imported from
     :mod:`gettext`; replacing that name is the catalogue hook argparse offers a program
     that has no ``.mo`` files installed.  The catalogues are read only when argparse has
-    something to complain about, so ``crankdyn --help`` stays fast.  A message argparse
-    adds in a later Python stays English."""
+    something to complain about; the headings of a help are the ``cli`` area alone
+    (:func:`crankdyn.langs.cli_texts`), so ``crankdyn --help`` stays fast.  A message
+    argparse adds in a later Python stays English."""
     words = []
 
     def t(key, **fields):
@@ -110,6 +201,8 @@ def _speak_argparse(lang: str) -> None:
             return str.__mod__(self, args)
 
     def translate(message):
+        if message in ARGPARSE_HELP_TEXTS:
+            return cli_texts(lang)(ARGPARSE_HELP_TEXTS[message])
         key, fields = ARGPARSE_TEXTS.get(message, (None, None))
         return message if key is None else Template(t(key, **fields))
 
@@ -118,8 +211,7 @@ def _speak_argparse(lang: str) -> None:
 
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
-    _speak_argparse(_language_asked(argv))
-    parser = build_parser()
+    parser = build_parser(_language_asked(argv))
     args, unknown = parser.parse_known_args(argv)
     if unknown:  # said by the subcommand's parser, so the line names the subcommand
         parser.subcommands.get(args.command, parser).error(

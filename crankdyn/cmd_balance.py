@@ -28,7 +28,7 @@ speaks the report's language (``--lang``).
 """
 from __future__ import annotations
 from crankbase.errors import Text
-from .langs import LANG_CHOICES, LANG_HELP
+from .langs import LANG_CHOICES, cli_texts, lang_help
 
 
 #: Bundled examples by short name (``--example NAME``).
@@ -36,30 +36,20 @@ EXAMPLES = {"rotor": "rotor_two_plane.toml", "ratchet": "ratchet_balance.toml",
             "shaper": "shaper.toml"}
 
 
-def add_parser(subparsers):
-    p = subparsers.add_parser(
-        "balance", help="rotor balancing (static or two-plane) or a linkage's shaking-force "
-                        "balance by counterweights",
-        description="Static (one plane) or dynamic (two planes) balancing of a rigid rotor "
-                    "given by its unbalances (m·r or m and r, angle, z): the correction m·r "
-                    "and angle per plane, the mass at a chosen radius, the residual force "
-                    "and moment, and the m·r polygons.  A linkage spec: full shaking-force "
-                    "balance of a crank-rocker or partial balance of a crank-slider by "
-                    "counterweights.  Every output is named after the spec's name "
-                    "(<name>_rotor_balance.csv, <name>_counterweights.csv …), so that the "
-                    "reports of several specs share a folder; a rerun replaces only its "
-                    "own files.")
-    p.add_argument("spec", nargs="?", metavar="SPEC.toml",
-                   help="rotor spec ([rotor]) or linkage spec (optional [balance])")
+def add_parser(subparsers, t=None):
+    """Register ``crankdyn balance``; ``t`` the help's words (:func:`crankdyn.langs.cli_texts`,
+    Russian when not given)."""
+    t = t or cli_texts()
+    p = subparsers.add_parser("balance", help=t("cli.balance.help"),
+                              description=t("cli.balance.description"))
+    p.add_argument("spec", nargs="?", metavar="SPEC.toml", help=t("cli.balance.opt.spec"))
     p.add_argument("--example", nargs="?", const="rotor", metavar="NAME",
-                   help="run a bundled example instead of a spec: "
-                        + ", ".join(EXAMPLES) + " (default rotor)")
+                   help=t("cli.common.opt.example", examples=", ".join(EXAMPLES),
+                          default="rotor"))
     p.add_argument("-o", "--output", required=True, metavar="DIR",
-                   help="output folder (created if needed)")
+                   help=t("cli.common.opt.output"))
     p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
-                   help=LANG_HELP
-                   + "language of the plots and the terminal summary (default ru, the "
-                        "Russian textbook symbols)")
+                   help=lang_help(t, "cli.balance.opt.lang"))
     p.set_defaults(func=run)
 
 

@@ -21,43 +21,26 @@ verdict, detail``), ``DIR/<student>/`` the student's ``check.csv`` and checked w
 Exit status 0 when every student is matched and right, 1 otherwise.
 """
 from __future__ import annotations
-from .langs import LANG_CHOICES, LANG_HELP
+from .langs import LANG_CHOICES, cli_texts, lang_help
 
 
-def add_parser(sub):
-    p = sub.add_parser(
-        "check", help="check a student's Table 2 or linkage tables against the computed ones",
-        description="Read a student's table (our workbook layout, a CSV with our column "
-                    "names, or either with --map), compute the same rows from the spec and "
-                    "mark every value outside the tolerance |student - computed| <= atol + "
-                    "rtol*|computed| (default rtol 0.02: a hand-drawn plan is good to a few "
-                    "per cent; default atol 0.2 % of the column's largest magnitude: a value "
-                    "at its column's peak may be off by 2.2 % of itself, at a third of the "
-                    "peak by 2.6 %, so a 3 % error above a third of the peak is caught). "
-                    "With --variants, STUDENT is a folder: a whole class, each file checked "
-                    "against its own variant.")
-    p.add_argument("spec", metavar="SPEC.toml",
-                   help="engine or linkage spec (TOML); with --variants the base engine spec")
-    p.add_argument("student", metavar="STUDENT.xlsx|csv",
-                   help="the student's table; with --variants the folder of the students' "
-                        "tables (STUDENTS_DIR)")
-    p.add_argument("--variants", metavar="VARIANTS.csv|xlsx",
-                   help="the variants table of `crankdyn engine --variants`: grade the "
-                        "whole class in STUDENTS_DIR, each file against its variant (the "
-                        "variant's name as a whole word of the file name, e.g. "
-                        "ivanov_v02.xlsx, or a cell labelled Вариант/Variant)")
-    p.add_argument("-o", "--output", required=True, metavar="DIR", help="output folder")
-    p.add_argument("--rtol", type=float, metavar="R",
-                   help="relative tolerance (default 0.02)")
-    p.add_argument("--atol", type=float, metavar="A",
-                   help="absolute tolerance in the column's unit (default: 0.2 %% of the "
-                        "column's largest magnitude)")
+def add_parser(sub, t=None):
+    """Register ``crankdyn check``; ``t`` the help's words (:func:`crankdyn.langs.cli_texts`,
+    Russian when not given)."""
+    t = t or cli_texts()
+    p = sub.add_parser("check", help=t("cli.check.help"),
+                       description=t("cli.check.description"))
+    p.add_argument("spec", metavar="SPEC.toml", help=t("cli.check.opt.spec"))
+    p.add_argument("student", metavar="STUDENT.xlsx|csv", help=t("cli.check.opt.student"))
+    p.add_argument("--variants", metavar="VARIANTS.csv|xlsx", help=t("cli.check.opt.variants"))
+    p.add_argument("-o", "--output", required=True, metavar="DIR",
+                   help=t("cli.common.opt.output_plain"))
+    p.add_argument("--rtol", type=float, metavar="R", help=t("cli.check.opt.rtol"))
+    p.add_argument("--atol", type=float, metavar="A", help=t("cli.check.opt.atol"))
     p.add_argument("--map", action="append", metavar="HEADER=column", default=[],
-                   help="the student's header HEADER holds our column (repeatable), e.g. "
-                        "--map 'T, Н=T_N' --map 'α=alpha_deg'")
+                   help=t("cli.check.opt.map"))
     p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
-                   help=LANG_HELP
-                   + "language of the verdicts and comments (default ru)")
+                   help=lang_help(t, "cli.check.opt.lang"))
     p.set_defaults(func=run)
     return p
 

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import sys
 from crankbase.errors import Text
-from .langs import LANG_CHOICES, LANG_HELP
+from .langs import LANG_CHOICES, cli_texts, lang_help
 
 #: Bundled examples by short name (``--example NAME``).
 EXAMPLES = {"flywheel": "flywheel_seed.toml", "press": "press_dynamics.toml",
@@ -30,27 +30,20 @@ EXAMPLES = {"flywheel": "flywheel_seed.toml", "press": "press_dynamics.toml",
             "shaper": "shaper_dynamics.toml"}
 
 
-def add_parser(subparsers):
-    p = subparsers.add_parser(
-        "dynamics", help="machine dynamics: true motion, flywheel, motor start-up",
-        description="The reduced model (J_red, M_d, M_c) of a machine or a linkage, its "
-                    "steady motion ω(φ), ε, t, δ, the flywheel for a required δ (classic "
-                    "and exact), a motor characteristic with the start-up, and the forces "
-                    "under the true motion beside the constant-speed ones.  Every output "
-                    "is named after the spec's name: <name>_motion.csv, "
-                    "<name>_dynamics.xlsx, <name>_omega.png …, so that the reports of "
-                    "several specs share a folder; a rerun replaces only its own files.")
-    p.add_argument("spec", nargs="?", metavar="SPEC.toml",
-                   help="machine, linkage or engine spec with [dynamics]")
+def add_parser(subparsers, t=None):
+    """Register ``crankdyn dynamics``; ``t`` the help's words
+    (:func:`crankdyn.langs.cli_texts`, Russian when not given)."""
+    t = t or cli_texts()
+    p = subparsers.add_parser("dynamics", help=t("cli.dynamics.help"),
+                              description=t("cli.dynamics.description"))
+    p.add_argument("spec", nargs="?", metavar="SPEC.toml", help=t("cli.dynamics.opt.spec"))
     p.add_argument("--example", nargs="?", const="flywheel", metavar="NAME",
-                   help="run a bundled example instead of a spec: "
-                        + ", ".join(EXAMPLES) + " (default flywheel)")
+                   help=t("cli.common.opt.example", examples=", ".join(EXAMPLES),
+                          default="flywheel"))
     p.add_argument("-o", "--output", required=True, metavar="DIR",
-                   help="output folder (created if needed)")
+                   help=t("cli.common.opt.output"))
     p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
-                   help=LANG_HELP
-                   + "language of the workbook, the plots and the terminal summary "
-                        "(default ru, the Russian textbook symbols)")
+                   help=lang_help(t, "cli.dynamics.opt.lang"))
     p.set_defaults(func=run)
 
 

@@ -17,60 +17,34 @@ stays fast.
 """
 from __future__ import annotations
 from crankbase.errors import Text
-from .langs import LANG_CHOICES, LANG_HELP
+from .langs import LANG_CHOICES, cli_texts, lang_help
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
 EXAMPLES = {"petrol": "petrol_vaz2106.toml", "diesel": "diesel_d240.toml",
             "six": "petrol_bmw_m54.toml", "v8": "diesel_kamaz740.toml"}
 
 
-def add_parser(subparsers):
-    p = subparsers.add_parser(
-        "engine", help="engine force table (Table 2), Excel report and plots",
-        description="Engine crank-slider forces over the crank angle (ΔPг, Pj, P, β, N, "
-                    "Sш, K, T, Mкр, Kr.ш, Rшш, Ψ): forces.csv, an Excel report from a "
-                    "template and the plots (indicator diagram, forces, torque, polar and "
-                    "developed crank-pin load diagrams).")
-    p.add_argument("spec", nargs="?", metavar="SPEC.toml", help="engine spec (TOML)")
+def add_parser(subparsers, t=None):
+    """Register ``crankdyn engine``; ``t`` the help's words (:func:`crankdyn.langs.cli_texts`,
+    Russian when not given)."""
+    t = t or cli_texts()
+    p = subparsers.add_parser("engine", help=t("cli.engine.help"),
+                              description=t("cli.engine.description"))
+    p.add_argument("spec", nargs="?", metavar="SPEC.toml", help=t("cli.engine.opt.spec"))
     p.add_argument("--example", nargs="?", const="petrol", metavar="NAME",
-                   help="run a bundled example instead of a spec: "
-                        + ", ".join(EXAMPLES) + " (default petrol)")
+                   help=t("cli.common.opt.example", examples=", ".join(EXAMPLES),
+                          default="petrol"))
     p.add_argument("-o", "--output", required=True, metavar="DIR",
-                   help="output folder (created if needed)")
+                   help=t("cli.common.opt.output"))
     p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
-                   help=LANG_HELP
-                   + "report and plot language (default ru, the textbook symbols)")
-    p.add_argument("--step", type=float, metavar="DEG",
-                   help="table step in crank degrees (overrides [table] step_deg)")
-    p.add_argument("--bearings", action="store_true",
-                   help="also the bearing loads: crank pin, main journals, journal torques, "
-                        "big end and piston pin, wear diagrams (crankpins.csv, journals.csv, "
-                        "journal_torques.csv, rod_bearings.csv, wear.csv, rod_model.csv with "
-                        "[rod] model = \"rigid\", and their plots); implied by a [bearings] "
-                        "or [rod] table in the spec")
-    p.add_argument("--torsion", action="store_true",
-                   help="also the torsional vibration of the crankshaft (modes, Holzer "
-                        "tables, torque harmonics, critical speeds, forced response: "
-                        "<name>_torsion_modes.csv … <name>_torsion.xlsx, as crankdyn "
-                        "torsion writes them); implied by a [torsion] table, which it needs "
-                        "(the shaft's stiffnesses cannot be guessed)")
-    p.add_argument("--form", choices=("seed", "kolchin"),
-                   help="Table 2 (<name>_table2.csv) in the seed's form (forces in mm and N) "
-                        "or Kolchin's (specific forces in MPa with the coefficients tg β, "
-                        "1/cos β, cos(α+β)/cos β, sin(α+β)/cos β); overrides [table] form")
-    p.add_argument("--drawing", action="store_true",
-                   help="also write the diagrams at the drawing scale (forces over α, N/K/T, "
-                        "polar), 1:1 PDF on millimetre paper: axes in mm of the drawing, "
-                        "μP from the spec, μα = cycle/240 mm")
-    p.add_argument("--variants", metavar="TABLE",
-                   help="course variants: a CSV or .xlsx table with a 'variant' (or "
-                        "'name') column and one column per spec key as a dotted path "
-                        "(engine.bore_mm, masses.rod_kg, …) overriding the base spec "
-                        "(SPEC.toml or --example); writes one complete report per variant "
-                        "in DIR/<variant>/ and DIR/variants_summary.csv|xlsx; bad rows are "
-                        "reported by row and key and skipped; exit status 1 if any failed")
-    p.add_argument("--jobs", type=int, default=1, metavar="N",
-                   help="with --variants: write N reports at a time (processes; default 1)")
+                   help=lang_help(t, "cli.engine.opt.lang"))
+    p.add_argument("--step", type=float, metavar="DEG", help=t("cli.engine.opt.step"))
+    p.add_argument("--bearings", action="store_true", help=t("cli.engine.opt.bearings"))
+    p.add_argument("--torsion", action="store_true", help=t("cli.engine.opt.torsion"))
+    p.add_argument("--form", choices=("seed", "kolchin"), help=t("cli.engine.opt.form"))
+    p.add_argument("--drawing", action="store_true", help=t("cli.engine.opt.drawing"))
+    p.add_argument("--variants", metavar="TABLE", help=t("cli.engine.opt.variants"))
+    p.add_argument("--jobs", type=int, default=1, metavar="N", help=t("cli.engine.opt.jobs"))
     p.set_defaults(func=run)
 
 

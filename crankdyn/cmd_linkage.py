@@ -18,7 +18,7 @@ in both.
 from __future__ import annotations
 
 import sys
-from .langs import LANG_CHOICES, LANG_HELP
+from .langs import LANG_CHOICES, cli_texts, lang_help
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
 EXAMPLES = {"ratchet": "ratchet.toml", "press": "press.toml", "shaper": "shaper.toml",
@@ -27,54 +27,31 @@ EXAMPLES = {"ratchet": "ratchet.toml", "press": "press.toml", "shaper": "shaper.
 
 
 
-def add_parser(sub):
-    p = sub.add_parser(
-        "linkage", help="kinematics and kinetostatics of a crank-rocker, crank-slider or any "
-                        "chain of class II groups",
-        description="Kinematics and kinetostatics of a crank-rocker or crank-slider from a "
-                    "TOML spec (see README): CSV tables, an Excel workbook and plots.")
+def add_parser(sub, t=None):
+    """Register ``crankdyn linkage``; ``t`` the help's words
+    (:func:`crankdyn.langs.cli_texts`, Russian when not given)."""
+    t = t or cli_texts()
+    p = sub.add_parser("linkage", help=t("cli.linkage.help"),
+                       description=t("cli.linkage.description"))
     src = p.add_mutually_exclusive_group(required=True)
-    src.add_argument("spec", nargs="?", help="the mechanism spec (TOML)")
+    src.add_argument("spec", nargs="?", help=t("cli.linkage.opt.spec"))
     src.add_argument("--example", nargs="?", const="ratchet", metavar="NAME",
-                     help="run a bundled example instead of a spec: "
-                          + ", ".join(EXAMPLES) + " (default ratchet: the ratchet drive "
-                          "of the course project; press: a crank-slider press; chains of "
-                          "class II groups: shaper, the crank-slotted lever of a shaping "
-                          "machine; press6, a six-bar press; compressor_v, a two-cylinder "
-                          "V compressor; sixbar_rrr, an RRR-RRR six-bar; shaper_cn, the "
-                          "shaper of the Chinese course design, data set I)")
-    p.add_argument("-o", "--output", required=True, metavar="DIR", help="output folder")
+                     help=t("cli.linkage.opt.example", examples=", ".join(EXAMPLES)))
+    p.add_argument("-o", "--output", required=True, metavar="DIR",
+                   help=t("cli.common.opt.output_plain"))
     p.add_argument("--step", type=float, default=1.0, metavar="DEG",
-                   help="crank-angle step of the full-turn plots (default 1°)")
-    p.add_argument("--no-plots", action="store_true", help="write the tables only")
+                   help=t("cli.linkage.opt.step"))
+    p.add_argument("--no-plots", action="store_true", help=t("cli.common.opt.no_plots"))
     p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
-                   help=LANG_HELP
-                   + "language of every output: the workbook (sheet titles, labels, "
-                        "units, symbols), the plots, the plan drawings and this terminal "
-                        "summary; ru (the Russian textbook's symbols Mур, Mпс, Fпс and "
-                        "units Н·м, м/с, default) or en (English symbols Mb, Mr, Fr, no "
-                        "Cyrillic). The CSV files are the same in both")
-    g = p.add_argument_group(
-        "graphical method (velocity and acceleration plans, force polygons, Zhukovsky lever)")
-    g.add_argument("--plans", metavar="LIST",
-                   help="position numbers, e.g. 5,11, or 'all': <name>_plans_<pos>.svg/.pdf/"
-                        ".png, <name>_plans.csv, _lever.csv, _lever_forces.csv, "
-                        "_student_table.csv, _sheet.pdf, _sheet.dxf")
-    g.add_argument("--sheet", default="A1", metavar="A1|A3",
-                   help="drawing sheet size, landscape (default A1)")
-    g.add_argument("--measured", metavar="CSV",
-                   help="a student's measured segments (position, segment, length_mm or "
-                        "value): writes <name>_plan_errors.csv, the error of the plan method "
-                        "in %%")
-    g.add_argument("--mu-v", type=float, metavar="MU",
-                   help="velocity plan scale, (m/s)/mm (default: round, pa 100-150 mm)")
-    g.add_argument("--mu-a", type=float, metavar="MU",
-                   help="acceleration plan scale, (m/s²)/mm (default: round, πa 100-150 mm)")
-    g.add_argument("--mu-f", type=float, metavar="MU",
-                   help="force polygon scale, N/mm (default: round, largest force 100-150 mm)")
-    g.add_argument("--mu-lever", type=float, metavar="MU",
-                   help="force scale of the Zhukovsky lever, N/mm (default: round, largest "
-                        "force 50-75 mm)")
+                   help=lang_help(t, "cli.linkage.opt.lang"))
+    g = p.add_argument_group(t("cli.linkage.group.plans"))
+    g.add_argument("--plans", metavar="LIST", help=t("cli.linkage.opt.plans"))
+    g.add_argument("--sheet", default="A1", metavar="A1|A3", help=t("cli.linkage.opt.sheet"))
+    g.add_argument("--measured", metavar="CSV", help=t("cli.linkage.opt.measured"))
+    g.add_argument("--mu-v", type=float, metavar="MU", help=t("cli.linkage.opt.mu_v"))
+    g.add_argument("--mu-a", type=float, metavar="MU", help=t("cli.linkage.opt.mu_a"))
+    g.add_argument("--mu-f", type=float, metavar="MU", help=t("cli.linkage.opt.mu_f"))
+    g.add_argument("--mu-lever", type=float, metavar="MU", help=t("cli.linkage.opt.mu_lever"))
     p.set_defaults(func=run)
     return p
 

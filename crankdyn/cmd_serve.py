@@ -1,48 +1,49 @@
 """``crankdyn serve``: the course project in the browser (the ``web`` extra).
 
-    crankdyn serve [--host 127.0.0.1] [--port 8000] [--open]
+    crankdyn serve [--host 127.0.0.1] [--port 8000] [--open] [--workers N] [--lang ru|en|zh]
 
-Starts the web app (:mod:`web`) with uvicorn and prints its address.  The web packages
+Starts the web app (:mod:`web`) with uvicorn and prints its address.  ``--lang`` is the
+language of this command's own lines (the page has its own language switch).  The web packages
 (Starlette, Jinja2, uvicorn, python-multipart) are imported only here, when the command
 runs; without them the command says in one line how to install them.
 """
 from __future__ import annotations
 
+from .langs import LANG_CHOICES, cli_texts, lang_help
 
-def add_parser(subparsers):
-    p = subparsers.add_parser(
-        "serve", help="the course project in the browser: a local web app",
-        description="Start the crankdyn web app: the engine page (Table 2, diagrams, "
-                    "workbook) from a bundled example, an uploaded spec or a form. Every "
-                    "browser session works in its own temporary folder, removed after an "
-                    "hour idle and at shutdown. Needs the web extra: pip install "
-                    "\"crankdyn[web]\".")
-    p.add_argument("--host", default="127.0.0.1",
-                   help="address to listen on (default 127.0.0.1, this computer only; "
-                        "0.0.0.0 to serve a class on the local network)")
-    p.add_argument("--port", type=int, default=8000, help="port (default 8000)")
-    p.add_argument("--open", action="store_true", help="open the page in the browser")
+
+def add_parser(subparsers, t=None):
+    """Register ``crankdyn serve``; ``t`` the help's words (:func:`crankdyn.langs.cli_texts`,
+    Russian when not given)."""
+    t = t or cli_texts()
+    p = subparsers.add_parser("serve", help=t("cli.serve.help"),
+                              description=t("cli.serve.description"))
+    p.add_argument("--host", default="127.0.0.1", help=t("cli.serve.opt.host"))
+    p.add_argument("--port", type=int, default=8000, help=t("cli.serve.opt.port"))
+    p.add_argument("--open", action="store_true", help=t("cli.serve.opt.open"))
     p.add_argument("--workers", type=int, default=2, metavar="N",
-                   help="computations at once (threads) and processes drawing the "
-                        "reports (default 2)")
+                   help=t("cli.serve.opt.workers"))
+    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
+                   help=lang_help(t, "cli.serve.opt.lang"))
     p.set_defaults(func=run)
 
 
 def run(args) -> int:
     import sys
 
+    t = cli_texts(getattr(args, "lang", None))
     try:
         import uvicorn
 
         import web.app  # noqa: F401  (the framework: Starlette, Jinja2, multipart)
     except ImportError as exc:
-        print(f"crankdyn serve: error: the web app needs the web extra ({exc.name} is "
-              "missing): pip install \"crankdyn[web]\"", file=sys.stderr)
+        print("crankdyn serve: error: " + t("cli.serve.needs_extra", module=exc.name),
+              file=sys.stderr)
         return 2
     from web import create_app
 
     url = f"http://{'127.0.0.1' if args.host in ('0.0.0.0', '::') else args.host}:{args.port}/"
-    print(f"crankdyn serve: {url}  (Ctrl+C stops)", flush=True)
+    print("crankdyn serve: " + t("cli.serve.started", url=url), flush=True)
     if args.open:
         import threading
         import webbrowser

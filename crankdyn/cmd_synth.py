@@ -13,54 +13,37 @@ is checked before anything is written, by the library's one check
 (:func:`linkage.synthesis_study.check_inputs`, the synthesis page's too); bad input
 prints one line per problem, each naming its option, and exits 2.
 ``--lang`` (default ru) is the language of the plots, the workbook (its title, sheet names
-and the values that are words; both header rows, Russian and English, stay) and the
+and the values that are words; its header rows are the seed's Russian, Chinese in zh, over
+the CSV column names) and the
 terminal summary; English output holds no Cyrillic letter (the family is KKM-φ0).
 numpy, pandas, matplotlib and openpyxl are imported inside :func:`run` only.
 """
 from __future__ import annotations
 
-from .langs import LANG_CHOICES, LANG_HELP
+from .langs import LANG_CHOICES, cli_texts, lang_help
 
 
-def add_parser(sub):
-    p = sub.add_parser(
-        "synth", help="crank-rocker synthesis by the transmission angle (ККМ-φ0 family)",
-        description="Synthesis of a crank-rocker whose transmission angle is 90° at the "
-                    "crank angle φ0 (from the line of centres) and never below a minimum "
-                    "(Sereda 2016, the ККМ-30° family, generalised to any φ0). Lengths are "
-                    "relative to the ground (λ0 = 1). Choose the mechanism by one of: "
-                    "--l2 and --l3 (λ1 from eq. 6); --l1 (λ2 = λ3); --l2 and --mu-min (the "
-                    "largest λ1 with μmin ≥ the given angle). Without any, only the region "
-                    "of existence, Table 1 and Fig. 3 are written.")
-    p.add_argument("--phi0", default="30", metavar="DEG",
-                   help="crank angle where μ = 90°, 0 < φ0 < 180 (default 30)")
-    p.add_argument("--l1", metavar="L1", help="crank length λ1 = l1/l0 (then λ2 = λ3)")
-    p.add_argument("--l2", metavar="L2", help="coupler length λ2 = l2/l0")
-    p.add_argument("--l3", metavar="L3", help="rocker length λ3 = l3/l0 (with --l2)")
-    p.add_argument("--mu-min", dest="mu_min", metavar="DEG",
-                   help="required minimum transmission angle, 0 ≤ μmin < 90 (with --l2)")
+def add_parser(sub, t=None):
+    """Register ``crankdyn synth``; ``t`` the help's words (:func:`crankdyn.langs.cli_texts`,
+    Russian when not given)."""
+    t = t or cli_texts()
+    p = sub.add_parser("synth", help=t("cli.synth.help"),
+                       description=t("cli.synth.description"))
+    p.add_argument("--phi0", default="30", metavar="DEG", help=t("cli.synth.opt.phi0"))
+    p.add_argument("--l1", metavar="L1", help=t("cli.synth.opt.l1"))
+    p.add_argument("--l2", metavar="L2", help=t("cli.synth.opt.l2"))
+    p.add_argument("--l3", metavar="L3", help=t("cli.synth.opt.l3"))
+    p.add_argument("--mu-min", dest="mu_min", metavar="DEG", help=t("cli.synth.opt.mu_min"))
     p.add_argument("--l1-step", dest="l1_step", metavar="STEP",
-                   help="with --mu-min: round λ1 down to a multiple of STEP, as read off "
-                        "Fig. 3 (the paper: 0.01)")
-    p.add_argument("--ground", metavar="M",
-                   help="ground length l0 in metres: also write a spec TOML for "
-                        "`crankdyn linkage` with the absolute lengths")
-    p.add_argument("--name", metavar="NAME",
-                   help="name of the design: its files are <NAME>_table1.csv, "
-                        "<NAME>_synthesis.xlsx …, the spec <NAME>.toml with --ground, and "
-                        "the mechanism's name in it (default kkm-<φ0>)")
-    p.add_argument("--omega", metavar="RAD_S",
-                   help="crank angular velocity in the spec, rad/s, + ccw (default 1; "
-                        "with --ground)")
-    p.add_argument("-o", "--output", required=True, metavar="DIR", help="output folder")
-    p.add_argument("--no-plots", action="store_true", help="write the tables only")
+                   help=t("cli.synth.opt.l1_step"))
+    p.add_argument("--ground", metavar="M", help=t("cli.synth.opt.ground"))
+    p.add_argument("--name", metavar="NAME", help=t("cli.synth.opt.name"))
+    p.add_argument("--omega", metavar="RAD_S", help=t("cli.synth.opt.omega"))
+    p.add_argument("-o", "--output", required=True, metavar="DIR",
+                   help=t("cli.common.opt.output_plain"))
+    p.add_argument("--no-plots", action="store_true", help=t("cli.common.opt.no_plots"))
     p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
-                   help=LANG_HELP
-                   + "language of the plots, the workbook's titles, sheet names and "
-                        "words, and the terminal summary: ru (the paper's Russian terms, "
-                        "ККМ-φ0; default), en (English, no Cyrillic: KKM-φ0) or zh "
-                        "(Chinese, KKM-φ0). The workbook keeps its Russian (Chinese in zh) "
-                        "and English header rows")
+                   help=lang_help(t, "cli.synth.opt.lang"))
     p.set_defaults(func=run)
     return p
 

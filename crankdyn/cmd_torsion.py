@@ -15,31 +15,26 @@ library's (:func:`torsion.study.run_study`, :func:`torsion.study.write_report`,
 from __future__ import annotations
 
 from crankbase.errors import Text
-from .langs import LANG_CHOICES, LANG_HELP
+from .langs import LANG_CHOICES, cli_texts, lang_help
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
 EXAMPLES = {"three-rotor": "torsion_three_rotor.toml", "six": "torsion_inline6.toml"}
 
 
-def add_parser(subparsers):
-    p = subparsers.add_parser(
-        "torsion", help="torsional vibration of the crankshaft: modes, Holzer tables, "
-                        "torque harmonics, critical speeds, forced response",
-        description="Torsional vibration of a lumped-mass chain (the crankshaft's throws, "
-                    "damper, flywheel …, or a chain given by hand): natural frequencies and "
-                    "mode shapes, Holzer tables, the harmonics of one cylinder's torque, "
-                    "the critical speeds and the forced response over the speed range, "
-                    "driven by the engine's own force table.")
-    p.add_argument("spec", nargs="?", metavar="SPEC.toml",
-                   help="engine spec with [torsion], or name + [torsion] (a chain by hand)")
+def add_parser(subparsers, t=None):
+    """Register ``crankdyn torsion``; ``t`` the help's words
+    (:func:`crankdyn.langs.cli_texts`, Russian when not given)."""
+    t = t or cli_texts()
+    p = subparsers.add_parser("torsion", help=t("cli.torsion.help"),
+                              description=t("cli.torsion.description"))
+    p.add_argument("spec", nargs="?", metavar="SPEC.toml", help=t("cli.torsion.opt.spec"))
     p.add_argument("--example", nargs="?", const="three-rotor", metavar="NAME",
-                   help="run a bundled example instead of a spec: "
-                        + ", ".join(EXAMPLES) + " (default three-rotor)")
+                   help=t("cli.common.opt.example", examples=", ".join(EXAMPLES),
+                          default="three-rotor"))
     p.add_argument("-o", "--output", required=True, metavar="DIR",
-                   help="output folder (created if needed)")
+                   help=t("cli.common.opt.output"))
     p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
-                   help=LANG_HELP
-                   + "language of the workbook, the plots and the summary (default ru)")
+                   help=lang_help(t, "cli.torsion.opt.lang"))
     p.set_defaults(func=run)
 
 

@@ -324,109 +324,45 @@ def _spec_rows(raw, prefix=""):
     return rows
 
 
-#: Meaning of the spec keys on the inputs sheet: key (last part) → (ru, en); ``{link}``
-#: is the link's name in the genitive (кривошипа / of the crank).
-_KEY_MEANING = {
-    "kind": ("вид механизма", "mechanism kind",
-        "机构类型"),
-    "name": ("название механизма", "mechanism name",
-        "机构名称"),
-    "crank": ("длина кривошипа lOA", "crank length |OA|",
-        "曲柄长度 lOA"),
-    "coupler": ("длина шатуна lAB", "coupler (rod) length |AB|",
-        "连杆长度 lAB"),
-    "rocker": ("длина коромысла lBC", "rocker length |CB|",
-        "摇杆长度 lBC"),
-    "ground": ("межосевое расстояние lOC (стойка)", "ground length |OC|",
-        "机架长度 lOC（中心距）"),
-    "ground_angle_deg": ("угол стойки OC (направляющей) к оси x",
-                         "angle of the ground line (guide) to +x",
-        "机架线 OC（导路）与 x 轴的夹角"),
-    "offset": ("смещение направляющей (дезаксаж) e", "guide offset e",
-        "导路偏距 e"),
-    "assembly": ("вариант сборки (+1 или −1)", "assembly branch (+1 or −1)",
-        "装配分支（+1 或 −1）"),
-    "omega_rad_s": ("угловая скорость кривошипа ω2 (+ против часовой стрелки)",
-                    "crank angular velocity ω2 (+ ccw)",
-        "曲柄角速度 ω2（逆时针为 +）"),
-    "epsilon_rad_s2": ("угловое ускорение кривошипа ε2", "crank angular acceleration ε2",
-        "曲柄角加速度 ε2"),
-    "gravity_m_s2": ("ускорение свободного падения g", "gravity g",
-        "重力加速度 g"),
-    "mass_kg": ("масса {link} m{n}", "mass {link} m{n}",
-        "{link}的质量 m{n}"),
-    "inertia_kg_m2": ("момент инерции {link} JS{n} (относительно S{n})",
-                      "moment of inertia {link} JS{n} (about S{n})",
-        "{link}的转动惯量 JS{n}（对 S{n}）"),
-    "cg": ("центр масс {link} S{n} (x, y в системе звена)",
-           "centre of mass {link} S{n} (x, y in the link frame)",
-        "{link}的质心 S{n}（构件坐标系中的 x, y）"),
-    "points": ("точка {point} {link} (x, y в системе звена)",
-               "point {point} {link} (x, y in the link frame)",
-        "{link}上的点 {point}（构件坐标系中的 x, y）"),
-    "link": ("звено, к которому приложена нагрузка", "link carrying the load",
-        "承受载荷的构件"),
-    "at": ("точка приложения силы (x, y в системе звена)",
-           "point of application (x, y in the link frame)",
-        "力的作用点（构件坐标系中的 x, y）"),
-    "force_N": ("сила (x, y)", "force (x, y)",
-        "力（x, y）"),
-    "moment_Nm": ("момент (+ против часовой стрелки)", "moment (+ ccw)",
-        "力矩（逆时针为 +）"),
-    "resistance_Nm": ("момент полезного сопротивления Mпс", "useful-resistance moment Mr",
-        "有效阻力矩 Mr"),
-    "resistance_N": ("сила полезного сопротивления Fпс", "useful-resistance force Fr",
-        "有效阻力 Fr"),
-    "stroke": ("ход, на котором действует сопротивление", "stroke carrying the resistance",
-        "阻力作用的行程"),
-    "span_deg": ("участок действия сопротивления (поворот коромысла от начала рабочего "
-                 "хода)", "span of the resistance (rocker rotation from the stroke start)",
-        "阻力作用范围（自工作行程起点起的摇杆转角）"),
-    "span_m": ("участок действия сопротивления (путь ползуна от начала рабочего хода)",
-               "span of the resistance (slider travel from the stroke start)",
-        "阻力作用范围（自工作行程起点起的滑块位移）"),
-    "positions": ("число положений плана", "number of plan positions",
-        "位置图的位置数"),
-    "crank_angles_deg": ("заданные углы кривошипа", "crank angles given",
-        "给定的曲柄转角"),
-    "working_stroke": ("направление рабочего хода", "direction of the working stroke",
-        "工作行程的方向"),
-}
-_LINK_GEN = {"crank": ("кривошипа", "of the crank", "曲柄"), "coupler": ("шатуна", "of the coupler", "连杆"),
-             "rocker": ("коромысла", "of the rocker", "摇杆"), "slider": ("ползуна", "of the slider", "滑块")}
-#: The spec's word values, explained beside them on the Russian inputs sheet.
-_VALUE_RU = {"crank-rocker": "кривошипно-коромысловый", "crank-slider": "кривошипно-ползунный",
-             "crank": "кривошип", "coupler": "шатун", "rocker": "коромысло",
-             "slider": "ползун", "working": "рабочий ход", "idle": "холостой ход",
-             "both": "оба хода", "ccw": "против часовой стрелки",
-             "cw": "по часовой стрелке", "away": "ползун удаляется от кривошипа",
-             "toward": "ползун приближается к кривошипу"}
+#: Spec keys whose meaning the inputs sheet gives (``linkage.key.<key>`` in linkage.po).
+_KEY_MEANINGS = frozenset((
+    "kind", "name", "crank", "coupler", "rocker", "ground", "ground_angle_deg", "offset",
+    "assembly", "omega_rad_s", "epsilon_rad_s2", "gravity_m_s2", "mass_kg", "inertia_kg_m2",
+    "cg", "points", "link", "at", "force_N", "moment_Nm", "resistance_Nm", "resistance_N",
+    "stroke", "span_deg", "span_m", "positions", "crank_angles_deg", "working_stroke"))
+#: Links named inside a meaning ("масса кривошипа m2"): ``linkage.link_of.<link>``.
+_LINKS_OF = frozenset(("crank", "coupler", "rocker", "slider"))
+#: The spec's word values explained beside them (not in English, where the value is the
+#: word): ``linkage.value.<value>`` with ``-`` as ``_``.
+_VALUES = frozenset(("crank-rocker", "crank-slider", "crank", "coupler", "rocker", "slider",
+                     "working", "idle", "both", "ccw", "cw", "away", "toward"))
 
 
 def _key_meaning(key, value, lang):
-    """The meaning of a spec key in the report's language ('' when not known): the
-    (ru, en, zh) triples of :data:`_KEY_MEANING`."""
-    i = {"ru": 0, "en": 1}.get(lang, 2)
+    """The meaning of a spec key in the report's language ('' when not known), from the
+    catalogue (``linkage.key.*``, ``linkage.link_of.*``, ``linkage.value.*``)."""
+    from crankbase.texts import texts
+
+    t = texts(lang)
     parts = [re.sub(r"\[\d+\]$", "", p) for p in key.split(".")]
     if parts[0] == "drawing":
-        return ("поле основной надписи чертежа", "title-block field of the drawing",
-                "图纸标题栏字段")[i]
+        return t("linkage.key.drawing")
     last = parts[-1]
     link, point = None, None
     if parts[0] == "links" and len(parts) >= 3:
         link = parts[1]
         if parts[2] == "points":
             last, point = "points", parts[-1]
-    meaning = _KEY_MEANING.get(last)
-    if meaning is None:
+    if last not in _KEY_MEANINGS:
         return ""
     from .spec import LINK_NUMBER
 
-    out = meaning[i].format(link=_LINK_GEN.get(link, (link or "",) * 3)[i],
-                            point=point or "", n=LINK_NUMBER.get(link, ""))
+    of = t(f"linkage.link_of.{link}") if link in _LINKS_OF else (link or "")
+    out = t(f"linkage.key.{last}", link=of, point=point or "", n=LINK_NUMBER.get(link, ""))
     out = re.sub(r"\s+", " ", out).strip()
-    if lang == "ru" and isinstance(value, str) and value in _VALUE_RU:
-        out += f": {_VALUE_RU[value]}"
+    if lang != "en" and isinstance(value, str) and value in _VALUES:
+        out = t("linkage.value.explained", meaning=out,
+                value=t(f"linkage.value.{value.replace('-', '_')}"))
     return out
 
 

@@ -111,19 +111,8 @@ def mechanism_table(design, ground_m=None):
 
 #: Words of the terminal summary, the workbook and the spec header: (ru, en).  The
 #: numbers are formatted once and put into the words of either language.
-_WORDS = {
-    "kkm": ("ККМ-{phi0}°", "KKM-{phi0}°"),
-    "toml": ("{kkm}: кривошипно-коромысловый механизм с μ = 90° при φ = {phi0}° от линии "
-             "центров (стойка вдоль +x)\n"
-             "записано командой crankdyn synth; λ1 = {l1}, λ2 = {l2}, λ3 = {l3}, "
-             "μmin = {mu}°\n"
-             "звенья без масс, нагрузок нет: для сил добавьте [links.*] и [[load]]",
-             "{kkm}: crank-rocker with μ = 90° at φ = {phi0}° from the line of centres "
-             "(ground along +x)\n"
-             "written by crankdyn synth; λ1 = {l1}, λ2 = {l2}, λ3 = {l3}, μmin = {mu}°\n"
-             "massless links, no loads: add [links.*] and [[load]] for forces"),
-}
-# the workbook's own words (titles, sheet names): sheet.synth.* of crankbase/locale/*/sheet.po
+# the workbook's own words (titles, sheet names): sheet.synth.* of crankbase/locale/*/sheet.po;
+# the family's name, the header rows and labels, the spec TOML's comment: synth.* of synth.po
 
 #: The Grashof types (linkage.fourbar.GrashofType values) → catalogue keys (synth.po).
 _GRASHOF = {"crank-rocker": "crank_rocker", "double-crank": "double_crank",
@@ -234,42 +223,26 @@ def toml_header(design, lang="en") -> str:
 
     The lengths are written in their shortest round-trip form (``repr``), as in the spec.
     """
-    i = _lang(lang)
+    t = _texts(lang)
     d = design
-    return _WORDS["toml"][i].format(kkm=_WORDS["kkm"][i].format(phi0=f"{d.phi0_deg:g}"),
-                                    phi0=f"{d.phi0_deg:g}", l1=repr(d.l1), l2=repr(d.l2),
-                                    l3=repr(d.l3), mu=f"{d.mu_min_deg:.6g}")
+    return t("synth.toml.header", kkm=t("synth.summary.kkm", phi0=f"{d.phi0_deg:g}"),
+             phi0=f"{d.phi0_deg:g}", l1=repr(d.l1), l2=repr(d.l2), l3=repr(d.l3),
+             mu=f"{d.mu_min_deg:.6g}")
 
 
 # --------------------------------------------------------------------------- workbook
-_T1_HEADERS = (("Длина λ1", "Длина λ2", "Длина λ3", "μmin, °"),
-               ("crank λ1", "coupler λ2", "rocker λ3", "mu_min_deg"))
-_MECH_LABELS = {
-    "phi0_deg": ("Угол φ0, °", "phi0_deg"),
-    "l1": ("Кривошип λ1", "crank l1"),
-    "l2": ("Шатун λ2", "coupler l2"),
-    "l3": ("Коромысло λ3", "rocker l3"),
-    "mu_min_deg": ("Минимальный угол передачи μmin, °", "mu_min_deg"),
-    "mu_min_at_deg": ("Положение μmin: φ, °", "mu_min_at_deg"),
-    "mu_at_phi0_deg": ("Угол передачи при φ0, °", "mu_at_phi0_deg"),
-    "grashof": ("Тип по Грасгофу", "grashof"),
-    "method": ("Задача синтеза", "method"),
-    "ground_m": ("Стойка l0, м", "ground_m"),
-    "crank_m": ("Кривошип l1, м", "crank_m"),
-    "coupler_m": ("Шатун l2, м", "coupler_m"),
-    "rocker_m": ("Коромысло l3, м", "rocker_m"),
-}
-_MECH_HEADER = ("Параметр", "quantity")
-#: A Chinese workbook's first column (instead of the Russian seed's words): the same
-#: quantities in the Chinese textbook's words.
-_T1_HEADERS_ZH = ("长度 λ1", "长度 λ2", "长度 λ3", "μmin, °")
-_MECH_HEADER_ZH = "参数"
-_MECH_LABELS_ZH = {
-    "phi0_deg": "角 φ0, °", "l1": "曲柄 λ1", "l2": "连杆 λ2", "l3": "摇杆 λ3",
-    "mu_min_deg": "最小传动角 μmin, °", "mu_min_at_deg": "μmin 的位置：φ, °",
-    "mu_at_phi0_deg": "φ0 处的传动角, °", "grashof": "格拉霍夫类型", "method": "综合任务",
-    "ground_m": "机架 l0, m", "crank_m": "曲柄 l1, m", "coupler_m": "连杆 l2, m",
-    "rocker_m": "摇杆 l3, m"}
+#: Table 1's columns (the CSV's), in order.
+_T1_COLUMNS = ("l1", "l2", "l3", "mu_min_deg")
+
+
+def header_language(lang) -> str:
+    """The language of the workbook's first header row and first column: the course
+    seed's Russian in a Russian or an English workbook (the seed's bilingual layout), the
+    report's own in any other (Chinese); the second row and column are the CSV column
+    names, in every language."""
+    return lang if lang not in ("ru", "en") else "ru"
+
+
 #: Values of the mechanism sheet that are words, and their translation.
 _MECH_WORDS = {"grashof": grashof_text, "method": method_text}
 
@@ -290,22 +263,22 @@ def write_workbook(path, table, phi0_deg, mechanism=None, lang="en") -> None:
     lang : {"en", "ru"}
         Language of the titles, the sheet names (ru ``Таблица 1``, ``Механизм``; en
         ``table1``, ``mechanism``) and the values that are words (Grashof type, design
-        task).  The two header rows, Russian and English, are the same in both.
+        task).  The header rows are the same in ru and en: the seed's Russian over the
+        CSV column names; in zh Chinese over the CSV column names
+        (:func:`header_language`; the words are ``synth.book.*`` in synth.po).
 
     Notes
     -----
-    Table 1 sheet: row 1 the title, row 2 Russian headers, row 3 English headers (the
-    column names of the CSV), data from row 4.  Mechanism sheet: row 1 the title, row 2
-    the headers, then one quantity per row: Russian label, English name, value.
+    Table 1 sheet: row 1 the title, row 2 the headers in words, row 3 the column names of
+    the CSV, data from row 4.  Mechanism sheet: row 1 the title, row 2 the headers, then
+    one quantity per row: its label in words, its CSV column name, its value.
     """
     from openpyxl import Workbook
     from openpyxl.styles import Alignment, Font
 
     from crankbase.output import ensure_finite
 
-    i = _lang(lang)
-    W = {k: v[i] for k, v in _WORDS.items()}
-    kkm = W["kkm"].format(phi0=f"{phi0_deg:g}")
+    kkm = _texts(lang)("synth.summary.kkm", phi0=f"{phi0_deg:g}")
     ensure_finite(table, "Table 1")
     if mechanism is not None:
         ensure_finite(mechanism, "mechanism")
@@ -320,8 +293,9 @@ def write_workbook(path, table, phi0_deg, mechanism=None, lang="en") -> None:
     ws["A1"].alignment = Alignment(wrap_text=True, vertical="top")
     ws.merge_cells("A1:D1")                    # the title wraps over the four columns
     ws.row_dimensions[1].height = 32
-    for k, hdr in enumerate(_T1_HEADERS):
-        ws.append(list(_T1_HEADERS_ZH if k == 0 and lang == "zh" else hdr))
+    th = texts(header_language(lang))
+    ws.append([th(f"synth.book.t1.{c}") for c in _T1_COLUMNS])
+    ws.append(list(_T1_COLUMNS))
     for cell in (*ws[2], *ws[3]):
         cell.font = Font(bold=True)
         cell.alignment = Alignment(horizontal="center")
@@ -337,19 +311,17 @@ def write_workbook(path, table, phi0_deg, mechanism=None, lang="en") -> None:
         wm = wb.create_sheet(tx("sheet.synth.mech_sheet"))
         wm.append([tx("sheet.synth.mech_title", kkm=kkm)])
         wm["A1"].font = Font(bold=True)
-        head = (_MECH_HEADER_ZH, _MECH_HEADER[1]) if lang == "zh" else _MECH_HEADER
-        wm.append([*head, tx("sheet.synth.value")])
+        wm.append([th("synth.book.quantity"), th("synth.book.csv_name"),
+                   tx("sheet.synth.value")])
         for cell in wm[2]:
             cell.font = Font(bold=True)
         width_c = 44
         for key, value in mechanism.iloc[0].items():
-            ru, en = _MECH_LABELS.get(key, (key, key))
-            if lang == "zh":
-                ru = _MECH_LABELS_ZH.get(key, key)
+            label = th(f"synth.book.mech.{key}") if th.has(f"synth.book.mech.{key}") else key
             v = value.item() if hasattr(value, "item") else value
             if key in _MECH_WORDS:
                 v = _MECH_WORDS[key](v, lang)
-            wm.append([ru, en, v])
+            wm.append([label, key, v])
             if isinstance(v, str) and len(v) > width_c:
                 c = wm.cell(wm.max_row, 3)
                 c.alignment = Alignment(wrap_text=True, vertical="top")

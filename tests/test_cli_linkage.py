@@ -567,9 +567,13 @@ def test_terminal_summary_speaks_the_report_language(lang_runs, tmp_path, capsys
 
 def test_lang_help_says_what_it_changes(capsys):
     with pytest.raises(SystemExit):
-        main(["linkage", "--help"])
+        main(["linkage", "--help", "--lang", "en"])
     text = " ".join(capsys.readouterr().out.split())
     assert "--lang" in text and "workbook" in text and "terminal" in text
+    with pytest.raises(SystemExit):
+        main(["linkage", "--help"])                 # Russian by default
+    text = " ".join(capsys.readouterr().out.split())
+    assert "--lang" in text and "книги .xlsx" in text and "сводки в терминале" in text
 
 
 def test_inputs_sheet_wrapped_rows_are_tall_enough(lang_runs):

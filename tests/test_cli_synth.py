@@ -93,17 +93,19 @@ def test_table1_csv_and_workbook(tmp_path):
     rows = list(wb["Таблица 1"].iter_rows(values_only=True))
     assert rows[0][0].startswith("Таблица 1. ККМ-30°")
     assert rows[1][:3] == ("Длина λ1", "Длина λ2", "Длина λ3")
-    assert rows[2][:3] == ("crank λ1", "coupler λ2", "rocker λ3")
+    assert rows[2][:4] == ("l1", "l2", "l3", "mu_min_deg")          # the CSV's names
     data = np.array([r[:4] for r in rows[3:]], dtype=float)
     np.testing.assert_array_equal(data, t1.to_numpy())          # full precision
     mech = {r[1]: r[2] for r in wb["Механизм"].iter_rows(min_row=3, values_only=True)}
     # seed 004, example 1 to Fig. 2: λ2 = 0.70, λ3 = 0.60 → λ1 = 0.09; μmin = 66°2′
-    assert round(mech["crank l1"], 2) == 0.09
+    assert round(mech["l1"], 2) == 0.09
     assert mech["mu_min_deg"] == pytest.approx(66 + 2 / 60, abs=0.5 / 60)
     assert mech["grashof"] == "кривошипно-коромысловый"
     assert mech["method"] == "заданы λ2, λ3; λ1 по ур. (6)"
     csv = pd.read_csv(out / "kkm-30_mechanism.csv").iloc[0]
-    assert mech["crank l1"] == csv["l1"] and mech["mu_min_deg"] == csv["mu_min_deg"]
+    assert mech["l1"] == csv["l1"] and mech["mu_min_deg"] == csv["mu_min_deg"]
+    labels = {r[1]: r[0] for r in wb["Механизм"].iter_rows(min_row=3, values_only=True)}
+    assert labels["l1"] == "Кривошип λ1" and labels["mu_min_deg"] == "Минимальный угол передачи μmin, °"
 
 
 def test_equal_l2_l3_example(tmp_path, capsys):
@@ -222,13 +224,18 @@ def test_help_is_fast_and_lists_synth():
 
 def test_synth_help_mentions_the_modes(capsys):
     with pytest.raises(SystemExit):
-        main(["synth", "--help"])
+        main(["synth", "--help", "--lang", "en"])
     text = capsys.readouterr().out
     for opt in ("--phi0", "--l1", "--l2", "--l3", "--mu-min", "--ground", "--output",
                 "--lang"):
         assert opt in text
     assert "--lang LANG" in text and "one of ru, en, zh" in " ".join(text.split())
     assert "default" in text.split("--lang")[-1]
+    # the default help is Russian, the reports' default language
+    with pytest.raises(SystemExit):
+        main(["synth", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert "одно из ru, en, zh" in text and "по умолчанию" in text.split("--lang")[-1]
 
 
 def test_toml_writer_round_trip():
@@ -323,20 +330,20 @@ def _cells(path):
 
 
 def test_workbook_in_the_report_language_keeps_both_header_rows(both):
-    from linkage.synthesis_report import _MECH_HEADER, _MECH_LABELS, _T1_HEADERS
+    from crankbase.texts import keys, texts
 
     wb_ru, ru = _cells(both["ru"][0] / "kkm-30_synthesis.xlsx")
     wb_en, en = _cells(both["en"][0] / "kkm-30_synthesis.xlsx")
     assert wb_ru.sheetnames == ["Таблица 1", "Механизм"]
     assert wb_en.sheetnames == ["table1", "mechanism"]
-    for wb in (wb_ru, wb_en):            # the two header rows, Russian then English
+    for wb in (wb_ru, wb_en):            # the two header rows: the seed's Russian, CSV names
         rows = [[c.value for c in r] for r in wb.worksheets[0].iter_rows(min_row=2,
                                                                          max_row=3)]
-        assert rows == [list(h) for h in _T1_HEADERS]
-        assert [c.value for c in wb.worksheets[1][2]][:2] == list(_MECH_HEADER)
+        assert rows == [["Длина λ1", "Длина λ2", "Длина λ3", "μmin, °"],
+                        ["l1", "l2", "l3", "mu_min_deg"]]
+        assert [c.value for c in wb.worksheets[1][2]][:2] == ["Параметр", "столбец CSV"]
     # English: Cyrillic only in the Russian header row and the Russian label column
-    russian = set(_T1_HEADERS[0]) | {ru_ for ru_, _ in _MECH_LABELS.values()} | {
-        _MECH_HEADER[0]}
+    russian = {texts("ru")(k) for k in keys("ru") if k.startswith("synth.book.")}
     bad = [(s, at, v) for s, at, v in en
            if isinstance(v, str) and CYRILLIC.search(v) and v not in russian]
     assert not bad, bad
@@ -354,7 +361,7 @@ def test_workbook_in_the_report_language_keeps_both_header_rows(both):
     num_ru = [(at, v) for _, at, v in ru if isinstance(v, (int, float))]
     num_en = [(at, v) for _, at, v in en if isinstance(v, (int, float))]
     assert num_ru == num_en and len(num_ru) > 28
-    assert mech_en["rocker l3"] == pd.read_csv(both["en"][0] / "kkm-30_mechanism.csv")[
+    assert mech_en["l3"] == pd.read_csv(both["en"][0] / "kkm-30_mechanism.csv")[
         "l3"].iloc[0]
 
 

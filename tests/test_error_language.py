@@ -17,6 +17,7 @@ from pathlib import Path
 
 import pytest
 
+from crankbase.texts import texts
 from crankdyn.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -430,8 +431,9 @@ def test_argparse_complaints_in_the_run_language(argv, names, tmp_path, capsys):
         with pytest.raises(SystemExit) as exit_:
             main(argv if lang is None else [argv[0], "--lang", lang, *argv[1:]])
         assert exit_.value.code == 2
+        usage = tuple(texts(code)("cli.argparse.usage").strip() for code in ("en", "ru", "zh"))
         err = [ln for ln in capsys.readouterr().err.splitlines()
-               if not ln.startswith(("usage:", " "))]
+               if not ln.startswith((*usage, " "))]
         assert len(err) == 1 and _PREFIX.match(err[0]) and names in err[0], err
         lines[lang] = err[0]
     assert not (tmp_path / "o").exists()

@@ -518,6 +518,12 @@ def test_toml_header_in_both_languages():
     assert f"λ3 = {d.l3!r}" in ru and f"λ3 = {d.l3!r}" in en    # the spec's own digits
     text = rep.dumps_toml(d.to_spec(0.5), ru)
     assert tomllib.loads(text)["mechanism"]["rocker"] == 0.5 * d.l3
+    # Chinese: the comment in Chinese (synth.toml.header), no English word, the same digits
+    zh = rep.toml_header(d, "zh")
+    assert "KKM-30°：" in zh and "曲柄摇杆机构" in zh and _numbers(zh) == _numbers(en)
+    assert not CYRILLIC.search(zh) and "crank-rocker" not in zh and "massless" not in zh
+    assert tomllib.loads(rep.dumps_toml(d.to_spec(0.5), zh))["mechanism"]["rocker"] == (
+        0.5 * d.l3)
 
 
 def _plot_texts(ax):

@@ -10,12 +10,19 @@ openpyxl is imported only here.
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 
 from crankbase.texts import texts
 
-__all__ = ["build_workbook", "column_label"]
+__all__ = ["build_workbook", "column_label", "mass_label", "PARTS"]
+
+#: The parts of one cylinder's torque (the harmonics' ``part`` column), each a catalogue
+#: entry ``torsion.part.<part>``.
+PARTS = ("gas", "inertia", "total")
+
+_THROW = re.compile(r"(?<![\w])throw(\d+)(?![\w])")
 
 #: Rows an A4 portrait page holds at the default height (the wrapped two-line headers
 #: taken into account): the Holzer sheet starts a page before a block that would not fit.
@@ -28,23 +35,42 @@ FIXED_COLUMNS = ("mass", "J_kgm2", "k_Nm_rad", "throw", "mode", "f_Hz", "omega_r
                  "major", "sum_relative_amplitude")
 
 
+def mass_label(name: str, lang: str = "ru") -> str:
+    """A mass's (or a shaft section's, ``throw1-throw2``) name in ``lang``: a throw the
+    chain names itself (``throw<N>``, a name no spec may give by hand) in the words of the
+    language (колено 1, 曲拐1), any name the spec gives (``damper``, ``flywheel``) as given."""
+    t = texts(lang)
+    return _THROW.sub(lambda m: t("torsion.mass.throw", n=int(m.group(1))), name)
+
+
 def column_label(column: str, lang: str = "ru") -> str:
     """The quantity of a CSV column in ``lang`` (``theta_damper`` → "θ damper",
-    ``M_throw1-throw2_Nm`` → "M throw1-throw2, N·m")."""
+    ``M_throw1-throw2_Nm`` → "M throw1-throw2, N·m"; a throw in the language's words,
+    :func:`mass_label`)."""
     t = texts(lang)
     if column in FIXED_COLUMNS:
         return t(f"torsion.col.{column}")
     if column.startswith("theta_") and column.endswith("_deg"):
-        return t("torsion.col.theta_deg_of", mass=column[6:-4])
+        return t("torsion.col.theta_deg_of", mass=mass_label(column[6:-4], lang))
     if column.startswith("theta_"):
-        return t("torsion.col.theta_of", mass=column[6:])
+        return t("torsion.col.theta_of", mass=mass_label(column[6:], lang))
     if column.startswith("swing_") and column.endswith("_deg"):
-        return t("torsion.col.swing_deg_of", mass=column[6:-4])
+        return t("torsion.col.swing_deg_of", mass=mass_label(column[6:-4], lang))
     if column.startswith("M_") and column.endswith("_Nm"):
-        return t("torsion.col.M_of", section=column[2:-3])
+        return t("torsion.col.M_of", section=mass_label(column[2:-3], lang))
     if column.startswith("tau_") and column.endswith("_MPa"):
-        return t("torsion.col.tau_of", section=column[4:-4])
+        return t("torsion.col.tau_of", section=mass_label(column[4:-4], lang))
     return column
+
+
+def _word(column, value, lang):
+    """A text cell of a table in ``lang``: a mass's name (:func:`mass_label`) or a part of
+    the torque (``torsion.part.*``); the CSV keeps the names as they are."""
+    if column == "mass":
+        return mass_label(value, lang)
+    if column == "part" and value in PARTS:
+        return texts(lang)(f"torsion.part.{value}")
+    return value
 
 
 def _cell(v):
@@ -69,7 +95,9 @@ def _table(ws, row, df, lang):
     # right-aligned number before it: "2467.2 6.604" would read as one row of numbers
     text = Alignment(horizontal="left", indent=1)
     for r, rec in enumerate(sheet_rows(df).itertuples(index=False), start=first):
-        for j, v in enumerate(rec, start=1):
+        for j, (column, v) in enumerate(zip(df.columns, rec), start=1):
+            if isinstance(v, str):
+                v = _word(column, v, lang)
             cell = ws.cell(r, j, _cell(v))
             if isinstance(v, str):
                 cell.alignment = text
