@@ -235,7 +235,10 @@ def filled_cells(ws):
     (``ws.iter_rows()`` visits every cell of the used rectangle and creates each empty one
     it visits: on a long table most of a sheet's cells, and most of a workbook's build and
     save time.)"""
-    return [c for _, c in sorted(ws._cells.items()) if c.value is not None]
+    # {(row, column): cell}: its keys sorted alone (pairs of ints), several times
+    # cheaper than its items sorted (pairs of a pair and a cell), in the same order
+    cells = ws._cells
+    return [c for c in map(cells.__getitem__, sorted(cells)) if c.value is not None]
 
 
 def _filled_rows(ws):

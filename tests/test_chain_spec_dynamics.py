@@ -120,29 +120,27 @@ def test_shaper_kinetostatic_drive_equals_motor_minus_flywheel(shaper):
     assert {"Rx_frame_ram_N", "R_lever_rod_N", "M_drive_Nm_const"} <= set(f.columns)
 
 
-def test_cli_dynamics_example_shaper(tmp_path):
+def test_cli_dynamics_example_shaper(shaper, cli_report):
     """``crankdyn dynamics --example shaper``: the files, the chain's force columns, an
     English summary without Cyrillic; the Russian summary (the same study layer the CLI
-    calls) with its words."""
-    import contextlib
-    import io
+    calls: :func:`dynamics.study.run_study` is ``run_job`` of the loaded spec, this
+    module's ``shaper``) with its words.  The CLI's report is the session's shared run
+    (read-only; the browser's shaper test reads it too)."""
     import re
 
     import pandas as pd
 
-    from crankbase.resources import example_path
-    from crankdyn.cli import main
-    from dynamics.study import run_study, summary_lines
+    from dynamics.study import summary_lines
 
-    buf = io.StringIO()
-    with contextlib.redirect_stdout(buf):
-        assert main(["dynamics", "--example", "shaper", "-o", str(tmp_path / "en"),
-                     "--lang", "en"]) == 0
-    en = buf.getvalue()
-    ru = "\n".join(summary_lines(run_study(example_path("shaper_dynamics.toml")), "ru"))
+    rep = cli_report("dynamics", "--example", "shaper", "--lang", "en")
+    assert rep.rc == 0, rep.err
+    en = rep.out
+    ru = "\n".join(summary_lines(shaper, "ru"))
     assert not re.search("[\u0400-\u04FF]", en)
     assert "маховик" in ru and "flywheel" in en
-    out = tmp_path / "en"
+    # the CLI's English summary is the study layer's, the same numbers as the Russian
+    assert en.splitlines()[:-1] == summary_lines(shaper, "en")
+    out = rep.folder
     for f in ("motion.csv", "forces_true_motion.csv", "startup.csv", "dynamics.xlsx",
               "omega.png", "forces_true_motion.png"):
         assert (out / f"shaper-machine_{f}").stat().st_size > 0, f
@@ -154,18 +152,24 @@ def test_cli_dynamics_example_shaper(tmp_path):
 
 
 @pytest.mark.parametrize("lang", ["ru", "en"])
-def test_shaper_dynamics_workbook_is_clean(shaper, lang, tmp_path):
+def test_shaper_dynamics_workbook_is_clean(shaper, lang, tmp_path, cli_report):
     """The shaper's dynamics workbook passes the reader's audit (tests/workbook_audit.py:
     nothing cut off, no ###, one number format per column), its long chain column names
-    included; the forces sheet holds the chain's reactions."""
+    included; the forces sheet holds the chain's reactions.  In English the workbook the
+    CLI wrote (the session's shared report), in Russian the study layer's."""
     from openpyxl import load_workbook
     from workbook_audit import problems
 
     from dynamics.report import build_workbook
     from engine.report import save_workbook
 
-    path = tmp_path / f"shaper_{lang}.xlsx"
-    save_workbook(build_workbook(shaper, lang, name=shaper.model.name), path)
+    if lang == "en":
+        rep = cli_report("dynamics", "--example", "shaper", "--lang", "en")
+        assert rep.rc == 0, rep.err
+        path = rep.folder / f"{shaper.stem}_dynamics.xlsx"
+    else:
+        path = tmp_path / f"shaper_{lang}.xlsx"
+        save_workbook(build_workbook(shaper, lang, name=shaper.model.name), path)
     wb = load_workbook(path)
     assert problems(wb, path.name) == []
     keys = {c.value for ws in wb.worksheets for row in ws.iter_rows(max_row=6) for c in row}

@@ -46,10 +46,16 @@ def _content(folder):
 
 @pytest.fixture(scope="module")
 def references(tmp_path_factory):
+    """The three reports, each written whole by the CLI's main in this process (the
+    same code the killed child processes run, without a start of Python each)."""
+    import contextlib
+    import io
+
     refs = {}
     for key, args in (("A", RUN_A), ("B", RUN_B), ("C", RUN_C)):
         out = tmp_path_factory.mktemp(key) / "out"
-        assert _cli(args, out).wait() == 0
+        with contextlib.redirect_stdout(io.StringIO()):
+            assert main([*args, "-o", str(out)]) == 0
         refs[key] = (out, _content(out))
     assert refs["A"][1] != refs["B"][1] and "old.toml" in refs["A"][1]
     return refs
@@ -221,11 +227,14 @@ def test_failure_inside_leaves_nothing_and_removes_created_folders(tmp_path):
     assert list(tmp_path.iterdir()) == []
 
 
-def test_enospc_while_writing_a_plot_cli(tmp_path, capsys, monkeypatch):
+def test_enospc_while_writing_a_plot_cli(tmp_path, capsys, monkeypatch, unrendered_figures):
+    """The first report's plots are saved unrendered (names only: what the failed second
+    run must leave untouched is the files, not what they show)."""
     import matplotlib.figure
 
     out = tmp_path / "out"
     assert main(["synth", "--lang", "en", "--l2", "0.7", "--l3", "0.6", "-o", str(out)]) == 0
+    assert unrendered_figures                               # the plots were saved
     before = {p.name: p.stat().st_mtime_ns for p in out.iterdir()}
 
     def full(self, fname, *a, **k):

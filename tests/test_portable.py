@@ -112,7 +112,8 @@ def test_every_file_of_every_example_has_a_windows_name(cli_report):
 
 # ------------------------------------------------------------- without POSIX modules
 WITHOUT_POSIX = r"""
-import os, sys
+import io, json, os, sys
+from contextlib import redirect_stderr
 for mod in ("fcntl", "resource", "pwd", "grp"):
     sys.modules[mod] = None                # importing it raises ImportError, as on Windows
 for name in ("O_DIRECTORY", "fork", "forkpty"):
@@ -125,14 +126,24 @@ def _windows_open(path, flags, *args, **kw):
     return _open(path, flags, *args, **kw)
 os.open = _windows_open
 from crankdyn.cli import main
-code = main(sys.argv[1:])
+from crankbase.output import verify_report
+results = []
+for argv in json.loads(sys.argv[1]):       # one run after the other, as separate calls
+    err = io.StringIO()
+    with redirect_stderr(err):
+        code = main(argv)
+    out = argv[argv.index("-o") + 1]       # the folder as this run left it
+    try:
+        listed = verify_report(out)
+    except Exception as exc:
+        listed = repr(exc)
+    results.append({"code": code, "stderr": err.getvalue(), "listed": listed,
+                    "on_disk": sorted(os.listdir(out))})
 try:
     import fcntl
 except ImportError:
-    pass
-else:
-    code = 99
-sys.exit(code)
+    fcntl = None
+print(json.dumps({"runs": results, "fcntl_imported": fcntl is not None}))
 """
 
 
@@ -141,16 +152,34 @@ def test_reports_run_without_posix_only_modules(tmp_path):
     """A whole engine report and a linkage report (twice into one folder: the second
     replaces the first and removes its plots) through the CLI's main in a process where
     fcntl, resource, pwd and grp cannot be imported, os has no O_DIRECTORY nor fork,
-    and a folder cannot be opened: each succeeds, is complete, and leaves no lock."""
+    and a folder cannot be opened: each succeeds, is complete, and leaves no lock.  The
+    three runs are three calls of main in one such process (one start of Python and of
+    the library instead of three), each with its own exit status and stderr."""
+    import json
+    import os
+
     runs = [(["engine", "--example", "petrol", "--lang", "en"], tmp_path / "engine"),
             (["linkage", "--example", "ratchet", "--lang", "en"], tmp_path / "linkage"),
             (["linkage", "--example", "ratchet", "--no-plots"], tmp_path / "linkage")]
-    for argv, out in runs:
-        proc = subprocess.run([sys.executable, "-c", WITHOUT_POSIX, *argv, "-o", str(out)],
-                              cwd=ROOT, capture_output=True, text=True,
-                              env={**__import__("os").environ, "MPLBACKEND": "Agg"})
-        assert proc.returncode == 0, proc.stderr
-        assert "Traceback" not in proc.stderr and "Warning" not in proc.stderr, proc.stderr
+    argvs = [[*argv, "-o", str(out)] for argv, out in runs]
+    proc = subprocess.run([sys.executable, "-c", WITHOUT_POSIX, json.dumps(argvs)],
+                          cwd=ROOT, capture_output=True, text=True,
+                          env={**os.environ, "MPLBACKEND": "Agg"})
+    assert proc.returncode == 0, proc.stderr
+    assert "Traceback" not in proc.stderr and "Warning" not in proc.stderr, proc.stderr
+    done = json.loads(proc.stdout.splitlines()[-1])
+    assert not done["fcntl_imported"]
+    assert len(done["runs"]) == len(runs)
+    for (argv, out), run in zip(runs, done["runs"]):        # each run as it left it
+        assert run["code"] == 0, (argv, run["stderr"])
+        assert "Traceback" not in run["stderr"] and "Warning" not in run["stderr"], \
+            (argv, run["stderr"])
+        assert isinstance(run["listed"], list), (argv, run["listed"])  # verify_report
+        assert LOCK_NAME not in run["on_disk"], argv
+        assert set(run["on_disk"]) == set(run["listed"]) | {MANIFEST_NAME}, argv
+    assert [len([n for n in run["listed"] if n.endswith(".png")])
+            for run in done["runs"]] == [13, 5, 0]  # the plain run's plots, then none
+    for _, out in runs:                              # and as the parent reads them
         names = verify_report(out)
         assert not (out / LOCK_NAME).exists()
         assert {p.name for p in out.iterdir()} == set(names) | {MANIFEST_NAME}

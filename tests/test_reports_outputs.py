@@ -8,7 +8,9 @@ from crankbase.output import MANIFEST_NAME, verify_report
 from crankdyn.cli import main
 
 
-def test_two_engines_into_one_folder_do_not_mix(tmp_path, cli_report):
+def test_two_engines_into_one_folder_do_not_mix(tmp_path, cli_report, unrendered_figures):
+    """The diesel's plots are saved unrendered (names only); the petrol report copied in
+    is the session's rendered one."""
     out = tmp_path / "o"            # a copy of the session's petrol report (--lang ru)
     shutil.copytree(cli_report("engine", "--example", "petrol", "--lang", "ru").folder, out)
     first = {p.name: p.read_bytes() for p in out.iterdir() if p.name != MANIFEST_NAME}
@@ -21,9 +23,12 @@ def test_two_engines_into_one_folder_do_not_mix(tmp_path, cli_report):
     for n in petrol:                                   # the petrol report is untouched
         assert (out / n).read_bytes() == first[n]
     verify_report(out)                   # the manifest lists both reports, intact
+    assert unrendered_figures
 
 
-def test_two_mechanisms_and_stale_plots(tmp_path, capsys, cli_report):
+def test_two_mechanisms_and_stale_plots(tmp_path, capsys, cli_report, unrendered_figures):
+    """The press's plots are saved unrendered (names only); the ratchet report copied in
+    is the session's rendered one."""
     out = tmp_path / "o"            # a copy of the session's ratchet report
     shutil.copytree(cli_report("linkage", "--example").folder, out)
     assert main(["linkage", "--example", "press", "-o", str(out)]) == 0
@@ -39,15 +44,17 @@ def test_two_mechanisms_and_stale_plots(tmp_path, capsys, cli_report):
     names = {p.name for p in out.iterdir()}
     assert not [n for n in names if n.startswith("ratchet-drive_") and n.endswith(".png")]
     assert "crank-press_plan.png" in names            # another mechanism's plots stay
+    assert unrendered_figures
 
 
 @pytest.mark.parametrize("lang", ["en", "ru"])
-def test_linkage_inputs_carry_units(tmp_path, lang):
+def test_linkage_inputs_carry_units(cli_report, lang):
     from openpyxl import load_workbook
 
-    assert main(["linkage", "--example", "ratchet", "-o", str(tmp_path), "--no-plots",
-                 "--lang", lang]) == 0
-    ws = load_workbook(tmp_path / "ratchet-drive.xlsx").worksheets[0]     # the inputs
+    # the session's shared run (read-only; test_reports_workbooks reads it too)
+    rep = cli_report("linkage", "--example", "ratchet", "--no-plots", "--lang", lang)
+    assert rep.rc == 0, rep.err
+    ws = load_workbook(rep.folder / "ratchet-drive.xlsx").worksheets[0]     # the inputs
     units = {r[0]: r[2] for r in ws.iter_rows(min_row=4, max_col=3, values_only=True)
              if r[0] and "." in str(r[0])}
     m, rad_s, kg_m2, kg = (("m", "rad/s", "kg·m²", "kg") if lang == "en" else

@@ -51,7 +51,8 @@ def runs(tmp_path_factory, cli_report):
     """Every workbook the CLI writes: engine (both examples × languages × forms),
     linkage (two examples), synthesis.  The engine reports in the seed's form, the
     examples' own ([table] form absent), are the session's shared ones; of the other
-    form, one is the CLI's (shared) and the rest the study layer's (no plots drawn)."""
+    form, one is the CLI's (shared) and the rest the study layer's (no plots drawn); the
+    linkage workbooks are the session's shared ``--no-plots`` runs."""
     out = {}
     for ex in ("petrol", "diesel"):
         for lang in ("ru", "en"):
@@ -68,14 +69,11 @@ def runs(tmp_path_factory, cli_report):
                 d = rep.folder
                 out[("engine", ex, lang, form)] = next(d.glob("*.xlsx"))
                 out[("table2", ex, lang, form)] = next(d.glob("*_table2.csv"))
-    for ex in ("ratchet", "press"):
-        d = tmp_path_factory.mktemp(ex)
-        assert main(["linkage", "--example", ex, "-o", str(d), "--no-plots"]) == 0
-        out[("linkage", ex)] = next(d.glob("*.xlsx"))               # ru, the default
-        d = tmp_path_factory.mktemp(f"{ex}_en")
-        assert main(["linkage", "--example", ex, "-o", str(d), "--no-plots",
-                     "--lang", "en"]) == 0
-        out[("linkage", ex, "en")] = next(d.glob("*.xlsx"))
+    for ex in ("ratchet", "press"):         # the session's shared runs (read-only; the
+        for lang, key in (("ru", ("linkage", ex)), ("en", ("linkage", ex, "en"))):
+            rep = cli_report("linkage", "--example", ex, "--no-plots", "--lang", lang)
+            assert rep.rc == 0, rep.err       # inputs' units test reads the ratchet's)
+            out[key] = next(rep.folder.glob("*.xlsx"))
     for lang in ("ru", "en"):
         d = tmp_path_factory.mktemp(f"synth_{lang}")
         assert main(["synth", "--phi0", "30", "--l1", "0.15", "--ground", "0.4", "-o",
@@ -92,6 +90,19 @@ def _cells(path):
                 for ws in wb.worksheets}
     finally:
         wb.close()
+
+
+@pytest.fixture(scope="module")
+def book():
+    """``book(path)``: the workbook at ``path`` loaded once for the module's tests that
+    only read it (read-only: a test that changes a workbook loads its own copy)."""
+    cache = {}
+
+    def get(path):
+        if path not in cache:
+            cache[path] = load_workbook(path)
+        return cache[path]
+    return get
 
 
 def test_the_study_layer_writes_the_cli_workbook(runs, tmp_path):
@@ -165,11 +176,11 @@ def _strings(wb, skip_symbol_table=True):
                     yield ws.title, c.coordinate, c.value
 
 
-def test_english_workbooks_have_no_cyrillic(runs):
+def test_english_workbooks_have_no_cyrillic(runs, book):
     for key, path in runs.items():
         if key[0] not in ("engine", "linkage") or key[2:3] != ("en",):
             continue
-        wb = load_workbook(path)
+        wb = book(path)
         bad = [(s, where, v) for s, where, v in _strings(wb) if CYRILLIC.search(v)]
         assert not bad, (key, bad[:5])
         with zipfile.ZipFile(path) as z:            # chart titles and series names
@@ -178,7 +189,7 @@ def test_english_workbooks_have_no_cyrillic(runs):
                     assert not CYRILLIC.search(z.read(name).decode()), (key, name)
 
 
-def test_english_synthesis_workbook_has_cyrillic_only_in_its_russian_headers(runs):
+def test_english_synthesis_workbook_has_cyrillic_only_in_its_russian_headers(runs, book):
     """The synthesis workbook keeps a Russian and an English header row in both languages
     (and a Russian and an English name of each quantity); everything else of the English
     one (title, sheet names, the Grashof type, the design task) has no Cyrillic letter,
@@ -186,10 +197,10 @@ def test_english_synthesis_workbook_has_cyrillic_only_in_its_russian_headers(run
     from crankbase.texts import keys, texts
 
     russian = {texts("ru")(k) for k in keys("ru") if k.startswith("synth.book.")}
-    en = load_workbook(runs[("synth", "en")])
+    en = book(runs[("synth", "en")])
     bad = [(s, at, v) for s, at, v in _strings(en) if CYRILLIC.search(v) and v not in russian]
     assert not bad, bad
-    ru = load_workbook(runs[("synth", "ru")])
+    ru = book(runs[("synth", "ru")])
     assert ru.sheetnames == ["Таблица 1", "Механизм"] and en.sheetnames == ["table1",
                                                                            "mechanism"]
     text = "\n".join(v for _, _, v in _strings(ru))
@@ -202,11 +213,11 @@ def test_english_synthesis_workbook_has_cyrillic_only_in_its_russian_headers(run
     assert nums[0] == nums[1]
 
 
-def test_russian_workbooks_carry_every_textbook_symbol(runs):
+def test_russian_workbooks_carry_every_textbook_symbol(runs, book):
     for key, path in runs.items():
         if key[0] != "engine" or key[2] != "ru" or key[3] != "seed":
             continue
-        text = "\n".join(v for _, _, v in _strings(load_workbook(path)))
+        text = "\n".join(v for _, _, v in _strings(book(path)))
         with zipfile.ZipFile(path) as z:
             text += "".join(z.read(n).decode() for n in z.namelist()
                             if n.startswith("xl/charts/"))
@@ -214,7 +225,7 @@ def test_russian_workbooks_carry_every_textbook_symbol(runs):
         assert not missing, (key, missing)
     # the linkage workbook (Russian, the default): seed 000's symbols and Russian units
     for ex, extra in (("ratchet", ("Mпс", "ω4", "ε4", "aBCⁿ")), ("press", ("Fпс",))):
-        text = "\n".join(v for _, _, v in _strings(load_workbook(runs[("linkage", ex)])))
+        text = "\n".join(v for _, _, v in _strings(book(runs[("linkage", ex)])))
         missing = [s for s in ("Mур", "Fи3", "Mи3", "VB", "VBA", "aBAⁿ", "aBAᵗ", "R23n",
                                "R12", "G3", "Н·м", "Н", "м/с", "м/с²", "рад/с", "кг")
                    + extra if s not in text]
@@ -244,27 +255,27 @@ def test_one_set_of_english_symbols():
     assert _CHART_SYMBOLS["ru"] == dict(dPg="ΔPг", M="Mкр", S="Sш", R="Rшш", pole="Oш")
 
 
-def _inputs_rows(path):
-    ws = load_workbook(path).worksheets[0]
+def _inputs_rows(wb):
+    ws = wb.worksheets[0]
     return [[c.value for c in row] for row in ws.iter_rows(min_col=1, max_col=5)]
 
 
-def test_inputs_sheet_lists_the_symbols_of_both_reports(runs):
+def test_inputs_sheet_lists_the_symbols_of_both_reports(runs, book):
     """The Russian Inputs sheet maps every Russian textbook symbol to the English report's
     one; the English sheet lists the English symbols with their meanings (no Cyrillic)."""
     from engine.symbols import correspondence
 
     for lang in ("ru", "en"):
-        rows = _inputs_rows(runs[("engine", "petrol", lang, "seed")])
+        rows = _inputs_rows(book(runs[("engine", "petrol", lang, "seed")]))
         table = {tuple(r[1:4]) if lang == "ru" else tuple(r[1:3]) for r in rows}
         for en, rus, what in correspondence(lang):
             assert ((what, rus, en) if lang == "ru" else (what, en)) in table, (lang, en)
-    rows = _inputs_rows(runs[("engine", "petrol", "ru", "seed")])
+    rows = _inputs_rows(book(runs[("engine", "petrol", "ru", "seed")]))
     assert ("результирующая сила на шатунную шейку", "Rшш", "Rcp") in {
         tuple(r[1:4]) for r in rows}
 
 
-def test_inputs_sheet_speaks_the_report_language(runs):
+def test_inputs_sheet_speaks_the_report_language(runs, book):
     """No raw spec key (``rod_kg_m2``, ``arrangement``…) and no untranslated spec value
     (``otto``, ``inline``) on the Inputs sheet; the masses as given in textbook symbols
     with units (Kolchin's m′п, m′ш per unit piston area for the petrol engine)."""
@@ -272,7 +283,7 @@ def test_inputs_sheet_speaks_the_report_language(runs):
         for lang in ("ru", "en"):
             key_like = re.compile(r"\b[a-z]+_[a-z0-9_]+\b|\b(otto|diesel|throws"
                                   + ("|inline" if lang == "ru" else "") + r")\b")
-            rows = _inputs_rows(runs[("engine", ex, lang, "seed")])
+            rows = _inputs_rows(book(runs[("engine", ex, lang, "seed")]))
             for r in rows:
                 for v in r[1:] if r[0] != "name" else r[1:2]:    # not the engine's name
                     if isinstance(v, str):
@@ -291,11 +302,11 @@ def test_inputs_sheet_speaks_the_report_language(runs):
             assert train == ("рядное" if lang == "ru" else "inline")
 
 
-def test_every_sheet_has_an_a4_print_setup(runs):
+def test_every_sheet_has_an_a4_print_setup(runs, book):
     for key, path in runs.items():
         if key[0] == "table2":
             continue
-        wb = load_workbook(path)
+        wb = book(path)
         for ws in wb.worksheets:
             ps = ws.page_setup
             assert int(ps.paperSize) == 9, (key, ws.title)          # A4
@@ -310,7 +321,7 @@ def test_every_sheet_has_an_a4_print_setup(runs):
             assert sum(widths) / int(ps.fitToWidth) <= 200, (key, ws.title, sum(widths))
 
 
-def test_wrapped_text_rows_are_tall_enough(runs):
+def test_wrapped_text_rows_are_tall_enough(runs, book):
     """A wrapped label never overlaps the next row: each row with wrapped text has a
     height of at least its number of lines (words put on lines at the column's width, as
     a spreadsheet does: :func:`crankbase.workbook.wrapped_lines`) × 12 pt."""
@@ -319,7 +330,7 @@ def test_wrapped_text_rows_are_tall_enough(runs):
     for key, path in runs.items():
         if key[0] != "engine":
             continue
-        wb = load_workbook(path)
+        wb = book(path)
         for ws in (wb.worksheets[0], wb.worksheets[2]):
             merged = {r.min_row: r for r in ws.merged_cells.ranges}
             for row in ws.iter_rows(min_row=3):
@@ -425,7 +436,7 @@ def test_table_form_in_the_spec_and_refused_when_unknown(tmp_path, capsys):
 # ----------------------------------------------------------------------- render on A4
 @pytest.mark.slow
 @needs_office
-def test_workbooks_render_on_a4_pages(runs, tmp_path):
+def test_workbooks_render_on_a4_pages(runs, tmp_path, book):
     """LibreOffice prints every workbook to PDF: every page is A4 (either orientation)
     and every sheet yields at least one page."""
     chosen = [("engine", "petrol", "ru", "seed"), ("engine", "diesel", "en", "kolchin"),
@@ -435,7 +446,7 @@ def test_workbooks_render_on_a4_pages(runs, tmp_path):
     for key in chosen:
         path, pages = runs[key], sizes[key]
         assert set(pages) == {(595, 842)}, (key, set(pages))        # A4, either way
-        assert len(pages) >= len(load_workbook(path).worksheets), key
+        assert len(pages) >= len(book(path).worksheets), key
 
 
 def test_native_polar_chart():

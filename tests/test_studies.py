@@ -53,26 +53,53 @@ def _english_words(text, allowed):
 
 
 # ------------------------------------------------------------------------------ linkage
+@pytest.fixture(scope="module")
+def ratchet_plans(tmp_path_factory):
+    """``plans.study.run_study`` of the ratchet with the plans of positions 5 and 11 (no
+    plots), run once in an empty working folder that it must leave empty (the run writes
+    nothing), and its report written once in English (``linkage.study.write_report``):
+    ``(report, written, folder)`` for the tests that read them (read-only)."""
+    from linkage.study import write_report
+    from plans.study import run_study
+
+    here, cwd = os.getcwd(), tmp_path_factory.mktemp("ratchet_plans")
+    os.chdir(cwd)
+    try:
+        report = run_study(example_path("ratchet.toml"), plots=False, plans=[5, 11])
+        assert sorted(os.listdir(cwd)) == []                 # the run writes nothing
+    finally:
+        os.chdir(here)
+    out = cwd / "out"
+    return report, write_report(report, out, lang="en"), out
+
+
 @pytest.mark.parametrize("example, argv, kw", [
     ("ratchet.toml", ["--plans", "5,11"], dict(plans=[5, 11])),
     ("press.toml", ["--plans", "3", "--sheet", "A1", "--mu-lever", "50"],
      dict(plans="3", mu_lever=50.0)),
 ])
 def test_linkage_study_gives_the_cli_tables_and_writes_what_it_lists(example, argv, kw,
-                                                                     tmp_path, monkeypatch):
+                                                                     tmp_path, monkeypatch,
+                                                                     request):
+    """The ratchet's study and its English report are the module's (:func:`ratchet_plans`,
+    which checks that the run writes nothing), the press's are run here."""
     from linkage.study import summary_lines, write_report
     from plans.study import run_study
 
     cli = tmp_path / "cli"
     stdout, _ = _cli(["linkage", str(example_path(example)), "-o", str(cli), "--no-plots",
                       "--lang", "en", *argv])
-    (tmp_path / "lib").mkdir()
-    empty = _nothing_written(tmp_path / "lib", monkeypatch)
-    report = run_study(example_path(example), plots=False, **kw)
-    assert empty()                                           # the run writes nothing
+    if example == "ratchet.toml":
+        assert kw == dict(plans=[5, 11])
+        report, written, out = request.getfixturevalue("ratchet_plans")
+    else:
+        (tmp_path / "lib").mkdir()
+        empty = _nothing_written(tmp_path / "lib", monkeypatch)
+        report = run_study(example_path(example), plots=False, **kw)
+        assert empty()                                       # the run writes nothing
+        out = tmp_path / "lib" / "out"
+        written = write_report(report, out, lang="en")
     _same_tables(report.tables(), cli)
-    out = tmp_path / "lib" / "out"
-    written = write_report(report, out, lang="en")
     assert sorted(written.files) == sorted(p.name for p in out.iterdir()
                                            if p.name != MANIFEST)
     assert summary_lines(report, "en", written) == stdout.replace(
@@ -100,16 +127,15 @@ def test_linkage_study_without_plans_writes_its_plots(tmp_path, unrendered_figur
     assert unrendered_figures.count("png") == len(PLOTS)        # each plot saved once
 
 
-def test_linkage_summary_in_both_languages_with_plural_forms(tmp_path):
-    from linkage.study import summary_lines, write_report
-    from plans.study import run_study
+def test_linkage_summary_in_both_languages_with_plural_forms(ratchet_plans):
+    """The summaries of the ratchet's plans (the module's study and written report)."""
+    from linkage.study import summary_lines
 
-    report = run_study(example_path("ratchet.toml"), plots=False, plans=[5, 11])
-    written = write_report(report, tmp_path / "o", lang="ru")
+    report, written, out = ratchet_plans
     ru = "\n".join(summary_lines(report, "ru", written))
     en = "\n".join(summary_lines(report, "en", written))
     assert not CYRILLIC.search(en), en
-    assert not _english_words(ru, [tmp_path, "ratchet-drive"]), ru
+    assert not _english_words(ru, [out, "ratchet-drive"]), ru
     assert "для 2 положений на 1 листе A1" in ru and "plans of 2 positions on 1 A1 sheet" in en
     # K is dimensionless: its unit is "-"
     assert re.search(r"K = φр\.х/φх\.х: 1\.1377 -$", ru, re.M)
@@ -253,18 +279,23 @@ def test_engine_spec_without_dynamics_uses_its_flywheel_delta():
 @pytest.mark.parametrize("example, lang", [("rotor_two_plane.toml", "ru"),
                                            ("ratchet_balance.toml", "en")])
 def test_balance_study_gives_the_cli_tables_and_writes_what_it_lists(example, lang,
-                                                                     tmp_path):
+                                                                     tmp_path, cli_report,
+                                                                     unrendered_figures):
+    """As the dynamics study's: the CLI's report (``--example``, that spec) is the
+    session's shared one, rendered; the study layer's plots are built, not drawn."""
     from dynamics.balance_study import run_study, summary_lines, write_report
 
-    cli = tmp_path / "cli"
-    stdout, _ = _cli(["balance", str(example_path(example)), "-o", str(cli),
-                      "--lang", lang])
+    short = {"rotor_two_plane.toml": "rotor", "ratchet_balance.toml": "ratchet"}[example]
+    rep = cli_report("balance", "--example", short, "--lang", lang)
+    assert rep.rc == 0, rep.err
+    cli, stdout = rep.folder, rep.out
     report = run_study(example_path(example))
     _same_tables(report.tables(), cli)
     out = tmp_path / "lib"
     written = write_report(report, out, lang=lang)
     files = {p.name for p in out.iterdir() if p.name != MANIFEST}
     assert set(written.files) <= files and len(files) == len(written.files) + 2 * written.plots
+    assert sorted(unrendered_figures) == ["png"] * written.plots + ["svg"] * written.plots
     assert summary_lines(report, lang, written) == stdout.replace(
         str(cli), str(out)).splitlines()
 
