@@ -103,6 +103,10 @@ def _resample(xy, step):
 def _path_points(path, transform, step):
     """Display points along a path (each sub-path sampled separately; curves as their
     polygons)."""
+    if path.codes is None and transform.is_affine:
+        # what transform_path and to_polygons give for a plain polyline under an affine
+        # transform (no curves to flatten, no sub-paths): its transformed vertices
+        return _resample(transform.transform(path.vertices), step)
     pts = []
     path = transform.transform_path(path)
     for poly in path.to_polygons(closed_only=False):
