@@ -99,6 +99,25 @@ class Obstacles:
             return False
         return not (self.curve_hard and self.curve_cost(b))
 
+    def free_many(self, boxes, pad):
+        """:meth:`free` of every row (x0, y0, x1, y1) of ``boxes`` at once (numpy): the
+        same comparisons and the same floating-point operations, a boolean array."""
+        boxes = np.asarray(boxes, float).reshape(-1, 4)
+        b = [boxes[:, 0] - pad, boxes[:, 1] - pad, boxes[:, 2] + pad, boxes[:, 3] + pad]
+        f = self.frame
+        ok = ~((b[0] < f[0]) | (b[1] < f[1]) | (b[2] > f[2]) | (b[3] > f[3]))
+        c = [v[:, None] for v in b]                     # candidates × obstacles
+        if self.boxes:
+            o = np.asarray(self.boxes, float).reshape(-1, 4)
+            ok &= ~((c[0] < o[:, 2]) & (o[:, 0] < c[2]) & (c[1] < o[:, 3])
+                    & (o[:, 1] < c[3])).any(axis=1)
+        if self.segments:
+            ok &= ~_segments_hit_boxes(self.segments, c)
+        for pts, hard in ((self.lines, True), (self.curve, self.curve_hard)):
+            if hard and len(pts):
+                ok &= _counts_inside(pts, b) == 0
+        return ok
+
     def add_line(self, xy_px, step_px=1.0):
         """A polyline no label may cross (an axis line, another curve)."""
         pts = _resample(xy_px, step_px)
@@ -133,6 +152,43 @@ def _count_inside(c, box):
     return int(inside.sum())
 
 
+def _counts_inside(c, boxes):
+    """:func:`_count_inside` of each box, ``boxes`` the four arrays (x0, y0, x1, y1):
+    only the points inside the boxes' union are compared box by box."""
+    x0, y0, x1, y1 = (np.asarray(v, float) for v in boxes)
+    out = np.zeros(len(x0), int)
+    if not len(c) or not len(x0):
+        return out
+    near = c[(c[:, 0] > x0.min()) & (c[:, 0] < x1.max()) & (c[:, 1] > y0.min())
+             & (c[:, 1] < y1.max())]
+    if len(near):
+        px, py = near[:, 0], near[:, 1]
+        out += ((px > x0[:, None]) & (px < x1[:, None]) & (py > y0[:, None])
+                & (py < y1[:, None])).sum(axis=1)
+    return out
+
+
+def _segments_hit_boxes(segments, boxes):
+    """:func:`segment_hits_box` (``parallel_tol`` 0) of every segment against every box,
+    ``boxes`` the four columns (x0, y0, x1, y1) as (n, 1) arrays: True where a box is hit
+    by any segment.  The same operations, all at once."""
+    seg = np.asarray(segments, float).reshape(-1, 4)
+    px, py = seg[:, 0], seg[:, 1]
+    dx, dy = seg[:, 2] - px, seg[:, 3] - py
+    x0, y0, x1, y1 = boxes
+    shape = np.broadcast_shapes(x0.shape, px.shape)
+    t0, t1 = np.zeros(shape), np.ones(shape)
+    out = np.zeros(shape, bool)
+    with np.errstate(divide="ignore", invalid="ignore"):    # the flat ones are masked
+        for pk, qk in ((-dx, px - x0), (dx, x1 - px), (-dy, py - y0), (dy, y1 - py)):
+            flat = np.abs(pk) <= 0.0
+            out |= flat & (qk < 0)
+            t = qk / pk
+            t0 = np.where(~flat & (pk < 0), np.maximum(t0, t), t0)
+            t1 = np.where(~flat & (pk > 0), np.minimum(t1, t), t1)
+    return (~out & (t0 <= t1)).any(axis=1)
+
+
 def _box_at(anchor, direction, size, gap):
     """Box of a text of ``size`` whose nearest edge is ``gap`` px from ``anchor`` along
     the unit ``direction``: the box centre lies on the ray, pushed out by the half-extent
@@ -142,6 +198,16 @@ def _box_at(anchor, direction, size, gap):
     half = 0.5 * (w * abs(ux) + h * abs(uy))
     cx, cy = anchor[0] + ux * (gap + half), anchor[1] + uy * (gap + half)
     return (cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2)
+
+
+def _boxes_at(anchor, directions, size, gaps):
+    """:func:`_box_at` of every row of ``directions`` (n × 2) with its ``gaps`` (n), as
+    rows (x0, y0, x1, y1): the same operations."""
+    w, h = size
+    ux, uy = directions[:, 0], directions[:, 1]
+    half = 0.5 * (w * np.abs(ux) + h * np.abs(uy))
+    cx, cy = anchor[0] + ux * (gaps + half), anchor[1] + uy * (gaps + half)
+    return np.column_stack([cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2])
 
 
 #: Gaps [pt] tried when none of the given ones leaves a free place.
@@ -170,18 +236,23 @@ def place_label(ax, obstacles, anchor_px, text, normal=(0.0, 1.0), gaps_pt=(3, 6
     n = np.asarray(normal, float)
     n = n / (np.hypot(*n) or 1.0)
     best = None
+    # every place at once (Obstacles.free_many), then the costs of the free ones in the
+    # order they are tried: the first of the least cost wins
+    tried = []
     for turn in (0, 30, -30, 60, -60, 90, -90, 135, -135, 180):
         for side in (1.0, -1.0):
             c, s = np.cos(np.radians(turn)), np.sin(np.radians(turn))
             d = side * np.array([c * n[0] - s * n[1], s * n[0] + c * n[1]])
-            for gap in gaps_pt:
-                box = _box_at(anchor_px, d, size, gap * px_per_pt)
-                if not obstacles.free(box, pad_px):
-                    continue
-                cost = (curve_weight * obstacles.curve_cost(box) + gap
-                        + abs(turn) / 30.0 + (0 if side > 0 else 0.5))
-                if best is None or cost < best[0]:
-                    best = (cost, box)
+            tried += [(turn, side, gap, d) for gap in gaps_pt]
+    boxes = _boxes_at(anchor_px, np.array([t[3] for t in tried]), size,
+                      np.array([t[2] * px_per_pt for t in tried], float))
+    for k in np.flatnonzero(obstacles.free_many(boxes, pad_px)):
+        turn, side, gap, _ = tried[k]
+        box = tuple(boxes[k])
+        cost = (curve_weight * obstacles.curve_cost(box) + gap
+                + abs(turn) / 30.0 + (0 if side > 0 else 0.5))
+        if best is None or cost < best[0]:
+            best = (cost, box)
     if best is None and far and max(gaps_pt) < _FAR[-1]:
         # nowhere near: try farther out before giving up
         return place_label(ax, obstacles, anchor_px, text, normal, _FAR, pad_px,

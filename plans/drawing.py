@@ -75,17 +75,23 @@ def title_fields(spec):
 
 def render_items(ax, items):
     """Draw layout items (mm coordinates) on a matplotlib Axes whose data unit is 1 mm."""
+    import numpy as np
+    from matplotlib.lines import Line2D
     from matplotlib.patches import Circle as MCircle
     from matplotlib.patches import Polygon
 
+    # a line is added as the Line2D ``ax.plot`` makes of it (the same properties and
+    # data, its colour given, so no property cycle): plot's parsing of its arguments
+    # cost more than the line
     for it in items:
         if isinstance(it, Line):
             lw = WIDTH.get(it.layer, S_THIN) * PT
             kw = {}
             if it.layer == "DASHED":
                 kw["dashes"] = (DASH[0] * PT / lw, DASH[1] * PT / lw)
-            ax.plot([it.p1.real, it.p2.real], [it.p1.imag, it.p2.imag], color="k", lw=lw,
-                    solid_capstyle="butt", **kw)
+            ax.add_line(Line2D(np.array([it.p1.real, it.p2.real]),
+                               np.array([it.p1.imag, it.p2.imag]),
+                               color="k", lw=lw, solid_capstyle="butt", **kw))
         elif isinstance(it, Arrow):
             head = arrow_parts(it.p1, it.p2)
             if head is None:
@@ -93,8 +99,9 @@ def render_items(ax, items):
             lw = WIDTH.get(it.layer, S_MAIN) * PT
             tip, left, right = head
             base = (left + right) / 2
-            ax.plot([it.p1.real, base.real], [it.p1.imag, base.imag], color="k", lw=lw,
-                    solid_capstyle="butt")
+            ax.add_line(Line2D(np.array([it.p1.real, base.real]),
+                               np.array([it.p1.imag, base.imag]),
+                               color="k", lw=lw, solid_capstyle="butt"))
             ax.add_patch(Polygon([(z.real, z.imag) for z in head], closed=True,
                                  facecolor="k", edgecolor="k", lw=0.1 * PT))
         elif isinstance(it, Text):

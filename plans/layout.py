@@ -110,8 +110,48 @@ def text_width(text: str, height: float) -> float:
     if not text:
         return 0.0
     tp = TextPath((0, 0), text, size=height / CAP_EM, prop=FontProperties(family=FONT))
-    ext = tp.get_extents()
-    return max(ext.x1, 0.0) + 0.1 * height
+    return max(_path_x1(tp), 0.0) + 0.1 * height
+
+
+def _path_x1(path):
+    """``path.get_extents().x1``, the same number, without evaluating every curve of the
+    path: matplotlib's ``Path.get_extents`` evaluates each Bézier segment at its ends
+    and at its interior extrema (about 50 µs a segment, thousands in a line of text).
+    The largest x is the largest end of a segment unless a curve's control points reach
+    it; only those curves (within a margin far above rounding) are evaluated, by the same
+    code (``BezierSegment``), so the result is the same float."""
+    import numpy as np
+    from matplotlib.bezier import BezierSegment
+    from matplotlib.path import Path
+
+    codes = path.codes
+    if codes is None or not np.isin(codes, (Path.CURVE3, Path.CURVE4)).any():
+        return path.get_extents().x1                # matplotlib's own straight-line case
+    segments = []                                   # (start, verts, code), as
+    first = prev = None                             # Path.iter_bezier walks them
+    for verts, code in path.iter_segments():
+        if code == Path.STOP:
+            break
+        if code == Path.MOVETO:
+            first = verts
+        segments.append((prev, verts, code))
+        prev = verts[-2:]
+    # the ends of every segment (a MOVETO's point; a line's or curve's start and end;
+    # CLOSEPOLY closes to the first point)
+    ends = [v[0] for start, verts, code in segments
+            for v in ((verts,) if code == Path.MOVETO else
+                      (start, first) if code == Path.CLOSEPOLY else
+                      (start, verts[-2:]))]
+    x1 = max(ends)
+    tol = 1e-6 * (1.0 + float(np.abs(path.vertices).max()))
+    for start, verts, code in segments:
+        if code in (Path.CURVE3, Path.CURVE4) and max(start[0], *verts[::2]) >= x1 - tol:
+            pts = [start, verts[:2], verts[2:]] if code == Path.CURVE3 else \
+                [start, verts[:2], verts[2:4], verts[4:]]
+            curve = BezierSegment(np.array(pts))
+            _, dzeros = curve.axis_aligned_extrema()
+            x1 = max(x1, float(curve([0, *dzeros, 1])[:, 0].max()))
+    return x1
 
 
 def text_box(t: Text):
@@ -140,10 +180,12 @@ def _seg_hits_box(p1, p2, box, pad=0.3):
 
 
 class _Scores:
-    """The conflicts of a label's box with the placed boxes and the lines, all at once
+    """The conflicts of label boxes with the placed boxes and the lines, all at once
     (numpy): ``1000 × (boxes it overlaps, :func:`boxes_overlap`) + (segments that cross
     it, :func:`_seg_hits_box`)``, the same tests and the same floating-point operations
-    as those functions, one box or segment at a time."""
+    as those functions, one box or segment at a time.  Called with one box (x0, y0, x1,
+    y1) it returns that box's score; :meth:`many` scores the rows of an array of boxes at
+    once (candidates × boxes and candidates × segments)."""
 
     def __init__(self, boxes, segments, pad=0.4, seg_pad=0.3, parallel_tol=1e-9):
         import numpy as np
@@ -157,15 +199,24 @@ class _Scores:
     def __call__(self, box) -> int:
         import numpy as np
 
+        return int(self.many(np.array([box], float))[0])
+
+    def many(self, boxes):
+        """The scores of the rows (x0, y0, x1, y1) of ``boxes``, an integer array."""
+        import numpy as np
+
+        boxes = np.asarray(boxes, float).reshape(-1, 4)
+        c = [boxes[:, k:k + 1] for k in range(4)]         # columns: candidates × 1
         b, pad = self.b, self.pad
-        over = ~((box[2] + pad <= b[:, 0]) | (b[:, 2] + pad <= box[0])
-                 | (box[3] + pad <= b[:, 1]) | (b[:, 3] + pad <= box[1]))
+        over = ~((c[2] + pad <= b[:, 0]) | (b[:, 2] + pad <= c[0])
+                 | (c[3] + pad <= b[:, 1]) | (b[:, 3] + pad <= c[1]))
         g = self.seg_pad
-        x0, y0, x1, y1 = box[0] - g, box[1] - g, box[2] + g, box[3] + g
+        x0, y0, x1, y1 = c[0] - g, c[1] - g, c[2] + g, c[3] + g
         px, py, dx, dy = self.px, self.py, self.dx, self.dy
-        t0 = np.zeros(len(px))
-        t1 = np.ones(len(px))
-        out = np.zeros(len(px), bool)
+        shape = (len(boxes), len(px))
+        t0 = np.zeros(shape)
+        t1 = np.ones(shape)
+        out = np.zeros(shape, bool)
         with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # flat ones masked
             for pk, qk in ((-dx, px - x0), (dx, x1 - px), (-dy, py - y0), (dy, y1 - py)):
                 flat = np.abs(pk) <= self.tol
@@ -174,38 +225,52 @@ class _Scores:
                 t0 = np.where(~flat & (pk < 0), np.maximum(t0, t), t0)
                 t1 = np.where(~flat & (pk > 0), np.minimum(t1, t), t1)
         hits = ~out & (t0 <= t1)
-        return int(over.sum()) * 1000 + int(hits.sum())
+        return over.sum(axis=1) * 1000 + hits.sum(axis=1)
+
+
+def _text_boxes(at, text, height, ha="center", va="center"):
+    """:func:`text_box` of ``Text(z, text, height, ha=ha, va=va)`` for every ``z`` of
+    the complex array ``at``, as rows (x0, y0, x1, y1): the same operations. [mm]"""
+    import numpy as np
+
+    w = text_width(text, height)
+    h = height * 1.25
+    x = at.real - {"left": 0.0, "center": w / 2, "right": w}[ha]
+    y = at.imag - {"bottom": 0.0, "center": h / 2, "top": h}[va]
+    return np.column_stack([x, y - 0.15 * height, x + w, y + h])
 
 
 class _Placer:
     """Greedy placement of labels: the first candidate that overlaps no placed label and
-    crosses no line; else the one with the fewest conflicts."""
+    crosses no line; else the one with the fewest conflicts (the first of those).  When
+    no candidate is free, the first six are looked around farther out too.  Every
+    candidate of a label is scored at once (:meth:`_Scores.many`)."""
 
     def __init__(self, segments):
         self.segments = list(segments)
         self.boxes = []
 
-    def place(self, candidates, text, height, _far=False):
-        best, best_score = None, None
+    def place(self, candidates, text, height):
+        import numpy as np
+
+        candidates = list(candidates)
         scores = _Scores(self.boxes, self.segments)
-        for at in candidates:
-            t = Text(at, text, height)
-            box = text_box(t)
-            score = scores(box)
-            if score == 0:
-                best = t
-                break
-            if best_score is None or score < best_score:
-                best, best_score = t, score
-        if best_score and not _far:
+        at = np.array(candidates, complex)
+        boxes = _text_boxes(at, text, height)
+        score = scores.many(boxes)
+        if score.min() > 0:
             # nothing free near: look around the first candidates, farther out (a thin
             # polygon near a dead position leaves no room beside its vectors)
             more = [c + r * complex(math.cos(math.radians(k)), math.sin(math.radians(k)))
                     for c in candidates[:6] for r in (4.0, 8.0, 12.0, 18.0)
                     for k in range(0, 360, 30)]
-            return self.place(list(candidates) + more, text, height, _far=True)
-        self.boxes.append(text_box(best))
-        return best
+            candidates += more
+            at = np.array(more, complex)
+            boxes = np.concatenate([boxes, _text_boxes(at, text, height)])
+            score = np.concatenate([score, scores.many(boxes[len(score):])])
+        k = int(np.argmin(score))           # the first zero, else the first of the fewest
+        self.boxes.append(tuple(float(v) for v in boxes[k]))
+        return Text(candidates[k], text, height)
 
 
 def arrow_parts(p1, p2):

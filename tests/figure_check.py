@@ -103,6 +103,10 @@ def _resample(xy, step):
 def _path_points(path, transform, step):
     """Display points along a path (each sub-path sampled separately; curves as their
     polygons)."""
+    if path.codes is None and transform.is_affine:
+        # what transform_path and to_polygons give for a plain polyline under an affine
+        # transform (no curves to flatten, no sub-paths): its transformed vertices
+        return _resample(transform.transform(path.vertices), step)
     pts = []
     path = transform.transform_path(path)
     for poly in path.to_polygons(closed_only=False):
@@ -166,15 +170,33 @@ def line_samples(fig, step=1.0):
     return out
 
 
+#: Agg renderers by (width px, height px, dpi), reused from figure to figure (see
+#: :func:`drawn`); a few sizes kept (an A1 sheet's canvas is 30 MB).
+_RENDERERS = {}
+
+
 def drawn(fig):
     """Lay ``fig`` out as Agg draws it, without rasterising it: the figure is drawn with
     an Agg renderer whose ``draw_*`` calls do nothing (matplotlib's
     ``Figure.draw_without_rendering``, with the renderer kept), so every tick, text
     position, legend place and layout is the one a saved PNG shows (the same text
-    metrics), at about half the cost of a real draw.  Returns the renderer."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    metrics), at about half the cost of a real draw.  Returns the renderer.
 
-    renderer = FigureCanvasAgg(fig).get_renderer()
+    The renderer of a figure of the same size in pixels and dpi is reused: a
+    ``RendererAgg`` allocates and clears its whole canvas when made (35 ms for an A1
+    sheet), and a renderer whose drawing calls did nothing is still blank, so the
+    next figure is laid out by an identical one (what ``FigureCanvasAgg.get_renderer``
+    does for one canvas drawn twice)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg, RendererAgg
+
+    canvas = FigureCanvasAgg(fig)
+    w, h = canvas.get_width_height(physical=True)
+    key = (w, h, fig.dpi)
+    renderer = _RENDERERS.pop(key, None) or RendererAgg(w, h, fig.dpi)
+    _RENDERERS[key] = renderer                          # the newest last
+    while len(_RENDERERS) > 4:
+        del _RENDERERS[next(iter(_RENDERERS))]
+    canvas.renderer, canvas._lastKey = renderer, key    # canvas.get_renderer() is it
     with renderer._draw_disabled():
         fig.draw(renderer)
     return renderer

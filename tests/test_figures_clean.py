@@ -155,13 +155,40 @@ CYRILLIC = re.compile("[\u0400-\u04FF]")
 MATH = re.compile(r"\$[^$]*\$")
 
 
-def _word_problems(fig, lang):
-    """Words no figure may show: a literal underscore outside mathtext ("M_d": #23), and
-    in English a Cyrillic letter."""
+def _texts(fig):
+    """Every ``Text`` of ``fig``, as ``fig.findobj(Text)`` finds them, but without making
+    ticks: ``findobj`` asks each axis for its children, and an axis makes a tick for
+    every tick location it has not made yet (a sheet's or a drawing's axes, switched
+    off, had its thousand-odd ticks made only for this).  A tick made so has an empty
+    label (a label's text is set when its axis is drawn), which no check reads; the
+    ticks an axis has made (every drawn one) are walked, with its label and offset
+    text."""
+    from matplotlib.axis import Axis
     from matplotlib.text import Text
 
     out = []
-    for t in fig.findobj(Text):
+
+    def walk(a):
+        if isinstance(a, Text):
+            out.append(a)
+        if isinstance(a, Axis):
+            kids = [a.label, a.offsetText]
+            for name in ("majorTicks", "minorTicks"):       # the ticks made so far
+                kids += vars(a).get(name, [])
+        else:
+            kids = a.get_children()
+        for c in kids:
+            walk(c)
+
+    walk(fig)
+    return out
+
+
+def _word_problems(fig, lang):
+    """Words no figure may show: a literal underscore outside mathtext ("M_d": #23), and
+    in English a Cyrillic letter."""
+    out = []
+    for t in _texts(fig):
         s = t.get_text()
         if not s or not t.get_visible():
             continue

@@ -33,6 +33,21 @@ def case(request):
 
 
 @pytest.fixture(scope="module")
+def case_sheets(case):
+    """``case_sheets(lang, size)``: the case's sheets (:func:`plans.drawing.layout_sheets`),
+    laid out once per module for the tests that read them (the ru A1 sheets are read by
+    two)."""
+    res, chosen, pps = case
+    memo = {}
+
+    def get(lang, size):
+        if (lang, size) not in memo:
+            memo[lang, size] = drawing.layout_sheets(res, pps, lang, size)
+        return memo[lang, size]
+    return get
+
+
+@pytest.fixture(scope="module")
 def shaper():
     res = linkage.analyze(example_path("shaper.toml"))
     return res, build_chain_plans(res, [2, 5])
@@ -183,10 +198,10 @@ def test_rotation_of_the_rods(case):
     assert seen >= 2
 
 
-def test_sheet_fits_and_nothing_overlaps(case):
+def test_sheet_fits_and_nothing_overlaps(case, case_sheets):
     res, chosen, pps = case
     for lang in ("ru", "en"):
-        sheets = drawing.layout_sheets(res, pps, lang, "A1")
+        sheets = case_sheets(lang, "A1")
         keys = [k for sh in sheets for k in sh.blocks]
         assert "positions" in keys
         for tag in map(str, chosen):
@@ -376,7 +391,7 @@ def g_vec(v, i, n):
     return complex(np.broadcast_to(v.x, n)[i], np.broadcast_to(v.y, n)[i])
 
 
-def test_the_lever_is_drawn_on_the_pdf_and_dxf_sheet(case, tmp_path):
+def test_the_lever_is_drawn_on_the_pdf_and_dxf_sheet(case, case_sheets, tmp_path):
     """Each chosen position's lever is a block of the sheet, every force arrow (and Fур)
     one LINE of the LEVER layer in the DXF, |F|/μF mm long; its texts give Mур from the
     lever beside the kinetostatic one; no two texts overlap."""
@@ -386,7 +401,7 @@ def test_the_lever_is_drawn_on_the_pdf_and_dxf_sheet(case, tmp_path):
 
     res, chosen, pps = case
     for lang, size in (("ru", "A1"), ("en", "A3")):
-        sheets = drawing.layout_sheets(res, pps, lang, size)
+        sheets = case_sheets(lang, size)
         keys = [k for sh in sheets for k in sh.blocks]
         found = {}
         texts = []
