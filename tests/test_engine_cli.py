@@ -327,9 +327,15 @@ def test_help_is_fast_and_lazy():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout.strip()
     assert out == "[]"
-    r = subprocess.run([sys.executable, "-m", "crankdyn", "engine", "--help"],
-                       capture_output=True, text=True)
-    assert r.returncode == 0 and "--example" in r.stdout and "--lang" in r.stdout
+
+
+def test_engine_help(capsys):
+    """``crankdyn engine --help`` (in this process: ``python -m crankdyn --help`` runs
+    as a real process in tests/test_cli_linkage.py) exits 0 naming the options."""
+    with pytest.raises(SystemExit) as exit_:
+        main(["engine", "--help"])
+    out = capsys.readouterr().out
+    assert exit_.value.code == 0 and "--example" in out and "--lang" in out
 
 
 # ------------------------------------------------------------------------ bad input
@@ -421,10 +427,17 @@ def test_bad_input_via_subprocess_has_no_traceback(tmp_path):
     assert r.returncode == 2
     assert r.stderr.strip().splitlines() == [
         "crankdyn engine: error: engine.rod_ratio: got 1.5; must be > 0 and < 1"]
-    # a Russian run (the default) tells the same problem in Russian
-    r = subprocess.run([sys.executable, "-m", "crankdyn", "engine", str(spec), "-o",
-                        str(tmp_path / "out")], capture_output=True, text=True)
-    assert r.stderr.strip().splitlines() == [
+    assert not (tmp_path / "out").exists()
+
+
+def test_bad_input_in_russian_by_default(tmp_path, capsys):
+    """A Russian run (the default) tells the same problem as the process above, in
+    Russian (in this process: the exit status and the clean stderr of a real process are
+    the test above's)."""
+    spec = tmp_path / "spec.toml"
+    spec.write_text(GOOD.replace("rod_ratio = 0.27", "rod_ratio = 1.5"))
+    assert run_cli(spec, "-o", tmp_path / "out") == 2
+    assert capsys.readouterr().err.strip().splitlines() == [
         "crankdyn engine: error: engine.rod_ratio: получено 1.5; должно быть > 0 и < 1"]
     assert not (tmp_path / "out").exists()
 
@@ -521,10 +534,12 @@ def test_two_stroke_engine_end_to_end(tmp_path):
     assert (tmp_path / "o" / "two-stroke_polar_Rshsh.png").stat().st_size > 10000
 
 
-def test_chinese_summary_and_cli_run(tmp_path, capsys):
+def test_chinese_summary_and_cli_run(tmp_path, capsys, unrendered_figures):
     """Issue #19: a Chinese run (``--lang zh``) prints Chinese: no Cyrillic letter, no
     English word beyond the Latin symbols and units, the same numbers as the English
-    summary; its workbook is the Chinese template (Chinese sheet names and labels)."""
+    summary; its workbook is the Chinese template (Chinese sheet names and labels).
+    (The CLI run's figures are built, not drawn: the petrol's Chinese figures are drawn
+    and checked in tests/test_figures_clean.py.)"""
     import re
 
     from openpyxl import load_workbook
@@ -545,6 +560,7 @@ def test_chinese_summary_and_cli_run(tmp_path, capsys):
     out = capsys.readouterr().out
     assert not re.search("[\u0400-\u04ff]", out), out
     assert out.splitlines()[-1].startswith("已写入：")
+    assert len(unrendered_figures) == 26                   # 13 plots, PNG and SVG
     wb = load_workbook(tmp_path / "petrol-vaz2106.xlsx")
     assert [ws.title for ws in wb.worksheets][:3] == ["输入数据", "表 2", "汇总"]
     cells = [v for ws in wb.worksheets for row in ws.iter_rows(values_only=True)
