@@ -18,6 +18,7 @@ from crankbase.output import MANIFEST_NAME
 from crankdyn.cli import main
 from crankbase.resources import example_path
 from engine.plots import PLOT_NAMES, TRAIN_PLOT_NAMES
+from engine.plots.bearing import BEARING_PLOT_NAMES
 from engine.report import TABLE2_FORCES, TABLE2_KEYS
 
 EXAMPLES = {"petrol": ("petrol_vaz2106.toml", "petrol-vaz2106.xlsx"),
@@ -35,13 +36,26 @@ def run_cli(*argv):
     return main(["engine", *map(str, argv)])
 
 
+#: The runs with the bearings: the Russian V8 is the session's shared ``engine --example v8
+#: --bearings`` (Russian, the default; tests/test_portable.py and the summary test below
+#: read it too), its engine files the same as without the bearings, plus theirs.
+BEARINGS = {("v8", "ru")}
+BEARING_CSVS = ("crankpins.csv", "journals.csv", "journal_torques.csv", "rod_bearings.csv",
+                "wear.csv")
+#: The bearing sheets, between the engine's nine printed sheets and the hidden last one.
+BEARING_SHEETS = 6
+
+
 @pytest.fixture(scope="module", params=[("petrol", "ru"), ("petrol", "en"),
                                         ("diesel", "ru"), ("diesel", "en"), ("six", "en"),
                                         ("v8", "ru"), ("v8", "en")],
                 ids=lambda p: "-".join(p))
 def run(request, cli_report):
     name, lang = request.param
-    rep = cli_report("engine", "--example", name, "--lang", lang)   # shared, read-only
+    if request.param in BEARINGS:
+        rep = cli_report("engine", "--example", name, "--bearings")  # shared, read-only
+    else:
+        rep = cli_report("engine", "--example", name, "--lang", lang)   # shared, read-only
     assert rep.rc == 0
     return name, lang, rep.folder
 
@@ -54,6 +68,10 @@ def test_outputs_exist(run):
     expected |= {EXAMPLES[name][1], MANIFEST_NAME}
     expected |= {named(name, f"{s}.{e}") for s in PLOT_NAMES + TRAIN_PLOT_NAMES
                  for e in ("png", "svg")}
+    if (name, lang) in BEARINGS:      # the V8 has no rod model: every other bearing plot
+        expected |= {named(name, f) for f in BEARING_CSVS}
+        expected |= {named(name, f"{s}.{e}") for s in BEARING_PLOT_NAMES
+                     if s != "rod_model" for e in ("png", "svg")}
     assert files == expected          # nothing else (no temporary files left)
 
 
@@ -89,8 +107,10 @@ def test_workbook_equals_csv(run):
     name, lang, out = run
     df = pd.read_csv(out / named(name, "forces.csv"))
     wb = load_workbook(out / EXAMPLES[name][1])
-    # 9 printed sheets; the native charts' data (the fine grid) on a hidden last one
-    assert [ws.sheet_state for ws in wb.worksheets] == ["visible"] * 9 + ["hidden"]
+    # 9 printed sheets (and the bearings'); the native charts' data (the fine grid) on a
+    # hidden last one
+    printed = 9 + (BEARING_SHEETS if (name, lang) in BEARINGS else 0)
+    assert [ws.sheet_state for ws in wb.worksheets] == ["visible"] * printed + ["hidden"]
     ws_in, ws_t2, ws_sum, ws_data, ws_ch = wb.worksheets[:5]
     mu = engine.load(example_path(EXAMPLES[name][0])).settings.force_scale
     # Table 2: α, (mm, N) × 8 forces, Mкр, Ψ — numbers, not formulas
@@ -182,8 +202,10 @@ def test_inputs_and_summary_sheets(run):
 def test_plots_exist_and_are_not_empty(run):
     import matplotlib.image as mpimg
 
-    name, _, out = run
-    for stem in PLOT_NAMES + TRAIN_PLOT_NAMES:
+    name, lang, out = run
+    bearings = tuple(s for s in BEARING_PLOT_NAMES if s != "rod_model") \
+        if (name, lang) in BEARINGS else ()
+    for stem in PLOT_NAMES + TRAIN_PLOT_NAMES + bearings:
         stem = named(name, stem)
         png = out / f"{stem}.png"
         img = mpimg.imread(png)
