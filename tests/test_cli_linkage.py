@@ -193,17 +193,30 @@ def test_example_names_are_the_commands_own(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("name", ["ratchet", "press", "ratchet.toml"])
-def test_every_bundled_linkage_example_runs(name, cli_report):
-    rep = cli_report("linkage", "--example", name)      # shared, read-only
+def test_every_bundled_linkage_example_runs(name, cli_report, tmp_path):
+    """Each example by its name and by its file name.  The ratchet's plots are those of
+    the session's shared run of the default example (the ratchet, rendered once); a run
+    that names it (``ratchet``, ``ratchet.toml``) writes the tables only, and they are
+    that run's byte for byte."""
+    shared = ("linkage", "--example", "press") if name == "press" else \
+        ("linkage", "--example")
+    rep = cli_report(*shared)                           # shared, read-only
     assert rep.rc == 0
     out = rep.folder
     for p in PLOTS:
         assert _one(out, f"{p}.png").stat().st_size > 1000
     k = pd.read_csv(_one(out, "kinematics.csv"))
     assert len(k) == 12 and list(k["position"]) == list(range(1, 13))
+    if name != "press":
+        named = tmp_path / "named"
+        assert main(["linkage", "--example", name, "-o", str(named), "--no-plots"]) == 0
+        for tail in ("kinematics.csv", "forces.csv"):
+            assert _one(named, tail).read_bytes() == _one(out, tail).read_bytes(), tail
 
 
-def test_explicit_angles_crank_slider(tmp_path):
+def test_explicit_angles_crank_slider(tmp_path, unrendered_figures):
+    """(The tables and the workbook are checked; the plots are built, not drawn: the
+    press example's, a crank-slider's, are rendered in the shared run above.)"""
     spec = tmp_path / "slider.toml"
     spec.write_text("""
 [mechanism]
@@ -540,7 +553,16 @@ def _russian_terminal_problems(text, allowed):
     return [w for w in _LATIN_WORD.findall(text) if w not in ("max", "min", "PNG", "SVG")]
 
 
-def test_terminal_summary_speaks_the_report_language(lang_runs, tmp_path, capsys):
+def _plans_run(cli_report, lang):
+    """``crankdyn linkage --example --no-plots --plans 5 --lang LANG`` (the ratchet with
+    its plans for position 5, tables only): the session's shared run (read-only), so the
+    English one serves the two tests that read it."""
+    rep = cli_report("linkage", "--example", "--no-plots", "--plans", "5", "--lang", lang)
+    assert rep.rc == 0, rep.err
+    return rep
+
+
+def test_terminal_summary_speaks_the_report_language(lang_runs, cli_report):
     for ex, name in (("ratchet", "ratchet-drive"), ("press", "crank-press")):
         run, out, err = lang_runs[(ex, "ru")]
         assert not _russian_terminal_problems(out + err, [str(run), name]), (ex, out)
@@ -552,13 +574,11 @@ def test_terminal_summary_speaks_the_report_language(lang_runs, tmp_path, capsys
         assert num.findall(out) == num.findall(en_out) and num.findall(out)
     # the plans' lines (Zhukovsky lever) too
     for lang in ("ru", "en"):
-        d = tmp_path / lang
-        assert main(["linkage", "--example", "-o", str(d), "--no-plots", "--plans", "5",
-                     "--lang", lang]) == 0
-        cap = capsys.readouterr()
+        cap = _plans_run(cli_report, lang)
         if lang == "ru":
             assert not _russian_terminal_problems(cap.out + cap.err,
-                                                  [str(d), "ratchet-drive"]), cap.out
+                                                  [str(cap.folder), "ratchet-drive"]), \
+                cap.out
             assert "рычаг Жуковского" in cap.out and "Fур = " in cap.out
         else:
             assert not CYRILLIC.search(cap.out + cap.err), cap.out
@@ -649,17 +669,12 @@ crank_angles_deg = [30.0, 40.0]
     assert math.isnan(df["omega4_rad_s"].iat[0]) and np.isfinite(df["omega4_rad_s"].iat[1])
 
 
-def test_a_chinese_run_prints_and_writes_chinese(tmp_path, capsys):
+def test_a_chinese_run_prints_and_writes_chinese(cli_report):
     """Issue #19: ``crankdyn linkage --lang zh`` (ratchet, with its plans for position 5):
     the summary and the workbook in Chinese, no Cyrillic letter, no English word beyond
     the mechanism's own names and the Latin symbols; the same numbers as in English."""
     num = re.compile(r"-?\d+\.\d+")
-    outs = {}
-    for lang in ("en", "zh"):
-        d = tmp_path / lang
-        assert main(["linkage", "--example", "-o", str(d), "--no-plots", "--plans", "5",
-                     "--lang", lang]) == 0
-        outs[lang] = capsys.readouterr()
+    outs = {lang: _plans_run(cli_report, lang) for lang in ("en", "zh")}
     out = outs["zh"].out + outs["zh"].err
     assert not CYRILLIC.search(out), out
     text = re.sub(r"\S*/\S*|ratchet-drive\S*|\S+\.(csv|xlsx|pdf|dxf|png|svg)", " ", out)
@@ -667,6 +682,6 @@ def test_a_chinese_run_prints_and_writes_chinese(tmp_path, capsys):
     assert words <= {"max", "PNG", "SVG"}, words
     assert "茹科夫斯基杠杆" in out and "曲柄摇杆机构" in out
     assert num.findall(outs["zh"].out) == num.findall(outs["en"].out)
-    strings = [v for _, v in _workbook_strings(tmp_path / "zh" / "ratchet-drive.xlsx")]
+    strings = [v for _, v in _workbook_strings(outs["zh"].folder / "ratchet-drive.xlsx")]
     assert not any(CYRILLIC.search(v) for v in strings)
     assert "曲柄长度 lOA" in strings

@@ -18,6 +18,7 @@ from crankbase.output import MANIFEST_NAME
 from crankdyn.cli import main
 from crankbase.resources import example_path
 from engine.plots import PLOT_NAMES, TRAIN_PLOT_NAMES
+from engine.plots.bearing import BEARING_PLOT_NAMES
 from engine.report import TABLE2_FORCES, TABLE2_KEYS
 
 EXAMPLES = {"petrol": ("petrol_vaz2106.toml", "petrol-vaz2106.xlsx"),
@@ -35,13 +36,26 @@ def run_cli(*argv):
     return main(["engine", *map(str, argv)])
 
 
+#: The runs with the bearings: the Russian V8 is the session's shared ``engine --example v8
+#: --bearings`` (Russian, the default; tests/test_portable.py and the summary test below
+#: read it too), its engine files the same as without the bearings, plus theirs.
+BEARINGS = {("v8", "ru")}
+BEARING_CSVS = ("crankpins.csv", "journals.csv", "journal_torques.csv", "rod_bearings.csv",
+                "wear.csv")
+#: The bearing sheets, between the engine's nine printed sheets and the hidden last one.
+BEARING_SHEETS = 6
+
+
 @pytest.fixture(scope="module", params=[("petrol", "ru"), ("petrol", "en"),
                                         ("diesel", "ru"), ("diesel", "en"), ("six", "en"),
                                         ("v8", "ru"), ("v8", "en")],
                 ids=lambda p: "-".join(p))
 def run(request, cli_report):
     name, lang = request.param
-    rep = cli_report("engine", "--example", name, "--lang", lang)   # shared, read-only
+    if request.param in BEARINGS:
+        rep = cli_report("engine", "--example", name, "--bearings")  # shared, read-only
+    else:
+        rep = cli_report("engine", "--example", name, "--lang", lang)   # shared, read-only
     assert rep.rc == 0
     return name, lang, rep.folder
 
@@ -54,6 +68,10 @@ def test_outputs_exist(run):
     expected |= {EXAMPLES[name][1], MANIFEST_NAME}
     expected |= {named(name, f"{s}.{e}") for s in PLOT_NAMES + TRAIN_PLOT_NAMES
                  for e in ("png", "svg")}
+    if (name, lang) in BEARINGS:      # the V8 has no rod model: every other bearing plot
+        expected |= {named(name, f) for f in BEARING_CSVS}
+        expected |= {named(name, f"{s}.{e}") for s in BEARING_PLOT_NAMES
+                     if s != "rod_model" for e in ("png", "svg")}
     assert files == expected          # nothing else (no temporary files left)
 
 
@@ -89,8 +107,10 @@ def test_workbook_equals_csv(run):
     name, lang, out = run
     df = pd.read_csv(out / named(name, "forces.csv"))
     wb = load_workbook(out / EXAMPLES[name][1])
-    # 9 printed sheets; the native charts' data (the fine grid) on a hidden last one
-    assert [ws.sheet_state for ws in wb.worksheets] == ["visible"] * 9 + ["hidden"]
+    # 9 printed sheets (and the bearings'); the native charts' data (the fine grid) on a
+    # hidden last one
+    printed = 9 + (BEARING_SHEETS if (name, lang) in BEARINGS else 0)
+    assert [ws.sheet_state for ws in wb.worksheets] == ["visible"] * printed + ["hidden"]
     ws_in, ws_t2, ws_sum, ws_data, ws_ch = wb.worksheets[:5]
     mu = engine.load(example_path(EXAMPLES[name][0])).settings.force_scale
     # Table 2: α, (mm, N) × 8 forces, Mкр, Ψ — numbers, not formulas
@@ -182,8 +202,10 @@ def test_inputs_and_summary_sheets(run):
 def test_plots_exist_and_are_not_empty(run):
     import matplotlib.image as mpimg
 
-    name, _, out = run
-    for stem in PLOT_NAMES + TRAIN_PLOT_NAMES:
+    name, lang, out = run
+    bearings = tuple(s for s in BEARING_PLOT_NAMES if s != "rod_model") \
+        if (name, lang) in BEARINGS else ()
+    for stem in PLOT_NAMES + TRAIN_PLOT_NAMES + bearings:
         stem = named(name, stem)
         png = out / f"{stem}.png"
         img = mpimg.imread(png)
@@ -327,9 +349,15 @@ def test_help_is_fast_and_lazy():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout.strip()
     assert out == "[]"
-    r = subprocess.run([sys.executable, "-m", "crankdyn", "engine", "--help"],
-                       capture_output=True, text=True)
-    assert r.returncode == 0 and "--example" in r.stdout and "--lang" in r.stdout
+
+
+def test_engine_help(capsys):
+    """``crankdyn engine --help`` (in this process: ``python -m crankdyn --help`` runs
+    as a real process in tests/test_cli_linkage.py) exits 0 naming the options."""
+    with pytest.raises(SystemExit) as exit_:
+        main(["engine", "--help"])
+    out = capsys.readouterr().out
+    assert exit_.value.code == 0 and "--example" in out and "--lang" in out
 
 
 # ------------------------------------------------------------------------ bad input
@@ -421,10 +449,17 @@ def test_bad_input_via_subprocess_has_no_traceback(tmp_path):
     assert r.returncode == 2
     assert r.stderr.strip().splitlines() == [
         "crankdyn engine: error: engine.rod_ratio: got 1.5; must be > 0 and < 1"]
-    # a Russian run (the default) tells the same problem in Russian
-    r = subprocess.run([sys.executable, "-m", "crankdyn", "engine", str(spec), "-o",
-                        str(tmp_path / "out")], capture_output=True, text=True)
-    assert r.stderr.strip().splitlines() == [
+    assert not (tmp_path / "out").exists()
+
+
+def test_bad_input_in_russian_by_default(tmp_path, capsys):
+    """A Russian run (the default) tells the same problem as the process above, in
+    Russian (in this process: the exit status and the clean stderr of a real process are
+    the test above's)."""
+    spec = tmp_path / "spec.toml"
+    spec.write_text(GOOD.replace("rod_ratio = 0.27", "rod_ratio = 1.5"))
+    assert run_cli(spec, "-o", tmp_path / "out") == 2
+    assert capsys.readouterr().err.strip().splitlines() == [
         "crankdyn engine: error: engine.rod_ratio: получено 1.5; должно быть > 0 и < 1"]
     assert not (tmp_path / "out").exists()
 
@@ -521,10 +556,12 @@ def test_two_stroke_engine_end_to_end(tmp_path):
     assert (tmp_path / "o" / "two-stroke_polar_Rshsh.png").stat().st_size > 10000
 
 
-def test_chinese_summary_and_cli_run(tmp_path, capsys):
+def test_chinese_summary_and_cli_run(tmp_path, capsys, unrendered_figures):
     """Issue #19: a Chinese run (``--lang zh``) prints Chinese: no Cyrillic letter, no
     English word beyond the Latin symbols and units, the same numbers as the English
-    summary; its workbook is the Chinese template (Chinese sheet names and labels)."""
+    summary; its workbook is the Chinese template (Chinese sheet names and labels).
+    (The CLI run's figures are built, not drawn: the petrol's Chinese figures are drawn
+    and checked in tests/test_figures_clean.py.)"""
     import re
 
     from openpyxl import load_workbook
@@ -545,6 +582,7 @@ def test_chinese_summary_and_cli_run(tmp_path, capsys):
     out = capsys.readouterr().out
     assert not re.search("[\u0400-\u04ff]", out), out
     assert out.splitlines()[-1].startswith("已写入：")
+    assert len(unrendered_figures) == 26                   # 13 plots, PNG and SVG
     wb = load_workbook(tmp_path / "petrol-vaz2106.xlsx")
     assert [ws.title for ws in wb.worksheets][:3] == ["输入数据", "表 2", "汇总"]
     cells = [v for ws in wb.worksheets for row in ws.iter_rows(values_only=True)

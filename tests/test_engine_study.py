@@ -99,7 +99,11 @@ def _files(folder):
     return {p.name for p in folder.iterdir() if p.name != MANIFEST_NAME}
 
 
-def test_write_writes_exactly_the_files_listed_and_removes_stale_ones(tmp_path):
+def test_write_writes_exactly_the_files_listed_and_removes_stale_ones(tmp_path,
+                                                                     unrendered_figures):
+    """(Which files are written and removed; the figures are built, not drawn: the
+    petrol's plots are rendered by the session's shared CLI reports, the drawings in
+    tests/test_reports_plots.py.)"""
     path = example_path("petrol_vaz2106.toml")
     report = engine.run_study(engine.load(path), source=path)
     out = tmp_path / "out"
@@ -119,6 +123,7 @@ def test_write_writes_exactly_the_files_listed_and_removes_stale_ones(tmp_path):
     # another engine's files in the folder stay; this engine's PNGs and PDFs of the
     # earlier run are stale when the new run writes SVG without the drawing
     (out / "other_forces_P.png").write_bytes(b"x")
+    assert unrendered_figures == ["png"] * 13 + ["pdf"] * 3
     again = engine.write_report(report, out, "ru", formats="svg")
     assert _files(out) == {p.name for p in again} | {"other_forces_P.png"}
     assert not list(out.glob("petrol-vaz2106*.png")) and not list(out.glob("*.pdf"))

@@ -205,3 +205,85 @@ def test_polar_chart_axes_carry_few_enough_labels_to_read(example):
         for ax in (ch.x_axis, ch.y_axis):
             n = round((ax.scaling.max - ax.scaling.min) / ax.majorUnit) + 1
             assert n <= 9, (example, n)
+
+
+# ----------------------------------------------------------- saving: the number cells
+def _members(data):
+    import io
+    import zipfile
+
+    z = zipfile.ZipFile(io.BytesIO(data))
+    # docProps/core.xml holds the time of the save, the one part two saves differ in
+    return {i.filename: z.read(i.filename) for i in z.infolist()
+            if i.filename != "docProps/core.xml"}
+
+
+def _odd_cells_workbook():
+    """A workbook with every kind of cell next to numbers: ints past 16 digits, −0.0,
+    subnormal and huge floats, an empty styled cell, text with spaces and markup, a
+    formula, a bool, a date, a hyperlink, a comment on an empty cell, NaN."""
+    import datetime
+
+    from openpyxl import Workbook
+    from openpyxl.comments import Comment
+    from openpyxl.styles import Font
+
+    wb = Workbook()
+    ws = wb.active
+    for r, v in enumerate([1, -5, 2 ** 60, 12345678901234567, 0.1 + 0.2, -0.0, 5e-324,
+                           1e-320, 1e300, -1.5e-7, 3.0, float("nan"), True,
+                           " text <&> ", "=A1+A2", datetime.date(2026, 11, 26)], start=1):
+        ws.cell(r, 1, v)
+        ws.cell(r, 2, v).font = Font(bold=True)
+    ws["C1"].font = Font(italic=True)                               # styled, empty
+    ws["C2"].comment = Comment("a note", "t")                       # commented, empty
+    ws["C3"] = 7.25
+    ws["C3"].hyperlink = "https://example.org"
+    return wb
+
+
+@pytest.mark.parametrize("case", ["odd cells", "v8 bearings ru"])
+def test_number_cells_are_saved_as_openpyxl_writes_them(case, tmp_path, monkeypatch):
+    """crankbase.output.full_precision_xlsx writes number cells without openpyxl's element
+    per cell: the saved file is the one openpyxl's own cell writer gives, part for part
+    and byte for byte (but the save time in docProps/core.xml), for an engine workbook
+    (the V8 with its bearing sheets) and for every odd kind of cell; and it reads back
+    to the same values."""
+    import math
+
+    from openpyxl import load_workbook
+
+    from crankbase.output import full_precision_xlsx
+
+    def build():
+        if case == "odd cells":
+            return _odd_cells_workbook()
+        from engine.study import report_workbook       # the engine's and bearings' sheets
+
+        return report_workbook(engine.run_study(engine.load(example_path(
+            "diesel_kamaz740.toml")), bearings=True), "ru")
+
+    def save(path):
+        with full_precision_xlsx():
+            build().save(path)
+        return path
+
+    fast = save(tmp_path / "fast.xlsx")
+    with monkeypatch.context() as m:                 # openpyxl's own writer, every cell
+        m.setattr("crankbase.output._number_cell_writer", lambda write_cell, text: write_cell)
+        own = save(tmp_path / "own.xlsx")
+    a, b = _members(fast.read_bytes()), _members(own.read_bytes())
+    assert list(a) == list(b)
+    for part in a:
+        assert a[part] == b[part], part
+    sheet = a["xl/worksheets/sheet1.xml"].decode()
+    if case == "odd cells":
+        assert '<c r="A6" t="n"><v>-0.0</v></c>' in sheet            # full precision
+        assert '<c r="A4" t="n"><v>1.234567890123457e+16</v></c>' in sheet
+        ws = load_workbook(fast).active
+        assert ws["A5"].value == 0.1 + 0.2 and ws["A7"].value == 5e-324
+        assert math.copysign(1, ws["B6"].value) == -1.0 and ws["A14"].value == " text <&> "
+        assert ws["C3"].hyperlink.target == "https://example.org"
+    else:
+        assert sum(v.count(b' t="n"><v>') for k, v in a.items()
+                   if k.startswith("xl/worksheets/")) > 10000      # the tables' numbers

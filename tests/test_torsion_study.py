@@ -79,8 +79,11 @@ def test_holzer_csv_closes_at_the_natural_frequencies(three, tmp_path):
     assert abs(last.iloc[2]) > 1e-3 * scale.iloc[2]
 
 
-def test_the_csvs_equal_the_study_tables(six, tmp_path):
+def test_the_csvs_equal_the_study_tables(six, tmp_path, unrendered_figures):
+    """(The tables, the names and the workbook; the figures are built, not drawn: the
+    torsion plots are rendered in tests/test_torsion_plots.py.)"""
     written = write_report(six, tmp_path, "en", formats=("png",))
+    assert unrendered_figures == ["png"] * len(written.plots) and written.plots
     assert [p.name for p in written.tables] == [f"bmw-m54b30_{n}" for n in six.tables]
     for name, df in six.tables.items():
         back = pd.read_csv(tmp_path / f"bmw-m54b30_{name}")
@@ -172,9 +175,12 @@ def test_inline_six_major_orders_are_multiples_of_three(six):
     assert cs["speed_rpm"].between(800, 6500).all()
 
 
-def test_engine_report_with_torsion_is_the_report_without_plus_the_torsion_files(tmp_path):
+def test_engine_report_with_torsion_is_the_report_without_plus_the_torsion_files(
+        tmp_path, unrendered_figures):
     """The engine report of the spec with [torsion] writes every file of the same spec
-    without the table, byte for byte (the CSVs), plus the torsion files."""
+    without the table, byte for byte (the CSVs), plus the torsion files.  (Names and
+    tables: the figures are built, not drawn; the six's engine plots are rendered by the
+    session's shared CLI report, the torsion plots in tests/test_torsion_plots.py.)"""
     data = _six_dict()
     bare = copy.deepcopy(data)
     del bare["torsion"]
