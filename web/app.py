@@ -361,10 +361,16 @@ def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of,
             st.runs += 1
             number = st.runs
             options = dict(st.options)
+            last = st.run
         folder = session.folder / f"{kind.name}-{number}"     # each page its own folders
         try:
-            report, blob = await pool.run(_computed, kind, data, folder / "input", pressure,
-                                          options)
+            if _same_study(last, data, pressure, options):
+                # the session's last study asked again (in another language, say): its
+                # report is drawn anew, the numbers are not computed again
+                report, blob = last.report, report_blob(last.report)
+            else:
+                report, blob = await pool.run(_computed, kind, data, folder / "input",
+                                              pressure, options)
         except SpecError as exc:
             shutil.rmtree(folder, ignore_errors=True)
             with st.lock:
@@ -672,6 +678,15 @@ def _computed(kind, data, input_dir, pressure, options):
     the drawing process (:func:`web.pages.report_blob`): ``(report, blob)``."""
     report = kind.compute(data, input_dir, pressure, options)
     return report, report_blob(report)
+
+
+def _same_study(last, data, pressure, options) -> bool:
+    """Whether the session's ``last`` run (a :class:`web.pages.Run` or None) is the study
+    of the spec dict ``data`` with these options: its report is then the one this run
+    would compute (a study is a function of its spec and options).  A run reading a
+    pressure file is computed again (its report names the file of its own folder)."""
+    return (last is not None and pressure is None and last.pressure is None
+            and last.options == options and last.spec == data)
 
 
 def _problem(key, text):
