@@ -618,6 +618,57 @@ def test_the_dynamics_page_equals_crankdyn_dynamics(app, tmp_path, example, key,
         assert f"The first {PAGE_ROWS} of {len(want) - 1} rows" in r.text
 
 
+def test_the_same_study_asked_again_is_drawn_again_but_not_computed_again(app,
+                                                                          monkeypatch):
+    """A session's flywheel run posted again in Russian (web.app._same_study): the
+    library's study runs once, the second run's CSVs are the first's byte for byte, its
+    summary and figures are Russian (drawn again, from the first run's report); a changed
+    value is computed again, with other numbers."""
+    import dynamics.study as study
+
+    real, calls = study.run_study, []
+    monkeypatch.setattr(study, "run_study", lambda *a, **k: calls.append(1) or real(*a, **k))
+
+    def files(html, ext):
+        urls = re.findall(rf'(?:href|src)="(/dynamics/run/\d+/[^"]+\.{ext})"', html)
+        return {u.rsplit("/", 1)[1]: c.get(u).content for u in urls}
+
+    c = client(app)
+    c.post("/dynamics/example", data={"example": "flywheel"})
+    vals = form_values(c.get("/dynamics").text)
+    first = c.post("/dynamics/run", data=vals).text
+    assert 'id="results"' in first and calls == [1]
+    csv1, png1 = files(first, "csv"), files(first, "png")
+    again = c.post("/dynamics/run?lang=ru", data=vals).text
+    assert 'id="results"' in again and calls == [1]            # not computed again
+    summary = re.search(r'<pre id="summary">(.*?)</pre>', again, re.S).group(1)
+    assert re.search("[А-Яа-яЁё]", summary) and not re.search(
+        "[А-Яа-яЁё]", re.search(r'<pre id="summary">(.*?)</pre>', first, re.S).group(1))
+    csv2, png2 = files(again, "csv"), files(again, "png")
+    assert csv1 and csv2 == csv1
+    assert sorted(png2) == sorted(png1) and all(png2[n][:4] == b"\x89PNG" for n in png2)
+    assert any(png2[n] != png1[n] for n in png1)                # drawn again, in Russian
+    vals["machine.J_red_kgm2"] = "0.3"
+    other = c.post("/dynamics/run?lang=ru", data=vals).text
+    assert 'id="results"' in other and calls == [1, 1]         # a new study: computed
+    csv3 = files(other, "csv")
+    assert sorted(csv3) == sorted(csv1) and csv3 != csv1
+
+
+def test_a_report_crosses_to_the_drawing_process_pickled():
+    """web.pages.report_blob: read-only mappings (a report's tables) pickled as such;
+    something that does not pickle gives None (the drawing process then computes)."""
+    import pickle
+    from types import MappingProxyType
+
+    from web.pages import report_blob
+
+    back = pickle.loads(report_blob({"tables": MappingProxyType({"a": 1.5}), "x": [1, 2]}))
+    assert type(back["tables"]) is MappingProxyType and back == {"tables": {"a": 1.5},
+                                                                 "x": [1, 2]}
+    assert report_blob({"f": lambda: 0}) is None
+
+
 @pytest.mark.parametrize("lang,words", [("en", "must be > 0 and < 1"),
                                         ("ru", "должно быть > 0 и < 1")])
 def test_a_bad_delta_is_named_at_its_field(app, lang, words):

@@ -1,7 +1,7 @@
 """``crankdyn serve`` in a real browser: Debian's headless Chromium driven by Selenium.
 
-One server (uvicorn in a thread, on a free port of 127.0.0.1) and one browser for the
-module.  The browser loads the petrol example, changes the speed, computes, and the first
+One server (uvicorn in a thread, on a free port of 127.0.0.1, serving the session's app)
+and one browser for the module.  The browser loads the petrol example, changes the speed, computes, and the first
 rows of Table 2 on the page must be the CLI's ``forces.csv`` for the same spec; the
 workbook it downloads must equal the CLI's value for value; a bad bore is named next to
 its field.  Where the browser cannot start, the test fails: CI installs ``chromium`` and
@@ -34,14 +34,15 @@ def _free_port() -> int:
 
 
 @pytest.fixture(scope="module")
-def server(tmp_path_factory):
+def server(web_app):
+    """The session's app (tests/conftest.py ``web_app``: its render processes already
+    started when another web module ran first) served by uvicorn; without its lifespan,
+    whose end would close the app's pools for the modules after this one."""
     import uvicorn
 
-    import web
-
     port = _free_port()
-    config = uvicorn.Config(web.create_app(root=tmp_path_factory.mktemp("webroot")),
-                            host="127.0.0.1", port=port, log_level="warning")
+    config = uvicorn.Config(web_app, host="127.0.0.1", port=port, log_level="warning",
+                            lifespan="off")
     srv = uvicorn.Server(config)
     th = threading.Thread(target=srv.run, daemon=True)
     th.start()

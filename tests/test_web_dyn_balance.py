@@ -152,9 +152,11 @@ def test_the_dynamics_page_runs_the_cli_s_example(request, tmp_path, cli_report,
     assert pngs and all(got.get(n, b"")[:4] == b"\x89PNG" for n in pngs)
 
 
-def test_the_dynamics_page_s_spec_repeats_the_run(dyn_shaper, tmp_path):
+def test_the_dynamics_page_s_spec_repeats_the_run(dyn_shaper, tmp_path, unrendered_figures):
     """The downloaded spec of the shaper's run, given to ``crankdyn dynamics``, writes the
-    page's CSVs again (the chain's [[group]] and [dynamics] round-trip through the form)."""
+    page's CSVs again (the chain's [[group]] and [dynamics] round-trip through the form;
+    the command's figures saved unrendered: the CSVs are compared, the page's figures are
+    PNG, drawn in the app's render processes)."""
     import tomllib
 
     from crankdyn.cli import main
@@ -172,10 +174,12 @@ def test_the_dynamics_page_s_spec_repeats_the_run(dyn_shaper, tmp_path):
         assert got[p.name] == p.read_bytes(), p.name
 
 
-def test_an_engine_spec_with_dynamics_uploaded_with_its_pressure_file(app, tmp_path):
+def test_an_engine_spec_with_dynamics_uploaded_with_its_pressure_file(app, tmp_path,
+                                                                     unrendered_figures):
     """The diesel D-240 (its indicator table a CSV) with a [dynamics] table, uploaded under
-    the user's names: the CSVs equal ``crankdyn dynamics`` on the same two files; the
-    run's downloads hold the pressure file under the server's name."""
+    the user's names: the CSVs equal ``crankdyn dynamics`` on the same two files (whose
+    figures are saved unrendered: the CSVs are compared); the run's downloads hold the
+    pressure file under the server's name."""
     import shutil
 
     from crankdyn.cli import main

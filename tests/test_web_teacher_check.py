@@ -364,10 +364,12 @@ def torsion_page(app):
     return c, r.text
 
 
-@pytest.fixture(scope="module")
-def torsion_cli(tmp_path_factory):
+@pytest.fixture
+def torsion_cli(tmp_path_factory, unrendered_figures):
     """``crankdyn engine examples/torsion_inline6.toml --torsion -o DIR --lang en``:
-    ``(folder, printed text)``."""
+    ``(folder, printed text)``; its figures saved unrendered (conftest
+    ``unrendered_figures``: its tables, workbook and text are compared; the page's
+    figures are drawn in the app's render processes and read as PNG)."""
     import contextlib
     import io
     from types import SimpleNamespace

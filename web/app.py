@@ -32,7 +32,7 @@ from .balance_page import BalancePage
 from .dynamics_page import DynamicsPage
 from .linkage_page import LinkagePage
 from .synth_page import SynthPage
-from .pages import PageState, Run, render_job, spec_toml
+from .pages import PageState, Run, render_job, report_blob, spec_toml
 from .sessions import COOKIE, SessionStore
 
 __all__ = ["build_app", "UPLOAD_LIMIT", "LANG_COOKIE"]
@@ -361,9 +361,16 @@ def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of,
             st.runs += 1
             number = st.runs
             options = dict(st.options)
+            last = st.run
         folder = session.folder / f"{kind.name}-{number}"     # each page its own folders
         try:
-            report = await pool.run(kind.compute, data, folder / "input", pressure, options)
+            if _same_study(last, data, pressure, options):
+                # the session's last study asked again (in another language, say): its
+                # report is drawn anew, the numbers are not computed again
+                report, blob = last.report, report_blob(last.report)
+            else:
+                report, blob = await pool.run(_computed, kind, data, folder / "input",
+                                              pressure, options)
         except SpecError as exc:
             shutil.rmtree(folder, ignore_errors=True)
             with st.lock:
@@ -393,7 +400,7 @@ def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of,
                   pressure=pressure, options=options)
         try:
             run.write_future = render.submit(render_job, kind, number, folder, data, lang,
-                                             pressure, options)
+                                             pressure, options, blob)
         except Busy:
             return error_page(request, session, lang, texts(lang)("web.run.busy"), 503)
         with st.lock:
@@ -664,6 +671,22 @@ def _teacher_routes(*, templates, store, pool, batches, upload_limit, lang_of, s
             Route("/teacher/check/{number:str}/{name:str}", check_file),
             Route("/teacher/class", check_class, methods=["POST"]),
             Route("/teacher/class/{number:str}/{name:str}", class_file)]
+
+
+def _computed(kind, data, input_dir, pressure, options):
+    """A page's computation (:meth:`web.pages.Kind.compute`) and its report pickled for
+    the drawing process (:func:`web.pages.report_blob`): ``(report, blob)``."""
+    report = kind.compute(data, input_dir, pressure, options)
+    return report, report_blob(report)
+
+
+def _same_study(last, data, pressure, options) -> bool:
+    """Whether the session's ``last`` run (a :class:`web.pages.Run` or None) is the study
+    of the spec dict ``data`` with these options: its report is then the one this run
+    would compute (a study is a function of its spec and options).  A run reading a
+    pressure file is computed again (its report names the file of its own folder)."""
+    return (last is not None and pressure is None and last.pressure is None
+            and last.options == options and last.spec == data)
 
 
 def _problem(key, text):

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 __all__ = ["PageState", "Run", "Kind", "table_rows", "spec_toml", "finish_files", "PAGE_ROWS",
-           "render_job", "write_and_list"]
+           "render_job", "report_blob", "write_and_list"]
 
 
 @dataclass
@@ -152,12 +152,48 @@ def finish_files(run: Run, name: str, files: dict, spec_name: str | None = None)
     return files
 
 
+def _mappingproxy(items: dict):
+    """A read-only mapping again (:func:`report_blob`: ``types.MappingProxyType`` has no
+    pickle of its own)."""
+    from types import MappingProxyType
+
+    return MappingProxyType(items)
+
+
+def report_blob(report) -> bytes | None:
+    """``report`` pickled for a drawing process (its read-only mappings as
+    :func:`_mappingproxy` calls), or None when it holds something that does not pickle
+    (the drawing process then computes it again from its spec)."""
+    import pickle
+    from types import MappingProxyType
+
+    class Pickler(pickle.Pickler):
+        def reducer_override(self, obj):
+            if type(obj) is MappingProxyType:
+                return _mappingproxy, (dict(obj),)
+            return NotImplemented
+
+    buf = io.BytesIO()
+    try:
+        Pickler(buf, protocol=pickle.HIGHEST_PROTOCOL).dump(report)
+    except Exception:                       # noqa: BLE001 - any failure: compute again
+        return None
+    return buf.getvalue()
+
+
 def render_job(kind: Kind, number: int, folder: Path, spec: dict, lang: str, pressure,
-               options: dict) -> dict:
-    """Write one run's report in a drawing process (:mod:`web.jobs`, "spawn"): the study
-    computed again from its spec (cheap beside the drawing; a report does not cross
-    processes), then :meth:`Kind.write`; ``{file name: path}``."""
-    report = kind.compute(spec, folder / "input", pressure, options)
+               options: dict, blob: bytes | None = None) -> dict:
+    """Write one run's report in a drawing process (:mod:`web.jobs`, "spawn"), then
+    :meth:`Kind.write`; ``{file name: path}``.  The report is the page's own, pickled
+    (``blob``, :func:`report_blob`: the study is computed once per run, a chain's
+    dynamics costs as much as its drawing); without it, the study computed again from
+    its spec (the same numbers: the study is a function of its spec and options)."""
+    if blob is not None:
+        import pickle
+
+        report = pickle.loads(blob)
+    else:
+        report = kind.compute(spec, folder / "input", pressure, options)
     return kind.write(Run(number=number, folder=folder, report=report, spec=spec, lang=lang,
                           pressure=pressure, options=options))
 
