@@ -28,7 +28,7 @@ speaks the report's language (``--lang``).
 """
 from __future__ import annotations
 from crankbase.errors import Text
-from .langs import LANG_CHOICES, cli_texts, lang_help
+from .langs import add_lang, add_output, add_spec_or_example, command
 
 
 #: Bundled examples by short name (``--example NAME``).
@@ -39,17 +39,10 @@ EXAMPLES = {"rotor": "rotor_two_plane.toml", "ratchet": "ratchet_balance.toml",
 def add_parser(subparsers, t=None):
     """Register ``crankdyn balance``; ``t`` the help's words (:func:`crankdyn.langs.cli_texts`,
     Russian when not given)."""
-    t = t or cli_texts()
-    p = subparsers.add_parser("balance", help=t("cli.balance.help"),
-                              description=t("cli.balance.description"))
-    p.add_argument("spec", nargs="?", metavar="SPEC.toml", help=t("cli.balance.opt.spec"))
-    p.add_argument("--example", nargs="?", const="rotor", metavar="NAME",
-                   help=t("cli.common.opt.example", examples=", ".join(EXAMPLES),
-                          default="rotor"))
-    p.add_argument("-o", "--output", required=True, metavar="DIR",
-                   help=t("cli.common.opt.output"))
-    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
-                   help=lang_help(t, "cli.balance.opt.lang"))
+    p, t = command(subparsers, "balance", t)
+    add_spec_or_example(p, t, "balance", EXAMPLES, "rotor")
+    add_output(p, t)
+    add_lang(p, t, "balance")
     p.set_defaults(func=run)
 
 

@@ -21,26 +21,22 @@ verdict, detail``), ``DIR/<student>/`` the student's ``check.csv`` and checked w
 Exit status 0 when every student is matched and right, 1 otherwise.
 """
 from __future__ import annotations
-from .langs import LANG_CHOICES, cli_texts, lang_help
+from .langs import add_lang, add_output, command
 
 
 def add_parser(sub, t=None):
     """Register ``crankdyn check``; ``t`` the help's words (:func:`crankdyn.langs.cli_texts`,
     Russian when not given)."""
-    t = t or cli_texts()
-    p = sub.add_parser("check", help=t("cli.check.help"),
-                       description=t("cli.check.description"))
+    p, t = command(sub, "check", t)
     p.add_argument("spec", metavar="SPEC.toml", help=t("cli.check.opt.spec"))
     p.add_argument("student", metavar="STUDENT.xlsx|csv", help=t("cli.check.opt.student"))
     p.add_argument("--variants", metavar="VARIANTS.csv|xlsx", help=t("cli.check.opt.variants"))
-    p.add_argument("-o", "--output", required=True, metavar="DIR",
-                   help=t("cli.common.opt.output_plain"))
+    add_output(p, t, "cli.common.opt.output_plain")
     p.add_argument("--rtol", type=float, metavar="R", help=t("cli.check.opt.rtol"))
     p.add_argument("--atol", type=float, metavar="A", help=t("cli.check.opt.atol"))
     p.add_argument("--map", action="append", metavar="HEADER=column", default=[],
                    help=t("cli.check.opt.map"))
-    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
-                   help=lang_help(t, "cli.check.opt.lang"))
+    add_lang(p, t, "check")
     p.set_defaults(func=run)
     return p
 

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import sys
 from crankbase.errors import Text
-from .langs import LANG_CHOICES, cli_texts, lang_help
+from .langs import add_lang, add_output, add_spec_or_example, command
 
 #: Bundled examples by short name (``--example NAME``).
 EXAMPLES = {"flywheel": "flywheel_seed.toml", "press": "press_dynamics.toml",
@@ -33,17 +33,10 @@ EXAMPLES = {"flywheel": "flywheel_seed.toml", "press": "press_dynamics.toml",
 def add_parser(subparsers, t=None):
     """Register ``crankdyn dynamics``; ``t`` the help's words
     (:func:`crankdyn.langs.cli_texts`, Russian when not given)."""
-    t = t or cli_texts()
-    p = subparsers.add_parser("dynamics", help=t("cli.dynamics.help"),
-                              description=t("cli.dynamics.description"))
-    p.add_argument("spec", nargs="?", metavar="SPEC.toml", help=t("cli.dynamics.opt.spec"))
-    p.add_argument("--example", nargs="?", const="flywheel", metavar="NAME",
-                   help=t("cli.common.opt.example", examples=", ".join(EXAMPLES),
-                          default="flywheel"))
-    p.add_argument("-o", "--output", required=True, metavar="DIR",
-                   help=t("cli.common.opt.output"))
-    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
-                   help=lang_help(t, "cli.dynamics.opt.lang"))
+    p, t = command(subparsers, "dynamics", t)
+    add_spec_or_example(p, t, "dynamics", EXAMPLES, "flywheel")
+    add_output(p, t)
+    add_lang(p, t, "dynamics")
     p.set_defaults(func=run)
 
 

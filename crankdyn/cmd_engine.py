@@ -17,7 +17,7 @@ stays fast.
 """
 from __future__ import annotations
 from crankbase.errors import Text
-from .langs import LANG_CHOICES, cli_texts, lang_help
+from .langs import add_lang, add_output, add_spec_or_example, command
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
 EXAMPLES = {"petrol": "petrol_vaz2106.toml", "diesel": "diesel_d240.toml",
@@ -27,17 +27,10 @@ EXAMPLES = {"petrol": "petrol_vaz2106.toml", "diesel": "diesel_d240.toml",
 def add_parser(subparsers, t=None):
     """Register ``crankdyn engine``; ``t`` the help's words (:func:`crankdyn.langs.cli_texts`,
     Russian when not given)."""
-    t = t or cli_texts()
-    p = subparsers.add_parser("engine", help=t("cli.engine.help"),
-                              description=t("cli.engine.description"))
-    p.add_argument("spec", nargs="?", metavar="SPEC.toml", help=t("cli.engine.opt.spec"))
-    p.add_argument("--example", nargs="?", const="petrol", metavar="NAME",
-                   help=t("cli.common.opt.example", examples=", ".join(EXAMPLES),
-                          default="petrol"))
-    p.add_argument("-o", "--output", required=True, metavar="DIR",
-                   help=t("cli.common.opt.output"))
-    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
-                   help=lang_help(t, "cli.engine.opt.lang"))
+    p, t = command(subparsers, "engine", t)
+    add_spec_or_example(p, t, "engine", EXAMPLES, "petrol")
+    add_output(p, t)
+    add_lang(p, t, "engine")
     p.add_argument("--step", type=float, metavar="DEG", help=t("cli.engine.opt.step"))
     p.add_argument("--bearings", action="store_true", help=t("cli.engine.opt.bearings"))
     p.add_argument("--torsion", action="store_true", help=t("cli.engine.opt.torsion"))

@@ -18,7 +18,7 @@ in both.
 from __future__ import annotations
 
 import sys
-from .langs import LANG_CHOICES, cli_texts, lang_help
+from .langs import add_lang, add_output, command
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
 EXAMPLES = {"ratchet": "ratchet.toml", "press": "press.toml", "shaper": "shaper.toml",
@@ -30,20 +30,16 @@ EXAMPLES = {"ratchet": "ratchet.toml", "press": "press.toml", "shaper": "shaper.
 def add_parser(sub, t=None):
     """Register ``crankdyn linkage``; ``t`` the help's words
     (:func:`crankdyn.langs.cli_texts`, Russian when not given)."""
-    t = t or cli_texts()
-    p = sub.add_parser("linkage", help=t("cli.linkage.help"),
-                       description=t("cli.linkage.description"))
+    p, t = command(sub, "linkage", t)
     src = p.add_mutually_exclusive_group(required=True)
     src.add_argument("spec", nargs="?", help=t("cli.linkage.opt.spec"))
     src.add_argument("--example", nargs="?", const="ratchet", metavar="NAME",
                      help=t("cli.linkage.opt.example", examples=", ".join(EXAMPLES)))
-    p.add_argument("-o", "--output", required=True, metavar="DIR",
-                   help=t("cli.common.opt.output_plain"))
+    add_output(p, t, "cli.common.opt.output_plain")
     p.add_argument("--step", type=float, default=1.0, metavar="DEG",
                    help=t("cli.linkage.opt.step"))
     p.add_argument("--no-plots", action="store_true", help=t("cli.common.opt.no_plots"))
-    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
-                   help=lang_help(t, "cli.linkage.opt.lang"))
+    add_lang(p, t, "linkage")
     g = p.add_argument_group(t("cli.linkage.group.plans"))
     g.add_argument("--plans", metavar="LIST", help=t("cli.linkage.opt.plans"))
     g.add_argument("--sheet", default="A1", metavar="A1|A3", help=t("cli.linkage.opt.sheet"))

@@ -9,22 +9,19 @@ runs; without them the command says in one line how to install them.
 """
 from __future__ import annotations
 
-from .langs import LANG_CHOICES, cli_texts, lang_help
+from .langs import add_lang, cli_texts, command
 
 
 def add_parser(subparsers, t=None):
     """Register ``crankdyn serve``; ``t`` the help's words (:func:`crankdyn.langs.cli_texts`,
     Russian when not given)."""
-    t = t or cli_texts()
-    p = subparsers.add_parser("serve", help=t("cli.serve.help"),
-                              description=t("cli.serve.description"))
+    p, t = command(subparsers, "serve", t)
     p.add_argument("--host", default="127.0.0.1", help=t("cli.serve.opt.host"))
     p.add_argument("--port", type=int, default=8000, help=t("cli.serve.opt.port"))
     p.add_argument("--open", action="store_true", help=t("cli.serve.opt.open"))
     p.add_argument("--workers", type=int, default=2, metavar="N",
                    help=t("cli.serve.opt.workers"))
-    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
-                   help=lang_help(t, "cli.serve.opt.lang"))
+    add_lang(p, t, "serve")
     p.set_defaults(func=run)
 
 

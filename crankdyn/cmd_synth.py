@@ -20,15 +20,13 @@ numpy, pandas, matplotlib and openpyxl are imported inside :func:`run` only.
 """
 from __future__ import annotations
 
-from .langs import LANG_CHOICES, cli_texts, lang_help
+from .langs import add_lang, add_output, command
 
 
 def add_parser(sub, t=None):
     """Register ``crankdyn synth``; ``t`` the help's words (:func:`crankdyn.langs.cli_texts`,
     Russian when not given)."""
-    t = t or cli_texts()
-    p = sub.add_parser("synth", help=t("cli.synth.help"),
-                       description=t("cli.synth.description"))
+    p, t = command(sub, "synth", t)
     p.add_argument("--phi0", default="30", metavar="DEG", help=t("cli.synth.opt.phi0"))
     p.add_argument("--l1", metavar="L1", help=t("cli.synth.opt.l1"))
     p.add_argument("--l2", metavar="L2", help=t("cli.synth.opt.l2"))
@@ -39,11 +37,9 @@ def add_parser(sub, t=None):
     p.add_argument("--ground", metavar="M", help=t("cli.synth.opt.ground"))
     p.add_argument("--name", metavar="NAME", help=t("cli.synth.opt.name"))
     p.add_argument("--omega", metavar="RAD_S", help=t("cli.synth.opt.omega"))
-    p.add_argument("-o", "--output", required=True, metavar="DIR",
-                   help=t("cli.common.opt.output_plain"))
+    add_output(p, t, "cli.common.opt.output_plain")
     p.add_argument("--no-plots", action="store_true", help=t("cli.common.opt.no_plots"))
-    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
-                   help=lang_help(t, "cli.synth.opt.lang"))
+    add_lang(p, t, "synth")
     p.set_defaults(func=run)
     return p
 

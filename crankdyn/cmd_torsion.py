@@ -15,7 +15,7 @@ library's (:func:`torsion.study.run_study`, :func:`torsion.study.write_report`,
 from __future__ import annotations
 
 from crankbase.errors import Text
-from .langs import LANG_CHOICES, cli_texts, lang_help
+from .langs import add_lang, add_output, add_spec_or_example, command
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
 EXAMPLES = {"three-rotor": "torsion_three_rotor.toml", "six": "torsion_inline6.toml"}
@@ -24,17 +24,10 @@ EXAMPLES = {"three-rotor": "torsion_three_rotor.toml", "six": "torsion_inline6.t
 def add_parser(subparsers, t=None):
     """Register ``crankdyn torsion``; ``t`` the help's words
     (:func:`crankdyn.langs.cli_texts`, Russian when not given)."""
-    t = t or cli_texts()
-    p = subparsers.add_parser("torsion", help=t("cli.torsion.help"),
-                              description=t("cli.torsion.description"))
-    p.add_argument("spec", nargs="?", metavar="SPEC.toml", help=t("cli.torsion.opt.spec"))
-    p.add_argument("--example", nargs="?", const="three-rotor", metavar="NAME",
-                   help=t("cli.common.opt.example", examples=", ".join(EXAMPLES),
-                          default="three-rotor"))
-    p.add_argument("-o", "--output", required=True, metavar="DIR",
-                   help=t("cli.common.opt.output"))
-    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default="ru",
-                   help=lang_help(t, "cli.torsion.opt.lang"))
+    p, t = command(subparsers, "torsion", t)
+    add_spec_or_example(p, t, "torsion", EXAMPLES, "three-rotor")
+    add_output(p, t)
+    add_lang(p, t, "torsion")
     p.set_defaults(func=run)
 
 

@@ -12,7 +12,8 @@ import functools
 
 from crankbase.texts import OFFERED
 
-__all__ = ["LANG_CHOICES", "LANG_HELP", "DEFAULT_LANG", "cli_texts", "lang_help"]
+__all__ = ["LANG_CHOICES", "LANG_HELP", "DEFAULT_LANG", "cli_texts", "lang_help", "command",
+           "add_spec_or_example", "add_output", "add_lang"]
 
 #: ``choices`` of every subcommand's ``--lang``.
 LANG_CHOICES = OFFERED
@@ -41,3 +42,32 @@ def lang_help(t, key: str) -> str:
     option's metavar is LANG, so that building the parser reads no other catalogue), then
     what the language changes (``key``)."""
     return t("cli.lang.choices") + t(key)
+
+
+def command(subparsers, name, t=None):
+    """Register subcommand ``name`` with its help and description (``cli.<name>.help``,
+    ``cli.<name>.description``); returns ``(parser, t)``, ``t`` the help's words
+    (:func:`cli_texts`, Russian when not given)."""
+    t = t or cli_texts()
+    return subparsers.add_parser(name, help=t(f"cli.{name}.help"),
+                                 description=t(f"cli.{name}.description")), t
+
+
+def add_spec_or_example(p, t, name, examples, default):
+    """The spec file (``cli.<name>.opt.spec``) or ``--example [NAME]`` (one of
+    ``examples``, ``default`` when no name is given)."""
+    p.add_argument("spec", nargs="?", metavar="SPEC.toml", help=t(f"cli.{name}.opt.spec"))
+    p.add_argument("--example", nargs="?", const=default, metavar="NAME",
+                   help=t("cli.common.opt.example", examples=", ".join(examples),
+                          default=default))
+
+
+def add_output(p, t, key="cli.common.opt.output"):
+    """``-o DIR``, the output folder (required)."""
+    p.add_argument("-o", "--output", required=True, metavar="DIR", help=t(key))
+
+
+def add_lang(p, t, name):
+    """``--lang LANG`` (default Russian), its help ``cli.<name>.opt.lang``."""
+    p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default=DEFAULT_LANG,
+                   help=lang_help(t, f"cli.{name}.opt.lang"))
