@@ -697,6 +697,8 @@ def build_chain_plans(result, positions=None, *, scales=None):
             lplan = _plan("velocity", B.vel, B.vpoly, B.pts, scales["lever_velocity"], 0)
         lever = _lever(result, zl, P, lplan, scales.get("lever"))
         fixed = [k for k in scales if scales[k]]
+        d = res.mech.driver
         out.append(PositionPlans(pos, math.degrees(float(res.phi[i])) % 360.0, "chain",
-                                 plans, lever, angular, geo, tuple(fixed)))
+                                 plans, lever, angular, geo, tuple(fixed),
+                                 (d.pivot, d.joint)))
     return out

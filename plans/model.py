@@ -328,6 +328,9 @@ class PositionPlans:
     fixed : tuple of str
         The scales the caller fixed (keys of ``scales``: ``velocity``, ``force_dyad``,
         ``lever`` …); :func:`plans.drawing.fit_plans` never changes them.
+    driver : tuple of str
+        The crank's pivot and pin as the spec names them (``("O", "A")`` for a four-bar;
+        a chain's ``pivot`` and ``pin``): where Fур acts and what it is perpendicular to.
     """
 
     position: int | None
@@ -338,6 +341,7 @@ class PositionPlans:
     angular: list
     geometry: dict
     fixed: tuple = ()
+    driver: tuple = ("O", "A")
 
     @property
     def tag(self) -> str:

@@ -175,7 +175,8 @@ def summary_lines(plans, size, sheets, lang="ru", errors=None):
                                                               scale),
                                            diff=format_snapped(L.difference_percent, ".1e"),
                                            Fb=format_snapped(L.balancing_force_N, ".3f"),
-                                           mf=f"{L.scale:g}"))
+                                           mf=f"{L.scale:g}", pivot=pp.driver[0],
+                                           pin=pp.driver[1]))
                 lines += _lever_plan(t, pp, size)
             continue
         scale = max(abs(L.M_lever_Nm), abs(L.M_kinetostatic_Nm))
@@ -183,7 +184,8 @@ def summary_lines(plans, size, sheets, lang="ru", errors=None):
                                  lever=format_snapped(L.M_lever_Nm, ".4f", scale),
                                  kin=format_snapped(L.M_kinetostatic_Nm, ".4f", scale),
                                  diff=format_snapped(L.difference_percent, ".1e"),
-                                 Fb=format_snapped(L.balancing_force_N, ".3f")))
+                                 Fb=format_snapped(L.balancing_force_N, ".3f"),
+                                 pivot=pp.driver[0], pin=pp.driver[1]))
         lines += _lever_plan(t, pp, size)
     if errors is not None and len(errors):
         err = errors["error_percent"].to_numpy(float)

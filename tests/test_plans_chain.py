@@ -322,6 +322,20 @@ def test_summary_lines_in_each_language(shaper):
     assert "Жуковского" in ru[2] and f"μF = {L.scale:g}" in ru[2]
     assert not [s for s in en if re.search("[а-яА-ЯёЁ]", s)]
     assert not [s for s in ru if re.search(r"\b(plan|position|velocity|lever)\b", s)]
+    # Fур acts at the crank pin, perpendicular to the crank, as the spec names them
+    assert "A ⟂ OA" in en[2] and "A ⟂ OA" in ru[2]
+
+
+def test_the_lever_line_names_the_spec_s_crank(case):
+    """The balancing force's line names the spec's own crank pivot and pin (the Chinese
+    shaper's crank is O2A), in every language."""
+    from plans.report import summary_lines
+
+    res, _, pps = case
+    d = res.spec.mechanism.driver
+    for lang in ("ru", "en", "zh"):
+        lines = summary_lines(pps, "A1", 1, lang)
+        assert [s for s in lines if f"⟂ {d.pivot}{d.joint}" in s], (lang, lines)
 
 
 def test_angular_values_read_off_the_plans(case):
