@@ -28,7 +28,7 @@ speaks the report's language (``--lang``).
 """
 from __future__ import annotations
 from crankbase.errors import Text
-from .langs import add_lang, add_output, add_spec_or_example, command
+from .langs import report_command
 
 
 #: Bundled examples by short name (``--example NAME``).
@@ -39,10 +39,7 @@ EXAMPLES = {"rotor": "rotor_two_plane.toml", "ratchet": "ratchet_balance.toml",
 def add_parser(subparsers, t=None):
     """Register ``crankdyn balance``; ``t`` the help's words (:func:`crankdyn.langs.cli_texts`,
     Russian when not given)."""
-    p, t = command(subparsers, "balance", t)
-    add_spec_or_example(p, t, "balance", EXAMPLES, "rotor")
-    add_output(p, t)
-    add_lang(p, t, "balance")
+    p, t = report_command(subparsers, "balance", t, EXAMPLES, "rotor")
     p.set_defaults(func=run)
 
 

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import sys
 from crankbase.errors import Text
-from .langs import add_lang, add_output, add_spec_or_example, command
+from .langs import report_command
 
 #: Bundled examples by short name (``--example NAME``).
 EXAMPLES = {"flywheel": "flywheel_seed.toml", "press": "press_dynamics.toml",
@@ -33,10 +33,7 @@ EXAMPLES = {"flywheel": "flywheel_seed.toml", "press": "press_dynamics.toml",
 def add_parser(subparsers, t=None):
     """Register ``crankdyn dynamics``; ``t`` the help's words
     (:func:`crankdyn.langs.cli_texts`, Russian when not given)."""
-    p, t = command(subparsers, "dynamics", t)
-    add_spec_or_example(p, t, "dynamics", EXAMPLES, "flywheel")
-    add_output(p, t)
-    add_lang(p, t, "dynamics")
+    p, t = report_command(subparsers, "dynamics", t, EXAMPLES, "flywheel")
     p.set_defaults(func=run)
 
 

@@ -17,7 +17,7 @@ stays fast.
 """
 from __future__ import annotations
 from crankbase.errors import Text
-from .langs import add_lang, add_output, add_spec_or_example, command
+from .langs import report_command
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
 EXAMPLES = {"petrol": "petrol_vaz2106.toml", "diesel": "diesel_d240.toml",
@@ -27,10 +27,7 @@ EXAMPLES = {"petrol": "petrol_vaz2106.toml", "diesel": "diesel_d240.toml",
 def add_parser(subparsers, t=None):
     """Register ``crankdyn engine``; ``t`` the help's words (:func:`crankdyn.langs.cli_texts`,
     Russian when not given)."""
-    p, t = command(subparsers, "engine", t)
-    add_spec_or_example(p, t, "engine", EXAMPLES, "petrol")
-    add_output(p, t)
-    add_lang(p, t, "engine")
+    p, t = report_command(subparsers, "engine", t, EXAMPLES, "petrol")
     p.add_argument("--step", type=float, metavar="DEG", help=t("cli.engine.opt.step"))
     p.add_argument("--bearings", action="store_true", help=t("cli.engine.opt.bearings"))
     p.add_argument("--torsion", action="store_true", help=t("cli.engine.opt.torsion"))

@@ -15,7 +15,7 @@ library's (:func:`torsion.study.run_study`, :func:`torsion.study.write_report`,
 from __future__ import annotations
 
 from crankbase.errors import Text
-from .langs import add_lang, add_output, add_spec_or_example, command
+from .langs import report_command
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
 EXAMPLES = {"three-rotor": "torsion_three_rotor.toml", "six": "torsion_inline6.toml"}
@@ -24,10 +24,7 @@ EXAMPLES = {"three-rotor": "torsion_three_rotor.toml", "six": "torsion_inline6.t
 def add_parser(subparsers, t=None):
     """Register ``crankdyn torsion``; ``t`` the help's words
     (:func:`crankdyn.langs.cli_texts`, Russian when not given)."""
-    p, t = command(subparsers, "torsion", t)
-    add_spec_or_example(p, t, "torsion", EXAMPLES, "three-rotor")
-    add_output(p, t)
-    add_lang(p, t, "torsion")
+    p, t = report_command(subparsers, "torsion", t, EXAMPLES, "three-rotor")
     p.set_defaults(func=run)
 
 

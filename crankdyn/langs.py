@@ -13,7 +13,7 @@ import functools
 from crankbase.texts import OFFERED
 
 __all__ = ["LANG_CHOICES", "LANG_HELP", "DEFAULT_LANG", "cli_texts", "lang_help", "command",
-           "add_spec_or_example", "add_output", "add_lang"]
+           "report_command", "add_spec_or_example", "add_output", "add_lang"]
 
 #: ``choices`` of every subcommand's ``--lang``.
 LANG_CHOICES = OFFERED
@@ -71,3 +71,14 @@ def add_lang(p, t, name):
     """``--lang LANG`` (default Russian), its help ``cli.<name>.opt.lang``."""
     p.add_argument("--lang", choices=LANG_CHOICES, metavar="LANG", default=DEFAULT_LANG,
                    help=lang_help(t, f"cli.{name}.opt.lang"))
+
+
+def report_command(subparsers, name, t, examples, default):
+    """A subcommand that writes a report from a spec or a bundled example: :func:`command`,
+    then :func:`add_spec_or_example`, :func:`add_output` and :func:`add_lang`; returns
+    ``(parser, t)`` for the command's own options."""
+    p, t = command(subparsers, name, t)
+    add_spec_or_example(p, t, name, examples, default)
+    add_output(p, t)
+    add_lang(p, t, name)
+    return p, t
