@@ -24,7 +24,8 @@ POINT_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9]*$")
 
 @dataclass(frozen=True)
 class LinkSpec:
-    """Inertia and reported points of one link (local frame, see the module docs).
+    """Inertia and reported points of one link (in the link's local frame: :mod:`linkage.spec`
+    for a four-bar, :mod:`linkage.chain` for a chain).
 
     Attributes
     ----------
@@ -46,6 +47,7 @@ def kind_text(word, prefix="errors.kind."):
     key = prefix + str(word).replace("-", "_")
     return Text(key) if word in ("crank-rocker", "crank-slider", "this", "rocker",
                                  "slider") else word
+
 
 def read_link(ck, lt, lname, default_cg, point_names, reserved=()) -> LinkSpec:
     """One link's ``[links.<lname>]`` table (mass, J, centre of mass, named points) of a
