@@ -38,7 +38,7 @@ from crankbase.tolerances import AT_REST_RTOL
 
 from . import chain as ch
 from . import groups as g
-from .loads import StrokeCycle, resistance
+from .loads import StrokeCycle, resistance, resistance_window
 
 __all__ = ["ChainAnalysis", "ChainSummary", "analyze_chain", "transmission_angles",
            "output_motion", "output_extremes", "chain_loads", "reaction_tags"]
@@ -273,7 +273,8 @@ def chain_loads(spec, res: ch.ChainResult, summary: ChainSummary | None):
             cyc = _cycle(spec, summary)
             if kind == "rocker" and cyc.start_working is not None:
                 coord = np.angle(np.exp(1j * coord))
-            r = resistance(ld.resistance, ld.stroke, ld.span, rate, coord, cyc)
+            start, end = resistance_window(ld, cyc)
+            r = resistance(ld.resistance, ld.stroke, end, rate, coord, cyc, start)
             res_total = r if res_total is None else res_total + r
             if kind == "slider":
                 forces.setdefault(ld.link, []).append((lk.e * r, lk.origin.z))

@@ -329,7 +329,8 @@ _KEY_MEANINGS = frozenset((
     "kind", "name", "crank", "coupler", "rocker", "ground", "ground_angle_deg", "offset",
     "assembly", "omega_rad_s", "epsilon_rad_s2", "gravity_m_s2", "mass_kg", "inertia_kg_m2",
     "cg", "points", "link", "at", "force_N", "moment_Nm", "resistance_Nm", "resistance_N",
-    "stroke", "span_deg", "span_m", "positions", "crank_angles_deg", "working_stroke"))
+    "stroke", "start_deg", "start_m", "span_deg", "span_m", "from_fraction", "to_fraction",
+    "positions", "crank_angles_deg", "working_stroke"))
 #: Links named inside a meaning ("масса кривошипа m2"): ``linkage.link_of.<link>``.
 _LINKS_OF = frozenset(("crank", "coupler", "rocker", "slider"))
 #: The spec's word values explained beside them (not in English, where the value is the

@@ -58,8 +58,12 @@ LOAD = ArrayOfTables("load", (
     Key("resistance_Nm", ge=0, unit="N·m", required="cond"),
     Key("resistance_N", ge=0, unit="N", required="cond"),
     Key("stroke", "choice", choices=("working", "idle", "both"), default="working"),
+    Key("start_deg", ge=0, unit="deg", default=0.0),
+    Key("start_m", ge=0, default=0.0, **M),
     Key("span_deg", gt=0, unit="deg"),
     Key("span_m", gt=0, **M),
+    Key("from_fraction", ge=0, lt=1, default=0.0),
+    Key("to_fraction", gt=0, le=1, default=1.0),
 ))
 
 ANALYSIS = Table("analysis", (

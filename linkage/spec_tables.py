@@ -18,6 +18,9 @@ from .schema import ANALYSIS, LINK, LOAD
 
 __all__ = ["LinkSpec", "kind_text", "read_link", "read_loads", "read_plan"]
 
+#: The keys of a resistance's window inside its stroke (a force or a moment takes none).
+WINDOW_KEYS = ("start_deg", "start_m", "span_deg", "span_m", "from_fraction", "to_fraction")
+
 #: A point's name: a letter, then letters or digits (it becomes part of column names).
 POINT_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9]*$")
 
@@ -91,9 +94,12 @@ def read_link(ck, lt, lname, default_cg, point_names, reserved=()) -> LinkSpec:
 
 def read_loads(ck, data, link_names, output, rotary, wrong_resistance):
     """The ``[[load]]`` rows of a four-bar or a chain spec: a force at a point, a moment,
-    or the useful resistance on the ``output`` link (``resistance_Nm`` and ``span_deg``
-    when it turns, ``rotary``; else ``resistance_N`` and ``span_m``); the other key
-    named by ``wrong_resistance(want)`` (a :class:`~crankbase.errors.Text`).
+    or the useful resistance on the ``output`` link (``resistance_Nm``, ``start_deg`` and
+    ``span_deg`` when it turns, ``rotary``; else ``resistance_N``, ``start_m`` and
+    ``span_m``; or, for either, its window as ``from_fraction``/``to_fraction`` of the
+    stroke, not both forms); the other key named by ``wrong_resistance(want)`` (a
+    :class:`~crankbase.errors.Text`).  Whether a window fits in the stroke is known only
+    with the stroke: :func:`linkage.loads.resistance_window`.
 
     Returns
     -------
@@ -120,7 +126,7 @@ def read_loads(ck, data, link_names, output, rotary, wrong_resistance):
             at = complex(*xy) if xy else 0j
         if key == "force_N":
             f = get("force_N", required=True)
-            for k in ("stroke", "span_deg", "span_m"):
+            for k in ("stroke", *WINDOW_KEYS):
                 if k in t:
                     ck.add(f"{path}.{k}", Text("errors.linkage.spec.applies_resistance_only"))
             if f and link:
@@ -128,7 +134,7 @@ def read_loads(ck, data, link_names, output, rotary, wrong_resistance):
             continue
         if key == "moment_Nm":
             mval = get("moment_Nm", required=True)
-            for k in ("at", "stroke", "span_deg", "span_m"):
+            for k in ("at", "stroke", *WINDOW_KEYS):
                 if k in t:
                     ck.add(f"{path}.{k}", Text("errors.linkage.spec.does_not_apply_2"))
             if mval is not None and link:
@@ -144,20 +150,40 @@ def read_loads(ck, data, link_names, output, rotary, wrong_resistance):
                                         {"output": output, "link": link}))
         r = get(key, required=True)
         stroke = get("stroke")
-        span_key = "span_deg" if rotary else "span_m"
-        other = "span_m" if rotary else "span_deg"
-        if other in t:
-            ck.add(f"{path}.{other}", Text("errors.linkage.spec.use_for",
-                                           {"span_key": span_key,
-                                            "output": kind_text(output, "errors.link.")}))
+        unit = "_deg" if rotary else "_m"
+        for other in ("span_m", "start_m") if rotary else ("span_deg", "start_deg"):
+            if other in t:
+                ck.add(f"{path}.{other}", Text("errors.linkage.spec.use_for", {
+                    "span_key": other.rsplit("_", 1)[0] + unit,
+                    "output": kind_text(output, "errors.link.")}))
         if "at" in t:
             ck.add(f"{path}.at", Text("errors.linkage.spec.resistance_acts_at"))
-        span = get(span_key)
-        if span is not None and span_key == "span_deg":
-            span = math.radians(span)
+        span = get("span" + unit)
+        start = get("start" + unit) if "start" + unit in t else None
+        if rotary:
+            span = math.radians(span) if span is not None else None
+            start = math.radians(start) if start is not None else None
+        fractions = window_key = None
+        given = [k for k in ("start" + unit, "span" + unit) if k in t]
+        fracs = [k for k in ("from_fraction", "to_fraction") if k in t]
+        if fracs:
+            f0, f1 = get("from_fraction"), get("to_fraction")
+            window_key = f"{path}.{fracs[0]}"
+            if given:
+                ck.add(window_key, Text("errors.linkage.spec.window_both",
+                                        {"keys": ", ".join(given)}))
+            elif f0 is not None and f1 is not None:
+                if f0 >= f1:
+                    ck.add(window_key, Text("errors.linkage.spec.window_order",
+                                            {"start": f0, "end": f1}))
+                else:
+                    fractions = (f0, f1)
+        elif given:
+            window_key = f"{path}.{given[0]}"
         if r is not None:
             loads.append(LoadSpec(output, "resistance", resistance=r,
-                                  stroke=stroke or "working", span=span))
+                                  stroke=stroke or "working", span=span, start=start,
+                                  fractions=fractions, key=window_key or f"{path}.{key}"))
             resistance_paths.append(f"{path}.{key}")
     return loads, resistance_paths
 
@@ -198,7 +224,8 @@ def read_plan(ck, data, strokes, loads, omega, resistance_paths, working_default
         needs.append("positions" + ("" if "positions" in a else " (12 by default)"))
     if any(ld.kind == "resistance" and ld.stroke != "both" for ld in loads):
         needs.append("a resistance limited to one stroke")
-    if any(ld.kind == "resistance" and ld.span is not None for ld in loads):
+    if any(ld.kind == "resistance" and (ld.span is not None or ld.start is not None
+                                        or ld.fractions is not None) for ld in loads):
         needs.append("a resistance with a span")
     if omega == 0.0:
         # statics (or start from rest): no direction of rotation, no strokes
