@@ -141,6 +141,15 @@ CASES = [
     ("linkage-loads", lambda t: ["linkage", linkage_spec(
         t, extra="[[load]]\nlink = \"rocker\"\nresistance_N = 100.0\n\n"
                  "[[load]]\nlink = \"wheel\"\nmoment_Nm = 5.0\n")]),
+    # a resistance's window (issue #20): both forms, from ≥ to (read with the spec), and a
+    # window outside the rocker's swing of 68.4° (known once the mechanism is solved)
+    ("linkage-window", lambda t: ["linkage", linkage_spec(
+        t, extra="[[load]]\nlink = \"rocker\"\nresistance_Nm = 100.0\nspan_deg = 10.0\n"
+                 "from_fraction = 0.05\n\n[[load]]\nlink = \"rocker\"\n"
+                 "resistance_Nm = 100.0\nfrom_fraction = 0.9\nto_fraction = 0.1\n")]),
+    ("linkage-window-outside", lambda t: ["linkage", linkage_spec(
+        t, extra="[[load]]\nlink = \"rocker\"\nresistance_Nm = 100.0\nstart_deg = 60.0\n"
+                 "span_deg = 10.0\n")]),
     ("linkage-step", lambda t: ["linkage", linkage_spec(t), "--step", "45"]),
     ("linkage-plans", lambda t: ["linkage", "--example", "press", "--plans", "13",
                                  "-o", str(t / "o")]),
