@@ -169,7 +169,7 @@ def chain_model(mech, loads=None, *, steps=720, phi0_deg=0.0, rotation=1, gravit
 
 def spec_loads(spec, mech, ext):
     """The loads of a crank-rocker or crank-slider spec (:mod:`linkage.loads`, today's
-    load model: forces, moments, useful resistance by stroke and span) as a ``loads(res)``
+    load model: forces, moments, useful resistance by stroke and window) as a ``loads(res)``
     function for :func:`chain_model` on the chain :func:`linkage.chain.from_mechanism`."""
     from linkage.loads import external_loads, stroke_cycle
 
@@ -239,7 +239,7 @@ def chain_spec_model(spec, *, steps=720, phi0_deg=None):
 
     φ = 0 at the start of the output's working stroke (0° of the crank without extremes);
     the loads are those of the chain's analysis (:func:`linkage.chain_analysis.chain_loads`:
-    forces, moments, the useful resistance over its span of the working stroke), evaluated
+    forces, moments, the useful resistance over its window of its stroke), evaluated
     at unit crank speed; ``model.source`` is the spec and ``extra["summary"]`` the chain's
     summary.
     """

@@ -8,7 +8,7 @@ The pipeline, vectorised over crank positions and run in cache-sized chunks:
    ``I(0,1) → II RRP(2,3)``);
 2. kinematics: the chain solved, driver then the dyad (:func:`linkage.chain.solve`);
 3. the loads on every link at every position: external forces and moments, useful
-   resistance (by stroke and span), weight ``−m·g·j`` and d'Alembert inertia
+   resistance (by stroke and window inside it), weight ``−m·g·j`` and d'Alembert inertia
    ``−m·a_S``, ``−J_S·ε``;
 4. kinetostatics: the dyad, then the driver (balancing moment Mур)
    (:func:`linkage.chain.kinetostatics`).
