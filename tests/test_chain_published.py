@@ -47,8 +47,10 @@ other reports read, not used: http://www.diyifanwen.net/c5zv1g645t04oweh0q68m0sr
 = 2.2077 m/s² (the chain: 2.2105), but adds the ram's inertia force to P where it opposes
 it: FR45 = (P + m6·a_C)/cos θ5 = 9181.6 N against the chain's (P − m6·a_C)/cos θ5 =
 8820.8 N; http://32336.cn/mlhd_39lh6599ur2teb88j4i568ub00wtn2005y2_4.html prints a_S4 =
-4.609 m/s², more than the lever's largest over the cycle (4.50 m/s²), so its position
-cannot be identified.
+4.609 m/s², more than the lever's largest over the cycle (4.50 m/s²), and
+https://haowendang.cn/c06eqy6wrxb1x2cx44e354ncj33s2bw019r9_3.html ("取5号位置", a_C =
+4.5795229205 m/s², reached 24.5° after position 1, not at a position of the course), so
+their positions cannot be identified.
 
 The masses and loads of 方案 I: a textbook exercise on the force analysis of this shaper
 (http://www.sdjlyg.com/ch/210.html, "在图3-2a所示的牛头刨床机构中"; l_AC = 380, l_AB = 110,
