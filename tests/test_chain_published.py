@@ -413,7 +413,7 @@ SHAPER_CN2_RTOL = 2e-5
 
 # Report A: «牛头刨床机械原理课程设计1点和7点~修正版» (吴), page 4, "2. 机构动态静力分析",
 # http://m.china-audit.com/mlhd_0mr6f24ypa8mpoi7ogzz_4.html, figures 1-6 … 1-8: at
-# position 1 (the ram at rest at the start of the cut, P = 0) "FI6 = −G6/g×ac = −800/10×
+# position 1 (the ram at rest at the start of the slow stroke, P = 0) "FI6 = −G6/g×ac = −800/10×
 # 6.599 = −527.927 N", the force polygon of the group 5-6 "FR45 = 528.7581216 N", for the
 # lever "aS4 = aA4·lO4S4/lO4A = 4.042589964×290/338.23069051 = 3.46612865 m/s²", "FS4 =
 # −76.25482788 N".  The report takes g = 10 m/s² (masses 80 and 22 kg), so the spec does.
