@@ -30,12 +30,41 @@ guide) is the course's rule, and the tests show that the other readings (numberi
 the other extreme, the guide through the top or the chord of B's arc) miss the printed
 numbers by far more than the tolerance.
 
-Not found: a second, independent worked example of a six-link mechanism with printed
-velocities and accelerations whose geometry is all stated in the text (Khurmi's
-Whitworth velocity example, OQ = 100, OP = 200, RQ = 150, RS = 500 mm, the crank at 60°
-to the vertical, 120 rpm, and the acceleration examples of ch. 8 fix the ram's line of
-stroke or some lengths only in their figures; Rattan's exercises likewise), and a
-published kinetostatic answer (reactions, Mур) for 方案 I.  The
+A second, independent source of velocities and accelerations, and published forces: the
+same course's data set 方案 II (n2 = 64 r/min, l_O2O4 = 350, l_O2A = 90, l_O4B = 580,
+l_BC = 0.3·l_O4B mm; G4 = 220 N, J_S4 = 1.2 kg·m², G6 = 800 N, P = 9000 N), modelled in
+this file (``shaper_cn_scheme2``), against two other course-design reports: report X
+(http://32336.cn/lhd_6o5jj43ymq38ccg96p75_2.html) prints its CAD-drawn plans at position 9
+(ω2, ω4, v_A4, v_B, v_C, a_C), reproduced to 2e-5; report A («牛头刨床机械原理课程设计1点和
+7点~修正版», http://m.china-audit.com/mlhd_0mr6f24ypa8mpoi7ogzz_4.html) prints the
+kinetostatics of position 1: the ram's and the lever's inertia forces and the rod's
+reaction FR45 = 528.7581216 N, reproduced to 1e-9, and FR34 = 1133.177 N, which is not
+(the chain: 1018.07 N); the test takes the report's own moment equation apart and shows the
+three slips that make the difference (ε4 = a_A4/l_O4S4, the inertia force's moment, the arm
+0.29 m of FR34) and that, corrected, it gives the chain's R34.  The same data appear in
+other reports read, not used: http://www.diyifanwen.net/c5zv1g645t04oweh0q68m0sr9z0p01l00o0l_5.html
+(g = 9.8 m/s²) prints l_O4A = 418.41411745 mm, the chain's position 6 to 2e-11, and a_C
+= 2.2077 m/s² (the chain: 2.2105), but adds the ram's inertia force to P where it opposes
+it: FR45 = (P + m6·a_C)/cos θ5 = 9181.6 N against the chain's (P − m6·a_C)/cos θ5 =
+8820.8 N; http://32336.cn/mlhd_39lh6599ur2teb88j4i568ub00wtn2005y2_4.html prints a_S4 =
+4.609 m/s², more than the lever's largest over the cycle (4.50 m/s²), and
+https://haowendang.cn/c06eqy6wrxb1x2cx44e354ncj33s2bw019r9_3.html ("取5号位置", a_C =
+4.5795229205 m/s², reached 24.5° after position 1, not at a position of the course), so
+their positions cannot be identified.
+
+The masses and loads of 方案 I: a textbook exercise on the force analysis of this shaper
+(http://www.sdjlyg.com/ch/210.html, "在图3-2a所示的牛头刨床机构中"; l_AC = 380, l_AB = 110,
+l_CD = 540, l_DE = 135, l_CS4 = 270, x_S6 = 240, y_S6 = 50 mm, the guide 520 mm from C,
+G4 = 200 N, G6 = 700 N, Pr = 3500 N at y_P = 80 mm, n2 = 120 r/min clockwise) states
+G4 = 200 N and G6 = 700 N with exactly these dimensions; its position is drawn only in its
+figure and its answer is not printed in the copy read, so nothing is compared.  J_S4 = 1.1
+kg·m² and P = 7000 N of ``examples/shaper_cn.toml`` remain unconfirmed, and no published
+reaction or Mур of 方案 I was found.  Not found either: a Russian course project
+(«поперечно-строгальный станок», «силовой расчёт», «рычаг Жуковского») with its data and
+results in the text, or an English worked force analysis of a six-link mechanism whose
+geometry is all stated in the text (Khurmi's Whitworth velocity example, OQ = 100,
+OP = 200, RQ = 150, RS = 500 mm, and the acceleration examples of ch. 8 fix the ram's
+line of stroke or some lengths only in their figures; Rattan's exercises likewise).  The
 velocity and acceleration plans of the chain are also checked against their own closure
 and an independent solve in tests/test_chain*.py.
 """
@@ -214,11 +243,13 @@ SHAPER_CN_POSITION_4 = {"a_B_m_s2": "1.201248", "an_CB_m_s2": "0.01785",
 SHAPER_CN_RTOL = 1e-5
 
 
-def printed(text):
-    """``pytest.approx`` of a printed number: 1e-5 relative, or half a unit of its last
-    printed digit where that is coarser (0.01785 is 0.0178502 rounded)."""
+def printed(text, rtol=SHAPER_CN_RTOL):
+    """``pytest.approx`` of a printed number: ``rtol`` relative (1e-5 unless told), or half
+    a unit of its last printed digit where that is coarser (0.01785 is 0.0178502 rounded)."""
     half_unit = 0.5 * 10.0 ** -len(text.split(".")[1])
-    return pytest.approx(float(text), rel=SHAPER_CN_RTOL, abs=half_unit)
+    return pytest.approx(float(text), rel=rtol, abs=half_unit)
+
+
 L_O4B, L_BC = 0.540, 0.135           # 方案 I: l_O4B, l_BC = 0.25·l_O4B [m]
 
 
@@ -348,3 +379,191 @@ def test_shaper_cn_graphical_plans_are_the_reports():
                                      (a4, "n4_c", "at_CB_m_s2", p4)):
         vec = plan.vector(segment)
         assert vec.length_mm * plan.scale == printed(book[key]), (segment, key)
+
+
+# ---------------------------------------------------------------------------------------
+# The same course's shaper, data set 方案 II: a second, independent source of velocities and
+# accelerations, and published forces (reactions) at a stated position.
+#
+# Data of 方案 II (the course's table to Sun Huan's 《机械原理》): n2 = 64 r/min, l_O2O4 =
+# 350, l_O2A = 90, l_O4B = 580, l_BC = 0.3·l_O4B, l_O4S4 = 0.5·l_O4B mm, G4 = 220 N,
+# J_S4 = 1.2 kg·m², G6 = 800 N, P = 9000 N.  The table itself was not found in a document
+# read; the two reports below print what they take from it, and each printed input is
+# checked in test_shaper_cn_scheme2_inputs_as_the_reports_print_them: ω2 = 6.702064328
+# rad/s (= 2π·64/60), l_O4A = 338.23069051 mm at position 1 (= √(350² − 90²), the slot
+# tangent to the crank circle), a_A = ω2²·l_O2A = 4.042589964 m/s² (l_O2A = 0.09 m),
+# l_O4S4 = 290 mm, G4 = 220 N, G6 = 800 N, J_S4 = 1.2 kg·m² (M_I4 = −1.2·ε) and v_B =
+# ω4·l_O4B (l_O4B = 0.58 m).  l_BC = 0.3·l_O4B, the ram's guide through the middle of the
+# sagitta of B's arc and position 1 at the start of the slow stroke are the course's
+# rule, as for 方案 I: test_shaper_cn_scheme2_other_readings_miss shows that l_BC =
+# 0.25·l_O4B or 0.36·l_O4B (方案 I, III), the guide at the top or the chord of the arc,
+# or the other numbering miss the printed numbers by 77 to 46,000 times the tolerance.
+#
+# Report X: «牛头刨床 … 1′号位置和9号位置» (机械原理课程设计, 方案 II), page 2,
+# http://32336.cn/lhd_6o5jj43ymq38ccg96p75_2.html: "9号位置速度图 … 由图解得: Vc =
+# 0.6305463 m/s", "9号位置加速度图 … ac = 8.82411923 m/s²", 表格(1-2) and 表1-3 (ω2, ω4,
+# VA, VB, Vc at position 9).  Its plans were drawn in CAD: the velocity plan agrees with the
+# chain to 2.2e-6 and the acceleration plan to 1.2e-5, so the tolerance is 2e-5 relative
+# (a hand-drawn plan would warrant 2-5 %).  Its position 1′ (a crank angle the excerpt
+# does not state) is not compared.
+SHAPER_CN2_REPORT_X_POSITION_9 = {"omega2_rad_s": "6.702064328", "omega4_rad_s": "1.10791337",
+                                  "v_A4_m_s": "0.32485685", "v_B_m_s": "0.642589753",
+                                  "v_C_m_s": "0.6305463", "a_C_m_s2": "8.82411923"}
+SHAPER_CN2_RTOL = 2e-5
+
+# Report A: «牛头刨床机械原理课程设计1点和7点~修正版» (吴), page 4, "2. 机构动态静力分析",
+# http://m.china-audit.com/mlhd_0mr6f24ypa8mpoi7ogzz_4.html, figures 1-6 … 1-8: at
+# position 1 (the ram at rest at the start of the slow stroke, P = 0) "FI6 = −G6/g×ac = −800/10×
+# 6.599 = −527.927 N", the force polygon of the group 5-6 "FR45 = 528.7581216 N", for the
+# lever "aS4 = aA4·lO4S4/lO4A = 4.042589964×290/338.23069051 = 3.46612865 m/s²", "FS4 =
+# −76.25482788 N".  The report takes g = 10 m/s² (masses 80 and 22 kg), so the spec does.
+# Its numbers are computed from the plans to 7-10 figures; the tolerance is 1e-6 relative
+# or half a unit of the last printed digit (a_C is printed as 6.599).
+SHAPER_CN2_REPORT_A_POSITION_1 = {"l_O4A_m": "0.33823069051", "a_A_m_s2": "4.042589964",
+                                  "a_C_m_s2": "6.599", "F_I6_N": "527.927",
+                                  "a_S4_m_s2": "3.46612865", "F_S4_N": "76.25482788",
+                                  "R45_N": "528.7581216"}
+SHAPER_CN2_REPORT_RTOL = 1e-6
+# The report's moment equation of the group 3-4 about O4 (figure 1-8), as printed:
+# "−528.7581038×0.5512570182 − 13.96292913×0.28690951968 − 220×0.07457142857 − 16.72795789
+# + FR34·×0.29 = 0 … FR34 = 1133.177173 N", with "As4′ = aA4/0.29 = 13.93996491 rad/s²,
+# M = −JS4×As4′ = −16.72795789".
+SHAPER_CN2_REPORT_A_MOMENTS = {"R54_N": 528.7581038, "h54_m": 0.5512570182,
+                               "inertia_moment_Nm": 13.96292913 * 0.28690951968,
+                               "G4_N": 220.0, "hG_m": 0.07457142857,
+                               "M_I4_Nm": 16.72795789, "eps4_rad_s2": 13.93996491,
+                               "arm_R34_m": 0.29, "R34_N": 1133.177173}
+
+
+def shaper_cn_scheme2(l_bc_ratio=0.3, guide_y=None, working_stroke="toward", gravity=10.0):
+    """方案 II as a chain spec, I(0,1) → II RPR(2,3) → II RRP(4,5), drawn like
+    ``examples/shaper_cn.toml``: O2 above O4, the crank turning ccw, the ram's guide
+    through the middle of the sagitta of B's arc unless ``guide_y`` is given; masses G/g
+    with the report's g."""
+    l_o2o4, l_o2a, l_o4b = 0.350, 0.090, 0.580
+    psi = math.asin(l_o2a / l_o2o4)
+    y = l_o4b * (1.0 + math.cos(psi)) / 2.0 if guide_y is None else guide_y
+    return {"mechanism": {"kind": "chain", "name": "shaper_cn_scheme2", "crank": l_o2a,
+                          "crank_link": "crank", "pivot": "O2", "pin": "A", "output": "ram",
+                          "omega_rad_s": 64 * 2 * math.pi / 60, "gravity_m_s2": gravity,
+                          "frame": {"O2": [0.0, l_o2o4], "O4": [0.0, 0.0]}},
+            "group": [{"kind": "RPR", "links": ["block", "lever"], "joints": ["A", "O4"]},
+                      {"kind": "RRP", "links": ["rod", "ram"], "joints": ["B", "C"],
+                       "lengths": [l_bc_ratio * l_o4b], "guide_point": [0.0, y],
+                       "guide_angle_deg": 0.0, "assembly": 1}],
+            "links": {"lever": {"mass_kg": 220.0 / gravity, "inertia_kg_m2": 1.2,
+                                "cg": [0.5 * l_o4b, 0.0], "points": {"B": [l_o4b, 0.0]}},
+                      "ram": {"mass_kg": 800.0 / gravity}},
+            "load": [{"link": "ram", "resistance_N": 9000.0, "stroke": "working"}],
+            "analysis": {"positions": 12, "working_stroke": working_stroke}}
+
+
+def _scheme2_numbers(result):
+    """Report X's quantities at position 9 and report A's at position 1 from the chain."""
+    k = result.kinematics.set_index("position")
+    f = result.forces.set_index("position")
+    m6, m4 = 800.0 / 10.0, 220.0 / 10.0
+    r9, r1, f1 = k.loc[9], k.loc[1], f.loc[1]
+    x = {"omega2_rad_s": r9["omega_crank_rad_s"], "omega4_rad_s": abs(r9["omega_lever_rad_s"]),
+         "v_A4_m_s": abs(r9["omega_lever_rad_s"]) * r9["s_block_lever_m"],
+         "v_B_m_s": r9["v_B_m_s"], "v_C_m_s": abs(r9["v_ram_m_s"]),
+         "a_C_m_s2": abs(r9["a_ram_m_s2"])}
+    a = {"l_O4A_m": r1["s_block_lever_m"], "a_A_m_s2": r1["a_A_m_s2"],
+         "a_C_m_s2": abs(r1["a_ram_m_s2"]), "F_I6_N": m6 * abs(r1["a_ram_m_s2"]),
+         "a_S4_m_s2": r1["a_S_lever_m_s2"], "F_S4_N": m4 * r1["a_S_lever_m_s2"],
+         "R45_N": f1["R_lever_rod_N"]}
+    return x, a
+
+
+@pytest.fixture(scope="module")
+def shaper_cn2():
+    return linkage.analyze(shaper_cn_scheme2())
+
+
+def test_shaper_cn_scheme2_inputs_as_the_reports_print_them(shaper_cn2):
+    """The inputs the two reports print are those of the spec: ω2, l_O4A and the crank
+    pin's acceleration at position 1 (the extreme: the slot tangent to the crank circle,
+    ω4 = 0), the lever's centre of mass, and position 1 where the ram is at rest."""
+    r = shaper_cn2
+    k = r.kinematics.set_index("position")
+    assert k.loc[1, "omega_crank_rad_s"] == printed("6.702064328", rtol=1e-9)
+    assert math.sqrt(0.350 ** 2 - 0.090 ** 2) == printed("0.33823069051", rtol=1e-10)
+    assert (64 * 2 * math.pi / 60) ** 2 * 0.090 == printed("4.042589964", rtol=1e-9)
+    assert abs(k.loc[1, "omega_lever_rad_s"]) < 1e-12 and abs(k.loc[1, "v_ram_m_s"]) < 1e-12
+    assert k.loc[1, "phi_deg"] == pytest.approx(r.summary.phi_working_start_deg, abs=1e-9)
+    # the lever's centre of mass at l_O4S4 = 290 mm: a_S4 = a_A4·l_O4S4/l_O4A at position 1
+    assert k.loc[1, "a_S_lever_m_s2"] == pytest.approx(
+        k.loc[1, "a_A_m_s2"] * 0.290 / k.loc[1, "s_block_lever_m"], rel=1e-12)
+
+
+@pytest.mark.parametrize("key", list(SHAPER_CN2_REPORT_X_POSITION_9))
+def test_shaper_cn_scheme2_velocity_acceleration_position_9(shaper_cn2, key):
+    """Report X (方案 II, 32336.cn/lhd_6o5jj43ymq38ccg96p75_2.html, 表格(1-2), 表1-3):
+    position 9, ω2, ω4, v_A4, v_B, v_C, a_C to 2e-5 relative."""
+    ours, _ = _scheme2_numbers(shaper_cn2)
+    assert ours[key] == printed(SHAPER_CN2_REPORT_X_POSITION_9[key], rtol=SHAPER_CN2_RTOL)
+
+
+@pytest.mark.parametrize("key", list(SHAPER_CN2_REPORT_A_POSITION_1))
+def test_shaper_cn_scheme2_forces_position_1(shaper_cn2, key):
+    """Report A (方案 II, m.china-audit.com/mlhd_0mr6f24ypa8mpoi7ogzz_4.html, "2. 机构动态
+    静力分析", figures 1-6 … 1-8): at position 1 the ram's acceleration and inertia force,
+    the reaction FR45 of the rod in the group 5-6 (the chain's R_lever_rod), the lever's
+    a_S4 and inertia force, to 1e-6 relative or the printed digits."""
+    _, ours = _scheme2_numbers(shaper_cn2)
+    assert ours[key] == printed(SHAPER_CN2_REPORT_A_POSITION_1[key], rtol=SHAPER_CN2_REPORT_RTOL)
+
+
+def test_shaper_cn_scheme2_report_r34_and_its_slips(shaper_cn2):
+    """Report A's FR34 = 1133.177 N (the block's force on the lever at position 1)
+    disagrees with the chain's 1018.07 N; why: its moment equation about O4, whose arms
+    the chain's geometry reproduces to 1e-9, takes (1) ε4 = a_A4/l_O4S4 (13.94 rad/s²)
+    instead of a_A4/l_O4A (11.95), (2) a moment of the lever's inertia force 13.96·0.2869
+    N·m instead of F_S4·l_O4S4 (a_S4 ⟂ O4B where ω4 = 0) and (3) the arm 0.29 m of FR34
+    instead of l_O4A (FR34 ⟂ the slot at A).  The equation as printed gives its 1133.177;
+    with the three slips corrected it gives the chain's kinetostatic R34 to 1e-7 (the
+    digits of its printed forces and arms)."""
+    r = shaper_cn2
+    k = r.kinematics.set_index("position").loc[1]
+    f = r.forces.set_index("position").loc[1]
+    p = SHAPER_CN2_REPORT_A_MOMENTS
+    b = complex(k["x_B_m"], k["y_B_m"])
+    rod = complex(k["x_C_m"], k["y_C_m"]) - b
+    assert abs((b.conjugate() * rod).imag) / abs(rod) == pytest.approx(p["h54_m"], rel=1e-9)
+    assert abs(k["x_S_lever_m"]) == pytest.approx(p["hG_m"], rel=1e-9)
+    # the report's slip (1): its ε is a_A4 over l_O4S4
+    assert p["eps4_rad_s2"] == pytest.approx(k["a_A_m_s2"] / 0.290, rel=1e-6)
+    eps4 = abs(k["eps_lever_rad_s2"])
+    assert eps4 == pytest.approx(k["a_A_m_s2"] / k["s_block_lever_m"], rel=1e-12)
+    assert p["M_I4_Nm"] == pytest.approx(1.2 * p["eps4_rad_s2"], rel=1e-8)
+    as_printed = (p["R54_N"] * p["h54_m"] + p["inertia_moment_Nm"] + p["G4_N"] * p["hG_m"]
+                  + p["M_I4_Nm"]) / p["arm_R34_m"]
+    assert as_printed == pytest.approx(p["R34_N"], rel=1e-7)       # its rounding
+    corrected = (p["R54_N"] * p["h54_m"] + 22.0 * k["a_S_lever_m_s2"] * 0.290
+                 + p["G4_N"] * p["hG_m"] + 1.2 * eps4) / k["s_block_lever_m"]
+    assert corrected == pytest.approx(f["R_lever_block_N"], rel=1e-7)
+    assert f["R_lever_block_N"] != pytest.approx(p["R34_N"], rel=0.05)
+    # at the extreme R23 acts along the crank: no balancing moment on it
+    assert abs(f["M_drive_Nm"]) < 1e-9 * f["R_crank_block_N"] * 0.090
+
+
+@pytest.mark.parametrize("change", ["l_BC = 0.25·l_O4B", "l_BC = 0.36·l_O4B",
+                                    "guide through the top of B's arc",
+                                    "guide through the chord of B's arc",
+                                    "numbered from the other extreme"])
+def test_shaper_cn_scheme2_other_readings_miss(change):
+    """What the reports do not print is fixed by their numbers: each other reading misses
+    at least one of them by far more than its tolerance."""
+    psi = math.asin(0.090 / 0.350)
+    spec = {"l_BC = 0.25·l_O4B": lambda: shaper_cn_scheme2(l_bc_ratio=0.25),
+            "l_BC = 0.36·l_O4B": lambda: shaper_cn_scheme2(l_bc_ratio=0.36),
+            "guide through the top of B's arc": lambda: shaper_cn_scheme2(guide_y=0.580),
+            "guide through the chord of B's arc":
+                lambda: shaper_cn_scheme2(guide_y=0.580 * math.cos(psi)),
+            "numbered from the other extreme":
+                lambda: shaper_cn_scheme2(working_stroke="away")}[change]()
+    x, a = _scheme2_numbers(linkage.analyze(spec))
+    worst_x = max(abs(x[q] / float(t) - 1.0) for q, t in SHAPER_CN2_REPORT_X_POSITION_9.items())
+    worst_a = max(abs(a[q] / float(t) - 1.0) for q, t in SHAPER_CN2_REPORT_A_POSITION_1.items()
+                  if q != "a_C_m_s2")
+    assert worst_x > 50 * SHAPER_CN2_RTOL and worst_a > 50 * SHAPER_CN2_RTOL
