@@ -219,14 +219,15 @@ def read_plan(ck, data, strokes, loads, omega, resistance_paths, working_default
     elif "positions" not in a:
         positions = 12
     working = ck.get(a, ANALYSIS, "working_stroke", choices=strokes)
-    needs = []
+    needs = []               # what needs the working stroke, each a keyed text
     if positions is not None and "crank_angles_deg" not in a:
-        needs.append("positions" + ("" if "positions" in a else " (12 by default)"))
+        needs.append(Text("errors.linkage.spec.needs.positions" if "positions" in a
+                          else "errors.linkage.spec.needs.positions_default"))
     if any(ld.kind == "resistance" and ld.stroke != "both" for ld in loads):
-        needs.append("a resistance limited to one stroke")
+        needs.append(Text("errors.linkage.spec.needs.resistance_stroke"))
     if any(ld.kind == "resistance" and (ld.span is not None or ld.start is not None
                                         or ld.fractions is not None) for ld in loads):
-        needs.append("a resistance with a span")
+        needs.append(Text("errors.linkage.spec.needs.resistance_window"))
     if omega == 0.0:
         # statics (or start from rest): no direction of rotation, no strokes
         if positions is not None and "crank_angles_deg" not in a:
@@ -243,5 +244,5 @@ def read_plan(ck, data, strokes, loads, omega, resistance_paths, working_default
     elif needs and working is None and "working_stroke" not in a:
         ck.add("analysis.working_stroke",
                Text("errors.linkage.spec.missing_required_with",
-                    {"items": ' and '.join(needs), "items2": ', '.join(map(repr, strokes))}))
+                    {"items": needs, "items2": ', '.join(map(repr, strokes))}))
     return None if angles else positions, angles, working

@@ -150,6 +150,10 @@ CASES = [
     ("linkage-window-outside", lambda t: ["linkage", linkage_spec(
         t, extra="[[load]]\nlink = \"rocker\"\nresistance_Nm = 100.0\nstart_deg = 60.0\n"
                  "span_deg = 10.0\n")]),
+    # what needs the working stroke, named in the run's language (it was English words)
+    ("linkage-needs-stroke", lambda t: ["linkage", write(t, "mech.toml", LINKAGE.format(
+        crank=0.175, extra="[[load]]\nlink = \"rocker\"\nresistance_Nm = 100.0\n"
+                          "span_deg = 10.0\n").replace('working_stroke = "ccw"\n', ""))]),
     ("linkage-step", lambda t: ["linkage", linkage_spec(t), "--step", "45"]),
     ("linkage-plans", lambda t: ["linkage", "--example", "press", "--plans", "13",
                                  "-o", str(t / "o")]),
