@@ -56,12 +56,51 @@ from .model import (LEVER_LONGEST_MM, Lever, Plan, PositionPlans, Vector, balanc
                     close_lever, force_polygon, lever_force, position_rows, round_scale,
                     scaled_plan)
 
-__all__ = ["build_chain_plans", "CHAIN_PLAN_KINDS"]
+__all__ = ["build_chain_plans", "CHAIN_PLAN_KINDS", "fourbar_name"]
 
 #: The kinematic plans of a chain position (then ``force_<i>_<j>`` …, ``force_crank``).
 CHAIN_PLAN_KINDS = ("velocity", "acceleration")
 _POLE = "_pole"
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+_SUPER = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
+
+
+def fourbar_name(name: str) -> str:
+    """The four-bar's name of a segment, point, quantity, plan or label of the chain's
+    construction of a four-bar (:func:`linkage.chain_spec.as_chain`: the crank and one
+    group), the one naming rule between the two.
+
+    The chain numbers the frame 0 and the crank 1, the textbook's four-bar the frame 1 and
+    the crank 2 (:data:`linkage.spec.LINK_NUMBER`): every link number, a digit or a
+    subscript digit, is one more (``ps1`` → ``ps2``, ``a_n2`` → ``a_n3``, ``R01`` →
+    ``R12``, ``R₂₁`` → ``R₃₂``, ``omega2`` → ``omega3``); the group's polygon
+    ``force_2_3`` is the four-bar's ``force_dyad``, a relative velocity between two
+    images is written without the underscore (``a_b`` → ``ab``) and the pole of the
+    acceleration plan is ``pi`` (``pole_n3`` → ``pi_n4``).  Names without a number are
+    the same (``pa``, ``pi_e``, ``Fb``).  For the plans' segments, their labels and the
+    ``angular`` quantities; not for the lever's load names (``F3_1`` counts loads).
+
+    Examples
+    --------
+    >>> [fourbar_name(n) for n in ("a_b", "pole_n3", "n3_b", "R03", "force_2_3", "πn₃")]
+    ['ab', 'pi_n4', 'n4_b', 'R14', 'force_dyad', 'πn₄']
+    """
+    if name == "force_2_3":
+        return "force_dyad"
+    out = []
+    for ch_ in name:
+        if ch_.isdigit():
+            sub = ch_ not in "0123456789"
+            d = int(ch_.translate(_SUPER)) + 1
+            out.append(str(d).translate(_SUB) if sub else str(d))
+        else:
+            out.append(ch_)
+    out = "".join(out)
+    if out.startswith("pole_"):
+        out = "pi_" + out[len("pole_"):]
+    return {"a_b": "ab"}.get(out, out)
 
 
 def _at(x, i, n):
