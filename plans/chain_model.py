@@ -52,9 +52,9 @@ from linkage import groups as g
 from linkage.chain_lever import zhukovsky
 
 from .errors import PlanError, Problem, Text
-from .model import (LEVER_LONGEST_MM, Lever, Plan, PositionPlans, Vector, balancing_force,
-                    close_lever, force_polygon, lever_force, position_rows, round_scale,
-                    scaled_plan)
+from .model import (LEVER_LONGEST_MM, Lever, Plan, PositionPlans, Vector, angular_reading,
+                    balancing_force, close_lever, force_polygon, lever_force, position_rows,
+                    round_scale, scaled_plan)
 
 __all__ = ["build_chain_plans", "CHAIN_PLAN_KINDS", "fourbar_name"]
 
@@ -691,12 +691,7 @@ def build_chain_plans(result, positions=None, *, scales=None):
         for n, vseg, aseg, length, w, e in B.angular:
             for q, kind, seg, exact, unit in ((f"omega{n}", "velocity", vseg, w, "rad/s"),
                                               (f"eps{n}", "acceleration", aseg, e, "rad/s2")):
-                p = plans[kind]
-                vec = p.vector(seg)
-                angular.append({"quantity": q, "plan": kind, "segment": seg,
-                                "link_length_m": length, "length_mm": vec.length_mm,
-                                "value": vec.length_mm * p.scale / length,
-                                "signed_value": exact, "unit": unit, "scale": p.scale})
+                angular.append(angular_reading(q, plans[kind], seg, length, exact, unit))
         geo = {}
         for j in list(res.mech.frame) + list(res.joints):
             geo[j] = P.point(j)[0]

@@ -48,6 +48,7 @@ from .errors import PlanError, Problem, Text
 
 __all__ = ["Vector", "Plan", "LeverForce", "Lever", "PositionPlans", "round_scale",
            "build_plans", "balancing_force", "force_polygon", "scaled_plan", "lever_force",
+           "angular_reading",
            "close_lever", "position_rows", "ROUND_MANTISSAS", "PLAN_KINDS", "SCALE_KINDS",
            "LEVER_LONGEST_MM", "MAX_PLAN_MM"]
 
@@ -809,14 +810,28 @@ def _angular(spec, K, i, vplan, aplan):
         rows += [("omega4", "velocity", "pb", spec.rocker, _row(K, i, "omega4_rad_s"), "rad/s"),
                  ("eps4", "acceleration", "n4_b", spec.rocker, _row(K, i, "eps4_rad_s2"),
                   "rad/s2")]
-    out = []
-    for q, plan, seg, length, exact, unit in rows:
-        p = vplan if plan == "velocity" else aplan
-        vec = p.vector(seg)
-        out.append({"quantity": q, "plan": plan, "segment": seg, "link_length_m": length,
-                    "length_mm": vec.length_mm, "value": vec.length_mm * p.scale / length,
-                    "signed_value": exact, "unit": unit, "scale": p.scale})
-    return out
+    return [angular_reading(q, vplan if plan == "velocity" else aplan, seg, length, exact,
+                            unit)
+            for q, plan, seg, length, exact, unit in rows]
+
+
+def angular_reading(quantity, plan: Plan, segment, length_m, exact, unit) -> dict:
+    """A link's ω or ε read off a plan, as the student does (seed 000: ω3 = V_BA/l_AB,
+    ε3 = aᵗ_BA/l_AB): the length of ``segment`` times the plan's scale over the link's
+    length ``length_m`` [m]; ``exact`` is the analysis' signed value (+ ccw).  One
+    reading for the four-bar's and a chain's links.
+
+    Returns
+    -------
+    dict
+        ``quantity``, ``plan``, ``segment``, ``link_length_m``, ``length_mm``, ``value``
+        (≥ 0), ``signed_value``, ``unit``, ``scale``.
+    """
+    vec = plan.vector(segment)
+    return {"quantity": quantity, "plan": plan.kind, "segment": segment,
+            "link_length_m": length_m, "length_mm": vec.length_mm,
+            "value": vec.length_mm * plan.scale / length_m, "signed_value": exact,
+            "unit": unit, "scale": plan.scale}
 
 
 def build_plans(result, positions=None, *, scales=None, crank_angles_deg=None):
