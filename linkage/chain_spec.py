@@ -27,7 +27,7 @@ from .loads import LoadSpec
 from .schema import CHAIN_MECHANISM, CHAIN_SCHEMA, GROUP
 from .spec_tables import read_link, read_loads, read_plan
 
-__all__ = ["ChainLoad", "ChainSpec", "load_chain_spec", "output_kind", "is_chain", "as_chain"]
+__all__ = ["ChainLoad", "ChainSpec", "load_chain_spec", "output_kind", "is_chain"]
 
 #: How many lengths each group kind takes.
 _LENGTHS = {"RRR": 2, "RRP": 1, "RPR": 0, "PRP": 0, "RPP": 0}
@@ -224,55 +224,3 @@ def is_chain(data) -> bool:
     """True when the TOML content ``data`` is a chain spec (``[mechanism] kind = "chain"``)."""
     m = data.get("mechanism") if isinstance(data, dict) else None
     return isinstance(m, dict) and m.get("kind") == "chain"
-
-
-def _plain(value):
-    """A spec's content as read (mappings as dicts, arrays as lists), for a new spec."""
-    if isinstance(value, (dict, MappingProxyType)):
-        return {k: _plain(v) for k, v in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [_plain(v) for v in value]
-    return value
-
-
-def as_chain(spec) -> ChainSpec:
-    """A four-bar spec written as the chain it is: the crank I(0,1) and one class II group.
-
-    A crank-rocker (:class:`linkage.spec.MechanismSpec`) is the RRR group (coupler,
-    rocker) on the joints A, B and the frame's C at ``ground`` along ``ground_angle``; a
-    crank-slider is the RRP group (coupler, slider) on A, B with the slider on the frame's
-    guide through O along ``ground_angle``, ``offset`` to its left.  The links keep their
-    names, local frames, masses, centres of mass and points, the loads, the analysis plan
-    and ``[drawing]`` are the spec's own, so :func:`linkage.analyze` of the result solves
-    the same mechanism with :mod:`linkage.chain`.  Link numbers follow the chain's
-    numbering (the crank 1, the frame 0), one less than the four-bar's
-    (:data:`linkage.spec.LINK_NUMBER`).  A chain spec is returned as it is.
-
-    Parameters
-    ----------
-    spec : linkage.spec.MechanismSpec or ChainSpec
-
-    Returns
-    -------
-    ChainSpec
-    """
-    if spec.kind == "chain":
-        return spec
-    raw = _plain(spec.raw)
-    angle_deg = raw["mechanism"].get("ground_angle_deg", 0.0)
-    mech = {"kind": "chain", "name": spec.name, "crank": spec.crank,
-            "omega_rad_s": spec.omega, "epsilon_rad_s2": spec.epsilon,
-            "gravity_m_s2": spec.gravity}
-    if spec.kind == "crank-rocker":
-        zC = spec.ground * complex(math.cos(spec.ground_angle), math.sin(spec.ground_angle))
-        mech.update(frame={"O": [0.0, 0.0], "C": [zC.real, zC.imag]}, output="rocker")
-        group = {"kind": "RRR", "links": ["coupler", "rocker"], "joints": ["A", "B", "C"],
-                 "lengths": [spec.coupler, spec.rocker], "assembly": spec.assembly}
-    else:
-        mech.update(frame={"O": [0.0, 0.0]}, output="slider")
-        group = {"kind": "RRP", "links": ["coupler", "slider"], "joints": ["A", "B"],
-                 "lengths": [spec.coupler], "guide_angle_deg": angle_deg,
-                 "guide_offset": spec.offset, "assembly": spec.assembly}
-    data = {"mechanism": mech, "group": [group]}
-    data.update({k: raw[k] for k in ("links", "load", "analysis", "drawing") if k in raw})
-    return load_chain_spec(data, spec.source)

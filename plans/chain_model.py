@@ -69,7 +69,7 @@ _SUPER = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
 
 def fourbar_name(name: str) -> str:
     """The four-bar's name of a segment, point, quantity, plan or label of the chain's
-    construction of a four-bar (:func:`linkage.chain_spec.as_chain`: the crank and one
+    construction of a four-bar (:func:`linkage.analysis.as_chain`: the crank and one
     group), the one naming rule between the two.
 
     The chain numbers the frame 0 and the crank 1, the textbook's four-bar the frame 1 and

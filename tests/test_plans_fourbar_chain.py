@@ -1,14 +1,15 @@
 """The four-bar's plans against the chain's construction of the same mechanism (issue #20).
 
-A crank-rocker or crank-slider spec written as the chain it is
-(:func:`linkage.chain_spec.as_chain`: the crank and one RRR or RRP group) is solved by
-:mod:`linkage.chain` and drawn by :func:`plans.build_chain_plans`; the four-bar itself by
-:func:`linkage.analyze` and :func:`plans.build_plans`.  Two solvers and two builders: under
-the one naming rule :func:`plans.chain_model.fourbar_name` every segment of the velocity
-and acceleration plans has the same ends on paper, every force of the polygons the same
-value, and the lever the same Fур and Mур, so a wrong sign, factor or swapped angle in
-either shows.  (The four-bar's dyad polygon draws R23 and a rocker's R14 in their n and t
-components, the textbook's construction; the chain's draws them whole.)
+A crank-rocker or crank-slider spec written as the chain spec it is
+(:func:`linkage.analysis.as_chain`: the crank and one RRR or RRP group) is tabulated by
+:mod:`linkage.chain_analysis` and drawn by :func:`plans.build_chain_plans`; the four-bar
+itself by :func:`linkage.analyze`'s course columns and :func:`plans.build_plans`.  Two
+constructions of the plans from two tables: under the one naming rule
+:func:`plans.chain_model.fourbar_name` every segment of the velocity and acceleration
+plans has the same ends on paper, every force of the polygons the same value, and the
+lever the same Fур and Mур, so a wrong sign, factor or swapped angle in either shows.
+(The four-bar's dyad polygon draws R23 and a rocker's R14 in their n and t components,
+the textbook's construction; the chain's draws them whole.)
 """
 from __future__ import annotations
 
@@ -16,7 +17,7 @@ import pytest
 
 import linkage
 from crankbase.resources import example_path
-from linkage.chain_spec import as_chain
+from linkage.analysis import as_chain
 from plans import build_chain_plans, build_plans
 from plans.chain_model import fourbar_name
 
