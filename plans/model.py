@@ -9,6 +9,17 @@ the ratchet-drive project; Artobolevsky 1988, ch. 4 and 13): the plan is built f
 pole in the order of the structure formula, so each vector of the graphical solution is
 a segment with its start and end point in millimetres of the drawing.
 
+Shared with :mod:`plans.chain_model` (any chain of class II groups), one construction
+each: the data classes, :func:`round_scale` and the default scale of a plan
+(:func:`scaled_plan`), the force polygons (:func:`force_polygon`), a load on Zhukovsky's
+lever (:func:`lever_force`) and its closure (:func:`close_lever`), the balancing force
+(:func:`balancing_force`), ω and ε read off the plans (:func:`angular_reading`) and the
+positions (:func:`position_rows`).  The four-bar's own part reads the course columns of
+:func:`linkage.analyze` into the textbook's velocity and acceleration plans, dyad and
+crank polygons and lever loads; the chain's construction of the same mechanism
+(:func:`linkage.analysis.as_chain`) gives the same segments under
+:func:`plans.chain_model.fourbar_name` (``tests/test_plans_fourbar_chain.py``).
+
 Conventions
 -----------
 * Plan coordinates are millimetres on paper, x to the right, y up, the pole at (0, 0);
