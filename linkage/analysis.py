@@ -25,6 +25,7 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import dataclass, field
+from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -38,6 +39,7 @@ from . import groups as g
 from .groups import CHUNK  # positions per chunk (one constant for every table)
 from .columns import derived_kinematics_columns, force_columns, kinematics_columns, point_names
 from .chain_analysis import output_motion
+from .chain_spec import ChainSpec
 from .course import REACTIONS, course_of
 from .derived import fill_derived
 from .fourbar import GrashofType, SliderCrankType
@@ -48,7 +50,7 @@ from .spec import MechanismSpec, load_spec
 if TYPE_CHECKING:  # pandas is imported when a table is built
     import pandas as pd
 
-__all__ = ["build_mechanism", "spec_chain", "analyze", "full_turn", "AnalysisResult", "AnalysisSummary",
+__all__ = ["build_mechanism", "spec_chain", "as_chain", "analyze", "full_turn", "AnalysisResult", "AnalysisSummary",
            "solve_columns", "kinematics_columns", "force_columns", "plan_angles",
            "SingularPositionWarning", "CHUNK"]
 
@@ -86,6 +88,34 @@ def spec_chain(spec):
     mech = build_mechanism(spec)
     mech.check_rotatable()
     return ch.from_mechanism(mech, spec.links)
+
+
+def as_chain(spec):
+    """A crank-rocker's or crank-slider's spec as the chain spec it is: its chain
+    (:func:`linkage.chain.from_mechanism`: ``I(0,1) → II RRR(2,3)`` with the frame's O and C,
+    or ``I(0,1) → II RRP(2,3)`` with the guide on the frame; the links' names, masses,
+    centres of mass and points), the output link (``rocker`` or ``slider``), its loads,
+    analysis plan and content as read, so that :func:`analyze` solves and tabulates it as
+    any chain (the chain's numbering: the frame 0, the crank 1).  A chain spec is
+    returned as it is.
+
+    Parameters
+    ----------
+    spec : MechanismSpec or linkage.chain_spec.ChainSpec
+
+    Returns
+    -------
+    linkage.chain_spec.ChainSpec
+    """
+    if spec.kind == "chain":
+        return spec
+    chain = ch.from_mechanism(build_mechanism(spec), spec.links)
+    return ChainSpec(kind="chain", name=spec.name, mechanism=chain,
+                     output=course_of(spec).output, omega=spec.omega, epsilon=spec.epsilon,
+                     gravity=spec.gravity, links=MappingProxyType(dict(chain.links)),
+                     loads=spec.loads, positions=spec.positions,
+                     crank_angles_deg=spec.crank_angles_deg,
+                     working_stroke=spec.working_stroke, raw=spec.raw, source=spec.source)
 
 
 class _Tables:

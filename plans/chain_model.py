@@ -52,15 +52,55 @@ from linkage import groups as g
 from linkage.chain_lever import zhukovsky
 
 from .errors import PlanError, Problem, Text
-from .model import (LEVER_LONGEST_MM, MAX_PLAN_MM, Lever, LeverForce, Plan, PositionPlans,
-                    Vector, balancing_force, close_lever, position_rows, round_scale)
+from .model import (LEVER_LONGEST_MM, Lever, Plan, PositionPlans, Vector, angular_reading,
+                    balancing_force, close_lever, force_polygon, lever_force, position_rows,
+                    round_scale, scaled_plan)
 
-__all__ = ["build_chain_plans", "CHAIN_PLAN_KINDS"]
+__all__ = ["build_chain_plans", "CHAIN_PLAN_KINDS", "fourbar_name"]
 
 #: The kinematic plans of a chain position (then ``force_<i>_<j>`` …, ``force_crank``).
 CHAIN_PLAN_KINDS = ("velocity", "acceleration")
 _POLE = "_pole"
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+_SUPER = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
+
+
+def fourbar_name(name: str) -> str:
+    """The four-bar's name of a segment, point, quantity, plan or label of the chain's
+    construction of a four-bar (:func:`linkage.analysis.as_chain`: the crank and one
+    group), the one naming rule between the two.
+
+    The chain numbers the frame 0 and the crank 1, the textbook's four-bar the frame 1 and
+    the crank 2 (:data:`linkage.spec.LINK_NUMBER`): every link number, a digit or a
+    subscript digit, is one more (``ps1`` → ``ps2``, ``a_n2`` → ``a_n3``, ``R01`` →
+    ``R12``, ``R₂₁`` → ``R₃₂``, ``omega2`` → ``omega3``); the group's polygon
+    ``force_2_3`` is the four-bar's ``force_dyad``, a relative velocity between two
+    images is written without the underscore (``a_b`` → ``ab``) and the pole of the
+    acceleration plan is ``pi`` (``pole_n3`` → ``pi_n4``).  Names without a number are
+    the same (``pa``, ``pi_e``, ``Fb``).  For the plans' segments, their labels and the
+    ``angular`` quantities; not for the lever's load names (``F3_1`` counts loads).
+
+    Examples
+    --------
+    >>> [fourbar_name(n) for n in ("a_b", "pole_n3", "n3_b", "R03", "force_2_3", "πn₃")]
+    ['ab', 'pi_n4', 'n4_b', 'R14', 'force_dyad', 'πn₄']
+    """
+    if name == "force_2_3":
+        return "force_dyad"
+    out = []
+    for ch_ in name:
+        if ch_.isdigit():
+            sub = ch_ not in "0123456789"
+            d = int(ch_.translate(_SUPER)) + 1
+            out.append(str(d).translate(_SUB) if sub else str(d))
+        else:
+            out.append(ch_)
+    out = "".join(out)
+    if out.startswith("pole_"):
+        out = "pi_" + out[len("pole_"):]
+    return {"a_b": "ab"}.get(out, out)
 
 
 def _at(x, i, n):
@@ -404,9 +444,11 @@ def _plan(kind, rows, polys, pts, mu, which):
 
 
 def _force_items(result, P: _Position):
-    """The force polygons of one position, in N: ``{kind: (items, polygons)}`` with
+    """The force polygons of one position, in N: ``{kind: (items, inner, split)}`` with
     ``force_<i>_<j>`` for each group (links i, j by their numbers) and ``force_crank``;
-    items ``(name, quantity, label ru, label en, force, kind)`` head to tail."""
+    items ``(name, quantity, label ru, label en, force, kind)`` head to tail, the inner
+    reaction R32 from the end of link 2's ``split`` items
+    (:func:`plans.model.force_polygon`)."""
     res, cf, mech = result.motion, result.reactions, result.spec.mechanism
     gvec = -1j * result.spec.gravity
     num = P.number
@@ -450,8 +492,7 @@ def _force_items(result, P: _Position):
         inner = [reaction(r.by, r.on, r) for r in table if r.on == l2 and r.by == l3]
         items2 = own(l2, later[l2]) + outer[l2]
         items3 = own(l3, later[l3]) + outer[l3]
-        polys = [[(it[0], 1) for it in items2 + items3]]
-        out[f"force_{num[l2]}_{num[l3]}"] = (items2 + items3, polys, inner, len(items2))
+        out[f"force_{num[l2]}_{num[l3]}"] = (items2 + items3, inner, len(items2))
     d = mech.driver
     items = own(d.link) + [reaction(r.by, r.on, r) for r in table
                            if r.on == d.link and r.by not in (ch.FRAME, d.link)]
@@ -463,25 +504,8 @@ def _force_items(result, P: _Position):
     # with Mур as the force Fур at A, the frame's reaction is R01 − Fур
     items.append((f"R0{num[d.link]}", f"R0{num[d.link]}", f"R₀{sub(num[d.link])}",
                   f"R₀{sub(num[d.link])}", P.c(R0.force) - Fb, "reaction"))
-    out["force_crank"] = (items, [[(it[0], 1) for it in items]], [], len(items))
+    out["force_crank"] = (items, [], len(items))
     return out
-
-
-def _force_plan(kind, items, polys, inner, n2, mu):
-    P = Plan(kind, mu, "N", {}, {}, [])
-    z = 0j
-    ends = [z]
-    for name, quantity, lru, len_, F, vkind in items:
-        P.vectors.append(Vector(kind, name, quantity, lru, len_, z, z + F / mu, abs(F), "N",
-                                mu, vkind))
-        z = z + F / mu
-        ends.append(z)
-    P.polygons = [list(p) for p in polys]
-    for name, quantity, lru, len_, F, vkind in inner:       # R32 closes link 2's forces
-        P.vectors.append(Vector(kind, name, quantity, lru, len_, ends[n2], ends[n2] + F / mu,
-                                abs(F), "N", mu, vkind))
-        P.polygons.append([(it[0], 1) for it in items[:n2]] + [(name, 1)])
-    return P
 
 
 def _link_points(P: _Position, ln):
@@ -554,16 +578,12 @@ def _lever(result, zl, P: _Position, vplan: Plan, scale=None) -> Lever:
     sheet is checked against the lever's and the kinetostatic one."""
     res, mech = P.res, P.res.mech
     mu = vplan.scale
-    rot = -1j
     w1 = P.f(res.omega(mech.driver.link))
     sub = lambda k: str(k).translate(_SUB)             # noqa: E731
     forces = []
 
     def add(name, lru, len_, key, v, F):
-        at = complex(rot * v / mu)
-        m = float(g.cross(at, F))
-        size = abs(F)
-        forces.append(LeverForce(name, lru, len_, key, at, F, m / size if size else 0.0, m))
+        forces.append(lever_force(name, lru, len_, key, v, F, mu))
 
     couples = {}
     count = {}
@@ -659,35 +679,19 @@ def build_chain_plans(result, positions=None, *, scales=None):
             rows_ = B.vel if which == 0 else B.acc
             polys = B.vpoly if which == 0 else B.apoly
             ref = abs(B.pts[B._key(res.mech.driver.joint)][which])
-            if scales.get(kind):
-                mu = scales[kind]
-            else:
-                unit = _plan(kind, rows_, polys, B.pts, 1.0, which)
-                x0, y0, x1, y1 = unit.bbox()
-                mu = max(round_scale(ref), round_scale(max(x1 - x0, y1 - y0) or 1.0,
-                                                       MAX_PLAN_MM))
-            plans[kind] = _plan(kind, rows_, polys, B.pts, mu, which)
-        for kind, (items, polys, inner, n2) in _force_items(result, P).items():
+            plans[kind] = scaled_plan(
+                lambda mu: _plan(kind, rows_, polys, B.pts, mu, which),
+                lambda unit: ref, scales.get(kind))
+        for kind, (items, inner, n2) in _force_items(result, P).items():
             fixed = scales.get(kind) or (kind != "force_crank" and scales.get("force_dyad"))
-            if fixed:
-                mu = fixed
-            else:
-                unit = _force_plan(kind, items, polys, inner, n2, 1.0)
-                x0, y0, x1, y1 = unit.bbox()
-                ref = max(v.length_mm for v in unit.vectors) or 1.0
-                mu = max(round_scale(ref), round_scale(max(x1 - x0, y1 - y0) or 1.0,
-                                                       MAX_PLAN_MM))
-            plans[kind] = _force_plan(kind, items, polys, inner, n2, mu)
+            plans[kind] = scaled_plan(
+                lambda mu: force_polygon(kind, items, mu, inner=inner, split=n2),
+                lambda unit: max(v.length_mm for v in unit.vectors) or 1.0, fixed)
         angular = []
         for n, vseg, aseg, length, w, e in B.angular:
             for q, kind, seg, exact, unit in ((f"omega{n}", "velocity", vseg, w, "rad/s"),
                                               (f"eps{n}", "acceleration", aseg, e, "rad/s2")):
-                p = plans[kind]
-                vec = p.vector(seg)
-                angular.append({"quantity": q, "plan": kind, "segment": seg,
-                                "link_length_m": length, "length_mm": vec.length_mm,
-                                "value": vec.length_mm * p.scale / length,
-                                "signed_value": exact, "unit": unit, "scale": p.scale})
+                angular.append(angular_reading(q, plans[kind], seg, length, exact, unit))
         geo = {}
         for j in list(res.mech.frame) + list(res.joints):
             geo[j] = P.point(j)[0]

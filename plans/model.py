@@ -9,6 +9,17 @@ the ratchet-drive project; Artobolevsky 1988, ch. 4 and 13): the plan is built f
 pole in the order of the structure formula, so each vector of the graphical solution is
 a segment with its start and end point in millimetres of the drawing.
 
+Shared with :mod:`plans.chain_model` (any chain of class II groups), one construction
+each: the data classes, :func:`round_scale` and the default scale of a plan
+(:func:`scaled_plan`), the force polygons (:func:`force_polygon`), a load on Zhukovsky's
+lever (:func:`lever_force`) and its closure (:func:`close_lever`), the balancing force
+(:func:`balancing_force`), ω and ε read off the plans (:func:`angular_reading`) and the
+positions (:func:`position_rows`).  The four-bar's own part reads the course columns of
+:func:`linkage.analyze` into the textbook's velocity and acceleration plans, dyad and
+crank polygons and lever loads; the chain's construction of the same mechanism
+(:func:`linkage.analysis.as_chain`) gives the same segments under
+:func:`plans.chain_model.fourbar_name` (``tests/test_plans_fourbar_chain.py``).
+
 Conventions
 -----------
 * Plan coordinates are millimetres on paper, x to the right, y up, the pole at (0, 0);
@@ -47,8 +58,10 @@ from linkage.spec import LINK_NUMBER
 from .errors import PlanError, Problem, Text
 
 __all__ = ["Vector", "Plan", "LeverForce", "Lever", "PositionPlans", "round_scale",
-           "build_plans", "balancing_force", "ROUND_MANTISSAS", "PLAN_KINDS", "SCALE_KINDS",
-           "LEVER_LONGEST_MM"]
+           "build_plans", "balancing_force", "force_polygon", "scaled_plan", "lever_force",
+           "angular_reading",
+           "close_lever", "position_rows", "ROUND_MANTISSAS", "PLAN_KINDS", "SCALE_KINDS",
+           "LEVER_LONGEST_MM", "MAX_PLAN_MM"]
 
 #: Mantissas of the round scales (ГОСТ-like series used for drawing scales of plans).
 ROUND_MANTISSAS = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
@@ -368,19 +381,82 @@ def _sub(name: str) -> str:
     return name.translate(_SUB)
 
 
-def _chain(plan, items, start=0j):
-    """Place force vectors head to tail from ``start``; returns the end points."""
-    z = start
+def force_polygon(kind, items, mu, *, inner=(), split=0, rest=()) -> Plan:
+    """A force polygon: the forces of ``items`` head to tail from the pole at the scale
+    ``mu``, their sum closing (the first polygon); each ``inner`` force (a group's inner
+    reaction, R43 or R32) from the end of the first ``split`` items, which it closes with
+    the items named in ``rest`` (the other component of a split reaction: R23n) as one
+    link's own polygon.  The vertices of the chain are the plan's points ``k0``, ``k1`` …
+
+    One construction of the polygons of the four-bar's dyad and crank
+    (:func:`build_plans`) and of any chain's groups and crank
+    (:func:`plans.chain_model.build_chain_plans`).
+
+    Parameters
+    ----------
+    kind : str
+        The plan's kind (``force_dyad``, ``force_crank``, ``force_2_3`` …).
+    items, inner : sequence of tuple
+        ``(name, quantity, label ru, label en, force, kind)``; force [N] as ``x + iy``.
+    mu : float
+        μF, the value of one millimetre. [N/mm]
+    split : int
+        How many ``items`` the ``inner`` forces start after.
+    rest : sequence of str
+        Names of items that close an inner force's polygon after it.
+
+    Returns
+    -------
+    Plan
+    """
+    P = Plan(kind, mu, "N", {}, {}, [])
+    z = 0j
     ends = [z]
-    out = []
-    for name, quantity, lru, len_, F, kind in items:
-        w = F / plan.scale
-        out.append(Vector(plan.kind, name, quantity, lru, len_, z, z + w, abs(F), plan.unit,
-                          plan.scale, kind))
+    for name, quantity, lru, len_, F, vkind in items:
+        w = F / mu
+        P.vectors.append(Vector(kind, name, quantity, lru, len_, z, z + w, abs(F), "N", mu,
+                                vkind))
         z = z + w
         ends.append(z)
-    plan.vectors.extend(out)
-    return ends
+    P.polygons.append([(it[0], 1) for it in items])
+    for name, quantity, lru, len_, F, vkind in inner:
+        z = ends[split]
+        P.vectors.append(Vector(kind, name, quantity, lru, len_, z, z + F / mu, abs(F), "N",
+                                mu, vkind))
+        P.polygons.append([(it[0], 1) for it in items[:split]] + [(name, 1)]
+                          + [(n, 1) for n in rest])
+    for k, z in enumerate(ends):
+        P.points[f"k{k}"] = z
+    return P
+
+
+def scaled_plan(build, reference_mm, fixed=None) -> Plan:
+    """A plan at a fixed scale or at the textbook's default one.
+
+    ``build(μ)`` is the plan at the scale μ; without ``fixed`` the scale is the round
+    scale (:func:`round_scale`) that keeps the reference vector (``reference_mm`` of the
+    plan at μ = 1: pa, πa, a polygon's largest force) at most 150 mm long, coarser when
+    the whole plan would then be wider or higher than :data:`MAX_PLAN_MM`.  One rule for
+    every plan of the four-bar and of a chain.
+    """
+    if fixed:
+        return build(fixed)
+    unit = build(1.0)
+    mu = max(round_scale(reference_mm(unit)), round_scale(_extent(unit), MAX_PLAN_MM))
+    return build(mu)
+
+
+def lever_force(name, label_ru, label_en, point, v, F, mu) -> LeverForce:
+    """A force ``F`` [N] applied at a point of velocity ``v`` [m/s] on Zhukovsky's lever:
+    at ``−i·v/μV`` mm (the velocity plan of scale ``mu`` turned 90° clockwise), its
+    moment about the pole ``at × F`` [N·mm] and its signed arm.  One rule for the
+    four-bar's and a chain's loads."""
+    at = complex(-1j * v / mu)
+    F = complex(F)
+    m = float(g.cross(at, F))
+    size = abs(F)
+    return LeverForce(name, label_ru, label_en, point, at, F, m / size if size != 0 else 0.0,
+                      m)
 
 
 # ------------------------------------------------------------------------------ builder
@@ -595,19 +671,11 @@ def _force_dyad(spec, K, F, i, mu):
         items.append(("R14", "R14", "R₁₄", "R₁₄",
                       complex(_row(F, i, "R14_x_N"), _row(F, i, "R14_y_N")), "reaction"))
     items.append(("R23n", "R23_n", "R₂₃ⁿ", "R₂₃ⁿ", R23n, "reaction"))
-    P = Plan("force_dyad", mu, "N", {}, {}, [])
-    ends = _chain(P, items)
     # R43 closes link 3's own polygon: from the end of its last load to the start of R23n
     R43 = complex(_row(F, i, "R43_x_N"), _row(F, i, "R43_y_N"))
-    start43 = ends[n3]
-    P.vectors.append(Vector("force_dyad", "R43", "R43", "R₄₃", "R₄₃", start43,
-                            start43 + R43 / mu, abs(R43), "N", mu, "reaction"))
-    names = [it[0] for it in items]
-    P.polygons.append([(n, 1) for n in names])                       # the dyad
-    P.polygons.append([(n, 1) for n in names[:n3]] + [("R43", 1), ("R23n", 1)])  # link 3
-    for k, z in enumerate(ends):
-        P.points[f"k{k}"] = z
-    return P
+    return force_polygon("force_dyad", items, mu,
+                         inner=[("R43", "R43", "R₄₃", "R₄₃", R43, "reaction")], split=n3,
+                         rest=("R23n",))
 
 
 def balancing_force(M_Nm, zA):
@@ -645,12 +713,7 @@ def _force_crank(spec, K, F, i, mu):
     items += [(n, q, lr, le, f, k) for n, q, lr, le, f, k, _ in _loads_of(spec, "crank", F, i)]
     items.append(("Fb", "Fb", "Fур", "Fb", Fb, "balancing"))
     items.append(("R12", "R12_Fb", "R₁₂", "R₁₂", R12, "reaction"))
-    P = Plan("force_crank", mu, "N", {}, {}, [])
-    ends = _chain(P, items)
-    P.polygons.append([(it[0], 1) for it in items])
-    for k, z in enumerate(ends):
-        P.points[f"k{k}"] = z
-    return P
+    return force_polygon("force_crank", items, mu)
 
 
 def _lever(spec, K, F, i, vplan: Plan, scale=None):
@@ -664,16 +727,10 @@ def _lever(spec, K, F, i, vplan: Plan, scale=None):
     seed 000 §4 (the same loads: Gi, Fui, Mui, Mпс)."""
     mu = vplan.scale
     links = _link_motions(spec, K, i)
-    rot = -1j                                          # 90° clockwise
     forces = []
 
     def add(name, lru, len_, pname, v, Fv):
-        at = complex(rot * v / mu)
-        Fv = complex(Fv)
-        m = float(g.cross(at, Fv))
-        size = abs(Fv)
-        arm = m / size if size != 0 else 0.0
-        forces.append(LeverForce(name, lru, len_, pname, at, Fv, arm, m))
+        forces.append(lever_force(name, lru, len_, pname, v, Fv, mu))
 
     ends = {"crank": ("o", "a"), "coupler": ("a", "b"),
             "rocker": ("c", "b"), "slider": ("b", "b")}
@@ -764,14 +821,28 @@ def _angular(spec, K, i, vplan, aplan):
         rows += [("omega4", "velocity", "pb", spec.rocker, _row(K, i, "omega4_rad_s"), "rad/s"),
                  ("eps4", "acceleration", "n4_b", spec.rocker, _row(K, i, "eps4_rad_s2"),
                   "rad/s2")]
-    out = []
-    for q, plan, seg, length, exact, unit in rows:
-        p = vplan if plan == "velocity" else aplan
-        vec = p.vector(seg)
-        out.append({"quantity": q, "plan": plan, "segment": seg, "link_length_m": length,
-                    "length_mm": vec.length_mm, "value": vec.length_mm * p.scale / length,
-                    "signed_value": exact, "unit": unit, "scale": p.scale})
-    return out
+    return [angular_reading(q, vplan if plan == "velocity" else aplan, seg, length, exact,
+                            unit)
+            for q, plan, seg, length, exact, unit in rows]
+
+
+def angular_reading(quantity, plan: Plan, segment, length_m, exact, unit) -> dict:
+    """A link's ω or ε read off a plan, as the student does (seed 000: ω3 = V_BA/l_AB,
+    ε3 = aᵗ_BA/l_AB): the length of ``segment`` times the plan's scale over the link's
+    length ``length_m`` [m]; ``exact`` is the analysis' signed value (+ ccw).  One
+    reading for the four-bar's and a chain's links.
+
+    Returns
+    -------
+    dict
+        ``quantity``, ``plan``, ``segment``, ``link_length_m``, ``length_mm``, ``value``
+        (≥ 0), ``signed_value``, ``unit``, ``scale``.
+    """
+    vec = plan.vector(segment)
+    return {"quantity": quantity, "plan": plan.kind, "segment": segment,
+            "link_length_m": length_m, "length_mm": vec.length_mm,
+            "value": vec.length_mm * plan.scale / length_m, "signed_value": exact,
+            "unit": unit, "scale": plan.scale}
 
 
 def build_plans(result, positions=None, *, scales=None, crank_angles_deg=None):
@@ -833,11 +904,7 @@ def build_plans(result, positions=None, *, scales=None, crank_angles_deg=None):
         # the textbook's round scale from the reference vector, coarser when the whole
         # plan would be larger than MAX_PLAN_MM
         def scale_of(kind, build, ref):
-            if scales.get(kind):
-                return build(scales[kind])
-            unit = build(1.0)
-            mu = max(round_scale(ref(unit)), round_scale(_extent(unit), MAX_PLAN_MM))
-            return build(mu)
+            return scaled_plan(build, ref, scales.get(kind))
 
         vplan = scale_of("velocity", lambda m: _velocity_plan(spec, K, i, m, pts),
                          lambda p: p.vector("pa").length_mm)
