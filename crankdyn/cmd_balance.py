@@ -27,7 +27,6 @@ a rerun replaces only its own files; bad input writes nothing.  The terminal sum
 speaks the report's language (``--lang``).
 """
 from __future__ import annotations
-from crankbase.errors import Text
 from .langs import report_command
 
 
@@ -44,18 +43,13 @@ def add_parser(subparsers, t=None):
 
 
 def run(args) -> int:
-    from pathlib import Path
-
-    from crankbase.errors import SpecError
     from dynamics.balance_study import run_study, summary_lines, write_report
     from dynamics.study import notice_lines
 
-    from .cmd_dynamics import _spec_path, print_notices
+    from .cmd_dynamics import print_notices
+    from .examples import output_folder, spec_file
 
-    spec_path = _spec_path(args, EXAMPLES, "balance")
-    out = Path(args.output)
-    if out.exists() and not out.is_dir():
-        raise SpecError(Text("errors.crankdyn.cli_balance.o_exists_and", {"out": out}))
+    spec_path, out = spec_file(args, EXAMPLES, "balance"), output_folder(args)
     report = run_study(spec_path)
     written = write_report(report, out, lang=args.lang)
     print("\n".join(summary_lines(report, args.lang, written)))

@@ -21,7 +21,6 @@ report's language (``--lang``).
 from __future__ import annotations
 
 import sys
-from crankbase.errors import Text
 from .langs import report_command
 
 #: Bundled examples by short name (``--example NAME``).
@@ -38,15 +37,11 @@ def add_parser(subparsers, t=None):
 
 
 def run(args) -> int:
-    from pathlib import Path
-
-    from crankbase.errors import SpecError
     from dynamics.study import notice_lines, run_study, summary_lines, write_report
 
-    spec_path = _spec_path(args, EXAMPLES, "dynamics")
-    out = Path(args.output)
-    if out.exists() and not out.is_dir():
-        raise SpecError(Text("errors.crankdyn.cli_dynamics.o_exists_and", {"out": out}))
+    from .examples import output_folder, spec_file
+
+    spec_path, out = spec_file(args, EXAMPLES, "dynamics"), output_folder(args)
     report = run_study(spec_path)
     written = write_report(report, out, lang=args.lang)
     print("\n".join(summary_lines(report, args.lang, written)))
@@ -59,21 +54,3 @@ def print_notices(command, lines):
     after the command's name."""
     for line in lines:
         print(f"crankdyn {command}: {line}", file=sys.stderr)
-
-
-def _spec_path(args, examples, what):
-    """The spec file of ``args.spec`` or ``--example NAME`` (one of them, not both)."""
-    from pathlib import Path
-
-    from crankbase.errors import SpecError
-
-    from .examples import find_example
-
-    if args.spec and args.example:
-        raise SpecError(Text("errors.crankdyn.cli_dynamics.give_either_spec"))
-    if args.spec:
-        return Path(args.spec)
-    if not args.example:
-        raise SpecError(Text("errors.crankdyn.cli_dynamics.give_spec_spec",
-                             {"what": Text(f"errors.what.{what}")}))
-    return find_example(args.example, examples, what)

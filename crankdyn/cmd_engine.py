@@ -38,24 +38,12 @@ def add_parser(subparsers, t=None):
     p.set_defaults(func=run)
 
 
-def _example_path(name):
-    from .examples import find_example
-    return find_example(name, EXAMPLES, "engine")
-
-
 def run(args) -> int:
-    from pathlib import Path
-
     from crankbase.errors import SpecError
 
-    if args.spec and args.example:
-        raise SpecError(Text("errors.crankdyn.cli_engine.give_either_spec"))
-    if not args.spec and not args.example:
-        raise SpecError(Text("errors.crankdyn.cli_engine.give_engine_spec"))
-    spec_path = Path(args.spec) if args.spec else _example_path(args.example)
-    out = Path(args.output)
-    if out.exists() and not out.is_dir():
-        raise SpecError(Text("errors.crankdyn.cli_engine.o_exists_and", {"out": out}))
+    from .examples import output_folder, spec_file
+
+    spec_path, out = spec_file(args, EXAMPLES, "engine"), output_folder(args)
     if args.jobs < 1:
         raise SpecError(Text("errors.crankdyn.cli_engine.jobs_whole_number", {"jobs": args.jobs}))
     try:

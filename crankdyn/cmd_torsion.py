@@ -14,7 +14,6 @@ library's (:func:`torsion.study.run_study`, :func:`torsion.study.write_report`,
 """
 from __future__ import annotations
 
-from crankbase.errors import Text
 from .langs import report_command
 
 #: Bundled examples by short name (``--example NAME``; a file stem works too).
@@ -29,23 +28,11 @@ def add_parser(subparsers, t=None):
 
 
 def run(args) -> int:
-    from pathlib import Path
-
     from crankbase.errors import SpecError
 
-    if args.spec and args.example:
-        raise SpecError(Text("torsion.error.give_spec"))
-    if not args.spec and not args.example:
-        raise SpecError(Text("torsion.error.no_spec"))
-    if args.spec:
-        spec_path = Path(args.spec)
-    else:
-        from .examples import find_example
+    from .examples import output_folder, spec_file
 
-        spec_path = find_example(args.example, EXAMPLES, "torsion")
-    out = Path(args.output)
-    if out.exists() and not out.is_dir():
-        raise SpecError(Text("errors.crankdyn.cli_engine.o_exists_and", {"out": out}))
+    spec_path, out = spec_file(args, EXAMPLES, "torsion"), output_folder(args)
     from torsion.study import load, run_study, write_report
 
     try:

@@ -196,6 +196,13 @@ CASES = [
     ("check-student", lambda t: ["check", str(EXAMPLES / "petrol_vaz2106.toml"),
                                  write(t, "s.csv", "a,b\n1,2\n"), "-o", str(t / "o")]),
 ]
+# the spec and -o of every report command, checked in one place (crankdyn.examples):
+# neither SPEC.toml nor --example, both, and -o naming a file
+CASES += [(f"{cmd}-{what}", build) for cmd in ("engine", "dynamics", "balance", "torsion")
+          for what, build in (
+              ("no-spec", lambda t, cmd=cmd: [cmd]),
+              ("spec-and-example", lambda t, cmd=cmd: [cmd, a_file(t), "--example"]),
+              ("o-file", lambda t, cmd=cmd: [cmd, "--example", "-o", a_file(t)]))]
 
 _PREFIX = re.compile(r"^crankdyn \w+: error: ")
 
