@@ -73,12 +73,14 @@ def summary_lines(result, name=None, kind=None, driving=None, lang="en"):
 _SYMBOL = {"phi": ("φ", "φ"), "alpha": ("α", "α"), "omega": ("ω", "ω"), "eps": ("ε", "ε"),
            "t": ("t", "t"), "J_red": ("Jп", "J_red"), "dJ_red_dphi": ("dJп/dφ", "dJ_red/dφ"),
            "M_drive": ("Mд", "M_d"), "M_resist": ("Mс", "M_c"),
-           "M_resist_loads": ("Mс от нагрузок", "M_c of the loads"),
-           "M_resist_weights": ("Mс от сил тяжести", "M_c of the weights"),
            "W": ("ΔT = ∫(Mд − Mс)dφ", "ΔE = ∫(M_d − M_c)dφ"),
            "E": ("T = Jп ω²/2", "E = J_red ω²/2"), "j": ("j", "j"), "Pj": ("Pj", "Pj"),
            "P": ("P", "P"), "T": ("T", "T"), "K": ("K", "K"), "M": ("Mкр", "M"),
            "R": ("Rшш", "Rcp")}
+#: Columns named by a symbol of :data:`_SYMBOL` in words (``dynamics.column.*``): "Mс от
+#: нагрузок", "M_c of the loads".
+_WORDED = {"M_resist_loads": ("M_resist", "dynamics.column.of_loads"),
+           "M_resist_weights": ("M_resist", "dynamics.column.of_weights")}
 #: The linkage's forces sheet: its M_drive is the balancing moment Mур of the core.
 _SYMBOL_FORCES = {"M_drive": ("Mур", "M_b")}
 #: Unit suffixes of the CSV names → the SI unit (international spelling, spelled in the
@@ -103,7 +105,11 @@ def column_label(column: str, lang="en", symbols=None) -> str:
             base, unit = base[:-len(suffix)], t.unit(si)
             break
     table = {**_SYMBOL, **(symbols or {})}
-    sym = t.symbol(*table[base]) if base in table else base
+    if base in _WORDED:
+        of, key = _WORDED[base]
+        sym = t(key, symbol=t.symbol(*table[of]))
+    else:
+        sym = t.symbol(*table[base]) if base in table else base
     text = sym if unit is None else t("common.format.quantity_unit", symbol=sym, unit=unit)
     return text + (" (ω = const)" if const else "")
 
