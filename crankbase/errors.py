@@ -118,7 +118,10 @@ class Problem:
     def render(self, lang: str = "en") -> str:
         """The problem in ``lang`` (English, or a problem without a text key: its
         ``message``)."""
-        msg = self.message if self.text is None or lang == "en" \
+        from .texts import REFERENCE
+
+        # the message is written in the reference language (English)
+        msg = self.message if self.text is None or lang == REFERENCE \
             else self.text.render(lang)
         key = self.key.render(lang) if isinstance(self.key, Text) else self.key
         return f"{key}: {msg}" if key else msg

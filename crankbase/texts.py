@@ -17,6 +17,11 @@ Babel and looked up through the standard library's :class:`gettext.GNUTranslatio
 Adding a language is filling a catalogue, not changing code: copy ``locale/en`` to
 ``locale/<lang>``, set the header's ``Language`` and ``Plural-Forms``, translate every
 ``msgstr``; the language is offered (:func:`languages`) once its catalogue is complete.
+The catalogue also says the language's notation, which the code asks through
+:class:`Texts` and never by comparing language codes: ``common.format.symbols`` (the
+symbol set, :attr:`Texts.symbols`: ``ru`` the Russian textbook's, ``en`` Latin),
+``common.format.decimal_sign`` (:meth:`Texts.number`) and one ``common.unit.<name>`` per
+SI unit (:meth:`Texts.unit`, names in :data:`UNITS`).
 
 Examples
 --------
@@ -37,13 +42,25 @@ from collections.abc import Sequence
 from pathlib import Path
 
 __all__ = ["Texts", "texts", "area_texts", "read_area", "languages", "catalogue_languages",
-           "keys", "LOCALE_DIR", "REFERENCE", "OfferedLanguages", "OFFERED"]
+           "keys", "LOCALE_DIR", "REFERENCE", "OfferedLanguages", "OFFERED", "SYMBOL_SETS",
+           "UNITS"]
 
 #: Folder of the catalogues (shipped as package data of ``crankbase``).
 LOCALE_DIR = Path(__file__).resolve().parent / "locale"
 
 #: The reference language: every other catalogue must hold every one of its keys.
 REFERENCE = "en"
+
+#: The symbol sets a catalogue may name in ``common.format.symbols`` (:attr:`Texts.symbols`).
+SYMBOL_SETS = ("ru", "en")
+
+#: The SI units a catalogue spells: international spelling → the name of its key
+#: ``common.unit.<name>`` (:meth:`Texts.unit`).  ``deg_word`` is the degree written as a
+#: word in a column header ("φ [deg]"), not a sign.
+UNITS = {"m": "m", "mm": "mm", "m/s": "m_s", "m/s²": "m_s2", "rad": "rad",
+         "rad/s": "rad_s", "rad/s²": "rad_s2", "N": "N", "N·m": "N_m", "kg": "kg",
+         "kg·m²": "kg_m2", "kg/m²": "kg_per_m2", "J": "J", "s": "s",
+         "deg": "deg_word"}
 
 
 class Texts:
@@ -78,6 +95,45 @@ class Texts:
         src = self._source(key)
         template = src._tr.ngettext(key, key, int(count))
         return template.format(n=count, **fields)
+
+    # -- the notation of this language: which symbols, how units and numbers are spelled.
+    # A catalogue says it (common.format.*, common.unit.*); code asks here and never
+    # compares a language code (a test checks that no other module does).
+
+    @property
+    def symbols(self) -> str:
+        """The symbol set this language's reports use (``common.format.symbols``):
+        ``"ru"``, the Russian textbook's (Рг, Мкр, Fпс), or ``"en"``, Latin and Greek
+        (Pg, M, Fr; the English and the Chinese textbooks')."""
+        value = self("common.format.symbols")
+        if value not in SYMBOL_SETS:
+            raise ValueError(f"{self.lang}: common.format.symbols is {value!r}; one of "
+                             + ", ".join(SYMBOL_SETS))
+        return value
+
+    def symbol(self, ru, en):
+        """``ru`` or ``en`` by this language's :attr:`symbols`: the one of two spellings
+        (of a symbol, a label, a symbol table) that its symbol set writes."""
+        return ru if self.symbols == "ru" else en
+
+    def unit(self, si: str) -> str:
+        """An SI unit, given in its international spelling (``"N·m"``, ``"m/s²"``), as
+        this language spells it (``common.unit.<name>``: «Н·м» in Russian); a unit that
+        no catalogue spells (``"°"``, ``"%"``) is written as given."""
+        name = UNITS.get(si)
+        return si if name is None else self(f"common.unit.{name}")
+
+    @property
+    def decimal_sign(self) -> str:
+        """The decimal separator of this language's drawings
+        (``common.format.decimal_sign``: "," in Russian, "." in English)."""
+        return self("common.format.decimal_sign")
+
+    def number(self, text: str) -> str:
+        """A number already formatted with a decimal point (``f"{x:.2f}"``), with this
+        language's :attr:`decimal_sign`."""
+        sign = self.decimal_sign
+        return text if sign == "." else text.replace(".", sign)
 
     def has(self, key: str) -> bool:
         """Whether this language's own catalogue (not the fallback) holds ``key``."""

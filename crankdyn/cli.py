@@ -28,7 +28,7 @@ import re
 import sys
 
 from . import __version__
-from .langs import DEFAULT_LANG, cli_texts
+from .langs import DEFAULT_LANG, cli_texts, error_line
 
 #: Subcommand modules, in the order ``--help`` lists them.
 SUBCOMMANDS = ("engine", "linkage", "synth", "dynamics", "balance", "torsion", "check", "serve")
@@ -144,9 +144,11 @@ ARGPARSE_TEXTS = {
     "argument %(argument_name)s: %(message)s":
         ("errors.argparse.argument", {"argument": "%(argument_name)s",
                                       "message": "%(message)s"}),
-    "%(prog)s: error: %(message)s\n":
-        ("errors.argparse.prog_error", {"prog": "%(prog)s", "message": "%(message)s"}),
 }
+
+#: argparse's error line (CPython 3.11–3.13): the command line's own ``cli.error``, the
+#: template of every problem's line (:func:`crankdyn.langs.error_line`).
+ARGPARSE_ERROR = "%(prog)s: error: %(message)s\n"
 
 
 #: argparse's own words in a help (CPython 3.11–3.13) → the text key (area ``cli``).
@@ -203,6 +205,8 @@ def _speak_argparse(lang: str) -> None:
     def translate(message):
         if message in ARGPARSE_HELP_TEXTS:
             return cli_texts(lang)(ARGPARSE_HELP_TEXTS[message])
+        if message == ARGPARSE_ERROR:
+            return cli_texts(lang)("cli.error", prog="%(prog)s", message="%(message)s") + "\n"
         key, fields = ARGPARSE_TEXTS.get(message, (None, None))
         return message if key is None else Template(t(key, **fields))
 
@@ -224,14 +228,14 @@ def main(argv=None) -> int:
     lang = getattr(args, "lang", None) or "en"
     if getattr(args, "output", None) is not None and not args.output.strip():
         # Path("") is ".": an empty -o would write into the current folder unasked
-        print(f"crankdyn {args.command}: error: "
-              + Text("errors.cli.empty_output").render(lang), file=sys.stderr)
+        print(error_line(args.command, Text("errors.cli.empty_output").render(lang), lang),
+              file=sys.stderr)
         return 2
     try:
         return int(args.func(args) or 0)
     except CrankdynError as exc:  # the project's own errors only: anything else is a bug
         for line in exc.lines(lang) or [repr(exc)]:
-            print(f"crankdyn {args.command}: error: {line}", file=sys.stderr)
+            print(error_line(args.command, line, lang), file=sys.stderr)
         return 2
     except BrokenPipeError:  # e.g. `crankdyn ... | head`
         sys.stdout = open(os.devnull, "w")
@@ -239,7 +243,7 @@ def main(argv=None) -> int:
     except (FileNotFoundError, IsADirectoryError, PermissionError) as exc:
         why = Text("errors.cli.os_file", {"file": exc.filename, "reason": os_reason(exc)}) \
             if exc.filename is not None else Text("errors.cli.os", {"reason": os_reason(exc)})
-        print(f"crankdyn {args.command}: error: {why.render(lang)}", file=sys.stderr)
+        print(error_line(args.command, why.render(lang), lang), file=sys.stderr)
         return 2
 
 

@@ -9,7 +9,7 @@ runs; without them the command says in one line how to install them.
 """
 from __future__ import annotations
 
-from .langs import add_lang, cli_texts, command
+from .langs import add_lang, cli_texts, command, error_line
 
 
 def add_parser(subparsers, t=None):
@@ -34,8 +34,8 @@ def run(args) -> int:
 
         import web.app  # noqa: F401  (the framework: Starlette, Jinja2, multipart)
     except ImportError as exc:
-        print("crankdyn serve: error: " + t("cli.serve.needs_extra", module=exc.name),
-              file=sys.stderr)
+        print(error_line("serve", t("cli.serve.needs_extra", module=exc.name),
+                         getattr(args, "lang", None)), file=sys.stderr)
         return 2
     from web import create_app
 

@@ -13,7 +13,8 @@ import functools
 from crankbase.texts import OFFERED
 
 __all__ = ["LANG_CHOICES", "LANG_HELP", "DEFAULT_LANG", "cli_texts", "lang_help", "command",
-           "report_command", "add_spec_or_example", "add_output", "add_lang"]
+           "report_command", "add_spec_or_example", "add_output", "add_lang", "error_line",
+           "warning_line"]
 
 #: ``choices`` of every subcommand's ``--lang``.
 LANG_CHOICES = OFFERED
@@ -35,6 +36,19 @@ def cli_texts(lang: str | None = None):
     if lang not in catalogue_languages():
         lang = DEFAULT_LANG
     return area_texts(lang, "cli")
+
+
+def error_line(command: str, message: str, lang: str | None = None) -> str:
+    """The stderr line of one problem of ``crankdyn <command>`` in ``lang`` (``cli.error``:
+    "crankdyn engine: error: …", «crankdyn engine: ошибка: …»); argparse's own complaints
+    take the same template (crankdyn/cli.py)."""
+    return cli_texts(lang)("cli.error", prog=f"crankdyn {command}", message=message)
+
+
+def warning_line(command: str, message: str, lang: str | None = None) -> str:
+    """The stderr line of one warning of ``crankdyn <command>`` in ``lang``
+    (``cli.warning``)."""
+    return cli_texts(lang)("cli.warning", prog=f"crankdyn {command}", message=message)
 
 
 def lang_help(t, key: str) -> str:

@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import sys
 
+from .langs import error_line, warning_line
+
 
 def run_variants(args, spec_path, out) -> int:
     from tqdm import tqdm
@@ -27,11 +29,11 @@ def run_variants(args, spec_path, out) -> int:
         bar.total = total
         bar.update(1)
         for ln in outcome.problems:
-            tqdm.write(f"crankdyn engine: error: {ln}", file=sys.stderr)
+            tqdm.write(error_line("engine", ln, args.lang), file=sys.stderr)
         if outcome.kept_earlier:
-            tqdm.write("crankdyn engine: warning: " + t(
+            tqdm.write(warning_line("engine", t(
                 "variants.kept_earlier", folder=str(outcome.folder),
-                variant=outcome.variant.variant), file=sys.stderr)
+                variant=outcome.variant.variant), args.lang), file=sys.stderr)
 
     try:
         done = run(spec_path, args.variants, out, args.lang, step=args.step,

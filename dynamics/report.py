@@ -73,36 +73,44 @@ def summary_lines(result, name=None, kind=None, driving=None, lang="en"):
 _SYMBOL = {"phi": ("φ", "φ"), "alpha": ("α", "α"), "omega": ("ω", "ω"), "eps": ("ε", "ε"),
            "t": ("t", "t"), "J_red": ("Jп", "J_red"), "dJ_red_dphi": ("dJп/dφ", "dJ_red/dφ"),
            "M_drive": ("Mд", "M_d"), "M_resist": ("Mс", "M_c"),
-           "M_resist_loads": ("Mс от нагрузок", "M_c of the loads"),
-           "M_resist_weights": ("Mс от сил тяжести", "M_c of the weights"),
            "W": ("ΔT = ∫(Mд − Mс)dφ", "ΔE = ∫(M_d − M_c)dφ"),
            "E": ("T = Jп ω²/2", "E = J_red ω²/2"), "j": ("j", "j"), "Pj": ("Pj", "Pj"),
            "P": ("P", "P"), "T": ("T", "T"), "K": ("K", "K"), "M": ("Mкр", "M"),
            "R": ("Rшш", "Rcp")}
+#: Columns named by a symbol of :data:`_SYMBOL` in words (``dynamics.column.*``): "Mс от
+#: нагрузок", "M_c of the loads".
+_WORDED = {"M_resist_loads": ("M_resist", "dynamics.column.of_loads"),
+           "M_resist_weights": ("M_resist", "dynamics.column.of_weights")}
 #: The linkage's forces sheet: its M_drive is the balancing moment Mур of the core.
 _SYMBOL_FORCES = {"M_drive": ("Mур", "M_b")}
-#: Unit suffixes of the CSV names → (ru, en); longest first.
-_SUFFIX = (("_rad_s2", ("рад/с²", "rad/s²")),
-           ("_rad_s", ("рад/с", "rad/s")), ("_m_s2", ("м/с²", "m/s²")),
-           ("_kgm2", ("кг·м²", "kg·m²")), ("_deg", ("°", "deg")), ("_rad", ("рад", "rad")),
-           ("_Nm", ("Н·м", "N·m")), ("_N", ("Н", "N")), ("_J", ("Дж", "J")), ("_s", ("с", "s")))
+#: Unit suffixes of the CSV names → the SI unit (international spelling, spelled in the
+#: report's language by :meth:`crankbase.texts.Texts.unit`); longest first.
+_SUFFIX = (("_rad_s2", "rad/s²"), ("_rad_s", "rad/s"), ("_m_s2", "m/s²"),
+           ("_kgm2", "kg·m²"), ("_deg", "deg"), ("_rad", "rad"), ("_Nm", "N·m"), ("_N", "N"),
+           ("_J", "J"), ("_s", "s"))
 
 
 def column_label(column: str, lang="en", symbols=None) -> str:
     """The header of a table column in the report language: ``omega_rad_s`` →
     ``ω, рад/с`` (ru) or ``ω [rad/s]`` (en); a ``_const`` column is the same quantity at
     ω = const.  ``symbols`` overrides :data:`_SYMBOL` entries."""
-    i = 0 if lang == "ru" else 1
+    from crankbase.texts import texts
+
+    t = texts(lang)
     const = column.endswith("_const")
     base = column[:-len("_const")] if const else column
     unit = None
-    for suffix, names in _SUFFIX:
+    for suffix, si in _SUFFIX:
         if base.endswith(suffix):
-            base, unit = base[:-len(suffix)], names[i]
+            base, unit = base[:-len(suffix)], t.unit(si)
             break
     table = {**_SYMBOL, **(symbols or {})}
-    sym = table[base][i] if base in table else base
-    text = sym if unit is None else (f"{sym}, {unit}" if i == 0 else f"{sym} [{unit}]")
+    if base in _WORDED:
+        of, key = _WORDED[base]
+        sym = t(key, symbol=t.symbol(*table[of]))
+    else:
+        sym = t.symbol(*table[base]) if base in table else base
+    text = sym if unit is None else t("common.format.quantity_unit", symbol=sym, unit=unit)
     return text + (" (ω = const)" if const else "")
 
 

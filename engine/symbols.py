@@ -88,29 +88,36 @@ MEANING_RU = {
 }
 
 
-#: ``[masses]`` keys of an engine spec → (symbol key of :data:`SYMBOLS`, unit ru, unit en);
-#: ``rod_small_end_fraction`` is the share mш.п/mш of the rod mass at the piston pin.
+#: ``[masses]`` keys of an engine spec → (symbol key of :data:`SYMBOLS`, SI unit in its
+#: international spelling, spelled in the report's language by
+#: :meth:`crankbase.texts.Texts.unit`); ``rod_small_end_fraction`` is the share mш.п/mш of
+#: the rod mass at the piston pin.
 MASS_INPUTS = {
-    "reciprocating_kg": ("mj", "кг", "kg"), "rod_rotating_kg": ("m_rod_rot", "кг", "kg"),
-    "piston_group_kg": ("m_piston", "кг", "kg"), "rod_kg": ("m_rod", "кг", "kg"),
-    "piston_group_kg_m2": ("m_piston_area", "кг/м²", "kg/m²"),
-    "rod_kg_m2": ("m_rod_area", "кг/м²", "kg/m²"),
-    "rod_small_end_fraction": (("m_rod_rec", "m_rod"), "", ""),
-    "crank_rotating_kg": ("m_crank", "кг", "kg"),
+    "reciprocating_kg": ("mj", "kg"), "rod_rotating_kg": ("m_rod_rot", "kg"),
+    "piston_group_kg": ("m_piston", "kg"), "rod_kg": ("m_rod", "kg"),
+    "piston_group_kg_m2": ("m_piston_area", "kg/m²"),
+    "rod_kg_m2": ("m_rod_area", "kg/m²"),
+    "rod_small_end_fraction": (("m_rod_rec", "m_rod"), ""),
+    "crank_rotating_kg": ("m_crank", "kg"),
 }
 
 
 def symbol_set(lang: str) -> str:
-    """Which symbols a report in ``lang`` uses: "ru" (the Russian textbook's) for Russian,
-    "en" (Latin and Greek, no Cyrillic) for every other language (English, Chinese: the
-    Chinese textbooks use the same Latin symbols)."""
-    return "ru" if lang == "ru" else "en"
+    """Which symbols a report in ``lang`` uses, as its catalogue says
+    (``common.format.symbols``): "ru" (the Russian textbook's) for Russian, "en" (Latin and
+    Greek, no Cyrillic) for English and Chinese (the Chinese textbooks use the same Latin
+    symbols).  ``"ru"`` and ``"en"`` themselves name the two sets (as
+    :func:`sym` accepts them)."""
+    from crankbase.texts import SYMBOL_SETS, texts
+
+    return lang if lang in SYMBOL_SETS else texts(lang).symbols
 
 
 def sym(key: str, lang: str) -> str:
-    """The symbol ``key`` in ``lang`` ("ru" or "en")."""
+    """The symbol ``key`` in the symbol set of ``lang`` (a language, or a set: "ru" or
+    "en", :func:`symbol_set`)."""
     ru, en, _ = SYMBOLS[key]
-    return ru if lang == "ru" else en
+    return {"ru": ru, "en": en}[symbol_set(lang)]
 
 
 def math_symbol(key: str) -> str:
@@ -155,11 +162,13 @@ def to_english(text: str) -> str:
 def mass_inputs(mass_source, lang="ru") -> str:
     """The masses of a spec as given (``{[masses] key: value}``), in textbook symbols with
     units: "mп = 0.5 кг; mш = 0.7 кг" (ru), "mp = 0.5 kg; mr = 0.7 kg" (en)."""
+    from crankbase.texts import texts
+
     out = []
     for key, value in mass_source.items():
-        what, u_ru, u_en = MASS_INPUTS[key]
+        what, si = MASS_INPUTS[key]
         name = ("/".join(sym(k, lang) for k in what) if isinstance(what, tuple)
                 else sym(what, lang))
-        unit = u_ru if lang == "ru" else u_en
+        unit = texts(lang).unit(si) if si else ""
         out.append(f"{name} = {value:g}" + (f" {unit}" if unit else ""))
     return "; ".join(out)

@@ -43,7 +43,7 @@ import re
 import numpy as np
 
 from crankbase.errors import Text
-from crankbase.texts import OFFERED
+from crankbase.texts import OFFERED, REFERENCE
 from crankbase.tolerances import SAME_ANGLE_DEG
 
 from .course import course_of
@@ -57,10 +57,6 @@ LANGS = OFFERED              # every offered language (crankbase.texts.languages
 
 _UNITS = {"m": "m", "m_s": "m/s", "m_s2": "m/s²", "deg": "°", "rad_s": "rad/s",
           "rad_s2": "rad/s²", "N": "N", "Nm": "N·m"}
-#: SI unit (English spelling) → its Russian spelling.
-_UNIT_RU = {"m": "м", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с", "rad/s²": "рад/с²",
-            "N": "Н", "N·m": "Н·м", "kg": "кг", "kg·m²": "кг·м²", "°": "°", "": "",
-            "%": "%", "mm": "мм"}
 _SIMPLE = {
     "position": ("No.", ""), "phi_deg": ("φ", "°"), "theta3_deg": ("θ3", "°"),
     "theta4_deg": ("θ4", "°"), "omega3_rad_s": ("ω3", "rad/s"), "omega4_rad_s": ("ω4", "rad/s"),
@@ -73,14 +69,17 @@ _SIMPLE = {
 }
 #: The Russian textbook's symbols where they differ from the English ones (module doc).
 _SIMPLE_RU = {"position": "№", "M_drive_Nm": "Mур", "M_res_Nm": "Mпс", "F_res_N": "Fпс"}
-#: Index letter of the inertia force and moment (Fи3, Mи3 / Fi3, Mi3).
-_INERTIA = {"ru": "и", "en": "i"}
+#: Index letter of the inertia force and moment in the Russian textbook's symbols (Fи3, Mи3;
+#: Fi3, Mi3 in the Latin ones).
+_INERTIA_RU = "и"
 
 
 def unit_text(unit: str, lang: str = "en") -> str:
     """An SI unit as written in the report's language (``"N·m"`` → ``"Н·м"`` in ru)."""
+    from crankbase.texts import texts
+
     _check_lang(lang)
-    return _UNIT_RU.get(unit, unit) if lang == "ru" else unit
+    return texts(lang).unit(unit)
 
 
 def column_label(col: str, lang: str = "en"):
@@ -88,14 +87,20 @@ def column_label(col: str, lang: str = "en"):
     ``"B_vx_m_s"`` → ("VBx", "m/s") in en, ("VBx", "м/с") in ru; ``"M_drive_Nm"`` →
     ("Mb", "N·m") in en, ("Mур", "Н·м") in ru (the symbol table: module docstring).
     An unknown column is its own symbol, without a unit."""
+    from crankbase.texts import texts
+
     _check_lang(lang)
     sym, unit = _column_label_en(col)
-    if lang == "ru":
-        sym = _SIMPLE_RU.get(col, sym)
-        m = re.fullmatch(r"(F|M)i(\d.*)", sym)
-        if m and re.fullmatch(r"(Fu\d(_[xy])?_N|Mu\d_Nm)", col):
-            sym = f"{m.group(1)}{_INERTIA['ru']}{m.group(2)}"
-    return sym, unit_text(unit, lang)
+    return texts(lang).symbol(_symbol_ru(col, sym), sym), unit_text(unit, lang)
+
+
+def _symbol_ru(col, sym):
+    """The Russian textbook's symbol of a column whose Latin symbol is ``sym``."""
+    sym = _SIMPLE_RU.get(col, sym)
+    m = re.fullmatch(r"(F|M)i(\d.*)", sym)
+    if m and re.fullmatch(r"(Fu\d(_[xy])?_N|Mu\d_Nm)", col):
+        sym = f"{m.group(1)}{_INERTIA_RU}{m.group(2)}"
+    return sym
 
 
 def _column_label_en(col):
@@ -286,7 +291,7 @@ def warning_text(message, lang: str = "ru") -> str:
     from crankbase.texts import texts
 
     message = str(message)
-    if lang == "en":
+    if lang == REFERENCE:                 # the analysis writes its warnings in English
         return message
     _check_lang(lang)
     for pattern, key in _WARNINGS:
@@ -361,7 +366,7 @@ def _key_meaning(key, value, lang):
     of = t(f"linkage.link_of.{link}") if link in _LINKS_OF else (link or "")
     out = t(f"linkage.key.{last}", link=of, point=point or "", n=LINK_NUMBER.get(link, ""))
     out = re.sub(r"\s+", " ", out).strip()
-    if lang != "en" and isinstance(value, str) and value in _VALUES:
+    if lang != REFERENCE and isinstance(value, str) and value in _VALUES:
         out = t("linkage.value.explained", meaning=out,
                 value=t(f"linkage.value.{value.replace('-', '_')}"))
     return out

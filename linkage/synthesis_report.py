@@ -125,19 +125,12 @@ _MU_METHOD = re.compile(r"^given l2 and mu_min >= (\S+) deg"
                         r"(?:, l1 rounded down to a multiple of (\S+))?$")
 
 
-def _lang(lang) -> int:
-    """0 for ru, 1 for en (the index into the (ru, en) word pairs)."""
-    from crankbase.texts import OFFERED
+def _texts(lang):
+    """The :class:`crankbase.texts.Texts` of an offered ``lang`` (else a ValueError)."""
+    from crankbase.texts import OFFERED, texts
 
     if lang not in OFFERED:
         raise ValueError(f"lang: got {lang!r}; one of {', '.join(OFFERED)}")
-    return 0 if lang == "ru" else 1
-
-
-def _texts(lang):
-    from crankbase.texts import texts
-
-    _lang(lang)
     return texts(lang)
 
 
@@ -239,8 +232,8 @@ def header_language(lang) -> str:
     """The language of the workbook's first header row and first column: the course
     seed's Russian in a Russian or an English workbook (the seed's bilingual layout), the
     report's own in any other (Chinese); the second row and column are the CSV column
-    names, in every language."""
-    return lang if lang not in ("ru", "en") else "ru"
+    names, in every language.  The catalogue says which (``synth.book.header_language``)."""
+    return _texts(lang)("synth.book.header_language")
 
 
 #: Values of the mechanism sheet that are words, and their translation.

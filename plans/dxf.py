@@ -21,14 +21,28 @@ TEXT      every text (style GOST: ISOCPEUR font,       25
 
 Each vector's LINE carries its name ``<position>:<plan>:<segment>`` as XDATA of the
 application ``CRANKDYN``, so a CAD user (and the tests) can match it with ``plans.csv``.
+
+A sheet of the same inputs is the same bytes, in every run and under every
+``PYTHONHASHSEED`` (:func:`dxf_bytes`): ezdxf would stamp the time of each save and fresh
+random GUIDs, and list the CLASSES of the entity types in use in the order of a ``set``.
+Here the dates (``$TDCREATE``, ``$TDUCREATE``, ``$TDUPDATE``, ``$TDUUPDATE`` and ezdxf's own
+created/written marks) are ezdxf's fixed date, 2000-01-01 (its documented option
+``write_fixed_meta_data_for_testing``, set only while a sheet is written), the classes are
+sorted by name, and ``$FINGERPRINTGUID`` / ``$VERSIONGUID`` are name-based UUIDs (RFC 4122
+version 5) of the drawing's content: equal for equal drawings, different for different
+ones.
 """
 from __future__ import annotations
 
+import hashlib
+import io
 import re
+import threading
+import uuid
 
 from .layout import Arrow, Circle, Line, Text, arrow_parts
 
-__all__ = ["sheet_dxf", "write_dxf", "LAYERS", "APPID"]
+__all__ = ["sheet_dxf", "write_dxf", "dxf_bytes", "LAYERS", "APPID", "FIXED_DATE"]
 
 APPID = "CRANKDYN"
 LAYERS = {"FRAME": 70, "MAIN": 70, "VECTORS": 70, "LEVER": 70, "THIN": 30, "DASHED": 30,
@@ -106,6 +120,50 @@ def _align(name):
     return getattr(TextEntityAlignment, name)
 
 
+#: The creation and update date of every sheet written (ezdxf's fixed date; ISO 8601).
+FIXED_DATE = "2000-01-01T00:00:00+00:00"
+
+#: ezdxf's fixed metadata (its option ``write_fixed_meta_data_for_testing``) is a global
+#: of the process: one writer at a time sets and restores it.
+_FIXED_META = threading.Lock()
+
+#: Namespace of the name-based GUIDs of the drawings (uuid5 of the URL of the project).
+_GUID_NAMESPACE = uuid.uuid5(uuid.NAMESPACE_URL, "https://crankdyn/plans/dxf")
+
+
+def dxf_bytes(sheet) -> bytes:
+    """The DXF file of a sheet (:func:`sheet_dxf`) as bytes, the same for the same sheet in
+    every run and hash seed (module docstring)."""
+    import ezdxf
+    from ezdxf.document import CONST_GUID, CONST_MARKER_STRING, CREATED_BY_EZDXF
+
+    doc = sheet_dxf(sheet)
+    doc.ezdxf_metadata()[CREATED_BY_EZDXF] = f"{ezdxf.__version__} @ {FIXED_DATE}"
+    doc.commit_pending_changes()
+    doc.classes.add_required_classes(doc.dxfversion)     # in the order of a set: sort them
+    doc.classes.classes = dict(sorted(doc.classes.classes.items()))
+    stream = io.StringIO()
+    with _FIXED_META:
+        before = ezdxf.options.write_fixed_meta_data_for_testing
+        ezdxf.options.write_fixed_meta_data_for_testing = True
+        try:
+            doc.write(stream)
+        finally:
+            ezdxf.options.write_fixed_meta_data_for_testing = before
+    text = stream.getvalue().replace(CONST_MARKER_STRING,
+                                     f"{ezdxf.__version__} @ {FIXED_DATE}")
+    digest = hashlib.sha256(text.encode("utf-8")).hexdigest()
+    for var in ("$FINGERPRINTGUID", "$VERSIONGUID"):
+        tag = f"{var}\n  2\n{CONST_GUID}\n"
+        if text.count(tag) != 1:
+            raise RuntimeError(f"ezdxf wrote {var} not as expected: {text.count(tag)} times")
+        guid = uuid.uuid5(_GUID_NAMESPACE, f"{var}:{digest}")
+        text = text.replace(tag, f"{var}\n  2\n{{{str(guid).upper()}}}\n")
+    return doc.encode(text)
+
+
 def write_dxf(sheet, path):
-    """Write :func:`sheet_dxf` to ``path`` (the caller makes it atomic)."""
-    sheet_dxf(sheet).saveas(path)
+    """Write :func:`dxf_bytes` of ``sheet`` to ``path`` (the caller makes it atomic)."""
+    from pathlib import Path
+
+    Path(path).write_bytes(dxf_bytes(sheet))

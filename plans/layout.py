@@ -334,10 +334,18 @@ def plan_words(lang):
 
 
 def fmt(x, lang, digits=4):
-    """A number for the drawing: up to ``digits`` significant digits, a decimal comma in
-    Russian."""
-    s = f"{x:.{digits}g}"
-    return s.replace(".", ",") if lang == "ru" else s
+    """A number for the drawing: up to ``digits`` significant digits, with the decimal
+    sign of ``lang``'s catalogue (a comma in Russian: :meth:`crankbase.texts.Texts.number`)."""
+    from crankbase.texts import texts
+
+    return texts(lang).number(f"{x:.{digits}g}")
+
+
+def _symbols(lang):
+    """The :class:`crankbase.texts.Texts` of ``lang``: its symbol set and decimal sign."""
+    from crankbase.texts import texts
+
+    return texts(lang)
 
 
 def _where(pp, lang):
@@ -392,7 +400,7 @@ def diagram_block(pp, kind, lang="ru") -> Block:
     if kind in ("velocity", "acceleration"):
         items.append(Circle(0j, 0.6, "VECTORS", True))
         for name, z in plan.points.items():
-            lab = plan.point_labels[name][0 if lang == "ru" else 1]
+            lab = _symbols(lang).symbol(*plan.point_labels[name])
             t = placer.place(_point_candidates(z), lab, H_POINT)
             items.append(t)
     for v in plan.vectors:
@@ -450,7 +458,7 @@ def lever_block(pp, lang="ru") -> Block:
     placer = _Placer(segs)
     vplan = pp.plans["velocity"]
     for name, z in L.points.items():
-        lab = vplan.point_labels[name][0 if lang == "ru" else 1]
+        lab = _symbols(lang).symbol(*vplan.point_labels[name])
         items.append(placer.place(_point_candidates(z), lab, H_POINT))
     for v in arrows:
         p1, p2 = v.start, v.end
@@ -467,7 +475,7 @@ def lever_block(pp, lang="ru") -> Block:
                                F=fmt(L.balancing_force_N, lang, 6)),
            w["kinetostatic_M"].format(M=fmt(L.M_kinetostatic_Nm, lang, 6),
                                       F=fmt(L.F_kinetostatic_N, lang, 6)),
-           w["difference"].format(d=d.replace(".", ",") if lang == "ru" else d)]
+           w["difference"].format(d=_symbols(lang).number(d))]
     y = y0 - 3.0
     for line in res:
         items.append(Text(complex(x0, y), line, H_LABEL, "TEXT", "left", "top"))

@@ -159,7 +159,10 @@ class Vector:
         return abs(self.end - self.start)
 
     def label(self, lang="ru") -> str:
-        return self.label_ru if lang == "ru" else self.label_en
+        """Its label in the symbol set of ``lang`` (:attr:`crankbase.texts.Texts.symbols`)."""
+        from crankbase.texts import texts
+
+        return texts(lang).symbol(self.label_ru, self.label_en)
 
 
 @dataclass

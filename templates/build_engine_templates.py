@@ -174,8 +174,8 @@ def _symbol_table(ws, r, lang, bold, body):
     from openpyxl.worksheet.pagebreak import Break
 
     ws.row_breaks.append(Break(id=r - 1))      # the table starts a page, with its title
-    ru = lang == "ru"
     t, _ = _words(lang)
+    ru = t.symbol(True, False)       # the Russian textbook's symbols: a column of each set
     title = t("sheet.engine.symbols_title")
     c = ws.cell(r, 2, title)
     c.font = bold
@@ -354,7 +354,7 @@ def build(lang: str, path: Path) -> None:
     ws_ch.merge_cells("A1:J1")
     _fit_width(ws_ch, "portrait")
 
-    if lang != "ru":                  # every other language: the Latin symbols
+    if not t.symbol(True, False):     # a language of the Latin symbols (its catalogue says)
         for ws in wb.worksheets:
             for row in ws.iter_rows():
                 for c in row:

@@ -93,7 +93,8 @@ def test_cli_catches_only_the_project_errors(monkeypatch, capsys):
     monkeypatch.setattr(cmd, "run", bad)
     assert cli.main(["engine", "--example", "-o", "unused"]) == 2
     err = capsys.readouterr().err.splitlines()
-    assert err == ["crankdyn engine: error: a: first", "crankdyn engine: error: b: second"]
+    assert err == ["crankdyn engine: ошибка: a: first",         # a Russian run, the default
+                   "crankdyn engine: ошибка: b: second"]
     assert issubclass(CrankdynError, ValueError)
 
 

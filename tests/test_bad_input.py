@@ -142,7 +142,7 @@ def test_bad_items_listed_with_a_cap():
 def test_cli_steps_refused_before_work(tmp_path, capsys):
     assert main(["engine", "--example", "--step", "1e-6", "-o", str(tmp_path / "o")]) == 2
     assert capsys.readouterr().err.strip() == (     # the default: a Russian run
-        "crankdyn engine: error: --step: дало бы строк: 720,000,002; допускается не более "
+        "crankdyn engine: ошибка: --step: дало бы строк: 720,000,002; допускается не более "
         "100,000")
     assert main(["engine", "--example", "--step", "1e-6", "-o", str(tmp_path / "o"),
                  "--lang", "en"]) == 2
@@ -379,7 +379,7 @@ def test_issue_reproductions_through_the_cli(case, tmp_path, capsys):
     spec.write_text(text, encoding="utf-8")
     assert main(["engine", str(spec), "-o", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and err[0].startswith(f"crankdyn engine: error: {key}: "), err
+    assert len(err) == 1 and err[0].startswith(f"crankdyn engine: ошибка: {key}: "), err
     assert not (tmp_path / "o").exists()
 
 

@@ -197,9 +197,10 @@ def test_serve_speaks_its_lang_when_the_web_extra_is_missing(lang, words, monkey
     monkeypatch.setitem(sys.modules, "uvicorn", None)        # import uvicorn → ImportError
     assert main(["serve", "--lang", lang]) == 2
     err = capsys.readouterr().err.strip()
-    assert err.startswith("crankdyn serve: error: ") and words in err, err
+    error = {"ru": ": ошибка: ", "en": ": error: ", "zh": "：错误："}[lang]
+    assert err.startswith("crankdyn serve" + error) and words in err, err
     assert "uvicorn" in err and 'pip install "crankdyn[web]"' in err
     if lang == "ru":
-        assert not _latin_words(err.split(": error: ", 1)[1], "serve"), err
+        assert not _latin_words(err.split(error, 1)[1], "serve"), err
     else:
         assert not CYRILLIC.search(err)

@@ -292,6 +292,15 @@ def test_column_labels():
     assert column_label("M_Nm", "ru") == "Mкр, Н·м"
     assert column_label("t_s", "en") == "t [s]"
     assert column_label("R12_x_N", "ru") == "R12_x, Н"
+    # the notation from the catalogue (common.unit.*, common.format.*): the degree a sign
+    # in Russian, a word in English; Chinese writes the Latin symbols and SI spellings
+    assert column_label("phi_deg", "ru") == "φ, °" and column_label("phi_deg", "en") == "φ [deg]"
+    assert column_label("W_J", "ru") == "ΔT = ∫(Mд − Mс)dφ, Дж"
+    assert column_label("J_red_kgm2", "zh") == "J_red [kg·m²]"
+    # the parts of the resisting moment: a symbol in words of the language
+    assert column_label("M_resist_loads_Nm", "ru") == "Mс от нагрузок, Н·м"
+    assert column_label("M_resist_weights_Nm", "en") == "M_c of the weights [N·m]"
+    assert column_label("M_resist_loads_Nm", "zh") == "M_c（载荷） [N·m]"
 
 
 @pytest.mark.slow

@@ -435,7 +435,7 @@ def test_bad_input_exit_2_nothing_written(case, tmp_path, capsys):
     assert "Traceback" not in err
     assert len(lines) == len(keys)
     for line, key in zip(sorted(lines), sorted(keys)):
-        assert line.startswith("crankdyn engine: error: ")
+        assert line.startswith("crankdyn engine: ошибка: ")          # a Russian run
         assert key in line
     assert not out.exists()
 
@@ -460,7 +460,7 @@ def test_bad_input_in_russian_by_default(tmp_path, capsys):
     spec.write_text(GOOD.replace("rod_ratio = 0.27", "rod_ratio = 1.5"))
     assert run_cli(spec, "-o", tmp_path / "out") == 2
     assert capsys.readouterr().err.strip().splitlines() == [
-        "crankdyn engine: error: engine.rod_ratio: получено 1.5; должно быть > 0 и < 1"]
+        "crankdyn engine: ошибка: engine.rod_ratio: получено 1.5; должно быть > 0 и < 1"]
     assert not (tmp_path / "out").exists()
 
 
@@ -475,7 +475,7 @@ def test_bad_arguments(argv, tmp_path, capsys):
     argv = [str(tmp_path / "x.toml") if a == "SPEC" else a for a in argv]
     assert run_cli(*argv, "-o", tmp_path / "out") == 2
     err = capsys.readouterr().err
-    assert err.startswith("crankdyn engine: error: ") and len(err.strip().splitlines()) == 1
+    assert err.startswith("crankdyn engine: ошибка: ") and len(err.strip().splitlines()) == 1
     assert not (tmp_path / "out").exists()
 
 

@@ -246,7 +246,7 @@ def test_the_command_line_names_its_options_where_the_library_names_arguments(tm
         "crankdyn engine: error: --step: got 0.0; must be a number > 0 and <= 720"]
     assert main(["engine", "--example", "-o", str(tmp_path / "o"), "--step", "0"]) == 2
     assert capsys.readouterr().err.splitlines() == [     # the report's language, ru
-        "crankdyn engine: error: --step: получено 0.0; должно быть числом > 0 и <= 720"]
+        "crankdyn engine: ошибка: --step: получено 0.0; должно быть числом > 0 и <= 720"]
     with pytest.raises(SpecError, match="^step: got 0.0"):
         engine.run_study(example_path("petrol_vaz2106.toml"), step=0.0)
     assert not (tmp_path / "o").exists()

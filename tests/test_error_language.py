@@ -204,7 +204,11 @@ CASES += [(f"{cmd}-{what}", build) for cmd in ("engine", "dynamics", "balance", 
               ("spec-and-example", lambda t, cmd=cmd: [cmd, a_file(t), "--example"]),
               ("o-file", lambda t, cmd=cmd: [cmd, "--example", "-o", a_file(t)]))]
 
-_PREFIX = re.compile(r"^crankdyn \w+: error: ")
+#: The start of a problem's line on stderr in each language (``cli.error``, argparse's
+#: "error:" too): the word in the run's language (issue #19 item 4).
+PREFIXES = {"en": r"crankdyn \w+: error: ", "ru": r"crankdyn \w+: ошибка: ",
+            "zh": r"crankdyn \w+：错误："}
+_PREFIX = re.compile("^(?:" + "|".join(PREFIXES.values()) + ")")
 
 #: Latin words a Russian message may keep, each a name rather than an English word:
 #: the program's name, the placeholders of its usage line (SPEC.toml, --example [NAME],
@@ -294,7 +298,7 @@ def test_errors_in_the_run_language(case, build, tmp_path, capsys, monkeypatch):
             rest = [*rest, "-o", str(folder / "o")]
         rc, err = _run([cmd, "--lang", lang, *rest], capsys)
         assert rc == 2, (lang, err)
-        assert err and all(_PREFIX.match(ln) for ln in err), (lang, err)
+        assert err and all(re.match(PREFIXES[lang], ln) for ln in err), (lang, err)
         lines[lang] = err
         for extra in ("o",):
             if (folder / extra).exists():
@@ -451,7 +455,8 @@ def test_argparse_complaints_in_the_run_language(argv, names, tmp_path, capsys):
         usage = tuple(texts(code)("cli.argparse.usage").strip() for code in ("en", "ru", "zh"))
         err = [ln for ln in capsys.readouterr().err.splitlines()
                if not ln.startswith((*usage, " "))]
-        assert len(err) == 1 and _PREFIX.match(err[0]) and names in err[0], err
+        assert len(err) == 1 and re.match(PREFIXES[lang or "ru"], err[0]) \
+            and names in err[0], err
         lines[lang] = err[0]
     assert not (tmp_path / "o").exists()
     assert lines[None] == lines["ru"]

@@ -187,7 +187,7 @@ def _run_cli(tmp_path, capsys, args, out):
     if rc == 2:
         assert not out.exists(), "exit 2 but an output folder was written"
         lines = [l for l in captured.err.splitlines() if l.strip()]
-        assert lines and all(l.startswith(f"crankdyn {args[0]}: error: ") for l in lines), \
+        assert lines and all(l.startswith(f"crankdyn {args[0]}: ошибка: ") for l in lines), \
             captured.err
     return rc
 

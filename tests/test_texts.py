@@ -198,3 +198,124 @@ def test_chinese_has_one_plural_form_and_no_cyrillic():
             if s == e and len(re.findall(r"\b[a-z]{3,}\b", re.sub(r"\{[^}]*\}", "", e))) >= 3:
                 raise AssertionError(f"zh: {key}: left in English: {s!r}")
     assert words > 1500
+
+
+# ---- the notation is the catalogue's (issue #19 item 4): no code compares a language ----
+
+_LANG_NAME = re.compile(r"(^|_)lang(uage)?s?$", re.I)
+
+
+def _is_language(node):
+    """``lang``, ``report_lang``, ``args.lang``, ``self.language``, ``langs[0]``."""
+    if isinstance(node, ast.Subscript):
+        return _is_language(node.value)
+    name = node.id if isinstance(node, ast.Name) else getattr(node, "attr", None)
+    return bool(name and _LANG_NAME.search(name))
+
+
+def _literals(node):
+    """The strings of a str literal or of a tuple/list/set of them, else None."""
+    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+        return {node.value}
+    if isinstance(node, (ast.Tuple, ast.List, ast.Set)) and node.elts and all(
+            isinstance(e, ast.Constant) and isinstance(e.value, str) for e in node.elts):
+        return {e.value for e in node.elts}
+    return None
+
+
+def language_comparisons(source: str, codes=frozenset(T.catalogue_languages())):
+    """``(line, text)`` of every comparison in ``source`` of a language with a literal:
+    a language-named value (``lang``, ``args.lang``) against any string literal, or any
+    value against a literal that is a catalogue's language code (``"ru"``, ``("ru",
+    "en")``)."""
+    out = []
+    for node in ast.walk(ast.parse(source)):
+        if not isinstance(node, ast.Compare):
+            continue
+        operands = [node.left, *node.comparators]
+        lits = [_literals(o) for o in operands]
+        if any(s and s & codes for s in lits) or (
+                any(_is_language(o) for o in operands) and any(s is not None for s in lits)):
+            out.append((node.lineno, ast.unparse(node)))
+    return out
+
+
+def test_no_module_but_the_text_layer_compares_a_language_code():
+    """Which symbols a language writes, how it spells a unit and its decimal sign are its
+    catalogue's (``common.format.*``, ``common.unit.*``, asked through Texts): a third
+    language is a catalogue to fill, not code to change."""
+    found = []
+    for pkg in (*LIBRARIES, "torsion", "templates"):
+        for path in sorted((ROOT / pkg).rglob("*.py")):
+            if path == ROOT / "crankbase" / "texts.py":
+                continue
+            found += [f"{path.relative_to(ROOT)}:{line}: {text}"
+                      for line, text in language_comparisons(path.read_text(encoding="utf-8"))]
+    assert not found, found
+
+
+@pytest.mark.parametrize("source, hits", [
+    ('x = a if lang == "ru" else b', 1), ('if lang != "ru":\n    pass', 1),
+    ('ok = args.lang in ("ru", "en")', 1), ('ok = code == "zh"', 1),
+    ('ok = report_language == "de"', 1), ('ok = "en" != self.lang', 1),
+    ('ok = lang in OFFERED', 0), ('ok = t.symbols == "latin"', 0), ('ok = kind == "ru2"', 0),
+])
+def test_the_language_comparison_scan_finds_each_form(source, hits):
+    assert len(language_comparisons(source)) == hits
+
+
+def test_each_catalogue_names_its_notation():
+    """The symbol set, decimal sign and unit spellings come from the catalogue: Russian
+    writes the textbook's symbols, a decimal comma (GOST 2.304 lettering on the plans
+    sheet; Babel's CLDR number symbols for ru say the same) and Cyrillic units."""
+    from babel import Locale
+
+    for lang in T.catalogue_languages():
+        t = T.texts(lang)
+        assert t.symbols in T.SYMBOL_SETS
+        assert t.decimal_sign == Locale.parse(lang).number_symbols["latn"]["decimal"], lang
+        for si in T.UNITS:
+            assert t.unit(si), (lang, si)
+    ru, en, zh = T.texts("ru"), T.texts("en"), T.texts("zh")
+    assert (ru.symbols, en.symbols, zh.symbols) == ("ru", "en", "en")
+    assert ru.symbol("Mкр", "M") == "Mкр" and zh.symbol("Mкр", "M") == "M"
+    assert (ru.unit("N·m"), en.unit("N·m"), zh.unit("N·m")) == ("Н·м", "N·m", "N·m")
+    assert ru.unit("m/s²") == "м/с²" and ru.unit("kg/m²") == "кг/м²"
+    assert ru.unit("°") == en.unit("°") == "°"          # a sign no catalogue spells
+    assert (ru.number("0.25"), en.number("0.25"), zh.number("-1.5e-03")) == (
+        "0,25", "0.25", "-1.5e-03")
+
+
+def test_a_third_language_writes_the_notation_its_catalogue_names(tmp_path, monkeypatch):
+    """A new language whose catalogue names the Russian textbook's symbols, a decimal comma
+    and Cyrillic units gets them in the engine's symbols, the plans' numbers and the
+    dynamics' headers, with no code changed (its words fall back to English)."""
+    from dynamics.report import column_label
+    from engine.symbols import mass_inputs, sym
+    from plans.layout import fmt
+
+    for lang in ("en", "ru"):
+        (tmp_path / lang).mkdir()
+        for p in (T.LOCALE_DIR / lang).glob("*.po"):
+            (tmp_path / lang / p.name).write_bytes(p.read_bytes())
+    (tmp_path / "xx").mkdir()
+    entries = {"common.format.symbols": "ru", "common.format.decimal_sign": ",",
+               "common.format.quantity_unit": "{symbol} / {unit}", "common.unit.N_m": "Нм",
+               "common.unit.kg": "кг"}
+    (tmp_path / "xx" / "common.po").write_text(
+        'msgid ""\nmsgstr ""\n"Language: xx\\n"\n"Plural-Forms: nplurals=1; plural=0;\\n"\n'
+        + "".join(f'\nmsgid "{k}"\nmsgstr "{v}"\n' for k, v in entries.items()),
+        encoding="utf-8")
+    monkeypatch.setattr(T, "LOCALE_DIR", tmp_path)
+    for f in (T._catalogue, T.texts, T.languages):
+        f.cache_clear()
+    try:
+        assert sym("M", "xx") == sym("M", "ru") == "Mкр"
+        assert fmt(0.125, "xx") == "0,125" and fmt(0.125, "en") == "0.125"
+        assert column_label("M_Nm", "xx") == "Mкр / Нм"
+        assert column_label("t_s", "xx") == "t / s"                   # English fallback
+        assert mass_inputs({"rod_kg": 0.7}, "xx") == "mш = 0.7 кг"
+    finally:
+        monkeypatch.undo()
+        for f in (T._catalogue, T.texts, T.languages):
+            f.cache_clear()

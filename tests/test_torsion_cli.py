@@ -51,8 +51,9 @@ def test_bad_spec_one_line_per_problem_exit_2_nothing_written(tmp_path, capsys, 
     assert main(["torsion", str(_bad_spec(tmp_path)), "-o", str(out), "--lang", lang]) == 2
     err = capsys.readouterr().err.splitlines()
     assert len(err) == 2, err
-    assert err[0].startswith("crankdyn torsion: error: torsion.speed_range_rpm")
-    assert err[1].startswith("crankdyn torsion: error: torsion.orders_max")
+    error = {"en": "error", "ru": "ошибка"}[lang]
+    assert err[0].startswith(f"crankdyn torsion: {error}: torsion.speed_range_rpm")
+    assert err[1].startswith(f"crankdyn torsion: {error}: torsion.orders_max")
     assert not out.exists()
     for line in err:
         assert not (cyrillic(line) if lang == "en" else english_words(line)), line
@@ -65,7 +66,7 @@ def test_engine_torsion_option_needs_the_table(tmp_path, capsys):
     assert main(["engine", "--example", "petrol", "--torsion", "-o", str(out),
                  "--lang", "ru"]) == 2
     err = capsys.readouterr().err.splitlines()
-    assert len(err) == 1 and err[0].startswith("crankdyn engine: error: torsion: ")
+    assert len(err) == 1 and err[0].startswith("crankdyn engine: ошибка: torsion: ")
     assert "[torsion]" in err[0] and not out.exists()
 
 

@@ -343,7 +343,9 @@ def _diagram_points(ax, result, x_of, lang):
     each other and of the markers."""
     from .diagram_points import characteristic_points
     from crankbase.plot_labels import Obstacles, place_label, renderer_of
+    from crankbase.texts import texts
 
+    t = texts(lang)
     spec, c = result.spec, result.curves
     a = c["alpha_deg"].to_numpy()
     p = c["p_gas_MPa"].to_numpy()
@@ -371,7 +373,7 @@ def _diagram_points(ax, result, x_of, lang):
         obs.add_marker(ax.transData.transform((x, y)), 4.5 * ax.figure.dpi / 72 + 1)
     for pt, (x, y, _) in zip(pts, xy):
         place_label(ax, obs, ax.transData.transform((x, y)),
-                    pt.name_ru if lang == "ru" else pt.name_en, normal=(0.6, 1.0),
+                    t.symbol(pt.name_ru, pt.name_en), normal=(0.6, 1.0),
                     fontsize=9, gid="diagram-label", color="0.1")
 
 

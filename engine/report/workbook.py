@@ -613,6 +613,7 @@ def add_engine_sheets(wb, tr, lang="ru"):
     from openpyxl.styles import Alignment, Font
 
     from crankbase.output import ensure_finite
+    from crankbase.texts import texts
 
     if lang not in LANGS:
         raise EngineSpecError(Problem("lang", Text("errors.engine.report.valid",
@@ -703,7 +704,7 @@ def add_engine_sheets(wb, tr, lang="ru"):
     ch = ScatterChart()
     ch.title = t["chart"]
     ch.x_axis.title = t["alpha"]
-    ch.y_axis.title = "N·m" if lang == "en" else "Н·м"
+    ch.y_axis.title = texts(lang).unit("N·m")
     ch.x_axis.scaling.min, ch.x_axis.scaling.max = 0, lay.cycle_deg
     ch.x_axis.majorUnit = 90 if lay.cycle_deg > 360 else 45
     ch.x_axis.tickLblPos = "low"
