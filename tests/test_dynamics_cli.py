@@ -7,6 +7,7 @@ import pytest
 from openpyxl import load_workbook
 
 from crankdyn.cli import main
+from crankdyn.langs import error_line
 from crankbase.resources import example_path
 
 COLS = ["phi_deg", "J_red_kgm2", "dJ_red_dphi_kgm2", "M_drive_Nm", "M_resist_Nm",
@@ -72,8 +73,9 @@ def test_bad_input(tmp_path, capsys, body, keys):
     err = capsys.readouterr().err.strip().splitlines()
     assert code == 2
     assert not out.exists()
+    prefix = error_line("dynamics", "")     # the default language's, Russian
     for k in keys:
-        assert any(f"error: {k}:" in line for line in err), (k, err)
+        assert any(line.startswith(f"{prefix}{k}:") for line in err), (k, err)
 
 
 def test_engine_example(cli_report):
@@ -108,4 +110,4 @@ def test_linkage_and_dynamics_problems_reported_together(tmp_path, capsys):
     assert main(["dynamics", str(bad), "-o", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err
     for key in ("mechanism.crank", "dynamics.delta", "dynamics.bogus"):
-        assert f"error: {key}" in err, (key, err)
+        assert error_line("dynamics", key) in err, (key, err)
