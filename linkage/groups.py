@@ -29,6 +29,7 @@ References
 from __future__ import annotations
 
 import math
+import operator
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -100,6 +101,12 @@ def _minus(a, b):
     return a if type(b) is float and b == 0.0 else a - b
 
 
+#: The Python operator of each ufunc written in place: what a routine computes when it
+#: cannot write in place (scalars: a float stays a Python float, as with ``t - u``).
+_OPERATOR = {np.add: operator.add, np.subtract: operator.sub, np.multiply: operator.mul,
+             np.divide: operator.truediv}
+
+
 def _into(op, t, u):
     """``op(t, u)`` written into ``t`` when ``t`` is a fresh float64 array of this routine
     (the result of a numpy operation, referenced nowhere else) and ``u`` a float or a
@@ -109,7 +116,7 @@ def _into(op, t, u):
     if type(t) is np.ndarray and t.dtype is _F8 and (
             type(u) is float or type(u) is np.ndarray and u.dtype is _F8 and u.shape == t.shape):
         return op(t, u, out=t)
-    return op(t, u)
+    return _OPERATOR[op](t, u)       # the operator itself (floats stay Python floats)
 
 
 def _rinto(op, u, t):
@@ -117,7 +124,7 @@ def _rinto(op, u, t):
     if type(t) is np.ndarray and t.dtype is _F8 and (
             type(u) is float or type(u) is np.ndarray and u.dtype is _F8 and u.shape == t.shape):
         return op(u, t, out=t)
-    return op(u, t)
+    return _OPERATOR[op](u, t)
 
 
 def _add_to(a, t):

@@ -171,3 +171,14 @@ def test_in_place_only_into_fresh_float64():
     assert g._into(np.multiply, short, np.arange(3.0)).shape == (3,)   # broadcasts: new
     assert g._add_to(t, 0.0) is t and g._add_first(0.0, t) is t       # a constant 0 skipped
     assert g._neg_to(2.0) == -2.0 and g._sqrt_to(4.0) == 2.0
+
+
+def test_scalars_stay_python_numbers():
+    # the plans compute the lever with Python complex numbers: a numpy scalar there would
+    # send later complex products and magnitudes through numpy's own loops (other bits)
+    for value in (g.cross(1.5 + 2j, 3 - 4j), g.dot(1.5 + 2j, 3 - 4j),
+                  g._into(np.subtract, 1.0, 2.0), g._rinto(np.divide, 1.0, 4.0)):
+        assert type(value) is float
+    assert g.cross(1.5 + 2j, 3 - 4j) == 1.5 * -4.0 - 2.0 * 3.0
+    w = g.Wrench(Vec(1.0, 2.0), 0.5, Vec(0.25, 0.0))
+    assert type(w.moment_about(Vec(0.0, 0.0))) is float
