@@ -55,6 +55,7 @@ __all__ = ["build_mechanism", "spec_chain", "as_chain", "analyze", "full_turn", 
            "SingularPositionWarning", "CHUNK"]
 
 _DEG = 180.0 / math.pi
+_RAD = math.pi / 180.0      # x * _RAD is np.radians(x) bit for bit, without its slower loop
 
 
 
@@ -429,7 +430,7 @@ def analyze(spec, crank_angles_deg=None, *, course_tables=True) -> AnalysisResul
                                  Text("errors.linkage.analysis.no_extremes"))])
     positions = None
     if crank_angles_deg is not None:
-        phi = np.radians(angles_argument(crank_angles_deg, "crank_angles_deg"))
+        phi = angles_argument(crank_angles_deg, "crank_angles_deg") * _RAD   # np.radians
     elif spec.crank_angles_deg is not None:
         phi = np.radians(np.asarray(spec.crank_angles_deg, dtype=float))
     else:

@@ -29,6 +29,7 @@ References
 from __future__ import annotations
 
 import math
+import operator
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -72,6 +73,10 @@ __all__ = [
 ]
 
 
+#: float64, the dtype of every array these routines make (in-place writes only into it).
+_F8 = np.dtype(float)
+
+
 # A component that is the float constant 0.0 (``type(c) is float and c == 0.0``, not an
 # array of zeros) costs no array operation.  These helpers run a few hundred times per
 # chunk of crank positions, so they test it inline.
@@ -94,6 +99,99 @@ def _plus(a, b):
 def _minus(a, b):
     """a − b, skipping a float-constant zero ``b``."""
     return a if type(b) is float and b == 0.0 else a - b
+
+
+#: The Python operator of each ufunc written in place: what a routine computes when it
+#: cannot write in place (scalars: a float stays a Python float, as with ``t - u``).
+_OPERATOR = {np.add: operator.add, np.subtract: operator.sub, np.multiply: operator.mul,
+             np.divide: operator.truediv}
+
+
+def _into(op, t, u):
+    """``op(t, u)`` written into ``t`` when ``t`` is a fresh float64 array of this routine
+    (the result of a numpy operation, referenced nowhere else) and ``u`` a float or a
+    float64 array of its shape; else a new array.  The same floating-point operation in
+    the same order: the same bits, one temporary fewer to allocate and to bring through
+    the cache."""
+    if type(t) is np.ndarray and t.dtype is _F8 and (
+            type(u) is float or type(u) is np.ndarray and u.dtype is _F8 and u.shape == t.shape):
+        return op(t, u, out=t)
+    return _OPERATOR[op](t, u)       # the operator itself (floats stay Python floats)
+
+
+def _rinto(op, u, t):
+    """``op(u, t)`` written into the fresh array ``t`` (see :func:`_into`)."""
+    if type(t) is np.ndarray and t.dtype is _F8 and (
+            type(u) is float or type(u) is np.ndarray and u.dtype is _F8 and u.shape == t.shape):
+        return op(u, t, out=t)
+    return _OPERATOR[op](u, t)
+
+
+def _add_to(a, t):
+    """``_plus(a, t)`` with ``t`` fresh (see :func:`_into`): the sum written into ``t``."""
+    if type(t) is float and t == 0.0:
+        return a
+    if type(a) is float and a == 0.0:
+        return t
+    return _rinto(np.add, a, t)
+
+
+def _add_first(t, b):
+    """``_plus(t, b)`` with ``t`` fresh: the sum written into ``t``."""
+    if type(b) is float and b == 0.0:
+        return t
+    if type(t) is float and t == 0.0:
+        return b
+    return _into(np.add, t, b)
+
+
+def _vadd(a, t):
+    """``a + t`` of two vectors, ``t`` a fresh product of this routine (a :class:`Vec`
+    product's components are new arrays, or float constants): the sum written into
+    ``t``'s arrays.  The same operations as ``Vec.__add__`` (a float-constant zero
+    skipped), so the same bits."""
+    return Vec(_add_to(a.x, t.x), _add_to(a.y, t.y))
+
+
+def _vadd_first(t, b):
+    """``t + b``, ``t`` a fresh product: the sum written into ``t``'s arrays."""
+    return Vec(_add_first(t.x, b.x), _add_first(t.y, b.y))
+
+
+def _vsub(a, t):
+    """``a − t``, ``t`` a fresh product: the difference written into ``t``'s arrays (as
+    ``Vec.__sub__``: ``−t`` when ``a`` is the constant zero)."""
+    if _is_zero(a):
+        return Vec(_neg_to(t.x), _neg_to(t.y))
+    return Vec(a.x if type(t.x) is float and t.x == 0.0 else _rinto(np.subtract, a.x, t.x),
+               a.y if type(t.y) is float and t.y == 0.0 else _rinto(np.subtract, a.y, t.y))
+
+
+def _vadd_sub(a, t, b):
+    """``a + t − b``, ``t`` a fresh product: both written into ``t``'s arrays (as
+    ``Vec.__add__`` then ``Vec.__sub__``)."""
+    s = _vadd(a, t)
+    if _is_zero(s):
+        return -b
+    return Vec(_sub_fresh(s.x, b.x, type(t.x) is np.ndarray),
+               _sub_fresh(s.y, b.y, type(t.y) is np.ndarray))
+
+
+def _sub_fresh(s, b, fresh):
+    """``_minus(s, b)``, into ``s`` when it is ``fresh``."""
+    if type(b) is float and b == 0.0:
+        return s
+    return _into(np.subtract, s, b) if fresh else s - b
+
+
+def _sqrt_to(t):
+    """``√t``, into ``t`` when it is a fresh float64 array."""
+    return np.sqrt(t, out=t) if type(t) is np.ndarray and t.dtype is _F8 else np.sqrt(t)
+
+
+def _neg_to(t):
+    """``−t``, into ``t`` when it is a fresh float64 array."""
+    return np.negative(t, out=t) if type(t) is np.ndarray and t.dtype is _F8 else -t
 
 
 def _is_complex(k):
@@ -220,8 +318,9 @@ class Vec:
                     return _ZERO
                 return Vec(self.x * k, self.y * k)
             k = Vec.of(k)
-        # complex product (x1 + iy1)(x2 + iy2)
-        return Vec(self.x * k.x - self.y * k.y, self.x * k.y + self.y * k.x)
+        # complex product (x1 + iy1)(x2 + iy2), each sum into its first product
+        return Vec(_into(np.subtract, self.x * k.x, self.y * k.y),
+                   _into(np.add, self.x * k.y, self.y * k.x))
 
     __rmul__ = __mul__
 
@@ -256,12 +355,12 @@ _ZERO = Vec(0.0, 0.0)
 def cross(a, b):
     """z-component of the planar cross product a × b: ``a_x·b_y − a_y·b_x``
     (``Im(conj(a)·b)`` of complex vectors)."""
-    return a.real * b.imag - a.imag * b.real
+    return _into(np.subtract, a.real * b.imag, a.imag * b.real)
 
 
 def dot(a, b):
     """Planar dot product: ``a_x·b_x + a_y·b_y`` (``Re(conj(a)·b)``)."""
-    return a.real * b.real + a.imag * b.imag
+    return _into(np.add, a.real * b.real, a.imag * b.imag)
 
 
 @dataclass
@@ -331,9 +430,9 @@ class LinkMotion:
             return o
         r = self.e * local if local.imag else self.e * local.real     # r·e
         ir = r.perp()                                                  # i·r·e
-        v = o.v + ir * self.omega
-        a = o.a + ir * self.eps + r * (-(self.omega * self.omega))    # (iε − ω²)·r·e
-        return PointMotion(o.z + r, v, a)
+        v = _vadd(o.v, ir * self.omega)
+        a = _vadd(_vadd(o.a, ir * self.eps), r * (-(self.omega * self.omega)))  # (iε−ω²)·r·e
+        return PointMotion(_vadd(o.z, r), v, a)     # (r last: its arrays hold z)
 
 
 @dataclass
@@ -359,7 +458,7 @@ class Wrench:
 
     def moment_about(self, q):
         """Resultant moment about the point ``q``: ``M + (P − q) × F``. [N·m]"""
-        return self.moment + cross(self.point - q, self.force)
+        return _rinto(np.add, self.moment, cross(self.point - q, self.force))
 
 
 # --------------------------------------------------------------------------- kinematics
@@ -437,25 +536,25 @@ def rrr(A: PointMotion, C: PointMotion, l3: float, l4: float, assembly: int) -> 
     """
     d = C.z - A.z
     D2 = dot(d, d)
-    iD = 1.0 / np.sqrt(D2)                       # (products by reciprocals: one division)
-    p = (l3 * l3 - l4 * l4 + D2) * (0.5 * iD)
-    h2 = l3 * l3 - p * p
-    h = np.sqrt(np.maximum(h2, 0.0))
+    iD = _rinto(np.divide, 1.0, np.sqrt(D2))     # (products by reciprocals: one division)
+    p = _into(np.multiply, _rinto(np.add, l3 * l3 - l4 * l4, D2), 0.5 * iD)
+    h2 = _rinto(np.subtract, l3 * l3, p * p)
+    h = _sqrt_to(np.maximum(h2, 0.0))
     ed = d * iD
-    zB = A.z + ed * p + ed.perp() * (h if assembly > 0 else -h)
+    zB = _vadd(_vadd(A.z, ed * p), ed.perp() * (h if assembly > 0 else _neg_to(h)))
     r3 = zB - A.z
     r4 = zB - C.z
     det = cross(r3, r4)
     idet = 1.0 / det
     dv = C.v - A.v
-    w3 = dot(r4, dv) * idet
-    w4 = dot(r3, dv) * idet
+    w3 = _into(np.multiply, dot(r4, dv), idet)
+    w4 = _into(np.multiply, dot(r3, dv), idet)
     r3w3sq, r4w4sq = r3 * (w3 * w3), r4 * (w4 * w4)
-    da = C.a - A.a + r3w3sq - r4w4sq
-    e3 = dot(r4, da) * idet
-    e4 = dot(r3, da) * idet
+    da = _vsub(C.a - A.a + r3w3sq, r4w4sq)
+    e3 = _into(np.multiply, dot(r4, da), idet)
+    e4 = _into(np.multiply, dot(r3, da), idet)
     ir3 = r3.perp()
-    B = PointMotion(zB, A.v + ir3 * w3, A.a + ir3 * e3 - r3w3sq)
+    B = PointMotion(zB, _vadd(A.v, ir3 * w3), _vadd_sub(A.a, ir3 * e3, r3w3sq))
     link3 = LinkMotion(A, r3 * (1.0 / l3), w3, e3)
     link4 = LinkMotion(C, r4 * (1.0 / l4), w4, e4)
     link3._points[complex(l3)] = link4._points[complex(l4)] = B
@@ -525,11 +624,11 @@ def rrp(A: PointMotion, L: float, guide_point=0j, guide_angle=0.0, offset=0.0,
     zB = O + Vec(s, offset) * u
     r3 = zB - A.z
     mden = -1.0 / dot(u, r3)
-    w3 = cross(u, A.v) * mden
+    w3 = _into(np.multiply, cross(u, A.v), mden)
     ir3 = r3.perp()
     v = dot(u, A.v + ir3 * w3)
     rhs = A.a - r3 * (w3 * w3)
-    e3 = cross(u, rhs) * mden
+    e3 = _into(np.multiply, cross(u, rhs), mden)
     a = dot(u, rhs + ir3 * e3)
     B = PointMotion(zB, u * v, u * a)
     link3 = LinkMotion(A, r3 * (1.0 / L), w3, e3)
@@ -599,13 +698,13 @@ def link_wrench(link: LinkMotion, mass=0.0, inertia=0.0, cg=0j, gravity=0.0,
     S = link.point(cg)
     F, M = inertia_load(S.a, link.eps, mass, inertia)
     if mass * gravity != 0.0:
-        F = F + Vec(0.0, -mass * gravity)
+        F = _vadd_first(F, Vec(0.0, -mass * gravity))     # (F: the fresh inertia force)
     for f, at in forces:
         f = Vec.of(f)
         F = F + f
-        M = M + cross(Vec.of(at) - S.z, f)
+        M = _rinto(np.add, M, cross(Vec.of(at) - S.z, f))
     for m in moments:
-        M = M + m
+        M = _into(np.add, M, m)       # (M: fresh, the inertia moment or a sum made here)
     return Wrench(F, M, S.z)
 
 
@@ -615,8 +714,8 @@ def _split(W, e1, e2, idet=None):
     ``idet`` is ``1/(e1 × e2)`` when the caller has it already: a group solves the same
     pair of directions for its velocities and its accelerations."""
     if idet is None:
-        idet = 1.0 / cross(e1, e2)
-    return cross(W, e2) * idet, cross(e1, W) * idet
+        idet = _rinto(np.divide, 1.0, cross(e1, e2))
+    return _into(np.multiply, cross(W, e2), idet), _into(np.multiply, cross(e1, W), idet)
 
 
 @dataclass
@@ -665,12 +764,12 @@ def rrr_reactions(sol: RRRSolution, l3: float, l4: float, W3: Wrench, W4: Wrench
     """
     zB = sol.B.z
     e3, e4 = sol.link3.e, sol.link4.e
-    t3 = W3.moment_about(zB) * (1.0 / l3)
-    t4 = W4.moment_about(zB) * (1.0 / l4)
+    t3 = _into(np.multiply, W3.moment_about(zB), 1.0 / l3)
+    t4 = _into(np.multiply, W4.moment_about(zB), 1.0 / l4)
     T3, T4 = e3.perp() * t3, e4.perp() * t4
     n3, n4 = _split(-(W3.force + W4.force + T3 + T4), e3, e4)
-    RA = e3 * n3 + T3
-    RC = e4 * n4 + T4
+    RA = _vadd_first(e3 * n3, T3)
+    RC = _vadd_first(e4 * n4, T4)
     RB = -(RA + W3.force)
     return RRRReactions(RA, RB, RC, n3, t3, n4, t4)
 
@@ -761,7 +860,7 @@ def driver_reactions(crank_link: LinkMotion, zA, R32, W2: Wrench) -> DriverReact
     zO = crank_link.origin.z
     R32 = Vec.of(R32)
     R12 = -(R32 + W2.force)
-    M = -cross(Vec.of(zA) - zO, R32) - W2.moment_about(zO)
+    M = _into(np.subtract, _neg_to(cross(Vec.of(zA) - zO, R32)), W2.moment_about(zO))
     return DriverReactions(R12, M)
 
 
@@ -826,7 +925,7 @@ def rrp_guided(A: PointMotion, L: float, guide: LinkMotion, point=0j, angle=0.0,
     r3 = zB - A.z
     ir3 = r3.perp()
     mir3 = -ir3
-    idet = 1.0 / cross(u, mir3)               # (one 2×2 system for v and a)
+    idet = _rinto(np.divide, 1.0, cross(u, mir3))     # (one 2×2 system: v and a)
     v, w3 = _split(A.v - Bj.v, u, mir3, idet)
     iu = u.perp()
     rhs = A.a - r3 * (w3 * w3) - Bj.a - iu * (2.0 * guide.omega * v)
@@ -896,7 +995,7 @@ def rpr(A: PointMotion, C: PointMotion, offset=0.0, assembly: int = 1) -> RPRSol
     # e = (A − C)/(s + i·offset); with no offset s = ±|AC| and e = (A − C)/s
     e = d * Vec(s, -offset) * (1.0 / D2) if offset else d * (1.0 / s)
     idd = d.perp()
-    idet = 1.0 / cross(e, idd)                # (one 2×2 system for v and a)
+    idet = _rinto(np.divide, 1.0, cross(e, idd))     # (one 2×2 system: v and a)
     vr, w = _split(A.v - C.v, e, idd, idet)
     ie = e.perp()
     cor = ie * (2.0 * w * vr)
@@ -946,7 +1045,7 @@ def prp(guide1: LinkMotion, guide2: LinkMotion, point1=0j, angle1=0.0, point2=0j
     G1, u1 = _guide_line(guide1, point1, angle1)
     G2, u2 = _guide_line(guide2, point2, angle2)
     mu2 = -u2
-    idet = 1.0 / cross(u1, mu2)               # (one 2×2 system for s, v and a)
+    idet = _rinto(np.divide, 1.0, cross(u1, mu2))     # (one 2×2 system: s, v and a)
     s1, s2 = _split(G2 - G1, u1, mu2, idet)
     zB = G1 + u1 * s1
     B1, B2 = coincident(guide1, zB), coincident(guide2, zB)
@@ -997,7 +1096,7 @@ def rpp(A: PointMotion, guide: LinkMotion, point=0j, angle=0.0, slot_angle=0.5 *
     """
     G, u = _guide_line(guide, point, angle)
     w = u * complex(math.cos(slot_angle), math.sin(slot_angle))
-    idet = 1.0 / cross(u, w)                  # (one 2×2 system for y, x and rates)
+    idet = _rinto(np.divide, 1.0, cross(u, w))     # (one 2×2 system: y, x and rates)
     y, x = _split(A.z - G, u, w, idet)
     zO = G + u * y
     Aj, Oj = coincident(guide, A.z), coincident(guide, zO)
