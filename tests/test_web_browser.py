@@ -405,18 +405,26 @@ def test_the_teacher_s_check_of_a_workbook_in_the_browser(server, browser, tmp_p
     _shot(d, f"web_teacher_check_{lang}.png", tmp_path)
 
 
-@pytest.mark.parametrize("lang", ["en", "ru"])
-def test_the_torsion_example_in_the_browser(server, browser, tmp_path, lang):
-    """The torsion example computed with the option on: the natural frequencies table on
-    the page is the library's torsion_modes.csv, Campbell's diagram is shown; the
-    screenshots of the torsion results."""
+@pytest.fixture(scope="module")
+def torsion_modes():
+    """The library's torsion_modes.csv of the torsion example (its study with the
+    torsion on), as rows of text: computed once for both languages' tests."""
     import engine
-    from selenium.webdriver.common.by import By
 
     report = engine.run_study(engine.load(example_path("torsion_inline6.toml")),
                               torsion=True)
-    want = list(csv.reader(report.torsion.tables["torsion_modes.csv"].to_csv(
+    return list(csv.reader(report.torsion.tables["torsion_modes.csv"].to_csv(
         index=False, lineterminator="\n").splitlines()))
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_the_torsion_example_in_the_browser(server, browser, tmp_path, torsion_modes, lang):
+    """The torsion example computed with the option on: the natural frequencies table on
+    the page is the library's torsion_modes.csv, Campbell's diagram is shown; the
+    screenshots of the torsion results."""
+    from selenium.webdriver.common.by import By
+
+    want = torsion_modes
     d = browser
     d.get(server + f"/engine?lang={lang}")
     d.find_element(By.ID, "example-torsion").click()

@@ -152,25 +152,27 @@ def test_the_dynamics_page_runs_the_cli_s_example(request, tmp_path, cli_report,
     assert pngs and all(got.get(n, b"")[:4] == b"\x89PNG" for n in pngs)
 
 
-def test_the_dynamics_page_s_spec_repeats_the_run(dyn_shaper, tmp_path, unrendered_figures):
-    """The downloaded spec of the shaper's run, given to ``crankdyn dynamics``, writes the
-    page's CSVs again (the chain's [[group]] and [dynamics] round-trip through the form;
-    the command's figures saved unrendered: the CSVs are compared, the page's figures are
-    PNG, drawn in the app's render processes)."""
+def test_the_dynamics_page_s_spec_repeats_the_run(dyn_shaper, cli_report):
+    """The downloaded spec of the shaper's run repeats the run: it is the example's own
+    spec (the chain's [[group]] and [dynamics] round-trip through the form), read as the
+    same dict, and ``crankdyn dynamics`` computes a spec from that dict (the shaper names
+    no other file), so ``crankdyn dynamics`` on it is the session's shared run of
+    ``--example shaper``, whose CSVs are the page's byte for byte.  (Before: the command
+    run again on the downloaded file, a second computation of the chain's dynamics.)"""
     import tomllib
 
-    from crankdyn.cli import main
-
     html, got, _ = dyn_shaper
-    spec = tmp_path / "shaper-machine.toml"
-    spec.write_bytes(got["shaper-machine.toml"])
-    data = tomllib.loads(spec.read_text(encoding="utf-8"))
+    data = tomllib.loads(got["shaper-machine.toml"].decode("utf-8"))
     assert data["mechanism"]["kind"] == "chain" and len(data["group"]) == 2
     assert data["dynamics"] == {"driving": "motor", "motor_start_torque_Nm": 2000.0,
                                 "motor_sync_speed_rad_s": 6.6, "delta": 0.05}
-    out = tmp_path / "cli"
-    assert main(["dynamics", str(spec), "-o", str(out), "--lang", "en"]) == 0
-    for p in out.glob("*.csv"):
+    assert data == tomllib.loads(example_path("shaper_dynamics.toml").read_text(
+        encoding="utf-8"))
+    assert not any(k in str(data) for k in ("file", ".csv", ".ind"))   # no other file
+    cli = shared(cli_report("dynamics", "--example", "shaper", "--lang", "en"))
+    csvs = list(cli.glob("*.csv"))
+    assert len(csvs) >= 2
+    for p in csvs:
         assert got[p.name] == p.read_bytes(), p.name
 
 
