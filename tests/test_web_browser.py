@@ -153,6 +153,35 @@ def _stale_check(el):
         return False
 
 
+def _first_rows(table, n):
+    """The text of the first ``n`` rows of a table on the page: only those rows fetched
+    (a results table holds up to 1000 rows of up to 47 cells; fetching a reference to
+    every row costs the browser more than reading the few compared)."""
+    from selenium.webdriver.common.by import By
+
+    return [[td.text for td in tr.find_elements(By.TAG_NAME, "td")]
+            for tr in table.find_elements(By.CSS_SELECTOR, f"tbody tr:nth-child(-n+{n})")]
+
+
+def _example_in(driver, server, page, example, lang, first):
+    """The page in ``lang`` with ``example``'s values on its form.  The ``first``
+    language opens the page and loads the example; a next one switches the page's
+    language with its own link (``lang-<lang>``: the session keeps the example's values
+    and its last results), as a student changing the language does, without loading the
+    example again (each load of a page showing a run's tables, up to 1000 rows of up to
+    47 cells, costs the browser a second or two of CPU)."""
+    from selenium.webdriver.common.by import By
+
+    if first:
+        driver.get(server + f"/{page}?lang={lang}")
+        driver.find_element(By.ID, f"example-{example}").click()
+        _by_id(driver, "notice")
+        return
+    driver.find_element(By.ID, f"lang-{lang}").click()
+    _wait(driver, lambda d: d.find_element(By.TAG_NAME, "html").get_attribute("lang") == lang)
+    assert driver.find_element(By.ID, f"lang-{lang}").get_attribute("class") == "active"
+
+
 def test_the_petrol_example_in_the_browser_equals_the_cli(server, browser, tmp_path,
                                                           petrol_at_4000):
     import openpyxl
@@ -174,8 +203,7 @@ def test_the_petrol_example_in_the_browser_equals_the_cli(server, browser, tmp_p
         want = list(csv.reader(fh))
     table = d.find_element(By.ID, "table2")
     head = [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
-    rows = [[td.text for td in tr.find_elements(By.TAG_NAME, "td")]
-            for tr in table.find_elements(By.CSS_SELECTOR, "tbody tr")[:5]]
+    rows = _first_rows(table, 5)
     assert head == want[0]
     assert rows == want[1:6]
     assert float(rows[0][head.index("Pj_N")]) != 0.0
@@ -238,14 +266,11 @@ def test_the_linkage_page_in_the_browser(server, browser, tmp_path, cli_report):
         want = list(csv.reader(fh))
     d = browser
     for lang in ("en", "ru"):
-        d.get(server + f"/linkage?lang={lang}")
-        d.find_element(By.ID, "example-ratchet").click()
-        _by_id(d, "notice")
+        _example_in(d, server, "linkage", "ratchet", lang, first=lang == "en")
         _compute(d)
         table = d.find_element(By.ID, "table2")
         head = [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
-        rows = [[td.text for td in tr.find_elements(By.TAG_NAME, "td")]
-                for tr in table.find_elements(By.CSS_SELECTOR, "tbody tr")[:3]]
+        rows = _first_rows(table, 3)
         assert head == want[0] and rows == want[1:4]
         _wait(d, _images_loaded)
         assert len(d.find_elements(By.CSS_SELECTOR, "#figures img")) == 5
@@ -265,9 +290,7 @@ def test_the_synthesis_page_in_the_browser(server, browser, tmp_path, cli_report
         want = list(csv.reader(fh))
     d = browser
     for lang in ("en", "ru"):
-        d.get(server + f"/synth?lang={lang}")
-        d.find_element(By.ID, "example-readme").click()
-        _by_id(d, "notice")
+        _example_in(d, server, "synth", "readme", lang, first=lang == "en")
         _compute(d)
         table = d.find_element(By.ID, "table2-form")
         head = [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
@@ -303,15 +326,12 @@ def test_the_dynamics_page_in_the_browser(server, browser, tmp_path, cli_report)
             want[key] = list(csv.reader(fh))
     d = browser
     for lang in ("en", "ru"):
-        d.get(server + f"/dynamics?lang={lang}")
-        d.find_element(By.ID, "example-shaper").click()
-        _by_id(d, "notice")
+        _example_in(d, server, "dynamics", "shaper", lang, first=lang == "en")
         _compute(d)
         for key, rows_want in want.items():
             table = d.find_element(By.ID, key)
             head = [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
-            rows = [[td.text for td in tr.find_elements(By.TAG_NAME, "td")]
-                    for tr in table.find_elements(By.CSS_SELECTOR, "tbody tr")[:3]]
+            rows = _first_rows(table, 3)
             assert head == rows_want[0] and rows == rows_want[1:4]
         _wait(d, _images_loaded)
         assert len(d.find_elements(By.CSS_SELECTOR, "#figures img")) >= 5
@@ -326,9 +346,7 @@ def test_the_balance_page_in_the_browser(server, browser, tmp_path):
 
     d = browser
     for lang in ("en", "ru"):
-        d.get(server + f"/balance?lang={lang}")
-        d.find_element(By.ID, "example-rotor").click()
-        _by_id(d, "notice")
+        _example_in(d, server, "balance", "rotor", lang, first=lang == "en")
         _compute(d)
         table = d.find_element(By.ID, "table2")
         head = [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
