@@ -435,27 +435,26 @@ def torsion_modes():
         index=False, lineterminator="\n").splitlines()))
 
 
-@pytest.mark.parametrize("lang", ["en", "ru"])
-def test_the_torsion_example_in_the_browser(server, browser, tmp_path, torsion_modes, lang):
-    """The torsion example computed with the option on: the natural frequencies table on
-    the page is the library's torsion_modes.csv, Campbell's diagram is shown; the
-    screenshots of the torsion results."""
+def test_the_torsion_example_in_the_browser(server, browser, tmp_path, torsion_modes):
+    """The torsion example computed with the option on, in both languages: the natural
+    frequencies table on the page is the library's torsion_modes.csv, Campbell's diagram
+    is shown; the screenshots of the torsion results.  (One test for both languages, as
+    the other pages': Russian is reached with the page's language link.)"""
     from selenium.webdriver.common.by import By
 
     want = torsion_modes
     d = browser
-    d.get(server + f"/engine?lang={lang}")
-    d.find_element(By.ID, "example-torsion").click()
-    _by_id(d, "notice")
-    assert d.find_element(By.ID, "opt-torsion").is_selected()
-    _compute(d)
-    table = d.find_element(By.ID, "torsion-modes")
-    head = [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
-    rows = [[td.text for td in tr.find_elements(By.TAG_NAME, "td")]
-            for tr in table.find_elements(By.CSS_SELECTOR, "tbody tr")]
-    assert [head] + rows == want
-    _wait(d, _images_loaded)
-    assert d.find_elements(By.ID, "fig-bmw-m54b30_campbell.png")
-    d.execute_script("document.getElementById('fig-bmw-m54b30_campbell.png')"
-                     ".parentElement.scrollIntoView()")
-    _shot(d, f"web_engine_torsion_{lang}.png", tmp_path)
+    for lang in ("en", "ru"):
+        _example_in(d, server, "engine", "torsion", lang, first=lang == "en")
+        assert d.find_element(By.ID, "opt-torsion").is_selected()
+        _compute(d)
+        table = d.find_element(By.ID, "torsion-modes")
+        head = [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
+        rows = [[td.text for td in tr.find_elements(By.TAG_NAME, "td")]
+                for tr in table.find_elements(By.CSS_SELECTOR, "tbody tr")]
+        assert [head] + rows == want
+        _wait(d, _images_loaded)
+        assert d.find_elements(By.ID, "fig-bmw-m54b30_campbell.png")
+        d.execute_script("document.getElementById('fig-bmw-m54b30_campbell.png')"
+                         ".parentElement.scrollIntoView()")
+        _shot(d, f"web_engine_torsion_{lang}.png", tmp_path)
