@@ -255,3 +255,45 @@ def web_app(tmp_path_factory):
     a = web.create_app(root=root, upload_limit=WEB_UPLOAD_LIMIT, workers=2)
     a.root = root
     return a
+
+
+# ------------------------------------------------------------------------- tests-figures
+@pytest.fixture
+def figures_rendered_only(monkeypatch):
+    """``figures_rendered_only(*parts)``: from then on, ``Figure.savefig`` renders for
+    real only the files whose name holds one of ``parts`` (none: no file); every other
+    figure is saved as :func:`unrendered_figures` saves it (a short text naming the
+    format), a drawing sheet saved into a ``PdfPages`` too (the text is its PDF file).
+    For a run whose other figures are rendered by another test (named where it is used).
+    Returns the list of ``(file name, rendered)`` saved so, one per file."""
+    from pathlib import PurePath
+
+    from matplotlib.backends.backend_pdf import PdfPages
+    from matplotlib.figure import Figure
+
+    real = _REAL_SAVEFIG.setdefault("savefig", Figure.savefig)
+    saved = []
+
+    def start(*parts):
+        def savefig(self, fname, *args, format=None, **kwargs):
+            if isinstance(fname, PdfPages):
+                name = str(fname._filename)
+            else:
+                name = str(getattr(fname, "name", fname))
+            if any(p in PurePath(name).name for p in parts):
+                saved.append((PurePath(name).name, True))
+                return real(self, fname, *args, format=format, **kwargs)
+            fmt = format or PurePath(name).suffix.lstrip(".") or "png"
+            data = f"figure not rendered ({fmt}), tests/conftest.py\n".encode()
+            if isinstance(fname, PdfPages):
+                Path(name).write_bytes(data)            # PdfPages writes no page then
+            elif hasattr(fname, "write"):
+                fname.write(data)
+            else:
+                Path(fname).write_bytes(data)
+            saved.append((PurePath(name).name, False))
+
+        monkeypatch.setattr(Figure, "savefig", savefig)
+        return saved
+
+    return start
