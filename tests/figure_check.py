@@ -22,6 +22,8 @@ lines.  This is a test tool (tests import it), not part of the library.
 """
 from __future__ import annotations
 
+import contextlib
+
 import numpy as np
 
 __all__ = ["figure_problems", "marker_problems", "texts_of", "line_samples", "drawn"]
@@ -175,6 +177,42 @@ def line_samples(fig, step=1.0):
 _RENDERERS = {}
 
 
+@contextlib.contextmanager
+def _layouts_once():
+    """Within it, a text's layout (``Text._get_layout``: its box and lines relative to
+    its anchor, what ``draw`` and ``get_window_extent`` compute) is computed once for
+    every distinct text, font, alignment, rotation, dpi and renderer, and read back the
+    next time (a figure check asks for it three times: the draw, the axes' tight boxes
+    and :func:`texts_of`; a tick label of the same text and font on another axes is the
+    same layout).  The layout depends on nothing else (not on where the text is); a
+    wrapped text (laid out by its position) is computed each time."""
+    from matplotlib.text import Text
+
+    real = Text._get_layout
+    memo = {}
+
+    def get_layout(self, renderer):
+        if self.get_wrap():
+            return real(self, renderer)
+        fp = self._fontproperties
+        key = (self._text, tuple(fp.get_family()), fp.get_style(), fp.get_variant(),
+               fp.get_weight(), fp.get_stretch(), fp.get_size(), fp.get_file(),
+               fp.get_math_fontfamily(), self.get_usetex(),
+               self._parse_math, self._linespacing, self._multialignment,
+               self._horizontalalignment, self._verticalalignment, self.get_rotation(),
+               self.get_rotation_mode(), self.get_figure(root=True).dpi, id(renderer))
+        hit = memo.get(key)
+        if hit is None:
+            hit = memo[key] = real(self, renderer)
+        return hit
+
+    Text._get_layout = get_layout
+    try:
+        yield
+    finally:
+        Text._get_layout = real
+
+
 def drawn(fig):
     """Lay ``fig`` out as Agg draws it, without rasterising it: the figure is drawn with
     an Agg renderer whose ``draw_*`` calls do nothing (matplotlib's
@@ -220,8 +258,9 @@ def figure_problems(fig, margin_px=1.5, line_margin_px=2.0, edge=True):
         Check the texts against the figure's edge (False for a figure saved with a tight
         bounding box, whose edge is its content's).
     """
-    r = drawn(fig)
-    texts = texts_of(fig, r)
+    with _layouts_once():
+        r = drawn(fig)
+        texts = texts_of(fig, r)
     problems = []
     W, H = fig.bbox.width, fig.bbox.height
     m = margin_px
