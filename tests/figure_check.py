@@ -299,16 +299,18 @@ def figure_problems(fig, margin_px=1.5, line_margin_px=2.0, edge=True):
 _NO_MARKER = (None, "None", "none", "", " ")
 
 
-def marker_problems(fig, margin_px=0.5, edge=True):
+def marker_problems(fig, margin_px=0.5, edge=True, draw=True):
     """Every lone mark of ``fig`` (a ``Line2D`` with markers and no line) that is not
     drawn whole, as readable strings (empty: clean).
 
     A mark's extent is its marker size plus its edge width (points → pixels); a clipped
     mark (``clip_on``, the default) must lie inside its clip box (the axes), every mark
     inside the figure (``edge``: False for a figure saved with a tight bounding box).
-    ``margin_px`` lets the extent touch the border.
+    ``margin_px`` lets the extent touch the border.  ``draw=False``: the figure has
+    just been laid out (:func:`figure_problems` did) and is not changed since.
     """
-    drawn(fig)
+    if draw:
+        drawn(fig)
     W, H = fig.bbox.width, fig.bbox.height
     m = margin_px
     problems = []
