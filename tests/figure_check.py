@@ -235,9 +235,31 @@ def drawn(fig):
     while len(_RENDERERS) > 4:
         del _RENDERERS[next(iter(_RENDERERS))]
     canvas.renderer, canvas._lastKey = renderer, key    # canvas.get_renderer() is it
-    with renderer._draw_disabled():
+    with renderer._draw_disabled(), _lines_not_drawn():
         fig.draw(renderer)
     return renderer
+
+
+@contextlib.contextmanager
+def _lines_not_drawn():
+    """Within it, ``Line2D.draw`` (curves, tick marks, legend handles) does nothing but
+    mark the line drawn: with the renderer's drawing switched off it only prepares the
+    line's display path for the renderer, which no check reads (:func:`line_samples`
+    transforms each line's own path) and which places no text (tick labels, legends,
+    annotations and layout engines are placed by their own draw and extents).  A tenth
+    of a figure's layout for a drawing sheet of a thousand lines."""
+    from matplotlib.lines import Line2D
+
+    real = Line2D.draw
+
+    def draw(self, renderer):
+        self.stale = False
+
+    Line2D.draw = draw
+    try:
+        yield
+    finally:
+        Line2D.draw = real
 
 
 def _inside(points, bb, m):
