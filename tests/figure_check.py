@@ -177,19 +177,31 @@ def line_samples(fig, step=1.0):
 _RENDERERS = {}
 
 
+#: Text layouts by everything they depend on (see :func:`_layouts_once`), kept from
+#: figure to figure (the sheets of a mechanism repeat their labels, the tick labels of
+#: the figures of a report their numbers).
+_LAYOUTS = {}
+
+
 @contextlib.contextmanager
 def _layouts_once():
     """Within it, a text's layout (``Text._get_layout``: its box and lines relative to
     its anchor, what ``draw`` and ``get_window_extent`` compute) is computed once for
-    every distinct text, font, alignment, rotation, dpi and renderer, and read back the
+    every distinct text, font, alignment, rotation, dpi, renderer type and text settings
+    (matplotlib's ``text.*``, ``font.*`` and ``mathtext.*`` rcParams), and read back the
     next time (a figure check asks for it three times: the draw, the axes' tight boxes
-    and :func:`texts_of`; a tick label of the same text and font on another axes is the
-    same layout).  The layout depends on nothing else (not on where the text is); a
-    wrapped text (laid out by its position) is computed each time."""
+    and :func:`texts_of`; a tick label of the same text and font on another axes or
+    figure is the same layout).  The layout depends on nothing else (not on where the
+    text is: an Agg renderer measures a text by its font and dpi alone); a wrapped text
+    (laid out by its position) is computed each time."""
+    from matplotlib import rcParams
     from matplotlib.text import Text
 
     real = Text._get_layout
-    memo = {}
+    if len(_LAYOUTS) > 200000:
+        _LAYOUTS.clear()
+    settings = tuple((k, repr(rcParams[k])) for k in sorted(rcParams)
+                     if k.startswith(("text.", "font.", "mathtext.")))
 
     def get_layout(self, renderer):
         if self.get_wrap():
@@ -200,10 +212,11 @@ def _layouts_once():
                fp.get_math_fontfamily(), self.get_usetex(),
                self._parse_math, self._linespacing, self._multialignment,
                self._horizontalalignment, self._verticalalignment, self.get_rotation(),
-               self.get_rotation_mode(), self.get_figure(root=True).dpi, id(renderer))
-        hit = memo.get(key)
+               self.get_rotation_mode(), self.get_figure(root=True).dpi,
+               type(renderer), renderer.dpi, settings)
+        hit = _LAYOUTS.get(key)
         if hit is None:
-            hit = memo[key] = real(self, renderer)
+            hit = _LAYOUTS[key] = real(self, renderer)
         return hit
 
     Text._get_layout = get_layout
