@@ -255,3 +255,73 @@ def web_app(tmp_path_factory):
     a = web.create_app(root=root, upload_limit=WEB_UPLOAD_LIMIT, workers=2)
     a.root = root
     return a
+
+
+# ------------------------------------------------------------------------- tests-figures
+def _savefig_rendering_only(parts, saved):
+    """A ``Figure.savefig`` that renders for real only the files whose name holds one of
+    ``parts`` and saves every other figure as :func:`unrendered_figures` does (a short
+    text naming the format; a drawing sheet saved into a ``PdfPages`` too: the text is
+    its PDF file); appends ``(file name, rendered)`` to ``saved``."""
+    from pathlib import PurePath
+
+    from matplotlib.backends.backend_pdf import PdfPages
+    from matplotlib.figure import Figure
+
+    real = _REAL_SAVEFIG.setdefault("savefig", Figure.savefig)
+
+    def savefig(self, fname, *args, format=None, **kwargs):
+        if isinstance(fname, PdfPages):
+            name = str(fname._filename)
+        else:
+            name = str(getattr(fname, "name", fname))
+        if any(p in PurePath(name).name for p in parts):
+            saved.append((PurePath(name).name, True))
+            return real(self, fname, *args, format=format, **kwargs)
+        fmt = format or PurePath(name).suffix.lstrip(".") or "png"
+        data = f"figure not rendered ({fmt}), tests/conftest.py\n".encode()
+        if isinstance(fname, PdfPages):
+            Path(name).write_bytes(data)                # PdfPages writes no page then
+        elif hasattr(fname, "write"):
+            fname.write(data)
+        else:
+            Path(fname).write_bytes(data)
+        saved.append((PurePath(name).name, False))
+
+    return savefig
+
+
+@pytest.fixture
+def figures_rendered_only(monkeypatch):
+    """``figures_rendered_only(*parts)``: from then on, ``Figure.savefig`` renders for
+    real only the files whose name holds one of ``parts`` (none: no file); every other
+    figure is saved as :func:`unrendered_figures` saves it (a short text naming the
+    format), a drawing sheet saved into a ``PdfPages`` too.  For a run whose other
+    figures are rendered by another test (named where it is used).  Returns the list of
+    ``(file name, rendered)`` saved so, one per file."""
+    from matplotlib.figure import Figure
+
+    saved = []
+
+    def start(*parts):
+        monkeypatch.setattr(Figure, "savefig", _savefig_rendering_only(parts, saved))
+        return saved
+
+    return start
+
+
+@pytest.fixture(scope="session")
+def figures_rendered_only_within():
+    """:func:`figures_rendered_only` for a module- or session-scoped fixture: ``with
+    figures_rendered_only_within(*parts) as saved:`` (``Figure.savefig`` restored on
+    leaving)."""
+    from matplotlib.figure import Figure
+
+    @contextlib.contextmanager
+    def within(*parts):
+        saved = []
+        with pytest.MonkeyPatch.context() as mp:
+            mp.setattr(Figure, "savefig", _savefig_rendering_only(parts, saved))
+            yield saved
+
+    return within

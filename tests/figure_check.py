@@ -22,6 +22,8 @@ lines.  This is a test tool (tests import it), not part of the library.
 """
 from __future__ import annotations
 
+import contextlib
+
 import numpy as np
 
 __all__ = ["figure_problems", "marker_problems", "texts_of", "line_samples", "drawn"]
@@ -175,6 +177,55 @@ def line_samples(fig, step=1.0):
 _RENDERERS = {}
 
 
+#: Text layouts by everything they depend on (see :func:`_layouts_once`), kept from
+#: figure to figure (the sheets of a mechanism repeat their labels, the tick labels of
+#: the figures of a report their numbers).
+_LAYOUTS = {}
+
+
+@contextlib.contextmanager
+def _layouts_once():
+    """Within it, a text's layout (``Text._get_layout``: its box and lines relative to
+    its anchor, what ``draw`` and ``get_window_extent`` compute) is computed once for
+    every distinct text, font, alignment, rotation, dpi, renderer type and text settings
+    (matplotlib's ``text.*``, ``font.*`` and ``mathtext.*`` rcParams), and read back the
+    next time (a figure check asks for it three times: the draw, the axes' tight boxes
+    and :func:`texts_of`; a tick label of the same text and font on another axes or
+    figure is the same layout).  The layout depends on nothing else (not on where the
+    text is: an Agg renderer measures a text by its font and dpi alone); a wrapped text
+    (laid out by its position) is computed each time."""
+    from matplotlib import rcParams
+    from matplotlib.text import Text
+
+    real = Text._get_layout
+    if len(_LAYOUTS) > 200000:
+        _LAYOUTS.clear()
+    settings = tuple((k, repr(rcParams[k])) for k in sorted(rcParams)
+                     if k.startswith(("text.", "font.", "mathtext.")))
+
+    def get_layout(self, renderer):
+        if self.get_wrap():
+            return real(self, renderer)
+        fp = self._fontproperties
+        key = (self._text, tuple(fp.get_family()), fp.get_style(), fp.get_variant(),
+               fp.get_weight(), fp.get_stretch(), fp.get_size(), fp.get_file(),
+               fp.get_math_fontfamily(), self.get_usetex(),
+               self._parse_math, self._linespacing, self._multialignment,
+               self._horizontalalignment, self._verticalalignment, self.get_rotation(),
+               self.get_rotation_mode(), self.get_figure(root=True).dpi,
+               type(renderer), renderer.dpi, settings)
+        hit = _LAYOUTS.get(key)
+        if hit is None:
+            hit = _LAYOUTS[key] = real(self, renderer)
+        return hit
+
+    Text._get_layout = get_layout
+    try:
+        yield
+    finally:
+        Text._get_layout = real
+
+
 def drawn(fig):
     """Lay ``fig`` out as Agg draws it, without rasterising it: the figure is drawn with
     an Agg renderer whose ``draw_*`` calls do nothing (matplotlib's
@@ -197,9 +248,31 @@ def drawn(fig):
     while len(_RENDERERS) > 4:
         del _RENDERERS[next(iter(_RENDERERS))]
     canvas.renderer, canvas._lastKey = renderer, key    # canvas.get_renderer() is it
-    with renderer._draw_disabled():
+    with renderer._draw_disabled(), _lines_not_drawn():
         fig.draw(renderer)
     return renderer
+
+
+@contextlib.contextmanager
+def _lines_not_drawn():
+    """Within it, ``Line2D.draw`` (curves, tick marks, legend handles) does nothing but
+    mark the line drawn: with the renderer's drawing switched off it only prepares the
+    line's display path for the renderer, which no check reads (:func:`line_samples`
+    transforms each line's own path) and which places no text (tick labels, legends,
+    annotations and layout engines are placed by their own draw and extents).  A tenth
+    of a figure's layout for a drawing sheet of a thousand lines."""
+    from matplotlib.lines import Line2D
+
+    real = Line2D.draw
+
+    def draw(self, renderer):
+        self.stale = False
+
+    Line2D.draw = draw
+    try:
+        yield
+    finally:
+        Line2D.draw = real
 
 
 def _inside(points, bb, m):
@@ -220,8 +293,9 @@ def figure_problems(fig, margin_px=1.5, line_margin_px=2.0, edge=True):
         Check the texts against the figure's edge (False for a figure saved with a tight
         bounding box, whose edge is its content's).
     """
-    r = drawn(fig)
-    texts = texts_of(fig, r)
+    with _layouts_once():
+        r = drawn(fig)
+        texts = texts_of(fig, r)
     problems = []
     W, H = fig.bbox.width, fig.bbox.height
     m = margin_px
@@ -260,16 +334,18 @@ def figure_problems(fig, margin_px=1.5, line_margin_px=2.0, edge=True):
 _NO_MARKER = (None, "None", "none", "", " ")
 
 
-def marker_problems(fig, margin_px=0.5, edge=True):
+def marker_problems(fig, margin_px=0.5, edge=True, draw=True):
     """Every lone mark of ``fig`` (a ``Line2D`` with markers and no line) that is not
     drawn whole, as readable strings (empty: clean).
 
     A mark's extent is its marker size plus its edge width (points → pixels); a clipped
     mark (``clip_on``, the default) must lie inside its clip box (the axes), every mark
     inside the figure (``edge``: False for a figure saved with a tight bounding box).
-    ``margin_px`` lets the extent touch the border.
+    ``margin_px`` lets the extent touch the border.  ``draw=False``: the figure has
+    just been laid out (:func:`figure_problems` did) and is not changed since.
     """
-    drawn(fig)
+    if draw:
+        drawn(fig)
     W, H = fig.bbox.width, fig.bbox.height
     m = margin_px
     problems = []

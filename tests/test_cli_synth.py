@@ -263,9 +263,12 @@ PAPER = ["--phi0", "30", "--l2", "0.9", "--mu-min", "40", "--l1-step", "0.01", "
 
 
 @pytest.fixture(scope="module")
-def both(tmp_path_factory):
+def both(tmp_path_factory, figures_rendered_only_within):
     """The paper's example (seed 004, example 2 to Fig. 3) run in both languages into one
-    folder name each: {lang: (folder, printed lines)}."""
+    folder name each: {lang: (folder, printed lines)}.  Its tests read the terminal text,
+    the file names, tables, spec, workbook and the SVGs' texts: the SVGs are rendered,
+    the PNGs saved unrendered (test_paper_example_fig3_with_ground renders this example's
+    PNGs; their layout is checked in tests/test_figures_clean.py)."""
     import contextlib
     import io
 
@@ -273,7 +276,7 @@ def both(tmp_path_factory):
     for lang in ("ru", "en"):
         d = tmp_path_factory.mktemp("synth") / "out"
         buf = io.StringIO()
-        with contextlib.redirect_stdout(buf):
+        with contextlib.redirect_stdout(buf), figures_rendered_only_within(".svg"):
             assert main(["synth", *PAPER, "-o", str(d), "--lang", lang]) == 0
         out[lang] = (d, buf.getvalue().splitlines())
     return out

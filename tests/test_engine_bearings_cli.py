@@ -45,8 +45,13 @@ def _toml(d):
     return "\n".join(out) + "\n"
 
 
-def test_bearings_flag_writes_tables_equal_to_the_library(tmp_path, capsys):
-    """The diesel example, an inline 4 (firing 1-3-4-2, counterweights per throw)."""
+def test_bearings_flag_writes_tables_equal_to_the_library(tmp_path, capsys,
+                                                         figures_rendered_only):
+    """The diesel example, an inline 4 (firing 1-3-4-2, counterweights per throw).  Its
+    bearing plots are rendered; its engine plots are built, not drawn (the same plots of
+    ``crankdyn engine --example diesel --lang en`` are rendered in the session's shared
+    report, tests/test_engine_cli.py)."""
+    saved = figures_rendered_only(*(f"_{stem}." for stem in BEARING_PLOT_NAMES))
     out = tmp_path / "o"
     assert main(["engine", "--example", "diesel", "-o", str(out), "--bearings",
                  "--lang", "en"]) == 0
@@ -58,6 +63,7 @@ def test_bearings_flag_writes_tables_equal_to_the_library(tmp_path, capsys):
     for stem in BEARING_PLOT_NAMES[:-1]:
         for ext in ("png", "svg"):
             assert (out / f"diesel-d240_{stem}.{ext}").stat().st_size > 1000, stem
+    assert sum(r for _, r in saved) == 2 * (len(BEARING_PLOT_NAMES) - 1)
     study = engine.load(example_path("diesel_d240.toml"))
     spec = study.spec
     t = engine.force_table(spec, settings=study.settings)
@@ -135,7 +141,11 @@ def test_one_cylinder_spec_with_bearing_tables(tmp_path, capsys, unrendered_figu
     assert summ["crank pin 1"][0] == fine.pin_wear.oil_hole_deg
 
 
-def test_rigid_rod_spec_writes_rod_model(tmp_path, capsys):
+def test_rigid_rod_spec_writes_rod_model(tmp_path, capsys, figures_rendered_only):
+    """A rigid rod: the rod model's table and plot.  The plots it names are rendered
+    (the rod model's only here), the others built, not drawn (the diesel's engine and
+    bearing plots are rendered in the test above and the session's shared report)."""
+    saved = figures_rendered_only("_rod_model.", "_wear_pins.", "_wear_journals.")
     d = tomllib.loads(example_path("diesel_d240.toml").read_text())
     d = copy.deepcopy(d)
     d["pressure"]["file"] = str(example_path("diesel_d240_indicator.csv"))
@@ -153,6 +163,9 @@ def test_rigid_rod_spec_writes_rod_model(tmp_path, capsys):
     assert (out / "diesel-d240_rod_model.png").exists()
     assert (out / "diesel-d240_wear_pins.svg").exists()
     assert (out / "diesel-d240_wear_journals.png").exists()
+    for name in ("rod_model.png", "rod_model.svg", "wear_pins.svg", "wear_journals.png"):
+        assert (out / f"diesel-d240_{name}").stat().st_size > 1000, name
+    assert sorted(n.split(".")[-1] for n, r in saved if r) == ["png"] * 3 + ["svg"] * 3
 
 
 def test_bad_bearing_keys_exit_2_and_write_nothing(tmp_path, capsys):

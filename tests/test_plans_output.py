@@ -114,8 +114,10 @@ def test_files(ratchet_run, press_run):
         assert (lv["scale"] == r["scale_N_per_mm"]).all() and "Fb" in set(lv["segment"])
 
 
-def test_given_lever_scale(tmp_path):
-    """--mu-lever fixes the lever's force scale: every lever arrow is F/μ of it."""
+def test_given_lever_scale(tmp_path, figures_rendered_only):
+    """--mu-lever fixes the lever's force scale: every lever arrow is F/μ of it.  (Its
+    tables only: the drawings saved unrendered.)"""
+    figures_rendered_only()
     out = tmp_path / "out"
     assert main(["linkage", "--example", "-o", str(out), "--plans", "5", "--no-plots",
                  "--mu-lever", "50"]) == 0
@@ -127,9 +129,11 @@ def test_given_lever_scale(tmp_path):
     assert (t[t["plan"] != "lever"]["scale"] != 50.0).any()       # the others unchanged
 
 
-def test_two_mechanisms_share_a_folder(tmp_path):
+def test_two_mechanisms_share_a_folder(tmp_path, figures_rendered_only):
     """The plans of two mechanisms written into one folder keep each other's files: each
-    run replaces only the files named after its own mechanism."""
+    run replaces only the files named after its own mechanism.  (A check of names and
+    bytes kept: the drawings are saved unrendered; ratchet_run and press_run render them.)"""
+    figures_rendered_only()
     out = tmp_path / "both"
     assert main(["linkage", "--example", "-o", str(out), "--plans", "5,11",
                  "--no-plots"]) == 0
@@ -149,9 +153,11 @@ def test_two_mechanisms_share_a_folder(tmp_path):
     assert press_plans["position"].unique().tolist() == [2]
 
 
-def test_mechanism_names_with_a_common_prefix(tmp_path):
+def test_mechanism_names_with_a_common_prefix(tmp_path, figures_rendered_only):
     """``press`` and ``press_b`` in one folder: the run of ``press`` keeps ``press_b``'s
-    plans (their names start with ``press_`` too; the manifest knows whose they are)."""
+    plans (their names start with ``press_`` too; the manifest knows whose they are).
+    (Drawings saved unrendered, as in the test above.)"""
+    figures_rendered_only()
     text = example_path("press.toml").read_text(encoding="utf-8")
     assert text.count(f'name = "{PRESS}"') == 1
     specs = {}

@@ -54,11 +54,13 @@ def _english_words(text, allowed):
 
 # ------------------------------------------------------------------------------ linkage
 @pytest.fixture(scope="module")
-def ratchet_plans(tmp_path_factory):
+def ratchet_plans(tmp_path_factory, figures_rendered_only_within):
     """``plans.study.run_study`` of the ratchet with the plans of positions 5 and 11 (no
     plots), run once in an empty working folder that it must leave empty (the run writes
     nothing), and its report written once in English (``linkage.study.write_report``):
-    ``(report, written, folder)`` for the tests that read them (read-only)."""
+    ``(report, written, folder)`` for the tests that read them (read-only).  Its tests
+    read tables, file names and summaries: the drawings are saved unrendered (the
+    ratchet's plans 5 and 11 are rendered in tests/test_plans_output.py's ratchet_run)."""
     from linkage.study import write_report
     from plans.study import run_study
 
@@ -70,7 +72,9 @@ def ratchet_plans(tmp_path_factory):
     finally:
         os.chdir(here)
     out = cwd / "out"
-    return report, write_report(report, out, lang="en"), out
+    with figures_rendered_only_within():
+        written = write_report(report, out, lang="en")
+    return report, written, out
 
 
 @pytest.mark.parametrize("example, argv, kw", [
@@ -80,11 +84,16 @@ def ratchet_plans(tmp_path_factory):
 ])
 def test_linkage_study_gives_the_cli_tables_and_writes_what_it_lists(example, argv, kw,
                                                                      tmp_path, monkeypatch,
-                                                                     request):
+                                                                     request,
+                                                                     figures_rendered_only):
     """The ratchet's study and its English report are the module's (:func:`ratchet_plans`,
-    which checks that the run writes nothing), the press's are run here."""
+    which checks that the run writes nothing), the press's are run here.  Tables, file
+    names and the summary are compared: the drawings are saved unrendered (the plans of
+    both mechanisms are rendered in tests/test_plans_output.py)."""
     from linkage.study import summary_lines, write_report
     from plans.study import run_study
+
+    figures_rendered_only()
 
     cli = tmp_path / "cli"
     stdout, _ = _cli(["linkage", str(example_path(example)), "-o", str(cli), "--no-plots",
@@ -145,9 +154,13 @@ def test_linkage_summary_in_both_languages_with_plural_forms(ratchet_plans):
                            " ratchet-drive.xlsx") and "ratchet-drive_sheet.dxf" in last
 
 
-def test_linkage_measured_segments_are_written_and_listed(tmp_path):
+def test_linkage_measured_segments_are_written_and_listed(tmp_path, figures_rendered_only):
+    """The measured segments' error table written and listed (the drawing saved
+    unrendered: tests/test_plans_output.py's press_run renders a run with measurements)."""
     from linkage.study import summary_lines, write_report
     from plans.study import run_study
+
+    figures_rendered_only()
 
     measured = tmp_path / "m.csv"
     measured.write_text("position,segment,length_mm\n5,pb,50\n", encoding="utf-8")
