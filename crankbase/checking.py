@@ -62,6 +62,22 @@ class StudentTable:
     source: Path | None = None
     ignored: list = field(default_factory=list)
 
+    #: The student's workbook as :func:`read_student_table` loaded it (formulas kept), for
+    #: :func:`mark_workbook` to mark instead of loading the file again (it takes it: a
+    #: second marking loads the file afresh); None for a CSV.  Not compared, not pickled.
+    _book = None
+
+    def __getstate__(self):
+        state = dict(self.__dict__)
+        state.pop("_book", None)
+        return state
+
+
+def _has_formulas(wb) -> bool:
+    """Whether a cell of ``wb`` (loaded with its formulas) holds a formula: without one,
+    the values of a ``data_only`` load are the very same."""
+    return any(c.data_type == "f" for ws in wb.worksheets for c in ws._cells.values())
+
 
 def parse_mapping(items) -> dict:
     """``["T, Н=T_N", "α=alpha_deg"]`` → {"T, Н": "T_N", "α": "alpha_deg"}: a column
@@ -144,7 +160,12 @@ def read_student_table(path, key, known, mapping=None) -> StudentTable:
         from openpyxl import load_workbook
 
         try:
-            wb = load_workbook(path, data_only=True)
+            # loaded once as mark_workbook marks it (formulas kept); the values are read
+            # from it unless a cell holds a formula (then from the values last computed,
+            # data_only)
+            book = wb = load_workbook(path)
+            if _has_formulas(book):
+                wb = load_workbook(path, data_only=True)
         except _unreadable() as exc:        # a damaged workbook, a file that is not one
             raise SpecError(Problem(path.name, Text("errors.checking.cannot_read",
                                                     {"reason": str(exc)}))) from None
@@ -186,7 +207,9 @@ def read_student_table(path, key, known, mapping=None) -> StudentTable:
         data = join_words(frames, key, path)
         sheets = cells.pop("_sheets")
         # rows of later sheets are matched by key: re-point their cells
-        return StudentTable(data, _repoint(cells, frames, data, key, sheets), path, ignored)
+        table = StudentTable(data, _repoint(cells, frames, data, key, sheets), path, ignored)
+        table._book = book
+        return table
     import csv
 
     try:
@@ -320,7 +343,9 @@ def mark_workbook(student: StudentTable, check, dst, lang="en") -> int:
     from .workbook import save
 
     t = texts(lang)
-    wb = load_workbook(student.source)
+    wb, student._book = student._book, None           # the workbook read, taken once
+    if wb is None:
+        wb = load_workbook(student.source)
     red = PatternFill("solid", fgColor="FF7C80")
     n = 0
     for rec in check[~check["ok"]].itertuples(index=False):

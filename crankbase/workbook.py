@@ -34,7 +34,7 @@ __all__ = ["A4_LANDSCAPE_PRINT_CM", "FONT", "HEAD_FILL", "MAX_ROWS", "MAX_WIDTH"
            "text_width", "wrapped_lines", "columns_cm", "number_format", "shown", "font",
            "style_header",
            "table_blocks", "unify_fonts", "fit_numbers", "fit_columns", "fit_rows",
-           "page_setup", "finish", "save", "bounded", "filled_cells", "sheet_rows", "thinned_note", "summary_workbook", "new_workbook",
+           "page_setup", "finish", "save", "set_number_format", "put_numbers", "bounded", "filled_cells", "sheet_rows", "thinned_note", "summary_workbook", "new_workbook",
            "words", "Words", "header_rows"]
 
 #: The one font family of every workbook (metric twin: Liberation Sans).
@@ -289,14 +289,51 @@ def fit_numbers(ws):
     in_table = set()
     for col, r0, r1 in table_blocks(ws):
         cells = [ws.cell(r, col) for r in range(r0, r1 + 1)]
-        fmt = number_format(c.value for c in cells)
-        for c in cells:
-            c.number_format = fmt
-            in_table.add((c.row, col))
+        set_number_format(cells, number_format(c.value for c in cells))
+        in_table.update((r, col) for r in range(r0, r1 + 1))
     for c in filled_cells(ws):
         if _is_number(c.value) and (c.row, c.column) not in in_table \
                 and c.number_format != "@":
             c.number_format = number_format([c.value])
+
+
+def set_number_format(cells, fmt):
+    """``c.number_format = fmt`` for every cell of ``cells`` (of one workbook), the
+    format looked up (or added to the workbook's formats) once: what openpyxl's setter
+    does per cell."""
+    from openpyxl.styles.cell_style import StyleArray
+    from openpyxl.styles.numbers import BUILTIN_FORMATS_MAX_SIZE, BUILTIN_FORMATS_REVERSE
+
+    idx = None
+    for c in cells:
+        if idx is None:
+            idx = BUILTIN_FORMATS_REVERSE.get(fmt)
+            if idx is None:
+                idx = c.parent.parent._number_formats.add(fmt) + BUILTIN_FORMATS_MAX_SIZE
+        if not c._style:
+            c._style = StyleArray()
+        c._style.numFmtId = idx
+
+
+def put_numbers(ws, r0, c0, rows):
+    """Write ``rows`` (lists of Python ints and floats, or None) into ``ws`` from cell
+    ``(r0, c0)``: what ``ws.cell(r, c).value = v`` does, new cells made at once (a
+    table's body is most of a workbook's cells); a cell already there is set as usual."""
+    from openpyxl.cell.cell import Cell
+
+    cells = ws._cells
+    r = r0 - 1
+    for r, values in enumerate(rows, start=r0):
+        for j, v in enumerate(values, start=c0):
+            kind = type(v)
+            if (r, j) in cells or not (v is None or kind is float or kind is int):
+                ws.cell(r, j).value = v
+                continue
+            c = Cell(ws, row=r, column=j)
+            c._value = v                      # data type "n", as openpyxl binds a number
+            cells[(r, j)] = c
+    if r >= r0:
+        ws._current_row = max(ws._current_row, r)
 
 
 def _cell_style(c):
@@ -368,14 +405,35 @@ def fit_columns(ws, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH):
         return st
 
     need = {}
+    # numbers in a fixed format (0.000): the widest shown of a column's numbers of one
+    # style is its largest or its most negative one (rounding keeps the order, every
+    # digit is as wide as 0): {(column, style): [largest, most negative]}
+    extremes = {}
     for c in cells:
         if (c.row, c.column) in covered or (c.row, c.column) in first:
             continue
         st = style(c)
-        if isinstance(c.value, str) and lone(c) and not st[2]:
+        v = c.value
+        if _is_number(v) and (not isinstance(v, float) or math.isfinite(v)):
+            d = _decimals(st[3])
+            if d is not None and not d[1]:
+                e = extremes.get((c.column, st))
+                if e is None:
+                    e = extremes[(c.column, st)] = [None, None]
+                if v > 0 or v == 0 and math.copysign(1.0, v) > 0:     # not -0.0
+                    if e[0] is None or v > e[0]:
+                        e[0] = v
+                elif e[1] is None or v < e[1] or (v == e[1] == 0):
+                    e[1] = v
+                continue
+        elif isinstance(v, str) and lone(c) and not st[2]:
             continue                # a title runs over the empty cells beside it
-        w, _ = _need(c.value, st)
+        w, _ = _need(v, st)
         need[c.column] = max(need.get(c.column, 0.0), w)
+    for (col, st), pair in extremes.items():
+        for v in pair:
+            if v is not None:
+                need[col] = max(need.get(col, 0.0), _need(v, st)[0])
     for col, w in need.items():
         letter = get_column_letter(col)
         if letter in fixed or ws.column_dimensions[letter].hidden:

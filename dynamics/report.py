@@ -159,22 +159,23 @@ def build_workbook(result: dict, lang="en", name=None):
 
     import numpy as np
 
+    from crankbase.workbook import put_numbers, set_number_format
+
     def sheet(title, df, symbols=None):
         num = df.select_dtypes("number")
         if not np.all(np.isfinite(num.to_numpy())):
             raise ValueError(f"sheet {title}: a value is not finite")
         s = wb.create_sheet(title)
         header_rows(s, 1, [column_label(c, lang, symbols) for c in df.columns], df.columns)
-        for rec in df.itertuples(index=False):
-            s.append([float(v) for v in rec])
+        put_numbers(s, 3, 1, [[float(v) for v in rec] for rec in df.itertuples(index=False)])
         for j, col in enumerate(df.columns, start=1):
             letter = get_column_letter(j)
             s.column_dimensions[letter].width = 13
             # about six significant digits of the column's largest value (the cells keep
             # every digit: the CSV's numbers)
             fmt = _value_format(float(np.abs(df[col].to_numpy(float)).max()))
-            for (c,) in s.iter_rows(min_row=3, min_col=j, max_col=j):
-                c.number_format = fmt
+            set_number_format([c for (c,) in s.iter_rows(min_row=3, min_col=j, max_col=j)],
+                              fmt)
         # the labels wrap at the column width (13): room for their longest
         s.row_dimensions[1].height = 13 * max(math.ceil(len(c.value) / 9) for c in s[1])
         s.freeze_panes = "B3"

@@ -310,6 +310,56 @@ def test_altered_cells_are_flagged_exactly(tmp_path, capsys, cli_report, form):
     assert "T_N            WRONG 2 of" in text and "M_Nm           right" in text
 
 
+def test_check_reads_a_formula_by_its_value_and_marks_it_keeping_the_formula(
+        petrol_report, tmp_path):
+    """A student's cell computed by a formula is checked by the value the spreadsheet
+    last computed (what a ``data_only`` reading gives), and the marked copy keeps the
+    formula: one T_N cell ``=1.3*…`` (30 % off, flagged), one M_Nm cell ``=1*…`` (right).
+    openpyxl writes no computed value, so the values are put into the sheet's XML as
+    Excel and LibreOffice leave them."""
+    import re
+    import zipfile
+
+    from crankbase.checking import check_table, write_check
+    from engine.check import check_side
+
+    wb = load_workbook(petrol_report / "petrol-vaz2106.xlsx")
+    ws = wb.worksheets[1]                        # Table 2: keys in hidden row 5
+    keys = [c.value for c in ws[5]]
+    rows = {ws.cell(r, 1).value: r for r in range(6, ws.max_row + 1)}
+    edits = {}                                   # coordinate → (formula, value)
+    for a, col, f in ((30.0, "T_N", 1.3), (60.0, "M_Nm", 1.0)):
+        c = ws.cell(rows[a], keys.index(col) + 1)
+        edits[c.coordinate] = (f"{f!r}*{c.value!r}", f * c.value)
+        c.value = f"={edits[c.coordinate][0]}"
+    plain = tmp_path / "plain.xlsx"
+    wb.save(plain)
+    student = tmp_path / "student.xlsx"
+    with zipfile.ZipFile(plain) as zin, zipfile.ZipFile(student, "w") as zout:
+        for item in zin.infolist():
+            data = zin.read(item)
+            if item.filename == "xl/worksheets/sheet2.xml":
+                text = data.decode()
+                for coord, (formula, value) in edits.items():
+                    text, n = re.subn(rf'(<c r="{coord}"[^>]*>)<f>([^<]*)</f>(<v\s*/>|<v>'
+                                      rf'</v>)?', rf"\1<f>\2</f><v>{value!r}</v>", text)
+                    assert n == 1, coord
+                data = text.encode()
+            zout.writestr(item, data)
+    result = check_table(check_side(engine.load(PETROL)), student)
+    bad = result.table.loc[~result.table["ok"], ["alpha_deg", "column"]].values.tolist()
+    assert bad == [[30.0, "T_N"]]
+    got = result.table.set_index(["alpha_deg", "column"])["student"]
+    assert got[(30.0, "T_N")] == edits[ws.cell(rows[30.0], keys.index("T_N") + 1)
+                                      .coordinate][1]
+    files = write_check(result, tmp_path / "out", "en")
+    assert files.n_marked == 1
+    marked = load_workbook(files.marked).worksheets[1]
+    for coord, (formula, _) in edits.items():
+        assert marked[coord].value == f"={formula}", coord
+    assert marked[next(iter(edits))].fill.fgColor.rgb in ("00FF7C80", "FFFF7C80")
+
+
 def test_check_csv_with_a_column_mapping(petrol_report, tmp_path, capsys):
     df = pd.read_csv(petrol_report / "petrol-vaz2106_forces.csv")
     student = df[["alpha_deg", "T_N", "K_N"]].rename(columns={"alpha_deg": "α",

@@ -151,7 +151,7 @@ def add_bearing_sheets(wb, tables, analysis, lang="ru"):
 
     readable_numbers(ws, {"A": 46}, default_width=14, per_column=False)
 
-    from crankbase.workbook import sheet_rows, thinned_note
+    from crankbase.workbook import put_numbers, sheet_rows, thinned_note
 
     for fname, df in tables.items():
         sh = wb.create_sheet(names[fname])
@@ -162,10 +162,7 @@ def add_bearing_sheets(wb, tables, analysis, lang="ru"):
             _put(sh, 1, len(df.columns) + 2, thinned_note(df, shown, fname, lang))
             sh.merge_cells(start_row=1, start_column=len(df.columns) + 2, end_row=1,
                            end_column=len(df.columns) + 7)
-        values = shown.to_numpy()
-        for r in range(values.shape[0]):
-            for c in range(values.shape[1]):
-                sh.cell(r + 2, c + 1).value = float(values[r, c])
+        put_numbers(sh, 2, 1, shown.to_numpy(dtype=float).tolist())
         sh.freeze_panes = "B2"
         readable_numbers(sh, default_width=12)
     return wb

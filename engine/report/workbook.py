@@ -373,7 +373,7 @@ def _put_columns(ws, df, names, c0):
     longer curve is thinned, its every column's largest and smallest row kept (so a chart
     drawn from it peaks where the summary says).  Returns ({name: column}, first row,
     last row)."""
-    from crankbase.workbook import bounded
+    from crankbase.workbook import bounded, put_numbers
 
     arr = df[list(names)].to_numpy(float)
     keep = np.r_[np.argmax(arr, axis=0), np.argmin(arr, axis=0)]
@@ -381,9 +381,7 @@ def _put_columns(ws, df, names, c0):
     col = {name: c0 + j for j, name in enumerate(names)}
     for j, name in enumerate(names):
         ws.cell(1, c0 + j, name)
-    for i, rowvals in enumerate(arr[idx].tolist(), start=2):
-        for j, v in enumerate(rowvals):
-            ws.cell(i, c0 + j).value = v
+    put_numbers(ws, 2, c0, arr[idx].tolist())
     return col, 2, 1 + len(idx)
 
 
@@ -569,6 +567,8 @@ def readable_numbers(ws, widths=None, default_width=None, per_column=True):
     from openpyxl.styles import Alignment
     from openpyxl.utils import get_column_letter
 
+    from crankbase.workbook import set_number_format
+
     def fmt(a):
         return "0" if a >= 1e5 else "0.0" if a >= 1e3 else "0.00" if a >= 1 else "0.0000"
 
@@ -579,11 +579,15 @@ def readable_numbers(ws, widths=None, default_width=None, per_column=True):
     for c in numbers:
         top[c.column] = max(top.get(c.column, 0.0), abs(c.value))
         whole[c.column] = whole.get(c.column, True) and float(c.value).is_integer()
+    by_format = {}                  # {format: cells}, formats in the order first met
     for c in numbers:
         if whole[c.column] or float(c.value).is_integer() and not per_column:
-            c.number_format = "0"
+            by_format.setdefault("0", []).append(c)
         else:
-            c.number_format = fmt(top[c.column] if per_column else abs(c.value))
+            by_format.setdefault(fmt(top[c.column] if per_column else abs(c.value)),
+                                 []).append(c)
+    for f, group in by_format.items():
+        set_number_format(group, f)
     for c in cells:
         if (isinstance(c.value, str) and c.font.b
                 and not (c.font.sz and c.font.sz > 11)):   # headers, not titles
