@@ -137,7 +137,8 @@ def _add_to(a, t):
 
 
 def _add_first(t, b):
-    """``_plus(t, b)`` with ``t`` fresh: the sum written into ``t``."""
+    """``_plus(t, b)`` with ``t`` fresh: the sum written into ``t``.  Not ``_add_to(b, t)``:
+    the sum of a NaN takes the first operand's NaN, so the operands keep their order."""
     if type(b) is float and b == 0.0:
         return t
     if type(t) is float and t == 0.0:
