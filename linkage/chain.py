@@ -424,7 +424,7 @@ def _assembly_measure(grp, s):
     return None
 
 
-def solve(mech: Mechanism, phi, omega=1.0, eps=0.0, *, check=True) -> ChainResult:
+def solve(mech: Mechanism, phi, omega=1.0, eps=0.0, *, check=True, out=None) -> ChainResult:
     """Kinematics of the chain at crank angles ``phi`` [rad]: driver, then the groups in
     order.
 
@@ -438,6 +438,11 @@ def solve(mech: Mechanism, phi, omega=1.0, eps=0.0, *, check=True) -> ChainResul
     check : bool
         Raise :class:`AssemblyError` naming the crank angles where a group cannot be
         assembled.
+    out : dict, optional
+        Joint or named point → six float arrays (x, y, vx, vy, ax, ay over the positions,
+        a table's rows): the crank pin and the links' named points are computed straight
+        into them (:meth:`linkage.groups.LinkMotion.point`), as each link is solved; the
+        same values as without.  A joint a group solves is not written.
 
     Returns
     -------
@@ -446,9 +451,15 @@ def solve(mech: Mechanism, phi, omega=1.0, eps=0.0, *, check=True) -> ChainResul
     phi = np.asarray(phi, dtype=float)
     d = mech.driver
     cr = g.crank(phi, omega, eps, d.length, mech.frame[d.pivot])
+    todo = None
+    if out is not None:
+        todo = {p: rows for p, rows in out.items() if p not in mech.frame and p != d.joint}
     res = ChainResult(mech, phi, {d.link: cr},
                       {**{k: _frame_point(z) for k, z in mech.frame.items()},
-                       d.joint: cr.point(d.length)}, [])
+                       d.joint: cr.point(d.length, None if out is None else out.get(d.joint))},
+                      [])
+    if todo:
+        _points_into(res, {d.link: cr}, todo)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for k, grp in enumerate(mech.groups):
             s, links, joints = _solve_group(res, grp)
@@ -457,7 +468,25 @@ def solve(mech: Mechanism, phi, omega=1.0, eps=0.0, *, check=True) -> ChainResul
             res.solutions.append(s)
             res.links.update(links)
             res.joints.update(joints)
+            if todo:
+                _points_into(res, links, todo)
     return res
+
+
+def _points_into(res, links, todo):
+    """The named points of the new ``links`` (name → motion, in the order of
+    ``res.links``) that :func:`_lookup` finds on them computed into their rows ``todo``
+    (name → six arrays; done ones dropped): on the first link that names the point, as
+    :func:`_lookup` searches."""
+    for p in list(todo):
+        if p in res.joints:
+            del todo[p]
+            continue
+        for ln, motion in links.items():
+            local = res.mech.links[ln].points.get(p)
+            if local is not None:
+                motion.point(local, todo.pop(p))
+                break
 
 
 def _fmt_angles(phi):

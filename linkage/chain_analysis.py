@@ -387,12 +387,11 @@ def new_joints(grp) -> tuple:
 
 class _Sink:
     """The columns of one chunk of positions, by name, in the order written: fresh arrays
-    (the first chunk, which tells the names) or the rows of the two preallocated blocks
-    (every later chunk, written in place).  ``course``: also the course tables' magnitudes
-    (|v|, |a|, |a_cor|, |R|)."""
+    (the first chunk, which tells the names).  ``course``: also the course tables'
+    magnitudes (|v|, |a|, |a_cor|, |R|)."""
 
-    def __init__(self, n, course=True, rows=None):
-        self.n, self.course, self.rows, self.cols = n, course, rows, {}
+    def __init__(self, n, course=True):
+        self.n, self.course, self.cols = n, course, {}
 
     def __contains__(self, name):
         return name in self.cols
@@ -402,30 +401,79 @@ class _Sink:
 
     def out(self, name):
         """The array that column ``name`` of this chunk is written into."""
-        row = np.empty(self.n) if self.rows is None else self.rows[name]
-        self.cols[name] = row
+        row = self.cols[name] = np.empty(self.n)
         return row
 
 
-def _solve_positions(spec, summary, phi):
+class _RowSink(_Sink):
+    """The columns of every later chunk: the rows of the two preallocated blocks (``cols``:
+    column name → the chunk's slice of its row, in the order of the first chunk), written
+    in place; a scalar value (ω of a link turning steadily) fills its slice."""
+
+    def __init__(self, n, course, rows):
+        self.n, self.course, self.cols = n, course, rows
+
+    def __setitem__(self, name, value):
+        row = self.cols[name]
+        if value is not row:                  # (a point computed into its rows: there)
+            row[...] = value
+
+    def out(self, name):
+        return self.cols[name]
+
+
+def _point_rows(K, p):
+    """The six rows (x, y, vx, vy, ax, ay) of point ``p`` in ``K`` (:class:`_RowSink`)."""
+    c = K.cols
+    return (c[f"x_{p}_m"], c[f"y_{p}_m"], c[f"vx_{p}_m_s"], c[f"vy_{p}_m_s"],
+            c[f"ax_{p}_m_s2"], c[f"ay_{p}_m_s2"])
+
+
+def _solve_into(spec, phi, names, K):
+    """:func:`linkage.chain.solve` at ``phi`` with the crank pin and the links' named
+    points of ``names`` computed straight into their rows of ``K`` (as each link is
+    solved), then the centres of mass of the links with mass (before the loads and the
+    kinetostatics ask for them; :meth:`linkage.groups.LinkMotion.point` keeps them): one
+    copy fewer per such column, the same bits.  A joint a group solves is copied."""
+    mech = spec.mechanism
+    res = ch.solve(mech, phi, spec.omega, spec.epsilon,
+                   out={p: _point_rows(K, p) for p in names})
+    for ln in mech.link_names:
+        lk = mech.links[ln]
+        if lk.mass:
+            res.links[ln].point(lk.cg, _point_rows(K, f"S_{ln}"))
+    return res
+
+
+def _solve_positions(spec, summary, phi, into=None):
     """The chain at crank angles ``phi`` [rad]: motion, loads, kinetostatics:
-    ``(motion, reactions, (forces, moments), resistance)``."""
-    res = ch.solve(spec.mechanism, phi, spec.omega, spec.epsilon)
+    ``(motion, reactions, (forces, moments), resistance)``.  ``into``: (point names,
+    :class:`_RowSink`) whose rows the points are computed into (:func:`_solve_into`)."""
+    if into is None:
+        res = ch.solve(spec.mechanism, phi, spec.omega, spec.epsilon)
+    else:
+        res = _solve_into(spec, phi, *into)
     forces, moments, r = chain_loads(spec, res, summary)
     cf = ch.kinetostatics(res, forces, moments, spec.gravity)
     return res, cf, (forces, moments), r
 
 
-def _columns(spec, res, cf, res_force, K, F):
-    """One chunk's kinematics columns into ``K`` and force columns into ``F``
-    (:class:`_Sink`), in the order of the tables."""
-    mech = spec.mechanism
-    np.multiply(res.phi, _DEG, out=K.out("phi_deg"))
+def _point_names(mech):
+    """The moving joints and the links' named points, in the order of the columns: the
+    crank pin and the crank's points, then each group's links' points and new joints."""
     names = [mech.driver.joint] + list(mech.links[mech.driver.link].points)
     for grp in mech.groups:
         for ln in grp.links:
             names += [p for p in mech.links[ln].points if p not in names]
         names += [j for j in new_joints(grp) if j not in names]
+    return names
+
+
+def _columns(spec, res, cf, res_force, K, F, names):
+    """One chunk's kinematics columns into ``K`` and force columns into ``F``
+    (:class:`_Sink`), in the order of the tables; ``names``: :func:`_point_names`."""
+    mech = spec.mechanism
+    np.multiply(res.phi, _DEG, out=K.out("phi_deg"))
     for j in names:
         _point_columns(j, res.point(j), K)
     for ln in mech.link_names:
@@ -434,8 +482,9 @@ def _columns(spec, res, cf, res_force, K, F):
             _point_columns(f"S_{ln}", res.links[ln].point(lk.cg), K)
     for ln in mech.link_names:
         np.multiply(res.links[ln].theta, _DEG, out=K.out(f"theta_{ln}_deg"))
-        K[f"omega_{ln}_rad_s"] = res.omega(ln)
-        K[f"eps_{ln}_rad_s2"] = res.eps(ln)
+        lm = res.links[ln]                   # a float ω, ε fills its column
+        K[f"omega_{ln}_rad_s"] = lm.omega
+        K[f"eps_{ln}_rad_s2"] = lm.eps
     for grp, s in zip(mech.groups, res.solutions):
         _slide_columns(grp, s, K)
     for key, mu in transmission_angles(res).items():
@@ -465,23 +514,25 @@ def _tables(spec, summary, phi, positions, course_tables=True):
 
     n = len(phi)
     whole = None
+    names = _point_names(spec.mechanism)
     for a in range(0, max(n, 1), g.CHUNK):
         b = min(n, a + g.CHUNK)
-        res, cf, loads, r = _solve_positions(spec, summary, phi[a:b])
-        if a == 0:                        # the first chunk names the columns
-            K, F = _Sink(b, course_tables), _Sink(b, course_tables)
-            _columns(spec, res, cf, r, K, F)
-            kcols, fcols = list(K.cols), list(F.cols)
-            kblock, fblock = g.column_block(len(kcols), n), g.column_block(len(fcols), n)
-            for block, sink in ((kblock, K), (fblock, F)):
-                for row, v in zip(block, sink.cols.values()):
-                    row[:b] = v
-            if b == n:
-                whole = (res, cf, loads)
+        if a:
+            K = _RowSink(b - a, course_tables, {c: row[a:b] for c, row in zip(kcols, kblock)})
+            F = _RowSink(b - a, course_tables, {c: row[a:b] for c, row in zip(fcols, fblock)})
+            res, cf, loads, r = _solve_positions(spec, summary, phi[a:b], (names, K))
+            _columns(spec, res, cf, r, K, F, names)
             continue
-        K = _Sink(b - a, course_tables, {c: row[a:b] for c, row in zip(kcols, kblock)})
-        F = _Sink(b - a, course_tables, {c: row[a:b] for c, row in zip(fcols, fblock)})
-        _columns(spec, res, cf, r, K, F)
+        res, cf, loads, r = _solve_positions(spec, summary, phi[a:b])
+        K, F = _Sink(b, course_tables), _Sink(b, course_tables)   # the first chunk names
+        _columns(spec, res, cf, r, K, F, names)                    # the columns
+        kcols, fcols = list(K.cols), list(F.cols)
+        kblock, fblock = g.column_block(len(kcols), n), g.column_block(len(fcols), n)
+        for block, sink in ((kblock, K), (fblock, F)):
+            for row, v in zip(block, sink.cols.values()):
+                row[:b] = v
+        if b == n:
+            whole = (res, cf, loads)
     if positions is None:
         pos = pd.arrays.IntegerArray(np.zeros(n, np.int64), np.ones(n, bool))
     else:

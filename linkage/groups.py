@@ -146,6 +146,22 @@ def _add_first(t, b):
     return _into(np.add, t, b)
 
 
+def _add_out(a, t, out):
+    """``out[...] = _add_to(a, t)`` with the sum computed straight into ``out`` where
+    :func:`_add_to` adds two arrays (``np.add(a, t)``, the same operands in the same
+    order: the same bits, NaN payloads too); returns ``out``."""
+    if type(t) is float and t == 0.0:
+        out[...] = a
+    elif type(a) is float and a == 0.0:
+        out[...] = t
+    elif type(t) is np.ndarray and t.dtype is _F8 and t.shape == out.shape and (
+            type(a) is float or type(a) is np.ndarray and a.dtype is _F8 and a.shape == t.shape):
+        np.add(a, t, out=out)
+    else:
+        out[...] = a + t
+    return out
+
+
 def _vadd(a, t):
     """``a + t`` of two vectors, ``t`` a fresh product of this routine (a :class:`Vec`
     product's components are new arrays, or float constants): the sum written into
@@ -414,23 +430,34 @@ class LinkMotion:
             self._theta = self.e.angle if self._same_e is None else self._same_e.theta
         return self._theta
 
-    def point(self, local) -> PointMotion:
+    def point(self, local, out=None) -> PointMotion:
         """Motion of the point with local coordinates ``local`` (complex or real, m).
 
         The result is kept: the tables and the link's wrench ask for the same centre of
-        mass."""
+        mass.  ``out``: six float arrays (x, y, vx, vy, ax, ay over the positions) that a
+        point not yet computed (and not the origin) is written into, the last operation of
+        each component straight into its array (a table's rows): the same operations in
+        the same order as without, so the same bits."""
         local = complex(local)
         got = self._points.get(local)
         if got is None:
-            got = self._points[local] = self._point(local)
+            got = self._points[local] = self._point(local, out)
         return got
 
-    def _point(self, local: complex) -> PointMotion:
+    def _point(self, local: complex, out=None) -> PointMotion:
         o = self.origin
         if local == 0:
             return o
         r = self.e * local if local.imag else self.e * local.real     # r·e
         ir = r.perp()                                                  # i·r·e
+        if out is not None:
+            zx, zy, vx, vy, ax, ay = out
+            t = ir * self.omega
+            v = Vec(_add_out(o.v.x, t.x, vx), _add_out(o.v.y, t.y, vy))
+            t = _vadd(o.a, ir * self.eps)
+            w = r * (-(self.omega * self.omega))
+            a = Vec(_add_out(t.x, w.x, ax), _add_out(t.y, w.y, ay))
+            return PointMotion(Vec(_add_out(o.z.x, r.x, zx), _add_out(o.z.y, r.y, zy)), v, a)
         v = _vadd(o.v, ir * self.omega)
         a = _vadd(_vadd(o.a, ir * self.eps), r * (-(self.omega * self.omega)))  # (iε−ω²)·r·e
         return PointMotion(_vadd(o.z, r), v, a)     # (r last: its arrays hold z)

@@ -103,3 +103,21 @@ def test_column_block_is_the_tables_storage():
             np.testing.assert_allclose(_row(big, i), _row(small, k), rtol=1e-12, atol=1e-9)
     # no row keeps a page's placeholder: the crank angle column is every angle given
     np.testing.assert_allclose(an.kinematics["phi_deg"], deg, rtol=1e-15, atol=0)
+
+
+@pytest.mark.parametrize("name", ["shaper", "press6", "sixbar_rrr", "compressor_v",
+                                  "shaper_cn"])
+def test_later_chunks_written_into_the_rows_are_the_chunk_analysed_alone(name):
+    """Every chunk after the first computes the crank pin, the links' points and centres
+    of mass straight into the blocks' rows (linkage.chain.solve(out=…)); the first chunk
+    writes fresh arrays.  A chunk's rows equal, bit for bit (uint64 views, NaN included),
+    the same positions analysed alone as a first chunk, every column."""
+    spec = linkage.load_spec(example_path(f"{name}.toml"))
+    deg = 0.3 + (360.0 / (CHUNK + 700)) * np.arange(CHUNK + 700)
+    an = linkage.analyze(spec, crank_angles_deg=deg, course_tables=False)
+    alone = linkage.analyze(spec, crank_angles_deg=deg[CHUNK:], course_tables=False)
+    for big, small in ((an.kinematics, alone.kinematics), (an.forces, alone.forces)):
+        assert list(big.columns) == list(small.columns)
+        for c in big.columns[1:]:
+            a = big[c].to_numpy(float)[CHUNK:]
+            assert np.array_equal(a.view(np.uint64), small[c].to_numpy(float).view(np.uint64)), c

@@ -182,3 +182,30 @@ def test_scalars_stay_python_numbers():
     assert g.cross(1.5 + 2j, 3 - 4j) == 1.5 * -4.0 - 2.0 * 3.0
     w = g.Wrench(Vec(1.0, 2.0), 0.5, Vec(0.25, 0.0))
     assert type(w.moment_about(Vec(0.0, 0.0))) is float
+
+
+@pytest.mark.parametrize("origin_moves", [True, False])
+@pytest.mark.parametrize("omega", ["array", 1.7, 0.0])
+@pytest.mark.parametrize("local", [0.37, 0.2 - 0.45j])
+def test_point_into_rows_same_bits_as_without(origin_moves, omega, local):
+    """LinkMotion.point(local, out=rows) (the chain's tables: the point written straight
+    into its rows) gives the bits of point(local) — NaN payloads, signed zeros, a fixed
+    origin's float zeros and a constant ω (a fill) included — and returns the rows."""
+    def link():
+        o = _point(10, origin_moves)
+        e = Vec(np.cos(_arrays(1)), np.sin(_arrays(1)))
+        e.x[6] = np.float64(np.nan) * -1.0          # a NaN of the other sign: its operand
+        w = _arrays(3) if omega == "array" else omega
+        return g.LinkMotion(o, e, w, _arrays(5) if omega == "array" else 0.0)
+
+    want = link().point(local)
+    lk = link()
+    kept = [_copy(lk.origin.z), _copy(lk.origin.v), _copy(lk.origin.a), _copy(lk.e)]
+    rows = tuple(np.full(257, 12345.0) for _ in range(6))
+    got = lk.point(local, rows)
+    ref = (want.z.x, want.z.y, want.v.x, want.v.y, want.a.x, want.a.y)
+    for r, c, w in zip(rows, (got.z.x, got.z.y, got.v.x, got.v.y, got.a.x, got.a.y), ref):
+        assert c is r                               # computed into the rows themselves
+        _same(r, np.broadcast_to(w, r.shape))       # (a float zero: filled)
+    _unchanged(kept, [lk.origin.z, lk.origin.v, lk.origin.a, lk.e])
+    assert lk.point(local) is got                   # kept, as without rows
