@@ -202,8 +202,10 @@ def output_extremes(mech, output, rotation=1, n=720):
         mid = 0.5 * (lo + hi)
         _, rm, _ = output_motion(ch.solve(mech, mid, float(rotation), 0.0, check=False), output)
         same = np.sign(rm) == np.sign(r_lo)
-        lo = np.where(same, mid, lo)
-        hi = np.where(same, hi, mid)
+        lo2, hi2 = np.where(same, mid, lo), np.where(same, hi, mid)
+        if np.array_equal(lo2, lo) and np.array_equal(hi2, hi):
+            break        # a fixed point (~45 steps: lo, hi adjacent floats): every later
+        lo, hi = lo2, hi2  # step would repeat this one, the same mid and the same signs
     z = np.mod(0.5 * (lo + hi), 2.0 * math.pi)
     cz, _, _ = output_motion(ch.solve(mech, z, float(rotation), 0.0, check=False), output)
     if output_kind_of(mech, output) == "rocker":             # angles about the middle

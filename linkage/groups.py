@@ -654,10 +654,10 @@ def rrp(A: PointMotion, L: float, guide_point=0j, guide_angle=0.0, offset=0.0,
     mden = -1.0 / dot(u, r3)
     w3 = _into(np.multiply, cross(u, A.v), mden)
     ir3 = r3.perp()
-    v = dot(u, A.v + ir3 * w3)
-    rhs = A.a - r3 * (w3 * w3)
+    v = dot(u, _vadd(A.v, ir3 * w3))                 # (sums into the fresh products)
+    rhs = _vsub(A.a, r3 * (w3 * w3))
     e3 = _into(np.multiply, cross(u, rhs), mden)
-    a = dot(u, rhs + ir3 * e3)
+    a = dot(u, _vadd(rhs, ir3 * e3))
     B = PointMotion(zB, u * v, u * a)
     link3 = LinkMotion(A, r3 * (1.0 / L), w3, e3)
     link4 = LinkMotion(B, u, 0.0, 0.0)
@@ -1032,7 +1032,7 @@ def rpr(A: PointMotion, C: PointMotion, offset=0.0, assembly: int = 1) -> RPRSol
     lever = LinkMotion(C, e, w, eps)
     block = LinkMotion(A, e, w, eps)
     block._same_e = lever                     # one angle θ for both
-    A3 = PointMotion(A.z, C.v + idd * w, C.a + idd * eps - dww)
+    A3 = PointMotion(A.z, _vadd(C.v, idd * w), _vadd_sub(C.a, idd * eps, dww))
     return RPRSolution(block, lever, s, vr, ar, A3, cor, h2, s)
 
 

@@ -209,3 +209,45 @@ def test_point_into_rows_same_bits_as_without(origin_moves, omega, local):
         _same(r, np.broadcast_to(w, r.shape))       # (a float zero: filled)
     _unchanged(kept, [lk.origin.z, lk.origin.v, lk.origin.a, lk.e])
     assert lk.point(local) is got                   # kept, as without rows
+
+
+def _ref_rrp_tail(A, u, r3, w3, mden):
+    """rrp's velocity and acceleration with the plain operators (before the sums into
+    the fresh products)."""
+    ir3 = r3.perp()
+    v = g.dot(u, A.v + ir3 * w3)
+    rhs = A.a - r3 * (w3 * w3)
+    e3 = g.cross(u, rhs) * mden
+    return v, e3, g.dot(u, rhs + ir3 * e3)
+
+
+@pytest.mark.parametrize("a_moves", [True, False])
+def test_rrp_same_bits_inputs_untouched(a_moves):
+    A = _point(30)
+    if not a_moves:                          # standing still: float-zero v and a
+        A = g.PointMotion(A.z, Vec(0.0, 0.0), Vec(0.0, 0.0))
+    kept = [_copy(A.z), _copy(A.v), _copy(A.a)]
+    sol = g.rrp(A, 2.5, 0.1 + 0.2j, 0.3, 0.05, 1)
+    u = Vec(float(np.cos(0.3)), float(np.sin(0.3)))
+    r3 = sol.B.z - A.z
+    mden = -1.0 / g.dot(u, r3)
+    v, e3, a = _ref_rrp_tail(A, u, r3, g.cross(u, A.v) * mden, mden)
+    _same(sol.v, v)
+    _same(sol.link3.eps, e3)
+    _same(sol.a, a)
+    _unchanged(kept, [A.z, A.v, A.a])
+
+
+@pytest.mark.parametrize("c_moves", [True, False])
+def test_rpr_pin_on_lever_same_bits_inputs_untouched(c_moves):
+    """rpr's point of the lever under the block (A3): C.v + i(A−C)·ω and
+    C.a + i(A−C)·ε − (A−C)·ω², as the plain operators give them."""
+    A, C = _point(40), _point(50, c_moves)
+    kept = [_copy(A.z), _copy(A.v), _copy(A.a), _copy(C.z), _copy(C.v), _copy(C.a)]
+    with np.errstate(all="ignore"):              # (the zeros and the NaN of the data)
+        sol = g.rpr(A, C, 0.0, 1)
+    d = A.z - C.z
+    w, eps = sol.lever.omega, sol.lever.eps
+    _same(sol.A_lever.v, C.v + d.perp() * w)
+    _same(sol.A_lever.a, C.a + d.perp() * eps - d * (w * w))
+    _unchanged(kept, [A.z, A.v, A.a, C.z, C.v, C.a])
