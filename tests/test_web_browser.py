@@ -365,7 +365,13 @@ def test_the_balance_page_in_the_browser(server, browser, tmp_path):
         _compute(d)
         table = d.find_element(By.ID, "table2")
         head = _head(table)
-        row = dict(zip(head, _first_rows(table, 1)[0]))
+        first = _first_rows(table, 1)[0]
+        # the one-script reading of the cells is WebDriver's element text, cell by cell
+        # (checked on this small table: its heads and first row)
+        assert head == [th.text for th in table.find_elements(By.CSS_SELECTOR, "thead th")]
+        assert first == [td.text for td in table.find_element(
+            By.CSS_SELECTOR, "tbody tr").find_elements(By.TAG_NAME, "td")]
+        row = dict(zip(head, first))
         assert round(float(row["mr_gmm"]), 2) == 285.60
         assert round(float(row["angle_deg"]), 2) == 53.54
         _wait(d, _images_loaded)
