@@ -251,7 +251,7 @@ def summary_lines(result, lang: str = "ru"):
                  (c("phi_w"), s.working_crank_angle_deg, "°"),
                  (c("phi_i"), s.idle_crank_angle_deg, "°"),
                  (c("K"), s.time_ratio, "")]
-        unit = "°" if course.angular else u("m")       # the output's swing or stroke
+        unit = u("°") if course.angular else u("m")       # the output's swing or stroke
         rows += [(c(key), getattr(s, name), unit)
                  for key, name in zip(course.summary_keys, course.summary_fields)]
     rows += [(c("mu"), s.mu_min_deg, "°"),
