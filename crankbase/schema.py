@@ -83,7 +83,9 @@ class Key:
         named ``points`` ``name = [x, y]``; a list of ``names`` (each a ``name``; ``length``
         of them when set, at most ``max_length``).
     unit : str
-        The unit of the value as written (``mm``, ``MPa``, ``deg`` ...; "" for none).
+        The unit of the value as written, in its international spelling, one of
+        :data:`crankbase.texts.UNITS` (``mm``, ``MPa``, ``°`` ...; "" for none); shown
+        in the user's language by :meth:`crankbase.texts.Texts.unit`.
     si : float
         Factor from ``unit`` to SI (``mm`` → m: 1e-3; ``MPa`` → Pa: 1e6); 1 when the
         value is kept as written (degrees, rpm).
@@ -153,13 +155,15 @@ class Key:
         """Its unit in ``lang`` ("" when it has none)."""
         from .texts import texts
 
-        return texts(lang)(_unit_key(self.unit)) if self.unit else ""
+        return texts(lang).unit(self.unit)
 
     def wanted(self) -> Text:
         """What a missing value must be, for the "missing; ... is required" problem."""
         if self.unit:
+            from .texts import unit_key
+
             return Text("errors.wanted.key", {"label": Text(self.text_key + ".label"),
-                                              "unit": Text(_unit_key(self.unit))})
+                                              "unit": Text(unit_key(self.unit))})
         return Text("errors.wanted.label", {"label": Text(self.text_key + ".label")})
 
     def to_si(self, value):
@@ -218,14 +222,6 @@ class Key:
         if self.default is None or self.default == ():
             return ""
         return _literal(self.default)
-
-
-def _unit_key(unit: str) -> str:
-    return "spec.unit." + {"kg/m²": "kg_m2", "kg·mm": "kg_mm", "kg·m²": "kg_m2_inertia",
-                           "N/mm": "N_per_mm", "N·m": "N_m", "rad/s": "rad_s",
-                           "N·m/rad": "N_m_rad", "N·m·s/rad": "N_m_s_rad",
-                           "rad/s²": "rad_s2", "m/s²": "m_s2", "g·mm": "g_mm",
-                           "-": "one"}.get(unit, unit)
 
 
 def _literal(v) -> str:
@@ -494,6 +490,8 @@ def _walk(tables):
 def key_texts(schemas=None) -> list[str]:
     """Every catalogue key the schemas need (labels, help, symbols, units, file titles):
     the catalogue test checks that each one exists."""
+    from .texts import unit_key
+
     out = []
     for s in _schemas(schemas):
         out.append(f"spec.file.{s.name}")
@@ -504,7 +502,7 @@ def key_texts(schemas=None) -> list[str]:
                 if k.symbol:
                     out.append(k.text_key + ".symbol")
                 if k.unit:
-                    out.append(_unit_key(k.unit))
+                    out.append(unit_key(k.unit))
     return list(dict.fromkeys(out))
 
 

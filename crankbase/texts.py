@@ -21,7 +21,7 @@ The catalogue also says the language's notation, which the code asks through
 :class:`Texts` and never by comparing language codes: ``common.format.symbols`` (the
 symbol set, :attr:`Texts.symbols`: ``ru`` the Russian textbook's, ``en`` Latin),
 ``common.format.decimal_sign`` (:meth:`Texts.number`) and one ``common.unit.<name>`` per
-SI unit (:meth:`Texts.unit`, names in :data:`UNITS`).
+unit the tool writes (:meth:`Texts.unit`; the one table of units is :data:`UNITS`).
 
 Examples
 --------
@@ -43,7 +43,7 @@ from pathlib import Path
 
 __all__ = ["Texts", "texts", "area_texts", "read_area", "languages", "catalogue_languages",
            "keys", "LOCALE_DIR", "REFERENCE", "OfferedLanguages", "OFFERED", "SYMBOL_SETS",
-           "UNITS"]
+           "UNITS", "unit_key"]
 
 #: Folder of the catalogues (shipped as package data of ``crankbase``).
 LOCALE_DIR = Path(__file__).resolve().parent / "locale"
@@ -54,13 +54,38 @@ REFERENCE = "en"
 #: The symbol sets a catalogue may name in ``common.format.symbols`` (:attr:`Texts.symbols`).
 SYMBOL_SETS = ("ru", "en")
 
-#: The SI units a catalogue spells: international spelling → the name of its key
-#: ``common.unit.<name>`` (:meth:`Texts.unit`).  ``deg_word`` is the degree written as a
-#: word in a column header ("φ [deg]"), not a sign.
-UNITS = {"m": "m", "mm": "mm", "m/s": "m_s", "m/s²": "m_s2", "rad": "rad",
-         "rad/s": "rad_s", "rad/s²": "rad_s2", "N": "N", "N·m": "N_m", "kg": "kg",
-         "kg·m²": "kg_m2", "kg/m²": "kg_per_m2", "J": "J", "s": "s",
-         "deg": "deg_word"}
+#: Every unit the tool writes, in its international spelling → the name of its key
+#: ``common.unit.<name>`` (:meth:`Texts.unit`; :func:`unit_key`): the one table of units
+#: (the spec schemas' :attr:`~crankbase.schema.Key.unit`, the column-suffix tables of the
+#: reports, the sheets' rows and the templates name their units here; a test checks
+#: it).  ``"°"`` is the degree sign (the spec reference, the inputs sheets); ``"deg"`` is
+#: the degree of a column header and a sheet's unit column, written as the catalogue says
+#: ("φ [deg]" in English, «φ, °» in Russian, "φ [°]" in Chinese).  ``"-"`` is a
+#: dimensionless number.
+UNITS = {
+    # length, area, volume, mass
+    "m": "m", "mm": "mm", "cm²": "cm2", "l": "l", "g": "g", "kg": "kg",
+    "kg/m²": "kg_per_m2", "kg·mm": "kg_mm", "g·mm": "g_mm", "kg·m²": "kg_m2",
+    # time, angle, motion
+    "s": "s", "°": "deg", "deg": "deg_word", "rad": "rad", "rpm": "rpm",
+    "m/s": "m_s", "m/s²": "m_s2", "rad/s": "rad_s", "rad/s²": "rad_s2",
+    # force, moment, stiffness, damping, pressure, energy, power
+    "N": "N", "N/mm": "N_per_mm", "N·m": "N_m", "N·m/rad": "N_m_per_rad",
+    "N·m·s/rad": "N_m_s_per_rad", "Pa": "Pa", "kPa": "kPa", "bar": "bar", "MPa": "MPa",
+    "J": "J", "kW": "kW",
+    # ratios
+    "%": "percent", "-": "one",
+}
+
+
+def unit_key(si: str) -> str:
+    """The catalogue key of a unit of :data:`UNITS` (``"N·m"`` → ``"common.unit.N_m"``),
+    for a :class:`~crankbase.errors.Text` rendered later; a unit the table does not name is
+    a programming error (:class:`KeyError`): add it to :data:`UNITS` and every catalogue."""
+    try:
+        return f"common.unit.{UNITS[si]}"
+    except KeyError:
+        raise KeyError(f"unit {si!r} is not in crankbase.texts.UNITS") from None
 
 
 class Texts:
@@ -117,11 +142,11 @@ class Texts:
         return ru if self.symbols == "ru" else en
 
     def unit(self, si: str) -> str:
-        """An SI unit, given in its international spelling (``"N·m"``, ``"m/s²"``), as
-        this language spells it (``common.unit.<name>``: «Н·м» in Russian); a unit that
-        no catalogue spells (``"°"``, ``"%"``) is written as given."""
-        name = UNITS.get(si)
-        return si if name is None else self(f"common.unit.{name}")
+        """A unit of :data:`UNITS`, given in its international spelling (``"N·m"``,
+        ``"m/s²"``), as this language spells it (``common.unit.<name>``: «Н·м» in
+        Russian); "" for no unit.  A unit the table does not name is a
+        :class:`KeyError` (one table, so that no unit is spelled twice)."""
+        return self(unit_key(si)) if si else ""
 
     @property
     def decimal_sign(self) -> str:

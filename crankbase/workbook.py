@@ -616,20 +616,13 @@ def summary_workbook(df, path, title, sheet="summary"):
     return save(wb, path)
 
 
-def _unit(t, key):
-    """A unit from the catalogue; '' for a quantity without one (no entry)."""
-    try:
-        return t(key)
-    except KeyError:
-        return ""
-
-
 def words(lang, prefix, shape):
     """The words of a sheet writer in ``lang`` from the catalogue (``sheet.po``), in the
     ``shape`` the writer reads them: {name: "str" | ("tuple", n) | ("dict", keys) |
-    ("rows", keys)} → a text ``<prefix>.<name>``, a tuple of ``<prefix>.<name>.<i>``, a
-    dict of ``<prefix>.<name>.<key>``, or rows (key, label, unit) of
-    ``<prefix>.<name>.<key>`` and ``<prefix>.<name>.<key>.unit`` (no entry: no unit)."""
+    ("rows", {key: unit})} → a text ``<prefix>.<name>``, a tuple of ``<prefix>.<name>.<i>``,
+    a dict of ``<prefix>.<name>.<key>``, or rows (key, label, unit): the label
+    ``<prefix>.<name>.<key>``, the unit (a key of :data:`crankbase.texts.UNITS`, "" for
+    none) spelled by :meth:`crankbase.texts.Texts.unit`."""
     from .texts import texts
 
     t = texts(lang)
@@ -643,8 +636,8 @@ def words(lang, prefix, shape):
         elif kind[0] == "dict":
             out[k] = {sk: t(f"{base}.{sk}") for sk in kind[1]}
         else:
-            out[k] = [(key, t(f"{base}.{key}"), _unit(t, f"{base}.{key}.unit"))
-                      for key in kind[1]]
+            out[k] = [(key, t(f"{base}.{key}"), t.unit(unit))
+                      for key, unit in kind[1].items()]
     return out
 
 

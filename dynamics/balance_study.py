@@ -221,7 +221,7 @@ def linkage_lines(res, lang="en"):
                               m=f"{r['mass_kg']:.6g}", r=f"{r['radius_m']:.6g}"))
     if "fraction" in cw:
         lines.append("  " + t("balance.linkage.fraction", fraction=f"{cw['fraction'].iloc[0]:g}",
-                              unit=t("dynamics.unit.1")))
+                              unit=t.unit("-")))
     before = res.before.F_max
     lines.append("  " + t("balance.linkage.force", before=f"{before:.6g}",
                           after=_snap(res.after.F_max, before, ".6g")))

@@ -7,36 +7,35 @@ import math
 __all__ = ["summary_rows", "summary_lines", "build_workbook", "column_label"]
 
 
-#: Units of the summary rows: key → catalogue key (``dynamics.unit.<key>``).  The
-#: labels are ``dynamics.row.<key>`` (Russian Jп, Mд, Mс, ΔT, Jм, ωср; English Jred, Md,
-#: Mc, ΔE, JF, ωm: the symbols of the plots; no Cyrillic in English).
-_UNIT_KEYS = ("rad_s", "J", "kgm2", "s", "Nm", "1")
 
 
 def summary_rows(result, lang="en"):
     """(label, value, unit) rows of the summary, in the report language (``"ru"``: the
     Russian textbook symbols; ``"en"``: English, no Cyrillic letter); the same rows and
-    values in both.  Words from the catalogue (``dynamics.po``)."""
+    values in both.  Words from the catalogue: the labels ``dynamics.row.<key>`` (Russian
+    Jп, Mд, Mс, ΔT, Jм, ωср; English Jred, Md, Mc, ΔE, JF, ωm: the symbols of the plots;
+    no Cyrillic in English), the units (:data:`crankbase.texts.UNITS`) by
+    :meth:`~crankbase.texts.Texts.unit`."""
     from crankbase.texts import texts
 
     t = texts(lang)
     m, fly = result["motion"], result["flywheel"]
-    keys = [("w_max", m.omega_max, "rad_s"), ("w_min", m.omega_min, "rad_s"),
-            ("w_m", m.omega_mean, "rad_s"), ("w_t", m.omega_time_mean, "rad_s"),
-            ("delta", m.delta, "1"), ("dT", m.dW_max, "J"), ("JF", m.J_flywheel, "kgm2"),
+    keys = [("w_max", m.omega_max, "rad/s"), ("w_min", m.omega_min, "rad/s"),
+            ("w_m", m.omega_mean, "rad/s"), ("w_t", m.omega_time_mean, "rad/s"),
+            ("delta", m.delta, "-"), ("dT", m.dW_max, "J"), ("JF", m.J_flywheel, "kg·m²"),
             ("cycle", m.cycle_time, "s")]
     if m.M_drive_const is not None:
         if m.constant_role == "resist":
-            keys.append(("Mc", -m.M_drive_const, "Nm"))
+            keys.append(("Mc", -m.M_drive_const, "N·m"))
         else:
-            keys.append(("Md", m.M_drive_const, "Nm"))
+            keys.append(("Md", m.M_drive_const, "N·m"))
     if fly is not None:
-        keys += [("delta_asked", fly.delta, "1"), ("dT_const", fly.dW_max, "J"),
-                 ("Jc", fly.J_c, "kgm2"), ("J_classic", fly.J_classic, "kgm2"),
-                 ("J_exact", fly.J_exact, "kgm2")]
+        keys += [("delta_asked", fly.delta, "-"), ("dT_const", fly.dW_max, "J"),
+                 ("Jc", fly.J_c, "kg·m²"), ("J_classic", fly.J_classic, "kg·m²"),
+                 ("J_exact", fly.J_exact, "kg·m²")]
     if result.get("startup") is not None:
         keys.append(("startup", result["startup"].t_steady, "s"))
-    return [(t(f"dynamics.row.{k}"), float(v), t(f"dynamics.unit.{u}")) for k, v, u in keys]
+    return [(t(f"dynamics.row.{k}"), float(v), t.unit(u)) for k, v, u in keys]
 
 
 def summary_lines(result, name=None, kind=None, driving=None, lang="en"):

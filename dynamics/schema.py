@@ -17,7 +17,7 @@ MAX_STEPS = 200_000
 
 DYNAMICS = Table("dynamics", (
     Key("driving", "choice", choices=DRIVINGS, default="constant"),
-    Key("phi_deg", "numbers", min_length=1, unit="deg", required="cond", symbol=True),
+    Key("phi_deg", "numbers", min_length=1, unit="°", required="cond", symbol=True),
     Key("M_Nm", "numbers", min_length=1, unit="N·m", required="cond", symbol=True),
     Key("motor_start_torque_Nm", gt=0, unit="N·m", required="cond", symbol=True),
     Key("motor_sync_speed_rad_s", gt=0, unit="rad/s", required="cond", symbol=True),
@@ -37,7 +37,7 @@ ELEMENT = ArrayOfTables("machine.element", (
 
 MOMENT = ArrayOfTables("machine.moment", (
     Key("role", "choice", choices=("drive", "resist"), required=True),
-    Key("phi_deg", "numbers", min_length=1, unit="deg", required=True, symbol=True),
+    Key("phi_deg", "numbers", min_length=1, unit="°", required=True, symbol=True),
     Key("M_Nm", "numbers", min_length=1, unit="N·m", required=True, symbol=True),
 ), required=True, min_items=1)
 
@@ -45,7 +45,7 @@ MACHINE = Table("machine", (
     Key("name", "string", default="machine"),
     Key("J_red_kgm2", gt=0, unit="kg·m²", required="cond", default=0.0, symbol=True),
     Key("omega_mean_rad_s", gt=0, unit="rad/s", symbol=True),
-    Key("period_deg", gt=0, unit="deg", default=360.0),
+    Key("period_deg", gt=0, unit="°", default=360.0),
     ELEMENT,
     MOMENT,
 ), required=True)
@@ -54,7 +54,7 @@ ROTOR_MASS = ArrayOfTables("rotor.mass", (
     Key("mr_gmm", ge=0, unit="g·mm", required="cond"),
     Key("m_g", ge=0, unit="g", required="cond"),
     Key("r_mm", ge=0, unit="mm", required="cond"),
-    Key("angle_deg", unit="deg", required=True),
+    Key("angle_deg", unit="°", required=True),
     Key("z_mm", unit="mm", required="cond"),
 ), required=True, min_items=1)
 

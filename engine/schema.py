@@ -63,12 +63,12 @@ ENGINE = Table("engine", (
     Key("compression_ratio", gt=1, symbol=True),
     Key("pin_offset_mm", default=0.0, symbol=True, **MM),
     Key("arrangement", "choice", choices=ARRANGEMENTS, default="inline"),
-    Key("vee_angle_deg", gt=0, lt=180, unit="deg", required="cond", symbol=True),
+    Key("vee_angle_deg", gt=0, lt=180, unit="°", required="cond", symbol=True),
     Key("firing_order", "numbers", max_length=MAX_CYLINDERS),
     Key("cylinder_spacing_mm", gt=0, **MM),
     Key("bank_offset_mm", default=0.0, **MM),
     Key("cylinder_positions_mm", "numbers", max_length=MAX_CYLINDERS, **MM),
-    Key("throw_angles_deg", "numbers", unit="deg", max_length=MAX_CYLINDERS),
+    Key("throw_angles_deg", "numbers", unit="°", max_length=MAX_CYLINDERS),
     Key("mechanical_efficiency", gt=0, le=1, symbol=True),
 ), required=True)
 
@@ -94,35 +94,35 @@ CYCLE = Table("pressure.cycle", (
     Key("lambda_z", ge=1, required="cond", symbol=True),
     Key("rho", ge=1, required="cond", symbol=True),
     Key("rounding", "bool", default=True),
-    Key("advance_deg", gt=0, lt=90, unit="deg", shown_default="30 (otto), 20 (diesel)"),
+    Key("advance_deg", gt=0, lt=90, unit="°", shown_default="30 (otto), 20 (diesel)"),
     Key("pc_factor", ge=1, le=2, default=ROUNDING_DEFAULTS["pc_factor"]),
     Key("peak_factor", gt=0, le=1, default=ROUNDING_DEFAULTS["peak_factor"]),
     # at least 1°: the rounding curves span these angles (a near-zero span is a division
     # by ~0 in the Hermite segments)
-    Key("peak_after_tdc_deg", ge=1, lt=90, unit="deg",
+    Key("peak_after_tdc_deg", ge=1, lt=90, unit="°",
         default=ROUNDING_DEFAULTS["peak_after_tdc_deg"]),
-    Key("exhaust_opening_deg", ge=1, lt=90, unit="deg",
+    Key("exhaust_opening_deg", ge=1, lt=90, unit="°",
         default=ROUNDING_DEFAULTS["exhaust_opening_deg"]),
-    Key("intake_opening_deg", ge=1, lt=90, unit="deg",
+    Key("intake_opening_deg", ge=1, lt=90, unit="°",
         default=ROUNDING_DEFAULTS["intake_opening_deg"]),
-    Key("exhaust_closing_deg", ge=1, lt=90, unit="deg",
+    Key("exhaust_closing_deg", ge=1, lt=90, unit="°",
         default=ROUNDING_DEFAULTS["exhaust_closing_deg"]),
 ))
 
 PRESSURE = Table("pressure", (
-    Key("angle_deg", "numbers", unit="deg", required="cond"),
+    Key("angle_deg", "numbers", unit="°", required="cond"),
     Key("p_MPa", "numbers", unit="MPa", si=1e6, required="cond"),
     Key("p_bar", "numbers", unit="bar", si=1e5, required="cond"),
     Key("p_kPa", "numbers", unit="kPa", si=1e3, required="cond"),
     Key("p_Pa", "numbers", unit="Pa", required="cond"),
     Key("file", "path", required="cond"),
-    Key("firing_tdc_deg", unit="deg", default=DIESEL_RK_TDC_DEG),
+    Key("firing_tdc_deg", unit="°", default=DIESEL_RK_TDC_DEG),
     CYCLE,
 ), required=True)
 
 TABLE = Table("table", (
-    Key("step_deg", gt=0, divisor=True, unit="deg", default=30.0, shown_default="30"),
-    Key("extra_angles_deg", "numbers", ge=0, unit="deg", default=()),
+    Key("step_deg", gt=0, divisor=True, unit="°", default=30.0, shown_default="30"),
+    Key("extra_angles_deg", "numbers", ge=0, unit="°", default=()),
     Key("force_scale_N_per_mm", gt=0, unit="N/mm", required=True, symbol=True),
     Key("form", "choice", choices=TABLE_FORMS, default="seed"),
 ), required=True)
@@ -136,7 +136,7 @@ FLYWHEEL = Table("flywheel", (
 COUNTERWEIGHT = ArrayOfTables("balance.counterweight", (
     Key("z_mm", required=True, **MM),
     Key("mr_kg_mm", ge=0, unit="kg·mm", si=1e-3, required=True),
-    Key("angle_deg", unit="deg", required=True),
+    Key("angle_deg", unit="°", required=True),
 ), max_items=2 * MAX_CYLINDERS + 2)
 
 BALANCE = Table("balance", (
@@ -145,10 +145,10 @@ BALANCE = Table("balance", (
 ))
 
 BEARINGS = Table("bearings", (
-    Key("wear_half_angle_deg", gt=0, le=180, unit="deg", default=DEFAULT_HALF_ANGLE_DEG),
+    Key("wear_half_angle_deg", gt=0, le=180, unit="°", default=DEFAULT_HALF_ANGLE_DEG),
     Key("journal_positions_mm", "numbers", length=2, **MM),
     Key("counterweight_kg_mm", ge=0, unit="kg·mm", si=1e-3, default=0.0),
-    Key("counterweight_angle_deg", ge=-360, le=360, unit="deg", default=180.0),
+    Key("counterweight_angle_deg", ge=-360, le=360, unit="°", default=180.0),
 ))
 
 ROD = Table("rod", (

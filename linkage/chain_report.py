@@ -22,8 +22,6 @@ __all__ = ["chain_column_label", "write_chain_csvs", "write_chain_workbook",
 #: File stems of the chain's figures (``<name>_<stem>.png``).
 CHAIN_PLOTS = ("plan", "driving_moment", "output_motion")
 
-_UNITS = {"m": "m", "m_s": "m/s", "m_s2": "m/s²", "deg": "°", "rad_s": "rad/s",
-          "rad_s2": "rad/s²", "N": "N", "Nm": "N·m"}
 _GREEK = {"theta": "θ", "omega": "ω", "eps": "ε", "mu": "μ"}
 _POINT = {"x": "x{}", "y": "y{}", "vx": "V{}x", "vy": "V{}y", "v": "V{}", "ax": "a{}x",
           "ay": "a{}y", "a": "a{}"}
@@ -33,11 +31,11 @@ def chain_column_label(col: str, lang: str = "en"):
     """(symbol, unit) of a chain table column in ``lang``: ``x_B_m`` → ("xB", "m"),
     ``omega_lever_rad_s`` → ("ω lever", "rad/s"), ``R_crank_block_N`` →
     ("R crank→block", "N"); Mур, Fпс, Mпс as :func:`linkage.report.column_label`."""
-    from .report import column_label, unit_text
+    from .report import COLUMN_UNITS, column_label, unit_text
 
     if col in ("position", "phi_deg", "M_drive_Nm", "F_res_N", "M_res_Nm"):
         return column_label(col, lang)
-    m = re.fullmatch(r"(.+)_(m_s2|m_s|m|deg|rad_s2|rad_s|Nm|N)", col)
+    m = re.fullmatch(r"(.+)_(" + "|".join(COLUMN_UNITS) + ")", col)
     if not m:
         return col, ""
     body, unit = m.groups()
@@ -53,7 +51,7 @@ def chain_column_label(col: str, lang: str = "en"):
         sym = f"{head} {rest.replace('_', '/')}"
     else:
         sym = body
-    return sym, unit_text(_UNITS[unit], lang)
+    return sym, unit_text(COLUMN_UNITS[unit], lang)
 
 
 def write_chain_csvs(result, folder):

@@ -48,15 +48,18 @@ from crankbase.tolerances import SAME_ANGLE_DEG
 
 from .course import course_of
 
-__all__ = ["column_label", "unit_text", "kind_text", "warning_text", "write_csvs",
-           "write_workbook",
+__all__ = ["column_label", "unit_text", "COLUMN_UNITS", "kind_text", "warning_text",
+           "write_csvs", "write_workbook",
            "sheet_columns", "force_sheet_columns", "summary_lines", "text", "LANGS"]
 
 #: Report languages.
 LANGS = OFFERED              # every offered language (crankbase.texts.languages)
 
-_UNITS = {"m": "m", "m_s": "m/s", "m_s2": "m/s²", "deg": "°", "rad_s": "rad/s",
-          "rad_s2": "rad/s²", "N": "N", "Nm": "N·m"}
+#: The unit suffixes of the linkage's and the chain's CSV column names → the unit
+#: (international spelling, a key of :data:`crankbase.texts.UNITS`, spelled in the
+#: report's language by :meth:`crankbase.texts.Texts.unit`): ``v_E_m_s`` is in m/s.
+COLUMN_UNITS = {"m": "m", "m_s": "m/s", "m_s2": "m/s²", "deg": "°", "rad_s": "rad/s",
+                "rad_s2": "rad/s²", "N": "N", "Nm": "N·m"}
 _SIMPLE = {
     "position": ("No.", ""), "phi_deg": ("φ", "°"), "theta3_deg": ("θ3", "°"),
     "theta4_deg": ("θ4", "°"), "omega3_rad_s": ("ω3", "rad/s"), "omega4_rad_s": ("ω4", "rad/s"),
@@ -128,13 +131,13 @@ def _column_label_en(col):
     m = re.fullmatch(r"(.+?)_(v|a)_(m_s|m_s2)", col)
     if m:
         p, q, unit = m.groups()
-        return f"{'V' if q == 'v' else 'a'}{p}", _UNITS[unit]
+        return f"{'V' if q == 'v' else 'a'}{p}", COLUMN_UNITS[unit]
     m = re.fullmatch(r"(.+?)_(x|y|vx|vy|ax|ay)_(m|m_s|m_s2)", col)
     if m:
         p, q, unit = m.groups()
         sym = {"x": f"x{p}", "y": f"y{p}", "vx": f"V{p}x", "vy": f"V{p}y",
                "ax": f"a{p}x", "ay": f"a{p}y"}[q]
-        return sym, _UNITS[unit]
+        return sym, COLUMN_UNITS[unit]
     return col, ""
 
 
@@ -248,7 +251,7 @@ def summary_lines(result, lang: str = "ru"):
                  (c("phi_w"), s.working_crank_angle_deg, "°"),
                  (c("phi_i"), s.idle_crank_angle_deg, "°"),
                  (c("K"), s.time_ratio, "")]
-        unit = "°" if course.angular else u("m")       # the output's swing or stroke
+        unit = u("°") if course.angular else u("m")       # the output's swing or stroke
         rows += [(c(key), getattr(s, name), unit)
                  for key, name in zip(course.summary_keys, course.summary_fields)]
     rows += [(c("mu"), s.mu_min_deg, "°"),

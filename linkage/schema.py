@@ -30,7 +30,7 @@ MECHANISM = Table("mechanism", (
     Key("coupler", gt=0, divisor=True, required=True, symbol=True, **M),
     Key("rocker", gt=0, divisor=True, required="cond", symbol=True, **M),
     Key("ground", gt=0, divisor=True, required="cond", symbol=True, **M),
-    Key("ground_angle_deg", unit="deg", default=0.0),
+    Key("ground_angle_deg", unit="°", default=0.0),
     Key("offset", default=0.0, symbol=True, **M),
     Key("assembly", "choice", choices=(1, -1), default=1),
     Key("omega_rad_s", unit="rad/s", required=True, symbol=True),
@@ -58,9 +58,9 @@ LOAD = ArrayOfTables("load", (
     Key("resistance_Nm", ge=0, unit="N·m", required="cond"),
     Key("resistance_N", ge=0, unit="N", required="cond"),
     Key("stroke", "choice", choices=("working", "idle", "both"), default="working"),
-    Key("start_deg", ge=0, unit="deg", default=0.0),
+    Key("start_deg", ge=0, unit="°", default=0.0),
     Key("start_m", ge=0, default=0.0, **M),
-    Key("span_deg", gt=0, unit="deg"),
+    Key("span_deg", gt=0, unit="°"),
     Key("span_m", gt=0, **M),
     Key("from_fraction", ge=0, lt=1, default=0.0),
     Key("to_fraction", gt=0, le=1, default=1.0),
@@ -68,7 +68,7 @@ LOAD = ArrayOfTables("load", (
 
 ANALYSIS = Table("analysis", (
     Key("positions", "integer", ge=1, le=MAX_ROWS, default=12),
-    Key("crank_angles_deg", "numbers", min_length=1, unit="deg"),
+    Key("crank_angles_deg", "numbers", min_length=1, unit="°"),
     Key("working_stroke", "choice", choices=("ccw", "cw", "away", "toward"),
         required="cond"),
 ))
@@ -109,13 +109,13 @@ GROUP = ArrayOfTables("group", (
     Key("offset", default=0.0, **M),
     Key("guide_link", "string", default="frame"),
     Key("guide_point", "numbers", length=2, shown_default="[0, 0]", **M),
-    Key("guide_angle_deg", unit="deg", default=0.0),
+    Key("guide_angle_deg", unit="°", default=0.0),
     Key("guide_offset", default=0.0, **M),
     Key("guide2_link", "string", default="frame"),
     Key("guide2_point", "numbers", length=2, shown_default="[0, 0]", **M),
-    Key("guide2_angle_deg", unit="deg", default=90.0),
+    Key("guide2_angle_deg", unit="°", default=90.0),
     Key("guide2_offset", default=0.0, **M),
-    Key("slot_angle_deg", unit="deg", default=90.0),
+    Key("slot_angle_deg", unit="°", default=90.0),
 ), min_items=1)
 
 #: A chain spec file (``[mechanism] kind = "chain"``): any linkage of class II groups.

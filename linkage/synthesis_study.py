@@ -45,11 +45,11 @@ MODES = {
 #: ``spec`` catalogue under ``spec.synth.<key>``): the synthesis page's form and the
 #: options of ``crankdyn synth`` (:data:`FLAGS`), both checked by :func:`check_inputs`.
 INPUTS = Table("synth", (
-    Key("phi0_deg", gt=0, lt=180, unit="deg", default=30.0, symbol=True),
+    Key("phi0_deg", gt=0, lt=180, unit="°", default=30.0, symbol=True),
     Key("l1", gt=0, symbol=True),
     Key("l2", gt=0, symbol=True),
     Key("l3", gt=0, symbol=True),
-    Key("mu_min_deg", ge=0, lt=90, unit="deg", symbol=True),
+    Key("mu_min_deg", ge=0, lt=90, unit="°", symbol=True),
     Key("l1_step", gt=0),
     Key("ground_m", gt=0, unit="m", symbol=True),
     Key("omega_rad_s", unit="rad/s", symbol=True),

@@ -70,7 +70,6 @@ PLAN_KINDS = ("velocity", "acceleration", "force_dyad", "force_crank")
 #: Scales that :func:`build_plans` accepts: the plans', the Zhukovsky lever's forces and
 #: the lever's own turned velocity plan (``lever_velocity``, default the velocity plan's).
 SCALE_KINDS = PLAN_KINDS + ("lever", "lever_velocity")
-_UNITS = {"velocity": "m/s", "acceleration": "m/s2", "force_dyad": "N", "force_crank": "N"}
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 

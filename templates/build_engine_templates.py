@@ -25,55 +25,57 @@ HERE = Path(__file__).resolve().parent
 #: ``sheet.engine.sheet.<name>`` of the catalogue.
 SHEET_KEYS = ("inputs", "table2", "summary", "data", "charts")
 
-#: Rows of the Inputs sheet: (key, symbol, number format); the label and the unit are
-#: ``sheet.engine.input.<key>`` and ``sheet.engine.input.<key>.unit`` of the catalogue
-#: (crankbase/locale/<lang>/sheet.po); the English symbols by :func:`english_symbols`.
+#: Rows of the Inputs sheet: (key, symbol, unit, number format); the label is
+#: ``sheet.engine.input.<key>`` of the catalogue (crankbase/locale/<lang>/sheet.po), the
+#: unit a key of :data:`crankbase.texts.UNITS` ("deg": the degree of a unit column; ""
+#: none) spelled by :meth:`crankbase.texts.Texts.unit`; the English symbols by
+#: :func:`english_symbols`.
 INPUTS = [
-    ('name', '', '@'),
-    ('strokes', 'τ', '0'),
-    ('cylinders', 'i', '0'),
-    ('bore_mm', 'D', '0.0##'),
-    ('stroke_mm', 'S', '0.0##'),
-    ('R_mm', 'R = S/2', '0.0##'),
-    ('L_mm', 'Lш', '0.0##'),
-    ('lam', 'λ = R/Lш', '0.0000'),
-    ('speed_rpm', 'n', '0'),
-    ('omega', 'ω = πn/30', '0.00'),
-    ('v_mean', 'vп.ср = Sn/30', '0.00'),
-    ('p0_MPa', 'p0', '0.000'),
-    ('area_cm2', 'Fп = πD²/4', '0.00'),
-    ('Vh_l', 'Vh = Fп·S', '0.0000'),
-    ('compression_ratio', 'ε', '0.00'),
-    ('acceleration', 'j', '@'),
-    ('mass_input', '', '@'),
-    ('mj', 'mj = mп + mш.п', '0.000'),
-    ('m_rod_rot', 'mш.к', '0.000'),
-    ('m_crank_rot', 'mк', '0.000'),
-    ('Kr', 'Kr.ш = −mш.к·R·ω²', '0.0'),
-    ('mu_P', 'μP', '0.###'),
-    ('step_deg', 'Δα', '0.###'),
-    ('extra_angles', '', '@'),
-    ('pressure_source', 'pг(α)', '@'),
-    ('cycle_kind', '', '@'),
-    ('pa', 'pa', '0.000'),
-    ('pr', 'pr', '0.000'),
-    ('n1', 'n1', '0.000'),
-    ('n2', 'n2', '0.000'),
-    ('pc', 'pc = pa·ε^n1', '0.000'),
-    ('pz', 'pz', '0.000'),
-    ('lambda_z', 'λz = pz/pc', '0.000'),
-    ('rho', 'ρ', '0.000'),
-    ('rounding', '', '@'),
-    ('advance_deg', 'θ', '0.#'),
-    ('pc_factor', 'pc″/pc', '0.00'),
-    ('peak_factor', 'pzд/pz', '0.00'),
-    ('peak_after_tdc_deg', '', '0.#'),
-    ('exhaust_opening_deg', '', '0.#'),
-    ('intake_opening_deg', '', '0.#'),
-    ('exhaust_closing_deg', '', '0.#'),
-    ('pi_theory', 'p′i', '0.0000'),
-    ('pi', 'pi = ∮p dV / Vh', '0.0000'),
-    ('power_i', 'Ni = pi·Vh·n/(30τ)', '0.00'),
+    ('name', '', '', '@'),
+    ('strokes', 'τ', '', '0'),
+    ('cylinders', 'i', '', '0'),
+    ('bore_mm', 'D', 'mm', '0.0##'),
+    ('stroke_mm', 'S', 'mm', '0.0##'),
+    ('R_mm', 'R = S/2', 'mm', '0.0##'),
+    ('L_mm', 'Lш', 'mm', '0.0##'),
+    ('lam', 'λ = R/Lш', '', '0.0000'),
+    ('speed_rpm', 'n', 'rpm', '0'),
+    ('omega', 'ω = πn/30', 'rad/s', '0.00'),
+    ('v_mean', 'vп.ср = Sn/30', 'm/s', '0.00'),
+    ('p0_MPa', 'p0', 'MPa', '0.000'),
+    ('area_cm2', 'Fп = πD²/4', 'cm²', '0.00'),
+    ('Vh_l', 'Vh = Fп·S', 'l', '0.0000'),
+    ('compression_ratio', 'ε', '', '0.00'),
+    ('acceleration', 'j', '', '@'),
+    ('mass_input', '', '', '@'),
+    ('mj', 'mj = mп + mш.п', 'kg', '0.000'),
+    ('m_rod_rot', 'mш.к', 'kg', '0.000'),
+    ('m_crank_rot', 'mк', 'kg', '0.000'),
+    ('Kr', 'Kr.ш = −mш.к·R·ω²', 'N', '0.0'),
+    ('mu_P', 'μP', 'N/mm', '0.###'),
+    ('step_deg', 'Δα', 'deg', '0.###'),
+    ('extra_angles', '', 'deg', '@'),
+    ('pressure_source', 'pг(α)', '', '@'),
+    ('cycle_kind', '', '', '@'),
+    ('pa', 'pa', 'MPa', '0.000'),
+    ('pr', 'pr', 'MPa', '0.000'),
+    ('n1', 'n1', '', '0.000'),
+    ('n2', 'n2', '', '0.000'),
+    ('pc', 'pc = pa·ε^n1', 'MPa', '0.000'),
+    ('pz', 'pz', 'MPa', '0.000'),
+    ('lambda_z', 'λz = pz/pc', '', '0.000'),
+    ('rho', 'ρ', '', '0.000'),
+    ('rounding', '', '', '@'),
+    ('advance_deg', 'θ', 'deg', '0.#'),
+    ('pc_factor', 'pc″/pc', '', '0.00'),
+    ('peak_factor', 'pzд/pz', '', '0.00'),
+    ('peak_after_tdc_deg', '', 'deg', '0.#'),
+    ('exhaust_opening_deg', '', 'deg', '0.#'),
+    ('intake_opening_deg', '', 'deg', '0.#'),
+    ('exhaust_closing_deg', '', 'deg', '0.#'),
+    ('pi_theory', 'p′i', 'MPa', '0.0000'),
+    ('pi', 'pi = ∮p dV / Vh', 'MPa', '0.0000'),
+    ('power_i', 'Ni = pi·Vh·n/(30τ)', 'kW', '0.00'),
 ]
 
 #: Lines of the conventions under the inputs: ``sheet.engine.conventions.<i>``.
@@ -82,41 +84,34 @@ N_CONVENTIONS = 12
 # Table 2: the force symbols
 FORCES = ['ΔPг', 'Pj', 'P', 'Sш', 'N', 'K', 'T', 'Rшш']
 
-#: Summary rows with extremes: (key, symbol); label and unit ``sheet.engine.extreme.<key>``
+#: Summary rows with extremes: (key, symbol, unit); the label ``sheet.engine.extreme.<key>``
 SUMMARY_EXTREMES = [
-    ('P_N', 'P'),
-    ('S_N', 'Sш'),
-    ('N_N', 'N'),
-    ('K_N', 'K'),
-    ('T_N', 'T'),
-    ('M_Nm', 'Mкр'),
-    ('R_N', 'Rшш'),
+    ('P_N', 'P', 'N'),
+    ('S_N', 'Sш', 'N'),
+    ('N_N', 'N', 'N'),
+    ('K_N', 'K', 'N'),
+    ('T_N', 'T', 'N'),
+    ('M_Nm', 'Mкр', 'N·m'),
+    ('R_N', 'Rшш', 'N'),
 ]
-#: Summary rows of one value: (key, symbol, format); ``sheet.engine.value.<key>``
+#: Summary rows of one value: (key, symbol, unit, format); the label
+#: ``sheet.engine.value.<key>``
 SUMMARY_VALUES = [
-    ('p_max_MPa', 'pг max', '0.000'),
-    ('alpha_p_max_deg', 'α(pг max)', '0.0'),
-    ('M_mean_Nm', 'Mкр.ср', '0.00'),
-    ('R_mean_N', 'Rшш.ср', '0'),
-    ('chi', 'χ = Rшш.max/Rшш.ср', '0.000'),
-    ('pi_MPa', 'pi', '0.0000'),
-    ('power_i_kW', 'Ni', '0.00'),
+    ('p_max_MPa', 'pг max', 'MPa', '0.000'),
+    ('alpha_p_max_deg', 'α(pг max)', 'deg', '0.0'),
+    ('M_mean_Nm', 'Mкр.ср', 'N·m', '0.00'),
+    ('R_mean_N', 'Rшш.ср', 'N', '0'),
+    ('chi', 'χ = Rшш.max/Rшш.ср', '', '0.000'),
+    ('pi_MPa', 'pi', 'MPa', '0.0000'),
+    ('power_i_kW', 'Ni', 'kW', '0.00'),
 ]
 
 
 def _words(lang):
-    """The catalogue's texts of ``lang`` (:func:`crankbase.texts.texts`) and a unit look-up
-    ('' for a quantity without a unit)."""
+    """The catalogue's texts of ``lang`` (:func:`crankbase.texts.texts`)."""
     from crankbase.texts import texts
 
-    t = texts(lang)
-
-    def unit(key):
-        try:
-            return t(key)
-        except KeyError:
-            return ""
-    return t, unit
+    return texts(lang)
 
 
 def english_symbols(text):
@@ -174,7 +169,7 @@ def _symbol_table(ws, r, lang, bold, body):
     from openpyxl.worksheet.pagebreak import Break
 
     ws.row_breaks.append(Break(id=r - 1))      # the table starts a page, with its title
-    t, _ = _words(lang)
+    t = _words(lang)
     ru = t.symbol(True, False)       # the Russian textbook's symbols: a column of each set
     title = t("sheet.engine.symbols_title")
     c = ws.cell(r, 2, title)
@@ -199,7 +194,7 @@ def _symbol_table(ws, r, lang, bold, body):
 
 def build(lang: str, path: Path) -> None:
     body, bold, title, note = _fonts(lang)
-    t, unit = _words(lang)
+    t = _words(lang)
 
     def heads(*keys):
         return tuple(t(f"sheet.engine.head.{k}") for k in keys)
@@ -217,10 +212,10 @@ def build(lang: str, path: Path) -> None:
     for j, h in enumerate(heads("quantity", "symbol", "value", "unit"), start=2):
         c = ws.cell(3, j, h)
         c.font, c.fill, c.border, c.alignment = bold, HEAD_FILL, BORDER, CENTER
-    for i, (key, sym, fmt) in enumerate(INPUTS, start=4):
+    for i, (key, sym, unit, fmt) in enumerate(INPUTS, start=4):
         ws.cell(i, 1, key)
-        for j, v in enumerate((t(f"sheet.engine.input.{key}"), sym, None,
-                               unit(f"sheet.engine.input.{key}.unit")), start=2):
+        for j, v in enumerate((t(f"sheet.engine.input.{key}"), sym, None, t.unit(unit)),
+                              start=2):
             c = ws.cell(i, j, v)
             c.font, c.border = body, BORDER
             c.alignment = LEFT if j in (2, 4) else CENTER
@@ -296,10 +291,9 @@ def build(lang: str, path: Path) -> None:
                                 "alpha_min", "unit"), start=2):
         c = ws.cell(3, j, h)
         c.font, c.fill, c.border, c.alignment = bold, HEAD_FILL, BORDER, CENTER
-    for i, (key, sym) in enumerate(SUMMARY_EXTREMES, start=4):
+    for i, (key, sym, unit) in enumerate(SUMMARY_EXTREMES, start=4):
         ws.cell(i, 1, key)
-        vals = (t(f"sheet.engine.extreme.{key}"), sym, None, None, None, None,
-                unit(f"sheet.engine.extreme.{key}.unit"))
+        vals = (t(f"sheet.engine.extreme.{key}"), sym, None, None, None, None, t.unit(unit))
         for j, v in enumerate(vals, start=2):
             c = ws.cell(i, j, v)
             c.font, c.border = body, BORDER
@@ -312,10 +306,10 @@ def build(lang: str, path: Path) -> None:
         c = ws.cell(r0, j, h)
         c.font, c.fill, c.border, c.alignment = bold, HEAD_FILL, BORDER, CENTER
     ws.cell(r0, 1, "key")
-    for i, (key, sym, fmt) in enumerate(SUMMARY_VALUES, start=r0 + 1):
+    for i, (key, sym, unit, fmt) in enumerate(SUMMARY_VALUES, start=r0 + 1):
         ws.cell(i, 1, key)
-        for j, v in enumerate((t(f"sheet.engine.value.{key}"), sym, None,
-                               unit(f"sheet.engine.value.{key}.unit")), start=2):
+        for j, v in enumerate((t(f"sheet.engine.value.{key}"), sym, None, t.unit(unit)),
+                              start=2):
             c = ws.cell(i, j, v)
             c.font, c.border = body, BORDER
             c.alignment = LEFT if j == 2 else CENTER

@@ -483,8 +483,9 @@ def save_workbook(wb, path):
 
 #: The shape of the words of the whole engine's sheets; the words are in the catalogue
 #: ``crankbase/locale/<lang>/sheet.po`` under ``sheet.engine.<name>``: a text, a tuple
-#: (``.<i>``), a mapping (``.<key>``) or rows of (key, label, unit) (``.<key>``,
-#: ``.<key>.unit``).
+#: (``.<i>``), a mapping (``.<key>``) or rows of (key, label, unit) (the label
+#: ``.<key>``; the unit given here, a key of :data:`crankbase.texts.UNITS`: "deg" is the
+#: degree of a unit column, "" none).
 _TR_SHAPE = {'alpha': 'str',
  'arrangements': ('dict', ('inline', 'vee', 'boxer')),
  'bal_cols': ('tuple', 5),
@@ -505,8 +506,9 @@ _TR_SHAPE = {'alpha': 'str',
  'fw_none': 'str',
  'fw_note': 'str',
  'fw_rows': ('rows',
-             ('L_excess_J', 'delta', 'omega', 'J0_kgm2', 'share', 'J_flywheel_kgm2',
-              'mD2_kgm2', 'diameter_m', 'mass_kg', 'rim_speed_m_s')),
+             {'L_excess_J': 'J', 'delta': '', 'omega': 'rad/s', 'J0_kgm2': 'kg·m²',
+              'share': '', 'J_flywheel_kgm2': 'kg·m²', 'mD2_kgm2': 'kg·m²',
+              'diameter_m': 'm', 'mass_kg': 'kg', 'rim_speed_m_s': 'm/s'}),
  'fw_title': 'str',
  'given': 'str',
  'inputs': 'str',
@@ -516,16 +518,18 @@ _TR_SHAPE = {'alpha': 'str',
  'no': 'str',
  'parts': ('dict', ('1', '2', 'j', 'r', 'cw', 'before', 'after')),
  'summary': ('rows',
-             ('M_mean_Nm', 'M_max_Nm', 'alpha_M_max_deg', 'M_min_Nm', 'alpha_M_min_deg',
-              'mu', 'Mi_Nm', 'Me_Nm', 'Ni_kW', 'Ne_kW', 'diff_pct')),
+             {'M_mean_Nm': 'N·m', 'M_max_Nm': 'N·m', 'alpha_M_max_deg': 'deg',
+              'M_min_Nm': 'N·m', 'alpha_M_min_deg': 'deg', 'mu': '', 'Mi_Nm': 'N·m',
+              'Me_Nm': 'N·m', 'Ni_kW': 'kW', 'Ne_kW': 'kW', 'diff_pct': '%'}),
  'torque': 'str',
  'torque_title': 'str',
  'torque_title_odd': 'str',
  'total': 'str',
  'train_items': ('rows',
-                 ('arrangement', 'vee_angle_deg', 'firing_order', 'throw_angles_deg',
-                  'cylinder_spacing_mm', 'bank_offset_mm', 'mechanical_efficiency', 'delta',
-                  'counterweights')),
+                 {'arrangement': '', 'vee_angle_deg': 'deg', 'firing_order': '',
+                  'throw_angles_deg': 'deg', 'cylinder_spacing_mm': 'mm',
+                  'bank_offset_mm': 'mm', 'mechanical_efficiency': '', 'delta': '',
+                  'counterweights': ''}),
  'yes': 'str'}
 
 
