@@ -214,28 +214,27 @@ def read_po(path: Path):
         msgid = entry.get("msgid")
         if msgid is None:
             fail("msgstr without msgid")
-        fail_entry = functools.partial(fail, line=start)
         forms = entry.get("forms")
         if "msgid_plural" in entry:
             if "msgstr" in entry or not forms or sorted(forms) != list(range(len(forms))):
-                fail_entry(f"{msgid!r}: a plural entry needs msgstr[0], msgstr[1] … only")
+                fail(f"{msgid!r}: a plural entry needs msgstr[0], msgstr[1] … only", start)
             value = tuple(forms[i] for i in range(len(forms)))
         elif forms or "msgstr" not in entry:
-            fail_entry(f"{msgid!r}: a singular entry needs one msgstr")
+            fail(f"{msgid!r}: a singular entry needs one msgstr", start)
         else:
             value = entry["msgstr"]
         if msgid == "":
             plural = _plural_forms(value)
         elif not fuzzy:
             if msgid in out:
-                fail_entry(f"key {msgid!r} twice in one file")
+                fail(f"key {msgid!r} twice in one file", start)
             if isinstance(value, tuple) and len(value) != plural[1]:
-                fail_entry(f"{msgid!r}: {len(value)} plural forms, the header says "
-                     f"nplurals={plural[1]}")
+                fail(f"{msgid!r}: {len(value)} plural forms, the header says "
+                     f"nplurals={plural[1]}", start)
             out[msgid] = value
         entry, fuzzy, field = {}, False, None
 
-    for lineno, raw in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+    for lineno, raw in enumerate(path.read_text(encoding="utf-8-sig").splitlines(), 1):
         line = raw.strip()
         if not line:
             continue
@@ -377,8 +376,8 @@ class _AreaTranslations:
 def area_texts(lang: str, area: str) -> Texts:
     """The :class:`Texts` of one area only (:func:`read_area`), cached: read once a process,
     a key missing in ``lang`` falls back to English's same area.  For the command line's
-    help (area ``cli``), which must not wait for every catalogue (:func:`texts` reads all
-    of them with Babel); the keys are the same as :func:`texts` gives."""
+    help (area ``cli``), which needs no other area (:func:`texts` reads every area of the
+    language and of English); the keys are the same as :func:`texts` gives."""
     if lang not in catalogue_languages():
         raise KeyError(f"no text catalogue for language {lang!r}; there are: "
                        + ", ".join(catalogue_languages()))

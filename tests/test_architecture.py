@@ -95,6 +95,14 @@ def test_the_engine_loads_only_the_group_routines_of_linkage():
     assert {"linkage.analysis", "linkage.spec", "linkage.chain"} <= set(mods)
 
 
+@pytest.mark.parametrize("package", LIBRARIES + ["crankdyn"])
+def test_no_module_imports_babel(package):
+    """Babel is a test dependency only (pyproject's ``test`` extra): the text layer reads
+    its catalogues with the standard library (crankbase.texts.read_po)."""
+    for path in sorted((ROOT / package).rglob("*.py")):
+        assert "babel" not in _project_imports(path), f"{path.relative_to(ROOT)} imports babel"
+
+
 def test_cli_catches_only_the_project_errors(monkeypatch, capsys):
     """A bug (any exception that is not a CrankdynError) shows as a bug, with its traceback;
     the project's own errors are one line each and exit 2."""
