@@ -167,7 +167,7 @@ _DEFAULT_PLURAL = ("nplurals=2; plural=(n != 1);", 2, "(n != 1)")
 
 
 def _po_string(body: str) -> str:
-    """A quoted ``.po`` string's body unescaped as Babel and ``msgfmt`` do (``\\n \\t
+    """A quoted ``.po`` string's body unescaped as Babel's ``read_po`` does (``\\n \\t
     \\r \\" \\\\``; any other backslash is kept as written)."""
     if "\\" not in body:
         return body
