@@ -12,7 +12,12 @@ a translator controls word order.
 Plural forms are gettext's: an entry with ``msgid_plural`` has one ``msgstr[i]`` per form
 of its language, chosen by the ``Plural-Forms`` rule in the catalogue's header (Russian has
 three: «1 график», «3 графика», «22 графика», «5 графиков»).  The catalogues are read with
-Babel and looked up through the standard library's :class:`gettext.GNUTranslations`.
+the standard library (:func:`read_po`: a few milliseconds a language, where Babel's
+``read_po`` and ``write_mo`` took ~0.1 s) and looked up through its
+:class:`gettext.GNUTranslations`, the plural rule compiled by :func:`gettext.c2py`; only
+the language asked and the reference are read (:func:`offered`), every catalogue only when
+the list of offered languages is asked (:func:`languages`).  A test checks the reading
+against Babel's of every catalogue.
 
 Adding a language is filling a catalogue, not changing code: copy ``locale/en`` to
 ``locale/<lang>``, set the header's ``Language`` and ``Plural-Forms``, translate every
@@ -35,15 +40,15 @@ Examples
 from __future__ import annotations
 
 import functools
-import io
+import gettext
 import re
 import string
 from collections.abc import Sequence
 from pathlib import Path
 
-__all__ = ["Texts", "texts", "area_texts", "read_area", "languages", "catalogue_languages",
-           "keys", "LOCALE_DIR", "REFERENCE", "OfferedLanguages", "OFFERED", "SYMBOL_SETS",
-           "UNITS", "unit_key"]
+__all__ = ["Texts", "texts", "area_texts", "read_area", "read_po", "languages", "offered",
+           "catalogue_languages", "keys", "CatalogueError", "LOCALE_DIR", "REFERENCE",
+           "OfferedLanguages", "OFFERED", "SYMBOL_SETS", "UNITS", "unit_key"]
 
 #: Folder of the catalogues (shipped as package data of ``crankbase``).
 LOCALE_DIR = Path(__file__).resolve().parent / "locale"
@@ -174,41 +179,181 @@ def catalogue_languages() -> tuple[str, ...]:
                         if p.is_dir() and any(p.glob("*.po"))))
 
 
+class CatalogueError(ValueError):
+    """A catalogue that cannot be read: a line that is no ``.po`` syntax, a key twice in
+    one language, a plural entry with the wrong number of forms, files of one language
+    with different ``Plural-Forms``."""
+
+
+_PO_KEYWORD = re.compile(r'(msgctxt|msgid_plural|msgid|msgstr(?:\[(\d+)\])?)[ \t]+"(.*)"$')
+_PO_ESCAPE = re.compile(r'\\([\\trn"])')
+_PO_ESCAPES = {"n": "\n", "t": "\t", "r": "\r", '"': '"', "\\": "\\"}
+_DEFAULT_PLURAL = ("nplurals=2; plural=(n != 1);", 2, "(n != 1)")
+
+
+def _po_string(body: str) -> str:
+    """A quoted ``.po`` string's body unescaped as Babel's ``read_po`` does (``\\n \\t
+    \\r \\" \\\\``; any other backslash is kept as written)."""
+    if "\\" not in body:
+        return body
+    return _PO_ESCAPE.sub(lambda m: _PO_ESCAPES[m.group(1)], body)
+
+
+def _plural_forms(header: str):
+    """``(Plural-Forms value, nplurals, plural expression)`` of a catalogue header (the
+    ``msgstr`` of its empty ``msgid``); English's rule when the header names none."""
+    for line in header.split("\n"):
+        name, _, value = line.partition(":")
+        if name.strip().lower() == "plural-forms":
+            value = value.strip()
+            params = dict(p.strip().partition("=")[::2] for p in value.split(";") if p.strip())
+            try:
+                return value, int(params["nplurals"]), params["plural"].strip()
+            except (KeyError, ValueError):
+                raise CatalogueError(f"bad Plural-Forms {value!r}") from None
+    return _DEFAULT_PLURAL
+
+
+def read_po(path: Path):
+    """One ``.po`` file read with the standard library: ``(plural_forms, entries)``,
+    ``plural_forms`` as :func:`_plural_forms` gives it, ``entries`` a ``{key: text}`` in
+    the file's order whose plural entries (``msgid_plural``) are tuples of their
+    ``msgstr[i]``.  Fuzzy entries are skipped (as Babel's ``write_mo`` skips them), so is
+    the header.  Every line must be ``.po`` syntax (comment, keyword with a quoted string,
+    continued string, blank), a key must not repeat, a plural entry must have exactly the
+    header's ``nplurals`` forms: else a :class:`CatalogueError` naming the file and line.
+    ``msgctxt`` is refused: no key of the text layer has a context."""
+    where = f"{path.parent.name}/{path.name}"
+    out: dict = {}
+    plural = _DEFAULT_PLURAL
+    entry: dict = {}
+    field = None
+    fuzzy = False
+    lineno = start = 0                 # the line read, the line of the entry's msgid
+
+    def fail(message, line=None):
+        raise CatalogueError(f"{where}:{line or lineno}: {message}")
+
+    def close():
+        nonlocal entry, fuzzy, field, plural
+        msgid = entry.get("msgid")
+        if msgid is None:
+            fail("msgstr without msgid")
+        forms = entry.get("forms")
+        if "msgid_plural" in entry:
+            if "msgstr" in entry or not forms or sorted(forms) != list(range(len(forms))):
+                fail(f"{msgid!r}: a plural entry needs msgstr[0], msgstr[1] … only", start)
+            value = tuple(forms[i] for i in range(len(forms)))
+        elif forms or "msgstr" not in entry:
+            fail(f"{msgid!r}: a singular entry needs one msgstr", start)
+        else:
+            value = entry["msgstr"]
+        if msgid == "":
+            plural = _plural_forms(value)
+        elif not fuzzy:
+            if msgid in out:
+                fail(f"key {msgid!r} twice in one file", start)
+            if isinstance(value, tuple) and len(value) != plural[1]:
+                fail(f"{msgid!r}: {len(value)} plural forms, the header says "
+                     f"nplurals={plural[1]}", start)
+            out[msgid] = value
+        entry, fuzzy, field = {}, False, None
+
+    for lineno, raw in enumerate(path.read_text(encoding="utf-8-sig").splitlines(), 1):
+        line = raw.strip()
+        if not line:
+            continue
+        first = line[0]
+        if first == '"':
+            if field is None or len(line) < 2 or line[-1] != '"':
+                fail(f"cannot read the line {raw!r}")
+            text = _po_string(line[1:-1])
+            if type(field) is int:
+                entry["forms"][field] += text
+            else:
+                entry[field] += text
+            continue
+        if first == "#":
+            if "msgstr" in entry or "forms" in entry:
+                close()                        # a comment starts the next entry
+            if line.startswith("#,") and "fuzzy" in (f.strip() for f in line[2:].split(",")):
+                fuzzy = True
+            continue
+        m = _PO_KEYWORD.match(line)
+        if m is None:
+            fail(f"cannot read the line {raw!r}")
+        keyword, index, body = m.groups()
+        if keyword == "msgctxt":
+            fail("msgctxt: the text layer's keys have no context")
+        if keyword == "msgid":
+            if "msgstr" in entry or "forms" in entry:
+                close()
+            start = lineno
+        text = _po_string(body)
+        if index is not None:
+            forms = entry.setdefault("forms", {})
+            field = int(index)
+            if field in forms:
+                fail(f"msgstr[{field}] twice")
+            forms[field] = text
+        else:
+            if keyword in entry:
+                fail(f"{keyword} twice in one entry")
+            field = keyword
+            entry[field] = text
+    if entry:
+        close()
+    return plural, out
+
+
+class _Translations(gettext.GNUTranslations):
+    """The standard library's :class:`gettext.GNUTranslations`, filled from entries read
+    by :func:`read_po` instead of from a compiled ``.mo``: the same ``_catalog`` a ``.mo``
+    gives it (``key → text``, ``(key, i) → form i``), the same plural function
+    (:func:`gettext.c2py` of the header's expression), so its ``gettext``/``ngettext``
+    answer as before."""
+
+    def __init__(self, catalog: dict, plural_expr: str):
+        gettext.NullTranslations.__init__(self)
+        self._catalog = catalog
+        self.plural = gettext.c2py(plural_expr)
+        self._charset = "UTF-8"
+
+
 @functools.lru_cache(maxsize=None)
 def _catalogue(lang: str):
-    """``(GNUTranslations, keys)`` of one language: every ``.po`` of its folder read with
-    Babel, compiled in memory and loaded by :mod:`gettext`."""
-    import gettext
+    """``(GNUTranslations, keys)`` of one language: every ``.po`` of its folder read by
+    :func:`read_po` (standard library only) and merged; a key in two files of one
+    language, or two files with different ``Plural-Forms``, is a :class:`CatalogueError`.
 
-    from babel.messages.catalog import Catalog
-    from babel.messages.mofile import write_mo
-    from babel.messages.pofile import read_po
-
-    folder = LOCALE_DIR / lang
-    files = sorted(folder.glob("*.po"))
+    What a ``.mo`` compiled from the catalogue would hold (Babel's ``write_mo``, the
+    former path): an empty singular text is left out (``gettext`` answers the key), an
+    empty plural form is the key.  A test compares it with Babel's reading of every
+    catalogue."""
+    files = sorted((LOCALE_DIR / lang).glob("*.po"))
     if not files:
         raise KeyError(lang)
-    merged = None
+    catalog: dict = {}
+    keys: set = set()
+    rule = None
     for path in files:
-        with path.open("rb") as fh:
-            cat = read_po(fh, locale=None, domain=path.stem)
-        if merged is None:
-            merged = Catalog(locale=None, domain="crankdyn")
-            # the header (plural rule) of the first file; every file of a language has
-            # the same one (a test checks it)
-            merged.mime_headers = cat.mime_headers
-        for msg in cat:
-            if msg.id and not msg.fuzzy:
-                if msg.id in merged:
-                    area = path.stem
-                    raise ValueError(f"{lang}/{area}.po: key {msg.id!r} is also in another "
-                                     f"file of {lang}")
-                merged[msg.id] = msg
-    buf = io.BytesIO()
-    write_mo(buf, merged)
-    buf.seek(0)
-    keys = frozenset(m.id if isinstance(m.id, str) else m.id[0] for m in merged if m.id)
-    return gettext.GNUTranslations(buf), keys
+        plural, entries = read_po(path)
+        if rule is None:
+            rule = plural
+        elif plural[0] != rule[0]:
+            raise CatalogueError(f"{lang}/{path.name}: Plural-Forms {plural[0]!r}; "
+                                 f"{lang}/{files[0].name} says {rule[0]!r}")
+        for key, value in entries.items():
+            if key in keys:
+                raise CatalogueError(f"{lang}/{path.stem}.po: key {key!r} is also in "
+                                     f"another file of {lang}")
+            keys.add(key)
+            if isinstance(value, tuple):
+                for i, form in enumerate(value):
+                    catalog[(key, i)] = form or key
+            elif value:
+                catalog[key] = value
+    return _Translations(catalog, rule[2]), frozenset(keys)
 
 
 @functools.lru_cache(maxsize=None)
@@ -224,57 +369,19 @@ def texts(lang: str = "ru") -> Texts:
     return Texts(lang, tr, keys, fallback)
 
 
-_PO_LINE = re.compile(r'^(msgctxt|msgid_plural|msgid|msgstr(?:\[\d+\])?)\s+"(.*)"\s*$')
-_PO_ESCAPES = {"n": "\n", "t": "\t", "r": "\r", '"': '"', "\\": "\\"}
-
-
-def _po_string(body: str) -> str:
-    return re.sub(r"\\(.)", lambda m: _PO_ESCAPES.get(m.group(1), m.group(0)), body)
-
-
 def read_area(lang: str, area: str) -> dict[str, str]:
-    """``{key: text}`` of one area's catalogue (``locale/<lang>/<area>.po``), read with the
-    standard library only: no Babel, no other area.  For an area read on a fast path (the
-    command line's ``--help``, area ``cli``); it holds singular entries only (a plural
-    entry is a :class:`ValueError`), fuzzy entries are skipped as :func:`texts` skips
-    them.  A test compares it with Babel's reading of every ``cli.po``."""
-    path = LOCALE_DIR / lang / f"{area}.po"
-    out: dict[str, str] = {}
-    entry: dict[str, str] = {}
-    field = None
-    fuzzy = False
-
-    def close():
-        nonlocal entry, fuzzy
-        if "msgid_plural" in entry:
-            raise ValueError(f"{lang}/{area}.po: {entry.get('msgid')!r} is a plural entry; "
-                             "read_area reads singular entries only")
-        if entry.get("msgid") and "msgstr" in entry and not fuzzy:
-            out[entry["msgid"]] = entry["msgstr"]
-        entry, fuzzy = {}, False
-
-    for raw in path.read_text(encoding="utf-8").splitlines():
-        line = raw.strip()
-        if not line:
-            continue
-        if line.startswith("#"):
-            if line.startswith("#,") and "fuzzy" in line:
-                if entry:
-                    close()
-                fuzzy = True
-            continue
-        m = _PO_LINE.match(line)
-        if m:
-            if m.group(1) in ("msgid", "msgctxt") and "msgstr" in entry:
-                close()                # the entry before, with its own fuzzy flag
-            field = m.group(1)
-            entry[field] = _po_string(m.group(2))
-        elif line.startswith('"') and line.endswith('"') and field:
-            entry[field] += _po_string(line[1:-1])
-        else:
-            raise ValueError(f"{lang}/{area}.po: cannot read the line {raw!r}")
-    close()
-    return out
+    """``{key: text}`` of one area's catalogue (``locale/<lang>/<area>.po``) alone, read by
+    :func:`read_po` (standard library only, no other area).  For an area read on a fast
+    path (the command line's ``--help``, area ``cli``); it holds singular entries only (a
+    plural entry is a :class:`CatalogueError`), fuzzy entries are skipped as
+    :func:`texts` skips them.  A test compares it with Babel's reading of every
+    ``cli.po``."""
+    _, entries = read_po(LOCALE_DIR / lang / f"{area}.po")
+    for key, value in entries.items():
+        if isinstance(value, tuple):
+            raise CatalogueError(f"{lang}/{area}.po: {key!r} is a plural entry; "
+                                 "read_area reads singular entries only")
+    return entries
 
 
 class _AreaTranslations:
@@ -294,8 +401,8 @@ class _AreaTranslations:
 def area_texts(lang: str, area: str) -> Texts:
     """The :class:`Texts` of one area only (:func:`read_area`), cached: read once a process,
     a key missing in ``lang`` falls back to English's same area.  For the command line's
-    help (area ``cli``), which must not wait for every catalogue (:func:`texts` reads all
-    of them with Babel); the keys are the same as :func:`texts` gives."""
+    help (area ``cli``), which needs no other area (:func:`texts` reads every area of the
+    language and of English); the keys are the same as :func:`texts` gives."""
     if lang not in catalogue_languages():
         raise KeyError(f"no text catalogue for language {lang!r}; there are: "
                        + ", ".join(catalogue_languages()))
@@ -309,12 +416,20 @@ def keys(lang: str = REFERENCE) -> frozenset:
     return _catalogue(lang)[1]
 
 
+def offered(lang) -> bool:
+    """Whether ``lang`` is offered (:func:`languages`): it has a catalogue holding every
+    key of the reference catalogue.  Reads that language and the reference only, not
+    every catalogue: what a ``--lang`` check needs."""
+    return (isinstance(lang, str) and lang in catalogue_languages()
+            and keys(REFERENCE) <= keys(lang))
+
+
 @functools.lru_cache(maxsize=None)
 def languages() -> tuple[str, ...]:
     """The languages offered for reports: those whose catalogue holds every key of the
-    reference catalogue (Russian first, the default of the course projects)."""
-    ref = keys(REFERENCE)
-    done = [lang for lang in catalogue_languages() if ref <= keys(lang)]
+    reference catalogue (Russian first, the default of the course projects).  Reads every
+    catalogue; whether one language is offered is :func:`offered`."""
+    done = [lang for lang in catalogue_languages() if offered(lang)]
     return tuple(sorted(done, key=lambda code: (code != "ru", code != "en", code)))
 
 
@@ -330,7 +445,7 @@ class OfferedLanguages(Sequence):
         return len(languages())
 
     def __contains__(self, value):
-        return value in languages()
+        return offered(value)          # reads that one catalogue, not all
 
     def __repr__(self):
         return f"OfferedLanguages({languages()!r})"

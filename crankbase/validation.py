@@ -481,10 +481,9 @@ class Checker:
 def check_lang(lang, key: str = "lang") -> str:
     """``lang`` if it is an offered language, else a :class:`~crankbase.errors.SpecError`
     naming ``key``, the value and the valid choices."""
-    from .texts import languages
+    from .texts import languages, offered
 
-    offered = languages()
-    if lang in offered:
+    if offered(lang):                  # reads this language's catalogue only, not all
         return lang
     raise SpecError(Problem(key, Text("errors.validation.one",
-                                      {"lang": lang, "items": ', '.join(offered)})))
+                                      {"lang": lang, "items": ', '.join(languages())})))

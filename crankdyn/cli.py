@@ -188,9 +188,9 @@ def _speak_argparse(lang: str) -> None:
 
     def t(key, **fields):
         if not words:
-            from crankbase.texts import languages, texts
+            from crankbase.texts import offered, texts
 
-            words.append(texts(lang if lang in languages() else "ru"))
+            words.append(texts(lang if offered(lang) else "ru"))
         return words[0](key, **fields)
 
     class Template(str):

@@ -75,6 +75,34 @@ def test_a_computation_loads_nothing_heavy():
     assert not [m for m in mods if m == "crankdyn" or m.startswith("crankdyn.")]
 
 
+def test_the_engine_loads_only_the_group_routines_of_linkage():
+    """The engine uses linkage's group routines (:mod:`linkage.groups`) only; the package
+    imports its analysis, chain and spec reader when one of their names is first asked
+    (PEP 562), so an engine run does not pay for them.  Those names still work: as
+    attributes, by ``from linkage import …``, by ``import *`` and as submodules."""
+    mods = _modules_after("import engine")
+    assert sorted(m for m in mods if m.split(".")[0] == "linkage") == [
+        "linkage", "linkage.groups"]
+    mods = _modules_after(
+        "import linkage\n"
+        "from linkage import *\n"
+        "from linkage import analyze, load_spec\n"
+        "assert linkage.analyze is analyze and linkage.chain.solve\n"
+        "assert set(linkage.__all__) <= set(dir(linkage))\n"
+        "assert all(getattr(linkage, n) is globals()[n] for n in linkage.__all__)\n"
+        "try:\n    linkage.no_such_name\nexcept AttributeError:\n    pass\n"
+        "else:\n    raise SystemExit('no AttributeError')\n")
+    assert {"linkage.analysis", "linkage.spec", "linkage.chain"} <= set(mods)
+
+
+@pytest.mark.parametrize("package", LIBRARIES + ["crankdyn"])
+def test_no_module_imports_babel(package):
+    """Babel is a test dependency only (pyproject's ``test`` extra): the text layer reads
+    its catalogues with the standard library (crankbase.texts.read_po)."""
+    for path in sorted((ROOT / package).rglob("*.py")):
+        assert "babel" not in _project_imports(path), f"{path.relative_to(ROOT)} imports babel"
+
+
 def test_cli_catches_only_the_project_errors(monkeypatch, capsys):
     """A bug (any exception that is not a CrankdynError) shows as a bug, with its traceback;
     the project's own errors are one line each and exit 2."""

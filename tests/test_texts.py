@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import ast
 import re
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -319,3 +321,193 @@ def test_a_third_language_writes_the_notation_its_catalogue_names(tmp_path, monk
         monkeypatch.undo()
         for f in (T._catalogue, T.texts, T.languages):
             f.cache_clear()
+
+
+# ---- the standard-library reader (issue #19, start-up cost) against Babel's reading -----
+
+def _babel_translations(lang, folder=None):
+    """The former path, kept here as the reference: every ``.po`` of ``lang`` read by
+    Babel, merged, compiled by ``write_mo`` and loaded by GNUTranslations."""
+    import gettext
+    import io
+
+    from babel.messages.catalog import Catalog
+    from babel.messages.mofile import write_mo
+
+    merged = None
+    for path in sorted(((folder or T.LOCALE_DIR) / lang).glob("*.po")):
+        with path.open("rb") as fh:
+            cat = read_po(fh, locale=None, domain=path.stem)
+        if merged is None:
+            merged = Catalog(locale=None, domain="crankdyn")
+            merged.mime_headers = cat.mime_headers
+        for msg in cat:
+            if msg.id and not msg.fuzzy:
+                assert msg.id not in merged
+                merged[msg.id] = msg
+    buf = io.BytesIO()
+    write_mo(buf, merged)
+    buf.seek(0)
+    keys = frozenset(m.id if isinstance(m.id, str) else m.id[0] for m in merged if m.id)
+    return gettext.GNUTranslations(buf), keys
+
+
+def _babel_entries(path):
+    """``{key: text or tuple of forms}`` of one file as Babel reads it, fuzzy skipped."""
+    with path.open("rb") as fh:
+        cat = read_po(fh)
+    return cat, {(m.id[0] if isinstance(m.id, (tuple, list)) else m.id):
+                 (tuple(m.string) if isinstance(m.string, (tuple, list)) else m.string)
+                 for m in cat if m.id and not m.fuzzy}
+
+
+@pytest.mark.parametrize("lang", T.catalogue_languages())
+def test_the_fast_reader_reads_every_catalogue_as_babel_does(lang):
+    """Every file: the same entries (keys, texts, plural forms) and the same plural rule
+    as Babel's ``read_po``; the merged language: the same keys, the same GNUTranslations
+    table as Babel's ``write_mo`` compiled, the same text of every key and the same
+    plural form of every plural key for n = 0..200."""
+    for path in sorted((T.LOCALE_DIR / lang).glob("*.po")):
+        cat, babel = _babel_entries(path)
+        plural, entries = T.read_po(path)
+        assert entries == babel, path.name
+        assert list(entries) == list(babel), f"{path.name}: order"
+        assert plural[1] == cat.num_plurals and plural[0] == cat.plural_forms, path.name
+    old, old_keys = _babel_translations(lang)
+    T._catalogue.cache_clear()
+    new, new_keys = T._catalogue(lang)
+    assert new_keys == old_keys and len(new_keys) > 1000
+    assert new._catalog == {k: v for k, v in old._catalog.items() if k != ""}
+    plurals = [k for k in new_keys if (k, 0) in old._catalog]
+    assert len(plurals) >= 5
+    for n in range(201):
+        assert new.plural(n) == old.plural(n), n
+        for key in plurals:
+            assert new.ngettext(key, key, n) == old.ngettext(key, key, n), (key, n)
+    for key in new_keys:
+        assert new.gettext(key) == old.gettext(key), key
+
+
+_TRICKY = r'''# a header comment
+msgid ""
+msgstr ""
+"Language: xx\n"
+"Plural-Forms: nplurals=3; plural=(n%10==1 && n%100!=11 ? 0 : n%10>=2 && n%10<=4 && (n%100<10 || n%100>=20) ? 1 : 2);\n"
+
+#. an extracted comment
+#: a/reference.py:12
+msgid "common.a"
+msgstr ""
+"one \"two\" "
+"three\n"
+"tab\there \\ back\\slash \q"
+
+#, fuzzy
+msgid "common.b"
+msgstr "draft"
+msgid "common.c"
+msgstr "c"
+
+#, python-format, fuzzy
+#| msgid "common.old"
+msgid "common.d"
+msgid_plural "common.d"
+msgstr[0] "d0"
+msgstr[1] "d1"
+msgstr[2] "d2"
+
+#~ msgid "common.gone"
+#~ msgstr "obsolete"
+
+msgid "common.e"
+msgid_plural "common.e"
+msgstr[0] "{n} e0"
+msgstr[1] ""
+"{n} e1"
+msgstr[2] "{n} e2"
+#, no-fuzzy-here
+msgid "common.f"
+msgstr "f"
+'''
+
+
+def test_the_fast_reader_reads_the_po_syntax_as_babel_does(tmp_path, monkeypatch):
+    """Continued strings, escapes (an unknown one kept), fuzzy entries (a flag among
+    others, an entry with no blank line before it), obsolete entries and comments of
+    every kind: the same entries as Babel reads; the Russian rule of the header."""
+    (tmp_path / "xx").mkdir()
+    po = tmp_path / "xx" / "common.po"
+    po.write_text(_TRICKY, encoding="utf-8")
+    cat, babel = _babel_entries(po)
+    plural, entries = T.read_po(po)
+    assert entries == babel
+    assert entries == {"common.a": 'one "two" three\ntab\there \\ back\\slash \\q',
+                       "common.c": "c", "common.e": ("{n} e0", "{n} e1", "{n} e2"),
+                       "common.f": "f"}
+    assert plural[1] == 3 == cat.num_plurals
+    monkeypatch.setattr(T, "LOCALE_DIR", tmp_path)
+    T._catalogue.cache_clear()
+    try:
+        tr, keys = T._catalogue("xx")
+        old, old_keys = _babel_translations("xx", tmp_path)
+        assert keys == old_keys == {"common.a", "common.c", "common.e", "common.f"}
+        assert [tr.ngettext("common.e", "common.e", n) for n in (1, 3, 5, 21, 111)] == [
+            "{n} e0", "{n} e1", "{n} e2", "{n} e0", "{n} e2"]
+        assert tr._catalog == {k: v for k, v in old._catalog.items() if k != ""}
+    finally:
+        monkeypatch.undo()
+        T._catalogue.cache_clear()
+
+
+@pytest.mark.parametrize("files, match", [
+    ({"common": 'msgid "common.a"\nmsgstr "1"\n\nmsgid "common.a"\nmsgstr "2"\n'},
+     r"xx/common.po:4: key 'common.a' twice in one file"),
+    ({"common": 'msgid "common.a"\nmsgstr "1"\n', "engine": 'msgid "common.a"\nmsgstr "2"\n'},
+     r"xx/engine.po: key 'common.a' is also in another file of xx"),
+    ({"common": 'msgid "common.a"\nmsgstr "1"\nmsgstr but no quotes\n'},
+     r"xx/common.po:3: cannot read the line 'msgstr but no quotes'"),
+    ({"common": 'msgid "common.a"\nmsgstr "1\n'}, r"xx/common.po:2: cannot read the line"),
+    ({"common": 'msgid "common.a"\nmsgstr "1"\n"2\n'}, r"xx/common.po:3: cannot read"),
+    ({"common": 'msgid "common.a"\nmsgid_plural "common.a"\nmsgstr[0] "1"\n'},
+     r"'common.a': 1 plural forms, the header says nplurals=2"),
+    ({"common": 'msgid "common.a"\nmsgid_plural "common.a"\nmsgstr[0] "1"\nmsgstr[2] "3"\n'},
+     r"a plural entry needs msgstr\[0\], msgstr\[1\]"),
+    ({"common": 'msgid "common.a"\nmsgstr[0] "1"\n'}, r"a singular entry needs one msgstr"),
+    ({"common": 'msgstr "1"\n'}, r"msgstr without msgid"),
+    ({"common": 'msgctxt "menu"\nmsgid "common.a"\nmsgstr "1"\n'}, r"msgctxt"),
+    ({"common": 'msgid ""\nmsgstr "Plural-Forms: nplurals=1; plural=0;\\n"\n',
+      "engine": 'msgid ""\nmsgstr "Plural-Forms: nplurals=2; plural=(n != 1);\\n"\n'},
+     r"xx/engine.po: Plural-Forms 'nplurals=2; plural=\(n != 1\);'"),
+])
+def test_a_broken_catalogue_stays_an_error(files, match, tmp_path, monkeypatch):
+    (tmp_path / "xx").mkdir()
+    for area, text in files.items():
+        (tmp_path / "xx" / f"{area}.po").write_text(text, encoding="utf-8")
+    monkeypatch.setattr(T, "LOCALE_DIR", tmp_path)
+    T._catalogue.cache_clear()
+    try:
+        with pytest.raises(T.CatalogueError, match=match):
+            T._catalogue("xx")
+    finally:
+        monkeypatch.undo()
+        T._catalogue.cache_clear()
+
+
+def test_a_run_reads_its_language_and_english_only_and_no_babel():
+    """What ``crankdyn engine --lang ru`` asks of the text layer (check the language,
+    argparse's ``choices``, the texts) reads two catalogues (ru and its fallback en) with
+    the standard library: Babel is not imported; ``--lang zh`` reads zh and en."""
+    code = ("import sys\nfrom crankbase import texts as T\n"
+            "from crankbase.validation import check_lang\n"
+            "read, real = set(), T.read_po\n"
+            "T.read_po = lambda path: read.add(path.parent.name) or real(path)\n"
+            "for lang in sys.argv[1:]:\n"
+            "    assert lang in T.OFFERED and check_lang(lang) == lang\n"
+            "    T.texts(lang).n('common.plots', 22)\n"
+            "print('babel' in sys.modules, ','.join(sorted(read)))")
+    for langs, want in ((["ru"], "en,ru"), (["zh"], "en,zh"), (["en"], "en"),
+                        (["ru", "zh"], "en,ru,zh")):
+        r = subprocess.run([sys.executable, "-c", code, *langs], capture_output=True,
+                           text=True, cwd=ROOT)
+        assert r.returncode == 0, r.stderr
+        assert r.stdout.split() == ["False", want], langs
