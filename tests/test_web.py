@@ -379,6 +379,7 @@ def test_a_crashing_job_shows_an_error_in_its_session_and_the_server_goes_on(app
     def boom(*a, **k):
         raise ZeroDivisionError("a bug")
     monkeypatch.setattr(engine, "run_study", boom)
+    app.app.state.studies.clear()      # the petrol example computed again, by the bug
     c = client(app)
     c.post("/engine/example", data={"example": "petrol"})
     r = c.post("/engine/run", data=form_values(c.get("/engine").text))
@@ -626,11 +627,14 @@ def test_the_same_study_asked_again_is_drawn_again_but_not_computed_again(app,
     """A session's flywheel run posted again in Russian (web.app._same_study): the
     library's study runs once, the second run's CSVs are the first's byte for byte, its
     summary and figures are Russian (drawn again, from the first run's report); a changed
-    value is computed again, with other numbers."""
+    value is computed again, with other numbers.  Another session's run of the same
+    spec is not computed again either (web.app.StudyCache: one study for a class), and
+    its CSVs are the first's byte for byte."""
     import dynamics.study as study
 
     real, calls = study.run_study, []
     monkeypatch.setattr(study, "run_study", lambda *a, **k: calls.append(1) or real(*a, **k))
+    app.app.state.studies.clear()           # the app's earlier tests' studies forgotten
 
     def files(html, ext):
         urls = re.findall(rf'(?:href|src)="(/dynamics/run/\d+/[^"]+\.{ext})"', html)
@@ -656,6 +660,15 @@ def test_the_same_study_asked_again_is_drawn_again_but_not_computed_again(app,
     assert 'id="results"' in other and calls == [1, 1]         # a new study: computed
     csv3 = files(other, "csv")
     assert sorted(csv3) == sorted(csv1) and csv3 != csv1
+    # a second session (a classmate) posting the example's values: the app's study
+    c2 = client(app)
+    c2.post("/dynamics/example", data={"example": "flywheel"})
+    vals2 = form_values(c2.get("/dynamics").text)
+    assert vals2["machine.J_red_kgm2"] != "0.3"
+    html = c2.post("/dynamics/run", data=vals2).text
+    assert 'id="results"' in html and calls == [1, 1]          # not computed again
+    urls = re.findall(r'(?:href|src)="(/dynamics/run/\d+/[^"]+\.csv)"', html)
+    assert {u.rsplit("/", 1)[1]: c2.get(u).content for u in urls} == csv1
 
 
 def test_a_report_crosses_to_the_drawing_process_pickled():
@@ -780,6 +793,14 @@ def test_the_teacher_page_runs_a_class_and_zips_every_report(app, tmp_path, requ
     names = z.namelist()
     assert "variants_summary.csv" in names and "variants_errors.csv" in names
     assert not any(n.startswith("v2/") for n in names)
+    # every figure of both reports drawn for real, in PNG and SVG (the browser's class,
+    # tests/test_web_browser.py, saves its figures unrendered)
+    for v in ("v1", "v3"):
+        pngs = [n for n in names if n.startswith(f"{v}/") and n.endswith(".png")]
+        svgs = [n for n in names if n.startswith(f"{v}/") and n.endswith(".svg")]
+        assert len(pngs) == 13 and sorted(n[:-4] for n in svgs) == sorted(n[:-4] for n in pngs)
+        assert all(z.read(n)[:8] == b"\x89PNG\r\n\x1a\n" for n in pngs)
+        assert all(b"<svg" in z.read(n)[:1000] for n in svgs)
     spec = next(n for n in names if n.startswith("v3/") and n.endswith(".toml"))
     (tmp_path / "v3").mkdir()
     for n in names:

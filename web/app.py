@@ -35,7 +35,7 @@ from .synth_page import SynthPage
 from .pages import PageState, Run, render_job, report_blob, spec_toml
 from .sessions import COOKIE, SessionStore
 
-__all__ = ["build_app", "UPLOAD_LIMIT", "LANG_COOKIE"]
+__all__ = ["build_app", "StudyCache", "UPLOAD_LIMIT", "LANG_COOKIE"]
 
 HERE = Path(__file__).resolve().parent
 #: Largest request body (an uploaded spec and its pressure file) [bytes].
@@ -110,7 +110,7 @@ def _page_html(title, message, lang) -> str:
 # ----------------------------------------------------------------------------- the app
 def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: float = 3600.0,
               workers: int = 2, queue: int = 32, timeout: float = 120.0,
-              max_sessions: int = 500, render_workers: int = 2):
+              max_sessions: int = 500, render_workers: int = 2, studies: int = 16):
     """The ``crankdyn serve`` app.
 
     Parameters
@@ -131,6 +131,9 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         Longest wait of a page for its computation [s].
     max_sessions : int
         Live sessions at most (a new one beyond removes the one idle longest).
+    studies : int
+        Studies kept for every session (:class:`StudyCache`): a study asked again, by any
+        session (a class computing the same example), is not computed again; 0: none.
     """
     store = SessionStore(root, idle_seconds, max_sessions)
     pool = JobPool(workers, queue, timeout)
@@ -141,6 +144,7 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
     # a class's batch of reports draws in processes of its own (engine.variants); one
     # batch at a time, a few waiting
     batches = JobPool(1, 4, 3600.0)
+    cache = StudyCache(studies)
     templates = Jinja2Templates(directory=str(HERE / "templates"))
     templates.env.globals["languages"] = languages
 
@@ -194,9 +198,9 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
     routes = [Route("/", home)]
     for kind in KINDS:
         routes += _page_routes(kind, templates=templates, store=store, pool=pool,
-                               render=render, upload_limit=upload_limit, lang_of=lang_of,
-                               session_of=session_of, finish=finish, error_page=error_page,
-                               read_form=read_form)
+                               render=render, cache=cache, upload_limit=upload_limit,
+                               lang_of=lang_of, session_of=session_of, finish=finish,
+                               error_page=error_page, read_form=read_form)
     routes += _teacher_routes(templates=templates, store=store, pool=pool, batches=batches,
                               upload_limit=upload_limit, lang_of=lang_of,
                               session_of=session_of, finish=finish, error_page=error_page,
@@ -205,12 +209,12 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
                         name="static"))
     app = Starlette(routes=routes, lifespan=lifespan)
     app.state.store, app.state.pool, app.state.render = store, pool, render
-    app.state.batches = batches
+    app.state.batches, app.state.studies = batches, cache
     return BodyLimit(app, upload_limit) if upload_limit else app
 
 
-def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of, session_of,
-                 finish, error_page, read_form):
+def _page_routes(kind, *, templates, store, pool, render, cache, upload_limit, lang_of,
+                 session_of, finish, error_page, read_form):
     """The routes of one page (:class:`web.pages.Kind`): ``/<name>`` (GET), its
     ``/example``, ``/upload`` and ``/run`` (POST) and ``/run/<n>/<file>``."""
     base = f"/{kind.name}"
@@ -364,13 +368,17 @@ def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of,
             last = st.run
         folder = session.folder / f"{kind.name}-{number}"     # each page its own folders
         try:
+            key = StudyCache.key(kind, data, pressure, options)
             if _same_study(last, data, pressure, options):
                 # the session's last study asked again (in another language, say): its
                 # report is drawn anew, the numbers are not computed again
                 report, blob = last.report, report_blob(last.report)
+            elif (hit := cache.get(key)) is not None:
+                report, blob = hit          # another session's study of the same spec
             else:
                 report, blob = await pool.run(_computed, kind, data, folder / "input",
                                               pressure, options)
+                cache.put(key, (report, blob))
         except SpecError as exc:
             shutil.rmtree(folder, ignore_errors=True)
             with st.lock:
@@ -678,6 +686,54 @@ def _computed(kind, data, input_dir, pressure, options):
     the drawing process (:func:`web.pages.report_blob`): ``(report, blob)``."""
     report = kind.compute(data, input_dir, pressure, options)
     return report, report_blob(report)
+
+
+class StudyCache:
+    """The last ``size`` studies computed by the app's pages, for every session: the
+    ``(report, blob)`` of :func:`_computed` by :meth:`key`.  A report is never changed
+    once computed (a session's same study asked again is drawn from it too,
+    :func:`_same_study`), so sessions can share it; each run still draws its own files
+    into its own folder.  A class computing the same example, each student in a session
+    of their own, computes it once.  Only the event loop's thread uses it."""
+
+    def __init__(self, size: int = 16):
+        from collections import OrderedDict
+
+        self.size = max(0, int(size))
+        self._items = OrderedDict()
+
+    @staticmethod
+    def key(kind, data, pressure, options):
+        """The key of a page's study: its kind, spec and options; None (not kept) for a
+        run reading a pressure file (its report names the file of its own folder) or a
+        spec that does not write as TOML."""
+        if pressure is not None:
+            return None
+        try:
+            spec = spec_toml(data)
+        except (TypeError, ValueError):
+            return None
+        return kind.name, spec, repr(sorted(options.items()))
+
+    def get(self, key):
+        if key is None or key not in self._items:
+            return None
+        self._items.move_to_end(key)
+        return self._items[key]
+
+    def put(self, key, value) -> None:
+        if key is None or not self.size:
+            return
+        self._items[key] = value
+        self._items.move_to_end(key)
+        while len(self._items) > self.size:
+            self._items.popitem(last=False)
+
+    def clear(self) -> None:
+        self._items.clear()
+
+    def __len__(self) -> int:
+        return len(self._items)
 
 
 def _same_study(last, data, pressure, options) -> bool:
