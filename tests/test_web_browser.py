@@ -199,7 +199,7 @@ def _example_in(driver, server, page, example, lang, first):
 
 
 def test_the_petrol_example_in_the_browser_equals_the_cli(server, browser, tmp_path,
-                                                          petrol_at_4000):
+                                                          petrol_at_4000_tables):
     import openpyxl
     from selenium.webdriver.common.by import By
 
@@ -212,7 +212,7 @@ def test_the_petrol_example_in_the_browser_equals_the_cli(server, browser, tmp_p
     # Table 2's first rows on the page = the CLI's forces.csv for the same spec
     spec = tomllib.loads(example_path("petrol_vaz2106.toml").read_text(encoding="utf-8"))
     spec["engine"]["speed_rpm"] = float(SPEED)
-    shared_spec, report = petrol_at_4000                # the session's shared spec and run
+    shared_spec, report = petrol_at_4000_tables         # the session's spec and CLI run
     assert shared_spec == spec
     cli = _shared(report)
     with open(cli / "petrol-vaz2106_forces.csv", newline="") as fh:
