@@ -637,6 +637,7 @@ def test_the_same_study_asked_again_is_drawn_again_but_not_computed_again(app,
     real, calls = study.run_study, []
     monkeypatch.setattr(study, "run_study", lambda *a, **k: calls.append(1) or real(*a, **k))
     app.app.state.studies.clear()           # the app's earlier tests' studies forgotten
+    app.app.state.drawn.clear()
 
     def files(html, ext):
         urls = re.findall(rf'(?:href|src)="(/dynamics/run/\d+/[^"]+\.{ext})"', html)
@@ -662,15 +663,75 @@ def test_the_same_study_asked_again_is_drawn_again_but_not_computed_again(app,
     assert 'id="results"' in other and calls == [1, 1]         # a new study: computed
     csv3 = files(other, "csv")
     assert sorted(csv3) == sorted(csv1) and csv3 != csv1
-    # a second session (a classmate) posting the example's values: the app's study
+    # a second session (a classmate) posting the example's values in English: the app's
+    # study, and the files drawn for the first run (web.app.DrawnCache), its own links
+    render, drawn = app.app.state.render, []
+    real_submit = render.submit
+    monkeypatch.setattr(render, "submit", lambda *a, **k: drawn.append(1) or
+                        real_submit(*a, **k))
     c2 = client(app)
     c2.post("/dynamics/example", data={"example": "flywheel"})
     vals2 = form_values(c2.get("/dynamics").text)
     assert vals2["machine.J_red_kgm2"] != "0.3"
     html = c2.post("/dynamics/run", data=vals2).text
     assert 'id="results"' in html and calls == [1, 1]          # not computed again
-    urls = re.findall(r'(?:href|src)="(/dynamics/run/\d+/[^"]+\.csv)"', html)
-    assert {u.rsplit("/", 1)[1]: c2.get(u).content for u in urls} == csv1
+    assert drawn == []                                          # nor drawn again
+    got = {}
+    for ext in ("csv", "png", "xlsx", "toml"):
+        urls = re.findall(rf'(?:href|src)="(/dynamics/run/\d+/[^"]+\.{ext})"', html)
+        got[ext] = {u.rsplit("/", 1)[1]: c2.get(u).content for u in urls}
+    assert got["csv"] == csv1 and got["png"] == png1
+    assert got["xlsx"] and got["toml"]
+    s1 = app.app.state.store.get(c.cookies["crankdyn_session"]).folder
+    s2 = app.app.state.store.get(c2.cookies["crankdyn_session"]).folder
+    # the first run's folder is gone (its session ran again), its files were kept
+    assert not (s1 / "dynamics-1").exists()
+    assert sorted(p.name for p in (s2 / "dynamics-1").rglob("*.png")) == sorted(png1)
+    # in Russian, the classmate gets the first session's Russian files; a changed
+    # value is drawn (and computed) anew
+    again2 = c2.post("/dynamics/run?lang=ru", data=vals2).text
+    assert drawn == [] and calls == [1, 1]
+    urls = re.findall(r'(?:href|src)="(/dynamics/run/\d+/[^"]+\.png)"', again2)
+    assert {u.rsplit("/", 1)[1]: c2.get(u).content for u in urls} == png2
+    vals2["machine.J_red_kgm2"] = "0.31"
+    assert 'id="results"' in c2.post("/dynamics/run", data=vals2).text
+    assert drawn == [1] and calls == [1, 1, 1]
+
+
+def test_the_kept_drawn_files_are_links_the_oldest_dropped_beyond_the_size(tmp_path):
+    """web.app.DrawnCache of size 1: a run's files kept as links (a removed run folder
+    leaves them whole); a new run gets links of them, byte for byte; a second key drops
+    the first (its folder removed); a run whose files are gone keeps nothing;
+    StudyCache keeps no run that reads a pressure file."""
+    import shutil
+
+    from web.app import DrawnCache, StudyCache
+    from web.engine_page import EnginePage
+
+    run = tmp_path / "run1"
+    (run / "report").mkdir(parents=True)
+    files = {"a.csv": run / "report" / "a.csv", "a.png": run / "a.png"}
+    files["a.csv"].write_text("x,y\n1,2\n")
+    files["a.png"].write_bytes(b"\x89PNG-1")
+    cache = DrawnCache(tmp_path / "drawn", 1)
+    cache.keep(("k1", "en"), files)
+    shutil.rmtree(run)
+    got = cache.files(("k1", "en"), tmp_path / "run2" / "report")
+    assert sorted(got) == ["a.csv", "a.png"] and got["a.png"].read_bytes() == b"\x89PNG-1"
+    assert got["a.csv"].parent == tmp_path / "run2" / "report"
+    assert cache.files(("k1", "ru"), tmp_path / "run3") is None
+    assert not (tmp_path / "run3").exists()
+    kept1 = next((tmp_path / "drawn").iterdir())
+    cache.keep(("k2", "en"), {"b.csv": got["a.csv"]})
+    assert len(cache) == 1 and not kept1.exists()
+    assert cache.files(("k1", "en"), tmp_path / "run4") is None
+    assert cache.files(("k2", "en"), tmp_path / "run4")["b.csv"].read_text() == "x,y\n1,2\n"
+    cache.keep(("k3", "en"), {"c.csv": tmp_path / "gone.csv"})
+    assert cache.files(("k3", "en"), tmp_path / "run5") is None and len(cache) == 1
+    kind = EnginePage()
+    assert StudyCache.key(kind, {"engine": {"bore_mm": 79.0}}, None, {"torsion": False}) == \
+        ("engine", "[engine]\nbore_mm = 79.0\n", "[('torsion', False)]")
+    assert StudyCache.key(kind, {"engine": {}}, ("pressure.csv", b"1"), {}) is None
 
 
 def test_a_report_crosses_to_the_drawing_process_pickled():
