@@ -113,7 +113,7 @@ def _page_html(title, message, lang) -> str:
 # ----------------------------------------------------------------------------- the app
 def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: float = 3600.0,
               workers: int = 2, queue: int = 32, timeout: float = 120.0,
-              max_sessions: int = 500, render_workers: int = 2, studies: int = 16):
+              max_sessions: int = 500, render_workers: int = 2, studies: int = 8):
     """The ``crankdyn serve`` app.
 
     Parameters
@@ -138,7 +138,9 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         Studies kept for every session (:class:`StudyCache`), and the files drawn for
         them in each language (:class:`DrawnCache`): a study asked again, by any session
         (a class computing the same example), is not computed again, nor drawn again in a
-        language it was drawn in; 0: none.
+        language it was drawn in; 0: none.  A kept study holds its report twice (as
+        computed and pickled for the drawing processes): up to a few MB each (the
+        torsion example with bearings 3.4 MB pickled).
     """
     store = SessionStore(root, idle_seconds, max_sessions)
     pool = JobPool(workers, queue, timeout)
@@ -711,7 +713,7 @@ class StudyCache:
     into its own folder.  A class computing the same example, each student in a session
     of their own, computes it once.  Only the event loop's thread uses it."""
 
-    def __init__(self, size: int = 16):
+    def __init__(self, size: int = 8):
         from collections import OrderedDict
 
         self.size = max(0, int(size))
