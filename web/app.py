@@ -763,7 +763,7 @@ class DrawnCache:
     language), instead of drawing them again.  Used from the event loop and from the
     drawing pool's thread: a lock."""
 
-    def __init__(self, folder, size: int = 16):
+    def __init__(self, folder, size: int = 8):
         import threading
         from collections import OrderedDict
 
