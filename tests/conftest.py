@@ -325,3 +325,35 @@ def figures_rendered_only_within():
             yield saved
 
     return within
+
+
+# ----------------------------------------------------------------------------- tests-web
+@pytest.fixture(scope="session")
+def petrol_at_4000_tables(tmp_path_factory, figures_rendered_only_within):
+    """:func:`petrol_at_4000` for the tests that compare only its tables, workbook and
+    terminal text (the web pages' runs at 4000 rpm): the same spec (the petrol example
+    with ``engine.speed_rpm = 4000.0``) and ``crankdyn engine <that spec> -o DIR --lang
+    en`` run in this process once per worker, its figures saved unrendered
+    (:func:`figures_rendered_only_within`: no figure of that run was ever looked at; the
+    page's own are drawn in the app's render processes and checked as PNG there).
+    ``(spec dict, Report)``."""
+    import tomllib
+
+    import tomli_w
+
+    from crankbase.resources import example_path
+    from crankdyn.cli import main
+
+    spec = tomllib.loads(example_path("petrol_vaz2106.toml").read_text(encoding="utf-8"))
+    spec["engine"]["speed_rpm"] = 4000.0
+    root = tmp_path_factory.mktemp("petrol_at_4000")
+    path = root / "petrol_at_4000.toml"
+    path.write_text(tomli_w.dumps(spec), encoding="utf-8")
+    folder = root / "report"
+    o, e = io.StringIO(), io.StringIO()
+    with figures_rendered_only_within() as saved, contextlib.redirect_stdout(o), \
+            contextlib.redirect_stderr(e):
+        rc = main(["engine", str(path), "-o", str(folder), "--lang", "en"])
+    assert rc == 0, e.getvalue()
+    assert saved and not any(rendered for _name, rendered in saved)
+    return spec, Report(folder, rc, o.getvalue(), e.getvalue())

@@ -237,7 +237,8 @@ def test_a_bad_counterweight_row_is_shown_at_the_rows_field(app):
 
 # ----------------------------------------------------------------------------- results
 def test_table2_on_the_page_and_the_downloads_equal_the_cli_files(petrol_page, tmp_path,
-                                                                  cli_report, petrol_at_4000):
+                                                                  cli_report,
+                                                                  petrol_at_4000_tables):
     import tomllib
 
     c, html = petrol_page
@@ -251,8 +252,9 @@ def test_table2_on_the_page_and_the_downloads_equal_the_cli_files(petrol_page, t
     toml = got / "petrol-vaz2106.toml"
     assert 'speed_rpm = 4000.0' in toml.read_text(encoding="utf-8")
     # the downloaded spec is the example at 4000 rpm (the CLI reads a spec as this dict),
-    # so the session's shared CLI run of that spec is the same run from the CLI
-    spec, report = petrol_at_4000
+    # so the session's CLI run of that spec is the same run from the CLI (its figures
+    # unrendered, conftest petrol_at_4000_tables: the page's are checked as PNG below)
+    spec, report = petrol_at_4000_tables
     assert tomllib.loads(toml.read_text(encoding="utf-8")) == spec
     cli = shared(report)
     csvs = sorted(p.name for p in cli.glob("*.csv"))
@@ -379,6 +381,7 @@ def test_a_crashing_job_shows_an_error_in_its_session_and_the_server_goes_on(app
     def boom(*a, **k):
         raise ZeroDivisionError("a bug")
     monkeypatch.setattr(engine, "run_study", boom)
+    app.app.state.studies.clear()      # the petrol example computed again, by the bug
     c = client(app)
     c.post("/engine/example", data={"example": "petrol"})
     r = c.post("/engine/run", data=form_values(c.get("/engine").text))
@@ -626,11 +629,15 @@ def test_the_same_study_asked_again_is_drawn_again_but_not_computed_again(app,
     """A session's flywheel run posted again in Russian (web.app._same_study): the
     library's study runs once, the second run's CSVs are the first's byte for byte, its
     summary and figures are Russian (drawn again, from the first run's report); a changed
-    value is computed again, with other numbers."""
+    value is computed again, with other numbers.  Another session's run of the same
+    spec is not computed again either (web.app.StudyCache: one study for a class), and
+    its CSVs are the first's byte for byte."""
     import dynamics.study as study
 
     real, calls = study.run_study, []
     monkeypatch.setattr(study, "run_study", lambda *a, **k: calls.append(1) or real(*a, **k))
+    app.app.state.studies.clear()           # the app's earlier tests' studies forgotten
+    app.app.state.drawn.clear()
 
     def files(html, ext):
         urls = re.findall(rf'(?:href|src)="(/dynamics/run/\d+/[^"]+\.{ext})"', html)
@@ -656,6 +663,75 @@ def test_the_same_study_asked_again_is_drawn_again_but_not_computed_again(app,
     assert 'id="results"' in other and calls == [1, 1]         # a new study: computed
     csv3 = files(other, "csv")
     assert sorted(csv3) == sorted(csv1) and csv3 != csv1
+    # a second session (a classmate) posting the example's values in English: the app's
+    # study, and the files drawn for the first run (web.app.DrawnCache), its own links
+    render, drawn = app.app.state.render, []
+    real_submit = render.submit
+    monkeypatch.setattr(render, "submit", lambda *a, **k: drawn.append(1) or
+                        real_submit(*a, **k))
+    c2 = client(app)
+    c2.post("/dynamics/example", data={"example": "flywheel"})
+    vals2 = form_values(c2.get("/dynamics").text)
+    assert vals2["machine.J_red_kgm2"] != "0.3"
+    html = c2.post("/dynamics/run", data=vals2).text
+    assert 'id="results"' in html and calls == [1, 1]          # not computed again
+    assert drawn == []                                          # nor drawn again
+    got = {}
+    for ext in ("csv", "png", "xlsx", "toml"):
+        urls = re.findall(rf'(?:href|src)="(/dynamics/run/\d+/[^"]+\.{ext})"', html)
+        got[ext] = {u.rsplit("/", 1)[1]: c2.get(u).content for u in urls}
+    assert got["csv"] == csv1 and got["png"] == png1
+    assert got["xlsx"] and got["toml"]
+    s1 = app.app.state.store.get(c.cookies["crankdyn_session"]).folder
+    s2 = app.app.state.store.get(c2.cookies["crankdyn_session"]).folder
+    # the first run's folder is gone (its session ran again), its files were kept
+    assert not (s1 / "dynamics-1").exists()
+    assert sorted(p.name for p in (s2 / "dynamics-1").rglob("*.png")) == sorted(png1)
+    # in Russian, the classmate gets the first session's Russian files; a changed
+    # value is drawn (and computed) anew
+    again2 = c2.post("/dynamics/run?lang=ru", data=vals2).text
+    assert drawn == [] and calls == [1, 1]
+    urls = re.findall(r'(?:href|src)="(/dynamics/run/\d+/[^"]+\.png)"', again2)
+    assert {u.rsplit("/", 1)[1]: c2.get(u).content for u in urls} == png2
+    vals2["machine.J_red_kgm2"] = "0.31"
+    assert 'id="results"' in c2.post("/dynamics/run", data=vals2).text
+    assert drawn == [1] and calls == [1, 1, 1]
+
+
+def test_the_kept_drawn_files_are_links_the_oldest_dropped_beyond_the_size(tmp_path):
+    """web.app.DrawnCache of size 1: a run's files kept as links (a removed run folder
+    leaves them whole); a new run gets links of them, byte for byte; a second key drops
+    the first (its folder removed); a run whose files are gone keeps nothing;
+    StudyCache keeps no run that reads a pressure file."""
+    import shutil
+
+    from web.app import DrawnCache, StudyCache
+    from web.engine_page import EnginePage
+
+    run = tmp_path / "run1"
+    (run / "report").mkdir(parents=True)
+    files = {"a.csv": run / "report" / "a.csv", "a.png": run / "a.png"}
+    files["a.csv"].write_text("x,y\n1,2\n")
+    files["a.png"].write_bytes(b"\x89PNG-1")
+    cache = DrawnCache(tmp_path / "drawn", 1)
+    cache.keep(("k1", "en"), files)
+    shutil.rmtree(run)
+    got = cache.files(("k1", "en"), tmp_path / "run2" / "report")
+    assert sorted(got) == ["a.csv", "a.png"] and got["a.png"].read_bytes() == b"\x89PNG-1"
+    assert got["a.csv"].parent == tmp_path / "run2" / "report"
+    assert cache.files(("k1", "ru"), tmp_path / "run3") is None
+    assert not (tmp_path / "run3").exists()
+    kept1 = next((tmp_path / "drawn").iterdir())
+    cache.keep(("k2", "en"), {"b.csv": got["a.csv"]})
+    assert len(cache) == 1 and not kept1.exists()
+    assert cache.files(("k1", "en"), tmp_path / "run4") is None
+    assert cache.files(("k2", "en"), tmp_path / "run4")["b.csv"].read_text() == "x,y\n1,2\n"
+    cache.keep(("k3", "en"), {"c.csv": tmp_path / "gone.csv"})
+    assert cache.files(("k3", "en"), tmp_path / "run5") is None and len(cache) == 1
+    kind = EnginePage()
+    assert StudyCache.key(kind, {"engine": {"bore_mm": 79.0}}, None, {"torsion": False}) == \
+        ("engine", "[engine]\nbore_mm = 79.0\n", "[('torsion', False)]")
+    assert StudyCache.key(kind, {"engine": {}}, ("pressure.csv", b"1"), {}) is None
 
 
 def test_a_report_crosses_to_the_drawing_process_pickled():
@@ -780,6 +856,14 @@ def test_the_teacher_page_runs_a_class_and_zips_every_report(app, tmp_path, requ
     names = z.namelist()
     assert "variants_summary.csv" in names and "variants_errors.csv" in names
     assert not any(n.startswith("v2/") for n in names)
+    # every figure of both reports drawn for real, in PNG and SVG (the browser's class,
+    # tests/test_web_browser.py, saves its figures unrendered)
+    for v in ("v1", "v3"):
+        pngs = [n for n in names if n.startswith(f"{v}/") and n.endswith(".png")]
+        svgs = [n for n in names if n.startswith(f"{v}/") and n.endswith(".svg")]
+        assert len(pngs) == 13 and sorted(n[:-4] for n in svgs) == sorted(n[:-4] for n in pngs)
+        assert all(z.read(n)[:8] == b"\x89PNG\r\n\x1a\n" for n in pngs)
+        assert all(b"<svg" in z.read(n)[:1000] for n in svgs)
     spec = next(n for n in names if n.startswith("v3/") and n.endswith(".toml"))
     (tmp_path / "v3").mkdir()
     for n in names:

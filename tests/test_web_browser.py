@@ -199,7 +199,7 @@ def _example_in(driver, server, page, example, lang, first):
 
 
 def test_the_petrol_example_in_the_browser_equals_the_cli(server, browser, tmp_path,
-                                                          petrol_at_4000):
+                                                          petrol_at_4000_tables):
     import openpyxl
     from selenium.webdriver.common.by import By
 
@@ -212,7 +212,7 @@ def test_the_petrol_example_in_the_browser_equals_the_cli(server, browser, tmp_p
     # Table 2's first rows on the page = the CLI's forces.csv for the same spec
     spec = tomllib.loads(example_path("petrol_vaz2106.toml").read_text(encoding="utf-8"))
     spec["engine"]["speed_rpm"] = float(SPEED)
-    shared_spec, report = petrol_at_4000                # the session's shared spec and run
+    shared_spec, report = petrol_at_4000_tables         # the session's spec and CLI run
     assert shared_spec == spec
     cli = _shared(report)
     with open(cli / "petrol-vaz2106_forces.csv", newline="") as fh:
@@ -379,10 +379,20 @@ def test_the_balance_page_in_the_browser(server, browser, tmp_path):
         _shot(d, f"web_balance_results_{lang}.png", tmp_path)
 
 
-def test_the_teacher_page_in_the_browser(server, browser, tmp_path):
+def test_the_teacher_page_in_the_browser(server, browser, tmp_path, monkeypatch,
+                                        unrendered_figures):
     """A class of two variants uploaded through the page's file inputs: the progress bar
-    reaches 2 of 2 and the summary table lists both; the page in both languages."""
+    reaches 2 of 2 and the summary table lists both; the page in both languages.  The
+    page, its form, progress and summary are the subject here, not the reports: the
+    batch runs in the server's process (``BATCH_JOBS`` 1, no drawing processes started)
+    with its figures saved unrendered (conftest ``unrendered_figures``); the app's own
+    batch, in its drawing processes with every figure rendered and zipped, is
+    tests/test_web.py ``test_the_teacher_page_runs_a_class_and_zips_every_report``."""
     from selenium.webdriver.common.by import By
+
+    from web import teacher_page
+
+    monkeypatch.setattr(teacher_page, "BATCH_JOBS", 1)
 
     table = tmp_path / "class.csv"
     table.write_text("variant,engine.bore_mm,engine.speed_rpm\nivanov,80,5000\n"
@@ -402,6 +412,7 @@ def test_the_teacher_page_in_the_browser(server, browser, tmp_path):
     d.get(server + "/teacher?lang=ru")
     assert "вариантов: 2; записано 2" in _by_id(d, "batch-line").text
     _shot(d, "web_teacher_ru.png", tmp_path)
+    assert unrendered_figures and set(unrendered_figures) == {"png", "svg"}   # both reports
 
 
 @pytest.mark.parametrize("lang,status", [("en", "1 value is wrong"),

@@ -12,7 +12,10 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import logging
+import os
 import shutil
+from concurrent.futures import Future
+from functools import partial
 from pathlib import Path
 
 from starlette.applications import Starlette
@@ -35,7 +38,7 @@ from .synth_page import SynthPage
 from .pages import PageState, Run, render_job, report_blob, spec_toml
 from .sessions import COOKIE, SessionStore
 
-__all__ = ["build_app", "UPLOAD_LIMIT", "LANG_COOKIE"]
+__all__ = ["build_app", "StudyCache", "DrawnCache", "UPLOAD_LIMIT", "LANG_COOKIE"]
 
 HERE = Path(__file__).resolve().parent
 #: Largest request body (an uploaded spec and its pressure file) [bytes].
@@ -110,7 +113,7 @@ def _page_html(title, message, lang) -> str:
 # ----------------------------------------------------------------------------- the app
 def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: float = 3600.0,
               workers: int = 2, queue: int = 32, timeout: float = 120.0,
-              max_sessions: int = 500, render_workers: int = 2):
+              max_sessions: int = 500, render_workers: int = 2, studies: int = 8):
     """The ``crankdyn serve`` app.
 
     Parameters
@@ -131,6 +134,13 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         Longest wait of a page for its computation [s].
     max_sessions : int
         Live sessions at most (a new one beyond removes the one idle longest).
+    studies : int
+        Studies kept for every session (:class:`StudyCache`), and the files drawn for
+        them in each language (:class:`DrawnCache`): a study asked again, by any session
+        (a class computing the same example), is not computed again, nor drawn again in a
+        language it was drawn in; 0: none.  A kept study holds its report twice (as
+        computed and pickled for the drawing processes): up to a few MB each (the
+        torsion example with bearings 3.4 MB pickled).
     """
     store = SessionStore(root, idle_seconds, max_sessions)
     pool = JobPool(workers, queue, timeout)
@@ -141,6 +151,8 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
     # a class's batch of reports draws in processes of its own (engine.variants); one
     # batch at a time, a few waiting
     batches = JobPool(1, 4, 3600.0)
+    cache = StudyCache(studies)
+    drawn = DrawnCache(store.root / "drawn", studies)
     templates = Jinja2Templates(directory=str(HERE / "templates"))
     templates.env.globals["languages"] = languages
 
@@ -194,9 +206,10 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
     routes = [Route("/", home)]
     for kind in KINDS:
         routes += _page_routes(kind, templates=templates, store=store, pool=pool,
-                               render=render, upload_limit=upload_limit, lang_of=lang_of,
-                               session_of=session_of, finish=finish, error_page=error_page,
-                               read_form=read_form)
+                               render=render, cache=cache, drawn=drawn,
+                               upload_limit=upload_limit,
+                               lang_of=lang_of, session_of=session_of, finish=finish,
+                               error_page=error_page, read_form=read_form)
     routes += _teacher_routes(templates=templates, store=store, pool=pool, batches=batches,
                               upload_limit=upload_limit, lang_of=lang_of,
                               session_of=session_of, finish=finish, error_page=error_page,
@@ -205,12 +218,12 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
                         name="static"))
     app = Starlette(routes=routes, lifespan=lifespan)
     app.state.store, app.state.pool, app.state.render = store, pool, render
-    app.state.batches = batches
+    app.state.batches, app.state.studies, app.state.drawn = batches, cache, drawn
     return BodyLimit(app, upload_limit) if upload_limit else app
 
 
-def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of, session_of,
-                 finish, error_page, read_form):
+def _page_routes(kind, *, templates, store, pool, render, cache, drawn, upload_limit, lang_of,
+                 session_of, finish, error_page, read_form):
     """The routes of one page (:class:`web.pages.Kind`): ``/<name>`` (GET), its
     ``/example``, ``/upload`` and ``/run`` (POST) and ``/run/<n>/<file>``."""
     base = f"/{kind.name}"
@@ -364,13 +377,17 @@ def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of,
             last = st.run
         folder = session.folder / f"{kind.name}-{number}"     # each page its own folders
         try:
+            key = StudyCache.key(kind, data, pressure, options)
             if _same_study(last, data, pressure, options):
                 # the session's last study asked again (in another language, say): its
                 # report is drawn anew, the numbers are not computed again
                 report, blob = last.report, report_blob(last.report)
+            elif (hit := cache.get(key)) is not None:
+                report, blob = hit          # another session's study of the same spec
             else:
                 report, blob = await pool.run(_computed, kind, data, folder / "input",
                                               pressure, options)
+                cache.put(key, (report, blob))
         except SpecError as exc:
             shutil.rmtree(folder, ignore_errors=True)
             with st.lock:
@@ -398,11 +415,19 @@ def _page_routes(kind, *, templates, store, pool, render, upload_limit, lang_of,
                 "web.run.crashed", what=type(exc).__name__), 500)
         run = Run(number=number, folder=folder, report=report, spec=data, lang=lang,
                   pressure=pressure, options=options)
-        try:
-            run.write_future = render.submit(render_job, kind, number, folder, data, lang,
-                                             pressure, options, blob)
-        except Busy:
-            return error_page(request, session, lang, texts(lang)("web.run.busy"), 503)
+        dkey = None if key is None else (*key, lang)
+        files = drawn.files(dkey, folder / "report")
+        if files is not None:             # drawn for another run in this language
+            run.write_future = Future()
+            run.write_future.set_result(files)
+        else:
+            try:
+                run.write_future = render.submit(render_job, kind, number, folder, data,
+                                                 lang, pressure, options, blob)
+            except Busy:
+                return error_page(request, session, lang, texts(lang)("web.run.busy"), 503)
+            if dkey is not None:
+                run.write_future.add_done_callback(partial(drawn.keep_done, dkey))
         with st.lock:
             drop(st)
             st.run, st.problems, st.notice = run, [], None
@@ -678,6 +703,138 @@ def _computed(kind, data, input_dir, pressure, options):
     the drawing process (:func:`web.pages.report_blob`): ``(report, blob)``."""
     report = kind.compute(data, input_dir, pressure, options)
     return report, report_blob(report)
+
+
+class StudyCache:
+    """The last ``size`` studies computed by the app's pages, for every session: the
+    ``(report, blob)`` of :func:`_computed` by :meth:`key`.  A report is never changed
+    once computed (a session's same study asked again is drawn from it too,
+    :func:`_same_study`), so sessions can share it; each run still draws its own files
+    into its own folder.  A class computing the same example, each student in a session
+    of their own, computes it once.  Only the event loop's thread uses it."""
+
+    def __init__(self, size: int = 8):
+        from collections import OrderedDict
+
+        self.size = max(0, int(size))
+        self._items = OrderedDict()
+
+    @staticmethod
+    def key(kind, data, pressure, options):
+        """The key of a page's study: its kind, spec and options; None (not kept) for a
+        run reading a pressure file (its report names the file of its own folder) or a
+        spec that does not write as TOML."""
+        if pressure is not None:
+            return None
+        try:
+            spec = spec_toml(data)
+        except (TypeError, ValueError):
+            return None
+        return kind.name, spec, repr(sorted(options.items()))
+
+    def get(self, key):
+        if key is None or key not in self._items:
+            return None
+        self._items.move_to_end(key)
+        return self._items[key]
+
+    def put(self, key, value) -> None:
+        if key is None or not self.size:
+            return
+        self._items[key] = value
+        self._items.move_to_end(key)
+        while len(self._items) > self.size:
+            self._items.popitem(last=False)
+
+    def clear(self) -> None:
+        self._items.clear()
+
+    def __len__(self) -> int:
+        return len(self._items)
+
+
+class DrawnCache:
+    """The files drawn and written for the last ``size`` runs of a kept study
+    (:class:`StudyCache`) in a language, by ``(study key, lang)``: hard links (copies
+    where the file system has none) in ``folder``, made once a run's files are all
+    written, so that no session's removal takes them.  Another run of that study in that
+    language gets links of them in its own folder at once, byte for byte the files its
+    drawing would write (a run's files are a function of its study, options and
+    language), instead of drawing them again.  Used from the event loop and from the
+    drawing pool's thread: a lock."""
+
+    def __init__(self, folder, size: int = 8):
+        import threading
+        from collections import OrderedDict
+
+        self.folder = Path(folder)
+        self.size = max(0, int(size))
+        self._items = OrderedDict()
+        self._lock = threading.Lock()
+        self._made = 0
+
+    def keep(self, key, files: dict) -> None:
+        """Keep ``files`` (``{file name: path}``, a run's written files) for ``key``."""
+        if key is None or not self.size:
+            return
+        with self._lock:
+            if key in self._items:
+                self._items.move_to_end(key)
+                return
+            self._made += 1
+            folder = self.folder / str(self._made)
+            try:
+                folder.mkdir(parents=True)
+                kept = {name: _linked(path, folder / name) for name, path in files.items()}
+            except OSError:                 # the run's folder went meanwhile: not kept
+                shutil.rmtree(folder, ignore_errors=True)
+                return
+            self._items[key] = (folder, kept)
+            while len(self._items) > self.size:
+                _key, (old, _files) = self._items.popitem(last=False)
+                shutil.rmtree(old, ignore_errors=True)
+
+    def keep_done(self, key, future) -> None:
+        """:meth:`keep` the files of a finished drawing job's ``future`` (its done
+        callback); a failed or cancelled job keeps nothing."""
+        if not future.cancelled() and future.exception() is None:
+            self.keep(key, future.result())
+
+    def files(self, key, folder) -> dict | None:
+        """The files kept for ``key``, linked into ``folder`` (a new run's own):
+        ``{file name: path}``; None when none are kept."""
+        if key is None:
+            return None
+        with self._lock:
+            item = self._items.get(key)
+            if item is None:
+                return None
+            self._items.move_to_end(key)
+            folder = Path(folder)
+            try:
+                folder.mkdir(parents=True, exist_ok=True)
+                return {name: _linked(path, folder / name) for name, path in item[1].items()}
+            except OSError:
+                shutil.rmtree(folder, ignore_errors=True)
+                return None
+
+    def clear(self) -> None:
+        with self._lock:
+            for folder, _files in self._items.values():
+                shutil.rmtree(folder, ignore_errors=True)
+            self._items.clear()
+
+    def __len__(self) -> int:
+        return len(self._items)
+
+
+def _linked(src, dst) -> Path:
+    """``dst`` made a hard link of ``src`` (a copy where links cannot be made)."""
+    try:
+        os.link(src, dst)
+    except OSError:
+        shutil.copyfile(src, dst)
+    return Path(dst)
 
 
 def _same_study(last, data, pressure, options) -> bool:
