@@ -6,6 +6,7 @@ import errno
 import json
 import os
 import random
+import shlex
 import shutil
 import signal
 import subprocess
@@ -29,9 +30,101 @@ RUN_B = ["synth", "--l2", "0.6", "--l3", "0.7", "--name", "old", "--no-plots"]
 RUN_C = ["synth", "--l1", "0.1", "--name", "old", "--no-plots"]
 
 
-def _cli(args, out, **kw):
-    return subprocess.Popen([sys.executable, "-m", "crankdyn", *args, "-o", str(out)],
-                            cwd=ROOT, stdout=subprocess.DEVNULL, **kw)
+#: A process that imports the CLI and runs one report once (every lazy import done, the
+#: text catalogues read), then forks one child process per run asked of it: each child
+#: runs ``crankdyn.cli.main(argv)`` (what ``python -m crankdyn`` runs) and exits with its
+#: status.  A child is a real process that is killed, or runs beside others, while it
+#: writes its report; what it no longer pays each time is the start of Python, the
+#: imports and the catalogues (~0.8 s of CPU a run, the time the old fresh processes
+#: were mostly killed in, before they wrote anything).  The protocol: one JSON line
+#: each way; ``{"run": argv, "mark": path or null}`` → ``{"pid": n}`` (``mark``: the
+#: child's replace phase is slowed by 30 ms a file and the file ``mark`` is written
+#: when the commit marker is in place), ``{"wait": n}`` → ``{"rc": exit code}``
+#: (negative: killed by that signal), ``{"warm": seconds}`` the warm-up run's time.
+FORK_SERVER = r"""
+import contextlib, io, json, os, sys, time
+from crankdyn.cli import main
+
+def slowed_commit(mark):
+    real_replace, real_rename = os.replace, os.rename
+    def slow_replace(a, b):
+        real_replace(a, b)
+        if '.crankdyn-commit' in str(a):
+            time.sleep(0.03)
+    def rename(a, b):
+        real_rename(a, b)
+        if str(b).endswith('.crankdyn-commit'):
+            with open(mark, 'w') as f:
+                f.write('COMMIT')
+    os.replace, os.rename = slow_replace, rename
+
+def child(argv, mark):
+    rc = 70
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, 1)                      # its terminal text goes nowhere
+        if mark:
+            slowed_commit(mark)
+        rc = main(argv)
+    finally:
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os._exit(rc)
+
+t0 = time.perf_counter()
+with contextlib.redirect_stdout(io.StringIO()):
+    assert main(sys.argv[1:]) == 0                 # the warm-up run
+print(json.dumps({"warm": time.perf_counter() - t0}), flush=True)
+for line in sys.stdin:
+    req = json.loads(line)
+    if "run" in req:
+        pid = os.fork()
+        if pid == 0:
+            child(req["run"], req.get("mark"))
+        reply = {"pid": pid}
+    else:
+        reply = {"rc": os.waitstatus_to_exitcode(os.waitpid(req["wait"], 0)[1])}
+    print(json.dumps(reply), flush=True)
+"""
+
+
+class Forker:
+    """The test's end of :data:`FORK_SERVER`."""
+
+    def __init__(self, warm_out):
+        self.proc = subprocess.Popen([sys.executable, "-c", FORK_SERVER, *RUN_C, "-o",
+                                      str(warm_out)], cwd=ROOT, stdin=subprocess.PIPE,
+                                     stdout=subprocess.PIPE, text=True)
+        self.warm_s = self._ask(None)["warm"]
+
+    def _ask(self, req):
+        if req is not None:
+            self.proc.stdin.write(json.dumps(req) + "\n")
+            self.proc.stdin.flush()
+        line = self.proc.stdout.readline()
+        assert line, f"the fork server ended (exit {self.proc.wait()})"
+        return json.loads(line)
+
+    def run(self, args, out, mark=None):
+        """Start ``crankdyn ARGS -o OUT`` in a forked child; its pid."""
+        return self._ask({"run": [*args, "-o", str(out)],
+                          "mark": None if mark is None else str(mark)})["pid"]
+
+    def wait(self, pid):
+        """The child's exit status (negative: the signal that killed it)."""
+        return self._ask({"wait": pid})["rc"]
+
+    def close(self):
+        self.proc.stdin.close()
+        assert self.proc.wait(60) == 0
+        self.proc.stdout.close()
+
+
+@pytest.fixture(scope="module")
+def forker(tmp_path_factory):
+    f = Forker(tmp_path_factory.mktemp("warm") / "out")
+    yield f
+    f.close()
 
 
 def _content(folder):
@@ -66,20 +159,27 @@ def _no_leftovers(folder):
     assert hidden in ([MANIFEST_NAME], []), hidden
 
 
-def test_sigkill_at_random_moments(references, tmp_path):
+def test_sigkill_at_random_moments(references, forker, tmp_path):
     """SIGKILL anywhere in a run: after the next run's recovery the folder holds exactly the
-    old or exactly the new report; the next run leaves no staging behind."""
+    old or exactly the new report; the next run leaves no staging behind.  The moments
+    are drawn over the run's own length (a whole run of B over A timed first), so that
+    the kills land while it computes, writes, stages and replaces."""
     rng = random.Random(15)
     out = tmp_path / "out"
+    shutil.copytree(references["A"][0], out)
+    t0 = time.monotonic()
+    assert forker.wait(forker.run(RUN_B, out)) == 0
+    whole = time.monotonic() - t0
+    assert _content(out) == references["B"][1]
     seen = set()
     for trial in range(6):
         if out.exists():
             shutil.rmtree(out)
         shutil.copytree(references["A"][0], out)
-        proc = _cli(RUN_B, out)
-        time.sleep(rng.uniform(0.3, 1.6))
-        proc.send_signal(signal.SIGKILL)
-        proc.wait()
+        pid = forker.run(RUN_B, out)
+        time.sleep(rng.uniform(0.0, 1.2 * whole))
+        os.kill(pid, signal.SIGKILL)
+        assert forker.wait(pid) in (-signal.SIGKILL, 0)   # killed, or done before
         if not (out / COMMIT_NAME).exists():   # no replacement under way: a whole report
             assert _content(out) in (references["A"][1], references["B"][1])
         recover_output(out)
@@ -89,29 +189,12 @@ def test_sigkill_at_random_moments(references, tmp_path):
         assert not [p for p in out.iterdir() if p.name.startswith(STAGE_PREFIX)
                     or p.name == COMMIT_NAME]
     # the next run: complete report, nothing hidden left but the manifest
-    assert _cli(RUN_C, out).wait() == 0
+    assert forker.wait(forker.run(RUN_C, out)) == 0
     assert _content(out) == references["C"][1]
     _no_leftovers(out)
 
 
-SLOW_COMMIT = """
-import os, sys, time
-real_replace, real_rename = os.replace, os.rename
-def slow_replace(a, b):
-    real_replace(a, b)
-    if '.crankdyn-commit' in str(a):
-        time.sleep(0.03)
-def rename(a, b):
-    real_rename(a, b)
-    if str(b).endswith('.crankdyn-commit'):
-        sys.stderr.write('COMMIT\\n'); sys.stderr.flush()
-os.replace, os.rename = slow_replace, rename
-from crankdyn.cli import main
-sys.exit(main(sys.argv[1:]))
-"""
-
-
-def test_sigkill_inside_the_replace_phase(references, tmp_path):
+def test_sigkill_inside_the_replace_phase(references, forker, tmp_path):
     """The replace phase is slowed (30 ms per file) and the run killed inside it: the
     folder is marked as mid-replacement (verify_report refuses it) and recovery completes
     the new report; no mix of old and new files survives."""
@@ -121,14 +204,15 @@ def test_sigkill_inside_the_replace_phase(references, tmp_path):
         if out.exists():
             shutil.rmtree(out)
         shutil.copytree(references["A"][0], out)
-        proc = subprocess.Popen([sys.executable, "-c", SLOW_COMMIT, *RUN_B, "-o", str(out)],
-                                cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
-                                text=True)
-        assert proc.stderr.readline().strip() == "COMMIT"
+        mark = tmp_path / f"commit{trial}"
+        pid = forker.run(RUN_B, out, mark=mark)
+        deadline = time.monotonic() + 120
+        while not mark.exists():                    # the commit marker is in place
+            assert time.monotonic() < deadline, "no commit after 120 s"
+            time.sleep(0.002)
         time.sleep(rng.uniform(0.0, 0.12))
-        proc.send_signal(signal.SIGKILL)
-        proc.wait()
-        proc.stderr.close()
+        os.kill(pid, signal.SIGKILL)
+        assert forker.wait(pid) in (-signal.SIGKILL, 0)
         if (out / COMMIT_NAME).exists():
             with pytest.raises(OutputError, match="interrupted"):
                 verify_report(out)
@@ -137,10 +221,10 @@ def test_sigkill_inside_the_replace_phase(references, tmp_path):
         _no_leftovers(out)
 
 
-def test_concurrent_runs_give_one_complete_report(references, tmp_path):
+def test_concurrent_runs_give_one_complete_report(references, forker, tmp_path):
     out = tmp_path / "out"
-    procs = [_cli(args, out) for args in (RUN_A, RUN_B, RUN_C, RUN_B)]
-    assert [p.wait() for p in procs] == [0, 0, 0, 0]
+    pids = [forker.run(args, out) for args in (RUN_A, RUN_B, RUN_C, RUN_B)]
+    assert [forker.wait(p) for p in pids] == [0, 0, 0, 0]
     got = _content(out)
     assert got in [r[1] for r in references.values()]
     _no_leftovers(out)
@@ -285,57 +369,102 @@ NS_REASON = _namespace_ok()
 needs_ns = pytest.mark.skipif(NS_REASON is not None, reason=str(NS_REASON))
 
 
-def _in_namespace(setup, args, tmp_path):
-    """Run the CLI inside a private user+mount namespace after the shell ``setup`` (which
-    mounts tmpfs file systems under ``$M``); return (rc, stderr, listing of $M)."""
-    m = tmp_path / "m"
-    m.mkdir()
-    script = (f"set -e; M={m}; {setup}; set +e; "
-              f"{sys.executable} -m crankdyn {' '.join(args)} >/dev/null; rc=$?; "
-              f"echo RC=$rc; find $M -mindepth 1 | sort")
+#: The file-system cases, each a tmpfs set up under its own folder ``$M`` and one run of
+#: the CLI: {case: (shell setup, the CLI's arguments)}.
+NS_CASES = {
+    "mount point": ("mount -t tmpfs -o size=4m none $M", [*RUN_B, "-o", "$M"]),
+    "full disk": ("mount -t tmpfs -o size=12k none $M", [*RUN_B, "--lang", "en", "-o",
+                                                          "$M/out"]),
+    "read-only": ("mount -t tmpfs none $M; mkdir $M/out; echo keep > $M/out/forces.csv; "
+                  "mount -o remount,ro,bind $M", [*RUN_B, "--lang", "en", "-o",
+                                                  "$M/out/sub"]),
+    "read-only parent": ("mount -t tmpfs none $M; mkdir $M/w; mount -t tmpfs none $M/w; "
+                         "mount -o remount,ro,bind $M", [*RUN_B, "-o", "$M/w"]),
+}
+
+#: The runs of :data:`NS_CASES` in one process: each ``main(argv)`` with its own stderr.
+NS_RUNS = r"""
+import contextlib, io, json, sys
+from crankdyn.cli import main
+done = []
+for argv in json.loads(sys.argv[1]):
+    err = io.StringIO()
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
+        try:
+            rc = main(argv)
+        except SystemExit as exc:
+            rc = exc.code
+    done.append({"rc": rc, "err": err.getvalue()})
+print(json.dumps(done))
+"""
+
+
+@pytest.fixture(scope="module")
+def namespace_runs(tmp_path_factory):
+    """Every case of :data:`NS_CASES` inside one private user+mount namespace: the shell
+    sets up each case's file systems under its own ``$M``, then one Python process runs
+    the CLI's ``main`` once per case, one after the other, each with its own exit status
+    and stderr (one start of Python and of the library for the four, as
+    tests/test_portable.py runs its reports); then the listing of each ``$M``.
+    {case: (rc, stderr lines, listing of $M with the folder written "$M", the folder)}."""
+    tmp = tmp_path_factory.mktemp("ns")
+    folders = {case: tmp / f"m{i}" for i, case in enumerate(NS_CASES)}
+    setups = []
+    argvs = []
+    for case, (setup, args) in NS_CASES.items():
+        m = folders[case]
+        m.mkdir()
+        setups.append(f"M={m}; {setup}")
+        argvs.append([a.replace("$M", str(m)) for a in args])
+    lists = "; ".join(f"echo '#{i}'; find {m} -mindepth 1 | sort"
+                      for i, m in enumerate(folders.values()))
+    script = (f"set -e; {'; '.join(setups)}; set +e; "
+              f"{sys.executable} -c {shlex.quote(NS_RUNS)} {shlex.quote(json.dumps(argvs))}; "
+              f"{lists}")
     r = subprocess.run(["unshare", "-Urm", "sh", "-c", script], cwd=ROOT,
-                       capture_output=True, text=True, timeout=60)
-    lines = r.stdout.splitlines()
-    rc = int(lines[0].removeprefix("RC="))
-    return rc, r.stderr.strip().splitlines(), [l.replace(str(m), "$M") for l in lines[1:]]
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0 and r.stdout.startswith("["), r.stderr
+    head, *rest = r.stdout.split("\n#")
+    runs = json.loads(head)
+    out = {}
+    for i, (case, m) in enumerate(folders.items()):
+        lines = rest[i].splitlines()
+        assert lines[0] == str(i), lines
+        out[case] = (runs[i]["rc"], runs[i]["err"].strip().splitlines(),
+                     [l.replace(str(m), "$M") for l in lines[1:]], m)
+    return out
 
 
 @needs_ns
-def test_mount_point_as_output_folder(tmp_path):
+def test_mount_point_as_output_folder(namespace_runs):
     """-o on a mount point (staging beside it would cross devices)."""
-    rc, err, files = _in_namespace("mount -t tmpfs -o size=4m none $M",
-                                   [*RUN_B, "-o", "$M"], tmp_path)
+    rc, err, files, _ = namespace_runs["mount point"]
     assert rc == 0, err
     assert "$M/old_mechanism.csv" in files and f"$M/{MANIFEST_NAME}" in files
     assert not [f for f in files if STAGE_PREFIX in f]
 
 
 @needs_ns
-def test_full_disk(tmp_path):
-    rc, err, files = _in_namespace("mount -t tmpfs -o size=12k none $M",
-                                   [*RUN_B, "--lang", "en", "-o", "$M/out"], tmp_path)
+def test_full_disk(namespace_runs):
+    rc, err, files, m = namespace_runs["full disk"]
     assert rc == 2
     assert err == ["crankdyn synth: error: cannot write the report into $M/out: No space "
-                   "left on device".replace("$M", str(tmp_path / "m"))]
+                   "left on device".replace("$M", str(m))]
     assert files == []                      # the folder it created is gone again
 
 
 @needs_ns
-def test_read_only_file_system(tmp_path):
-    rc, err, files = _in_namespace(
-        "mount -t tmpfs none $M; mkdir $M/out; echo keep > $M/out/forces.csv; "
-        "mount -o remount,ro,bind $M", [*RUN_B, "--lang", "en", "-o", "$M/out/sub"], tmp_path)
+def test_read_only_file_system(namespace_runs):
+    rc, err, files, m = namespace_runs["read-only"]
     assert rc == 2
     assert len(err) == 1 and err[0].startswith("crankdyn synth: error: ") \
-        and "Read-only file system" in err[0] and str(tmp_path / "m" / "out" / "sub") in err[0]
+        and "Read-only file system" in err[0] and str(m / "out" / "sub") in err[0]
     assert files == ["$M/out", "$M/out/forces.csv"]
 
 
 @needs_ns
-def test_writable_folder_under_read_only_parent(tmp_path):
-    rc, err, files = _in_namespace(
-        "mount -t tmpfs none $M; mkdir $M/w; mount -t tmpfs none $M/w; "
-        "mount -o remount,ro,bind $M", [*RUN_B, "-o", "$M/w"], tmp_path)
+def test_writable_folder_under_read_only_parent(namespace_runs):
+    rc, err, files, _ = namespace_runs["read-only parent"]
     assert rc == 0, err
     assert "$M/w/old_mechanism.csv" in files
 

@@ -32,11 +32,26 @@ PROMISES = {
         (("whole engine: 4 cylinders inline",
           "petrol-vaz2106.xlsx, 22 plots (PNG, SVG) in out"),
          ("out/petrol-vaz2106_crankpins.csv",)),
+    'report.write_plans(res, pps, "out/plans")':
+        ((), tuple(f"out/plans/ratchet-drive_{f}" for f in (
+            "plans.csv", "lever.csv", "student_table.csv", "plans_5.pdf", "plans_11.svg",
+            "plans_11.png", "sheet.pdf", "sheet.png", "sheet.dxf"))),
+    'write_report(report, "out/ratchet", lang="en")':
+        (("wrote ratchet-drive_kinematics.csv", "ratchet-drive_sheet.dxf, 2 images (SVG) "
+          "in out/ratchet"),
+         tuple(f"out/ratchet/ratchet-drive_{f}" for f in (
+             "lever.csv", "plans_5.pdf", "plans_11.svg", "sheet.pdf", "sheet.dxf"))),
 }
 
 
-#: A block holding one of these writes an engine report: its figures are not drawn.
-UNRENDERED = ("engine.write_report(",)
+#: A block holding one of these writes a whole report: its figures are not drawn.  The
+#: engine's report (the petrol engine with its bearings, 22 plots); the ratchet's plans for
+#: positions 5 and 11 with their drawing sheets (``plans.report.write_plans``, once called
+#: directly and once through ``linkage.study.write_report``: PDF, SVG and PNG, ~2-3 s of
+#: CPU each), rendered from the same inputs by tests/test_plans_output.py
+#: (``crankdyn linkage --example --plans 5,11``).
+UNRENDERED = ("engine.write_report(", 'report.write_plans(res, pps, "out/plans")',
+              'write_report(report, "out/ratchet", lang="en")')
 
 
 def test_every_promise_names_a_block():
@@ -48,14 +63,16 @@ def test_every_promise_names_a_block():
 
 @pytest.mark.parametrize("line, code", BLOCKS, ids=[f"line{n}" for n, _ in BLOCKS])
 def test_readme_block_runs_as_written(line, code, tmp_path, monkeypatch, capsys, request):
-    """A block that writes an engine report (:data:`UNRENDERED`: the petrol engine with
-    its bearings, 22 plots) builds its figures but does not draw them
-    (tests/conftest.py ``unrendered_figures``): what the block promises is that its calls
-    run, what it prints and which files it writes; the engine's figures are rendered by
-    the CLI's tests (the session's shared reports, the bearings' in
-    tests/test_engine_bearings_cli.py).  Every other block draws what it saves."""
+    """A block that writes a whole report (:data:`UNRENDERED`: the petrol engine with
+    its bearings, 22 plots; the ratchet's plans and drawing sheets) builds its figures
+    but does not draw them (tests/conftest.py ``figures_rendered_only`` with no name:
+    a drawing sheet saved into a ``PdfPages`` too): what the block promises is that its
+    calls run, what it prints and which files it writes; the engine's figures are
+    rendered by the CLI's tests (the session's shared reports, the bearings' in
+    tests/test_engine_bearings_cli.py), the plans' by tests/test_plans_output.py.  Every
+    other block draws what it saves."""
     if any(marker in code for marker in UNRENDERED):
-        request.getfixturevalue("unrendered_figures")
+        request.getfixturevalue("figures_rendered_only")()
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
