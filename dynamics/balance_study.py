@@ -144,15 +144,11 @@ def write_report(report: BalanceReport, out, lang="ru",
     names = list(tables) + [f"{name}_{k}.{e}" for k in figs for e in formats]
     inputs = [report.source] if report.source else []
     check_not_input([out / n for n in names], inputs)
-    try:
-        with staged_output(out, inputs=inputs, unit=f"balance:{name}") as stage:
-            for fname, df in tables.items():
-                write_csv(df, stage / fname)
-            for key, fig in figs.items():
-                save_figure(fig, stage / f"{name}_{key}", formats=formats)
-    finally:
-        for fig in figs.values():
-            fig.clear()
+    with staged_output(out, inputs=inputs, unit=f"balance:{name}") as stage:
+        for fname, df in tables.items():
+            write_csv(df, stage / fname)
+        for key, fig in figs.items():
+            save_figure(fig, stage / f"{name}_{key}", formats=formats)
     removed, legacy = remove_stale([], out, LEGACY_ROTOR if report.kind == "rotor"
                                    else LEGACY_LINKAGE)
     return WrittenReport(out, list(tables), len(figs), tuple(formats), removed, legacy)

@@ -117,17 +117,13 @@ def write_report(report: DynamicsReport, out, lang="ru",
     check_not_input([out / n for n in names], inputs)
     stale = stale_outputs(out, name, list(TABLES) + [
         f"{p}.{e}" for p in PLOT_NAMES for e in ("png", "svg")], names)
-    try:
-        with staged_output(out, inputs=inputs, unit=f"dynamics:{name}") as stage:
-            for fname, df in tables.items():
-                write_csv(df, stage / fname)
-            with full_precision_xlsx():
-                wb.save(stage / xlsx)
-            for key, fig in figs.items():
-                save_figure(fig, stage / f"{name}_{key}", formats=formats)
-    finally:
-        for fig in figs.values():
-            fig.clear()
+    with staged_output(out, inputs=inputs, unit=f"dynamics:{name}") as stage:
+        for fname, df in tables.items():
+            write_csv(df, stage / fname)
+        with full_precision_xlsx():
+            wb.save(stage / xlsx)
+        for key, fig in figs.items():
+            save_figure(fig, stage / f"{name}_{key}", formats=formats)
     removed, legacy = remove_stale(stale, out)
     return WrittenReport(out, list(tables) + [xlsx], len(figs), tuple(formats), removed,
                          legacy)

@@ -421,21 +421,17 @@ def write_report(report: EngineReport, out, lang: str = "ru", formats=("png", "s
 
     # 2. write: every file into a staging folder, moved into the folder only when all are
     #    done; SVG text stays text (searchable, and a third cheaper to write than glyph paths)
-    try:
-        with staged_output(out, inputs=inputs, unit=name) as stage, \
-                matplotlib.rc_context({"svg.fonttype": "none"}):
-            for n, df in report.tables.items():
-                write_csv(df, stage / files[n])
-            save_workbook(wb, stage / xlsx.name)
-            for n in (report.plot_names if formats else ()):
-                save_figure(figs[n], stage / files[n], formats=formats)
-            for n, f in pdfs.items():                      # 1:1, vector only
-                save_figure(figs[n], stage / f, formats=("pdf",))
-            if vib is not None:                            # [torsion]: its own files
-                vib.write_into(stage, report.torsion, vib_wb, vib_figs, formats)
-    finally:
-        for fig in (*figs.values(), *(vib_figs or {}).values()):
-            fig.clear()
+    with staged_output(out, inputs=inputs, unit=name) as stage, \
+            matplotlib.rc_context({"svg.fonttype": "none"}):
+        for n, df in report.tables.items():
+            write_csv(df, stage / files[n])
+        save_workbook(wb, stage / xlsx.name)
+        for n in (report.plot_names if formats else ()):
+            save_figure(figs[n], stage / files[n], formats=formats)
+        for n, f in pdfs.items():                      # 1:1, vector only
+            save_figure(figs[n], stage / f, formats=("pdf",))
+        if vib is not None:                            # [torsion]: its own files
+            vib.write_into(stage, report.torsion, vib_wb, vib_figs, formats)
     # figures of this engine from an earlier run that this run did not write are stale
     written = {p.name for p in (*plots, *drawings)}
     for n in set(PLOT_NAMES + TRAIN_PLOT_NAMES + BEARING_PLOT_NAMES + DRAWING_NAMES):

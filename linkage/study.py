@@ -256,8 +256,6 @@ def write_report(report: LinkageReport, out, lang="ru", formats=("png",),
         for stem, fig in figures.items():
             save_figure(fig, stage / f"{name}_{stem}", formats=formats, dpi=dpi)
             files += [f"{name}_{stem}.{e}" for e in formats]
-    for fig in figures.values():
-        fig.clear()
     # plots of this mechanism from an earlier run that this run did not draw are stale
     # (the report swap removes those it wrote itself; any other copy goes too)
     removed = []

@@ -423,24 +423,20 @@ def write_report(report: SynthesisReport, out, lang="ru",
         written.append(name)
         return stage / name
     tables = report.tables()
-    try:
-        with staged_output(out, unit=stem) as stage:
-            write_csv(tables[f"{stem}_table1.csv"], put(f"{stem}_table1.csv"))
-            rep.write_workbook(put(f"{stem}_synthesis.xlsx"), report.table1, report.phi0,
-                               report.mechanism, lang=lang)
-            if report.design is not None:
-                for suffix in ("mechanism", "transmission_angle"):
-                    write_csv(tables[f"{stem}_{suffix}.csv"], put(f"{stem}_{suffix}.csv"))
-            if report.spec is not None:
-                rep.write_toml(report.spec, put(f"{stem}.toml"),
-                               rep.toml_header(report.design, lang))
-            for name, fig in figures.items():
-                save_figure(fig, stage / f"{stem}_{name}", formats=formats, dpi=150,
-                            tight=True)
-                written.extend(f"{stem}_{name}.{ext}" for ext in formats)
-    finally:
-        for fig in figures.values():
-            fig.clear()
+    with staged_output(out, unit=stem) as stage:
+        write_csv(tables[f"{stem}_table1.csv"], put(f"{stem}_table1.csv"))
+        rep.write_workbook(put(f"{stem}_synthesis.xlsx"), report.table1, report.phi0,
+                           report.mechanism, lang=lang)
+        if report.design is not None:
+            for suffix in ("mechanism", "transmission_angle"):
+                write_csv(tables[f"{stem}_{suffix}.csv"], put(f"{stem}_{suffix}.csv"))
+        if report.spec is not None:
+            rep.write_toml(report.spec, put(f"{stem}.toml"),
+                           rep.toml_header(report.design, lang))
+        for name, fig in figures.items():
+            save_figure(fig, stage / f"{stem}_{name}", formats=formats, dpi=150,
+                        tight=True)
+            written.extend(f"{stem}_{name}.{ext}" for ext in formats)
     return WrittenReport(out, written)
 
 

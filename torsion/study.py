@@ -526,13 +526,9 @@ def write_report(report: TorsionReport, out, lang: str = "ru", formats=("png", "
     inputs = [*inputs, *([report.source] if report.source is not None else [])]
     check_not_input([paths["workbook"], *paths["tables"], *paths["plots"]], inputs)
     wb, figs = build_outputs(report, lang)
-    try:
-        with staged_output(out, inputs=inputs, unit=report.name) as stage, \
-                matplotlib.rc_context({"svg.fonttype": "none"}):
-            write_into(stage, report, wb, figs, formats)
-    finally:
-        for fig in figs.values():
-            fig.clear()
+    with staged_output(out, inputs=inputs, unit=report.name) as stage, \
+            matplotlib.rc_context({"svg.fonttype": "none"}):
+        write_into(stage, report, wb, figs, formats)
     return TorsionFiles(folder=out, tables=paths["tables"], workbook=paths["workbook"],
                         plots=paths["plots"], plot_count=len(report.plot_names),
                         formats=formats)
