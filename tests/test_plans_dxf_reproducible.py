@@ -12,7 +12,8 @@ import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 
-#: Writes the Chinese sheet of the ratchet's position 5 (its CJK text style too) to argv[1].
+#: Writes the sheet of the ratchet's position 5 in each language asked for to its path
+#: (argv: path, lang, path, lang ...; the Chinese sheet with its CJK text style too).
 SCRIPT = """
 import sys
 import linkage, plans
@@ -20,24 +21,30 @@ from crankbase.resources import example_path
 from plans import drawing
 from plans.dxf import write_dxf
 res = linkage.analyze(example_path("ratchet.toml"))
-sheet = drawing.layout_sheets(res, plans.build_plans(res, [5]), sys.argv[2], "A1")[0]
-write_dxf(sheet, sys.argv[1])
+pps = plans.build_plans(res, [5])
+for path, lang in zip(sys.argv[1::2], sys.argv[2::2]):
+    write_dxf(drawing.layout_sheets(res, pps, lang, "A1")[0], path)
 """
 
 
-def _write(path, seed, lang="zh"):
+def _write(seed, *path_lang):
+    """The sheets ``(path, lang), ...`` written by one process under ``PYTHONHASHSEED =
+    seed``: their bytes, in that order."""
     env = {**os.environ, "PYTHONHASHSEED": str(seed)}
-    subprocess.run([sys.executable, "-c", SCRIPT, str(path), lang], check=True, env=env,
-                   cwd=ROOT, capture_output=True, timeout=300)
-    return path.read_bytes()
+    subprocess.run([sys.executable, "-c", SCRIPT, *(str(x) for pl in path_lang for x in pl)],
+                   check=True, env=env, cwd=ROOT, capture_output=True, timeout=300)
+    return [path.read_bytes() for path, _ in path_lang]
 
 
 @pytest.fixture(scope="module")
 def written(tmp_path_factory):
+    """The Chinese sheet written under two hash seeds (two processes) and the English one
+    under the first (the first process writes both: a process start less)."""
     tmp = tmp_path_factory.mktemp("dxf")
     # seeds 3 and 4 ordered ezdxf's CLASSES (LAYOUT, ACDBPLACEHOLDER) differently before
-    return {"a": _write(tmp / "a.dxf", 3), "b": _write(tmp / "b.dxf", 4),
-            "en": _write(tmp / "en.dxf", 3, "en"), "path": tmp / "a.dxf"}
+    a, en = _write(3, (tmp / "a.dxf", "zh"), (tmp / "en.dxf", "en"))
+    b, = _write(4, (tmp / "b.dxf", "zh"))
+    return {"a": a, "b": b, "en": en, "path": tmp / "a.dxf"}
 
 
 def test_two_runs_with_different_hash_seeds_write_the_same_bytes(written):

@@ -255,12 +255,17 @@ def test_the_four_bar_fits_a3_too():
         assert drawing.check_no_overlap(sh.items) == []
 
 
-def test_the_written_files_hold_the_scales_drawn(tmp_path):
+def test_the_written_files_hold_the_scales_drawn(tmp_path, figures_rendered_only):
     """``crankdyn linkage --example shaper --plans 10,11 --sheet A3`` (through the
     library): the plans' CSV gives position 11's acceleration plan at μa = 0.05 as drawn,
     the lever's forces at 10 sit on the μV = 0.008 plan, the report's tables are the
-    files written, and the summary says the lever is drawn on its own μV (ru and en)."""
+    files written, and the summary says the lever is drawn on its own μV (ru and en).
+    (Tables and texts only: the drawings are saved unrendered; a chain's plans and sheet
+    are rendered by tests/test_plans_chain.py::test_cli_writes_the_chain_plans, the
+    positions' drawings by tests/test_plans_output.py's runs.)"""
     import pandas as pd
+
+    figures_rendered_only()
 
     from linkage.study import summary_lines, write_report
     from plans.study import run_study

@@ -19,12 +19,17 @@ PETROL = example_path("petrol_vaz2106.toml")
 CYRILLIC = re.compile("[\u0400-\u04ff]")
 
 
-def test_run_variants_reports_each_row_and_the_summary(tmp_path):
+def test_run_variants_reports_each_row_and_the_summary(tmp_path, unrendered_figures):
+    """(The default formats: the good variant's 13 figures built and saved as PNG and
+    SVG, unrendered; tests/test_teacher_tools.py's three-variant run renders them.)"""
+    from engine.plots import PLOT_NAMES, TRAIN_PLOT_NAMES
+
     table = tmp_path / "v.csv"
     table.write_text("variant,engine.bore_mm,engine.speed_rpm\nA,80,5000\nB,-5,5000\n")
     seen = []
     run = run_variants(PETROL, table, tmp_path / "out", "en",
                        progress=lambda o, total: seen.append((o.variant.variant, total)))
+    assert unrendered_figures == ["png", "svg"] * len(PLOT_NAMES + TRAIN_PLOT_NAMES)
     assert sorted(seen) == [("A", 2), ("B", 2)]
     assert [o.ok for o in run.outcomes] == [True, False]
     bad = run.failures[0]
