@@ -126,12 +126,13 @@ def _clip(points, artist):
                   & (y <= box.y1 + 0.5)]
 
 
-def line_samples(fig, step=1.0):
-    """``[(label, points)]``: display points along every drawn line of the figure."""
+def _line_parts(fig):
+    """``(label, paths, transform, clipper)`` of every drawn line of the figure, in the
+    order :func:`line_samples` lists them (``clipper``: the artist whose clip box cuts
+    the line, None for arrows and the axes' frame)."""
     from matplotlib.collections import LineCollection
     from matplotlib.text import Annotation
 
-    out = []
     for ax in fig.axes:
         if not ax.get_visible():
             continue
@@ -140,36 +141,62 @@ def line_samples(fig, step=1.0):
                 continue
             if line.get_alpha() == 0 or line.get_linewidth() <= 0:
                 continue
-            pts = _path_points(line.get_path(), line.get_transform(), step)
-            out.append((f"line {line.get_label()!r}", _clip(pts, line)))
+            yield f"line {line.get_label()!r}", (line.get_path(),), line.get_transform(), line
         for p in ax.patches:
             if not p.get_visible() or p.get_linewidth() <= 0:
                 continue
             ec = p.get_edgecolor()
             if ec is None or ec[3] == 0:
                 continue
-            pts = _path_points(p.get_path(), p.get_transform(), step)
-            out.append((f"{type(p).__name__} edge", _clip(pts, p)))
+            yield f"{type(p).__name__} edge", (p.get_path(),), p.get_transform(), p
         for t in ax.texts:
             if isinstance(t, Annotation) and t.arrow_patch is not None and t.get_visible():
                 ap = t.arrow_patch
-                pts = _path_points(ap.get_path(), ap.get_transform(), step)
-                out.append((f"arrow of {t.get_text()!r}", pts))
+                yield f"arrow of {t.get_text()!r}", (ap.get_path(),), ap.get_transform(), None
         for c in ax.collections:
             if not isinstance(c, LineCollection) or not c.get_visible():
                 continue
             if c.get_gid() in BACKGROUND_GIDS:
                 continue
-            tr = c.get_transform()
-            pts = [_path_points(p, tr, step) for p in c.get_paths()]
-            if pts:
-                out.append(("line collection", _clip(np.concatenate(pts), c)))
+            paths = c.get_paths()
+            if len(paths):
+                yield "line collection", paths, c.get_transform(), c
         if ax.axison:
             for name, sp in ax.spines.items():
                 if sp.get_visible():
-                    pts = _path_points(sp.get_path(), sp.get_transform(), step)
-                    out.append((f"axes frame ({name})", pts))
-    return out
+                    yield f"axes frame ({name})", (sp.get_path(),), sp.get_transform(), None
+
+
+def _samples(paths, transform, clipper, step):
+    """Display points along the paths (what Agg draws of them: cut by the clipper's clip
+    box)."""
+    pts = [_path_points(p, transform, step) for p in paths]
+    pts = pts[0] if len(pts) == 1 else np.concatenate(pts)
+    return pts if clipper is None else _clip(pts, clipper)
+
+
+def _vertex_extent(paths, transform):
+    """``(x0, y0, x1, y1)`` in display pixels holding every sample :func:`_samples` can
+    give of the paths under an affine ``transform`` (their transformed vertices'
+    extent: a polyline's samples lie on its segments, a curve's polygon inside its
+    control points' hull, and an affine map keeps both), None when no vertex is finite
+    (no sample), NotImplemented for a non-affine transform (a polar axes' curve bends
+    between its vertices)."""
+    if not transform.is_affine:
+        return NotImplemented
+    v = paths[0].vertices if len(paths) == 1 else np.concatenate([p.vertices for p in paths])
+    xy = transform.transform(np.asarray(v, float).reshape(-1, 2))
+    xy = xy[np.isfinite(xy).all(axis=1)]
+    if not len(xy):
+        return None
+    (x0, y0), (x1, y1) = xy.min(axis=0), xy.max(axis=0)
+    return x0, y0, x1, y1
+
+
+def line_samples(fig, step=1.0):
+    """``[(label, points)]``: display points along every drawn line of the figure."""
+    return [(label, _samples(paths, tr, clipper, step))
+            for label, paths, tr, clipper in _line_parts(fig)]
 
 
 #: Agg renderers by (width px, height px, dpi), reused from figure to figure (see
@@ -248,7 +275,7 @@ def drawn(fig):
     while len(_RENDERERS) > 4:
         del _RENDERERS[next(iter(_RENDERERS))]
     canvas.renderer, canvas._lastKey = renderer, key    # canvas.get_renderer() is it
-    with renderer._draw_disabled(), _lines_not_drawn():
+    with renderer._draw_disabled(), _lines_not_drawn(), _texts_not_drawn():
         fig.draw(renderer)
     return renderer
 
@@ -273,6 +300,32 @@ def _lines_not_drawn():
         yield
     finally:
         Line2D.draw = real
+
+
+@contextlib.contextmanager
+def _texts_not_drawn():
+    """Within it, ``Text.draw`` does nothing but what it leaves behind: the text's
+    renderer kept and the text marked drawn.  With the renderer's drawing switched off
+    it only lays the text out again (its box and lines, read anew by every extent) and
+    hands its glyphs to a renderer that draws nothing; a text's place is set before it
+    is drawn (tick labels by their axis, legend texts by their box) and an annotation
+    places its arrow in its own ``draw`` (still run: ``Annotation.draw`` calls
+    ``Text.draw`` after it), so no extent a check reads changes.  (The box patch of a
+    text with ``bbox`` is not placed: no check reads it.)"""
+    from matplotlib.text import Text
+
+    real = Text.draw
+
+    def draw(self, renderer):
+        if renderer is not None:
+            self._renderer = renderer
+        self.stale = False
+
+    Text.draw = draw
+    try:
+        yield
+    finally:
+        Text.draw = real
 
 
 def _inside(points, bb, m):
@@ -317,7 +370,18 @@ def figure_problems(fig, margin_px=1.5, line_margin_px=2.0, edge=True):
         for j in np.flatnonzero(hit[i]):
             problems.append(f"overlap: {name} and {texts[j][0]}")
     lm = line_margin_px
-    for lname, pts in line_samples(fig):
+
+    def apart(x0, y0, x1, y1):                         # the extent meets no box
+        return ((x1 <= boxes[:, 0] + lm) | (x0 >= boxes[:, 2] - lm)
+                | (y1 <= boxes[:, 1] + lm) | (y0 >= boxes[:, 3] - lm)).all()
+
+    for lname, paths, tr, clipper in _line_parts(fig):
+        # a line whose vertices' extent meets no text box has no sample inside one: it
+        # is not sampled (most of a drawing's thousand lines)
+        ext = _vertex_extent(paths, tr)
+        if ext is None or (ext is not NotImplemented and apart(*ext)):
+            continue
+        pts = _samples(paths, tr, clipper, 1.0)
         if not len(pts) or np.isnan(pts).all(axis=0).any():
             continue                                   # no sample can be inside a box
         (x0, y0), (x1, y1) = np.nanmin(pts, axis=0), np.nanmax(pts, axis=0)
