@@ -199,26 +199,6 @@ def _word_problems(fig, lang):
     return out
 
 
-@pytest.fixture(scope="module", autouse=True)
-def _fewer_collections():
-    """The cyclic garbage collector run less often while the module builds its figures
-    (a figure is thousands of artists and transforms, each a container the collector
-    walks; matplotlib's transform tree makes a weak reference and a callback for every
-    parent): the first generation collected after 10,000 allocations instead of 700,
-    the older ones after 50 and 100 collections of the younger instead of 10 and 10.
-    A fifth less CPU for the same figures; what the collector frees (the figures of a
-    test, cycles among their artists) it still frees, later, and nothing a check reads
-    depends on when.  The thresholds are restored after the module."""
-    import gc
-
-    before = gc.get_threshold()
-    gc.set_threshold(10000, 50, 100)
-    try:
-        yield
-    finally:
-        gc.set_threshold(*before)
-
-
 @pytest.fixture(scope="module", params=list(EXAMPLES))
 def example(request):
     make, edge = EXAMPLES[request.param]
