@@ -30,6 +30,8 @@ import functools
 import math
 import re
 
+from .output import paused_gc
+
 __all__ = ["A4_LANDSCAPE_PRINT_CM", "FONT", "HEAD_FILL", "MAX_ROWS", "MAX_WIDTH", "WIDTH_PER_PAGE", "LINE_PT",
            "text_width", "wrapped_lines", "columns_cm", "number_format", "shown", "font",
            "style_header",
@@ -327,6 +329,7 @@ def set_number_format(cells, fmt):
         c._style.numFmtId = idx
 
 
+@paused_gc()
 def put_numbers(ws, r0, c0, rows):
     """Write ``rows`` (lists of Python ints and floats, or None) into ``ws`` from cell
     ``(r0, c0)``: what ``ws.cell(r, c).value = v`` does, new cells made at once (a
@@ -565,6 +568,7 @@ def page_setup(ws, orientation=None, title_rows=None, title_cols=None):
         ws.print_title_cols = title_cols
 
 
+@paused_gc()
 def finish(wb, fixed=None, max_width=MAX_WIDTH):
     """Give every sheet of ``wb`` the house look: one font family, one number format per
     table column, widths from the content, wrapped rows tall enough, A4 setup.

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import math
 
+from crankbase.output import paused_gc
+
 __all__ = ["summary_rows", "summary_lines", "build_workbook", "column_label"]
 
 
@@ -121,6 +123,7 @@ def _value_format(v: float) -> str:
     return "0." + "0" * decimals if decimals else "0"
 
 
+@paused_gc()                # tens of thousands of cells: no collection scans them
 def build_workbook(result: dict, lang="en", name=None):
     """An openpyxl Workbook: a summary sheet (``name`` as its title when given), then the
     motion, forces and start-up tables with two header rows (the quantity in the report
