@@ -324,9 +324,15 @@ def set_number_format(cells, fmt):
             idx = BUILTIN_FORMATS_REVERSE.get(fmt)
             if idx is None:
                 idx = c.parent.parent._number_formats.add(fmt) + BUILTIN_FORMATS_MAX_SIZE
-        if not c._style:
-            c._style = StyleArray()
-        c._style.numFmtId = idx
+        st = c._style
+        if not st:
+            st = c._style = StyleArray()
+        st[_NUM_FMT] = idx                      # st.numFmtId = idx, without the descriptor
+
+
+#: The index of ``numFmtId`` in openpyxl's StyleArray (fontId, fillId, borderId,
+#: numFmtId, protectionId, alignmentId, pivotButton, quotePrefix, xfId).
+_NUM_FMT = 3
 
 
 @paused_gc()
@@ -386,7 +392,7 @@ def _style_key(c):
     """What :func:`_cell_style` depends on, cheap to read (openpyxl builds a new font,
     alignment and format object at each access)."""
     st = c._style
-    return None if st is None else (st.fontId, st.alignmentId, st.numFmtId)
+    return None if st is None else (st[0], st[5], st[3])   # fontId, alignmentId, numFmtId
 
 
 def fit_columns(ws, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH, cells=None):
