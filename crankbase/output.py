@@ -16,7 +16,7 @@ import numpy as np
 from .errors import OutputError, Problem, SpecError, Text, os_reason
 
 __all__ = ["atomic_path", "staged_output", "recover_output", "verify_report", "read_manifest",
-           "write_csv", "check_not_input", "ensure_finite", "full_precision_xlsx",
+           "write_csv", "check_not_input", "ensure_finite", "full_precision_xlsx", "paused_gc",
            "safe_name", "save_figure", "OutputError", "MANIFEST_NAME", "WINDOWS_RESERVED"]
 
 
@@ -525,6 +525,28 @@ def _remove_folders(created) -> None:
 
 
 @contextlib.contextmanager
+def paused_gc():
+    """While active, Python's cyclic garbage collector does not run (it runs again after,
+    as it was: a nested use, or a caller that had it off, leaves it so); usable as a
+    decorator, ``@paused_gc()``.
+
+    Building and saving a workbook makes hundreds of thousands of openpyxl objects that
+    live until the save (cells, their styles) and no garbage cycle: each collection the
+    allocations set off scans them all again, a third of the time a report's workbook
+    took.  Reference counting still frees everything at once; a cycle made meanwhile is
+    collected at the next collection after."""
+    import gc
+
+    was = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if was:
+            gc.enable()
+
+
+@contextlib.contextmanager
 def full_precision_xlsx():
     """While active, openpyxl stores floats at full precision, and writes number cells
     faster.
@@ -536,9 +558,10 @@ def full_precision_xlsx():
 
     A number cell (a finite float or an int, or an empty styled cell) is written as the
     text openpyxl's own writer makes of it, without building an element for it
-    (:func:`_number_cell_writer`): a report's workbook holds tens of thousands of them,
-    and the element per cell was half the time of a save.  The file is the same byte for
-    byte (tests/test_engine_workbook_charts.py compares them).
+    (:func:`_number_cell_writer`), a row's run of them as one text (its ``row_writer``),
+    the rows found by sorting the sheet's cell keys alone: a report's workbook holds tens
+    of thousands of them, and the element per cell was half the time of a save.  The file
+    is the same byte for byte (tests/test_engine_workbook_charts.py compares them).
     """
     import math
 
@@ -547,6 +570,8 @@ def full_precision_xlsx():
 
     original = _writer.safe_string
     original_cell = sheet_writer.write_cell
+    writer = sheet_writer.WorksheetWriter
+    original_row, original_rows = writer.write_row, writer.rows
 
     def safe_string(value):
         if isinstance(value, float) and math.isfinite(value):
@@ -554,12 +579,35 @@ def full_precision_xlsx():
         return original(value)
 
     _writer.safe_string = safe_string
-    sheet_writer.write_cell = _number_cell_writer(original_cell, safe_string)
+    cell_writer = _number_cell_writer(original_cell, safe_string)
+    sheet_writer.write_cell = cell_writer
+    row_writer = getattr(cell_writer, "row_writer", None)
+    if row_writer is not None:
+        writer.write_row, writer.rows = row_writer, _sheet_rows
     try:
-        yield
+        with paused_gc():            # a save makes an object or more per cell
+            yield
     finally:
         _writer.safe_string = original
         sheet_writer.write_cell = original_cell
+        writer.write_row, writer.rows = original_row, original_rows
+
+
+def _sheet_rows(self):
+    """openpyxl's ``WorksheetWriter.rows``: [(row, its cells left to right)], a row of
+    only a height or a style (a row dimension) with no cells; the cells' keys sorted
+    alone (pairs of ints), several times cheaper than sorting the (key, cell) pairs."""
+    cells = self.ws._cells
+    rows = {}
+    for key in sorted(cells):
+        r = key[0]
+        row = rows.get(r)
+        if row is None:
+            row = rows[r] = []
+        row.append(cells[key])
+    for r in self.ws.row_dimensions.keys() - rows.keys():
+        rows[r] = []
+    return sorted(rows.items())
 
 
 def _number_cell_writer(write_cell, number_text):
@@ -570,8 +618,18 @@ def _number_cell_writer(write_cell, number_text):
     the serialisation ``write_cell`` gives them (attributes r, s, t in that order; no
     character of a cell reference or a number needs escaping).  Every other cell (text,
     formula, date, bool, NaN, a hyperlink) and any other writer (lxml's) goes to
-    ``write_cell``.  ``number_text``: the number's text (openpyxl's ``safe_string``)."""
+    ``write_cell``.  ``number_text``: the number's text (openpyxl's ``safe_string``).
+
+    Its attribute ``row_writer`` is openpyxl's ``WorksheetWriter.write_row`` that writes
+    a row's run of such cells as one text (a cell's style id looked up in the workbook's
+    styles without openpyxl's per-cell properties) and hands every other cell to
+    ``write_cell``, in the same order."""
     import math
+
+    from openpyxl.comments.comment_sheet import CommentRecord
+    from openpyxl.utils.cell import get_column_letter
+
+    isfinite = math.isfinite
 
     def write(xf, worksheet, cell, styled=None):
         raw = getattr(xf, "_file", None)
@@ -580,7 +638,7 @@ def _number_cell_writer(write_cell, number_text):
             return write_cell(xf, worksheet, cell, styled)
         kind = type(value)
         if value is not None and not (kind is int or (kind is float and
-                                                      math.isfinite(value))):
+                                                      isfinite(value))):
             return write_cell(xf, worksheet, cell, styled)
         style = f' s="{cell.style_id}"' if styled else ""
         if value is None:
@@ -588,6 +646,55 @@ def _number_cell_writer(write_cell, number_text):
         else:
             raw(f'<c r="{cell.coordinate}"{style} t="n"><v>{number_text(value)}</v></c>')
 
+    letters = {}
+
+    def write_row(self, xf, row, row_idx):
+        # openpyxl's WorksheetWriter.write_row, the number cells as write() writes them
+        ws = self.ws
+        attrs = {"r": f"{row_idx}"}
+        attrs.update(ws.row_dimensions.get(row_idx, {}))
+        raw = getattr(xf, "_file", None)
+        styles = ws.parent._cell_styles
+        ids = styles._dict
+        tail = f"{row_idx}"
+        with xf.element("row", attrs):
+            run = []
+            for cell in row:
+                comment = cell._comment
+                if comment is not None:
+                    ws._comments.append(CommentRecord.from_cell(cell))
+                st = cell._style
+                styled = st is not None and any(st)
+                value = cell._value
+                if value is None and not styled and not comment:
+                    continue
+                kind = type(value)
+                if raw is None or cell.data_type != "n" or cell.hyperlink or not (
+                        value is None or kind is int or kind is float and isfinite(value)):
+                    if run:
+                        raw("".join(run))
+                        run = []
+                    write_cell(xf, ws, cell, styled)
+                    continue
+                col = cell.column
+                letter = letters.get(col)
+                if letter is None:
+                    letter = letters[col] = get_column_letter(col)
+                if styled:
+                    sid = ids.get(st)
+                    if sid is None:
+                        sid = styles.add(st)
+                    head = f'<c r="{letter}{tail}" s="{sid}" t="n"'
+                else:
+                    head = f'<c r="{letter}{tail}" t="n"'
+                if value is None:
+                    run.append(head + " />")
+                else:
+                    run.append(f"{head}><v>{number_text(value)}</v></c>")
+            if run:
+                raw("".join(run))
+
+    write.row_writer = write_row
     return write
 
 

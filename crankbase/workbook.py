@@ -30,6 +30,8 @@ import functools
 import math
 import re
 
+from .output import paused_gc
+
 __all__ = ["A4_LANDSCAPE_PRINT_CM", "FONT", "HEAD_FILL", "MAX_ROWS", "MAX_WIDTH", "WIDTH_PER_PAGE", "LINE_PT",
            "text_width", "wrapped_lines", "columns_cm", "number_format", "shown", "font",
            "style_header",
@@ -241,11 +243,12 @@ def filled_cells(ws):
     return [c for c in map(cells.__getitem__, sorted(cells)) if c.value is not None]
 
 
-def _filled_rows(ws):
-    """:func:`filled_cells` as a list of rows (a row without a value left out)."""
+def _filled_rows(ws, cells=None):
+    """:func:`filled_cells` (or ``cells``, as it gives them) as a list of rows (a row
+    without a value left out)."""
     rows = []
     last = None
-    for c in filled_cells(ws):
+    for c in (filled_cells(ws) if cells is None else cells):
         if c.row != last:
             rows.append([])
             last = c.row
@@ -253,20 +256,28 @@ def _filled_rows(ws):
     return rows
 
 
-def table_blocks(ws):
+def table_blocks(ws, cells=None):
     """The table columns of a sheet: ``[(column, first row, last row)]``, each a run of
     consecutive rows that hold a number in that column and at least two numbers in the
     row (a list of single values with labels is not a table, nor a list of one quantity
-    a row: numbers after three texts such as quantity, unit and key)."""
+    a row: numbers after three texts such as quantity, unit and key).  ``cells``: the
+    sheet's :func:`filled_cells`, when the caller has them."""
     numeric = {}
-    for row in _filled_rows(ws):
+    shown = {}                    # {column: not hidden}
+    for row in _filled_rows(ws, cells):
         cols = [c.column for c in row if _is_number(c.value)]
+        if len(cols) < 2:
+            continue
         lead = 0                  # texts before the first number (quantity, unit, key)
         for c in row:
             if _is_number(c.value):
                 break
-            lead += isinstance(c.value, str) and _col_width(ws, c.column) > 0
-        if len(cols) >= 2 and lead < 3:
+            if isinstance(c.value, str):
+                col = c.column
+                if col not in shown:
+                    shown[col] = _col_width(ws, col) > 0
+                lead += shown[col]
+        if lead < 3:
             numeric[row[0].row] = cols
     blocks = []
     runs = {}
@@ -283,15 +294,18 @@ def table_blocks(ws):
     return sorted(blocks)
 
 
-def fit_numbers(ws):
+def fit_numbers(ws, cells=None):
     """One number format per column of each table (:func:`table_blocks`), and each number
-    alone in its row its own six digits; text formats (``@``) are kept."""
+    alone in its row its own six digits; text formats (``@``) are kept.  ``cells``: the
+    sheet's :func:`filled_cells`, when the caller has them."""
+    cells = filled_cells(ws) if cells is None else cells
+    at = ws._cells
     in_table = set()
-    for col, r0, r1 in table_blocks(ws):
-        cells = [ws.cell(r, col) for r in range(r0, r1 + 1)]
-        set_number_format(cells, number_format(c.value for c in cells))
-        in_table.update((r, col) for r in range(r0, r1 + 1))
-    for c in filled_cells(ws):
+    for col, r0, r1 in table_blocks(ws, cells):
+        block = [at[(r, col)] for r in range(r0, r1 + 1)]     # each holds a number
+        set_number_format(block, number_format(c.value for c in block))
+        in_table.update(zip(range(r0, r1 + 1), [col] * (r1 + 1 - r0)))
+    for c in cells:
         if _is_number(c.value) and (c.row, c.column) not in in_table \
                 and c.number_format != "@":
             c.number_format = number_format([c.value])
@@ -310,11 +324,18 @@ def set_number_format(cells, fmt):
             idx = BUILTIN_FORMATS_REVERSE.get(fmt)
             if idx is None:
                 idx = c.parent.parent._number_formats.add(fmt) + BUILTIN_FORMATS_MAX_SIZE
-        if not c._style:
-            c._style = StyleArray()
-        c._style.numFmtId = idx
+        st = c._style
+        if not st:
+            st = c._style = StyleArray()
+        st[_NUM_FMT] = idx                      # st.numFmtId = idx, without the descriptor
 
 
+#: The index of ``numFmtId`` in openpyxl's StyleArray (fontId, fillId, borderId,
+#: numFmtId, protectionId, alignmentId, pivotButton, quotePrefix, xfId).
+_NUM_FMT = 3
+
+
+@paused_gc()
 def put_numbers(ws, r0, c0, rows):
     """Write ``rows`` (lists of Python ints and floats, or None) into ``ws`` from cell
     ``(r0, c0)``: what ``ws.cell(r, c).value = v`` does, new cells made at once (a
@@ -322,6 +343,7 @@ def put_numbers(ws, r0, c0, rows):
     from openpyxl.cell.cell import Cell
 
     cells = ws._cells
+    new = Cell.__new__
     r = r0 - 1
     for r, values in enumerate(rows, start=r0):
         for j, v in enumerate(values, start=c0):
@@ -329,8 +351,11 @@ def put_numbers(ws, r0, c0, rows):
             if (r, j) in cells or not (v is None or kind is float or kind is int):
                 ws.cell(r, j).value = v
                 continue
-            c = Cell(ws, row=r, column=j)
-            c._value = v                      # data type "n", as openpyxl binds a number
+            # the state Cell(ws, row=r, column=j, value=v) gives a number (data type
+            # "n", as openpyxl binds one) or None, without its two constructors' calls
+            c = new(Cell)
+            c.parent, c._style, c.row, c.column = ws, None, r, j
+            c._value, c._hyperlink, c.data_type, c._comment = v, None, "n", None
             cells[(r, j)] = c
     if r >= r0:
         ws._current_row = max(ws._current_row, r)
@@ -367,13 +392,14 @@ def _style_key(c):
     """What :func:`_cell_style` depends on, cheap to read (openpyxl builds a new font,
     alignment and format object at each access)."""
     st = c._style
-    return None if st is None else (st.fontId, st.alignmentId, st.numFmtId)
+    return None if st is None else (st[0], st[5], st[3])   # fontId, alignmentId, numFmtId
 
 
-def fit_columns(ws, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH):
+def fit_columns(ws, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH, cells=None):
     """Column widths from the text and the numbers they hold; a text longer than
     ``max_width`` wraps.  ``fixed``: {column letter: width} kept as given.  Titles (the
-    only value of their row) and merged cells do not widen a column.
+    only value of their row) and merged cells do not widen a column.  ``cells``: the
+    sheet's :func:`filled_cells`, when the caller has them.
 
     Each cell is visited once per pass, its style read once per distinct style and each
     text (each shape of a number) measured once."""
@@ -382,7 +408,7 @@ def fit_columns(ws, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH):
 
     fixed = fixed or {}
     first, covered = _merged(ws)
-    cells = filled_cells(ws)
+    cells = filled_cells(ws) if cells is None else cells
     hidden = {}                     # {column: hidden}
     for c in cells:
         if c.column not in hidden:
@@ -512,12 +538,13 @@ def _span_width(ws, c, first=None):
     return sum(_col_width(ws, j) for j in cols)
 
 
-def fit_rows(ws):
+def fit_rows(ws, cells=None):
     """Rows of wrapped text exactly as tall as their most lines (at their columns'
-    width); other rows keep their height."""
+    width); other rows keep their height.  ``cells``: the sheet's :func:`filled_cells`,
+    when the caller has them."""
     first, covered = _merged(ws)
     need = {}
-    for c in filled_cells(ws):
+    for c in (filled_cells(ws) if cells is None else cells):
         if not (isinstance(c.value, str) and c.alignment and c.alignment.wrap_text) \
                 or (c.row, c.column) in covered or not _col_width(ws, c.column):
             continue
@@ -547,6 +574,7 @@ def page_setup(ws, orientation=None, title_rows=None, title_cols=None):
         ws.print_title_cols = title_cols
 
 
+@paused_gc()
 def finish(wb, fixed=None, max_width=MAX_WIDTH):
     """Give every sheet of ``wb`` the house look: one font family, one number format per
     table column, widths from the content, wrapped rows tall enough, A4 setup.
@@ -561,9 +589,13 @@ def finish(wb, fixed=None, max_width=MAX_WIDTH):
         if ws.sheet_state != "visible":
             page_setup(ws)
             continue
-        fit_numbers(ws)
-        fit_columns(ws, max_width=max_width, fixed=(fixed or {}).get(ws.title))
-        fit_rows(ws)
+        cells = filled_cells(ws)             # the sheet's values, found once
+        merged = len(ws.merged_cells.ranges)
+        fit_numbers(ws, cells)
+        fit_columns(ws, max_width=max_width, fixed=(fixed or {}).get(ws.title),
+                    cells=cells)
+        # a title fit_columns merged over its row took the cells it covers
+        fit_rows(ws, cells if len(ws.merged_cells.ranges) == merged else None)
         page_setup(ws)
     return wb
 

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import math
 
+from crankbase.output import paused_gc
+
 __all__ = ["summary_rows", "summary_lines", "build_workbook", "column_label"]
 
 
@@ -121,6 +123,7 @@ def _value_format(v: float) -> str:
     return "0." + "0" * decimals if decimals else "0"
 
 
+@paused_gc()                # tens of thousands of cells: no collection scans them
 def build_workbook(result: dict, lang="en", name=None):
     """An openpyxl Workbook: a summary sheet (``name`` as its title when given), then the
     motion, forces and start-up tables with two header rows (the quantity in the report
@@ -167,14 +170,14 @@ def build_workbook(result: dict, lang="en", name=None):
         s = wb.create_sheet(title)
         header_rows(s, 1, [column_label(c, lang, symbols) for c in df.columns], df.columns)
         put_numbers(s, 3, 1, [[float(v) for v in rec] for rec in df.itertuples(index=False)])
+        at, rows = s._cells, range(3, 3 + len(df))
         for j, col in enumerate(df.columns, start=1):
             letter = get_column_letter(j)
             s.column_dimensions[letter].width = 13
             # about six significant digits of the column's largest value (the cells keep
             # every digit: the CSV's numbers)
             fmt = _value_format(float(np.abs(df[col].to_numpy(float)).max()))
-            set_number_format([c for (c,) in s.iter_rows(min_row=3, min_col=j, max_col=j)],
-                              fmt)
+            set_number_format([at[(r, j)] for r in rows], fmt)   # put_numbers' cells
         # the labels wrap at the column width (13): room for their longest
         s.row_dimensions[1].height = 13 * max(math.ceil(len(c.value) / 9) for c in s[1])
         s.freeze_panes = "B3"

@@ -15,6 +15,8 @@ import re
 
 import numpy as np
 
+from crankbase.output import paused_gc
+
 __all__ = ["chain_column_label", "write_chain_csvs", "write_chain_workbook",
            "chain_figures", "chain_summary_rows", "plot_chain_plan", "plot_chain_moment",
            "plot_output_motion", "CHAIN_PLOTS"]
@@ -94,6 +96,7 @@ def chain_summary_rows(result, lang="ru") -> list:
     return rows
 
 
+@paused_gc()            # thousands of cells: no collection scans them
 def write_chain_workbook(result, path, lang="ru"):
     """The workbook of a chain: the summary, the kinematics and the forces (each table's
     header: the symbol and unit in ``lang`` over the CSV column name)."""

@@ -43,6 +43,7 @@ import re
 import numpy as np
 
 from crankbase.errors import Text
+from crankbase.output import paused_gc
 from crankbase.texts import OFFERED, REFERENCE
 from crankbase.tolerances import SAME_ANGLE_DEG
 
@@ -375,6 +376,7 @@ def _key_meaning(key, value, lang):
     return out
 
 
+@paused_gc()            # thousands of cells: no collection scans them
 def write_workbook(result, path, lang: str = "ru"):
     """Write the Excel workbook of a linkage analysis (atomically) in ``lang``.
 

@@ -26,6 +26,7 @@ import numpy as np
 
 from crankbase.errors import OutputError, Problem, Text
 from crankbase.texts import OFFERED
+from crankbase.output import paused_gc
 from crankbase.workbook import A4_LANDSCAPE_PRINT_CM, filled_cells, sheet_rows, thinned_note
 
 from ..forces import COLUMNS, SUMMARY_QUANTITIES
@@ -140,6 +141,7 @@ def _check_finite(values, where):
                                    {"where": where, "key": key, "val": val}))
 
 
+@paused_gc()            # tens of thousands of cells: no collection scans them
 def build_workbook(result, lang="ru"):
     """Fill the report template with a computed force table.
 
@@ -603,6 +605,7 @@ def readable_numbers(ws, widths=None, default_width=None, per_column=True):
         ws.column_dimensions[col].width = w
 
 
+@paused_gc()
 def add_engine_sheets(wb, tr, lang="ru"):
     """Add the whole engine's sheets to a report workbook: the layout, the total-torque
     table (one firing interval, or the cycle for an odd-firing engine) with the summary
