@@ -5,7 +5,6 @@ import re
 
 import pytest
 from rendering import needs_office, page_sizes_many
-from openpyxl import load_workbook
 
 from crankbase.output import MANIFEST_NAME, read_manifest, verify_report
 from crankbase.resources import example_path
@@ -219,16 +218,13 @@ def test_summaries_carry_the_same_numbers_in_both_languages(runs):
 
 # ------------------------------------------------------------------ workbook
 @pytest.fixture(scope="module")
-def workbooks(runs):
-    """The workbook of each dynamics run, loaded once for the tests that read it
-    (read-only): (example, lang) → openpyxl workbook."""
-    cache = {}
-
+def workbooks(runs, loaded_workbook):
+    """The workbook of each dynamics run, loaded once per worker for the tests that read
+    it (the session's :func:`loaded_workbook`, shared with tests/test_workbooks_audit.py;
+    read-only): (example, lang) → openpyxl workbook."""
     def get(ex, lang):
-        if (ex, lang) not in cache:
-            d = runs[("dynamics", ex, lang)][0]
-            cache[(ex, lang)] = load_workbook(d / f"{DYNAMICS[ex][0]}_dynamics.xlsx")
-        return cache[(ex, lang)]
+        d = runs[("dynamics", ex, lang)][0]
+        return loaded_workbook(d / f"{DYNAMICS[ex][0]}_dynamics.xlsx")
     return get
 
 
