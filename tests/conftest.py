@@ -345,3 +345,65 @@ def _fewer_collections():
         yield
     finally:
         gc.set_threshold(*before)
+
+
+# ------------------------------------------------------------------------- tests-wbcache
+#: How many workbooks :func:`loaded_workbook` keeps parsed in one worker (the least
+#: recently read is dropped first): the tests reading one workbook run close together
+#: (a module's parametrized fixture groups them), and an engine report takes ~16 MB.
+WORKBOOK_CACHE_SIZE = 24
+
+
+def _refuse_save(*args, **kwargs):
+    raise RuntimeError("a workbook from the loaded_workbook fixture is shared read-only: "
+                       "load your own copy with openpyxl.load_workbook to change or save it")
+
+
+def _workbook_shape(wb):
+    """Each sheet's (title, state, max_row, max_column): what a test reading a shared
+    workbook may not change."""
+    return tuple((ws.title, ws.sheet_state, ws.max_row, ws.max_column)
+                 for ws in wb.worksheets)
+
+
+@pytest.fixture(scope="session")
+def loaded_workbook():
+    """``loaded_workbook(path, **options)``: ``openpyxl.load_workbook(path, **options)``,
+    parsed once per worker (process) and shared by every test of the session that reads
+    the same file (parsing is most of the CPU of a test that reads a report: an engine
+    report holds ~40,000 cells).  Keyed by the resolved path, the file's size and
+    modification time (ns) and the load options, so a file written anew at the same path
+    is parsed anew.  Shared means read-only: a test that changes a workbook (a cell, a
+    style, a sheet) loads its own copy with ``openpyxl.load_workbook``; a shared one
+    refuses ``save``, and a later call fails when a sheet was added, removed, renamed or
+    grew (``ws.cell(r, c)`` creates the cell it reads: read a cell that may be past the
+    used range with ``ws._cells.get((r, c))``).  ``read_only=True`` workbooks (they keep
+    the file open) are not cached: the call is passed on."""
+    from collections import OrderedDict
+
+    from openpyxl import load_workbook
+
+    cache = OrderedDict()
+
+    def get(path, **options):
+        if options.get("read_only"):
+            return load_workbook(path, **options)
+        path = Path(path).resolve()
+        st = path.stat()
+        key = (str(path), st.st_size, st.st_mtime_ns, tuple(sorted(options.items())))
+        if key in cache:
+            cache.move_to_end(key)
+            wb, shape = cache[key]
+            if _workbook_shape(wb) != shape:
+                raise AssertionError(f"a test changed the shared workbook {path}: "
+                                     f"{shape} -> {_workbook_shape(wb)}")
+            return wb
+        wb = load_workbook(path, **options)
+        wb.save = _refuse_save
+        cache[key] = wb, _workbook_shape(wb)
+        while len(cache) > WORKBOOK_CACHE_SIZE:
+            cache.popitem(last=False)
+        return wb
+
+    get.cache = cache
+    return get

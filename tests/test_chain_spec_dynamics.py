@@ -152,7 +152,8 @@ def test_cli_dynamics_example_shaper(shaper, cli_report):
 
 
 @pytest.mark.parametrize("lang", ["ru", "en"])
-def test_shaper_dynamics_workbook_is_clean(shaper, lang, tmp_path, cli_report):
+def test_shaper_dynamics_workbook_is_clean(shaper, lang, tmp_path, cli_report,
+                                          loaded_workbook):
     """The shaper's dynamics workbook passes the reader's audit (tests/workbook_audit.py:
     nothing cut off, no ###, one number format per column), its long chain column names
     included; the forces sheet holds the chain's reactions.  In English the workbook the
@@ -167,10 +168,11 @@ def test_shaper_dynamics_workbook_is_clean(shaper, lang, tmp_path, cli_report):
         rep = cli_report("dynamics", "--example", "shaper", "--lang", "en")
         assert rep.rc == 0, rep.err
         path = rep.folder / f"{shaper.stem}_dynamics.xlsx"
+        wb = loaded_workbook(path)                      # shared, read-only
     else:
         path = tmp_path / f"shaper_{lang}.xlsx"
         save_workbook(build_workbook(shaper, lang, name=shaper.model.name), path)
-    wb = load_workbook(path)
+        wb = load_workbook(path)
     assert problems(wb, path.name) == []
     keys = {c.value for ws in wb.worksheets for row in ws.iter_rows(max_row=6) for c in row}
     assert "R_frame_crank_N" in keys and "Rx_lever_rod_N_const" in keys

@@ -54,21 +54,17 @@ def ratchet_run(cli_report):
 
 
 @pytest.fixture(scope="module")
-def lang_runs(tmp_path_factory):
-    """Both bundled examples in both languages (tables only): (example, lang) →
-    (folder, terminal stdout, stderr)."""
-    import contextlib
-    import io
-
+def lang_runs(cli_report):
+    """Both bundled examples in both languages (tables only; the session's shared
+    ``crankdyn linkage --example EX --no-plots --lang LANG`` runs, read-only, which
+    tests/test_reports_workbooks.py reads too): (example, lang) → (folder, terminal
+    stdout, stderr)."""
     out = {}
     for ex in ("ratchet", "press"):
         for lang in ("ru", "en"):
-            d = tmp_path_factory.mktemp(f"{ex}_{lang}")
-            so, se = io.StringIO(), io.StringIO()
-            with contextlib.redirect_stdout(so), contextlib.redirect_stderr(se):
-                assert main(["linkage", "--example", ex, "-o", str(d), "--no-plots",
-                             "--lang", lang]) == 0
-            out[(ex, lang)] = (d, so.getvalue(), se.getvalue())
+            rep = cli_report("linkage", "--example", ex, "--no-plots", "--lang", lang)
+            assert rep.rc == 0, rep.err
+            out[(ex, lang)] = (rep.folder, rep.out, rep.err)
     return out
 
 
@@ -108,10 +104,10 @@ def test_csv_is_full_precision(ratchet_run):
 
 
 @pytest.mark.parametrize("lang", ["ru", "en"])
-def test_workbook_read_back_equals_csv(lang_runs, lang):
+def test_workbook_read_back_equals_csv(lang_runs, lang, loaded_workbook):
     """Every number of the workbook equals the CSV to the last bit, in either language."""
     run = lang_runs[("ratchet", lang)][0]
-    wb = load_workbook(run / "ratchet-drive.xlsx")
+    wb = loaded_workbook(run / "ratchet-drive.xlsx")            # shared, read-only
     assert tuple(wb.sheetnames) == TITLES[lang]
     k = pd.read_csv(_one(run, "kinematics.csv"))
     f = pd.read_csv(_one(run, "forces.csv"))
@@ -149,10 +145,10 @@ INPUT_LABELS = {
 
 
 @pytest.mark.parametrize("lang", ["ru", "en"])
-def test_workbook_inputs_and_extremes(lang_runs, lang):
+def test_workbook_inputs_and_extremes(lang_runs, lang, loaded_workbook):
     run = lang_runs[("ratchet", lang)][0]
     grashof, crank_rocker, swing, K, strokes = INPUT_LABELS[lang]
-    wb = load_workbook(run / "ratchet-drive.xlsx")
+    wb = loaded_workbook(run / "ratchet-drive.xlsx")            # shared, read-only
     rows = [r for r in _sheet(wb, "inputs").iter_rows(values_only=True) if r and r[0]]
     values = {r[0]: r[1] for r in rows}
     units = {r[0]: r[2] for r in rows}
@@ -411,9 +407,10 @@ crank_angles_deg = [300.0, 290.0]
 
 
 # ------------------------------------------------------------ the report's language
-def _workbook_strings(path):
-    """Every text of a workbook: sheet names and string cells, (where, text)."""
-    wb = load_workbook(path)
+def _workbook_strings(path, load=load_workbook):
+    """Every text of a workbook: sheet names and string cells, (where, text); ``load``:
+    how the workbook is loaded (the session's ``loaded_workbook`` for a shared one)."""
+    wb = load(path)
     for ws in wb.worksheets:
         yield ws.title, ws.title
         for row in ws.iter_rows():
@@ -422,7 +419,7 @@ def _workbook_strings(path):
                     yield f"{ws.title}!{c.coordinate}", c.value
 
 
-def test_english_report_has_no_cyrillic(lang_runs):
+def test_english_report_has_no_cyrillic(lang_runs, loaded_workbook):
     """An English user sees no Cyrillic letter: not in the workbook (cells, sheet names,
     the raw XML parts as well), not on the terminal."""
     import zipfile
@@ -430,7 +427,8 @@ def test_english_report_has_no_cyrillic(lang_runs):
     for ex in ("ratchet", "press"):
         run, out, err = lang_runs[(ex, "en")]
         path = next(run.glob("*.xlsx"))
-        bad = [(w, v) for w, v in _workbook_strings(path) if CYRILLIC.search(v)]
+        bad = [(w, v) for w, v in _workbook_strings(path, loaded_workbook)
+               if CYRILLIC.search(v)]
         assert not bad, (ex, bad[:5])
         with zipfile.ZipFile(path) as z:
             for name in z.namelist():
@@ -439,9 +437,8 @@ def test_english_report_has_no_cyrillic(lang_runs):
         assert "max |Mb| at the positions" in out
 
 
-def _symbol_rows(path):
+def _symbol_rows(wb):
     """Symbol row, unit row and CSV-name row of every table sheet, by sheet place."""
-    wb = load_workbook(path)
     out = {}
     for key, ws in zip(SHEETS[1:6], wb.worksheets[1:6]):
         rows = list(ws.iter_rows(min_row=1, max_row=3, values_only=True))
@@ -465,13 +462,15 @@ EXPECTED_UNITS = {
 }
 
 
-def test_workbook_symbols_units_and_numbers_in_both_languages(lang_runs):
+def test_workbook_symbols_units_and_numbers_in_both_languages(lang_runs, loaded_workbook):
     """The Russian workbook carries the Russian textbook symbols and units, the English
     one the English set; the CSV-name row and every number are identical in both (and
     equal the CSV to the last bit: test_workbook_read_back_equals_csv)."""
     for ex in ("ratchet", "press"):
-        ru = _symbol_rows(next(lang_runs[(ex, "ru")][0].glob("*.xlsx")))
-        en = _symbol_rows(next(lang_runs[(ex, "en")][0].glob("*.xlsx")))
+        # the shared runs' workbooks (read-only)
+        wr = loaded_workbook(next(lang_runs[(ex, "ru")][0].glob("*.xlsx")))
+        we = loaded_workbook(next(lang_runs[(ex, "en")][0].glob("*.xlsx")))
+        ru, en = _symbol_rows(wr), _symbol_rows(we)
         found = {}
         for key in ru:
             assert ru[key][2] == en[key][2], (ex, key)          # CSV names: the same
@@ -490,8 +489,6 @@ def test_workbook_symbols_units_and_numbers_in_both_languages(lang_runs):
         else:                                                   # the slider's resistance
             assert found["F_res_N"] == (("Fпс", "Fr"), ("Н", "N"))
         # every number of every sheet, cell by cell, is the same in both languages
-        wr = load_workbook(next(lang_runs[(ex, "ru")][0].glob("*.xlsx")))
-        we = load_workbook(next(lang_runs[(ex, "en")][0].glob("*.xlsx")))
         assert len(wr.worksheets) == len(we.worksheets)
         for a, b in zip(wr.worksheets[1:], we.worksheets[1:]):
             na = [(c.coordinate, c.value) for r in a.iter_rows() for c in r
@@ -596,7 +593,7 @@ def test_lang_help_says_what_it_changes(capsys):
     assert "--lang" in text and "книги .xlsx" in text and "сводки в терминале" in text
 
 
-def test_inputs_sheet_wrapped_rows_are_tall_enough(lang_runs):
+def test_inputs_sheet_wrapped_rows_are_tall_enough(lang_runs, loaded_workbook):
     """A wrapped label or meaning on the inputs sheet never runs into the next row: a row
     whose text needs more than one line at its column's width (words put on lines by the
     character widths of crankbase.workbook, measured on LibreOffice's rendering, where a
@@ -607,7 +604,7 @@ def test_inputs_sheet_wrapped_rows_are_tall_enough(lang_runs):
     for key, (run, _, _) in lang_runs.items():
         from openpyxl.utils import get_column_letter
 
-        ws = load_workbook(next(run.glob("*.xlsx"))).worksheets[0]
+        ws = loaded_workbook(next(run.glob("*.xlsx"))).worksheets[0]     # shared
         spans = {(r.min_row, r.min_col): r for r in ws.merged_cells.ranges}
         wrapped = 0
         for row in ws.iter_rows():

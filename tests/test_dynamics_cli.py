@@ -4,7 +4,6 @@ nothing."""
 import numpy as np
 import pandas as pd
 import pytest
-from openpyxl import load_workbook
 
 from crankdyn.cli import main
 from crankdyn.langs import error_line
@@ -15,7 +14,7 @@ COLS = ["phi_deg", "J_red_kgm2", "dJ_red_dphi_kgm2", "M_drive_Nm", "M_resist_Nm"
 
 
 @pytest.mark.parametrize("lang", ["ru", "en"])
-def test_machine_example(cli_report, lang):
+def test_machine_example(cli_report, lang, loaded_workbook):
     rep = cli_report("dynamics", "--example", "flywheel", "--lang", lang)  # shared, read-only
     assert rep.rc == 0
     out = rep.folder
@@ -23,7 +22,7 @@ def test_machine_example(cli_report, lang):
     assert list(df.columns[:8]) == COLS
     assert df["omega_rad_s"].max() == pytest.approx(168.45, abs=0.01)   # seed Ex. 11-3
     assert df["omega_rad_s"].min() == pytest.approx(145.72, abs=0.01)
-    wb = load_workbook(out / "flywheel-example-11-3_dynamics.xlsx")
+    wb = loaded_workbook(out / "flywheel-example-11-3_dynamics.xlsx")     # shared
     ws = wb.worksheets[1]
     header = [c.value for c in ws[2]]           # row 1: the quantity, row 2: the CSV name
     col = header.index("omega_rad_s")

@@ -5,7 +5,6 @@ import re
 
 import pytest
 from rendering import needs_office, page_sizes_many
-from openpyxl import load_workbook
 
 from crankbase.output import MANIFEST_NAME, read_manifest, verify_report
 from crankbase.resources import example_path
@@ -219,16 +218,13 @@ def test_summaries_carry_the_same_numbers_in_both_languages(runs):
 
 # ------------------------------------------------------------------ workbook
 @pytest.fixture(scope="module")
-def workbooks(runs):
-    """The workbook of each dynamics run, loaded once for the tests that read it
-    (read-only): (example, lang) → openpyxl workbook."""
-    cache = {}
-
+def workbooks(runs, loaded_workbook):
+    """The workbook of each dynamics run, loaded once per worker for the tests that read
+    it (the session's :func:`loaded_workbook`, shared with tests/test_workbooks_audit.py;
+    read-only): (example, lang) → openpyxl workbook."""
     def get(ex, lang):
-        if (ex, lang) not in cache:
-            d = runs[("dynamics", ex, lang)][0]
-            cache[(ex, lang)] = load_workbook(d / f"{DYNAMICS[ex][0]}_dynamics.xlsx")
-        return cache[(ex, lang)]
+        d = runs[("dynamics", ex, lang)][0]
+        return loaded_workbook(d / f"{DYNAMICS[ex][0]}_dynamics.xlsx")
     return get
 
 
@@ -245,9 +241,10 @@ def test_dynamics_workbook_speaks_the_report_language(workbooks):
                 for v in row:
                     assert not (isinstance(v, str) and CYRILLIC.search(v)), (ex, ws.title, v)
         ru = _workbook(workbooks, ex, "ru")
-        text = "\n".join([ws.title for ws in ru.worksheets] + [
-            str(v) for ws in ru.worksheets
-            for row in ws.iter_rows(max_row=40, values_only=True) for v in row])
+        text = "\n".join([ws.title for ws in ru.worksheets] + [     # the first 40 rows
+            str(v) for ws in ru.worksheets            # (not past the last: iter_rows
+            for row in ws.iter_rows(max_row=min(40, ws.max_row), values_only=True)
+            for v in row])                            # would add empty cells there)
         for symbol in ("Итоги", "ωmax", "ωср", "ΔTmax", "Jм", "Jп, кг·м²", "Mд, Н·м",
                        "Mс, Н·м", "ω, рад/с", "ε, рад/с²", "φ, °"):
             assert symbol in text, (ex, symbol)

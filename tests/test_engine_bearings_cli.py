@@ -92,13 +92,15 @@ def test_bearings_flag_writes_tables_equal_to_the_library(tmp_path, capsys,
     # the workbook's bearing sheets hold the CSVs bit for bit, and the summary
     from openpyxl import load_workbook
     from engine.report.bearing_sheets import SHEET_NAMES
-    wb = load_workbook(out / "diesel-d240.xlsx")
+    # read-only: the values of the six sheets read, the others not parsed
+    wb = load_workbook(out / "diesel-d240.xlsx", read_only=True)
     for fname in CSVS:
         rows = list(wb[SHEET_NAMES["en"][fname]].values)
         df = pd.read_csv(out / f"diesel-d240_{fname}")
         assert list(rows[0]) == list(df.columns)
         np.testing.assert_array_equal(np.array(rows[1:], float), df.to_numpy())
     summ = {r[0]: r[1:] for r in wb[SHEET_NAMES["en"]["summary"]].values if r and r[0]}
+    wb.close()
     assert set(summ) >= {f"Crank pin {k}, R, N" for k in range(1, 5)}
     assert summ["Most loaded main journal"][0] in range(1, 6)
     assert summ["Crank pin 1, R, N"][0] == pytest.approx(float(pins["R_1_N"].max()),
@@ -134,8 +136,9 @@ def test_one_cylinder_spec_with_bearing_tables(tmp_path, capsys, unrendered_figu
     np.testing.assert_array_equal(pins["R_1_N"].to_numpy(), t["R_N"].to_numpy())
     from openpyxl import load_workbook
     from engine.report.bearing_sheets import SHEET_NAMES
-    wb = load_workbook(out / "diesel-d240.xlsx")
+    wb = load_workbook(out / "diesel-d240.xlsx", read_only=True)   # one sheet's values
     summ = {r[0]: r[1:] for r in wb[SHEET_NAMES["en"]["summary"]].values if r and r[0]}
+    wb.close()
     assert summ["Crank pin 1, R, N"][:6] == (ps.max_N, ps.alpha_max_deg, ps.min_N,
                                              ps.alpha_min_deg, ps.mean_N, ps.chi)
     assert summ["crank pin 1"][0] == fine.pin_wear.oil_hole_deg

@@ -103,10 +103,10 @@ def test_csv_has_no_round_off_residues(run):
         assert not tiny.any(), (csv, np.argwhere(tiny)[:3])
 
 
-def test_workbook_equals_csv(run):
+def test_workbook_equals_csv(run, loaded_workbook):
     name, lang, out = run
     df = pd.read_csv(out / named(name, "forces.csv"))
-    wb = load_workbook(out / EXAMPLES[name][1])
+    wb = loaded_workbook(out / EXAMPLES[name][1])      # shared, read-only
     # 9 printed sheets (and the bearings'); the native charts' data (the fine grid) on a
     # hidden last one
     printed = 9 + (BEARING_SHEETS if (name, lang) in BEARINGS else 0)
@@ -120,7 +120,7 @@ def test_workbook_equals_csv(run):
     assert ws_t2.row_dimensions[5].hidden
     assert [c.value for c in ws_t2[5]][:19] == list(TABLE2_KEYS)
     rows = list(ws_t2.iter_rows(min_row=6, max_row=5 + n, values_only=True))
-    assert ws_t2.cell(6 + n, 1).value is None
+    assert _value(ws_t2, 6 + n, 1) is None
     arr = np.array(rows, dtype=float)
     np.testing.assert_array_equal(arr[:, 0], df["alpha_deg"])
     for k, col in enumerate(TABLE2_FORCES):
@@ -140,9 +140,9 @@ def test_workbook_equals_csv(run):
     assert len(ws_ch._charts) == 5      # 4 over α and the polar diagram
 
 
-def test_table2_layout_like_the_textbook(run):
+def test_table2_layout_like_the_textbook(run, loaded_workbook):
     name, lang, out = run
-    wb = load_workbook(out / EXAMPLES[name][1])
+    wb = loaded_workbook(out / EXAMPLES[name][1])      # shared, read-only
     ws = wb.worksheets[1]
     mm, nn = ("мм", "Н") if lang == "ru" else ("mm", "N")
     head = [ws.cell(3, c).value for c in range(1, 20)]
@@ -168,11 +168,11 @@ def test_table2_layout_like_the_textbook(run):
         assert {c.number_format for c in column} == {number_format(c.value for c in column)}
 
 
-def test_inputs_and_summary_sheets(run):
+def test_inputs_and_summary_sheets(run, loaded_workbook):
     name, lang, out = run
     study = engine.load(example_path(EXAMPLES[name][0]))
     spec = study.spec
-    wb = load_workbook(out / EXAMPLES[name][1])
+    wb = loaded_workbook(out / EXAMPLES[name][1])      # shared, read-only
     ws_in, ws_sum = wb.worksheets[0], wb.worksheets[2]
     vals = {r[0]: r[3] for r in ws_in.iter_rows(min_row=4, max_col=4, values_only=True)
             if r[0]}
@@ -215,16 +215,22 @@ def test_plots_exist_and_are_not_empty(run):
         assert "<svg" in svg and svg.count("<path") > 10
 
 
+def _value(ws, row, col):
+    """A cell's value, read without creating the cell (``ws.cell`` creates an empty one,
+    which would grow a shared workbook past its used range)."""
+    return getattr(ws._cells.get((row, col)), "value", None)
+
+
 def _block(ws, first_row, first_col, n_cols):
     rows = []
     r = first_row
-    while ws.cell(r, first_col).value is not None:
-        rows.append([ws.cell(r, first_col + j).value for j in range(n_cols)])
+    while _value(ws, r, first_col) is not None:
+        rows.append([_value(ws, r, first_col + j) for j in range(n_cols)])
         r += 1
     return rows
 
 
-def test_engine_csvs_equal_the_workbook_and_the_library(run):
+def test_engine_csvs_equal_the_workbook_and_the_library(run, loaded_workbook):
     """cylinders.csv, torque.csv and balance.csv read back equal the workbook's Layout,
     Total torque and Balance sheets and the library's result, bit for bit."""
     name, lang, out = run
@@ -245,7 +251,7 @@ def test_engine_csvs_equal_the_workbook_and_the_library(run):
     np.testing.assert_array_equal(tq.to_numpy(), res.torque.to_numpy())
     np.testing.assert_array_equal(bal.to_numpy(), res.balance.to_numpy())
     assert tq["alpha_deg"].iloc[-1] == study.spec.cycle_deg and bal["alpha_deg"].iloc[-1] == 360
-    wb = load_workbook(out / EXAMPLES[name][1])
+    wb = loaded_workbook(out / EXAMPLES[name][1])      # shared, read-only
     ws_lay, ws_tq, ws_bal, ws_fw = wb.worksheets[5:9]
     np.testing.assert_array_equal(np.array(_block(ws_lay, 4, 1, 7), float), cyl.to_numpy())
     np.testing.assert_array_equal(np.array(_block(ws_tq, 4, n + 4, n + 2), float),
@@ -269,7 +275,7 @@ def test_engine_csvs_equal_the_workbook_and_the_library(run):
     assert len(ws_tq._charts) == 1
     # flywheel sheet holds the summary's numbers
     fw = res.summary.flywheel
-    values = [ws_fw.cell(r, 2).value for r in range(3, 13)]
+    values = [_value(ws_fw, r, 2) for r in range(3, 13)]
     assert values[0] == pytest.approx(fw.L_excess_J) and values[3] == pytest.approx(fw.J0_kgm2)
     if lang == "en":
         import re

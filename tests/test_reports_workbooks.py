@@ -93,16 +93,12 @@ def _cells(path):
 
 
 @pytest.fixture(scope="module")
-def book():
-    """``book(path)``: the workbook at ``path`` loaded once for the module's tests that
-    only read it (read-only: a test that changes a workbook loads its own copy)."""
-    cache = {}
-
-    def get(path):
-        if path not in cache:
-            cache[path] = load_workbook(path)
-        return cache[path]
-    return get
+def book(loaded_workbook):
+    """``book(path)``: the workbook at ``path`` loaded once per worker for the tests that
+    only read it (the session's :func:`loaded_workbook`, shared with the other modules
+    reading the same shared reports; read-only: a test that changes a workbook loads its
+    own copy)."""
+    return loaded_workbook
 
 
 def test_the_study_layer_writes_the_cli_workbook(runs, tmp_path):

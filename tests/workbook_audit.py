@@ -4,78 +4,106 @@ column of each table, one font family.  Used by tests/test_workbooks_audit.py ov
 workbook the tool writes."""
 from __future__ import annotations
 
-from collections import namedtuple
-
 from crankbase.workbook import (LINE_PT, _cell_style, _col_width, _is_number, _merged, _need,
                                 _span_width, _used_width, filled_cells, table_blocks,
                                 wrapped_lines)
 
 
-#: What the check reads of a cell: its value and the style it shares with every cell of
-#: the same style (openpyxl builds a new font, alignment and format object at each
-#: access; a long table holds a few styles over many thousand cells), with what its
-#: width depends on (``measure``: crankbase.workbook's (bold, size, wraps, format)).
-_Cell = namedtuple("_Cell", "value row column coordinate font alignment number_format "
-                            "measure")
+def _styles():
+    """A memo of what the check reads of a cell's style, per distinct style: (font,
+    alignment, crankbase.workbook's width measure (bold, size, wraps, format)).  openpyxl
+    builds a new font, alignment and format object at each access; a long table holds a
+    few styles over many thousand cells."""
+    memo = {}
+
+    def style(c):
+        key = c._style.tobytes()            # the cell's style ids (openpyxl's StyleArray)
+        got = memo.get(key)
+        if got is None:
+            got = memo[key] = (c.font, c.alignment, _cell_style(c))
+        return got
+    return style
 
 
-def _styled(c, styles):
-    """``c`` as a :data:`_Cell`, its style objects looked up once per distinct style."""
-    key = tuple(c._style) if c.has_style else None
-    style = styles.get(key)
-    if style is None:
-        style = styles[key] = (c.font, c.alignment, c.number_format, _cell_style(c))
-    return _Cell(c.value, c.row, c.column, c.coordinate, *style)
+def _number_formats():
+    """``formats(cells)``: the set of the cells' number formats, each format id looked up
+    once (what openpyxl's ``Cell.number_format`` reads from the cell's style ids)."""
+    memo = {}
+
+    def formats(cells):
+        out = set()
+        for c in {c._style.numFmtId: c for c in cells}.values():
+            key = c._style.numFmtId
+            if key not in memo:
+                memo[key] = c.number_format
+            out.add(memo[key])
+        return out
+    return formats
 
 
 def problems(wb, name=""):
-    """Every defect of ``wb`` as a list of strings (empty: the workbook is clean)."""
+    """Every defect of ``wb`` as a list of strings (empty: the workbook is clean).
+
+    Reads the workbook without changing it (no cell is created: ``ws.cell`` and
+    ``ws[row]`` would create the empty ones they visit), so a workbook shared by several
+    tests can be audited."""
     out = []
     families = {}
-    styles = {}
+    style = _styles()
+    number_formats = _number_formats()
     for ws in wb.worksheets:
         if ws.sheet_state != "visible":
             continue
+        cells = ws._cells
         first, covered = _merged(ws)
         widths = {}
-        for cell in filled_cells(ws):           # every cell that holds a value
-            if (cell.row, cell.column) in covered:
+        filled = filled_cells(ws)               # every cell that holds a value
+        last_in_row = {}                        # row → its last column holding a value
+        for cell in filled:
+            last_in_row[cell.row] = cell.column
+        for cell in filled:
+            row, col = cell.row, cell.column
+            if (row, col) in covered:
                 continue
-            if cell.column not in widths:
-                widths[cell.column] = _col_width(ws, cell.column)
-            if not widths[cell.column]:                          # a hidden column
+            if col not in widths:
+                widths[col] = _col_width(ws, col)
+            if not widths[col]:                                  # a hidden column
                 continue
-            c = _styled(cell, styles)
-            where = f"{name} {ws.title}!{c.coordinate}"
-            families.setdefault(c.font.name if c.font else None, where)
-            need, wrap = _need(c.value, c.measure)        # as _cell_need(c)
-            width = (_span_width(ws, c, first) if (c.row, c.column) in first
-                     else widths[c.column])
-            if _is_number(c.value):
+            font, alignment, measure = style(cell)
+            value = cell.value
+            family = font.name if font else None
+            if family not in families:
+                families[family] = f"{name} {ws.title}!{cell.coordinate}"
+            need, wrap = _need(value, measure)          # as _cell_need(cell)
+            width = (_span_width(ws, cell, first) if (row, col) in first
+                     else widths[col])
+            if _is_number(value):
                 if need > width:
-                    out.append(f"{where}: number {c.value!r} shown as ### "
-                               f"({need:.1f} > {width:.1f})")
+                    out.append(f"{name} {ws.title}!{cell.coordinate}: number {value!r} "
+                               f"shown as ### ({need:.1f} > {width:.1f})")
                 continue
             if wrap:
-                size = c.font.sz or 11
-                lines = wrapped_lines(c.value, width, bool(c.font.b), size)
-                height = ws.row_dimensions[c.row].height or 15 * size / 11
+                size = font.sz or 11
+                lines = wrapped_lines(value, width, bool(font.b), size)
+                height = ws.row_dimensions[row].height or 15 * size / 11
                 if height < lines * LINE_PT * size / 11 * 0.95:
-                    out.append(f"{where}: {lines} lines in a row {height} pt tall: "
-                               f"{c.value[:40]!r}")
+                    out.append(f"{name} {ws.title}!{cell.coordinate}: {lines} lines in a "
+                               f"row {height} pt tall: {value[:40]!r}")
                 continue
-            right = ws.cell(c.row, (first[(c.row, c.column)].max_col
-                                    if (c.row, c.column) in first else c.column) + 1)
-            room = (_used_width(ws, c.column) if right.value is None and all(
-                d.value is None for d in ws[c.row] if d.column > c.column) else width)
+            right = cells.get((row, (first[(row, col)].max_col if (row, col) in first
+                                     else col) + 1))
+            # nothing on its right in its row (the cell next to it included): it may
+            # spill over the columns up to the sheet's last one
+            room = (_used_width(ws, col) if (right is None or right.value is None)
+                    and last_in_row[row] <= col else width)
             if need > room:
-                out.append(f"{where}: text cut off ({need:.1f} > {room:.1f}): "
-                           f"{c.value[:40]!r}")
+                out.append(f"{name} {ws.title}!{cell.coordinate}: text cut off "
+                           f"({need:.1f} > {room:.1f}): {value[:40]!r}")
         for col, r0, r1 in table_blocks(ws):
-            fmts = {ws.cell(r, col).number_format for r in range(r0, r1 + 1)}
+            fmts = number_formats(cells[(r, col)] for r in range(r0, r1 + 1))
             if len(fmts) > 1:
-                out.append(f"{name} {ws.title}!{ws.cell(r0, col).coordinate}:"
-                           f"{ws.cell(r1, col).coordinate}: formats {sorted(fmts)}")
+                out.append(f"{name} {ws.title}!{cells[(r0, col)].coordinate}:"
+                           f"{cells[(r1, col)].coordinate}: formats {sorted(fmts)}")
     if len(families) > 1:
         out.append(f"{name}: font families {families}")
     return out
