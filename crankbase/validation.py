@@ -153,14 +153,19 @@ def step_argument(value, key: str, span: float, rows_span: float | None = None,
     return float(value)
 
 
-def angles_argument(value, key: str, *, max_abs: float = 1e6, error=SpecError):
+def angles_argument(value, key: str, *, max_abs: float = 1e6, error=SpecError, copy=True):
     """An angle argument of a public function as a 1-D float array.
 
     A scalar becomes one row.  Refused (:class:`SpecError` naming ``key``): complex or
     non-numeric values, more than one dimension, an empty list, non-finite values, and
     magnitudes above ``max_abs`` (where a double no longer resolves a fraction of a
     degree... 1e6° keeps ~1e-10° resolution).  ``error`` is the :class:`SpecError`
-    subclass raised (a package's own, e.g. the engine's).
+    subclass raised (a package's own, e.g. the engine's).  ``copy=False``: a 1-D float
+    array given is returned itself, not a copy (for a caller that only reads it).
+
+    The range is checked by the array's minimum and maximum (two passes, no temporary
+    array: a NaN makes both comparisons false); only a refused array is searched for its
+    first bad item.
     """
     import numpy as np
 
@@ -181,11 +186,13 @@ def angles_argument(value, key: str, *, max_abs: float = 1e6, error=SpecError):
             raise error(K(key, "errors.angles.type", value=shown_value(value))) from None
     if arr.dtype.kind == "b":
         raise error(K(key, "errors.angles.bool"))
-    arr = np.atleast_1d(arr.astype(float))
+    arr = np.atleast_1d(arr.astype(float, copy=copy))
     if arr.ndim != 1:
         raise error(K(key, "errors.angles.shape", shape=str(arr.shape)))
     if arr.size == 0:
         raise error(K(key, "errors.angles.empty"))
+    if arr.min() >= -max_abs and arr.max() <= max_abs:     # all finite and in range
+        return arr
     bad = np.flatnonzero(~np.isfinite(arr) | (np.abs(arr) > max_abs))
     if bad.size:
         i = int(bad[0])

@@ -430,7 +430,7 @@ def analyze(spec, crank_angles_deg=None, *, course_tables=True) -> AnalysisResul
                                  Text("errors.linkage.analysis.no_extremes"))])
     positions = None
     if crank_angles_deg is not None:
-        phi = angles_argument(crank_angles_deg, "crank_angles_deg") * _RAD   # np.radians
+        phi = angles_argument(crank_angles_deg, "crank_angles_deg", copy=False) * _RAD
     elif spec.crank_angles_deg is not None:
         phi = np.radians(np.asarray(spec.crank_angles_deg, dtype=float))
     else:

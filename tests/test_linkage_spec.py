@@ -2,6 +2,8 @@
 ``ValueError``) naming every problem (key path and what is valid); statics (ω = 0) is
 accepted at explicit crank angles only.  Change points and assembly errors:
 test_linkage_mechanisms.py."""
+import math
+
 import numpy as np
 import pytest
 
@@ -217,3 +219,35 @@ def test_spec_file_errors(tmp_path):
         linkage.load_spec(p)
     with pytest.raises(linkage.SpecError, match="does not exist"):
         linkage.load_spec(tmp_path / "missing.toml")
+
+
+@pytest.mark.parametrize("bad, index, more", [
+    ([10.0, 20.0, float("nan")], 2, False), ([float("-inf"), 1.0], 0, False),
+    ([1.0, -1.0000001e6, 2e6], 1, True), ([1e6, -1e6, 1e300], 2, False)])
+def test_crank_angle_argument_range(bad, index, more):
+    """analyze's crank angles are checked by their minimum and maximum (no temporary
+    array); a refused array still names its first bad item (and how many more)."""
+    arr = np.array(bad)
+    with pytest.raises(linkage.SpecError) as err:
+        linkage.analyze(rocker(), crank_angles_deg=arr)
+    (p,) = err.value.problems
+    assert p.key == f"crank_angles_deg[{index}]"
+    assert ("more" in str(p)) is more
+
+
+def test_crank_angle_argument_read_not_copied_nor_changed():
+    """±1e6° (the limit) are accepted; the caller's float array is read in place and left
+    as it was; the rows' φ is np.radians of it, bit for bit."""
+    from crankbase.validation import angles_argument
+
+    deg = np.array([1e6, -1e6, 37.5, -0.0, 359.99])
+    keep = deg.copy()
+    assert angles_argument(deg, "a", copy=False) is deg
+    assert angles_argument(deg, "a") is not deg
+    res = linkage.analyze(rocker(), crank_angles_deg=deg, course_tables=False)
+    assert np.array_equal(deg.view(np.uint64), keep.view(np.uint64))
+    phi = deg * (math.pi / 180.0)                      # np.radians, bit for bit
+    assert np.array_equal(phi.view(np.uint64), np.radians(deg).view(np.uint64))
+    want = phi * (180.0 / math.pi)
+    got = res.kinematics["phi_deg"].to_numpy()
+    assert np.array_equal(got.view(np.uint64), want.view(np.uint64))
