@@ -9,8 +9,6 @@ from crankbase.output import paused_gc
 __all__ = ["summary_rows", "summary_lines", "build_workbook", "column_label"]
 
 
-
-
 def summary_rows(result, lang="en"):
     """(label, value, unit) rows of the summary, in the report language (``"ru"``: the
     Russian textbook symbols; ``"en"``: English, no Cyrillic letter); the same rows and

@@ -122,6 +122,8 @@ class Forker:
 
 @pytest.fixture(scope="module")
 def forker(tmp_path_factory):
+    if not hasattr(os, "fork"):           # Windows: no fork, no SIGKILL
+        pytest.skip("the killed and concurrent runs are forked children (POSIX os.fork)")
     f = Forker(tmp_path_factory.mktemp("warm") / "out")
     yield f
     f.close()
