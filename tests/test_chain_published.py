@@ -616,7 +616,7 @@ def test_shaper_cn_scheme2_other_readings_miss(change):
 # stroke H = 210 mm, CE/CD = 1/2, EF/DE = 1/4, BS2/BC = DS3/DE = 1/2 reproduce all seven
 # printed lengths to their last digit (the synthesis: DE = H, the chord of a 60° swing;
 # l_BC ∓ l_AB = |AC| at the rocker's two limits), and the other readings of the angles miss
-# them by 1 % to 80 % (test_press_cn3_other_readings_miss).  The guide's offset x2 = 200 mm
+# them by 16 % to 84 % (test_press_cn3_other_readings_miss).  The guide's offset x2 = 200 mm
 # is not printed; nothing asserted depends on it (test_press_cn3_stroke_does_not_depend_on_x2).
 #
 # The chain, given the printed lengths, must give back the course's design: the ram's
@@ -691,10 +691,11 @@ def test_press_cn3_lengths_are_the_reports():
 @pytest.mark.parametrize("psi_from_deg", [90.0, 0.0, 180.0])
 def test_press_cn3_other_readings_miss(psi_from_deg):
     """ψ3′, ψ3″ measured from the upward vertical or from the horizontal through D give
-    other crank and coupler lengths: the printed 69.015 / 314.425 mm fix the reading."""
+    other crank and coupler lengths (16 % to 84 % off): the printed 69.015 / 314.425 mm
+    fix the reading."""
     lengths, _ = press_cn3_synthesis(psi_from_deg)
     worst = max(abs(lengths[k] / float(PRESS_CN3_REPORT[k]) - 1.0) for k in ("l_AB_m", "l_BC_m"))
-    assert worst > 1e-2
+    assert worst > 0.1
 
 
 @pytest.fixture(scope="module")
