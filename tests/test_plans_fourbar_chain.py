@@ -10,8 +10,15 @@ plans has the same ends on paper, every force of the polygons the same value, an
 lever the same Fур and Mур, so a wrong sign, factor or swapped angle in either shows.
 (The four-bar's dyad polygon draws R23 and a rocker's R14 in their n and t components,
 the textbook's construction; the chain's draws them whole.)
+
+Then each construction on its own against the analysis columns (not against the other),
+so that a mistake both made would still show: every vector of the velocity and
+acceleration plans, as a complex vector, is the analysis' V or a of its point, V_B − V_A,
+−ω²·AB, iε·AB (and about C for a rocker, about O for a crank with ε ≠ 0) over the scale.
 """
 from __future__ import annotations
+
+import math
 
 import pytest
 
@@ -144,3 +151,125 @@ def test_lever_and_angular_velocities_agree(pair):
             assert q["segment"] == fourbar_name(r["segment"])
             assert q["signed_value"] == pytest.approx(r["signed_value"], rel=1e-9, abs=1e-9)
             assert q["value"] == pytest.approx(r["value"], rel=1e-9, abs=1e-9)
+
+
+# --------------------------------------------------------------------------------------
+# Each construction on its own against the analysis (not against the other one): every
+# drawn vector of a four-bar's velocity and acceleration plans, as a vector (direction and
+# sense, not only its length), is the analysis' quantity over the plan's scale.  A plan
+# turned, mirrored, drawn from the wrong image or with ω for ε fails here, in either
+# construction, even if both made the same mistake.
+
+KHURMI_EPS = {"mechanism": {"kind": "crank-rocker", "name": "khurmi-8-2-eps", "crank": 0.0625,
+                            "coupler": 0.175, "rocker": 0.1125, "ground": 0.2, "assembly": 1,
+                            "omega_rad_s": -10.0, "epsilon_rad_s2": 40.0,
+                            "gravity_m_s2": 0.0},
+              "analysis": {"crank_angles_deg": [60.0, 200.0]}}
+"""R. S. Khurmi & J. K. Gupta, A Textbook of Theory of Machines, 2005, Example 8.2's
+four-bar (the published answers are checked in tests/test_plans_published.py), here with a
+crank accelerating clockwise (ε ≠ 0: aⁿ_AO and aᵗ_AO drawn) at two angles."""
+
+
+def _four_bar_spec(which):
+    if which == "khurmi-eps":
+        return linkage.load_spec(KHURMI_EPS)
+    return linkage.load_spec(example_path(which))
+
+
+def _plans_of(spec, construction):
+    """Four-bar names for both: the chain's through :func:`fourbar_name`."""
+    if construction == "four-bar":
+        return build_plans(linkage.analyze(spec))
+    out = []
+    for pp in build_chain_plans(linkage.analyze(as_chain(spec))):
+        renamed = {}
+        for kind, plan in pp.plans.items():
+            vecs = {fourbar_name(v.name): v for v in plan.vectors}
+            pts = {fourbar_name(k): z for k, z in plan.points.items()}
+            renamed[fourbar_name(kind)] = (plan.scale, vecs, pts)
+        out.append(renamed)
+    return out
+
+
+def _as_dicts(pp):
+    if isinstance(pp, dict):
+        return pp
+    return {k: (p.scale, {v.name: v for v in p.vectors}, p.points) for k, p in pp.plans.items()}
+
+
+@pytest.mark.parametrize("construction", ["four-bar", "chain"])
+@pytest.mark.parametrize("which", ["ratchet.toml", "press.toml", "khurmi-eps"])
+def test_plan_vectors_are_the_analysis_quantities_over_the_scale(which, construction):
+    spec = _four_bar_spec(which)
+    res = linkage.analyze(spec)
+    K = res.kinematics
+    rocker = spec.kind == "crank-rocker"
+    pps = _plans_of(spec, construction)
+    assert len(pps) == len(K)
+    zC = complex(spec.ground * math.cos(spec.ground_angle),
+                 spec.ground * math.sin(spec.ground_angle)) if rocker else None
+    checked = 0
+    for i, pp in enumerate(pps):
+        plans_ = _as_dicts(pp)
+
+        def col(p, what):
+            sx = {"": ("_x_m", "_y_m"), "v": ("_vx_m_s", "_vy_m_s"),
+                  "a": ("_ax_m_s2", "_ay_m_s2")}[what]
+            return complex(K[p + sx[0]].iat[i], K[p + sx[1]].iat[i])
+
+        zA, zB = col("A", ""), col("B", "")
+        w3, e3 = K["omega3_rad_s"].iat[i], K["eps3_rad_s2"].iat[i]
+        for kind, what, pole in (("velocity", "v", "p"), ("acceleration", "a", "pi_")):
+            mu, vecs, pts = plans_[kind]
+            size = max(abs(z) for z in pts.values())
+
+            def seg(name):
+                v = vecs[name]
+                return v.start * mu, v.end * mu
+
+            # every absolute vector from the pole to a point's image: that point's V or a
+            for name in vecs:
+                key = name[len(pole):]
+                if not name.startswith(pole) or key[:1] == "n":     # aⁿ from the pole
+                    continue
+                s, e = seg(name)
+                exact = col(key.upper(), what)
+                assert abs(s) == 0.0, (which, construction, name)
+                assert _close(e, exact, abs(exact), rel=1e-9), (which, construction, i, name,
+                                                                e, exact)
+                assert _close(pts[key] * mu, exact, abs(exact), rel=1e-9), (name, key)
+                checked += 1
+            if kind == "velocity":
+                # the relative vector from a to b: V_B − V_A of the analysis, = iω3·AB
+                s, e = seg("ab")
+                assert _close(s, col("A", "v"), size * mu)
+                assert _close(e - s, col("B", "v") - col("A", "v"), size * mu), (which, i)
+                assert _close(e - s, 1j * w3 * (zB - zA), size * mu)
+                continue
+            # B about A: aⁿ = −ω3²·AB from a (towards A), aᵗ = iε3·AB from its end
+            s, e = seg("a_n3")
+            assert _close(s, col("A", "a"), size * mu)
+            assert _close(e - s, -w3 * w3 * (zB - zA), size * mu), (which, construction, i)
+            s2, e2 = seg("n3_b")
+            assert _close(s2, e, size * mu)
+            assert _close(e2 - s2, 1j * e3 * (zB - zA), size * mu), (which, construction, i)
+            assert _close(e2, col("B", "a"), size * mu)
+            if rocker:        # B about the fixed C: −ω4²·CB from the pole, then iε4·CB
+                w4, e4 = K["omega4_rad_s"].iat[i], K["eps4_rad_s2"].iat[i]
+                s, e = seg("pi_n4")
+                assert abs(s) == 0.0
+                assert _close(e, -w4 * w4 * (zB - zC), size * mu), (which, construction, i)
+                s2, e2 = seg("n4_b")
+                assert _close(s2, e, size * mu)
+                assert _close(e2 - s2, 1j * e4 * (zB - zC), size * mu)
+            if spec.epsilon != 0:   # the crank pin: aⁿ_AO = −ω²·OA, aᵗ_AO = iε·OA
+                s, e = seg("pi_n2")
+                assert _close(e, -spec.omega ** 2 * zA, size * mu)
+                s2, e2 = seg("n2_a")
+                assert _close(s2, e, size * mu)
+                assert _close(e2 - s2, 1j * spec.epsilon * zA, size * mu)
+                assert _close(e2, col("A", "a"), size * mu)
+            else:
+                assert "pi_n2" not in vecs
+    # a, b and each centre of mass or named point, in both plans, at every position
+    assert checked >= len(pps) * 2 * (2 + (which != "khurmi-eps"))
