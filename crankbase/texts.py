@@ -34,8 +34,9 @@ own catalogue spells it («Mкр.ср = {M:.1f} {unit[N·m]}» gives «Mкр.с�
 :class:`Texts` fills the unit fields before anything else, so a text asked without fields
 (a word table formatted later by a plot, a sheet, the web pages) comes with its units
 written and its other fields left for the caller; a test checks that no template spells
-a unit after a number or a field.  The symbols a language writes are its catalogue's
-too (``common.symbol.*``, :meth:`Texts.symbol_text`).
+a unit after a number or a field.  The symbols the textbooks write differently are the
+catalogue's too (``linkage.symbol.*``, ``dynamics.symbol.*``: the table columns), so a
+language chooses its own by filling those keys.
 
 Examples
 --------

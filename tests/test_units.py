@@ -44,7 +44,6 @@ def _schema_units():
 
 def _table_units():
     """{unit: where} of every table of the reports that names a unit."""
-    import dynamics.report as dr
     import engine.report.workbook as ew
     import linkage.report as lr
     from engine.symbols import MASS_INPUTS
@@ -63,8 +62,6 @@ def _table_units():
         add(unit, f"linkage.report._SIMPLE[{col!r}]")
     for suffix, unit in lr._UNIT_SUFFIXES:
         add(unit, f"linkage.report._UNIT_SUFFIXES[{suffix!r}]")
-    for suffix, unit in dr._SUFFIX:
-        add(unit, f"dynamics.report._SUFFIX[{suffix!r}]")
     for key, (_, unit) in MASS_INPUTS.items():
         add(unit, f"engine.symbols.MASS_INPUTS[{key!r}]")
     for name, kind in ew._TR_SHAPE.items():
@@ -301,3 +298,63 @@ def test_a_unit_field_is_the_unit_of_the_templates_language():
     fake = T.Texts("xx", T.texts("ru")._tr, frozenset({"common.unit.N_m"}), en)
     assert fake("plot.train.mean", v=2.0) == en("plot.train.mean", v=2.0)
     assert "N·m" in fake("plot.train.mean", v=2.0)
+
+
+# -- one column-suffix table, the symbols the catalogue's -----------------------------------
+
+
+def test_the_dynamics_column_heads_read_the_one_suffix_table(monkeypatch):
+    """:func:`dynamics.report.column_label` finds a column's unit in
+    :data:`linkage.report.COLUMN_UNITS` (no table of its own): the longest suffix that
+    fits (rad/s² before rad/s before s), the degree of its one-cell head the word; a
+    suffix added there is one it reads."""
+    import linkage.report as lr
+    from dynamics.report import column_label
+
+    assert column_label("eps_rad_s2", "en") == "ε [rad/s²]"
+    assert column_label("omega_rad_s", "ru") == "ω, рад/с"
+    assert column_label("t_s", "ru") == "t, с"
+    assert column_label("phi_rad", "en") == "φ [rad]"
+    assert column_label("alpha_deg_const", "en") == "α [deg] (ω = const)"
+    assert column_label("dJ_red_dphi_kgm2", "ru") == "dJп/dφ, кг·м²"
+    assert column_label("W_J", "en") == "ΔE = ∫(M_d − M_c)dφ [J]"
+    assert column_label("R12_x_N", "zh") == "R12_x [N]"
+    monkeypatch.setitem(lr.COLUMN_UNITS, "kW", "kW")
+    assert column_label("Ne_kW", "ru") == "Ne, кВт"
+
+
+def test_the_symbols_are_the_catalogues(monkeypatch):
+    """The symbols the Russian and the Latin textbooks write differently are catalogue
+    keys (``linkage.symbol.*``, ``dynamics.symbol.*``): each language's own, chosen by
+    filling the keys, not by code; the columns read them."""
+    import dynamics.report as dr
+    from crankbase import texts as texts_module
+    from linkage.report import column_label
+
+    assert column_label("M_drive_Nm", "ru") == ("Mур", "Н·м")
+    assert column_label("M_drive_Nm", "en") == ("Mb", "N·m")
+    assert column_label("position", "ru") == ("№", "")
+    assert column_label("F_res_N", "zh") == ("Fr", "N")
+    assert column_label("Fu3_x_N", "ru") == ("Fи3x", "Н")
+    assert column_label("Mu4_Nm", "en") == ("Mi4", "N·m")
+    assert dr.column_label("M_drive_Nm", "ru") == "Mд, Н·м"
+    assert dr.column_label("M_drive_Nm", "ru", dr._SYMBOL_FORCES) == "Mур, Н·м"
+    assert dr.column_label("M_drive_Nm_const", "en", dr._SYMBOL_FORCES) == \
+        "M_b [N·m] (ω = const)"
+    assert dr.column_label("R_N", "ru") == "Rшш, Н" and dr.column_label("R_N", "en") == "Rcp [N]"
+    assert dr.column_label("M_resist_loads_Nm", "ru").startswith("Mс ")
+    # a language's symbols are its catalogue's: another catalogue, other symbols
+    ru = T.texts("ru")
+    own = {"dynamics.symbol.J_red": "J*", "linkage.symbol.inertia_index": "ι"}
+    words = {k: ru(k) for k in T.keys("ru")}
+    words.update(own)
+    fake = T.Texts("ru", T._AreaTranslations(words), frozenset(words), T.texts("en"))
+    monkeypatch.setattr(texts_module, "texts", lambda lang="ru": fake)
+    assert dr.column_label("J_red_kgm2", "ru") == "J*, кг·м²"
+    assert column_label("Fu3_N", "ru") == ("Fι3", "Н")
+    # every symbol key the code asks is in every offered language
+    asked = set(dr._SYMBOL.values()) | set(dr._SYMBOL_FORCES.values()) | {
+        f"linkage.symbol.{c}" for c in ("position", "M_drive_Nm", "M_res_Nm", "F_res_N",
+                                        "inertia_index")}
+    for lang in T.OFFERED:
+        assert asked <= T.keys(lang), (lang, asked - T.keys(lang))
