@@ -28,6 +28,16 @@ symbol set, :attr:`Texts.symbols`: ``ru`` the Russian textbook's, ``en`` Latin),
 ``common.format.decimal_sign`` (:meth:`Texts.number`) and one ``common.unit.<name>`` per
 unit the tool writes (:meth:`Texts.unit`; the one table of units is :data:`UNITS`).
 
+A template names a unit by that table, never by spelling it: the field ``{unit[N·m]}``
+(the unit's international spelling, a key of :data:`UNITS`) is the unit as the template's
+own catalogue spells it («Mкр.ср = {M:.1f} {unit[N·m]}» gives «Mкр.ср = 12.3 Н·м»).
+:class:`Texts` fills the unit fields before anything else, so a text asked without fields
+(a word table formatted later by a plot, a sheet, the web pages) comes with its units
+written and its other fields left for the caller; a test checks that no template spells
+a unit after a number or a field.  The symbols the textbooks write differently are the
+catalogue's too (``linkage.symbol.*``, ``dynamics.symbol.*``: the table columns), so a
+language chooses its own by filling those keys.
+
 Examples
 --------
 >>> from crankbase.texts import texts
@@ -48,7 +58,7 @@ from pathlib import Path
 
 __all__ = ["Texts", "texts", "area_texts", "read_area", "read_po", "languages", "offered",
            "catalogue_languages", "keys", "CatalogueError", "LOCALE_DIR", "REFERENCE",
-           "OfferedLanguages", "OFFERED", "SYMBOL_SETS", "UNITS", "unit_key"]
+           "OfferedLanguages", "OFFERED", "SYMBOL_SETS", "UNITS", "unit_key", "UNIT_FIELD"]
 
 #: Folder of the catalogues (shipped as package data of ``crankbase``).
 LOCALE_DIR = Path(__file__).resolve().parent / "locale"
@@ -83,6 +93,10 @@ UNITS = {
 }
 
 
+#: A unit field of a template: ``{unit[N·m]}`` (:meth:`Texts.__call__`).
+UNIT_FIELD = re.compile(r"(?<!\{)\{unit\[([^\[\]{}]+)\]\}")
+
+
 def unit_key(si: str) -> str:
     """The catalogue key of a unit of :data:`UNITS` (``"N·m"`` → ``"common.unit.N_m"``),
     for a :class:`~crankbase.errors.Text` rendered later; a unit the table does not name is
@@ -107,6 +121,7 @@ class Texts:
         self._tr = translations
         self._keys = keys
         self._fallback = fallback
+        self._filled: dict = {}         # template → its unit fields written (_units)
 
     def _source(self, key):
         if key in self._keys:
@@ -117,14 +132,27 @@ class Texts:
 
     def __call__(self, key: str, /, **fields) -> str:
         src = self._source(key)
-        template = src._tr.gettext(key)
+        template = src._units(src._tr.gettext(key))
         return template.format(**fields) if fields else template
 
     def n(self, key: str, count, /, **fields) -> str:
         """The plural form of ``key`` for ``count`` (passed to the template as ``n``)."""
         src = self._source(key)
-        template = src._tr.ngettext(key, key, int(count))
+        template = src._units(src._tr.ngettext(key, key, int(count)))
         return template.format(n=count, **fields)
+
+    def _units(self, template: str) -> str:
+        """``template`` with its unit fields (``{unit[N·m]}``, :data:`UNIT_FIELD`) written
+        as this catalogue spells the units (:meth:`unit`), its other fields left as they
+        are; cached by template.  The units are the catalogue's whose template it is (an
+        English text a language lacks keeps its English units)."""
+        if "{unit[" not in template:
+            return template
+        done = self._filled.get(template)
+        if done is None:
+            done = self._filled[template] = UNIT_FIELD.sub(
+                lambda m: self.unit(m.group(1)), template)
+        return done
 
     # -- the notation of this language: which symbols, how units and numbers are spelled.
     # A catalogue says it (common.format.*, common.unit.*); code asks here and never
@@ -397,6 +425,16 @@ class _AreaTranslations:
         return self._words[key]
 
 
+def _unit_words(lang: str) -> dict[str, str]:
+    """The ``common.unit.*`` entries of ``lang``'s ``common.po`` alone (:func:`read_po`):
+    what an area read alone (:func:`area_texts`) needs for its templates' unit fields."""
+    path = LOCALE_DIR / lang / "common.po"
+    if not path.is_file():
+        return {}
+    _, entries = read_po(path)
+    return {k: v for k, v in entries.items() if k.startswith("common.unit.")}
+
+
 @functools.lru_cache(maxsize=None)
 def area_texts(lang: str, area: str) -> Texts:
     """The :class:`Texts` of one area only (:func:`read_area`), cached: read once a process,
@@ -407,6 +445,8 @@ def area_texts(lang: str, area: str) -> Texts:
         raise KeyError(f"no text catalogue for language {lang!r}; there are: "
                        + ", ".join(catalogue_languages()))
     words = read_area(lang, area) if (LOCALE_DIR / lang / f"{area}.po").is_file() else {}
+    if any("{unit[" in text for text in words.values()):
+        words = {**words, **_unit_words(lang)}      # its templates' unit fields
     fallback = None if lang == REFERENCE else area_texts(REFERENCE, area)
     return Texts(lang, _AreaTranslations(words), frozenset(words), fallback)
 
@@ -456,6 +496,8 @@ OFFERED = OfferedLanguages()
 
 
 def fields(template: str) -> set[str]:
-    """The names of a template's ``{fields}`` (for the catalogue checks)."""
+    """The names of a template's ``{fields}`` that its caller fills (for the catalogue
+    checks); its unit fields (``{unit[N·m]}``, :data:`UNIT_FIELD`) are the text layer's,
+    not the caller's, and a language may name a unit where another writes none."""
     return {re.split(r"[.\[]", f)[0] for _, f, _, _ in string.Formatter().parse(template)
-            if f is not None}
+            if f is not None and not (f.startswith("unit[") and f.endswith("]"))}

@@ -67,48 +67,58 @@ def summary_lines(result, name=None, kind=None, driving=None, lang="en"):
     return lines
 
 
-#: Column symbols of the tables: CSV name without its unit → (ru, en).  A column not
-#: listed keeps its CSV symbol (``R12_x``, ``M14``): the same in both languages.
-_SYMBOL = {"phi": ("φ", "φ"), "alpha": ("α", "α"), "omega": ("ω", "ω"), "eps": ("ε", "ε"),
-           "t": ("t", "t"), "J_red": ("Jп", "J_red"), "dJ_red_dphi": ("dJп/dφ", "dJ_red/dφ"),
-           "M_drive": ("Mд", "M_d"), "M_resist": ("Mс", "M_c"),
-           "W": ("ΔT = ∫(Mд − Mс)dφ", "ΔE = ∫(M_d − M_c)dφ"),
-           "E": ("T = Jп ω²/2", "E = J_red ω²/2"), "j": ("j", "j"), "Pj": ("Pj", "Pj"),
-           "P": ("P", "P"), "T": ("T", "T"), "K": ("K", "K"), "M": ("Mкр", "M"),
-           "R": ("Rшш", "Rcp")}
+#: Column symbols of the tables: the CSV name without its unit → its catalogue key
+#: (``dynamics.symbol.<name>``: Jп, Mд, Mс in Russian, J_red, M_d, M_c in English; a
+#: language chooses its own by filling them).  A column not listed keeps its CSV symbol
+#: (``R12_x``, ``M14``): the same in every language.
+_SYMBOL = {name: f"dynamics.symbol.{name}" for name in (
+    "phi", "alpha", "omega", "eps", "t", "J_red", "dJ_red_dphi", "M_drive", "M_resist",
+    "W", "E", "j", "Pj", "P", "T", "K", "M", "R")}
 #: Columns named by a symbol of :data:`_SYMBOL` in words (``dynamics.column.*``): "Mс от
 #: нагрузок", "M_c of the loads".
 _WORDED = {"M_resist_loads": ("M_resist", "dynamics.column.of_loads"),
            "M_resist_weights": ("M_resist", "dynamics.column.of_weights")}
-#: The linkage's forces sheet: its M_drive is the balancing moment Mур of the core.
-_SYMBOL_FORCES = {"M_drive": ("Mур", "M_b")}
-#: Unit suffixes of the CSV names → the SI unit (international spelling, spelled in the
-#: report's language by :meth:`crankbase.texts.Texts.unit`); longest first.
-_SUFFIX = (("_rad_s2", "rad/s²"), ("_rad_s", "rad/s"), ("_m_s2", "m/s²"),
-           ("_kgm2", "kg·m²"), ("_deg", "deg"), ("_rad", "rad"), ("_Nm", "N·m"), ("_N", "N"),
-           ("_J", "J"), ("_s", "s"))
+#: The linkage's forces sheet: its M_drive is the balancing moment Mур (M_b) of the core.
+_SYMBOL_FORCES = {"M_drive": "dynamics.symbol.M_balancing"}
+
+
+def _unit_suffix(base: str):
+    """``(name, unit)`` of a CSV column name without ``_const``: its longest unit suffix of
+    :data:`linkage.report.COLUMN_UNITS` (the one column-suffix table) taken off, the unit
+    a key of :data:`crankbase.texts.UNITS`; ``(base, None)`` without one.  The degree of a
+    one-cell header ``φ [deg]`` is the table's ``"deg"`` (a word in English, the sign in
+    Russian and Chinese), where the linkage's separate unit cell writes "°"."""
+    from linkage.report import COLUMN_UNITS
+
+    for suffix in sorted(COLUMN_UNITS, key=len, reverse=True):
+        if base.endswith("_" + suffix):
+            si = COLUMN_UNITS[suffix]
+            return base[:-len(suffix) - 1], "deg" if si == "°" else si
+    return base, None
 
 
 def column_label(column: str, lang="en", symbols=None) -> str:
     """The header of a table column in the report language: ``omega_rad_s`` →
     ``ω, рад/с`` (ru) or ``ω [rad/s]`` (en); a ``_const`` column is the same quantity at
-    ω = const.  ``symbols`` overrides :data:`_SYMBOL` entries."""
+    ω = const.  ``symbols`` overrides :data:`_SYMBOL` entries (a catalogue key, or a
+    ``(ru, en)`` pair chosen by :meth:`crankbase.texts.Texts.symbol`)."""
     from crankbase.texts import texts
 
     t = texts(lang)
     const = column.endswith("_const")
-    base = column[:-len("_const")] if const else column
-    unit = None
-    for suffix, si in _SUFFIX:
-        if base.endswith(suffix):
-            base, unit = base[:-len(suffix)], t.unit(si)
-            break
+    base, si = _unit_suffix(column[:-len("_const")] if const else column)
+    unit = None if si is None else t.unit(si)
     table = {**_SYMBOL, **(symbols or {})}
+
+    def symbol(name):
+        given = table[name]
+        return t.symbol(*given) if isinstance(given, tuple) else t(given)
+
     if base in _WORDED:
         of, key = _WORDED[base]
-        sym = t(key, symbol=t.symbol(*table[of]))
+        sym = t(key, symbol=symbol(of))
     else:
-        sym = t.symbol(*table[base]) if base in table else base
+        sym = symbol(base) if base in table else base
     text = sym if unit is None else t("common.format.quantity_unit", symbol=sym, unit=unit)
     return text + (" (ω = const)" if const else "")
 

@@ -37,7 +37,8 @@ def chain_column_label(col: str, lang: str = "en"):
 
     if col in ("position", "phi_deg", "M_drive_Nm", "F_res_N", "M_res_Nm"):
         return column_label(col, lang)
-    m = re.fullmatch(r"(.+)_(" + "|".join(COLUMN_UNITS) + ")", col)
+    # the longest unit suffix that fits: the shortest name before it
+    m = re.fullmatch(r"(.+?)_(" + "|".join(map(re.escape, COLUMN_UNITS)) + ")", col)
     if not m:
         return col, ""
     body, unit = m.groups()

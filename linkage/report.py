@@ -18,7 +18,9 @@ aB, aBAⁿ, aBAᵗ, xE …) and of the reactions (R12, R23n, R23t, R14n, N14, M1
 They differ only where the Russian textbook (Artobolevsky; seed 000) uses Cyrillic
 indices; the English set is the one the project's other English outputs use (the plots
 of :mod:`linkage.plots` and :mod:`dynamics.plots`: M_b; the plan labels of
-:mod:`plans.model`: Fb, Mr, Fr, Fi₃, Mi₃):
+:mod:`plans.model`: Fb, Mr, Fr, Fi₃, Mi₃).  The symbols that differ are the catalogue's
+(``linkage.symbol.<column>`` and the inertia index ``linkage.symbol.inertia_index`` of
+``linkage.po``), so a language chooses its own by filling those keys:
 
 =====================  ============  ==========  =================================
 CSV column             ru            en          quantity
@@ -56,26 +58,28 @@ __all__ = ["column_label", "unit_text", "COLUMN_UNITS", "kind_text", "warning_te
 #: Report languages.
 LANGS = OFFERED              # every offered language (crankbase.texts.languages)
 
-#: The unit suffixes of the linkage's and the chain's CSV column names → the unit
-#: (international spelling, a key of :data:`crankbase.texts.UNITS`, spelled in the
-#: report's language by :meth:`crankbase.texts.Texts.unit`): ``v_E_m_s`` is in m/s.
-COLUMN_UNITS = {"m": "m", "m_s": "m/s", "m_s2": "m/s²", "deg": "°", "rad_s": "rad/s",
-                "rad_s2": "rad/s²", "N": "N", "Nm": "N·m"}
+#: The unit suffixes of the CSV column names (the linkage's, the chain's, the dynamics')
+#: → the unit (international spelling, a key of :data:`crankbase.texts.UNITS`, spelled in
+#: the report's language by :meth:`crankbase.texts.Texts.unit`): ``v_E_m_s`` is in m/s.
+#: The one column-suffix table; a name ends with one of them after ``_``, the longest
+#: that fits (``omega_rad_s`` is in rad/s, not in s).
+COLUMN_UNITS = {"m": "m", "m_s": "m/s", "m_s2": "m/s²", "deg": "°", "rad": "rad",
+                "rad_s": "rad/s", "rad_s2": "rad/s²", "N": "N", "Nm": "N·m",
+                "kgm2": "kg·m²", "J": "J", "s": "s"}
 _SIMPLE = {
-    "position": ("No.", ""), "phi_deg": ("φ", "°"), "theta3_deg": ("θ3", "°"),
+    "position": (None, ""), "phi_deg": ("φ", "°"), "theta3_deg": ("θ3", "°"),
     "theta4_deg": ("θ4", "°"), "omega3_rad_s": ("ω3", "rad/s"), "omega4_rad_s": ("ω4", "rad/s"),
     "eps3_rad_s2": ("ε3", "rad/s²"), "eps4_rad_s2": ("ε4", "rad/s²"), "s4_m": ("s4", "m"),
     "v4_m_s": ("v4", "m/s"), "a4_m_s2": ("a4", "m/s²"), "mu_deg": ("μ", "°"),
-    "M_drive_Nm": ("Mb", "N·m"), "M_res_Nm": ("Mr", "N·m"), "F_res_N": ("Fr", "N"),
+    "M_drive_Nm": (None, "N·m"), "M_res_Nm": (None, "N·m"), "F_res_N": (None, "N"),
     "M14_Nm": ("M14", "N·m"), "N14_N": ("N14", "N"), "label": ("", ""),
     "R23_n_N": ("R23n", "N"), "R23_t_N": ("R23t", "N"), "R14_n_N": ("R14n", "N"),
     "R14_t_N": ("R14t", "N"),
 }
-#: The Russian textbook's symbols where they differ from the English ones (module doc).
-_SIMPLE_RU = {"position": "№", "M_drive_Nm": "Mур", "M_res_Nm": "Mпс", "F_res_N": "Fпс"}
-#: Index letter of the inertia force and moment in the Russian textbook's symbols (Fи3, Mи3;
-#: Fi3, Mi3 in the Latin ones).
-_INERTIA_RU = "и"
+#: A symbol ``None`` of :data:`_SIMPLE` is the catalogue's ``linkage.symbol.<column>``
+#: (the textbooks differ: module doc); the index letter of the inertia force and moment
+#: (Fи3, Mи3 in the Russian textbook's symbols, Fi3, Mi3 in the Latin ones) is
+#: ``linkage.symbol.inertia_index``.
 
 
 def unit_text(unit: str, lang: str = "en") -> str:
@@ -94,22 +98,17 @@ def column_label(col: str, lang: str = "en"):
     from crankbase.texts import texts
 
     _check_lang(lang)
-    sym, unit = _column_label_en(col)
-    return texts(lang).symbol(_symbol_ru(col, sym), sym), unit_text(unit, lang)
+    sym, unit = _column_symbol(col, texts(lang))
+    return sym, unit_text(unit, lang)
 
 
-def _symbol_ru(col, sym):
-    """The Russian textbook's symbol of a column whose Latin symbol is ``sym``."""
-    sym = _SIMPLE_RU.get(col, sym)
-    m = re.fullmatch(r"(F|M)i(\d.*)", sym)
-    if m and re.fullmatch(r"(Fu\d(_[xy])?_N|Mu\d_Nm)", col):
-        sym = f"{m.group(1)}{_INERTIA_RU}{m.group(2)}"
-    return sym
-
-
-def _column_label_en(col):
+def _column_symbol(col, t):
+    """``(symbol, unit)`` of a column: the symbol in the language of ``t`` (its
+    catalogue's ``linkage.symbol.*`` where the textbooks differ), the unit a key of
+    :data:`crankbase.texts.UNITS`."""
     if col in _SIMPLE:
-        return _SIMPLE[col]
+        sym, unit = _SIMPLE[col]
+        return (t(f"linkage.symbol.{col}") if sym is None else sym), unit
     m = re.fullmatch(r"R(\d\d)_([xy])_N", col)
     if m:
         return f"R{m.group(1)}{m.group(2)}", "N"
@@ -118,10 +117,10 @@ def _column_label_en(col):
         return m.group(1), "N"
     m = re.fullmatch(r"Fu(\d)(_[xy])?_N", col)
     if m:
-        return f"Fi{m.group(1)}{(m.group(2) or '')[1:]}", "N"
+        return f"F{t('linkage.symbol.inertia_index')}{m.group(1)}{(m.group(2) or '')[1:]}", "N"
     m = re.fullmatch(r"Mu(\d)_Nm", col)
     if m:
-        return f"Mi{m.group(1)}", "N·m"
+        return f"M{t('linkage.symbol.inertia_index')}{m.group(1)}", "N·m"
     m = re.fullmatch(r"v_(\w\w)_m_s", col)
     if m:
         return f"V{m.group(1)}", "m/s"

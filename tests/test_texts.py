@@ -291,7 +291,8 @@ def test_each_catalogue_names_its_notation():
 def test_a_third_language_writes_the_notation_its_catalogue_names(tmp_path, monkeypatch):
     """A new language whose catalogue names the Russian textbook's symbols, a decimal comma
     and Cyrillic units gets them in the engine's symbols, the plans' numbers and the
-    dynamics' headers, with no code changed (its words fall back to English)."""
+    dynamics' headers (whose symbols are its ``dynamics.symbol.*`` keys: those it fills),
+    with no code changed (its words fall back to English)."""
     from dynamics.report import column_label
     from engine.symbols import mass_inputs, sym
     from plans.layout import fmt
@@ -308,6 +309,9 @@ def test_a_third_language_writes_the_notation_its_catalogue_names(tmp_path, monk
         'msgid ""\nmsgstr ""\n"Language: xx\\n"\n"Plural-Forms: nplurals=1; plural=0;\\n"\n'
         + "".join(f'\nmsgid "{k}"\nmsgstr "{v}"\n' for k, v in entries.items()),
         encoding="utf-8")
+    (tmp_path / "xx" / "dynamics.po").write_text(
+        'msgid ""\nmsgstr ""\n"Language: xx\\n"\n"Plural-Forms: nplurals=1; plural=0;\\n"\n'
+        '\nmsgid "dynamics.symbol.M"\nmsgstr "Mкр"\n', encoding="utf-8")
     monkeypatch.setattr(T, "LOCALE_DIR", tmp_path)
     for f in (T._catalogue, T.texts, T.languages):
         f.cache_clear()
@@ -316,6 +320,7 @@ def test_a_third_language_writes_the_notation_its_catalogue_names(tmp_path, monk
         assert fmt(0.125, "xx") == "0,125" and fmt(0.125, "en") == "0.125"
         assert column_label("M_Nm", "xx") == "Mкр / Нм"
         assert column_label("t_s", "xx") == "t / s"                   # English fallback
+        assert column_label("R_N", "xx") == "Rcp / N"       # a symbol it does not fill
         assert mass_inputs({"rod_kg": 0.7}, "xx") == "mш = 0.7 кг"
     finally:
         monkeypatch.undo()

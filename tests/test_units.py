@@ -44,7 +44,6 @@ def _schema_units():
 
 def _table_units():
     """{unit: where} of every table of the reports that names a unit."""
-    import dynamics.report as dr
     import engine.report.workbook as ew
     import linkage.report as lr
     from engine.symbols import MASS_INPUTS
@@ -63,8 +62,6 @@ def _table_units():
         add(unit, f"linkage.report._SIMPLE[{col!r}]")
     for suffix, unit in lr._UNIT_SUFFIXES:
         add(unit, f"linkage.report._UNIT_SUFFIXES[{suffix!r}]")
-    for suffix, unit in dr._SUFFIX:
-        add(unit, f"dynamics.report._SUFFIX[{suffix!r}]")
     for key, (_, unit) in MASS_INPUTS.items():
         add(unit, f"engine.symbols.MASS_INPUTS[{key!r}]")
     for name, kind in ew._TR_SHAPE.items():
@@ -184,3 +181,180 @@ def test_the_templates_unit_cells_are_the_builders_tables(lang):
     for i, (key, _, unit, _) in enumerate(B.SUMMARY_VALUES, start=r0 + 1):
         assert (cell(summary, i, 1), cell(summary, i, 5)) == (key, t.unit(unit))
     wb.close()
+
+
+# -- the templates name their units by the table: {unit[N·m]} ----------------------------
+
+#: What may follow a unit's spelling: not a letter, digit or a unit's own continuation
+#: (m → m/s, кг → кг·м², N → N*m of the English terminal's ASCII units, % → %% argparse's
+#: escaped percent in a help text).
+_UNIT_END = r"(?![\w²³⁻¹·/*^%])"
+#: Where a unit spelled after a field or a number is none: (language, key) → the text
+#: at that place.  A new entry needs its reason.
+_NOT_UNITS = {
+    ("en", "linkage.key.mass_kg"): "{link} m{n}",                 # m: the mass's symbol
+    ("ru", "torsion.col.swing_deg_of"): "{mass} с колебанием",    # с: «with»
+}
+
+
+def _spelled_units(template: str, lang: str):
+    """``[(unit, text)]``: each unit of :data:`~crankbase.texts.UNITS`, as ``lang`` spells
+    it, that ``template`` writes after a ``{field}`` or a number (not one of an
+    identifier, ``λ1``, ``J_kgm2``) outside a unit field: where it is a unit.  A field's
+    format spec (``{x:.1%}``, ``{x:.3g}``) is no text; a unit inside a word (the «м» of
+    «момент», the "s" of "steps"), a symbol before the number (N, J) are not after one."""
+    t = T.texts(lang)
+    spell = sorted({t.unit(si) for si in T.UNITS if si != "-"}, key=len, reverse=True)
+    # every field, unit fields included, one mark; {{ }} are literal braces
+    masked = re.sub(r"\{\{|\}\}|\{[^{}]*\}",
+                    lambda m: m.group(0) if m.group(0) in ("{{", "}}") else "\x01", template)
+    after = "(?:\x01|(?<![\\w.,])\\d+(?:[.,]\\d+)?)[\\])]?[ \u00a0\u202f]?"
+    found = re.finditer(after + "(" + "|".join(map(re.escape, spell)) + ")" + _UNIT_END,
+                        masked)
+    return [(m.group(1), masked[max(0, m.start() - 12):m.end() + 12].replace("\x01", "{…}"))
+            for m in found]
+
+
+def test_the_unit_check_sees_a_unit_where_it_is_one():
+    """The check itself: a unit after a number or a field is found, in every spelling;
+    a unit field, a format spec, a word, a symbol and an identifier are not."""
+    assert [u for u, _ in _spelled_units("Mкр.ср = {M:.1f} Н·м", "ru")] == ["Н·м"]
+    assert [u for u, _ in _spelled_units("{p:.3f}МПа, {a:g}°, 2 с.", "ru")] == [
+        "МПа", "°", "с"]
+    assert [u for u, _ in _spelled_units("at {a} deg, {n} rpm, 100-150 mm", "en")] == [
+        "deg", "rpm", "mm"]
+    assert [u for u, _ in _spelled_units("{n} r/min，{x} %", "zh")] == ["r/min", "%"]
+    assert [u for u, _ in _spelled_units("[{a}, {b}] mm; ({x}) kg", "en")] == ["mm", "kg"]
+    for fine in ("Mкр.ср = {M:.1f} {unit[N·m]}", "{x:.1%} of it", "{x:.3g}", "{n} steps",
+                 "момент {M} в точке", "N = {N}", "J_kgm2 с speed_ratio", "λ1 с шагом",
+                 "M {x} N*m", "(default: 0.2 %% of it)", "φ, °", "{x:.0f}{unit[°]}"):
+        assert _spelled_units(fine, "ru") == [] and _spelled_units(fine, "en") == [], fine
+
+
+@pytest.mark.parametrize("lang", T.catalogue_languages())
+def test_no_template_spells_a_unit_that_the_table_names(lang):
+    """Every template of every catalogue names a unit after a number or a field by a unit
+    field (``{unit[N·m]}``), so that a unit is spelled once per language
+    (``common.unit.*``); only :data:`_NOT_UNITS` are words or symbols there."""
+    bad = []
+    for path in sorted((T.LOCALE_DIR / lang).glob("*.po")):
+        with path.open("rb") as fh:
+            for m in read_po(fh):
+                if not m.id or not m.string:
+                    continue
+                key = m.id[0] if isinstance(m.id, (tuple, list)) else m.id
+                forms = m.string if isinstance(m.string, (tuple, list)) else (m.string,)
+                for form in forms:
+                    for unit, where in _spelled_units(form, lang):
+                        if (lang, key) in _NOT_UNITS and _NOT_UNITS[lang, key] in form:
+                            continue
+                        bad.append(f"{key}: {unit!r} in …{where}…")
+    assert not bad, f"{lang}: write these units as {{unit[<SI>]}}:\n" + "\n".join(bad)
+
+
+@pytest.mark.parametrize("lang", T.catalogue_languages())
+def test_every_unit_field_names_a_unit_of_the_table(lang):
+    """A unit field names a key of :data:`~crankbase.texts.UNITS` (else the text would be
+    a KeyError when shown); no unit spelling holds a brace (it is written into a template
+    still to be formatted); the catalogues use the fields (not a check of nothing)."""
+    named = set()
+    for path in sorted((T.LOCALE_DIR / lang).glob("*.po")):
+        named |= set(T.UNIT_FIELD.findall(path.read_text(encoding="utf-8")))
+    assert {"N·m", "MPa", "°", "rpm", "%"} <= named
+    assert named <= set(T.UNITS), named - set(T.UNITS)
+    t = T.texts(lang)
+    assert not [si for si in T.UNITS if set("{}") & set(t.unit(si))]
+
+
+def test_a_unit_field_is_the_unit_of_the_templates_language():
+    """``{unit[…]}`` is written in the catalogue's spelling wherever a text is made: a call
+    with fields, a text asked without fields (a plot's word table formatted later), a
+    plural entry, a :class:`~crankbase.errors.Text` rendered later, the help read alone
+    (``area_texts``), and an English text a language lacks (English units)."""
+    from crankbase.errors import Text
+    from crankbase.plot_texts import plot_words
+
+    ru, en, zh = T.texts("ru"), T.texts("en"), T.texts("zh")
+    assert ru("engine.summary.M_mean", M=12.345) == "  Mкр.ср                  12.35 Н·м  (один цилиндр)"
+    assert en("torsion.summary.torque", M=1.5, section=2, speed=3000).count("N·m") == 1
+    assert zh("torsion.summary.worst", speed=3000, mode=1, order=4.5, kind="-",
+              beta=0.1).count("r/min") == 1
+    # without fields: the unit written, the other fields left to the caller
+    words = plot_words("ru", "train")
+    assert words["mean"] == ru("plot.train.mean").replace("{unit[", "!") \
+        and "Н·м" in words["mean"] and "{unit[" not in words["mean"]
+    assert words["mean"].format(v=1.0).endswith("Н·м")
+    # a plural entry (engine.summary.balance has three Russian forms)
+    for n in (1, 3, 5):
+        line = ru.n("engine.summary.balance", n, F=1.0, M=2.0, unbalanced="-")
+        assert "Н·м" in line and "{" not in line, line
+    # rendered later, in each language
+    text = Text("errors.engine.bearings.loads_at_mm", {"value": 12.5, "value2": 0, "value3": 9})
+    assert text.render("ru").count("мм") == text.render("en").count("mm") >= 1
+    # the command line's help, read alone with its units
+    help_ru = T.area_texts("ru", "cli")("cli.linkage.opt.mu_v")
+    assert "100–150 мм" in help_ru and "{unit[" not in help_ru
+    # a key the language lacks: the English text with English units
+    fake = T.Texts("xx", T.texts("ru")._tr, frozenset({"common.unit.N_m"}), en)
+    assert fake("plot.train.mean", v=2.0) == en("plot.train.mean", v=2.0)
+    assert "N·m" in fake("plot.train.mean", v=2.0)
+
+
+# -- one column-suffix table, the symbols the catalogue's -----------------------------------
+
+
+def test_the_dynamics_column_heads_read_the_one_suffix_table(monkeypatch):
+    """:func:`dynamics.report.column_label` finds a column's unit in
+    :data:`linkage.report.COLUMN_UNITS` (no table of its own): the longest suffix that
+    fits (rad/s² before rad/s before s), the degree of its one-cell head the word; a
+    suffix added there is one it reads."""
+    import linkage.report as lr
+    from dynamics.report import column_label
+
+    assert column_label("eps_rad_s2", "en") == "ε [rad/s²]"
+    assert column_label("omega_rad_s", "ru") == "ω, рад/с"
+    assert column_label("t_s", "ru") == "t, с"
+    assert column_label("phi_rad", "en") == "φ [rad]"
+    assert column_label("alpha_deg_const", "en") == "α [deg] (ω = const)"
+    assert column_label("dJ_red_dphi_kgm2", "ru") == "dJп/dφ, кг·м²"
+    assert column_label("W_J", "en") == "ΔE = ∫(M_d − M_c)dφ [J]"
+    assert column_label("R12_x_N", "zh") == "R12_x [N]"
+    monkeypatch.setitem(lr.COLUMN_UNITS, "kW", "kW")
+    assert column_label("Ne_kW", "ru") == "Ne, кВт"
+
+
+def test_the_symbols_are_the_catalogues(monkeypatch):
+    """The symbols the Russian and the Latin textbooks write differently are catalogue
+    keys (``linkage.symbol.*``, ``dynamics.symbol.*``): each language's own, chosen by
+    filling the keys, not by code; the columns read them."""
+    import dynamics.report as dr
+    from crankbase import texts as texts_module
+    from linkage.report import column_label
+
+    assert column_label("M_drive_Nm", "ru") == ("Mур", "Н·м")
+    assert column_label("M_drive_Nm", "en") == ("Mb", "N·m")
+    assert column_label("position", "ru") == ("№", "")
+    assert column_label("F_res_N", "zh") == ("Fr", "N")
+    assert column_label("Fu3_x_N", "ru") == ("Fи3x", "Н")
+    assert column_label("Mu4_Nm", "en") == ("Mi4", "N·m")
+    assert dr.column_label("M_drive_Nm", "ru") == "Mд, Н·м"
+    assert dr.column_label("M_drive_Nm", "ru", dr._SYMBOL_FORCES) == "Mур, Н·м"
+    assert dr.column_label("M_drive_Nm_const", "en", dr._SYMBOL_FORCES) == \
+        "M_b [N·m] (ω = const)"
+    assert dr.column_label("R_N", "ru") == "Rшш, Н" and dr.column_label("R_N", "en") == "Rcp [N]"
+    assert dr.column_label("M_resist_loads_Nm", "ru").startswith("Mс ")
+    # a language's symbols are its catalogue's: another catalogue, other symbols
+    ru = T.texts("ru")
+    own = {"dynamics.symbol.J_red": "J*", "linkage.symbol.inertia_index": "ι"}
+    words = {k: ru(k) for k in T.keys("ru")}
+    words.update(own)
+    fake = T.Texts("ru", T._AreaTranslations(words), frozenset(words), T.texts("en"))
+    monkeypatch.setattr(texts_module, "texts", lambda lang="ru": fake)
+    assert dr.column_label("J_red_kgm2", "ru") == "J*, кг·м²"
+    assert column_label("Fu3_N", "ru") == ("Fι3", "Н")
+    # every symbol key the code asks is in every offered language
+    asked = set(dr._SYMBOL.values()) | set(dr._SYMBOL_FORCES.values()) | {
+        f"linkage.symbol.{c}" for c in ("position", "M_drive_Nm", "M_res_Nm", "F_res_N",
+                                        "inertia_index")}
+    for lang in T.OFFERED:
+        assert asked <= T.keys(lang), (lang, asked - T.keys(lang))
