@@ -371,7 +371,8 @@ def test_the_committed_mo_files_are_what_the_po_files_compile_to():
 
 
 def test_the_compiler_is_deterministic_and_writes_no_date_nor_version(tmp_path):
-    """The same .po gives the same bytes (twice, and from a copy elsewhere); the header
+    """The same .po gives the same bytes (twice, from a copy elsewhere, from a copy with
+    Windows line endings, as a checkout with core.autocrlf has it); the header
     holds the .po's Language and Plural-Forms and the MIME lines only: not the compile
     time Babel writes for a .po without POT-Creation-Date, nor Babel's version."""
     import gettext
@@ -382,6 +383,8 @@ def test_the_compiler_is_deterministic_and_writes_no_date_nor_version(tmp_path):
     (tmp_path / "ru").mkdir()
     (tmp_path / "ru" / "common.po").write_bytes(po.read_bytes())
     first = tool.mo_bytes(tool.read_catalogue(po))
+    assert first == tool.mo_bytes(tool.read_catalogue(tmp_path / "ru" / "common.po"))
+    (tmp_path / "ru" / "common.po").write_bytes(po.read_bytes().replace(b"\n", b"\r\n"))
     assert first == tool.mo_bytes(tool.read_catalogue(tmp_path / "ru" / "common.po"))
     assert first == T.mo_path("ru", "common").read_bytes()
     info = gettext.GNUTranslations(io.BytesIO(first)).info()
@@ -552,6 +555,15 @@ def test_the_compiled_po_syntax_reads_as_babel_reads_it(tmp_path, monkeypatch):
      r"xx/common.po:1: 'common.a': msgstr\[1\] missing or empty; the header says nplurals=2"),
     ({"common": 'msgid "common.a"\nmsgid_plural "common.a"\nmsgstr[0] "1"\nmsgstr[2] "3"\n'},
      r"xx/common.po:1: msg has more translations than num_plurals"),
+    ({"common": 'msgid "common.a"\nmsgstr[0] "1"\n'},
+     r"xx/common.po:2: a singular entry has one msgstr"),
+    ({"common": 'msgid "common.a"\nmsgid_plural "common.a"\nmsgstr "1"\n'},
+     r"xx/common.po:3: a plural entry has msgstr\[0\], msgstr\[1\]"),
+    ({"common": 'msgstr "1"\n'}, r"xx/common.po:1: msgstr without msgid"),
+    ({"common": 'msgid "common.a"\nmsgstr "1"\nmsgstr "2"\n'},
+     r"xx/common.po:3: msgstr without msgid, or twice"),
+    ({"common": 'msgid "common.a"\n\nmsgid "common.b"\nmsgstr "1"\n'},
+     r"xx/common.po:1: missing msgstr for msgid 'common.a'"),
     ({"common": 'msgctxt "menu"\nmsgid "common.a"\nmsgstr "1"\n'}, r"xx/common.po:2: msgctxt"),
     ({"common": 'msgid ""\nmsgstr "Plural-Forms: nplurals=1; plural=0;\\n"\n',
       "engine": 'msgid ""\nmsgstr "Plural-Forms: nplurals=2; plural=(n != 1);\\n"\n'},

@@ -56,8 +56,39 @@ HEADER = ("Language", "Plural-Forms", "MIME-Version", "Content-Type",
 COMMAND = "python tools/compile_catalogues.py"
 
 # one .po line that is not a comment: a keyword with one quoted string, or a quoted string
-_LINE = re.compile(r'(?:(?:msgctxt|msgid|msgid_plural|msgstr(?:\[\d+\])?)[ \t]+)?'
+_LINE = re.compile(r'(?:(msgctxt|msgid|msgid_plural|msgstr(?:\[\d+\])?)[ \t]+)?'
                    r'"(?:[^"\\]|\\.)*"')
+
+
+def _check_lines(text: str, where: str) -> None:
+    """What Babel's parser reads silently and the old reader refused: every line not a
+    comment is one quoted string, alone or after a keyword; ``msgstr`` follows a
+    ``msgid`` (once, in a singular entry), ``msgstr[i]`` a ``msgid_plural``."""
+    state = None                 # None, "msgid" (awaiting msgstr), "plural", "done"
+    for lineno, raw in enumerate(text.splitlines(), 1):
+        line = raw.strip()
+        if not line or line.startswith("#"):
+            continue
+        m = _LINE.fullmatch(line)
+        if m is None:
+            raise CatalogueError(f"{where}:{lineno}: cannot read the line {raw!r}")
+        keyword = m.group(1) or ""
+        if keyword == "msgid":
+            state = "msgid"
+        elif keyword == "msgid_plural":
+            if state != "msgid":
+                raise CatalogueError(f"{where}:{lineno}: msgid_plural without its msgid")
+            state = "plural"
+        elif keyword == "msgstr":
+            if state != "msgid":
+                raise CatalogueError(
+                    f"{where}:{lineno}: " + ("a plural entry has msgstr[0], msgstr[1] …"
+                                             if state == "plural" else
+                                             "msgstr without msgid, or twice"))
+            state = "done"
+        elif keyword.startswith("msgstr[") and state != "plural":
+            raise CatalogueError(f"{where}:{lineno}: a singular entry has one msgstr "
+                                 "(msgstr[i] follows a msgid_plural)")
 
 
 class _Catalogue(Catalog):
@@ -95,10 +126,7 @@ def read_catalogue(path: Path) -> Catalog:
     """One ``.po`` file read by Babel and checked (see the module's docstring)."""
     where = _where(path)
     data = path.read_bytes()
-    for lineno, raw in enumerate(data.decode("utf-8-sig").splitlines(), 1):
-        line = raw.strip()
-        if line and not line.startswith("#") and not _LINE.fullmatch(line):
-            raise CatalogueError(f"{where}:{lineno}: cannot read the line {raw!r}")
+    _check_lines(data.decode("utf-8-sig"), where)
     catalogue = _Catalogue(domain=path.stem, charset="utf-8")
     catalogue.where = where
     try:
