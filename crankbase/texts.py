@@ -11,18 +11,24 @@ a translator controls word order.
 
 Plural forms are gettext's: an entry with ``msgid_plural`` has one ``msgstr[i]`` per form
 of its language, chosen by the ``Plural-Forms`` rule in the catalogue's header (Russian has
-three: «1 график», «3 графика», «22 графика», «5 графиков»).  The catalogues are read with
-the standard library (:func:`read_po`: a few milliseconds a language, where Babel's
-``read_po`` and ``write_mo`` took ~0.1 s) and looked up through its
-:class:`gettext.GNUTranslations`, the plural rule compiled by :func:`gettext.c2py`; only
-the language asked and the reference are read (:func:`offered`), every catalogue only when
-the list of offered languages is asked (:func:`languages`).  A test checks the reading
-against Babel's of every catalogue.
+three: «1 график», «3 графика», «22 графика», «5 графиков»).
+
+At run time the catalogues are read compiled, by the standard library alone: each
+``<lang>/<area>.po`` has its ``<lang>/LC_MESSAGES/<area>.mo`` (the layout
+:func:`gettext.translation` looks in, domain = area), read by
+:class:`gettext.GNUTranslations` (:func:`read_mo`), which also compiles the plural rule
+of the ``.mo`` header; the areas of a language are merged into one table (a key in two
+areas is a :class:`CatalogueError` naming both).  Only the language asked and the
+reference are read (:func:`offered`), every catalogue only when the list of offered
+languages is asked (:func:`languages`).  The ``.mo`` files are made from the ``.po``
+files by the developers' tool ``python tools/compile_catalogues.py`` (Babel's
+``read_po`` and ``write_mo``; deterministic: the same ``.po``, the same bytes) and
+committed with them; a test compiles every ``.po`` and fails on a ``.mo`` that differs.
 
 Adding a language is filling a catalogue, not changing code: copy ``locale/en`` to
 ``locale/<lang>``, set the header's ``Language`` and ``Plural-Forms``, translate every
-``msgstr``; the language is offered (:func:`languages`) once its catalogue is complete.
-The catalogue also says the language's notation, which the code asks through
+``msgstr``, compile (``python tools/compile_catalogues.py``); the language is offered
+(:func:`languages`) once its catalogue is complete.  The catalogue also says the language's notation, which the code asks through
 :class:`Texts` and never by comparing language codes: ``common.format.symbols`` (the
 symbol set, :attr:`Texts.symbols`: ``ru`` the Russian textbook's, ``en`` Latin),
 ``common.format.decimal_sign`` (:meth:`Texts.number`) and one ``common.unit.<name>`` per
@@ -53,12 +59,14 @@ import functools
 import gettext
 import re
 import string
+import struct
 from collections.abc import Sequence
 from pathlib import Path
 
-__all__ = ["Texts", "texts", "area_texts", "read_area", "read_po", "languages", "offered",
-           "catalogue_languages", "keys", "CatalogueError", "LOCALE_DIR", "REFERENCE",
-           "OfferedLanguages", "OFFERED", "SYMBOL_SETS", "UNITS", "unit_key", "UNIT_FIELD"]
+__all__ = ["Texts", "texts", "area_texts", "read_area", "read_mo", "read_po", "mo_path",
+           "languages", "offered", "catalogue_languages", "keys", "CatalogueError",
+           "LOCALE_DIR", "MO_FOLDER", "COMPILE_COMMAND", "REFERENCE", "OfferedLanguages",
+           "OFFERED", "SYMBOL_SETS", "UNITS", "unit_key", "UNIT_FIELD"]
 
 #: Folder of the catalogues (shipped as package data of ``crankbase``).
 LOCALE_DIR = Path(__file__).resolve().parent / "locale"
@@ -202,186 +210,96 @@ class Texts:
 
 
 def catalogue_languages() -> tuple[str, ...]:
-    """Every language with a catalogue folder, complete or not."""
+    """Every language with a compiled catalogue (``<lang>/LC_MESSAGES/*.mo``), complete
+    or not."""
     return tuple(sorted(p.name for p in LOCALE_DIR.iterdir()
-                        if p.is_dir() and any(p.glob("*.po"))))
+                        if p.is_dir() and any((p / MO_FOLDER).glob("*.mo"))))
 
 
 class CatalogueError(ValueError):
-    """A catalogue that cannot be read: a line that is no ``.po`` syntax, a key twice in
-    one language, a plural entry with the wrong number of forms, files of one language
-    with different ``Plural-Forms``."""
+    """A catalogue that cannot be used: a compiled ``.mo`` missing, broken or out of step
+    with the ``.po`` files beside it (run ``python tools/compile_catalogues.py``), a key
+    in two areas of one language, areas of one language with different
+    ``Plural-Forms``; and, from the developers' compiler, a ``.po`` that is no ``.po``
+    syntax, a key twice in one file, a plural entry without all its forms."""
 
 
-_PO_KEYWORD = re.compile(r'(msgctxt|msgid_plural|msgid|msgstr(?:\[(\d+)\])?)[ \t]+"(.*)"$')
-_PO_ESCAPE = re.compile(r'\\([\\trn"])')
-_PO_ESCAPES = {"n": "\n", "t": "\t", "r": "\r", '"': '"', "\\": "\\"}
+#: The folder of a language's compiled catalogues (``locale/<lang>/LC_MESSAGES/<area>.mo``:
+#: where :func:`gettext.translation` and :func:`gettext.find` look for domain ``<area>``).
+MO_FOLDER = "LC_MESSAGES"
+
+#: The command that compiles the ``.po`` files into the ``.mo`` files (a developer's
+#: tool of the repository, needing Babel; users never run it).
+COMPILE_COMMAND = "python tools/compile_catalogues.py"
+
 _DEFAULT_PLURAL = ("nplurals=2; plural=(n != 1);", 2, "(n != 1)")
 
 
-def _po_string(body: str) -> str:
-    """A quoted ``.po`` string's body unescaped as Babel's ``read_po`` does (``\\n \\t
-    \\r \\" \\\\``; any other backslash is kept as written)."""
-    if "\\" not in body:
-        return body
-    return _PO_ESCAPE.sub(lambda m: _PO_ESCAPES[m.group(1)], body)
+def mo_path(lang: str, area: str) -> Path:
+    """The compiled catalogue of one area of one language:
+    ``LOCALE_DIR/<lang>/LC_MESSAGES/<area>.mo``."""
+    return LOCALE_DIR / lang / MO_FOLDER / f"{area}.mo"
 
 
-def _plural_forms(header: str):
-    """``(Plural-Forms value, nplurals, plural expression)`` of a catalogue header (the
-    ``msgstr`` of its empty ``msgid``); English's rule when the header names none."""
-    for line in header.split("\n"):
-        name, _, value = line.partition(":")
-        if name.strip().lower() == "plural-forms":
-            value = value.strip()
-            params = dict(p.strip().partition("=")[::2] for p in value.split(";") if p.strip())
-            try:
-                return value, int(params["nplurals"]), params["plural"].strip()
-            except (KeyError, ValueError):
-                raise CatalogueError(f"bad Plural-Forms {value!r}") from None
-    return _DEFAULT_PLURAL
+def read_mo(path: Path) -> gettext.GNUTranslations:
+    """One compiled catalogue read by the standard library (:class:`gettext.GNUTranslations`:
+    its texts, its plural rule compiled from the ``Plural-Forms`` of its header).  A
+    missing or unreadable file is a :class:`CatalogueError` naming it and the command that
+    compiles it."""
+    where = f"{path.parent.parent.name}/{path.parent.name}/{path.name}"
+    try:
+        with open(path, "rb") as fh:
+            return gettext.GNUTranslations(fh)
+    except FileNotFoundError:
+        raise CatalogueError(f"{where}: no compiled catalogue; run {COMPILE_COMMAND}") from None
+    except (OSError, ValueError, struct.error, IndexError) as exc:
+        raise CatalogueError(f"{where}: not a compiled catalogue ({exc}); "
+                             f"run {COMPILE_COMMAND}") from None
 
 
-def read_po(path: Path):
-    """One ``.po`` file read with the standard library: ``(plural_forms, entries)``,
-    ``plural_forms`` as :func:`_plural_forms` gives it, ``entries`` a ``{key: text}`` in
-    the file's order whose plural entries (``msgid_plural``) are tuples of their
-    ``msgstr[i]``.  Fuzzy entries are skipped (as Babel's ``write_mo`` skips them), so is
-    the header.  Every line must be ``.po`` syntax (comment, keyword with a quoted string,
-    continued string, blank), a key must not repeat, a plural entry must have exactly the
-    header's ``nplurals`` forms: else a :class:`CatalogueError` naming the file and line.
-    ``msgctxt`` is refused: no key of the text layer has a context."""
-    where = f"{path.parent.name}/{path.name}"
-    out: dict = {}
-    plural = _DEFAULT_PLURAL
-    entry: dict = {}
-    field = None
-    fuzzy = False
-    lineno = start = 0                 # the line read, the line of the entry's msgid
-
-    def fail(message, line=None):
-        raise CatalogueError(f"{where}:{line or lineno}: {message}")
-
-    def close():
-        nonlocal entry, fuzzy, field, plural
-        msgid = entry.get("msgid")
-        if msgid is None:
-            fail("msgstr without msgid")
-        forms = entry.get("forms")
-        if "msgid_plural" in entry:
-            if "msgstr" in entry or not forms or sorted(forms) != list(range(len(forms))):
-                fail(f"{msgid!r}: a plural entry needs msgstr[0], msgstr[1] … only", start)
-            value = tuple(forms[i] for i in range(len(forms)))
-        elif forms or "msgstr" not in entry:
-            fail(f"{msgid!r}: a singular entry needs one msgstr", start)
-        else:
-            value = entry["msgstr"]
-        if msgid == "":
-            plural = _plural_forms(value)
-        elif not fuzzy:
-            if msgid in out:
-                fail(f"key {msgid!r} twice in one file", start)
-            if isinstance(value, tuple) and len(value) != plural[1]:
-                fail(f"{msgid!r}: {len(value)} plural forms, the header says "
-                     f"nplurals={plural[1]}", start)
-            out[msgid] = value
-        entry, fuzzy, field = {}, False, None
-
-    for lineno, raw in enumerate(path.read_text(encoding="utf-8-sig").splitlines(), 1):
-        line = raw.strip()
-        if not line:
-            continue
-        first = line[0]
-        if first == '"':
-            if field is None or len(line) < 2 or line[-1] != '"':
-                fail(f"cannot read the line {raw!r}")
-            text = _po_string(line[1:-1])
-            if type(field) is int:
-                entry["forms"][field] += text
-            else:
-                entry[field] += text
-            continue
-        if first == "#":
-            if "msgstr" in entry or "forms" in entry:
-                close()                        # a comment starts the next entry
-            if line.startswith("#,") and "fuzzy" in (f.strip() for f in line[2:].split(",")):
-                fuzzy = True
-            continue
-        m = _PO_KEYWORD.match(line)
-        if m is None:
-            fail(f"cannot read the line {raw!r}")
-        keyword, index, body = m.groups()
-        if keyword == "msgctxt":
-            fail("msgctxt: the text layer's keys have no context")
-        if keyword == "msgid":
-            if "msgstr" in entry or "forms" in entry:
-                close()
-            start = lineno
-        text = _po_string(body)
-        if index is not None:
-            forms = entry.setdefault("forms", {})
-            field = int(index)
-            if field in forms:
-                fail(f"msgstr[{field}] twice")
-            forms[field] = text
-        else:
-            if keyword in entry:
-                fail(f"{keyword} twice in one entry")
-            field = keyword
-            entry[field] = text
-    if entry:
-        close()
-    return plural, out
-
-
-class _Translations(gettext.GNUTranslations):
-    """The standard library's :class:`gettext.GNUTranslations`, filled from entries read
-    by :func:`read_po` instead of from a compiled ``.mo``: the same ``_catalog`` a ``.mo``
-    gives it (``key → text``, ``(key, i) → form i``), the same plural function
-    (:func:`gettext.c2py` of the header's expression), so its ``gettext``/``ngettext``
-    answer as before."""
-
-    def __init__(self, catalog: dict, plural_expr: str):
-        gettext.NullTranslations.__init__(self)
-        self._catalog = catalog
-        self.plural = gettext.c2py(plural_expr)
-        self._charset = "UTF-8"
+def _areas(lang: str) -> list[str]:
+    """The areas of ``lang``: its compiled catalogues, which must be those of its ``.po``
+    files where these are present (a source tree, a wheel); else a
+    :class:`CatalogueError` naming the files out of step."""
+    folder = LOCALE_DIR / lang
+    compiled = {p.stem for p in (folder / MO_FOLDER).glob("*.mo")}
+    sources = {p.stem for p in folder.glob("*.po")}
+    if sources and sources != compiled:
+        lost = [f"{lang}/{a}.po (no {MO_FOLDER}/{a}.mo)" for a in sorted(sources - compiled)]
+        lost += [f"{lang}/{MO_FOLDER}/{a}.mo (no {a}.po)" for a in sorted(compiled - sources)]
+        raise CatalogueError(f"catalogues out of step: {', '.join(lost)}; "
+                             f"run {COMPILE_COMMAND}")
+    return sorted(compiled)
 
 
 @functools.lru_cache(maxsize=None)
 def _catalogue(lang: str):
-    """``(GNUTranslations, keys)`` of one language: every ``.po`` of its folder read by
-    :func:`read_po` (standard library only) and merged; a key in two files of one
-    language, or two files with different ``Plural-Forms``, is a :class:`CatalogueError`.
-
-    What a ``.mo`` compiled from the catalogue would hold (Babel's ``write_mo``, the
-    former path): an empty singular text is left out (``gettext`` answers the key), an
-    empty plural form is the key.  A test compares it with Babel's reading of every
-    catalogue."""
-    files = sorted((LOCALE_DIR / lang).glob("*.po"))
-    if not files:
+    """``(GNUTranslations, keys)`` of one language: every compiled area of its folder
+    (:func:`read_mo`) merged into one table; a key in two areas, or two areas with
+    different ``Plural-Forms``, is a :class:`CatalogueError` naming both."""
+    areas = _areas(lang)
+    if not areas:
         raise KeyError(lang)
-    catalog: dict = {}
-    keys: set = set()
-    rule = None
-    for path in files:
-        plural, entries = read_po(path)
-        if rule is None:
-            rule = plural
-        elif plural[0] != rule[0]:
-            raise CatalogueError(f"{lang}/{path.name}: Plural-Forms {plural[0]!r}; "
-                                 f"{lang}/{files[0].name} says {rule[0]!r}")
-        for key, value in entries.items():
-            if key in keys:
-                raise CatalogueError(f"{lang}/{path.stem}.po: key {key!r} is also in "
-                                     f"another file of {lang}")
-            keys.add(key)
-            if isinstance(value, tuple):
-                for i, form in enumerate(value):
-                    catalog[(key, i)] = form or key
-            elif value:
-                catalog[key] = value
-    return _Translations(catalog, rule[2]), frozenset(keys)
+    merged = None
+    owner: dict = {}
+    for area in areas:
+        tr = read_mo(mo_path(lang, area))
+        rule = tr.info().get("plural-forms")
+        if merged is None:
+            merged, first = tr, (area, rule)
+        elif rule != first[1]:
+            raise CatalogueError(f"{lang}/{area}.po: Plural-Forms {rule!r}; "
+                                 f"{lang}/{first[0]}.po says {first[1]!r}")
+        for entry in tr._catalog:      # key → text, (key, i) → plural form i; "" the header
+            key = entry if type(entry) is str else entry[0]
+            if owner.setdefault(key, area) != area and key:
+                raise CatalogueError(f"key {key!r} is in {lang}/{owner[key]}.po and in "
+                                     f"{lang}/{area}.po")
+        if tr is not merged:
+            merged._catalog.update(tr._catalog)
+    merged._catalog.pop("", None)
+    owner.pop("", None)
+    return merged, frozenset(owner)
 
 
 @functools.lru_cache(maxsize=None)
@@ -398,18 +316,43 @@ def texts(lang: str = "ru") -> Texts:
 
 
 def read_area(lang: str, area: str) -> dict[str, str]:
-    """``{key: text}`` of one area's catalogue (``locale/<lang>/<area>.po``) alone, read by
-    :func:`read_po` (standard library only, no other area).  For an area read on a fast
-    path (the command line's ``--help``, area ``cli``); it holds singular entries only (a
-    plural entry is a :class:`CatalogueError`), fuzzy entries are skipped as
-    :func:`texts` skips them.  A test compares it with Babel's reading of every
-    ``cli.po``."""
-    _, entries = read_po(LOCALE_DIR / lang / f"{area}.po")
-    for key, value in entries.items():
-        if isinstance(value, tuple):
-            raise CatalogueError(f"{lang}/{area}.po: {key!r} is a plural entry; "
+    """``{key: text}`` of one area's compiled catalogue
+    (``locale/<lang>/LC_MESSAGES/<area>.mo``) alone, read by :func:`read_mo`.  For an
+    area read on a fast path (the command line's ``--help``, area ``cli``); it holds
+    singular entries only (a plural entry is a :class:`CatalogueError`)."""
+    out = {}
+    for key, text in read_mo(mo_path(lang, area))._catalog.items():
+        if type(key) is not str:
+            raise CatalogueError(f"{lang}/{area}.po: {key[0]!r} is a plural entry; "
                                  "read_area reads singular entries only")
-    return entries
+        if key:
+            out[key] = text
+    return out
+
+
+def read_po(path: Path):
+    """``(plural_forms, entries)`` of one area as before session 11, now read from its
+    compiled catalogue (``<lang>/<area>.po`` → ``<lang>/LC_MESSAGES/<area>.mo``, by
+    :func:`read_mo`): ``plural_forms`` is ``(Plural-Forms value, nplurals, plural
+    expression)``, ``entries`` a ``{key: text}`` in key order whose plural entries are
+    tuples of their forms.  Kept for earlier callers; the ``.po`` text itself is read
+    only by the developers' compiler (``tools/compile_catalogues.py``, Babel)."""
+    path = Path(path)
+    tr = read_mo(path.parent / MO_FOLDER / f"{path.stem}.mo")
+    value = tr.info().get("plural-forms")
+    if value is None:
+        plural = _DEFAULT_PLURAL
+    else:
+        params = dict(p.strip().partition("=")[::2] for p in value.split(";") if p.strip())
+        plural = (value, int(params["nplurals"]), params["plural"].strip())
+    entries: dict = {}
+    order = sorted((k, -1) if type(k) is str else k for k in tr._catalog if k != "")
+    for entry in (k if i == -1 else (k, i) for k, i in order):
+        if type(entry) is str:
+            entries[entry] = tr._catalog[entry]
+        else:
+            entries[entry[0]] = entries.get(entry[0], ()) + (tr._catalog[entry],)
+    return plural, entries
 
 
 class _AreaTranslations:
@@ -426,13 +369,14 @@ class _AreaTranslations:
 
 
 def _unit_words(lang: str) -> dict[str, str]:
-    """The ``common.unit.*`` entries of ``lang``'s ``common.po`` alone (:func:`read_po`):
-    what an area read alone (:func:`area_texts`) needs for its templates' unit fields."""
-    path = LOCALE_DIR / lang / "common.po"
+    """The ``common.unit.*`` entries of ``lang``'s compiled ``common`` catalogue alone
+    (:func:`read_mo`): what an area read alone (:func:`area_texts`) needs for its
+    templates' unit fields."""
+    path = mo_path(lang, "common")
     if not path.is_file():
         return {}
-    _, entries = read_po(path)
-    return {k: v for k, v in entries.items() if k.startswith("common.unit.")}
+    return {k: v for k, v in read_mo(path)._catalog.items()
+            if type(k) is str and k.startswith("common.unit.")}
 
 
 @functools.lru_cache(maxsize=None)
@@ -444,7 +388,7 @@ def area_texts(lang: str, area: str) -> Texts:
     if lang not in catalogue_languages():
         raise KeyError(f"no text catalogue for language {lang!r}; there are: "
                        + ", ".join(catalogue_languages()))
-    words = read_area(lang, area) if (LOCALE_DIR / lang / f"{area}.po").is_file() else {}
+    words = read_area(lang, area) if mo_path(lang, area).is_file() else {}
     if any("{unit[" in text for text in words.values()):
         words = {**words, **_unit_words(lang)}      # its templates' unit fields
     fallback = None if lang == REFERENCE else area_texts(REFERENCE, area)

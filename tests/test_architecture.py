@@ -97,8 +97,9 @@ def test_the_engine_loads_only_the_group_routines_of_linkage():
 
 @pytest.mark.parametrize("package", LIBRARIES + ["crankdyn"])
 def test_no_module_imports_babel(package):
-    """Babel is a test dependency only (pyproject's ``test`` extra): the text layer reads
-    its catalogues with the standard library (crankbase.texts.read_po)."""
+    """Babel is a test dependency only (pyproject's ``test`` extra, and the developers'
+    catalogue compiler tools/compile_catalogues.py): the text layer reads its compiled
+    catalogues with the standard library (crankbase.texts.read_mo, gettext)."""
     for path in sorted((ROOT / package).rglob("*.py")):
         assert "babel" not in _project_imports(path), f"{path.relative_to(ROOT)} imports babel"
 
@@ -360,6 +361,7 @@ def test_every_package_folder_ships_in_the_wheel():
     data = conf["tool"]["setuptools"]["package-data"]["crankbase"]
     import fnmatch
 
-    for po in (ROOT / "crankbase" / "locale").rglob("*.po"):
+    for po in [*(ROOT / "crankbase" / "locale").rglob("*.po"),
+               *(ROOT / "crankbase" / "locale").rglob("*.mo")]:
         rel = po.relative_to(ROOT / "crankbase").as_posix()
         assert any(fnmatch.fnmatch(rel, pat) for pat in data), rel

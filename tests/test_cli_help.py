@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 from babel.messages.pofile import read_po
@@ -133,9 +134,9 @@ def test_chinese_help_wraps_between_characters_never_inside_a_file_name(capsys,
 
 @pytest.mark.parametrize("lang", LANGS)
 def test_every_cli_key_in_every_language_and_read_alone_as_babel_reads_it(lang):
-    """The ``cli`` area is read without Babel (crankbase.texts.read_area): the same
-    entries as Babel reads, every English key translated (zh included: the help is not
-    a fallback to English)."""
+    """The ``cli`` area is read alone from its compiled catalogue, without Babel
+    (crankbase.texts.read_area): the same entries as Babel reads from the .po, every
+    English key translated (zh included: the help is not a fallback to English)."""
     with (T.LOCALE_DIR / lang / "cli.po").open("rb") as fh:
         babel = {m.id: m.string for m in read_po(fh) if m.id}
     assert T.read_area(lang, "cli") == babel
@@ -143,15 +144,31 @@ def test_every_cli_key_in_every_language_and_read_alone_as_babel_reads_it(lang):
     assert all(k.startswith("cli.") for k in babel)
 
 
+def _compile(folder):
+    """One language folder compiled by the developers' tool (tools/compile_catalogues.py)."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location(
+        "compile_catalogues", Path(__file__).resolve().parent.parent / "tools"
+        / "compile_catalogues.py")
+    tool = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(tool)
+    for path, data in tool.compile_language(folder).items():
+        path.parent.mkdir(exist_ok=True)
+        path.write_bytes(data)
+
+
 def test_read_area_reads_what_babel_reads(tmp_path, monkeypatch):
     """Continued lines, escapes, a fuzzy entry skipped (as texts() skips it) and the one
-    after it kept; a plural entry refused (the fast reader knows no plural rule)."""
+    after it kept, compiled and read back; a plural entry refused (the help's area has
+    none)."""
     (tmp_path / "xx").mkdir()
     po = tmp_path / "xx" / "cli.po"
     po.write_text('# header\nmsgid ""\nmsgstr ""\n"Language: xx\\n"\n\n'
                   'msgid "cli.a"\nmsgstr ""\n"one \\"two\\" "\n"three\\n"\n\n'
                   '#, fuzzy\nmsgid "cli.b"\nmsgstr "draft"\n'
                   'msgid "cli.c"\nmsgstr "c\\\\d"\n', encoding="utf-8")
+    _compile(tmp_path / "xx")
     monkeypatch.setattr(T, "LOCALE_DIR", tmp_path)
     assert T.read_area("xx", "cli") == {"cli.a": 'one "two" three\n', "cli.c": "c\\d"}
     with po.open("rb") as fh:
@@ -159,6 +176,7 @@ def test_read_area_reads_what_babel_reads(tmp_path, monkeypatch):
     assert T.read_area("xx", "cli") == babel
     po.write_text('msgid "cli.n"\nmsgid_plural "cli.n"\nmsgstr[0] "a"\nmsgstr[1] "b"\n',
                   encoding="utf-8")
+    _compile(tmp_path / "xx")
     with pytest.raises(ValueError, match="plural"):
         T.read_area("xx", "cli")
 

@@ -18,6 +18,39 @@ ROOT = Path(__file__).resolve().parent.parent
 LIBRARIES = ("crankbase", "linkage", "engine", "dynamics", "plans", "crankdyn", "web")
 
 
+def _tool():
+    """The developers' catalogue compiler (``tools/compile_catalogues.py``, a script of the
+    repository, not an installed module), loaded once."""
+    import importlib.util
+
+    if "compile_catalogues" not in sys.modules:
+        spec = importlib.util.spec_from_file_location(
+            "compile_catalogues", ROOT / "tools" / "compile_catalogues.py")
+        mod = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(mod)
+        sys.modules["compile_catalogues"] = mod
+    return sys.modules["compile_catalogues"]
+
+
+def _compile(folder):
+    """Compile one language's folder (a test's own) as the tool does; returns the paths
+    written."""
+    written = _tool().compile_language(folder)
+    for path, data in written.items():
+        path.parent.mkdir(exist_ok=True)
+        path.write_bytes(data)
+    return written
+
+
+def _copy_languages(target, *langs):
+    """The committed catalogues of ``langs`` (.po and .mo) copied under ``target``."""
+    for lang in langs:
+        (target / lang / T.MO_FOLDER).mkdir(parents=True)
+        for p in [*(T.LOCALE_DIR / lang).glob("*.po"),
+                  *(T.LOCALE_DIR / lang / T.MO_FOLDER).glob("*.mo")]:
+            (target / p.relative_to(T.LOCALE_DIR)).write_bytes(p.read_bytes())
+
+
 def _entries(lang):
     """{key: (is_plural, [templates])} of every .po file of ``lang``."""
     out = {}
@@ -105,14 +138,13 @@ def test_a_missing_key_is_a_key_error_and_an_incomplete_language_falls_back(tmp_
     with pytest.raises(KeyError):
         T.texts("en")("common.no_such_key")
     # a new language with one key translated: the rest falls back to English
-    for lang in ("en", "ru"):
-        (tmp_path / lang).mkdir()
-        for p in (T.LOCALE_DIR / lang).glob("*.po"):
-            (tmp_path / lang / p.name).write_bytes(p.read_bytes())
+    _copy_languages(tmp_path, "en", "ru")
     (tmp_path / "xx").mkdir()
     (tmp_path / "xx" / "common.po").write_text(
         'msgid ""\nmsgstr ""\n"Language: xx\\n"\n"Plural-Forms: nplurals=1; plural=0;\\n"\n'
         '\nmsgid "common.none"\nmsgstr "nada"\n', encoding="utf-8")
+    assert [p.relative_to(tmp_path).as_posix() for p in _compile(tmp_path / "xx")] == [
+        "xx/LC_MESSAGES/common.mo"]
     monkeypatch.setattr(T, "LOCALE_DIR", tmp_path)
     for f in (T._catalogue, T.texts, T.languages):
         f.cache_clear()
@@ -144,11 +176,14 @@ def test_every_key_the_code_uses_is_in_the_catalogue():
 
 
 def test_the_catalogues_ship_with_the_package():
+    """The compiled catalogues are package data (read at run time), the .po files too
+    (their source, for a translator); .mo files are binary to git (no line endings)."""
     text = (ROOT / "pyproject.toml").read_text(encoding="utf-8")
-    assert '"crankbase" = ["locale/*/*.po"]' in text
-    tree = ast.parse((ROOT / "crankbase" / "texts.py").read_text(encoding="utf-8"))
-    assert tree  # the module parses; the catalogue folder is beside it
+    assert '"crankbase" = ["locale/*/*.po", "locale/*/LC_MESSAGES/*.mo"]' in text
     assert (T.LOCALE_DIR / "ru" / "common.po").is_file()
+    assert T.mo_path("ru", "common").is_file()
+    assert T.mo_path("ru", "common") == T.LOCALE_DIR / "ru" / "LC_MESSAGES" / "common.mo"
+    assert "*.mo binary" in (ROOT / ".gitattributes").read_text(encoding="utf-8").splitlines()
 
 
 # ---- Chinese (issue #19): complete, offered, in en's order, one plural form -------------
@@ -297,10 +332,7 @@ def test_a_third_language_writes_the_notation_its_catalogue_names(tmp_path, monk
     from engine.symbols import mass_inputs, sym
     from plans.layout import fmt
 
-    for lang in ("en", "ru"):
-        (tmp_path / lang).mkdir()
-        for p in (T.LOCALE_DIR / lang).glob("*.po"):
-            (tmp_path / lang / p.name).write_bytes(p.read_bytes())
+    _copy_languages(tmp_path, "en", "ru")
     (tmp_path / "xx").mkdir()
     entries = {"common.format.symbols": "ru", "common.format.decimal_sign": ",",
                "common.format.quantity_unit": "{symbol} / {unit}", "common.unit.N_m": "Нм",
@@ -312,6 +344,7 @@ def test_a_third_language_writes_the_notation_its_catalogue_names(tmp_path, monk
     (tmp_path / "xx" / "dynamics.po").write_text(
         'msgid ""\nmsgstr ""\n"Language: xx\\n"\n"Plural-Forms: nplurals=1; plural=0;\\n"\n'
         '\nmsgid "dynamics.symbol.M"\nmsgstr "Mкр"\n', encoding="utf-8")
+    _compile(tmp_path / "xx")
     monkeypatch.setattr(T, "LOCALE_DIR", tmp_path)
     for f in (T._catalogue, T.texts, T.languages):
         f.cache_clear()
@@ -328,11 +361,48 @@ def test_a_third_language_writes_the_notation_its_catalogue_names(tmp_path, monk
             f.cache_clear()
 
 
-# ---- the standard-library reader (issue #19, start-up cost) against Babel's reading -----
+# ---- the compiled catalogues (.mo) read by the standard library (issue #19 item 4) -------
+
+def test_the_committed_mo_files_are_what_the_po_files_compile_to():
+    """Every .po compiled in memory (tools/compile_catalogues.py: Babel's read_po and
+    write_mo) gives the committed .mo byte for byte, and no .mo is left without its .po:
+    else edit nothing by hand, run the tool and commit the .mo files with the .po."""
+    want, write, remove = _tool().stale(T.LOCALE_DIR)
+    assert len(want) == 3 * len(list((T.LOCALE_DIR / "en").glob("*.po"))) >= 45
+    assert not write and not remove, (
+        f"stale compiled catalogues: {[p.relative_to(T.LOCALE_DIR).as_posix() for p in write]}"
+        f", without a .po: {[p.relative_to(T.LOCALE_DIR).as_posix() for p in remove]}; "
+        f"run: {T.COMPILE_COMMAND} (and commit the .mo files)")
+
+
+def test_the_compiler_is_deterministic_and_writes_no_date_nor_version(tmp_path):
+    """The same .po gives the same bytes (twice, from a copy elsewhere, from a copy with
+    Windows line endings, as a checkout with core.autocrlf has it); the header
+    holds the .po's Language and Plural-Forms and the MIME lines only: not the compile
+    time Babel writes for a .po without POT-Creation-Date, nor Babel's version."""
+    import gettext
+    import io
+
+    tool = _tool()
+    po = T.LOCALE_DIR / "ru" / "common.po"
+    (tmp_path / "ru").mkdir()
+    (tmp_path / "ru" / "common.po").write_bytes(po.read_bytes())
+    first = tool.mo_bytes(tool.read_catalogue(po))
+    assert first == tool.mo_bytes(tool.read_catalogue(tmp_path / "ru" / "common.po"))
+    (tmp_path / "ru" / "common.po").write_bytes(po.read_bytes().replace(b"\n", b"\r\n"))
+    assert first == tool.mo_bytes(tool.read_catalogue(tmp_path / "ru" / "common.po"))
+    assert first == T.mo_path("ru", "common").read_bytes()
+    info = gettext.GNUTranslations(io.BytesIO(first)).info()
+    assert set(info) == {"language", "plural-forms", "mime-version", "content-type",
+                         "content-transfer-encoding"}
+    assert info["language"] == "ru" and info["plural-forms"].startswith("nplurals=3;")
+    assert b"POT-Creation-Date" not in first and b"Generated-By" not in first
+
 
 def _babel_translations(lang, folder=None):
-    """The former path, kept here as the reference: every ``.po`` of ``lang`` read by
-    Babel, merged, compiled by ``write_mo`` and loaded by GNUTranslations."""
+    """The reference, independent of the compiler: every ``.po`` of ``lang`` read by
+    Babel's ``read_po`` into one Babel catalogue (its own header), compiled by
+    ``write_mo`` and loaded by GNUTranslations."""
     import gettext
     import io
 
@@ -367,16 +437,15 @@ def _babel_entries(path):
 
 
 @pytest.mark.parametrize("lang", T.catalogue_languages())
-def test_the_fast_reader_reads_every_catalogue_as_babel_does(lang):
-    """Every file: the same entries (keys, texts, plural forms) and the same plural rule
-    as Babel's ``read_po``; the merged language: the same keys, the same GNUTranslations
-    table as Babel's ``write_mo`` compiled, the same text of every key and the same
-    plural form of every plural key for n = 0..200."""
+def test_the_compiled_catalogues_read_as_babel_reads_the_po(lang):
+    """Every area: the .mo read by the standard library (read_po's entries, its plural
+    rule) holds what Babel reads from the .po; the merged language: the same keys, the
+    same table as Babel's own write_mo of the merged .po files, the same text of every
+    key and the same plural form of every plural key for n = 0..200."""
     for path in sorted((T.LOCALE_DIR / lang).glob("*.po")):
         cat, babel = _babel_entries(path)
         plural, entries = T.read_po(path)
         assert entries == babel, path.name
-        assert list(entries) == list(babel), f"{path.name}: order"
         assert plural[1] == cat.num_plurals and plural[0] == cat.plural_forms, path.name
     old, old_keys = _babel_translations(lang)
     T._catalogue.cache_clear()
@@ -393,7 +462,18 @@ def test_the_fast_reader_reads_every_catalogue_as_babel_does(lang):
         assert new.gettext(key) == old.gettext(key), key
 
 
-_TRICKY = r'''# a header comment
+def test_the_mo_files_are_where_gettext_looks():
+    """The standard machinery finds them as they are laid out: gettext.translation with
+    the area as domain gives the same Russian plural forms as Texts."""
+    import gettext
+
+    tr = gettext.translation("common", T.LOCALE_DIR, languages=["ru"])
+    assert [tr.ngettext("common.plots", "common.plots", n).format(n=n) for n in (1, 3, 5)] \
+        == [T.texts("ru").n("common.plots", n) for n in (1, 3, 5)] \
+        == ["1 график", "3 графика", "5 графиков"]
+
+
+_TRICKY = r"""# a header comment
 msgid ""
 msgstr ""
 "Language: xx\n"
@@ -405,7 +485,7 @@ msgid "common.a"
 msgstr ""
 "one \"two\" "
 "three\n"
-"tab\there \\ back\\slash \q"
+"tab\there \\ back\\slash"
 
 #, fuzzy
 msgid "common.b"
@@ -433,26 +513,27 @@ msgstr[2] "{n} e2"
 #, no-fuzzy-here
 msgid "common.f"
 msgstr "f"
-'''
+"""
 
 
-def test_the_fast_reader_reads_the_po_syntax_as_babel_does(tmp_path, monkeypatch):
-    """Continued strings, escapes (an unknown one kept), fuzzy entries (a flag among
-    others, an entry with no blank line before it), obsolete entries and comments of
-    every kind: the same entries as Babel reads; the Russian rule of the header."""
+def test_the_compiled_po_syntax_reads_as_babel_reads_it(tmp_path, monkeypatch):
+    """Continued strings, escapes, fuzzy entries (a flag among others, an entry with no
+    blank line before it), obsolete entries and comments of every kind: compiled, the
+    same entries as Babel reads; the Russian rule of the header chooses the forms."""
     (tmp_path / "xx").mkdir()
     po = tmp_path / "xx" / "common.po"
     po.write_text(_TRICKY, encoding="utf-8")
+    _compile(tmp_path / "xx")
     cat, babel = _babel_entries(po)
-    plural, entries = T.read_po(po)
-    assert entries == babel
-    assert entries == {"common.a": 'one "two" three\ntab\there \\ back\\slash \\q',
-                       "common.c": "c", "common.e": ("{n} e0", "{n} e1", "{n} e2"),
-                       "common.f": "f"}
-    assert plural[1] == 3 == cat.num_plurals
     monkeypatch.setattr(T, "LOCALE_DIR", tmp_path)
     T._catalogue.cache_clear()
     try:
+        plural, entries = T.read_po(po)
+        assert entries == babel
+        assert entries == {"common.a": 'one "two" three\ntab\there \\ back\\slash',
+                           "common.c": "c", "common.e": ("{n} e0", "{n} e1", "{n} e2"),
+                           "common.f": "f"}
+        assert plural[1] == 3 == cat.num_plurals
         tr, keys = T._catalogue("xx")
         old, old_keys = _babel_translations("xx", tmp_path)
         assert keys == old_keys == {"common.a", "common.c", "common.e", "common.f"}
@@ -468,26 +549,91 @@ def test_the_fast_reader_reads_the_po_syntax_as_babel_does(tmp_path, monkeypatch
     ({"common": 'msgid "common.a"\nmsgstr "1"\n\nmsgid "common.a"\nmsgstr "2"\n'},
      r"xx/common.po:4: key 'common.a' twice in one file"),
     ({"common": 'msgid "common.a"\nmsgstr "1"\n', "engine": 'msgid "common.a"\nmsgstr "2"\n'},
-     r"xx/engine.po: key 'common.a' is also in another file of xx"),
+     r"xx/engine.po:1: key 'common.a' is also in xx/common.po"),
     ({"common": 'msgid "common.a"\nmsgstr "1"\nmsgstr but no quotes\n'},
      r"xx/common.po:3: cannot read the line 'msgstr but no quotes'"),
     ({"common": 'msgid "common.a"\nmsgstr "1\n'}, r"xx/common.po:2: cannot read the line"),
     ({"common": 'msgid "common.a"\nmsgstr "1"\n"2\n'}, r"xx/common.po:3: cannot read"),
+    ({"common": 'msgid "common.a"\nmsgstr "a "b" c"\n'}, r"xx/common.po:2: cannot read"),
+    ({"common": 'msgid "common.a"\nmsgstr "1"\nmsgfoo "2"\n'}, r"xx/common.po:3: cannot read"),
     ({"common": 'msgid "common.a"\nmsgid_plural "common.a"\nmsgstr[0] "1"\n'},
-     r"'common.a': 1 plural forms, the header says nplurals=2"),
+     r"xx/common.po:1: 'common.a': msgstr\[1\] missing or empty; the header says nplurals=2"),
     ({"common": 'msgid "common.a"\nmsgid_plural "common.a"\nmsgstr[0] "1"\nmsgstr[2] "3"\n'},
-     r"a plural entry needs msgstr\[0\], msgstr\[1\]"),
-    ({"common": 'msgid "common.a"\nmsgstr[0] "1"\n'}, r"a singular entry needs one msgstr"),
-    ({"common": 'msgstr "1"\n'}, r"msgstr without msgid"),
-    ({"common": 'msgctxt "menu"\nmsgid "common.a"\nmsgstr "1"\n'}, r"msgctxt"),
+     r"xx/common.po:1: msg has more translations than num_plurals"),
+    ({"common": 'msgid "common.a"\nmsgstr[0] "1"\n'},
+     r"xx/common.po:2: a singular entry has one msgstr"),
+    ({"common": 'msgid "common.a"\nmsgid_plural "common.a"\nmsgstr "1"\n'},
+     r"xx/common.po:3: a plural entry has msgstr\[0\], msgstr\[1\]"),
+    ({"common": 'msgstr "1"\n'}, r"xx/common.po:1: msgstr without msgid"),
+    ({"common": 'msgid "common.a"\nmsgstr "1"\nmsgstr "2"\n'},
+     r"xx/common.po:3: msgstr without msgid, or twice"),
+    ({"common": 'msgid "common.a"\n\nmsgid "common.b"\nmsgstr "1"\n'},
+     r"xx/common.po:1: missing msgstr for msgid 'common.a'"),
+    ({"common": 'msgctxt "menu"\nmsgid "common.a"\nmsgstr "1"\n'}, r"xx/common.po:2: msgctxt"),
     ({"common": 'msgid ""\nmsgstr "Plural-Forms: nplurals=1; plural=0;\\n"\n',
       "engine": 'msgid ""\nmsgstr "Plural-Forms: nplurals=2; plural=(n != 1);\\n"\n'},
-     r"xx/engine.po: Plural-Forms 'nplurals=2; plural=\(n != 1\);'"),
+     r"xx/engine.po: Plural-Forms 'nplurals=2; plural=\(n != 1\);'; xx/common.po says "
+     r"'nplurals=1; plural=0;'"),
 ])
-def test_a_broken_catalogue_stays_an_error(files, match, tmp_path, monkeypatch):
+def test_a_broken_po_is_an_error_of_the_compiler(files, match, tmp_path):
     (tmp_path / "xx").mkdir()
     for area, text in files.items():
         (tmp_path / "xx" / f"{area}.po").write_text(text, encoding="utf-8")
+    with pytest.raises(T.CatalogueError, match=match):
+        _tool().compile_language(tmp_path / "xx")
+    assert not (tmp_path / "xx" / T.MO_FOLDER).exists()
+    # the command line says it in one line, exit 2, and writes nothing
+    r = subprocess.run([sys.executable, str(ROOT / "tools" / "compile_catalogues.py"),
+                        "--locale-dir", str(tmp_path)], capture_output=True, text=True)
+    assert r.returncode == 2 and re.search(match, r.stderr), r.stderr
+    assert not (tmp_path / "xx" / T.MO_FOLDER).exists()
+
+
+def _each_compiled_alone(folder):
+    """Each .po of ``folder`` compiled on its own (no check across areas), as a stale or
+    hand-made set of .mo files could be."""
+    tool = _tool()
+    (folder / T.MO_FOLDER).mkdir()
+    for po in folder.glob("*.po"):
+        (folder / T.MO_FOLDER / f"{po.stem}.mo").write_bytes(
+            tool.mo_bytes(tool.read_catalogue(po)))
+
+
+@pytest.mark.parametrize("files, change, match", [
+    ({"common": 'msgid "common.a"\nmsgstr "1"\n', "engine": 'msgid "common.a"\nmsgstr "2"\n'},
+     None, r"key 'common.a' is in xx/common.po and in xx/engine.po"),
+    ({"common": 'msgid ""\nmsgstr "Plural-Forms: nplurals=1; plural=0;\\n"\n',
+      "engine": 'msgid ""\nmsgstr "Plural-Forms: nplurals=2; plural=(n != 1);\\n"\n'},
+     None, r"xx/engine.po: Plural-Forms 'nplurals=2; plural=\(n != 1\);'; xx/common.po"),
+    ({"common": 'msgid "common.a"\nmsgstr "1"\n', "engine": 'msgid "engine.a"\nmsgstr "2"\n'},
+     "drop engine.mo", r"out of step: xx/engine.po \(no LC_MESSAGES/engine.mo\); "
+                       r"run python tools/compile_catalogues.py"),
+    ({"common": 'msgid "common.a"\nmsgstr "1"\n', "engine": 'msgid "engine.a"\nmsgstr "2"\n'},
+     "drop engine.po", r"out of step: xx/LC_MESSAGES/engine.mo \(no engine.po\)"),
+    ({"common": 'msgid "common.a"\nmsgstr "1"\n'}, "garble common.mo",
+     r"xx/LC_MESSAGES/common.mo: not a compiled catalogue \(.*\); run python tools/"),
+    ({"common": 'msgid "common.a"\nmsgstr "1"\n'}, "cut common.mo",
+     r"xx/LC_MESSAGES/common.mo: not a compiled catalogue"),
+])
+def test_a_broken_or_stale_mo_is_a_catalogue_error_at_run_time(files, change, match,
+                                                                tmp_path, monkeypatch):
+    """What the run time checks of the compiled catalogues: a key in two areas (both
+    named), two plural rules, a .po without its .mo or the reverse, a .mo that is not one
+    (bad magic number, cut short)."""
+    folder = tmp_path / "xx"
+    folder.mkdir()
+    for area, text in files.items():
+        (folder / f"{area}.po").write_text(text, encoding="utf-8")
+    _each_compiled_alone(folder)
+    mo = folder / T.MO_FOLDER / "common.mo"
+    if change == "drop engine.mo":
+        (folder / T.MO_FOLDER / "engine.mo").unlink()
+    elif change == "drop engine.po":
+        (folder / "engine.po").unlink()
+    elif change == "garble common.mo":
+        mo.write_bytes(b"\x00" * 4 + mo.read_bytes()[4:])
+    elif change == "cut common.mo":
+        mo.write_bytes(mo.read_bytes()[:40])
     monkeypatch.setattr(T, "LOCALE_DIR", tmp_path)
     T._catalogue.cache_clear()
     try:
@@ -500,19 +646,23 @@ def test_a_broken_catalogue_stays_an_error(files, match, tmp_path, monkeypatch):
 
 def test_a_run_reads_its_language_and_english_only_and_no_babel():
     """What ``crankdyn engine --lang ru`` asks of the text layer (check the language,
-    argparse's ``choices``, the texts) reads two catalogues (ru and its fallback en) with
-    the standard library: Babel is not imported; ``--lang zh`` reads zh and en."""
-    code = ("import sys\nfrom crankbase import texts as T\n"
+    argparse's ``choices``, the texts) reads the compiled catalogues of two languages (ru
+    and its fallback en) with the standard library: Babel is not imported, no .po is
+    opened; ``--lang zh`` reads zh and en."""
+    code = ("import sys, builtins\nfrom crankbase import texts as T\n"
             "from crankbase.validation import check_lang\n"
-            "read, real = set(), T.read_po\n"
-            "T.read_po = lambda path: read.add(path.parent.name) or real(path)\n"
+            "read, real, po = set(), T.read_mo, []\n"
+            "T.read_mo = lambda path: read.add(path.parent.parent.name) or real(path)\n"
+            "opened = builtins.open\n"
+            "builtins.open = lambda f, *a, **k: (str(f).endswith('.po') and po.append(f))"
+            " or opened(f, *a, **k)\n"
             "for lang in sys.argv[1:]:\n"
             "    assert lang in T.OFFERED and check_lang(lang) == lang\n"
             "    T.texts(lang).n('common.plots', 22)\n"
-            "print('babel' in sys.modules, ','.join(sorted(read)))")
+            "print('babel' in sys.modules, ','.join(sorted(read)), len(po))")
     for langs, want in ((["ru"], "en,ru"), (["zh"], "en,zh"), (["en"], "en"),
                         (["ru", "zh"], "en,ru,zh")):
         r = subprocess.run([sys.executable, "-c", code, *langs], capture_output=True,
                            text=True, cwd=ROOT)
         assert r.returncode == 0, r.stderr
-        assert r.stdout.split() == ["False", want], langs
+        assert r.stdout.split() == ["False", want, "0"], langs
