@@ -21,14 +21,15 @@ of the ``.mo`` header; the areas of a language are merged into one table (a key 
 areas is a :class:`CatalogueError` naming both).  Only the language asked and the
 reference are read (:func:`offered`), every catalogue only when the list of offered
 languages is asked (:func:`languages`).  The ``.mo`` files are made from the ``.po``
-files by the developers' tool ``python tools/compile_catalogues.py`` (Babel's
+files by the developers' tool ``python crankbase/locale/compile_catalogues.py`` (Babel's
 ``read_po`` and ``write_mo``; deterministic: the same ``.po``, the same bytes) and
 committed with them; a test compiles every ``.po`` and fails on a ``.mo`` that differs.
 
 Adding a language is filling a catalogue, not changing code: copy ``locale/en`` to
 ``locale/<lang>``, set the header's ``Language`` and ``Plural-Forms``, translate every
-``msgstr``, compile (``python tools/compile_catalogues.py``); the language is offered
-(:func:`languages`) once its catalogue is complete.  The catalogue also says the language's notation, which the code asks through
+``msgstr``, compile (``python crankbase/locale/compile_catalogues.py``); the language is
+offered (:func:`languages`) once its catalogue is complete.  The catalogue also says the
+language's notation, which the code asks through
 :class:`Texts` and never by comparing language codes: ``common.format.symbols`` (the
 symbol set, :attr:`Texts.symbols`: ``ru`` the Russian textbook's, ``en`` Latin),
 ``common.format.decimal_sign`` (:meth:`Texts.number`) and one ``common.unit.<name>`` per
@@ -218,7 +219,7 @@ def catalogue_languages() -> tuple[str, ...]:
 
 class CatalogueError(ValueError):
     """A catalogue that cannot be used: a compiled ``.mo`` missing, broken or out of step
-    with the ``.po`` files beside it (run ``python tools/compile_catalogues.py``), a key
+    with the ``.po`` files beside it (run ``python crankbase/locale/compile_catalogues.py``), a key
     in two areas of one language, areas of one language with different
     ``Plural-Forms``; and, from the developers' compiler, a ``.po`` that is no ``.po``
     syntax, a key twice in one file, a plural entry without all its forms."""
@@ -230,7 +231,7 @@ MO_FOLDER = "LC_MESSAGES"
 
 #: The command that compiles the ``.po`` files into the ``.mo`` files (a developer's
 #: tool of the repository, needing Babel; users never run it).
-COMPILE_COMMAND = "python tools/compile_catalogues.py"
+COMPILE_COMMAND = "python crankbase/locale/compile_catalogues.py"
 
 _DEFAULT_PLURAL = ("nplurals=2; plural=(n != 1);", 2, "(n != 1)")
 
@@ -336,7 +337,7 @@ def read_po(path: Path):
     :func:`read_mo`): ``plural_forms`` is ``(Plural-Forms value, nplurals, plural
     expression)``, ``entries`` a ``{key: text}`` in key order whose plural entries are
     tuples of their forms.  Kept for earlier callers; the ``.po`` text itself is read
-    only by the developers' compiler (``tools/compile_catalogues.py``, Babel)."""
+    only by the developers' compiler (``crankbase/locale/compile_catalogues.py``, Babel)."""
     path = Path(path)
     tr = read_mo(path.parent / MO_FOLDER / f"{path.stem}.mo")
     value = tr.info().get("plural-forms")

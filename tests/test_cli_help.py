@@ -145,12 +145,13 @@ def test_every_cli_key_in_every_language_and_read_alone_as_babel_reads_it(lang):
 
 
 def _compile(folder):
-    """One language folder compiled by the developers' tool (tools/compile_catalogues.py)."""
+    """One language folder compiled by the developers' tool
+    (crankbase/locale/compile_catalogues.py)."""
     import importlib.util
 
     spec = importlib.util.spec_from_file_location(
-        "compile_catalogues", Path(__file__).resolve().parent.parent / "tools"
-        / "compile_catalogues.py")
+        "compile_catalogues", Path(__file__).resolve().parent.parent / "crankbase"
+        / "locale" / "compile_catalogues.py")
     tool = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(tool)
     for path, data in tool.compile_language(folder).items():

@@ -19,13 +19,13 @@ LIBRARIES = ("crankbase", "linkage", "engine", "dynamics", "plans", "crankdyn", 
 
 
 def _tool():
-    """The developers' catalogue compiler (``tools/compile_catalogues.py``, a script of the
-    repository, not an installed module), loaded once."""
+    """The developers' catalogue compiler (``crankbase/locale/compile_catalogues.py``, a
+    script of the repository, not an imported module), loaded once."""
     import importlib.util
 
     if "compile_catalogues" not in sys.modules:
         spec = importlib.util.spec_from_file_location(
-            "compile_catalogues", ROOT / "tools" / "compile_catalogues.py")
+            "compile_catalogues", ROOT / "crankbase" / "locale" / "compile_catalogues.py")
         mod = importlib.util.module_from_spec(spec)
         spec.loader.exec_module(mod)
         sys.modules["compile_catalogues"] = mod
@@ -364,7 +364,7 @@ def test_a_third_language_writes_the_notation_its_catalogue_names(tmp_path, monk
 # ---- the compiled catalogues (.mo) read by the standard library (issue #19 item 4) -------
 
 def test_the_committed_mo_files_are_what_the_po_files_compile_to():
-    """Every .po compiled in memory (tools/compile_catalogues.py: Babel's read_po and
+    """Every .po compiled in memory (crankbase/locale/compile_catalogues.py: Babel's read_po and
     write_mo) gives the committed .mo byte for byte, and no .mo is left without its .po:
     else edit nothing by hand, run the tool and commit the .mo files with the .po."""
     want, write, remove = _tool().stale(T.LOCALE_DIR)
@@ -583,8 +583,9 @@ def test_a_broken_po_is_an_error_of_the_compiler(files, match, tmp_path):
         _tool().compile_language(tmp_path / "xx")
     assert not (tmp_path / "xx" / T.MO_FOLDER).exists()
     # the command line says it in one line, exit 2, and writes nothing
-    r = subprocess.run([sys.executable, str(ROOT / "tools" / "compile_catalogues.py"),
-                        "--locale-dir", str(tmp_path)], capture_output=True, text=True)
+    tool = ROOT / "crankbase" / "locale" / "compile_catalogues.py"
+    r = subprocess.run([sys.executable, str(tool), "--locale-dir", str(tmp_path)],
+                       capture_output=True, text=True)
     assert r.returncode == 2 and re.search(match, r.stderr), r.stderr
     assert not (tmp_path / "xx" / T.MO_FOLDER).exists()
 
@@ -607,11 +608,11 @@ def _each_compiled_alone(folder):
      None, r"xx/engine.po: Plural-Forms 'nplurals=2; plural=\(n != 1\);'; xx/common.po"),
     ({"common": 'msgid "common.a"\nmsgstr "1"\n', "engine": 'msgid "engine.a"\nmsgstr "2"\n'},
      "drop engine.mo", r"out of step: xx/engine.po \(no LC_MESSAGES/engine.mo\); "
-                       r"run python tools/compile_catalogues.py"),
+                       r"run python crankbase/locale/compile_catalogues.py"),
     ({"common": 'msgid "common.a"\nmsgstr "1"\n', "engine": 'msgid "engine.a"\nmsgstr "2"\n'},
      "drop engine.po", r"out of step: xx/LC_MESSAGES/engine.mo \(no engine.po\)"),
     ({"common": 'msgid "common.a"\nmsgstr "1"\n'}, "garble common.mo",
-     r"xx/LC_MESSAGES/common.mo: not a compiled catalogue \(.*\); run python tools/"),
+     r"xx/LC_MESSAGES/common.mo: not a compiled catalogue \(.*\); run python crankbase/locale/"),
     ({"common": 'msgid "common.a"\nmsgstr "1"\n'}, "cut common.mo",
      r"xx/LC_MESSAGES/common.mo: not a compiled catalogue"),
 ])

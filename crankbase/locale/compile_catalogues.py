@@ -5,8 +5,8 @@ time (with the standard library's :class:`gettext.GNUTranslations`).
 A developer's tool, not part of the installed package: it needs Babel (the ``test`` extra,
 ``pip install -e ".[test]"``); users never run it.  After editing a ``.po``::
 
-    python tools/compile_catalogues.py           # writes the .mo files that changed
-    python tools/compile_catalogues.py --check   # exit 1, naming each stale .mo
+    python crankbase/locale/compile_catalogues.py           # writes the .mo files that changed
+    python crankbase/locale/compile_catalogues.py --check   # exit 1, naming each stale .mo
 
 and commit the ``.po`` and ``.mo`` together (``tests/test_texts.py`` compiles every
 ``.po`` in memory and fails on a committed ``.mo`` that differs, naming this command).
@@ -39,7 +39,7 @@ from babel.messages.catalog import Catalog
 from babel.messages.mofile import write_mo
 from babel.messages.pofile import PoFileError, PoFileParser
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 if __name__ == "__main__":
     sys.path.insert(0, str(ROOT))        # run as a script: crankbase of this checkout
 
@@ -53,7 +53,7 @@ HEADER = ("Language", "Plural-Forms", "MIME-Version", "Content-Type",
           "Content-Transfer-Encoding")
 
 #: The command named when a compiled catalogue is stale.
-COMMAND = "python tools/compile_catalogues.py"
+COMMAND = "python crankbase/locale/compile_catalogues.py"
 
 # one .po line that is not a comment: a keyword with one quoted string, or a quoted string
 _LINE = re.compile(r'(?:(msgctxt|msgid|msgid_plural|msgstr(?:\[\d+\])?)[ \t]+)?'
