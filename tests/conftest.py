@@ -407,24 +407,3 @@ def loaded_workbook():
 
     get.cache = cache
     return get
-
-
-# ------------------------------------------------------------------------- tests-testcpu
-def _keep_the_rewritten_tests():
-    """pytest rewrites the ``assert`` statements of every test module (and conftest) it
-    imports, an AST pass and a compile of ~23,000 lines: ~5 s of CPU in every process that
-    collects the suite (each xdist worker does).  It keeps the result in ``__pycache__``
-    (``*-pytest-*.pyc``, checked against the source's size and time) and reuses it on the
-    next run, unless bytecode writing is off (``PYTHONDONTWRITEBYTECODE`` set, ``python
-    -B``): then every run, in every worker, rewrites all of it anew.  The test processes
-    write bytecode again from here on (into the ``__pycache__`` folders ``.gitignore``
-    leaves out; the modules imported before this line are not concerned), so a second run
-    collects in ~3 s instead of ~8.  What is rewritten and run is the same either way.
-    ``CRANKDYN_TEST_BYTECODE=0`` leaves the interpreter's choice alone."""
-    import sys
-
-    if sys.dont_write_bytecode and os.environ.get("CRANKDYN_TEST_BYTECODE", "1") != "0":
-        sys.dont_write_bytecode = False
-
-
-_keep_the_rewritten_tests()
