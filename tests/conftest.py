@@ -30,6 +30,7 @@ if os.environ.get("CI"):
     settings.load_profile("ci")
 
 
+@pytest.hookimpl(tryfirst=True)     # before xdist's, which reads the groups (below)
 def pytest_collection_modifyitems(config, items):
     """Every test that uses a module-scoped fixture goes to the ``xdist_group`` of its
     module (and of the fixture's parameter, when the fixture is parametrized): under

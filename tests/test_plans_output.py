@@ -30,12 +30,17 @@ def _pages(pdf_path):
     return [(float(c) - float(a), float(d) - float(b)) for a, b, c, d in boxes]
 
 
+#: ``crankdyn linkage --example --plans 5,11 --no-plots`` (the ratchet, Russian): the
+#: session's shared run (read-only), which tests/test_cli_linkage.py reads too (its
+#: Russian terminal text with the plans' lines).
+RATCHET_PLANS_ARGV = ("linkage", "--example", "--plans", "5,11", "--no-plots")
+
+
 @pytest.fixture(scope="module")
-def ratchet_run(tmp_path_factory):
-    out = tmp_path_factory.mktemp("plans_ratchet")
-    assert main(["linkage", str(example_path("ratchet.toml")), "-o", str(out),
-                 "--plans", "5,11", "--no-plots"]) == 0
-    return out
+def ratchet_run(cli_report):
+    rep = cli_report(*RATCHET_PLANS_ARGV)
+    assert rep.rc == 0, rep.err
+    return rep.folder
 
 
 @pytest.fixture(scope="module")
