@@ -429,3 +429,29 @@ def web_app_kept(web_app):
     state.studies.size = max(state.studies.size, WEB_KEPT_STUDIES)
     state.drawn.size = max(state.drawn.size, WEB_KEPT_STUDIES)
     return web_app
+
+
+#: The xdist group of the web test modules (their ``pytestmark``).
+WEB_GROUP = "web"
+
+
+@pytest.hookimpl(specname="pytest_collection_modifyitems", trylast=True)
+def pytest_collection_modifyitems_web_group(config, items):
+    """The web modules' tests named with their group (``<nodeid>@web``) in an xdist worker
+    under ``--dist loadgroup``, as pytest-xdist names a grouped test for its scheduler to
+    send the group to one worker.  pytest-xdist 3.8 does it by setting ``item._nodeid``,
+    which pytest 9 no longer reads (a node's id is ``item._id``, a ``NodeId``): its names
+    are lost, and every ``xdist_group`` (this file's module groups too) is spread over
+    the workers.  Done here for the group :data:`WEB_GROUP` only, and only where xdist's
+    naming had no effect (a name without ``@``)."""
+    if not getattr(config.option, "loadgroup", False):
+        return
+    try:
+        from _pytest.nodeid import NodeId
+    except ImportError:                 # an older pytest: xdist names the tests itself
+        return
+    for item in items:
+        names = {str(m.args[0] if m.args else m.kwargs.get("name", "default"))
+                 for m in item.iter_markers("xdist_group")}
+        if WEB_GROUP in names and "@" not in item.nodeid and hasattr(item, "_id"):
+            item._id = NodeId.parse(f"{item.nodeid}@{'_'.join(sorted(names))}")
