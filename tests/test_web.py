@@ -252,6 +252,104 @@ def test_a_bad_counterweight_row_is_shown_at_the_rows_field(app):
     assert err and "balance.counterweight[1].mr_kg_mm" in err.group(1), html[-4000:]
 
 
+# ------------------------------------------------------------ the app's kept studies
+# The two tests clearing the app's kept studies (web.app.StudyCache, DrawnCache) run
+# before any other run of the web modules (one app for them all, tests/conftest.py
+# ``web_app_kept``), so that what the others compute and draw is kept for those asking
+# for it again.
+def test_the_same_study_asked_again_is_drawn_again_but_not_computed_again(app,
+                                                                          monkeypatch):
+    """A session's flywheel run posted again in Russian (web.app._same_study): the
+    library's study runs once, the second run's CSVs are the first's byte for byte, its
+    summary and figures are Russian (drawn again, from the first run's report); a changed
+    value is computed again, with other numbers.  Another session's run of the same
+    spec is not computed again either (web.app.StudyCache: one study for a class), and
+    its CSVs are the first's byte for byte."""
+    import dynamics.study as study
+
+    real, calls = study.run_study, []
+    monkeypatch.setattr(study, "run_study", lambda *a, **k: calls.append(1) or real(*a, **k))
+    app.app.state.studies.clear()           # the app's earlier tests' studies forgotten
+    app.app.state.drawn.clear()
+
+    def files(html, ext):
+        urls = re.findall(rf'(?:href|src)="(/dynamics/run/\d+/[^"]+\.{ext})"', html)
+        return {u.rsplit("/", 1)[1]: c.get(u).content for u in urls}
+
+    c = client(app)
+    c.post("/dynamics/example", data={"example": "flywheel"})
+    vals = form_values(c.get("/dynamics").text)
+    first = c.post("/dynamics/run", data=vals).text
+    assert 'id="results"' in first and calls == [1]
+    csv1, png1 = files(first, "csv"), files(first, "png")
+    again = c.post("/dynamics/run?lang=ru", data=vals).text
+    assert 'id="results"' in again and calls == [1]            # not computed again
+    summary = re.search(r'<pre id="summary">(.*?)</pre>', again, re.S).group(1)
+    assert re.search("[А-Яа-яЁё]", summary) and not re.search(
+        "[А-Яа-яЁё]", re.search(r'<pre id="summary">(.*?)</pre>', first, re.S).group(1))
+    csv2, png2 = files(again, "csv"), files(again, "png")
+    assert csv1 and csv2 == csv1
+    assert sorted(png2) == sorted(png1) and all(png2[n][:4] == b"\x89PNG" for n in png2)
+    assert any(png2[n] != png1[n] for n in png1)                # drawn again, in Russian
+    vals["machine.J_red_kgm2"] = "0.3"
+    other = c.post("/dynamics/run?lang=ru", data=vals).text
+    assert 'id="results"' in other and calls == [1, 1]         # a new study: computed
+    csv3 = files(other, "csv")
+    assert sorted(csv3) == sorted(csv1) and csv3 != csv1
+    # a second session (a classmate) posting the example's values in English: the app's
+    # study, and the files drawn for the first run (web.app.DrawnCache), its own links
+    render, drawn = app.app.state.render, []
+    real_submit = render.submit
+    monkeypatch.setattr(render, "submit", lambda *a, **k: drawn.append(1) or
+                        real_submit(*a, **k))
+    c2 = client(app)
+    c2.post("/dynamics/example", data={"example": "flywheel"})
+    vals2 = form_values(c2.get("/dynamics").text)
+    assert vals2["machine.J_red_kgm2"] != "0.3"
+    html = c2.post("/dynamics/run", data=vals2).text
+    assert 'id="results"' in html and calls == [1, 1]          # not computed again
+    assert drawn == []                                          # nor drawn again
+    got = {}
+    for ext in ("csv", "png", "xlsx", "toml"):
+        urls = re.findall(rf'(?:href|src)="(/dynamics/run/\d+/[^"]+\.{ext})"', html)
+        got[ext] = {u.rsplit("/", 1)[1]: c2.get(u).content for u in urls}
+    assert got["csv"] == csv1 and got["png"] == png1
+    assert got["xlsx"] and got["toml"]
+    s1 = app.app.state.store.get(c.cookies["crankdyn_session"]).folder
+    s2 = app.app.state.store.get(c2.cookies["crankdyn_session"]).folder
+    # the first run's folder is gone (its session ran again), its files were kept
+    assert not (s1 / "dynamics-1").exists()
+    assert sorted(p.name for p in (s2 / "dynamics-1").rglob("*.png")) == sorted(png1)
+    # in Russian, the classmate gets the first session's Russian files; a changed
+    # value is drawn (and computed) anew
+    again2 = c2.post("/dynamics/run?lang=ru", data=vals2).text
+    assert drawn == [] and calls == [1, 1]
+    urls = re.findall(r'(?:href|src)="(/dynamics/run/\d+/[^"]+\.png)"', again2)
+    assert {u.rsplit("/", 1)[1]: c2.get(u).content for u in urls} == png2
+    vals2["machine.J_red_kgm2"] = "0.31"
+    assert 'id="results"' in c2.post("/dynamics/run", data=vals2).text
+    assert drawn == [1] and calls == [1, 1, 1]
+
+
+def test_a_crashing_job_shows_an_error_in_its_session_and_the_server_goes_on(app, monkeypatch):
+    import engine
+
+    real = engine.run_study
+
+    def boom(*a, **k):
+        raise ZeroDivisionError("a bug")
+    monkeypatch.setattr(engine, "run_study", boom)
+    app.app.state.studies.clear()      # the petrol example computed again, by the bug
+    c = client(app)
+    c.post("/engine/example", data={"example": "petrol"})
+    r = c.post("/engine/run", data=form_values(c.get("/engine").text))
+    assert r.status_code == 500 and "ZeroDivisionError" in r.text and "internal error" in r.text
+    monkeypatch.setattr(engine, "run_study", real)
+    other = client(app)
+    assert "petrol-vaz2106" in run_petrol(other)
+    assert 'id="results"' not in c.get("/engine").text        # the crashed one: no results
+
+
 # ----------------------------------------------------------------------------- results
 def test_table2_on_the_page_and_the_downloads_equal_the_cli_files(petrol_page, tmp_path,
                                                                   cli_report,
@@ -388,25 +486,6 @@ def test_an_upload_over_the_limit_gets_a_clear_message(app):
         r = c.post("/engine/upload", files={"spec": ("s.toml", b"#" * 1_600_000, "text/plain")})
         assert r.status_code == 413 and words in r.text
         assert c.get("/engine").status_code == 200             # the server goes on
-
-
-def test_a_crashing_job_shows_an_error_in_its_session_and_the_server_goes_on(app, monkeypatch):
-    import engine
-
-    real = engine.run_study
-
-    def boom(*a, **k):
-        raise ZeroDivisionError("a bug")
-    monkeypatch.setattr(engine, "run_study", boom)
-    app.app.state.studies.clear()      # the petrol example computed again, by the bug
-    c = client(app)
-    c.post("/engine/example", data={"example": "petrol"})
-    r = c.post("/engine/run", data=form_values(c.get("/engine").text))
-    assert r.status_code == 500 and "ZeroDivisionError" in r.text and "internal error" in r.text
-    monkeypatch.setattr(engine, "run_study", real)
-    other = client(app)
-    assert "petrol-vaz2106" in run_petrol(other)
-    assert 'id="results"' not in c.get("/engine").text        # the crashed one: no results
 
 
 def test_idle_sessions_and_shutdown_remove_their_folders(tmp_path):
@@ -639,80 +718,6 @@ def test_the_dynamics_page_equals_crankdyn_dynamics(app, tmp_path, example, key,
     assert head == want[0] and rows == want[1:PAGE_ROWS + 1]       # the first rows
     if len(want) - 1 > PAGE_ROWS:
         assert f"The first {PAGE_ROWS} of {len(want) - 1} rows" in r.text
-
-
-def test_the_same_study_asked_again_is_drawn_again_but_not_computed_again(app,
-                                                                          monkeypatch):
-    """A session's flywheel run posted again in Russian (web.app._same_study): the
-    library's study runs once, the second run's CSVs are the first's byte for byte, its
-    summary and figures are Russian (drawn again, from the first run's report); a changed
-    value is computed again, with other numbers.  Another session's run of the same
-    spec is not computed again either (web.app.StudyCache: one study for a class), and
-    its CSVs are the first's byte for byte."""
-    import dynamics.study as study
-
-    real, calls = study.run_study, []
-    monkeypatch.setattr(study, "run_study", lambda *a, **k: calls.append(1) or real(*a, **k))
-    app.app.state.studies.clear()           # the app's earlier tests' studies forgotten
-    app.app.state.drawn.clear()
-
-    def files(html, ext):
-        urls = re.findall(rf'(?:href|src)="(/dynamics/run/\d+/[^"]+\.{ext})"', html)
-        return {u.rsplit("/", 1)[1]: c.get(u).content for u in urls}
-
-    c = client(app)
-    c.post("/dynamics/example", data={"example": "flywheel"})
-    vals = form_values(c.get("/dynamics").text)
-    first = c.post("/dynamics/run", data=vals).text
-    assert 'id="results"' in first and calls == [1]
-    csv1, png1 = files(first, "csv"), files(first, "png")
-    again = c.post("/dynamics/run?lang=ru", data=vals).text
-    assert 'id="results"' in again and calls == [1]            # not computed again
-    summary = re.search(r'<pre id="summary">(.*?)</pre>', again, re.S).group(1)
-    assert re.search("[А-Яа-яЁё]", summary) and not re.search(
-        "[А-Яа-яЁё]", re.search(r'<pre id="summary">(.*?)</pre>', first, re.S).group(1))
-    csv2, png2 = files(again, "csv"), files(again, "png")
-    assert csv1 and csv2 == csv1
-    assert sorted(png2) == sorted(png1) and all(png2[n][:4] == b"\x89PNG" for n in png2)
-    assert any(png2[n] != png1[n] for n in png1)                # drawn again, in Russian
-    vals["machine.J_red_kgm2"] = "0.3"
-    other = c.post("/dynamics/run?lang=ru", data=vals).text
-    assert 'id="results"' in other and calls == [1, 1]         # a new study: computed
-    csv3 = files(other, "csv")
-    assert sorted(csv3) == sorted(csv1) and csv3 != csv1
-    # a second session (a classmate) posting the example's values in English: the app's
-    # study, and the files drawn for the first run (web.app.DrawnCache), its own links
-    render, drawn = app.app.state.render, []
-    real_submit = render.submit
-    monkeypatch.setattr(render, "submit", lambda *a, **k: drawn.append(1) or
-                        real_submit(*a, **k))
-    c2 = client(app)
-    c2.post("/dynamics/example", data={"example": "flywheel"})
-    vals2 = form_values(c2.get("/dynamics").text)
-    assert vals2["machine.J_red_kgm2"] != "0.3"
-    html = c2.post("/dynamics/run", data=vals2).text
-    assert 'id="results"' in html and calls == [1, 1]          # not computed again
-    assert drawn == []                                          # nor drawn again
-    got = {}
-    for ext in ("csv", "png", "xlsx", "toml"):
-        urls = re.findall(rf'(?:href|src)="(/dynamics/run/\d+/[^"]+\.{ext})"', html)
-        got[ext] = {u.rsplit("/", 1)[1]: c2.get(u).content for u in urls}
-    assert got["csv"] == csv1 and got["png"] == png1
-    assert got["xlsx"] and got["toml"]
-    s1 = app.app.state.store.get(c.cookies["crankdyn_session"]).folder
-    s2 = app.app.state.store.get(c2.cookies["crankdyn_session"]).folder
-    # the first run's folder is gone (its session ran again), its files were kept
-    assert not (s1 / "dynamics-1").exists()
-    assert sorted(p.name for p in (s2 / "dynamics-1").rglob("*.png")) == sorted(png1)
-    # in Russian, the classmate gets the first session's Russian files; a changed
-    # value is drawn (and computed) anew
-    again2 = c2.post("/dynamics/run?lang=ru", data=vals2).text
-    assert drawn == [] and calls == [1, 1]
-    urls = re.findall(r'(?:href|src)="(/dynamics/run/\d+/[^"]+\.png)"', again2)
-    assert {u.rsplit("/", 1)[1]: c2.get(u).content for u in urls} == png2
-    vals2["machine.J_red_kgm2"] = "0.31"
-    assert 'id="results"' in c2.post("/dynamics/run", data=vals2).text
-    assert drawn == [1] and calls == [1, 1, 1]
 
 
 def test_the_kept_drawn_files_are_links_the_oldest_dropped_beyond_the_size(tmp_path):
