@@ -621,9 +621,9 @@ def test_the_bearing_and_drawing_options_add_their_tables_figures_and_pdfs(app):
 def test_the_linkage_page_runs_the_ratchet_like_the_cli(app, tmp_path, cli_report,
                                                         unrendered_figures):
     """The ratchet drive with a new crank speed: every CSV byte for byte and the workbook
-    part for part (:func:`workbook_parts`) equal to ``crankdyn linkage`` on the downloaded spec (the CLI's
-    figures saved unrendered: the page's own, drawn in the app's render processes, are
-    checked as PNG)."""
+    part for part (:func:`workbook_parts`) equal to ``crankdyn linkage`` on the downloaded
+    spec (the CLI's figures saved unrendered: the page's own, drawn in the app's render
+    processes, are checked as PNG)."""
     from crankdyn.cli import main
 
     c = client(app)
