@@ -408,3 +408,26 @@ def loaded_workbook():
 
     get.cache = cache
     return get
+
+
+# ---------------------------------------------------------------------------- tests-webcpu
+#: Studies the tests' app keeps, with the files drawn for each in every language
+#: (``web.app.StudyCache`` and ``DrawnCache``; the app's default is 8): more than the web
+#: test modules ask for (about 35), so that a study one module asks again (the browser's
+#: runs repeat the TestClient modules' examples) is neither computed nor drawn again.
+WEB_KEPT_STUDIES = 64
+
+
+@pytest.fixture(scope="session")
+def web_app_kept(web_app):
+    """The session's app (:func:`web_app`) keeping :data:`WEB_KEPT_STUDIES` studies and
+    their drawn files, for the web test modules, which all run on one xdist worker (their
+    ``pytestmark``: the group ``web``), so one app serves them all: a study computed and
+    drawn for one module is linked for another asking for it in the same language (byte
+    for byte the files its drawing would write, ``DrawnCache``'s own guarantee, checked in
+    tests/test_web.py).  The tests of the caches themselves clear them first."""
+    state = web_app.app.state
+    state.studies.size = max(state.studies.size, WEB_KEPT_STUDIES)
+    state.drawn.size = max(state.drawn.size, WEB_KEPT_STUDIES)
+    return web_app
+

@@ -3,7 +3,7 @@ to their fields, downloads equal to the CLI's files, sessions isolated, limits, 
 
 The reference of every number is the CLI (``crankdyn engine``) on the same spec: the
 page computes through the same library calls, so its CSVs must be byte-identical and its
-workbook equal value for value.
+workbook the same file but for the time of its save (:func:`workbook_parts`).
 """
 from __future__ import annotations
 
@@ -25,11 +25,17 @@ from crankbase.resources import example_path  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 
+#: Every web test module runs on one xdist worker (``--dist loadgroup``), with one app
+#: (tests/conftest.py ``web_app_kept``): the studies and drawings one module asks for are
+#: not computed and drawn again for another, and the app's drawing processes start once.
+#: (A module-level mark: the group is known when xdist names the tests.)
+pytestmark = pytest.mark.xdist_group("web")
+
 
 @pytest.fixture(scope="module")
-def app(web_app):
-    """The session's app (tests/conftest.py ``web_app``)."""
-    return web_app
+def app(web_app_kept):
+    """The session's app (tests/conftest.py ``web_app_kept``)."""
+    return web_app_kept
 
 
 @pytest.fixture(autouse=True)
@@ -85,11 +91,22 @@ def page_table(html, table_id="table2"):
     return head, [r for r in rows if r]
 
 
-def workbook_values(path):
-    import openpyxl
+#: The save time in a workbook's docProps/core.xml: the one thing two saves of the same
+#: workbook differ in.
+SAVE_TIME = re.compile(rb"(<dcterms:(?:created|modified)[^>]*>)[^<]*(</dcterms:)")
 
-    wb = openpyxl.load_workbook(path)
-    return {ws.title: [[c.value for c in row] for row in ws.iter_rows()] for ws in wb}
+
+def workbook_parts(data):
+    """Every part of a workbook (an .xlsx is a zip; ``data``: its bytes or path) by name,
+    byte for byte, but the time of the save in docProps/core.xml.  Two workbooks equal so
+    are the same file but for when it was saved: every sheet, cell, value, style and chart
+    (a comparison stronger than value for value, and without parsing the sheets: the
+    library writes a report's workbook the same way from the same numbers,
+    tests/test_workbook_writing.py)."""
+    z = zipfile.ZipFile(io.BytesIO(data) if isinstance(data, bytes) else data)
+    parts = {i.filename: z.read(i.filename) for i in z.infolist()}
+    parts["docProps/core.xml"] = SAVE_TIME.sub(rb"\1\2", parts["docProps/core.xml"])
+    return parts
 
 
 def run_petrol(c, speed="4000.0"):
@@ -235,6 +252,104 @@ def test_a_bad_counterweight_row_is_shown_at_the_rows_field(app):
     assert err and "balance.counterweight[1].mr_kg_mm" in err.group(1), html[-4000:]
 
 
+# ------------------------------------------------------------ the app's kept studies
+# The two tests clearing the app's kept studies (web.app.StudyCache, DrawnCache) run
+# before any other run of the web modules (one app for them all, tests/conftest.py
+# ``web_app_kept``), so that what the others compute and draw is kept for those asking
+# for it again.
+def test_the_same_study_asked_again_is_drawn_again_but_not_computed_again(app,
+                                                                          monkeypatch):
+    """A session's flywheel run posted again in Russian (web.app._same_study): the
+    library's study runs once, the second run's CSVs are the first's byte for byte, its
+    summary and figures are Russian (drawn again, from the first run's report); a changed
+    value is computed again, with other numbers.  Another session's run of the same
+    spec is not computed again either (web.app.StudyCache: one study for a class), and
+    its CSVs are the first's byte for byte."""
+    import dynamics.study as study
+
+    real, calls = study.run_study, []
+    monkeypatch.setattr(study, "run_study", lambda *a, **k: calls.append(1) or real(*a, **k))
+    app.app.state.studies.clear()           # the app's earlier tests' studies forgotten
+    app.app.state.drawn.clear()
+
+    def files(html, ext):
+        urls = re.findall(rf'(?:href|src)="(/dynamics/run/\d+/[^"]+\.{ext})"', html)
+        return {u.rsplit("/", 1)[1]: c.get(u).content for u in urls}
+
+    c = client(app)
+    c.post("/dynamics/example", data={"example": "flywheel"})
+    vals = form_values(c.get("/dynamics").text)
+    first = c.post("/dynamics/run", data=vals).text
+    assert 'id="results"' in first and calls == [1]
+    csv1, png1 = files(first, "csv"), files(first, "png")
+    again = c.post("/dynamics/run?lang=ru", data=vals).text
+    assert 'id="results"' in again and calls == [1]            # not computed again
+    summary = re.search(r'<pre id="summary">(.*?)</pre>', again, re.S).group(1)
+    assert re.search("[А-Яа-яЁё]", summary) and not re.search(
+        "[А-Яа-яЁё]", re.search(r'<pre id="summary">(.*?)</pre>', first, re.S).group(1))
+    csv2, png2 = files(again, "csv"), files(again, "png")
+    assert csv1 and csv2 == csv1
+    assert sorted(png2) == sorted(png1) and all(png2[n][:4] == b"\x89PNG" for n in png2)
+    assert any(png2[n] != png1[n] for n in png1)                # drawn again, in Russian
+    vals["machine.J_red_kgm2"] = "0.3"
+    other = c.post("/dynamics/run?lang=ru", data=vals).text
+    assert 'id="results"' in other and calls == [1, 1]         # a new study: computed
+    csv3 = files(other, "csv")
+    assert sorted(csv3) == sorted(csv1) and csv3 != csv1
+    # a second session (a classmate) posting the example's values in English: the app's
+    # study, and the files drawn for the first run (web.app.DrawnCache), its own links
+    render, drawn = app.app.state.render, []
+    real_submit = render.submit
+    monkeypatch.setattr(render, "submit", lambda *a, **k: drawn.append(1) or
+                        real_submit(*a, **k))
+    c2 = client(app)
+    c2.post("/dynamics/example", data={"example": "flywheel"})
+    vals2 = form_values(c2.get("/dynamics").text)
+    assert vals2["machine.J_red_kgm2"] != "0.3"
+    html = c2.post("/dynamics/run", data=vals2).text
+    assert 'id="results"' in html and calls == [1, 1]          # not computed again
+    assert drawn == []                                          # nor drawn again
+    got = {}
+    for ext in ("csv", "png", "xlsx", "toml"):
+        urls = re.findall(rf'(?:href|src)="(/dynamics/run/\d+/[^"]+\.{ext})"', html)
+        got[ext] = {u.rsplit("/", 1)[1]: c2.get(u).content for u in urls}
+    assert got["csv"] == csv1 and got["png"] == png1
+    assert got["xlsx"] and got["toml"]
+    s1 = app.app.state.store.get(c.cookies["crankdyn_session"]).folder
+    s2 = app.app.state.store.get(c2.cookies["crankdyn_session"]).folder
+    # the first run's folder is gone (its session ran again), its files were kept
+    assert not (s1 / "dynamics-1").exists()
+    assert sorted(p.name for p in (s2 / "dynamics-1").rglob("*.png")) == sorted(png1)
+    # in Russian, the classmate gets the first session's Russian files; a changed
+    # value is drawn (and computed) anew
+    again2 = c2.post("/dynamics/run?lang=ru", data=vals2).text
+    assert drawn == [] and calls == [1, 1]
+    urls = re.findall(r'(?:href|src)="(/dynamics/run/\d+/[^"]+\.png)"', again2)
+    assert {u.rsplit("/", 1)[1]: c2.get(u).content for u in urls} == png2
+    vals2["machine.J_red_kgm2"] = "0.31"
+    assert 'id="results"' in c2.post("/dynamics/run", data=vals2).text
+    assert drawn == [1] and calls == [1, 1, 1]
+
+
+def test_a_crashing_job_shows_an_error_in_its_session_and_the_server_goes_on(app, monkeypatch):
+    import engine
+
+    real = engine.run_study
+
+    def boom(*a, **k):
+        raise ZeroDivisionError("a bug")
+    monkeypatch.setattr(engine, "run_study", boom)
+    app.app.state.studies.clear()      # the petrol example computed again, by the bug
+    c = client(app)
+    c.post("/engine/example", data={"example": "petrol"})
+    r = c.post("/engine/run", data=form_values(c.get("/engine").text))
+    assert r.status_code == 500 and "ZeroDivisionError" in r.text and "internal error" in r.text
+    monkeypatch.setattr(engine, "run_study", real)
+    other = client(app)
+    assert "petrol-vaz2106" in run_petrol(other)
+    assert 'id="results"' not in c.get("/engine").text        # the crashed one: no results
+
+
 # ----------------------------------------------------------------------------- results
 def test_table2_on_the_page_and_the_downloads_equal_the_cli_files(petrol_page, tmp_path,
                                                                   cli_report,
@@ -261,8 +376,8 @@ def test_table2_on_the_page_and_the_downloads_equal_the_cli_files(petrol_page, t
     assert len(csvs) == 5
     for name in csvs:
         assert (got / name).read_bytes() == (cli / name).read_bytes(), name
-    assert workbook_values(got / "petrol-vaz2106.xlsx") == \
-        workbook_values(cli / "petrol-vaz2106.xlsx")
+    assert workbook_parts(got / "petrol-vaz2106.xlsx") == \
+        workbook_parts(cli / "petrol-vaz2106.xlsx")
     # Table 2 on the page: the CSV's own text, every row (the page scrolls)
     head, rows = page_table(html)
     with open(cli / "petrol-vaz2106_forces.csv", newline="") as fh:
@@ -371,25 +486,6 @@ def test_an_upload_over_the_limit_gets_a_clear_message(app):
         r = c.post("/engine/upload", files={"spec": ("s.toml", b"#" * 1_600_000, "text/plain")})
         assert r.status_code == 413 and words in r.text
         assert c.get("/engine").status_code == 200             # the server goes on
-
-
-def test_a_crashing_job_shows_an_error_in_its_session_and_the_server_goes_on(app, monkeypatch):
-    import engine
-
-    real = engine.run_study
-
-    def boom(*a, **k):
-        raise ZeroDivisionError("a bug")
-    monkeypatch.setattr(engine, "run_study", boom)
-    app.app.state.studies.clear()      # the petrol example computed again, by the bug
-    c = client(app)
-    c.post("/engine/example", data={"example": "petrol"})
-    r = c.post("/engine/run", data=form_values(c.get("/engine").text))
-    assert r.status_code == 500 and "ZeroDivisionError" in r.text and "internal error" in r.text
-    monkeypatch.setattr(engine, "run_study", real)
-    other = client(app)
-    assert "petrol-vaz2106" in run_petrol(other)
-    assert 'id="results"' not in c.get("/engine").text        # the crashed one: no results
 
 
 def test_idle_sessions_and_shutdown_remove_their_folders(tmp_path):
@@ -525,9 +621,9 @@ def test_the_bearing_and_drawing_options_add_their_tables_figures_and_pdfs(app):
 def test_the_linkage_page_runs_the_ratchet_like_the_cli(app, tmp_path, cli_report,
                                                         unrendered_figures):
     """The ratchet drive with a new crank speed: every CSV byte for byte and the workbook
-    value for value equal to ``crankdyn linkage`` on the downloaded spec (the CLI's
-    figures saved unrendered: the page's own, drawn in the app's render processes, are
-    checked as PNG)."""
+    part for part (:func:`workbook_parts`) equal to ``crankdyn linkage`` on the downloaded
+    spec (the CLI's figures saved unrendered: the page's own, drawn in the app's render
+    processes, are checked as PNG)."""
     from crankdyn.cli import main
 
     c = client(app)
@@ -550,14 +646,15 @@ def test_the_linkage_page_runs_the_ratchet_like_the_cli(app, tmp_path, cli_repor
     assert main(["linkage", str(spec), "-o", str(out), "--lang", "en", "--step", "2"]) == 0
     for name in ("ratchet-drive_kinematics.csv", "ratchet-drive_forces.csv"):
         assert got[name] == (out / name).read_bytes(), name
-    (tmp_path / "w.xlsx").write_bytes(got["ratchet-drive.xlsx"])
-    assert workbook_values(tmp_path / "w.xlsx") == workbook_values(out / "ratchet-drive.xlsx")
+    assert workbook_parts(got["ratchet-drive.xlsx"]) == \
+        workbook_parts(out / "ratchet-drive.xlsx")
     head, rows = page_table(r.text)
     with open(out / "ratchet-drive_kinematics.csv", newline="") as fh:
         assert [head, *rows] == list(csv.reader(fh))
     figs = re.findall(r'<img src="(/linkage/run/\d+/[^"]+\.png)"', r.text)
     assert len(figs) == 5 and all(c.get(u).content[:4] == b"\x89PNG" for u in figs)
-    base = shared(cli_report("linkage", "--example", "ratchet", "--lang", "en"))
+    # the example's own run: only its forces.csv is read (the session's run without figures)
+    base = shared(cli_report("linkage", "--example", "ratchet", "--no-plots", "--lang", "en"))
     assert (base / "ratchet-drive_forces.csv").read_bytes() != got["ratchet-drive_forces.csv"]
 
 
@@ -589,7 +686,7 @@ def test_linkage_problems_stand_at_their_fields(app, lang):
 def test_the_dynamics_page_equals_crankdyn_dynamics(app, tmp_path, example, key, value,
                                                     unrendered_figures):
     """The page's files equal ``crankdyn dynamics`` on its downloaded spec: CSVs byte for
-    byte, the workbook value for value, the CLI's figures by name (saved unrendered) among
+    byte, the workbook part for part, the CLI's figures by name (saved unrendered) among
     the page's, which are PNG (drawn in the app's render processes)."""
     from crankdyn.cli import main
 
@@ -610,8 +707,7 @@ def test_the_dynamics_page_equals_crankdyn_dynamics(app, tmp_path, example, key,
     csvs = sorted(p.name for p in out.glob("*.csv"))
     assert csvs and all(got[n] == (out / n).read_bytes() for n in csvs), csvs
     xlsx = next(p.name for p in out.glob("*.xlsx"))
-    (tmp_path / "w.xlsx").write_bytes(got[xlsx])
-    assert workbook_values(tmp_path / "w.xlsx") == workbook_values(out / xlsx)
+    assert workbook_parts(got[xlsx]) == workbook_parts(out / xlsx)
     pngs = sorted(p.name for p in out.glob("*.png"))
     assert pngs and all(got[n][:4] == b"\x89PNG" for n in pngs)
     head, rows = page_table(r.text)
@@ -622,80 +718,6 @@ def test_the_dynamics_page_equals_crankdyn_dynamics(app, tmp_path, example, key,
     assert head == want[0] and rows == want[1:PAGE_ROWS + 1]       # the first rows
     if len(want) - 1 > PAGE_ROWS:
         assert f"The first {PAGE_ROWS} of {len(want) - 1} rows" in r.text
-
-
-def test_the_same_study_asked_again_is_drawn_again_but_not_computed_again(app,
-                                                                          monkeypatch):
-    """A session's flywheel run posted again in Russian (web.app._same_study): the
-    library's study runs once, the second run's CSVs are the first's byte for byte, its
-    summary and figures are Russian (drawn again, from the first run's report); a changed
-    value is computed again, with other numbers.  Another session's run of the same
-    spec is not computed again either (web.app.StudyCache: one study for a class), and
-    its CSVs are the first's byte for byte."""
-    import dynamics.study as study
-
-    real, calls = study.run_study, []
-    monkeypatch.setattr(study, "run_study", lambda *a, **k: calls.append(1) or real(*a, **k))
-    app.app.state.studies.clear()           # the app's earlier tests' studies forgotten
-    app.app.state.drawn.clear()
-
-    def files(html, ext):
-        urls = re.findall(rf'(?:href|src)="(/dynamics/run/\d+/[^"]+\.{ext})"', html)
-        return {u.rsplit("/", 1)[1]: c.get(u).content for u in urls}
-
-    c = client(app)
-    c.post("/dynamics/example", data={"example": "flywheel"})
-    vals = form_values(c.get("/dynamics").text)
-    first = c.post("/dynamics/run", data=vals).text
-    assert 'id="results"' in first and calls == [1]
-    csv1, png1 = files(first, "csv"), files(first, "png")
-    again = c.post("/dynamics/run?lang=ru", data=vals).text
-    assert 'id="results"' in again and calls == [1]            # not computed again
-    summary = re.search(r'<pre id="summary">(.*?)</pre>', again, re.S).group(1)
-    assert re.search("[А-Яа-яЁё]", summary) and not re.search(
-        "[А-Яа-яЁё]", re.search(r'<pre id="summary">(.*?)</pre>', first, re.S).group(1))
-    csv2, png2 = files(again, "csv"), files(again, "png")
-    assert csv1 and csv2 == csv1
-    assert sorted(png2) == sorted(png1) and all(png2[n][:4] == b"\x89PNG" for n in png2)
-    assert any(png2[n] != png1[n] for n in png1)                # drawn again, in Russian
-    vals["machine.J_red_kgm2"] = "0.3"
-    other = c.post("/dynamics/run?lang=ru", data=vals).text
-    assert 'id="results"' in other and calls == [1, 1]         # a new study: computed
-    csv3 = files(other, "csv")
-    assert sorted(csv3) == sorted(csv1) and csv3 != csv1
-    # a second session (a classmate) posting the example's values in English: the app's
-    # study, and the files drawn for the first run (web.app.DrawnCache), its own links
-    render, drawn = app.app.state.render, []
-    real_submit = render.submit
-    monkeypatch.setattr(render, "submit", lambda *a, **k: drawn.append(1) or
-                        real_submit(*a, **k))
-    c2 = client(app)
-    c2.post("/dynamics/example", data={"example": "flywheel"})
-    vals2 = form_values(c2.get("/dynamics").text)
-    assert vals2["machine.J_red_kgm2"] != "0.3"
-    html = c2.post("/dynamics/run", data=vals2).text
-    assert 'id="results"' in html and calls == [1, 1]          # not computed again
-    assert drawn == []                                          # nor drawn again
-    got = {}
-    for ext in ("csv", "png", "xlsx", "toml"):
-        urls = re.findall(rf'(?:href|src)="(/dynamics/run/\d+/[^"]+\.{ext})"', html)
-        got[ext] = {u.rsplit("/", 1)[1]: c2.get(u).content for u in urls}
-    assert got["csv"] == csv1 and got["png"] == png1
-    assert got["xlsx"] and got["toml"]
-    s1 = app.app.state.store.get(c.cookies["crankdyn_session"]).folder
-    s2 = app.app.state.store.get(c2.cookies["crankdyn_session"]).folder
-    # the first run's folder is gone (its session ran again), its files were kept
-    assert not (s1 / "dynamics-1").exists()
-    assert sorted(p.name for p in (s2 / "dynamics-1").rglob("*.png")) == sorted(png1)
-    # in Russian, the classmate gets the first session's Russian files; a changed
-    # value is drawn (and computed) anew
-    again2 = c2.post("/dynamics/run?lang=ru", data=vals2).text
-    assert drawn == [] and calls == [1, 1]
-    urls = re.findall(r'(?:href|src)="(/dynamics/run/\d+/[^"]+\.png)"', again2)
-    assert {u.rsplit("/", 1)[1]: c2.get(u).content for u in urls} == png2
-    vals2["machine.J_red_kgm2"] = "0.31"
-    assert 'id="results"' in c2.post("/dynamics/run", data=vals2).text
-    assert drawn == [1] and calls == [1, 1, 1]
 
 
 def test_the_kept_drawn_files_are_links_the_oldest_dropped_beyond_the_size(tmp_path):

@@ -6,7 +6,8 @@ field.
 
 The reference of every number is the CLI on the same example (``crankdyn dynamics
 --example NAME``, ``crankdyn balance --example NAME``): the page computes through the same
-library calls, so its CSVs must be byte-identical, its workbook equal value for value and
+library calls, so its CSVs must be byte-identical, its workbook the same file (but for the
+time of its save, ``test_web.workbook_parts``) and
 its tables the CSV's text.  One page run per example (a module fixture), its figures PNG.
 """
 from __future__ import annotations
@@ -21,15 +22,21 @@ pytest.importorskip("starlette")  # the test extra installs it; a bare core inst
 from starlette.testclient import TestClient  # noqa: E402
 
 from crankbase.resources import example_path  # noqa: E402
-from test_web import form_values  # noqa: E402
+from test_web import form_values, workbook_parts  # noqa: E402
 
 CYRILLIC = re.compile("[А-Яа-яЁё]")
 
+#: Every web test module runs on one xdist worker (``--dist loadgroup``), with one app
+#: (tests/conftest.py ``web_app_kept``): the studies and drawings one module asks for are
+#: not computed and drawn again for another, and the app's drawing processes start once.
+#: (A module-level mark: the group is known when xdist names the tests.)
+pytestmark = pytest.mark.xdist_group("web")
+
 
 @pytest.fixture(scope="module")
-def app(web_app):
-    """The session's app (tests/conftest.py ``web_app``)."""
-    return web_app
+def app(web_app_kept):
+    """The session's app (tests/conftest.py ``web_app_kept``)."""
+    return web_app_kept
 
 
 @pytest.fixture(autouse=True)
@@ -76,15 +83,6 @@ def run_example(app, page, name, lang="en"):
     return r.text, downloads(c, page, r.text), vals
 
 
-def workbook_values(data, tmp_path, name):
-    import openpyxl
-
-    p = tmp_path / name
-    p.write_bytes(data)
-    wb = openpyxl.load_workbook(p)
-    return {ws.title: [[c.value for c in row] for row in ws.iter_rows()] for ws in wb}
-
-
 def csv_rows(path):
     with open(path, newline="", encoding="utf-8") as fh:
         return list(csv.reader(fh))
@@ -121,9 +119,9 @@ def bal_shaper(app):
     ("shaper", "dyn_shaper", "links.lever.points"),       # a chain's form
     ("petrol", "dyn_petrol", "pressure.cycle.pz_MPa"),    # an engine's form
 ])
-def test_the_dynamics_page_runs_the_cli_s_example(request, tmp_path, cli_report, example,
-                                                  fixture, form_key):
-    """Every CSV byte for byte and the workbook value for value equal to ``crankdyn
+def test_the_dynamics_page_runs_the_cli_s_example(request, cli_report, example, fixture,
+                                                  form_key):
+    """Every CSV byte for byte and the workbook part for part equal to ``crankdyn
     dynamics --example NAME``; the tables on the page are the CSVs' text; the form is the
     spec's kind's with ``[dynamics]``; the summary is the CLI's."""
     html, got, vals = request.getfixturevalue(fixture)
@@ -135,8 +133,7 @@ def test_the_dynamics_page_runs_the_cli_s_example(request, tmp_path, cli_report,
     for n in csvs:
         assert got[n] == (cli / n).read_bytes(), n
     xlsx = next(p.name for p in cli.glob("*.xlsx"))
-    assert workbook_values(got[xlsx], tmp_path, xlsx) == workbook_values(
-        (cli / xlsx).read_bytes(), tmp_path, "cli.xlsx")
+    assert workbook_parts(got[xlsx]) == workbook_parts(cli / xlsx)
     motion = next(n for n in csvs if n.endswith("_motion.csv")
                   and not n.endswith("_true_motion.csv"))
     head, rows = page_table(html, "table2")

@@ -21,11 +21,17 @@ from starlette.testclient import TestClient  # noqa: E402
 from test_web import form_values, shared  # noqa: E402
 from test_web import page_table as raw_table  # noqa: E402
 
+#: Every web test module runs on one xdist worker (``--dist loadgroup``), with one app
+#: (tests/conftest.py ``web_app_kept``): the studies and drawings one module asks for are
+#: not computed and drawn again for another, and the app's drawing processes start once.
+#: (A module-level mark: the group is known when xdist names the tests.)
+pytestmark = pytest.mark.xdist_group("web")
+
 
 @pytest.fixture(scope="module")
-def app(web_app):
-    """The session's app (tests/conftest.py ``web_app``)."""
-    return web_app
+def app(web_app_kept):
+    """The session's app (tests/conftest.py ``web_app_kept``)."""
+    return web_app_kept
 
 
 @pytest.fixture(autouse=True)

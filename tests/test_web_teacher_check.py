@@ -20,18 +20,24 @@ from starlette.testclient import TestClient  # noqa: E402
 
 from crankbase.resources import example_path  # noqa: E402
 
-from test_web import form_values, links, page_table  # noqa: E402
+from test_web import form_values, links, page_table, workbook_parts  # noqa: E402
 
 PETROL = example_path("petrol_vaz2106.toml")
 DIESEL = example_path("diesel_d240.toml")
 DIESEL_P = example_path("diesel_d240_indicator.csv")
 TORSION = example_path("torsion_inline6.toml")
 
+#: Every web test module runs on one xdist worker (``--dist loadgroup``), with one app
+#: (tests/conftest.py ``web_app_kept``): the studies and drawings one module asks for are
+#: not computed and drawn again for another, and the app's drawing processes start once.
+#: (A module-level mark: the group is known when xdist names the tests.)
+pytestmark = pytest.mark.xdist_group("web")
+
 
 @pytest.fixture(scope="module")
-def app(web_app):
-    """The session's app (tests/conftest.py ``web_app``)."""
-    return web_app
+def app(web_app_kept):
+    """The session's app (tests/conftest.py ``web_app_kept``)."""
+    return web_app_kept
 
 
 @pytest.fixture(autouse=True)
@@ -399,16 +405,9 @@ def test_the_torsion_files_equal_the_cli_s(torsion_page, torsion_cli):
     head, rows = page_table(html, "torsion-modes")
     text = (cli.folder / "bmw-m54b30_torsion_modes.csv").read_text().splitlines()
     assert ",".join(head) == text[0] and [",".join(r) for r in rows] == text[1:]
-    # the torsion workbook: value for value
-    from openpyxl import load_workbook
-
-    wb_page = load_workbook(__import__("io").BytesIO(
-        c.get(names["bmw-m54b30_torsion.xlsx"]).content))
-    wb_cli = load_workbook(cli.folder / "bmw-m54b30_torsion.xlsx")
-    assert wb_page.sheetnames == wb_cli.sheetnames
-    for a, b in zip(wb_page.worksheets, wb_cli.worksheets):
-        assert [[x.value for x in r] for r in a.iter_rows()] == \
-            [[x.value for x in r] for r in b.iter_rows()]
+    # the torsion workbook: part for part (every sheet, cell and style; but its save time)
+    assert workbook_parts(c.get(names["bmw-m54b30_torsion.xlsx"]).content) == \
+        workbook_parts(cli.folder / "bmw-m54b30_torsion.xlsx")
     # the summary holds the CLI's torsion lines; the figures are shown and served
     summary = htmllib.unescape(re.search(r'<pre id="summary">(.*?)</pre>', html,
                                          re.S).group(1)).splitlines()
