@@ -385,12 +385,17 @@ def test_check_csv_with_a_column_mapping(petrol_report, tmp_path, capsys):
 
 def test_library_never_names_a_command_line_option():
     """No library package's messages name a CLI option (``--plans``, ``--map`` …): the
-    CLI renames the argument a problem names (SpecError.renamed)."""
+    CLI renames the argument a problem names (SpecError.renamed).  The developers'
+    catalogue compiler, a script beside the catalogues that no module imports, has
+    options of its own."""
     import re
     from pathlib import Path
     root = Path(__file__).resolve().parents[1]
+    compiler = root / "crankbase" / "locale" / "compile_catalogues.py"
     for pkg in ("crankbase", "linkage", "engine", "dynamics", "plans"):
         for f in (root / pkg).rglob("*.py"):
+            if f == compiler:
+                continue
             for n, line in enumerate(f.read_text().splitlines(), 1):
                 code = line.split("#")[0]
                 if re.search(r"[\"'(\s]--[a-z]", code) and '``' not in code:
