@@ -83,18 +83,20 @@ _SYMBOL_FORCES = {"M_drive": "dynamics.symbol.M_balancing"}
 
 
 def _unit_suffix(base: str):
-    """``(name, unit)`` of a CSV column name without ``_const``: its longest unit suffix of
-    :data:`linkage.report.COLUMN_UNITS` (the one column-suffix table) taken off, the unit
-    a key of :data:`crankbase.texts.UNITS`; ``(base, None)`` without one.  The degree of a
+    """``(name, unit)`` of a CSV column name without ``_const``: its unit suffix of
+    :data:`linkage.report.COLUMN_UNITS` (the one column-suffix table, read by its one rule
+    :func:`linkage.report.unit_suffix`) taken off, the unit a key of
+    :data:`crankbase.texts.UNITS`; ``(base, None)`` without one.  The degree of a
     one-cell header ``φ [deg]`` is the table's ``"deg"`` (a word in English, the sign in
     Russian and Chinese), where the linkage's separate unit cell writes "°"."""
-    from linkage.report import COLUMN_UNITS
+    from linkage.report import COLUMN_UNITS, unit_suffix
 
-    for suffix in sorted(COLUMN_UNITS, key=len, reverse=True):
-        if base.endswith("_" + suffix):
-            si = COLUMN_UNITS[suffix]
-            return base[:-len(suffix) - 1], "deg" if si == "°" else si
-    return base, None
+    split = unit_suffix(base)
+    if split is None:
+        return base, None
+    name, suffix = split
+    si = COLUMN_UNITS[suffix]
+    return name, "deg" if si == "°" else si
 
 
 def column_label(column: str, lang="en", symbols=None) -> str:

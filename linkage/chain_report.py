@@ -11,7 +11,6 @@ the functions.
 from __future__ import annotations
 
 import math
-import re
 
 import numpy as np
 
@@ -33,15 +32,14 @@ def chain_column_label(col: str, lang: str = "en"):
     """(symbol, unit) of a chain table column in ``lang``: ``x_B_m`` → ("xB", "m"),
     ``omega_lever_rad_s`` → ("ω lever", "rad/s"), ``R_crank_block_N`` →
     ("R crank→block", "N"); Mур, Fпс, Mпс as :func:`linkage.report.column_label`."""
-    from .report import COLUMN_UNITS, column_label, unit_text
+    from .report import COLUMN_UNITS, column_label, unit_suffix, unit_text
 
     if col in ("position", "phi_deg", "M_drive_Nm", "F_res_N", "M_res_Nm"):
         return column_label(col, lang)
-    # the longest unit suffix that fits: the shortest name before it
-    m = re.fullmatch(r"(.+?)_(" + "|".join(map(re.escape, COLUMN_UNITS)) + ")", col)
-    if not m:
+    split = unit_suffix(col)
+    if split is None:
         return col, ""
-    body, unit = m.groups()
+    body, unit = split
     head, _, rest = body.partition("_")
     if head in _POINT and unit.startswith("m"):
         name = rest.replace("_", " ")

@@ -51,7 +51,7 @@ from crankbase.tolerances import SAME_ANGLE_DEG
 
 from .course import course_of
 
-__all__ = ["column_label", "unit_text", "COLUMN_UNITS", "kind_text", "warning_text",
+__all__ = ["column_label", "unit_text", "COLUMN_UNITS", "unit_suffix", "kind_text", "warning_text",
            "write_csvs", "write_workbook",
            "sheet_columns", "force_sheet_columns", "summary_lines", "text", "LANGS"]
 
@@ -66,6 +66,19 @@ LANGS = OFFERED              # every offered language (crankbase.texts.languages
 COLUMN_UNITS = {"m": "m", "m_s": "m/s", "m_s2": "m/s²", "deg": "°", "rad": "rad",
                 "rad_s": "rad/s", "rad_s2": "rad/s²", "N": "N", "Nm": "N·m",
                 "kgm2": "kg·m²", "J": "J", "s": "s"}
+
+
+def unit_suffix(col: str):
+    """``(name, suffix)`` of a CSV column name ending in ``_<suffix>`` of
+    :data:`COLUMN_UNITS`, the longest that fits (``omega_rad_s`` → ``("omega", "rad_s")``,
+    not ``s``), the name before it not empty; None when no suffix of the table ends it.
+    The one rule of the linkage's, the chain's and the dynamics' column heads."""
+    for suffix in sorted(COLUMN_UNITS, key=len, reverse=True):
+        if col.endswith("_" + suffix) and len(col) > len(suffix) + 1:
+            return col[:-len(suffix) - 1], suffix
+    return None
+
+
 _SIMPLE = {
     "position": (None, ""), "phi_deg": ("φ", "°"), "theta3_deg": ("θ3", "°"),
     "theta4_deg": ("θ4", "°"), "omega3_rad_s": ("ω3", "rad/s"), "omega4_rad_s": ("ω4", "rad/s"),
