@@ -625,8 +625,9 @@ def test_shaper_cn_scheme2_other_readings_miss(change):
 # rounded to 1 µm, which moves the limits by < 5e-4° (the chain: 29.99985° and
 # −30.00022°) and the stroke by a few 1e-6 of H, so the swing is compared to 1e-3°, the
 # stroke to 1e-5 relative (with the exact lengths of the construction: 1e-9); the crank
-# angles of the extremes, computed here from the same rounded lengths, to 1e-9°.  The report's velocity plan at a position whose name the copy lost
-# ("机构处于…"), read to one or two figures (v_C = 0.03/0.05 = 0.600 m/s, v_CB = 0.180, v_F
+# angles of the extremes, computed here from the same rounded lengths, to 1e-9°.  The
+# report's velocity plan at a position whose name the copy lost ("机构处于…"), read to one
+# or two figures (v_C = 0.03/0.05 = 0.600 m/s, v_CB = 0.180, v_F
 # = 0.880, v_FE = 0.200 m/s), matches no crank angle of the chain better than 2.4 % in v_C
 # (nearest: v_CB 0.180, v_F 0.876, v_FE 0.190 at one angle), so it is not asserted.
 PRESS_CN3_DATA = {"x1_m": 0.070, "y_m": 0.310, "psi1_deg": 60.0, "psi2_deg": 120.0,

@@ -1,11 +1,11 @@
 """``crankdyn serve`` in a real browser: Debian's headless Chromium driven by Selenium.
 
 One server (uvicorn in a thread, on a free port of 127.0.0.1, serving the session's app)
-and one browser for the module.  The browser loads the petrol example, changes the speed, computes, and the first
-rows of Table 2 on the page must be the CLI's ``forces.csv`` for the same spec; the
-workbook it downloads must equal the CLI's part for part (but its save time); a bad bore is
-named next to its field.  Where the browser cannot start, the test fails: CI installs ``chromium`` and
-``chromium-driver`` (.ci/run).  With ``CRANKDYN_SCREENSHOTS=DIR`` the page's screenshots
+and one browser for the module.  The browser loads the petrol example, changes the speed,
+computes, and the first rows of Table 2 on the page must be the CLI's ``forces.csv`` for
+the same spec; the workbook it downloads must equal the CLI's part for part (but its save
+time); a bad bore is named next to its field.  Where the browser cannot start, the test
+fails: CI installs ``chromium`` and ``chromium-driver`` (.ci/run).  With ``CRANKDYN_SCREENSHOTS=DIR`` the page's screenshots
 are kept in DIR (the README's, in docs/).
 """
 from __future__ import annotations
