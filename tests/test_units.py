@@ -60,8 +60,6 @@ def _table_units():
         add(unit, f"linkage.report.COLUMN_UNITS[{suffix!r}]")
     for col, (_, unit) in lr._SIMPLE.items():
         add(unit, f"linkage.report._SIMPLE[{col!r}]")
-    for suffix, unit in lr._UNIT_SUFFIXES:
-        add(unit, f"linkage.report._UNIT_SUFFIXES[{suffix!r}]")
     for key, (_, unit) in MASS_INPUTS.items():
         add(unit, f"engine.symbols.MASS_INPUTS[{key!r}]")
     for name, kind in ew._TR_SHAPE.items():
@@ -358,3 +356,54 @@ def test_the_symbols_are_the_catalogues(monkeypatch):
                                         "inertia_index")}
     for lang in T.OFFERED:
         assert asked <= T.keys(lang), (lang, asked - T.keys(lang))
+
+
+def test_the_inputs_sheet_takes_each_keys_unit_from_the_schema(tmp_path):
+    """The linkage inputs sheet's unit cell is the unit the spec schema gives the key at
+    that path (:meth:`crankbase.schema.Schema.key_of`), not a guess from the key's name:
+    a placeholder table (``links.<link>``), an array's index, one point of a ``points``
+    key, a key outside the schema (``[drawing]``) without a unit."""
+    import linkage
+    import linkage.report as lr
+    from crankbase.resources import example_path
+    from crankbase.schema import Key, Schema, Table
+    from linkage.schema import CHAIN_SCHEMA, SCHEMA
+
+    unit = {k: lr._spec_unit(k, SCHEMA) for k in (
+        "mechanism.crank", "mechanism.ground_angle_deg", "mechanism.omega_rad_s",
+        "links.coupler.mass_kg", "links.rocker.inertia_kg_m2", "links.coupler.points.C",
+        "links.crank.cg", "load[1].at", "load[0].force_N", "load[0].resistance_Nm",
+        "load[0].from_fraction", "analysis.positions", "analysis.crank_angles_deg",
+        "drawing.mass", "mechanism.nothing", "links.crank")}
+    assert unit == {
+        "mechanism.crank": "m", "mechanism.ground_angle_deg": "°",
+        "mechanism.omega_rad_s": "rad/s", "links.coupler.mass_kg": "kg",
+        "links.rocker.inertia_kg_m2": "kg·m²", "links.coupler.points.C": "m",
+        "links.crank.cg": "m", "load[1].at": "m", "load[0].force_N": "N",
+        "load[0].resistance_Nm": "N·m", "load[0].from_fraction": "",
+        "analysis.positions": "", "analysis.crank_angles_deg": "°", "drawing.mass": "",
+        "mechanism.nothing": "", "links.crank": ""}
+    # a chain's: the frame's points and a group's lengths are lengths too
+    assert [lr._spec_unit(k, CHAIN_SCHEMA) for k in (
+        "mechanism.frame.O", "group[1].lengths", "group[0].guide_angle_deg",
+        "group[0].links")] == ["m", "m", "°", ""]
+    # the schema's unit, whatever the name says (a suffix guess would give ° and "")
+    own = Schema("x", (Table("t", (Key("a_deg", unit="rad"), Key("stroke", unit="mm"))),))
+    assert (lr._spec_unit("t.a_deg", own), lr._spec_unit("t.stroke", own)) == ("rad", "mm")
+    # the sheet itself, in Russian: each row's unit cell is its key's in the schema
+    from openpyxl import load_workbook
+
+    res = linkage.analyze(linkage.load_spec(example_path("ratchet.toml")))
+    lr.write_workbook(res, tmp_path / "r.xlsx", lang="ru")
+    wb = load_workbook(tmp_path / "r.xlsx", read_only=True)
+    keys = dict(lr._spec_rows(dict(res.spec.raw)))
+    rows = {r[0]: r[2] for r in wb.worksheets[0].iter_rows(min_row=4, values_only=True)
+            if r[0] in keys}
+    wb.close()
+    assert rows["mechanism.crank"] == "м" and rows["links.crank.mass_kg"] == "кг"
+    assert rows["links.rocker.inertia_kg_m2"] == "кг·м²"
+    t = T.texts("ru")
+    for key, cell in rows.items():
+        k = SCHEMA.key_of(key)
+        assert (cell or "") == t.unit(k.unit if k else ""), key
+    assert len(rows) == len(keys) > 20
