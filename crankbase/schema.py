@@ -32,6 +32,7 @@ True
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
 from .errors import Text
@@ -337,6 +338,28 @@ class Schema:
         """The key at a dotted ``path`` (``"engine.bore_mm"``, ``"pressure.cycle.n1"``)."""
         table, _, name = path.rpartition(".")
         return self.table(table).key(name)
+
+    def key_of(self, path: str):
+        """The :class:`Key` that describes the value at ``path`` as a spec file writes it
+        (``"links.crank.mass_kg"``: a placeholder table ``<link>`` stands for any name;
+        ``"load[0].at"``: an array's index; ``"links.crank.points.B"``: one point of a
+        ``points`` key), None for a path outside the schema (an ``extra`` table such as
+        ``[drawing]``, an unknown key): what a sheet of the values as given asks for a
+        row's unit (:attr:`Key.unit`)."""
+        parts = [re.sub(r"\[\d+\]$", "", p) for p in path.split(".")]
+        node = next((t for t in self.tables if t.name == parts[0]), None)
+        for i, name in enumerate(parts[1:], start=1):
+            if node is None:
+                return None
+            entry = next((e for e in node.entries if e.name == name), None) or next(
+                (e for e in node.entries if isinstance(e, Table) and e.name.startswith("<")),
+                None)
+            if isinstance(entry, Key):
+                rest = parts[i + 1:]
+                return entry if not rest or (entry.kind == "points" and len(rest) == 1) \
+                    else None
+            node = entry
+        return None
 
     def describe(self, path: str, lang: str = "en") -> dict:
         """Everything a form or a sheet shows of the key at ``path``, in ``lang``:

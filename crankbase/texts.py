@@ -91,7 +91,7 @@ UNITS = {
     "m": "m", "mm": "mm", "cm²": "cm2", "l": "l", "g": "g", "kg": "kg",
     "kg/m²": "kg_per_m2", "kg·mm": "kg_mm", "g·mm": "g_mm", "kg·m²": "kg_m2",
     # time, angle, motion
-    "s": "s", "°": "deg", "deg": "deg_word", "rad": "rad", "rpm": "rpm",
+    "s": "s", "Hz": "Hz", "°": "deg", "deg": "deg_word", "rad": "rad", "rpm": "rpm",
     "m/s": "m_s", "m/s²": "m_s2", "rad/s": "rad_s", "rad/s²": "rad_s2",
     # force, moment, stiffness, damping, pressure, energy, power
     "N": "N", "N/mm": "N_per_mm", "N·m": "N_m", "N·m/rad": "N_m_per_rad",

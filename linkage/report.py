@@ -453,8 +453,11 @@ def write_workbook(result, path, lang: str = "ru"):
         c.font = bold
         c.fill = head_fill
         c.alignment = wrap
+    from .schema import CHAIN_SCHEMA, SCHEMA
+
+    schema = CHAIN_SCHEMA if spec.kind == "chain" else SCHEMA
     for key, value in _spec_rows(dict(spec.raw)):
-        ws.append([key, value, unit_text(_spec_unit(key), lang),
+        ws.append([key, value, unit_text(_spec_unit(key, schema), lang),
                    _key_meaning(key, value, lang)])
         for c in ws[ws.max_row]:
             c.alignment = wrap
@@ -633,22 +636,12 @@ def _extremes_sheet(ws, df, cols, lang, bold, grey, head_fill, box, center):
     _page_setup(ws, landscape=False)
 
 
-#: Units of the spec keys, by the key's suffix (the spec's naming rule) or its name.
-_UNIT_SUFFIXES = (("_kg_m2", "kg·m²"), ("_rad_s2", "rad/s²"), ("_rad_s", "rad/s"),
-                  ("_m_s2", "m/s²"), ("_deg", "°"), ("_kg", "kg"), ("_Nm", "N·m"),
-                  ("_N", "N"), ("_m", "m"))
-_LENGTH_KEYS = {"crank", "coupler", "rocker", "ground", "offset", "cg", "at", "rod"}
-
-
-def _spec_unit(key):
-    """The unit of a spec key as shown on the inputs sheet ('' for a word or a count)."""
-    last = re.sub(r"\[\d+\]$", "", key.split(".")[-1])
-    for suffix, unit in _UNIT_SUFFIXES:
-        if last.endswith(suffix):
-            return unit
-    if last in _LENGTH_KEYS or key.split(".")[-2:-1] == ["points"]:
-        return "m"
-    return ""
+def _spec_unit(key, schema):
+    """The unit of the spec key at path ``key`` as the inputs sheet shows it, the one
+    spec schema's (:meth:`crankbase.schema.Schema.key_of`, :attr:`~crankbase.schema.Key.unit`;
+    '' for a word, a count or a key outside the schema such as ``[drawing]``'s)."""
+    k = schema.key_of(key)
+    return k.unit if k is not None else ""
 
 
 def _page_setup(ws, landscape, pages_wide=1):

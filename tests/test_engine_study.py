@@ -203,7 +203,7 @@ def test_summary_numbers_are_the_results(petrol):
                     f"{s.P_N.alpha_max_deg:g} deg"
     assert f"Mкр.ср = {ws.M_mean_Nm:.1f} Н·м" in summary_lines(petrol, "ru")[7]
     cw = ws.counterweights[0]
-    assert f"m*r = {cw.mr * 1e3:9.2f} kg*mm at {cw.angle_deg:6.1f} deg" in "\n".join(en)
+    assert f"m*r = {cw.mr * 1e3:9.2f} kg·mm at {cw.angle_deg:6.1f} deg" in "\n".join(en)
 
 
 @pytest.mark.parametrize("n, ru, en", [(1, "1 график (PNG)", "1 plot (PNG)"),

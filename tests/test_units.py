@@ -60,8 +60,6 @@ def _table_units():
         add(unit, f"linkage.report.COLUMN_UNITS[{suffix!r}]")
     for col, (_, unit) in lr._SIMPLE.items():
         add(unit, f"linkage.report._SIMPLE[{col!r}]")
-    for suffix, unit in lr._UNIT_SUFFIXES:
-        add(unit, f"linkage.report._UNIT_SUFFIXES[{suffix!r}]")
     for key, (_, unit) in MASS_INPUTS.items():
         add(unit, f"engine.symbols.MASS_INPUTS[{key!r}]")
     for name, kind in ew._TR_SHAPE.items():
@@ -186,56 +184,178 @@ def test_the_templates_unit_cells_are_the_builders_tables(lang):
 # -- the templates name their units by the table: {unit[N·m]} ----------------------------
 
 #: What may follow a unit's spelling: not a letter, digit or a unit's own continuation
-#: (m → m/s, кг → кг·м², N → N*m of the English terminal's ASCII units, % → %% argparse's
-#: escaped percent in a help text).
-_UNIT_END = r"(?![\w²³⁻¹·/*^%])"
-#: Where a unit spelled after a field or a number is none: (language, key) → the text
-#: at that place.  A new entry needs its reason.
+#: (m → m/s, кг → кг·м², % → %% argparse's escaped percent in a help text).
+_UNIT_END = r"(?![\w²³⁻¹·/%])"
+#: Where a unit spelled in a template is none: (language, key) → the text at that place.
+#: A new entry needs its reason.
 _NOT_UNITS = {
     ("en", "linkage.key.mass_kg"): "{link} m{n}",                 # m: the mass's symbol
     ("ru", "torsion.col.swing_deg_of"): "{mass} с колебанием",    # с: «with»
+    # N: the side force among the table's symbols (ΔPg, Pj, P, β, N, S, K, T, …)
+    ("en", "cli.engine.description"): "β, N, S",
 }
+
+
+def _spellings(t):
+    """Every spelling of a unit of :data:`~crankbase.texts.UNITS` in the language of
+    ``t``, the longest first; with the ASCII stand-ins of the non-ASCII ones (N*m for
+    N·m, kg*m^2 for kg·m²), which are the unit spelled a second time too."""
+    spell = {t.unit(si) for si in T.UNITS if si != "-"}
+    spell |= {s.replace("·", "*").replace("²", "^2").replace("³", "^3") for s in spell}
+    return sorted(spell, key=len, reverse=True)
+
+
+def _masked(template: str) -> str:
+    """``template`` with every field a mark a character long (so that a place in it is
+    the place in ``template``): ``\x02`` for a unit field, ``\x01`` for another (argparse's
+    ``%(choices)s`` too); ``{{ }}`` are literal braces."""
+    def mark(m):
+        f = m.group(0)
+        return f if f in ("{{", "}}") else (
+            "\x02" if T.UNIT_FIELD.fullmatch(f) else "\x01") * len(f)
+
+    masked = re.sub(r"\{\{|\}\}|\{[^{}]*\}", mark, template)
+    return re.sub(r"%\(\w+\)[sd]", lambda m: "\x01" * len(m.group(0)), masked)  # argparse's
 
 
 def _spelled_units(template: str, lang: str):
     """``[(unit, text)]``: each unit of :data:`~crankbase.texts.UNITS`, as ``lang`` spells
-    it, that ``template`` writes after a ``{field}`` or a number (not one of an
-    identifier, ``λ1``, ``J_kgm2``) outside a unit field: where it is a unit.  A field's
-    format spec (``{x:.1%}``, ``{x:.3g}``) is no text; a unit inside a word (the «м» of
-    «момент», the "s" of "steps"), a symbol before the number (N, J) are not after one."""
-    t = T.texts(lang)
-    spell = sorted({t.unit(si) for si in T.UNITS if si != "-"}, key=len, reverse=True)
-    # every field, unit fields included, one mark; {{ }} are literal braces
-    masked = re.sub(r"\{\{|\}\}|\{[^{}]*\}",
-                    lambda m: m.group(0) if m.group(0) in ("{{", "}}") else "\x01", template)
-    after = "(?:\x01|(?<![\\w.,])\\d+(?:[.,]\\d+)?)[\\])]?[ \u00a0\u202f]?"
+    it, that ``template`` writes outside a unit field where it is a unit: after a
+    ``{field}`` or a number (:func:`_units_after_numbers`) or as a label's unit
+    (:func:`_label_units`)."""
+    return [(u, w) for u, w, _ in _found_units(template, lang)]
+
+
+def _found_units(template: str, lang: str):
+    """``[(unit, text, span)]`` of :func:`_spelled_units`, in order, each place once."""
+    found = {span: (u, w, span) for u, w, span in _label_units(template, lang)
+             + _units_after_numbers(template, lang)}
+    return [found[span] for span in sorted(found)]
+
+
+def _not_a_unit(lang, key, template, span):
+    """Whether the unit found at ``span`` of ``template`` lies in a text of
+    :data:`_NOT_UNITS` (a word or a symbol there, not the template's other units)."""
+    text = _NOT_UNITS.get((lang, key))
+    if not text:
+        return False
+    return any(i <= span[0] and span[1] <= i + len(text)
+               for i in (m.start() for m in re.finditer(re.escape(text), template)))
+
+
+def _units_after_numbers(template: str, lang: str):
+    """``[(unit, text, span)]``: the units spelled after a ``{field}`` or a number (not
+    one of an identifier, ``λ1``, ``J_kgm2``).  A field's format spec (``{x:.1%}``,
+    ``{x:.3g}``) is no text; a unit inside a word (the «м» of «момент», the "s" of
+    "steps"), a symbol before the number (N, J) are not after one."""
+    masked = _masked(template)
+    # (after a unit field comes no unit: «в {unit[MPa]} с коэффициентами», с: «with»)
+    after = "(?:\x01|(?<![\\w.,\x01\x02])\\d+(?:[.,]\\d+)?)[\\])]?[ \u00a0\u202f]?"
+    spell = _spellings(T.texts(lang))
     found = re.finditer(after + "(" + "|".join(map(re.escape, spell)) + ")" + _UNIT_END,
                         masked)
-    return [(m.group(1), masked[max(0, m.start() - 12):m.end() + 12].replace("\x01", "{…}"))
-            for m in found]
+    return [(m.group(1), _context(masked, m.start(1), m.end(1)), m.span(1)) for m in found]
+
+
+#: Before a label's unit: the start of the text (a word table's unit, "N·m", a head
+#: "mm 列"), a comma (", " or the Chinese "，"), " in " (« в », "以 ",
+#: "单位 "), an opening bracket (not one of a name: "f(x)"; the Chinese "（" after any
+#: word), ")/" of a unit of units ((m/s)/mm), "and" after a unit field ("{unit[mm]} and N");
+#: a space before a unit with a sign of its own (°, N·m, m/s: never a word).
+_LABEL_BEFORE = (r"(^|, |，| in | в |以 |单位 |(?<![\w\x01\x02])[\[(]|（|\)/"
+                 r"|(?<=\x02)(?: and | и | 和 )| )")
+_IN = (" in ", " в ", "以 ", "单位 ", " and ", " и ", " 和 ")
+#: After a unit that is a word alone (mm, с, N): the end of the label, a closing bracket,
+#: a separator, an opening bracket — not a word («, с которого»), an equation (", N=T_N")
+#: or a list going on with a symbol that is no unit.
+_LABEL_AFTER = r"(?=$|[)\]）;；,，:：\n]| \(|（)"
+_CLOSES = {"[": "]", "(": ")", "（": "）"}
+
+
+def _label_units(template: str, lang: str):
+    """``[(unit, text, span)]``: the units a label writes after its name, not after a
+    number: "f, Hz", "φ, °", «Частота f, Гц», "频率 f，Hz", "Pc [bar]", "φ [deg]", "(N)",
+    "in mm", "(m/s)/mm".  After a bracket the unit closes it; after a comma or " in " a
+    unit that is a word alone ("m", «с») ends the label or is followed by a separator,
+    one with a sign of its own (°, ·, /, %) is a unit wherever it stands; a symbol in an
+    equation ("(J = m·D²/4)", "T, N=T_N") is none."""
+    masked = _masked(template)
+    spell = _spellings(T.texts(lang))
+    pattern = _LABEL_BEFORE + "(" + "|".join(map(re.escape, spell)) + ")" + _UNIT_END
+    out = []
+    for m in re.finditer(pattern, masked):
+        before, unit = m.group(1), m.group(2)
+        rest = masked[m.end(2):]
+        word = re.fullmatch(r"[^\W\d_]+", unit) is not None  # a word alone: m, мм, N, с
+        if before in _CLOSES:
+            ok = rest.startswith(_CLOSES[before])
+        elif before == "":                  # the whole text ("N·m"), or a unit's sign first
+            ok = rest == "" or not word
+        elif before == " ":                 # a sign of its own: "曲轴转角 °", "units N·m"
+            ok = not word
+        elif before == ")/":
+            ok = True
+        elif word:
+            ok = re.match(_LABEL_AFTER, rest) is not None or (
+                before in _IN and not re.match(r"\s*[=≈≳<>+−-]", rest))
+        else:                                           # °, N·m, Н/мм, %
+            ok = True
+        if ok:
+            out.append((unit, _context(masked, m.start(2), m.end(2)), m.span(2)))
+    return out
+
+
+def _context(masked, i, j):
+    return re.sub("[\x01\x02]+", "{…}", masked[max(0, i - 12):j + 12])
 
 
 def test_the_unit_check_sees_a_unit_where_it_is_one():
-    """The check itself: a unit after a number or a field is found, in every spelling;
-    a unit field, a format spec, a word, a symbol and an identifier are not."""
-    assert [u for u, _ in _spelled_units("Mкр.ср = {M:.1f} Н·м", "ru")] == ["Н·м"]
-    assert [u for u, _ in _spelled_units("{p:.3f}МПа, {a:g}°, 2 с.", "ru")] == [
-        "МПа", "°", "с"]
-    assert [u for u, _ in _spelled_units("at {a} deg, {n} rpm, 100-150 mm", "en")] == [
-        "deg", "rpm", "mm"]
-    assert [u for u, _ in _spelled_units("{n} r/min，{x} %", "zh")] == ["r/min", "%"]
-    assert [u for u, _ in _spelled_units("[{a}, {b}] mm; ({x}) kg", "en")] == ["mm", "kg"]
+    """The check itself: a unit after a number or a field, a label's unit after its
+    comma, in brackets or parentheses or after " in ", and an ASCII stand-in (N*m) are
+    found, in every spelling; a unit field, a format spec, a word, a symbol, a symbol in
+    an equation and an identifier are not."""
+    def found(template, lang):
+        return [u for u, _ in _spelled_units(template, lang)]
+
+    assert found("Mкр.ср = {M:.1f} Н·м", "ru") == ["Н·м"]
+    assert found("{p:.3f}МПа, {a:g}°, 2 с.", "ru") == ["МПа", "°", "с"]
+    assert found("at {a} deg, {n} rpm, 100-150 mm", "en") == ["deg", "rpm", "mm"]
+    assert found("{n} r/min，{x} %", "zh") == ["r/min", "%"]
+    assert found("[{a}, {b}] mm; ({x}) kg", "en") == ["mm", "kg"]
+    # the English terminal's ASCII stand-ins are the unit spelled a second time
+    assert found("M {x} N*m, J = {J} kg*m^2", "en") == ["N*m", "kg*m^2"]
+    # a label's unit: after its comma, in brackets, after " in ", a unit of units
+    assert found("f, Hz", "en") == ["Hz"] and found("Частота f, Гц", "ru") == ["Гц"]
+    assert found("频率 f，Hz", "zh") == ["Hz"] and found("φ, °", "ru") == ["°"]
+    assert found("α, ° п.к.в.", "ru") == ["°"] and found("x, m", "en") == ["m"]
+    assert found("Pc [bar]){w}", "en") == ["bar"] and found("φ [deg]", "en") == ["deg"]
+    assert found("K, N (downward)", "en") == ["N"] and found("力（N）/ μP", "zh") == ["N"]
+    assert found("lengths in m (e.g. O = [0, 0])", "en") == ["m"]
+    assert found("forces in mm and N", "en") == ["mm"]
+    assert found("forces in {unit[mm]} and N", "en") == ["N"]
+    assert found("（力以 mm 和 N 表示", "zh") == ["mm"] and found("长度单位 m，", "zh") == ["m"]
+    assert found("scale, (m/s)/mm (default", "en") == ["m/s", "mm"]
+    assert found("μP, Н/мм =", "ru") == ["Н/мм"] and found("T, Н", "ru") == ["Н"]
+    assert found("m r, x, г·мм", "ru") == ["г·мм"] and found("μ  [°]", "zh") == ["°"]
+    assert found("N·m", "en") == ["N·m"] and found("мм", "ru") == ["мм"]
     for fine in ("Mкр.ср = {M:.1f} {unit[N·m]}", "{x:.1%} of it", "{x:.3g}", "{n} steps",
                  "момент {M} в точке", "N = {N}", "J_kgm2 с speed_ratio", "λ1 с шагом",
-                 "M {x} N*m", "(default: 0.2 %% of it)", "φ, °", "{x:.0f}{unit[°]}"):
-        assert _spelled_units(fine, "ru") == [] and _spelled_units(fine, "en") == [], fine
+                 "(default: 0.2 %% of it)", "{x:.0f}{unit[°]}", "φ, {unit[°]}",
+                 "f, {unit[Hz]}", "[{unit[bar]}]", "положение, с которого", "(с насосными",
+                 "--map 'T, N=T_N'", "(J = m·D²/4)", "(m − mш.к)", "(m r)b", "f(s)",
+                 "], m = {m}", "(s + l = p + q)", "(J ≳ {need})", "tg β, N = P",
+                 "x_m, y_mm", "in {folder}", "flywheel m*D^2 = {x}",
+                 "{n} и Н", "сила и Н", "mass and m", "J, {unit[kg·m²]}", "N = P",
+                 "one of %(choices)s;", "в {unit[MPa]} с коэффициентами"):
+        assert found(fine, "ru") == [] and found(fine, "en") == [], fine
 
 
 @pytest.mark.parametrize("lang", T.catalogue_languages())
 def test_no_template_spells_a_unit_that_the_table_names(lang):
-    """Every template of every catalogue names a unit after a number or a field by a unit
-    field (``{unit[N·m]}``), so that a unit is spelled once per language
-    (``common.unit.*``); only :data:`_NOT_UNITS` are words or symbols there."""
+    """Every template of every catalogue names a unit by a unit field (``{unit[N·m]}``),
+    after a number or a field as well as a label's unit ("f, {unit[Hz]}"), so that a unit
+    is spelled once per language (``common.unit.*``), the English terminal's too (no
+    ASCII stand-in, N*m); only :data:`_NOT_UNITS` are words or symbols there."""
     bad = []
     for path in sorted((T.LOCALE_DIR / lang).glob("*.po")):
         with path.open("rb") as fh:
@@ -243,14 +363,15 @@ def test_no_template_spells_a_unit_that_the_table_names(lang):
                 if not m.id or not m.string:
                     continue
                 key = m.id[0] if isinstance(m.id, (tuple, list)) else m.id
+                if key.startswith("common.unit.") or key.endswith(".symbol"):
+                    continue            # the table's own spellings; a symbol (m, g, L)
                 forms = m.string if isinstance(m.string, (tuple, list)) else (m.string,)
                 for form in forms:
-                    for unit, where in _spelled_units(form, lang):
-                        if (lang, key) in _NOT_UNITS and _NOT_UNITS[lang, key] in form:
+                    for unit, where, span in _found_units(form, lang):
+                        if _not_a_unit(lang, key, form, span):
                             continue
                         bad.append(f"{key}: {unit!r} in …{where}…")
     assert not bad, f"{lang}: write these units as {{unit[<SI>]}}:\n" + "\n".join(bad)
-
 
 @pytest.mark.parametrize("lang", T.catalogue_languages())
 def test_every_unit_field_names_a_unit_of_the_table(lang):
@@ -358,3 +479,54 @@ def test_the_symbols_are_the_catalogues(monkeypatch):
                                         "inertia_index")}
     for lang in T.OFFERED:
         assert asked <= T.keys(lang), (lang, asked - T.keys(lang))
+
+
+def test_the_inputs_sheet_takes_each_keys_unit_from_the_schema(tmp_path):
+    """The linkage inputs sheet's unit cell is the unit the spec schema gives the key at
+    that path (:meth:`crankbase.schema.Schema.key_of`), not a guess from the key's name:
+    a placeholder table (``links.<link>``), an array's index, one point of a ``points``
+    key, a key outside the schema (``[drawing]``) without a unit."""
+    import linkage
+    import linkage.report as lr
+    from crankbase.resources import example_path
+    from crankbase.schema import Key, Schema, Table
+    from linkage.schema import CHAIN_SCHEMA, SCHEMA
+
+    unit = {k: lr._spec_unit(k, SCHEMA) for k in (
+        "mechanism.crank", "mechanism.ground_angle_deg", "mechanism.omega_rad_s",
+        "links.coupler.mass_kg", "links.rocker.inertia_kg_m2", "links.coupler.points.C",
+        "links.crank.cg", "load[1].at", "load[0].force_N", "load[0].resistance_Nm",
+        "load[0].from_fraction", "analysis.positions", "analysis.crank_angles_deg",
+        "drawing.mass", "mechanism.nothing", "links.crank")}
+    assert unit == {
+        "mechanism.crank": "m", "mechanism.ground_angle_deg": "°",
+        "mechanism.omega_rad_s": "rad/s", "links.coupler.mass_kg": "kg",
+        "links.rocker.inertia_kg_m2": "kg·m²", "links.coupler.points.C": "m",
+        "links.crank.cg": "m", "load[1].at": "m", "load[0].force_N": "N",
+        "load[0].resistance_Nm": "N·m", "load[0].from_fraction": "",
+        "analysis.positions": "", "analysis.crank_angles_deg": "°", "drawing.mass": "",
+        "mechanism.nothing": "", "links.crank": ""}
+    # a chain's: the frame's points and a group's lengths are lengths too
+    assert [lr._spec_unit(k, CHAIN_SCHEMA) for k in (
+        "mechanism.frame.O", "group[1].lengths", "group[0].guide_angle_deg",
+        "group[0].links")] == ["m", "m", "°", ""]
+    # the schema's unit, whatever the name says (a suffix guess would give ° and "")
+    own = Schema("x", (Table("t", (Key("a_deg", unit="rad"), Key("stroke", unit="mm"))),))
+    assert (lr._spec_unit("t.a_deg", own), lr._spec_unit("t.stroke", own)) == ("rad", "mm")
+    # the sheet itself, in Russian: each row's unit cell is its key's in the schema
+    from openpyxl import load_workbook
+
+    res = linkage.analyze(linkage.load_spec(example_path("ratchet.toml")))
+    lr.write_workbook(res, tmp_path / "r.xlsx", lang="ru")
+    wb = load_workbook(tmp_path / "r.xlsx", read_only=True)
+    keys = dict(lr._spec_rows(dict(res.spec.raw)))
+    rows = {r[0]: r[2] for r in wb.worksheets[0].iter_rows(min_row=4, values_only=True)
+            if r[0] in keys}
+    wb.close()
+    assert rows["mechanism.crank"] == "м" and rows["links.crank.mass_kg"] == "кг"
+    assert rows["links.rocker.inertia_kg_m2"] == "кг·м²"
+    t = T.texts("ru")
+    for key, cell in rows.items():
+        k = SCHEMA.key_of(key)
+        assert (cell or "") == t.unit(k.unit if k else ""), key
+    assert len(rows) == len(keys) > 20
