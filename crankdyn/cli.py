@@ -213,7 +213,33 @@ def _speak_argparse(lang: str) -> None:
     argparse._ = translate
 
 
+def _streams_for_every_language():
+    """Standard output and error able to print every language's text, so that a report
+    already written never ends in a :class:`UnicodeEncodeError` while its summary is
+    printed: redirected to a file or a pipe (Windows then writes in the ANSI code page,
+    cp1252 or cp1251, which lacks Cyrillic, Greek or "→"), the streams write UTF-8; a
+    terminal, or an encoding the user chose with ``PYTHONIOENCODING``, keeps its encoding
+    and shows a character it lacks as "?".  A stream without ``reconfigure`` (a test's
+    ``StringIO``) is left as it is."""
+    for stream in (sys.stdout, sys.stderr):
+        if not hasattr(stream, "reconfigure"):
+            continue
+        enc = (getattr(stream, "encoding", None) or "").lower().replace("_", "-")
+        if enc in ("utf-8", "utf8"):
+            continue
+        try:
+            tty = stream.isatty()
+        except (OSError, ValueError):
+            tty = False
+        if tty or os.environ.get("PYTHONIOENCODING"):
+            stream.reconfigure(errors="replace")
+        else:
+            stream.reconfigure(encoding="utf-8")
+
+
 def main(argv=None) -> int:
+    if argv is None:              # the crankdyn command itself, not a call from a script
+        _streams_for_every_language()
     argv = sys.argv[1:] if argv is None else list(argv)
     parser = build_parser(_language_asked(argv))
     args, unknown = parser.parse_known_args(argv)
