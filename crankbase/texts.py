@@ -212,8 +212,15 @@ class Texts:
 
 def catalogue_languages() -> tuple[str, ...]:
     """Every language with a compiled catalogue (``<lang>/LC_MESSAGES/*.mo``), complete
-    or not."""
-    return tuple(sorted(p.name for p in LOCALE_DIR.iterdir()
+    or not.  The folder :data:`LOCALE_DIR` is listed once a process (as each catalogue is
+    read once, :func:`_catalogue`): a report asks it for every column it labels."""
+    return _catalogue_languages(LOCALE_DIR)
+
+
+@functools.lru_cache(maxsize=None)
+def _catalogue_languages(folder: Path) -> tuple[str, ...]:
+    """:func:`catalogue_languages` of one locale folder."""
+    return tuple(sorted(p.name for p in folder.iterdir()
                         if p.is_dir() and any((p / MO_FOLDER).glob("*.mo"))))
 
 
@@ -405,8 +412,14 @@ def offered(lang) -> bool:
     """Whether ``lang`` is offered (:func:`languages`): it has a catalogue holding every
     key of the reference catalogue.  Reads that language and the reference only, not
     every catalogue: what a ``--lang`` check needs."""
-    return (isinstance(lang, str) and lang in catalogue_languages()
-            and keys(REFERENCE) <= keys(lang))
+    return isinstance(lang, str) and _offered(LOCALE_DIR, lang)
+
+
+@functools.lru_cache(maxsize=None)
+def _offered(folder: Path, lang: str) -> bool:
+    """:func:`offered` of ``lang`` in one locale folder, answered once a process (as the
+    catalogues are read once): a report asks it for every column it labels."""
+    return lang in _catalogue_languages(folder) and keys(REFERENCE) <= keys(lang)
 
 
 @functools.lru_cache(maxsize=None)

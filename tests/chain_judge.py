@@ -118,15 +118,19 @@ class Judge:
         """Generalized coordinates at crank angle ``phi`` from a guess (numeric solve)."""
         sol = root(self.residual, guess, args=(phi,), method="hybr", tol=1e-14)
         q = sol.x
-        for _ in range(4):                       # Newton polish, finite-difference Jacobian
-            f = self.residual(q, phi)
-            J = np.empty((len(f), len(q)))
-            for i in range(len(q)):
-                dq = np.zeros(len(q))
-                dq[i] = 1e-7
-                J[:, i] = (self.residual(q + dq, phi) - self.residual(q - dq, phi)) / 2e-7
+        # Newton polish with a central-difference Jacobian, taken once at hybr's solution
+        # (a chord iteration: from a start already within ~1e-14 of the root it converges
+        # to rounding in one or two steps, as a Jacobian taken anew at each step did)
+        f = self.residual(q, phi)
+        J = np.empty((len(f), len(q)))
+        for i in range(len(q)):
+            dq = np.zeros(len(q))
+            dq[i] = 1e-7
+            J[:, i] = (self.residual(q + dq, phi) - self.residual(q - dq, phi)) / 2e-7
+        for _ in range(4):
             q = q - np.linalg.solve(J, f)
-        assert np.max(np.abs(self.residual(q, phi))) < 1e-12
+            f = self.residual(q, phi)
+        assert np.max(np.abs(f)) < 1e-12
         return q
 
     def motion(self, phi, guess, omega, eps, h=1e-3):

@@ -574,8 +574,21 @@ EN_TERMS = {
 }
 
 
-def test_plots_speak_the_report_language_with_the_same_numbers():
-    ru, en = _figures("ru"), _figures("en")
+@pytest.fixture(scope="module")
+def figures():
+    """The three figures of the paper's example in each language, drawn once a module
+    (the tests below read their texts, styles and layout; none changes them)."""
+    drawn = {}
+
+    def get(lang):
+        if lang not in drawn:
+            drawn[lang] = _figures(lang)
+        return drawn[lang]
+    return get
+
+
+def test_plots_speak_the_report_language_with_the_same_numbers(figures):
+    ru, en = figures("ru"), figures("en")
     for key in ru:
         t_ru = "\n".join(_plot_texts(ru[key]))
         t_en = "\n".join(_plot_texts(en[key]))
@@ -608,10 +621,10 @@ def _style(line):
 
 
 @pytest.mark.parametrize("lang", ["ru", "en"])
-def test_curves_differ_by_line_style_not_by_colour_only(lang):
+def test_curves_differ_by_line_style_not_by_colour_only(lang, figures):
     from matplotlib.lines import Line2D
 
-    for key, ax in _figures(lang).items():
+    for key, ax in figures(lang).items():
         handles = [h for h in ax.get_legend().legend_handles if isinstance(h, Line2D)]
         styles = [_style(h) for h in handles]
         assert len(set(styles)) == len(styles), (key, styles)
@@ -620,10 +633,10 @@ def test_curves_differ_by_line_style_not_by_colour_only(lang):
 
 
 @pytest.mark.parametrize("lang", ["ru", "en"])
-def test_fig3_curves_carry_their_numbers_without_overlap(lang):
+def test_fig3_curves_carry_their_numbers_without_overlap(lang, figures):
     """Each curve of Fig. 3 is numbered on the figure (as in the paper): the numbers 1…9,
     each inside the axes, no two label boxes overlapping, no box on the chosen point."""
-    ax = _figures(lang)["mu_min"]
+    ax = figures(lang)["mu_min"]
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
     canvas = FigureCanvasAgg(ax.figure)
