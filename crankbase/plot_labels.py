@@ -13,6 +13,7 @@ only).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 
@@ -41,13 +42,13 @@ def _font_settings():
     return tuple(repr(rcParams[k]) for k in _font_keys())
 
 
-def _font_keys(keys=[]):                                  # noqa: B006 (computed once)
-    if not keys:
-        from matplotlib import rcParams
+@lru_cache(maxsize=1)
+def _font_keys():
+    """The names of the rcParams ``font.*``, ``text.*`` and ``mathtext.*`` (a fixed
+    set: matplotlib's)."""
+    from matplotlib import rcParams
 
-        keys.extend(sorted(k for k in rcParams
-                           if k.startswith(("font.", "text.", "mathtext."))))
-    return keys
+    return tuple(sorted(k for k in rcParams if k.startswith(("font.", "text.", "mathtext."))))
 
 
 def text_size(fig, text, **kw):
