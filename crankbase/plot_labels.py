@@ -13,6 +13,7 @@ only).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 
@@ -28,13 +29,46 @@ def renderer_of(fig):
     return fig.canvas.get_renderer()
 
 
+#: Sizes measured by :func:`text_size`, by everything a size depends on (kept from
+#: figure to figure: the α labels "0" … "690" of every polar diagram of a report).
+_SIZES = {}
+
+
+def _font_settings():
+    """The rcParams a text's size depends on (``font.*``, ``text.*``, ``mathtext.*``),
+    as a key."""
+    from matplotlib import rcParams
+
+    return tuple(repr(rcParams[k]) for k in _font_keys())
+
+
+@lru_cache(maxsize=1)
+def _font_keys():
+    """The names of the rcParams ``font.*``, ``text.*`` and ``mathtext.*`` (a fixed
+    set: matplotlib's)."""
+    from matplotlib import rcParams
+
+    return tuple(sorted(k for k in rcParams if k.startswith(("font.", "text.", "mathtext."))))
+
+
 def text_size(fig, text, **kw):
-    """(width, height) of ``text`` in display pixels as the renderer draws it."""
+    """(width, height) of ``text`` in display pixels as the renderer draws it.
+
+    A size is measured once for every text, text properties, dpi, canvas type and font
+    settings (rcParams) and read back the next time (the measure depends on nothing
+    else: the text is laid out at the figure's origin)."""
     r = renderer_of(fig)
-    t = fig.text(0, 0, text, **kw)
-    bb = t.get_window_extent(r)
-    t.remove()
-    return bb.width, bb.height
+    key = (text, tuple(sorted((k, repr(v)) for k, v in kw.items())), fig.dpi,
+           type(r), r.dpi, _font_settings())
+    size = _SIZES.get(key)
+    if size is None:
+        t = fig.text(0, 0, text, **kw)
+        bb = t.get_window_extent(r)
+        t.remove()
+        if len(_SIZES) > 20000:
+            _SIZES.clear()
+        size = _SIZES[key] = (bb.width, bb.height)
+    return size
 
 
 def _overlap(a, b):

@@ -82,16 +82,33 @@ def render_items(ax, items):
 
     # a line is added as the Line2D ``ax.plot`` makes of it (the same properties and
     # data, its colour given, so no property cycle): plot's parsing of its arguments
-    # cost more than the line
+    # cost more than the line.  Lines and patches are added as ``add_line`` and
+    # ``add_patch`` add them (the same clip path, transform and, for a line, the
+    # label ``_child<n>``) but the axes' data limits are updated once, at the end,
+    # with every item's extent (the lines' end points, the arrow heads' corners, the
+    # circles' boxes): ``add_patch`` found a patch's extent from its Bézier segments,
+    # one by one, a twentieth of a sheet's cost, for the limits of axes whose limits
+    # are set (a sheet, a plan)
+    n = sum(len(group) for group in (ax.lines, ax.patches, ax.texts, ax.collections,
+                                     ax.images, ax.tables, ax.artists))   # its children
+    extent = []
+
+    def add(artist, *points):
+        nonlocal n
+        if isinstance(artist, Line2D) and not artist.get_label():
+            artist.set_label(f"_child{n}")
+        ax.add_artist(artist)
+        n += 1
+        extent.extend(points)
+
     for it in items:
         if isinstance(it, Line):
             lw = WIDTH.get(it.layer, S_THIN) * PT
             kw = {}
             if it.layer == "DASHED":
                 kw["dashes"] = (DASH[0] * PT / lw, DASH[1] * PT / lw)
-            ax.add_line(Line2D(np.array([it.p1.real, it.p2.real]),
-                               np.array([it.p1.imag, it.p2.imag]),
-                               color="k", lw=lw, solid_capstyle="butt", **kw))
+            add(Line2D(np.array([it.p1.real, it.p2.real]), np.array([it.p1.imag, it.p2.imag]),
+                       color="k", lw=lw, solid_capstyle="butt", **kw), it.p1, it.p2)
         elif isinstance(it, Arrow):
             head = arrow_parts(it.p1, it.p2)
             if head is None:
@@ -99,19 +116,23 @@ def render_items(ax, items):
             lw = WIDTH.get(it.layer, S_MAIN) * PT
             tip, left, right = head
             base = (left + right) / 2
-            ax.add_line(Line2D(np.array([it.p1.real, base.real]),
-                               np.array([it.p1.imag, base.imag]),
-                               color="k", lw=lw, solid_capstyle="butt"))
-            ax.add_patch(Polygon([(z.real, z.imag) for z in head], closed=True,
-                                 facecolor="k", edgecolor="k", lw=0.1 * PT))
+            add(Line2D(np.array([it.p1.real, base.real]), np.array([it.p1.imag, base.imag]),
+                       color="k", lw=lw, solid_capstyle="butt"), it.p1, base)
+            add(Polygon([(z.real, z.imag) for z in head], closed=True, facecolor="k",
+                        edgecolor="k", lw=0.1 * PT), *head)
         elif isinstance(it, Text):
             va = {"bottom": "baseline", "center": "center", "top": "top"}[it.va]
             ax.text(it.at.real, it.at.imag, it.text, fontsize=it.height / CAP_EM * PT,
                     ha=it.ha, va=va, family=FONT, color="k")
+            n += 1
         elif isinstance(it, Circle):
-            ax.add_patch(MCircle((it.center.real, it.center.imag), it.r,
-                                 facecolor="k" if it.filled else "white", edgecolor="k",
-                                 lw=WIDTH.get(it.layer, S_THIN) * PT, zorder=3))
+            c, r = it.center, it.r
+            add(MCircle((c.real, c.imag), r, facecolor="k" if it.filled else "white",
+                        edgecolor="k", lw=WIDTH.get(it.layer, S_THIN) * PT, zorder=3),
+                c - r - 1j * r, c + r + 1j * r)
+    if extent:
+        z = np.asarray(extent, complex)
+        ax.update_datalim(np.column_stack([z.real, z.imag]))
 
 
 def _mm_figure(width, height):

@@ -2,6 +2,7 @@
 bundled example, in both languages, built through the library's plot functions (no file
 written) and checked by :func:`figure_check.figure_problems`: texts against texts, against
 the figure's edge and against the drawn lines."""
+import gc
 import re
 import sys
 from pathlib import Path
@@ -197,6 +198,24 @@ def _word_problems(fig, lang):
         if lang == "en" and CYRILLIC.search(s):
             out.append(f"Cyrillic in an English figure: {s!r}")
     return out
+
+
+@pytest.fixture(autouse=True)
+def _collector_paused():
+    """Python's cyclic garbage collector paused while a test builds and checks its
+    figures, resumed after it (a figure's artists refer to each other: what a test
+    drops is collected then).  Building a report's figures makes half a million
+    objects, none of them garbage until the figure is dropped, and each full collection
+    walked every one of them again: about half of the CPU of building a linkage's
+    plans and sheets.  Nothing checked changes: every figure is built and checked as
+    before."""
+    was = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if was:
+            gc.enable()
 
 
 @pytest.fixture(scope="module", params=list(EXAMPLES))

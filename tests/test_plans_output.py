@@ -407,3 +407,46 @@ def test_each_sheet_holds_one_or_two_positions(example, size):
         if size == "A1":
             assert len(ks) == 1, (tag, ks)
     assert "positions" in sheets[0].blocks
+
+
+def test_render_items_adds_what_add_line_and_add_patch_add():
+    """plans.drawing.render_items adds its lines and patches with one update of the
+    axes' data limits: the artists are those ``add_line``/``add_patch`` add (the same
+    data, clip box, transform and ``_child<n>`` labels, in the same order) and, on
+    axes that autoscale, the data limits and the autoscaled view are the same."""
+    from matplotlib.figure import Figure
+    from matplotlib.lines import Line2D
+
+    items = [layout.Line(10 + 5j, 60 + 25j, "MAIN"), layout.Text(30 + 40j, "A"),
+             layout.Arrow(-20 + 0j, -20 + 70j), layout.Line(0j, 5 + 5j, "DASHED"),
+             layout.Circle(80 + 10j, 7.5, filled=True), layout.Circle(-5 - 30j, 2.0)]
+
+    fig = Figure()
+    ax, ref = fig.subplots(1, 2)
+    ax.plot([0, 1])
+    ref.plot([0, 1])
+    drawing.render_items(ax, items)
+    real_line, real_patch = ref.add_line, ref.add_patch
+    ref.add_artist = lambda a: (real_line(a) if isinstance(a, Line2D) else real_patch(a))
+    drawing.render_items(ref, items)
+    assert np.allclose(ax.dataLim.get_points(), ref.dataLim.get_points(), atol=1e-9)
+    head_x0 = min(z.real for z in layout.arrow_parts(-20 + 0j, -20 + 70j))
+    assert head_x0 < -20                              # the head is wider than its shaft
+    assert np.allclose(ax.dataLim.get_points(), [[head_x0, -32], [87.5, 70]], atol=1e-9)
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    FigureCanvasAgg(fig).draw()
+    assert ax.get_xlim() == pytest.approx(ref.get_xlim())
+    assert ax.get_ylim() == pytest.approx(ref.get_ylim())
+    assert [type(a) for a in ax.get_children()] == [type(a) for a in ref.get_children()]
+    assert [ln.get_label() for ln in ax.lines] == [ln.get_label() for ln in ref.lines]
+    assert [ln.get_label() for ln in ax.lines][:2] == ["_child0", "_child1"]
+    for a, b in zip(ax.lines, ref.lines):
+        assert np.array_equal(a.get_xydata(), b.get_xydata())
+        assert a.get_clip_box().bounds == ax.bbox.bounds         # clipped by their axes
+        assert b.get_clip_box().bounds == ref.bbox.bounds
+        assert a.get_transform() is ax.transData and b.get_transform() is ref.transData
+    for a, b in zip(ax.patches, ref.patches):
+        assert np.array_equal(a.get_path().vertices, b.get_path().vertices)
+        assert a.get_clip_box().bounds == ax.bbox.bounds
+        assert b.get_clip_box().bounds == ref.bbox.bounds

@@ -119,6 +119,39 @@ def test_place_label_thins_when_no_room():
     assert t is not None and len(obs.boxes) == 1
 
 
+def test_text_size_is_the_drawn_size_and_follows_the_font():
+    """crankbase.plot_labels.text_size keeps what it measured: a size read back is the
+    box the renderer draws for the text (a fresh measure), and a larger font (a
+    property or the rcParams), a bolder one, another dpi or another text is measured
+    anew, not read back."""
+    from matplotlib import rc_context
+    from matplotlib.figure import Figure
+
+    from crankbase.plot_labels import renderer_of, text_size
+
+    def fresh(fig, text, **kw):
+        t = fig.text(0.3, 0.6, text, **kw)
+        bb = t.get_window_extent(renderer_of(fig))
+        t.remove()
+        return bb.width, bb.height
+
+    fig = Figure(figsize=(3, 2))
+    first = text_size(fig, "240/600", fontsize=7)
+    assert text_size(fig, "240/600", fontsize=7) == first
+    assert first == pytest.approx(fresh(fig, "240/600", fontsize=7), abs=1e-9)
+    bigger = text_size(fig, "240/600", fontsize=14)
+    assert bigger[0] > 1.8 * first[0] and bigger[1] > 1.8 * first[1]
+    assert text_size(fig, "240/600", fontsize=7, weight="bold")[0] > first[0]
+    assert text_size(fig, "240", fontsize=7)[0] < 0.6 * first[0]
+    with rc_context({"font.size": 20.0}):
+        plain = text_size(fig, "240/600")
+        assert plain == pytest.approx(fresh(fig, "240/600"), abs=1e-9)
+    assert text_size(fig, "240/600") != plain                  # back at 10 pt
+    sharp = Figure(figsize=(3, 2), dpi=200)
+    assert text_size(sharp, "240/600", fontsize=7)[0] == pytest.approx(2 * first[0],
+                                                                        rel=0.05)
+
+
 @pytest.mark.parametrize("lang", ["ru", "en"])
 def test_plot_curves_differ_in_colour_and_dash(lang):
     for stem, fig in _all_figures(EXAMPLES[0], lang).items():

@@ -168,6 +168,10 @@ def plot_wear(diagram, ax=None, lang="ru", note=True):
     ax.set_xlim(-1.65, 1.65)
     ax.set_ylim(-1.65, 1.65)
     ax.axis("off")
+    # nor its axes' ticks (an axes switched off draws none, but the placing of its title
+    # laid out the y axis's ticks, made for nothing)
+    ax.xaxis.set_visible(False)
+    ax.yaxis.set_visible(False)
     ax.set_title(t["wear"].format(name=f"{t['names'].get(kind, kind)} {num}"), fontsize=11)
     _hole_label(ax, f"{t['hole']} {hole:g}°", hole)
     if not note:
