@@ -291,8 +291,10 @@ def test_the_same_study_asked_again_is_drawn_again_but_not_computed_again(app,
     assert csv1 and csv2 == csv1
     assert sorted(png2) == sorted(png1) and all(png2[n][:4] == b"\x89PNG" for n in png2)
     assert any(png2[n] != png1[n] for n in png1)                # drawn again, in Russian
+    # the study test_the_dynamics_page_equals_crankdyn_dynamics[flywheel] runs later, in
+    # English: its files drawn here, once (web.app.DrawnCache)
     vals["machine.J_red_kgm2"] = "0.3"
-    other = c.post("/dynamics/run?lang=ru", data=vals).text
+    other = c.post("/dynamics/run?lang=en", data=vals).text
     assert 'id="results"' in other and calls == [1, 1]         # a new study: computed
     csv3 = files(other, "csv")
     assert sorted(csv3) == sorted(csv1) and csv3 != csv1
@@ -754,6 +756,61 @@ def test_the_kept_drawn_files_are_links_the_oldest_dropped_beyond_the_size(tmp_p
     assert StudyCache.key(kind, {"engine": {"bore_mm": 79.0}}, None, {"torsion": False}) == \
         ("engine", "[engine]\nbore_mm = 79.0\n", "[('torsion', False)]")
     assert StudyCache.key(kind, {"engine": {}}, ("pressure.csv", b"1"), {}) is None
+
+
+def test_a_run_is_drawn_ahead_or_when_first_asked_for(app, monkeypatch):
+    """``create_app(draw=...)``.  "on_request" (the tests' app, conftest ``web_app``): a
+    run of a page that lists its files by name (the synthesis) is not drawn when it is
+    computed nor when its page is shown; a run replaced by the next one before any file
+    of it was asked for is never drawn (nothing of it written); the first file asked
+    for draws the run, once for all its files.  "ahead" (the default): the drawing is
+    submitted with the run, before any page or file is asked for, and the page of a kind
+    listing its files once written (the balance) shows them ready, a file asked right
+    after served."""
+    import web
+    from web.sessions import COOKIE
+
+    state = app.app.state
+    assert state.draw == "on_request"
+    with pytest.raises(ValueError, match="draw"):
+        web.create_app(draw="later")
+    render, jobs = state.render, []
+    real_submit = render.submit
+    monkeypatch.setattr(render, "submit",
+                        lambda *a, **k: jobs.append(a[1].name) or real_submit(*a, **k))
+    # on request: studies of their own (no other test runs these values: none kept drawn)
+    c = client(app)
+    c.post("/synth/example", data={"example": "readme"})
+    vals = form_values(c.get("/synth").text)
+    folder = state.store.get(c.cookies[COOKIE]).folder
+    pages = []
+    for mu in ("37.5", "38.5"):
+        r = c.post("/synth/run", data={**vals, "synth.mu_min_deg": mu})
+        assert r.status_code == 200 and 'id="results"' in r.text, r.text[:2000]
+        pages.append(r.text)
+    assert jobs == []                                       # neither run drawn
+    figs = re.findall(r'<img src="(/synth/run/2/[^"]+\.png)"', pages[1])
+    assert len(figs) == 3
+    assert c.get(re.sub(r"/run/2/", "/run/1/", figs[0])).status_code == 404
+    got = [c.get(u) for u in figs]
+    assert all(g.status_code == 200 and g.content[:4] == b"\x89PNG" for g in got)
+    assert jobs == ["synth"]                                # drawn once, for all three
+    assert not (folder / "synth-1").exists()                # the replaced run: never
+    assert sorted(p.name for p in (folder / "synth-2").rglob("*.png")) == sorted(
+        u.rsplit("/", 1)[1] for u in figs)
+    # ahead
+    monkeypatch.setattr(state, "draw", "ahead")
+    c = client(app)
+    c.post("/balance/example", data={"example": "rotor"})
+    vals = form_values(c.get("/balance").text)
+    vals["rotor.mass"] = vals["rotor.mass"].replace("z_mm = 420", "z_mm = 404")
+    r = c.post("/balance/run", data=vals, follow_redirects=False)
+    assert r.status_code == 303 and jobs == ["synth", "balance"]    # before any page
+    html = c.get("/balance").text
+    urls = re.findall(r'(?:href|src)="(/balance/run/1/[^"]+)"', html)
+    png = next(u for u in urls if u.endswith("_rotor_polygons.png"))
+    assert c.get(png).content[:4] == b"\x89PNG"
+    assert sum(u.endswith(".csv") for u in urls) == 2 and jobs == ["synth", "balance"]
 
 
 def test_a_report_crosses_to_the_drawing_process_pickled():

@@ -2,7 +2,10 @@
 
 :func:`build_app` makes the app with its limits; :mod:`web.engine_page` does the engine
 page's work through the library, :mod:`web.sessions` isolates each browser session in its
-own folder, :mod:`web.jobs` runs the computations in a bounded pool of threads.
+own folder, :mod:`web.jobs` runs the computations in a bounded pool of threads and the
+drawing of the reports in processes: as soon as a run is computed (``draw="ahead"``, the
+default) or when its files are first asked for (``draw="on_request"``: a class server on
+a small machine draws only what a student looks at).
 Starlette, Jinja2 and python-multipart are the ``web`` extra; nothing here is imported by
 ``import engine`` (or any other library package), and matplotlib and openpyxl are
 imported only by the first computation, not by a page.
@@ -38,7 +41,8 @@ from .synth_page import SynthPage
 from .pages import PageState, Run, render_job, report_blob, spec_toml
 from .sessions import COOKIE, SessionStore
 
-__all__ = ["build_app", "StudyCache", "DrawnCache", "UPLOAD_LIMIT", "LANG_COOKIE"]
+__all__ = ["build_app", "StudyCache", "DrawnCache", "UPLOAD_LIMIT", "LANG_COOKIE",
+           "DRAW_MODES"]
 
 HERE = Path(__file__).resolve().parent
 #: Largest request body (an uploaded spec and its pressure file) [bytes].
@@ -46,6 +50,9 @@ UPLOAD_LIMIT = 2_000_000
 #: The cookie of the page language.
 LANG_COOKIE = "crankdyn_lang"
 log = logging.getLogger("crankdyn.web")
+#: When a run's report is drawn and written (:func:`build_app`'s ``draw``): "ahead", as
+#: soon as its numbers are computed; "on_request", when its files are first asked for.
+DRAW_MODES = ("ahead", "on_request")
 #: The pages, in the menu's order.
 KINDS = (EnginePage(), LinkagePage(), SynthPage(), DynamicsPage(), BalancePage())
 
@@ -113,7 +120,8 @@ def _page_html(title, message, lang) -> str:
 # ----------------------------------------------------------------------------- the app
 def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: float = 3600.0,
               workers: int = 2, queue: int = 32, timeout: float = 120.0,
-              max_sessions: int = 500, render_workers: int = 2, studies: int = 8):
+              max_sessions: int = 500, render_workers: int = 2, studies: int = 8,
+              draw: str = "ahead"):
     """The ``crankdyn serve`` app.
 
     Parameters
@@ -141,7 +149,23 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
         language it was drawn in; 0: none.  A kept study holds its report twice (as
         computed and pickled for the drawing processes): up to a few MB each (the
         torsion example with bearings 3.4 MB pickled).
+    draw : {"ahead", "on_request"}
+        When a run's report (its figures, workbook, CSVs and zip) is drawn and written
+        in the drawing processes.  "ahead" (default): as soon as its numbers are
+        computed, while the student reads the page, so its files are ready when asked
+        for.  "on_request": when the page first needs them, i.e. when a file of the run
+        is asked for (a figure shown on the page, a download), or when its page lists
+        files known only once written (the dynamics and balance pages, the engine
+        page's drawings); a run whose page is left before that (a form corrected and run
+        again, a student who only reads the tables) is never drawn.  A class server on a
+        small machine may prefer it: drawing is most of an engine run's CPU (its 13
+        figures, workbook and zip about 2 s, its numbers a few hundredths), and the first
+        figure shown then waits for the drawing instead of the drawing starting behind
+        the page.  The mode is
+        ``app.state.draw`` (the Starlette app's), read at each run.
     """
+    if draw not in DRAW_MODES:
+        raise ValueError(f"draw must be one of {DRAW_MODES}, not {draw!r}")
     store = SessionStore(root, idle_seconds, max_sessions)
     pool = JobPool(workers, queue, timeout)
     # the reports are drawn and written in processes: matplotlib's text layout is not
@@ -219,6 +243,7 @@ def build_app(*, root=None, upload_limit: int = UPLOAD_LIMIT, idle_seconds: floa
     app = Starlette(routes=routes, lifespan=lifespan)
     app.state.store, app.state.pool, app.state.render = store, pool, render
     app.state.batches, app.state.studies, app.state.drawn = batches, cache, drawn
+    app.state.draw = draw
     return BodyLimit(app, upload_limit) if upload_limit else app
 
 
@@ -239,6 +264,9 @@ def _page_routes(kind, *, templates, store, pool, render, cache, drawn, upload_l
         files go once its writing is over."""
         old, st.run = st.run, None
         if old is not None:
+            if old.draw is not None:        # never drawn (draw="on_request"): never will be
+                old.draw = None
+                old.write_future.cancel()
             old.write_future.add_done_callback(
                 lambda _f, d=old.folder: shutil.rmtree(d, ignore_errors=True))
 
@@ -266,6 +294,7 @@ def _page_routes(kind, *, templates, store, pool, render, cache, drawn, upload_l
             files = None
             if kind.waits(run):                 # listed once written
                 with contextlib.suppress(Exception):
+                    _start_drawing(run)
                     files = await render.wait(run.write_future)
             res = kind.results(run, lang, files)
             ctx["run"] = dict(dict(zip=f"{res['name']}_report.zip", toml=f"{res['name']}.toml",
@@ -421,13 +450,16 @@ def _page_routes(kind, *, templates, store, pool, render, cache, drawn, upload_l
             run.write_future = Future()
             run.write_future.set_result(files)
         else:
-            try:
-                run.write_future = render.submit(render_job, kind, number, folder, data,
-                                                 lang, pressure, options, blob)
-            except Busy:
-                return error_page(request, session, lang, texts(lang)("web.run.busy"), 503)
-            if dkey is not None:
-                run.write_future.add_done_callback(partial(drawn.keep_done, dkey))
+            draw = partial(_drawn_job, render, drawn, dkey, render_job, kind, number, folder,
+                           data, lang, pressure, options, blob)
+            if request.app.state.draw == "on_request":
+                run.write_future, run.draw = Future(), draw
+            else:
+                try:
+                    run.write_future = draw()
+                except Busy:
+                    return error_page(request, session, lang, texts(lang)("web.run.busy"),
+                                      503)
         with st.lock:
             drop(st)
             st.run, st.problems, st.notice = run, [], None
@@ -442,7 +474,10 @@ def _page_routes(kind, *, templates, store, pool, render, cache, drawn, upload_l
         if run is None or str(run.number) != request.path_params["number"]:
             return Response(texts(lang)("web.file.gone"), status_code=404)
         try:
+            _start_drawing(run)
             files = await render.wait(run.write_future)
+        except Busy:
+            return Response(texts(lang)("web.run.busy"), status_code=503)
         except asyncio.TimeoutError:
             return Response(texts(lang)("web.run.timeout", s=render.timeout), status_code=504)
         except Exception as exc:
@@ -696,6 +731,42 @@ def _teacher_routes(*, templates, store, pool, batches, upload_limit, lang_of, s
             Route("/teacher/check/{number:str}/{name:str}", check_file),
             Route("/teacher/class", check_class, methods=["POST"]),
             Route("/teacher/class/{number:str}/{name:str}", class_file)]
+
+
+def _drawn_job(render, drawn, dkey, job, *args):
+    """``job(*args)`` (:func:`web.pages.render_job`) submitted to the drawing pool
+    ``render``: its future, whose files ``drawn`` keeps for ``dkey`` once written
+    (:class:`DrawnCache`); :class:`~web.jobs.Busy` when the pool is full."""
+    fut = render.submit(job, *args)
+    if dkey is not None:
+        fut.add_done_callback(partial(drawn.keep_done, dkey))
+    return fut
+
+
+def _start_drawing(run) -> None:
+    """Start the drawing of ``run`` if it waits to be asked for (``build_app(draw=
+    "on_request")``: ``run.draw`` submits it): its outcome becomes ``run.write_future``'s.
+    Called from the event loop's thread only, so a run is drawn once; :class:`Busy`
+    (the run stays undrawn, a later request tries again) when the drawing pool is full."""
+    draw = run.draw
+    if draw is None:
+        return
+    job = draw()                        # Busy: run.draw kept
+    run.draw = None
+    job.add_done_callback(partial(_pass_on, run.write_future))
+
+
+def _pass_on(target, fut) -> None:
+    """``fut``'s outcome (result, exception or cancellation) set on ``target``."""
+    from concurrent.futures import InvalidStateError
+
+    with contextlib.suppress(InvalidStateError):    # the run dropped (cancelled) meanwhile
+        if fut.cancelled():
+            target.cancel()
+        elif fut.exception() is not None:
+            target.set_exception(fut.exception())
+        else:
+            target.set_result(fut.result())
 
 
 def _computed(kind, data, input_dir, pressure, options):

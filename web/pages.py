@@ -30,6 +30,9 @@ class Run:
     pressure: tuple | None = None          # (server name, bytes)
     options: dict = field(default_factory=dict)
     write_future: object = None
+    #: Starts the drawing of a run not yet drawn (``web.app.build_app(draw="on_request")``):
+    #: a callable returning the drawing job's future; None once started (or drawn ahead).
+    draw: object = None
 
 
 @dataclass
