@@ -1,6 +1,7 @@
 """``crankdyn serve``: the course project in the browser (the ``web`` extra).
 
-    crankdyn serve [--host 127.0.0.1] [--port 8000] [--open] [--workers N] [--lang ru|en|zh]
+    crankdyn serve [--host 127.0.0.1] [--port 8000] [--open] [--workers N]
+                   [--draw ahead|on_request] [--lang ru|en|zh]
 
 Starts the web app (:mod:`web`) with uvicorn and prints its address.  ``--lang`` is the
 language of this command's own lines (the page has its own language switch).  The web packages
@@ -21,6 +22,8 @@ def add_parser(subparsers, t=None):
     p.add_argument("--open", action="store_true", help=t("cli.serve.opt.open"))
     p.add_argument("--workers", type=int, default=2, metavar="N",
                    help=t("cli.serve.opt.workers"))
+    p.add_argument("--draw", choices=("ahead", "on_request"), default="ahead",
+                   help=t("cli.serve.opt.draw"))
     add_lang(p, t, "serve")
     p.set_defaults(func=run)
 
@@ -47,6 +50,6 @@ def run(args) -> int:
 
         threading.Timer(1.0, webbrowser.open, (url,)).start()
     n = max(1, args.workers)
-    uvicorn.run(create_app(workers=n, render_workers=n), host=args.host, port=args.port,
+    uvicorn.run(create_app(workers=n, render_workers=n, draw=args.draw), host=args.host, port=args.port,
                 log_level="warning")
     return 0

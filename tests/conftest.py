@@ -217,15 +217,14 @@ def web_app(tmp_path_factory):
     worker runs: each module built its own before, and each app's render processes import
     the whole library.  ``app.root`` is its sessions' folder.  Each module's autouse
     fixture drains the renders its tests asked for (``app.app.state.render.drain``).
-    It draws a run's report only when a file of it is asked for (``draw="on_request"``):
-    about a tenth of the runs' drawings were never looked at by any test; the app's
-    default, ``"ahead"``, is tests/test_web.py
-    ``test_a_run_is_drawn_ahead_or_when_first_asked_for``'s."""
+    It draws ahead, as ``crankdyn serve`` does by default: a test's app drawing on
+    request (``draw="on_request"``) saved ~2 s (nearly every drawing is read by some
+    test) and would leave the default mode to one test; the other mode is
+    tests/test_web.py ``test_a_run_is_drawn_ahead_or_when_first_asked_for``'s."""
     import web
 
     root = tmp_path_factory.mktemp("webroot")
-    a = web.create_app(root=root, upload_limit=WEB_UPLOAD_LIMIT, workers=2,
-                       draw="on_request")
+    a = web.create_app(root=root, upload_limit=WEB_UPLOAD_LIMIT, workers=2)
     a.root = root
     return a
 

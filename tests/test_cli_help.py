@@ -223,3 +223,20 @@ def test_serve_speaks_its_lang_when_the_web_extra_is_missing(lang, words, monkey
         assert not _latin_words(err.split(error, 1)[1], "serve"), err
     else:
         assert not CYRILLIC.search(err)
+
+
+@pytest.mark.parametrize("asked, mode", [([], "ahead"), (["--draw", "on_request"],
+                                                          "on_request")])
+def test_serve_draw_option_reaches_the_app(monkeypatch, asked, mode):
+    """``crankdyn serve --draw`` is the app's ``draw`` (web.create_app): ahead by default."""
+    pytest.importorskip("starlette")
+    import types
+
+    seen = {}
+    fake = types.SimpleNamespace(run=lambda app, **kw: seen.update(app=app, **kw))
+    monkeypatch.setitem(sys.modules, "uvicorn", fake)
+    import web
+
+    monkeypatch.setattr(web, "create_app", lambda **kw: seen.setdefault("options", kw))
+    assert main(["serve", "--port", "8765", *asked]) == 0
+    assert seen["options"]["draw"] == mode and seen["port"] == 8765
