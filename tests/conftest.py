@@ -73,16 +73,17 @@ class Report:
 #: The shared reports (:func:`cli_report`) whose figures are saved unrendered (each file
 #: written under its name by the report's own ``savefig`` call and listed in the
 #: manifest, its bytes a short text naming the format, as :func:`unrendered_figures`
-#: writes): no test reads these runs' figure bytes beyond their names, sizes above 0 and
-#: a page's PNG served by the web app (drawn there).  Each is the second language of a
-#: pair whose other run renders every figure for real and is checked as PNG and SVG:
-#: ``dynamics`` press, petrol and hoist in Russian (tests/test_dynamics_reports.py);
-#: ``engine`` petrol, diesel in Russian and the V8 with its bearings (Russian;
-#: tests/test_engine_cli.py::test_plots_exist_and_are_not_empty); the shaper's dynamics
-#: and the Kolchin form read for their tables and workbooks only; ``linkage --example
-#: press`` read for its file names (tests/test_portable.py), the crank-slider's rendered
-#: run ``linkage --example`` checked as PNG (tests/test_cli_linkage.py).  Each figure's
-#: layout in each language is checked without rendering in tests/test_figures_clean.py.
+#: writes): no test reads these runs' figure bytes beyond their names and sizes above 0
+#: (the web pages' PNGs are drawn by the app itself).  Each repeats figures a rendered
+#: run draws and checks as PNG and SVG: ``dynamics`` press, petrol and hoist in Russian
+#: (tests/test_dynamics_reports.py); ``engine`` petrol and diesel in Russian and the V8
+#: with its bearings (Russian; tests/test_engine_cli.py::test_plots_exist_and_are_not_empty);
+#: the Russian ratchet's plans (``--plans 5,11``, tests/test_plans_output.py) and the
+#: Chinese one's (a glyph missing from a font would show on its stderr,
+#: tests/test_cli_linkage.py) for the English ratchet's plans and the A3 sheets the web pages compare (their CSVs
+#: only).  The shaper's dynamics and the Kolchin form are read for their tables,
+#: workbooks and terminal text only.  Each figure's layout in each language is checked
+#: without rendering in tests/test_figures_clean.py.
 UNRENDERED_REPORTS = frozenset({
     ("dynamics", "--example", "press", "--lang", "en"),
     ("dynamics", "--example", "petrol", "--lang", "en"),
@@ -92,7 +93,11 @@ UNRENDERED_REPORTS = frozenset({
     ("engine", "--example", "diesel", "--lang", "en"),
     ("engine", "--example", "v8", "--lang", "en"),
     ("engine", "--example", "diesel", "--lang", "ru", "--form", "kolchin"),
-    ("linkage", "--example", "press"),
+    ("linkage", "--example", "--no-plots", "--plans", "5", "--lang", "en"),
+    ("linkage", "--example", "shaper", "--plans", "2,5", "--sheet", "A3", "--lang", "en",
+     "--no-plots"),
+    ("linkage", "--example", "ratchet", "--plans", "5", "--sheet", "A3", "--lang", "en",
+     "--no-plots"),
 })
 
 
