@@ -8,6 +8,18 @@ import subprocess
 
 import pytest
 
+#: The first bytes of a figure saved unrendered, followed by its format and ")" (the text
+#: tests/conftest.py writes: ``unrendered_figures``, the shared reports of its
+#: ``UNRENDERED_REPORTS``).
+UNRENDERED_HEAD = b"figure not rendered ("
+
+
+def unrendered(path):
+    """Whether the figure file ``path`` was saved unrendered, as its own format (the text
+    names the format of its suffix: a PNG saved as PNG)."""
+    return path.read_bytes().startswith(UNRENDERED_HEAD + path.suffix[1:].encode() + b")")
+
+
 #: Skip marker of the rendering tests.
 needs_office = pytest.mark.skipif(
     shutil.which("soffice") is None or shutil.which("pdfinfo") is None,

@@ -4,7 +4,7 @@ files; the terminal summary, the workbook and the plots speak the report's langu
 import re
 
 import pytest
-from rendering import needs_office, page_sizes_many
+from rendering import needs_office, page_sizes_many, unrendered
 
 from crankbase.output import MANIFEST_NAME, read_manifest, verify_report
 from crankbase.resources import example_path
@@ -54,7 +54,14 @@ def runs(cli_report):
                                                for c, ex, lang in keys])):
         assert rep.rc == 0, rep.err
         out[key] = (rep.folder, rep.out, rep.err)
+        RENDERED[key] = rep.rendered
     return out
+
+
+#: (command, example, lang) → whether that shared report's figures are rendered (the
+#: English dynamics reports of press, petrol and hoist are not: tests/conftest.py
+#: UNRENDERED_REPORTS; their Russian ones are, and checked as PNG and SVG below).
+RENDERED = {}
 
 
 # ------------------------------------------------------------------ names and units
@@ -63,12 +70,20 @@ def test_every_output_is_named_after_the_spec(runs):
         want = dynamics_files(ex) if command == "dynamics" else BALANCE[ex]
         assert _names(d) == want, (command, ex, lang)
         assert set(verify_report(d)) == want
+        rendered = RENDERED[(command, ex, lang)]
         for n in want:          # the plots are rendered (the other tests here do not draw)
             head = (d / n).read_bytes()[:300]
-            if n.endswith(".png"):
+            if not rendered and n.endswith((".png", ".svg")):     # saved by its savefig
+                assert unrendered(d / n), (command, ex, lang, n)
+            elif n.endswith(".png"):
                 assert head.startswith(b"\x89PNG\r\n\x1a\n"), (command, ex, lang, n)
             elif n.endswith(".svg"):
                 assert b"<svg" in head, (command, ex, lang, n)
+    # every example's plots rendered for real in at least one language
+    for command, examples in (("dynamics", DYNAMICS), ("balance", BALANCE)):
+        for ex in examples:
+            assert RENDERED[(command, ex, "ru")] or RENDERED[(command, ex, "en")], ex
+    assert RENDERED[("dynamics", "press", "ru")]     # the example drawing every plot
 
 
 def test_two_specs_share_a_folder_and_a_rerun_replaces_only_its_own(tmp_path, capsys,

@@ -49,7 +49,7 @@ def test_bearings_flag_writes_tables_equal_to_the_library(tmp_path, capsys,
                                                          figures_rendered_only):
     """The diesel example, an inline 4 (firing 1-3-4-2, counterweights per throw).  Its
     bearing plots are rendered; its engine plots are built, not drawn (the same plots of
-    ``crankdyn engine --example diesel --lang en`` are rendered in the session's shared
+    ``crankdyn engine --example diesel --lang ru`` are rendered in the session's shared
     report, tests/test_engine_cli.py)."""
     saved = figures_rendered_only(*(f"_{stem}." for stem in BEARING_PLOT_NAMES))
     out = tmp_path / "o"

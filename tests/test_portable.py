@@ -170,8 +170,9 @@ def test_reports_run_without_posix_only_modules(tmp_path):
     written through the report's own staging, but not encoded: the PNG and SVG
     encoders are matplotlib's and Pillow's, which run on Windows (the simulation here
     judges this project's code; the same reports' figures are encoded by the session's
-    shared runs, ``engine --example petrol --lang en`` and ``linkage --example ratchet
-    --lang en``)."""
+    shared runs, ``engine --example petrol --lang ru`` and ``linkage --example`` (the
+    ratchet in Russian; the shared English petrol report saves its figures unrendered,
+    tests/conftest.py UNRENDERED_REPORTS))."""
     import json
     import os
 
