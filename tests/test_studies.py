@@ -227,7 +227,8 @@ def test_dynamics_study_gives_the_cli_tables_and_writes_what_it_lists(example, l
                                                                       tmp_path, cli_report,
                                                                       unrendered_figures):
     """The study layer's tables equal the CLI's, and its report lists what it writes (its
-    plots built, not drawn: the CLI's report, rendered, is the session's shared one)."""
+    plots built, not drawn: the CLI's report is the session's shared one, rendered in
+    Russian, its English figures placeholders: tests/conftest.py ``UNRENDERED_REPORTS``)."""
     from dynamics.study import run_study, summary_lines, write_report
 
     # the CLI's report of the example (the session's shared run, read-only)
