@@ -760,19 +760,21 @@ def test_the_kept_drawn_files_are_links_the_oldest_dropped_beyond_the_size(tmp_p
 
 
 def test_a_run_is_drawn_ahead_or_when_first_asked_for(app, monkeypatch):
-    """``create_app(draw=...)``.  "on_request" (the tests' app, conftest ``web_app``): a
+    """``create_app(draw=...)``, read at each run (``app.state.draw``).  "on_request": a
     run of a page that lists its files by name (the synthesis) is not drawn when it is
     computed nor when its page is shown; a run replaced by the next one before any file
     of it was asked for is never drawn (nothing of it written); the first file asked
     for draws the run, once for all its files.  "ahead" (the default): the drawing is
     submitted with the run, before any page or file is asked for, and the page of a kind
     listing its files once written (the balance) shows them ready, a file asked right
-    after served."""
+    after served (the default: the tests' app, conftest ``web_app``, draws ahead, as
+    ``crankdyn serve`` does)."""
     import web
     from web.sessions import COOKIE
 
     state = app.app.state
-    assert state.draw == "on_request"
+    assert state.draw == "ahead"                            # the default
+    monkeypatch.setattr(state, "draw", "on_request")
     with pytest.raises(ValueError, match="draw"):
         web.create_app(draw="later")
     render, jobs = state.render, []
