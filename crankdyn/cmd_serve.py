@@ -50,6 +50,6 @@ def run(args) -> int:
 
         threading.Timer(1.0, webbrowser.open, (url,)).start()
     n = max(1, args.workers)
-    uvicorn.run(create_app(workers=n, render_workers=n, draw=args.draw), host=args.host, port=args.port,
-                log_level="warning")
+    uvicorn.run(create_app(workers=n, render_workers=n, draw=args.draw), host=args.host,
+                port=args.port, log_level="warning")
     return 0

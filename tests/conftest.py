@@ -80,8 +80,8 @@ class Report:
 #: with its bearings (Russian; tests/test_engine_cli.py::test_plots_exist_and_are_not_empty);
 #: the Russian ratchet's plans (``--plans 5,11``, tests/test_plans_output.py) and the
 #: Chinese one's (a glyph missing from a font would show on its stderr,
-#: tests/test_cli_linkage.py) for the English ratchet's plans and the A3 sheets the web pages compare (their CSVs
-#: only).  The shaper's dynamics and the Kolchin form are read for their tables,
+#: tests/test_cli_linkage.py) for the English ratchet's plans and the A3 sheets the web
+#: pages compare (their CSVs only).  The shaper's dynamics and the Kolchin form are read for their tables,
 #: workbooks and terminal text only.  Each figure's layout in each language is checked
 #: without rendering in tests/test_figures_clean.py.
 UNRENDERED_REPORTS = frozenset({

@@ -2,7 +2,6 @@
 bundled example, in both languages, built through the library's plot functions (no file
 written) and checked by :func:`figure_check.figure_problems`: texts against texts, against
 the figure's edge and against the drawn lines."""
-import gc
 import re
 import sys
 from pathlib import Path
@@ -10,6 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from crankbase.output import paused_gc
 from crankbase.resources import example_path
 
 pytest.importorskip("matplotlib")
@@ -209,13 +209,8 @@ def _collector_paused():
     walked every one of them again: about half of the CPU of building a linkage's
     plans and sheets.  Nothing checked changes: every figure is built and checked as
     before."""
-    was = gc.isenabled()
-    gc.disable()
-    try:
+    with paused_gc():
         yield
-    finally:
-        if was:
-            gc.enable()
 
 
 @pytest.fixture(scope="module", params=list(EXAMPLES))
