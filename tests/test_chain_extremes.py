@@ -160,3 +160,57 @@ def test_random_chains_extremes_are_the_sequential_bisections(kind):
 
     run()
     assert any(compared), kind
+
+
+def reference_transmission_angles(res):
+    """transmission_angles as it was (numpy's modulus of the Vec, new arrays each step)."""
+    from linkage import groups as g
+    out = {}
+    for grp, s in zip(res.mech.groups, res.solutions):
+        with np.errstate(invalid="ignore", divide="ignore"):
+            if grp.kind == "RRR":
+                x = g.cross(s.link3.e, s.link4.e)
+            elif grp.kind == "RRP":
+                x = g.dot(s.link3.e, s.link4.e)
+            elif grp.kind == "RPR":
+                d = s.block.origin.z - s.lever.origin.z
+                x = g.dot(s.lever.e, d) / np.abs(d)
+            elif grp.kind == "PRP":
+                x = g.cross(s.link2.e, s.link3.e)
+            else:
+                x = g.cross(s.block.e, s.yoke.e)
+            mu = np.arcsin(np.minimum(np.abs(np.asarray(x, float)), 1.0))
+            out["_".join(grp.links)] = mu if mu.shape == res.phi.shape else \
+                mu * np.ones(res.phi.shape)
+    return out
+
+
+def _same_bits(a, b):
+    return a.shape == b.shape and np.array_equal(a.view(np.uint64), b.view(np.uint64))
+
+
+@pytest.mark.parametrize("name", CHAINS)
+def test_transmission_angles_are_the_old_formulas_bit_for_bit(name):
+    mech = linkage.load_spec(example_path(name)).mechanism
+    res = ch.solve(mech, np.linspace(-1.0, 7.0, 3001), 2.0, 0.5)
+    got, want = ca.transmission_angles(res), reference_transmission_angles(res)
+    assert list(got) == list(want) and all(_same_bits(got[k], want[k]) for k in want)
+    one = ch.solve(mech, np.array([0.4]), 2.0, 0.5)                 # a single position
+    got, want = ca.transmission_angles(one), reference_transmission_angles(one)
+    assert all(_same_bits(got[k], want[k]) for k in want)
+
+
+@pytest.mark.parametrize("kind", sorted(BUILDERS))
+def test_random_chains_transmission_angles_bit_for_bit(kind):
+    @SETTINGS
+    @given(PARAMS)
+    def run(p):
+        mech = BUILDERS[kind](p)
+        res = ch.solve(mech, np.linspace(0.0, 2.0 * math.pi, 257), p["omega"], p["eps"],
+                       check=False)                      # NaN where it cannot assemble
+        got, want = ca.transmission_angles(res), reference_transmission_angles(res)
+        assert list(got) == list(want)
+        for k in want:
+            assert _same_bits(got[k], want[k]), k
+
+    run()
