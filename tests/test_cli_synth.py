@@ -77,9 +77,13 @@ def test_paper_example_fig3_with_ground(tmp_path, capsys):
     assert kin["mu_deg"].min() >= m["mu_min_deg"] - 1e-9
 
 
-def test_table1_csv_and_workbook(tmp_path):
+def test_table1_csv_and_workbook(tmp_path, unrendered_figures):
+    """Table 1 and the workbook (the numbers and labels only: the run's three figures
+    are built and saved unrendered; the same three are rendered as PNG and SVG by
+    test_paper_example_fig3_with_ground)."""
     out = tmp_path / "o"
     assert run(["--l2", "0.7", "--l3", "0.6"], out) == 0
+    assert unrendered_figures == ["png", "svg"] * len(PLOTS)
     t1 = pd.read_csv(out / "kkm-30_table1.csv")
     assert list(t1.columns) == ["l1", "l2", "l3", "mu_min_deg"]
     # seed 004, Table 1 (four decimals)
@@ -119,9 +123,17 @@ def test_equal_l2_l3_example(tmp_path, capsys):
     assert "λ2 = 0.6199" in capsys.readouterr().out
 
 
-def test_region_only_and_other_phi0(tmp_path):
+def test_region_only_and_other_phi0(tmp_path, figures_rendered_only):
+    """φ0 = 120°: the region and μmin figures only.  The region's PNG is rendered (its
+    boundary on Kolchin's lines (1)–(2), drawn nowhere else); the others are saved
+    unrendered (their kinds are rendered by test_paper_example_fig3_with_ground)."""
+    saved = figures_rendered_only("_region.png")
     out = tmp_path / "o"
     assert run(["--phi0", "120"], out) == 0
+    rendered = [name for name, drawn in saved if drawn]     # (each saved to a temporary
+    assert len(saved) == 4 and len(rendered) == 1           # name, then renamed)
+    assert rendered[0].lstrip(".").startswith("kkm-120_region.png")
+    assert (out / "kkm-120_region.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     names = {p.name for p in out.iterdir()} - {MANIFEST_NAME}
     assert names == {"kkm-120_table1.csv", "kkm-120_synthesis.xlsx", "kkm-120_region.png",
                      "kkm-120_region.svg", "kkm-120_mu_min.png", "kkm-120_mu_min.svg"}

@@ -403,14 +403,16 @@ def test_library_never_names_a_command_line_option():
 
 
 @pytest.mark.parametrize("lang", ["ru", "en"])
-def test_check_linkage_tables(tmp_path, lang):
+def test_check_linkage_tables(tmp_path, cli_report, lang):
     """The check reads our linkage workbook by its CSV-name header row (row 3), the same
     in the Russian workbook (sheets «Скорости», «Реакции и Mур», symbols Mур, units Н·м)
     and the English one: altered cells are flagged exactly there, the unaltered
-    workbook passes."""
-    src = tmp_path / "lk"
-    assert main(["linkage", "--example", "ratchet", "-o", str(src), "--no-plots",
-                 "--lang", lang]) == 0
+    workbook passes.  The workbook is the session's shared ``crankdyn linkage --example
+    ratchet --no-plots --lang LANG`` report's (read-only: the altered copy is saved
+    elsewhere)."""
+    rep = cli_report("linkage", "--example", "ratchet", "--no-plots", "--lang", lang)
+    assert rep.rc == 0, rep.err
+    src = rep.folder
     wb = load_workbook(src / "ratchet-drive.xlsx")
     # sheets by their place (inputs, positions, velocities, accelerations, loads, forces):
     # the titles are in the report's language

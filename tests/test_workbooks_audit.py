@@ -125,17 +125,37 @@ def variants_summary(folder, lang, records=None):
     return write_summary(folder, records, [], lang)[1]
 
 
+def _altered_copy(src, dst, sheet, coord, change):
+    """A copy of the workbook ``src`` with the number of one cell changed in the file
+    itself (``xl/worksheets/<sheet>``, ``<c r="coord" …><v>x</v></c>``: ``x`` becomes
+    ``change(x)``), as a student's spreadsheet leaves it: every other part the same
+    bytes, no parse and save of the whole workbook with openpyxl."""
+    import re
+    import zipfile
+
+    with zipfile.ZipFile(src) as zin, zipfile.ZipFile(dst, "w", zipfile.ZIP_DEFLATED) \
+            as zout:
+        for item in zin.infolist():
+            data = zin.read(item)
+            if item.filename == f"xl/worksheets/{sheet}":
+                text, n = re.subn(rf'(<c r="{coord}"[^>]*>)<v>([^<]+)</v>',
+                                  lambda m: f"{m[1]}<v>{change(float(m[2]))!r}</v>",
+                                  data.decode("utf-8"))
+                assert n == 1, (sheet, coord)
+                data = text.encode("utf-8")
+            zout.writestr(item, data)
+    return dst
+
+
 def checked_copy(report, folder, lang):
-    """``crankdyn check``'s marked copy of a report with one cell altered."""
+    """``crankdyn check``'s marked copy of a report with one cell altered (Table 2,
+    the second sheet: ``sheet2.xml``)."""
     from crankbase.checking import compare, mark_workbook, read_student_table
     from engine.check import KEY, computed_rows, known_columns
 
-    src = load_workbook(report)
-    ws = src.worksheets[1]
-    ws.cell(8, 2).value = ws.cell(8, 2).value + 7.0           # one wrong ΔPг, mm
     folder.mkdir()
-    student = folder / "student.xlsx"
-    src.save(student)
+    student = _altered_copy(report, folder / "student.xlsx", "sheet2.xml", "B8",
+                            lambda v: v + 7.0)               # one wrong ΔPг, mm
     study = engine.load(example_path("diesel_d240.toml"))
     table = read_student_table(student, KEY, known_columns(), {})
     computed = computed_rows(study.spec, study.settings, table.data[KEY].to_numpy(float))
