@@ -565,7 +565,12 @@ def test_name_is_text_not_formula(tmp_path, unrendered_figures):
     assert wb.worksheets[0].cell(4, 4).data_type == "s"
 
 
-def test_two_stroke_engine_end_to_end(tmp_path):
+def test_two_stroke_engine_end_to_end(tmp_path, figures_rendered_only):
+    """A two-stroke engine (a 360° cycle) end to end, its 13 plots rendered as PNG (each
+    a real image; the SVGs saved unrendered: the same plots of the four-stroke examples
+    are rendered as SVG in the session's shared reports,
+    test_plots_exist_and_are_not_empty)."""
+    saved = figures_rendered_only(".png")
     spec = tmp_path / "two.toml"
     spec.write_text(GOOD.replace("name = \"t\"", "name = \"two-stroke\"\nstrokes = 2")
                     .replace("angle_deg = [0, 360, 370]\np_MPa = [0.1, 6, 7]",
@@ -575,6 +580,11 @@ def test_two_stroke_engine_end_to_end(tmp_path):
     df = pd.read_csv(tmp_path / "o" / "two-stroke_forces.csv")
     assert df["alpha_deg"].iloc[-1] == 360 and len(df) == 25
     assert (tmp_path / "o" / "two-stroke_polar_Rshsh.png").stat().st_size > 10000
+    drawn = [name for name, rendered in saved if rendered]
+    assert len(drawn) == len(saved) // 2 == len(PLOT_NAMES + TRAIN_PLOT_NAMES)
+    for stem in PLOT_NAMES + TRAIN_PLOT_NAMES:
+        png = (tmp_path / "o" / f"two-stroke_{stem}.png").read_bytes()
+        assert png[:8] == b"\x89PNG\r\n\x1a\n" and len(png) > 10000, stem
 
 
 def test_chinese_summary_and_cli_run(tmp_path, capsys, unrendered_figures):
