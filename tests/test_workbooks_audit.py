@@ -10,6 +10,7 @@ from __future__ import annotations
 import pytest
 from openpyxl import load_workbook
 from workbook_audit import problems
+from xlsx_edit import altered_copy
 
 import engine
 from crankbase.resources import example_path
@@ -54,7 +55,7 @@ def _shared_xlsx(cli_report, *argv):
     return xlsx
 
 
-def _all(tmp, cli_report):
+def _all(tmp, cli_report, loaded_workbook):
     """{key: path} of every workbook."""
     import linkage
     from linkage import synthesis as syn
@@ -94,7 +95,7 @@ def _all(tmp, cli_report):
                 cli_report, "dynamics", "--example", SHARED_DYNAMICS[name], "--lang", lang)
         out[("variants", lang)] = variants_summary(tmp / f"variants_{lang}", lang, records)
         out[("check", lang)] = checked_copy(out[("engine", "diesel_d240.toml", lang)],
-                                            tmp / f"check_{lang}", lang)
+                                            tmp / f"check_{lang}", lang, loaded_workbook)
     return out
 
 
@@ -125,37 +126,15 @@ def variants_summary(folder, lang, records=None):
     return write_summary(folder, records, [], lang)[1]
 
 
-def _altered_copy(src, dst, sheet, coord, change):
-    """A copy of the workbook ``src`` with the number of one cell changed in the file
-    itself (``xl/worksheets/<sheet>``, ``<c r="coord" …><v>x</v></c>``: ``x`` becomes
-    ``change(x)``), as a student's spreadsheet leaves it: every other part the same
-    bytes, no parse and save of the whole workbook with openpyxl."""
-    import re
-    import zipfile
-
-    with zipfile.ZipFile(src) as zin, zipfile.ZipFile(dst, "w", zipfile.ZIP_DEFLATED) \
-            as zout:
-        for item in zin.infolist():
-            data = zin.read(item)
-            if item.filename == f"xl/worksheets/{sheet}":
-                text, n = re.subn(rf'(<c r="{coord}"[^>]*>)<v>([^<]+)</v>',
-                                  lambda m: f"{m[1]}<v>{change(float(m[2]))!r}</v>",
-                                  data.decode("utf-8"))
-                assert n == 1, (sheet, coord)
-                data = text.encode("utf-8")
-            zout.writestr(item, data)
-    return dst
-
-
-def checked_copy(report, folder, lang):
-    """``crankdyn check``'s marked copy of a report with one cell altered (Table 2,
-    the second sheet: ``sheet2.xml``)."""
+def checked_copy(report, folder, lang, loaded_workbook):
+    """``crankdyn check``'s marked copy of a report with one cell altered (Table 2's
+    B8, altered in the file: :func:`xlsx_edit.altered_copy`)."""
     from crankbase.checking import compare, mark_workbook, read_student_table
     from engine.check import KEY, computed_rows, known_columns
 
     folder.mkdir()
-    student = _altered_copy(report, folder / "student.xlsx", "sheet2.xml", "B8",
-                            lambda v: v + 7.0)               # one wrong ΔPг, mm
+    b8 = loaded_workbook(report).worksheets[1]["B8"].value
+    student = altered_copy(report, folder / "student.xlsx", {2: {"B8": b8 + 7.0}})
     study = engine.load(example_path("diesel_d240.toml"))
     table = read_student_table(student, KEY, known_columns(), {})
     computed = computed_rows(study.spec, study.settings, table.data[KEY].to_numpy(float))
@@ -166,8 +145,8 @@ def checked_copy(report, folder, lang):
 
 
 @pytest.fixture(scope="module")
-def workbooks(tmp_path_factory, cli_report):
-    return _all(tmp_path_factory.mktemp("audit"), cli_report)
+def workbooks(tmp_path_factory, cli_report, loaded_workbook):
+    return _all(tmp_path_factory.mktemp("audit"), cli_report, loaded_workbook)
 
 
 def _shared(key):
