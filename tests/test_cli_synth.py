@@ -25,7 +25,10 @@ def run(args, out):
     return main(["synth", *args, "-o", str(out)])
 
 
-def test_paper_example_fig3_with_ground(tmp_path, capsys):
+def test_paper_example_fig3_with_ground(tmp_path, capsys, figures_rendered_only):
+    """(Its three plots rendered as PNG; as SVG, in both languages, by the module's
+    ``both`` run of the same design: test_plot_files_in_both_languages.)"""
+    saved = figures_rendered_only(".png")
     out = tmp_path / "out"
     # seed 004, example 2 to Fig. 3: λ2 = 0.90, μmin ≥ 40° → λ1 = 0.08, λ3 = 0.24, μmin 46°16′
     rc = run(["--phi0", "30", "--l2", "0.9", "--mu-min", "40", "--l1-step", "0.01",
@@ -38,11 +41,10 @@ def test_paper_example_fig3_with_ground(tmp_path, capsys):
                             "press_drive_mechanism.csv", "press_drive_transmission_angle.csv",
                             "press_drive.toml", *[f"press_drive_{p}.{e}" for p in PLOTS
                                                   for e in ("png", "svg")]])
+    assert sum(drawn for _, drawn in saved) == len(PLOTS) == len(saved) // 2
     for p in PLOTS:
-        for e in ("png", "svg"):
-            assert (out / f"press_drive_{p}.{e}").stat().st_size > 1000
-    assert (out / "press_drive_region.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    assert b"<svg" in (out / "press_drive_region.svg").read_bytes()[:500]
+        png = (out / f"press_drive_{p}.png").read_bytes()
+        assert png[:8] == b"\x89PNG\r\n\x1a\n" and len(png) > 1000, p
 
     mech = pd.read_csv(out / "press_drive_mechanism.csv")
     assert len(mech) == 1
@@ -77,9 +79,13 @@ def test_paper_example_fig3_with_ground(tmp_path, capsys):
     assert kin["mu_deg"].min() >= m["mu_min_deg"] - 1e-9
 
 
-def test_table1_csv_and_workbook(tmp_path):
+def test_table1_csv_and_workbook(tmp_path, unrendered_figures):
+    """Table 1 and the workbook (the numbers and labels only: the run's three figures
+    are built and saved unrendered; the same three are rendered as PNG and SVG by
+    test_paper_example_fig3_with_ground)."""
     out = tmp_path / "o"
     assert run(["--l2", "0.7", "--l3", "0.6"], out) == 0
+    assert unrendered_figures == ["png", "svg"] * len(PLOTS)
     t1 = pd.read_csv(out / "kkm-30_table1.csv")
     assert list(t1.columns) == ["l1", "l2", "l3", "mu_min_deg"]
     # seed 004, Table 1 (four decimals)
@@ -119,9 +125,17 @@ def test_equal_l2_l3_example(tmp_path, capsys):
     assert "λ2 = 0.6199" in capsys.readouterr().out
 
 
-def test_region_only_and_other_phi0(tmp_path):
+def test_region_only_and_other_phi0(tmp_path, figures_rendered_only):
+    """φ0 = 120°: the region and μmin figures only.  The region's PNG is rendered (its
+    boundary on Kolchin's lines (1)–(2), drawn nowhere else); the others are saved
+    unrendered (their kinds are rendered by test_paper_example_fig3_with_ground)."""
+    saved = figures_rendered_only("_region.png")
     out = tmp_path / "o"
     assert run(["--phi0", "120"], out) == 0
+    rendered = [name for name, drawn in saved if drawn]     # (each saved to a temporary
+    assert len(saved) == 4 and len(rendered) == 1           # name, then renamed)
+    assert rendered[0].lstrip(".").startswith("kkm-120_region.png")
+    assert (out / "kkm-120_region.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     names = {p.name for p in out.iterdir()} - {MANIFEST_NAME}
     assert names == {"kkm-120_table1.csv", "kkm-120_synthesis.xlsx", "kkm-120_region.png",
                      "kkm-120_region.svg", "kkm-120_mu_min.png", "kkm-120_mu_min.svg"}
@@ -371,9 +385,12 @@ def test_workbook_in_the_report_language_keeps_both_header_rows(both):
 
 
 def test_plot_files_in_both_languages(both):
-    """The SVGs carry their texts: Russian terms in ru, no Cyrillic letter in en."""
+    """The SVGs (rendered) carry their texts: Russian terms in ru, no Cyrillic letter in
+    en."""
     for name in PLOTS:
         ru = (both["ru"][0] / f"kkm-30_{name}.svg").read_text(encoding="utf-8")
         en = (both["en"][0] / f"kkm-30_{name}.svg").read_text(encoding="utf-8")
+        for svg in (ru, en):
+            assert "<svg" in svg[:500] and len(svg.encode()) > 1000, name
         assert not CYRILLIC.search(en), name
         assert "ККМ-30°" in ru and "KKM-30°" in en, name

@@ -565,7 +565,12 @@ def test_name_is_text_not_formula(tmp_path, unrendered_figures):
     assert wb.worksheets[0].cell(4, 4).data_type == "s"
 
 
-def test_two_stroke_engine_end_to_end(tmp_path):
+def test_two_stroke_engine_end_to_end(tmp_path, figures_rendered_only):
+    """A two-stroke engine (a 360° cycle) end to end, its 13 plots rendered as PNG (each
+    a real image; the SVGs saved unrendered: the same plots of the four-stroke examples
+    are rendered as SVG in the session's shared reports,
+    test_plots_exist_and_are_not_empty)."""
+    saved = figures_rendered_only(".png")
     spec = tmp_path / "two.toml"
     spec.write_text(GOOD.replace("name = \"t\"", "name = \"two-stroke\"\nstrokes = 2")
                     .replace("angle_deg = [0, 360, 370]\np_MPa = [0.1, 6, 7]",
@@ -575,6 +580,11 @@ def test_two_stroke_engine_end_to_end(tmp_path):
     df = pd.read_csv(tmp_path / "o" / "two-stroke_forces.csv")
     assert df["alpha_deg"].iloc[-1] == 360 and len(df) == 25
     assert (tmp_path / "o" / "two-stroke_polar_Rshsh.png").stat().st_size > 10000
+    drawn = [name for name, rendered in saved if rendered]
+    assert len(drawn) == len(saved) // 2 == len(PLOT_NAMES + TRAIN_PLOT_NAMES)
+    for stem in PLOT_NAMES + TRAIN_PLOT_NAMES:
+        png = (tmp_path / "o" / f"two-stroke_{stem}.png").read_bytes()
+        assert png[:8] == b"\x89PNG\r\n\x1a\n" and len(png) > 10000, stem
 
 
 def test_chinese_summary_and_cli_run(tmp_path, capsys, unrendered_figures):
@@ -610,3 +620,38 @@ def test_chinese_summary_and_cli_run(tmp_path, capsys, unrendered_figures):
              for v in row if isinstance(v, str)]
     assert "活塞行程" in cells and "曲柄销载荷" in cells
     assert not any(re.search("[\u0400-\u04ff]", v) for v in cells)
+
+
+def test_chinese_texts_are_found_without_making_ticks():
+    """crankbase.plot_texts.cjk_texts (every figure's save: the Chinese report above)
+    finds every text findobj finds that holds a word, Chinese tick labels set with
+    ``set_xticks(…, labels)`` included, and gives the Chinese ones the CJK fonts, without
+    making an axis's ticks (Axis.get_children makes as many as its locator gives: a
+    third of the CPU of a figure saved unrendered); its drawing makes them as before."""
+    from matplotlib.figure import Figure
+    from matplotlib.text import Text
+
+    from crankbase.plot_texts import FONT_FAMILY, _texts, cjk_fonts, cjk_texts
+
+    fig = Figure()
+    ax = fig.subplots()
+    ax.plot([0.0, 1.0], [0.0, 2.0])
+    ax.set_xticks([0.0, 1.0], ["曲柄", "连杆 $M_{kr}$"])
+    ax.set_ylabel("扭矩 $M_{kr}$, N·m")
+    fig.suptitle("petrol-vaz2106")
+    ticks = len(ax.yaxis.majorTicks)
+    title = fig._suptitle.get_fontfamily()          # rcParams' (a Chinese run's changed)
+    found = {id(t) for t in _texts(fig)}
+    assert cjk_texts(fig) == 3          # mathtext set as plain text: the y label and the
+    assert ax.yaxis.label.get_text() == "扭矩 Mₖᵣ, N·m"    # tick's two labels (label2 too)
+    assert len(ax.yaxis.majorTicks) == ticks            # no tick made
+    worded = [t for t in fig.findobj(Text) if t.get_text()]
+    assert len(ax.yaxis.majorTicks) > ticks             # findobj makes the locator's
+    assert worded and all(id(t) in found for t in worded)
+    assert ax.xaxis.majorTicks[1].label1.get_text() == "连杆 Mₖᵣ"
+    family = [FONT_FAMILY[0], *cjk_fonts()]
+    if len(family) > 1:                                  # a CJK font installed
+        for t in (ax.yaxis.label, ax.xaxis.majorTicks[0].label1,
+                  ax.xaxis.majorTicks[1].label2):
+            assert t.get_fontfamily() == family, t
+    assert fig._suptitle.get_fontfamily() == title      # no Chinese: left as it is

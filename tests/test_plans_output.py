@@ -44,7 +44,11 @@ def ratchet_run(cli_report):
 
 
 @pytest.fixture(scope="module")
-def press_run(tmp_path_factory):
+def press_run(tmp_path_factory, figures_rendered_only_within):
+    """``crankdyn linkage press.toml --plans 2 --sheet A3 --lang en --measured …`` with a
+    title block: its drawings (the position's plans, the sheets and their previews)
+    rendered; its five linkage plots saved unrendered (their names are read here; the
+    press's plots are rendered in the session's shared ``linkage --example press``)."""
     d = tmp_path_factory.mktemp("plans_press")
     spec = d / "press.toml"
     spec.write_text(example_path("press.toml").read_text() + """
@@ -58,8 +62,13 @@ scale = "1:2"
     measured.write_text("position,plan,segment,length_mm,value\n"
                         "2,velocity,pb,80.0,\n2,,omega3,,1.5\n", encoding="utf-8")
     out = d / "out"
-    assert main(["linkage", str(spec), "-o", str(out), "--plans", "2", "--sheet", "A3",
-                 "--lang", "en", "--measured", str(measured)]) == 0
+    with figures_rendered_only_within("_plans_", "_sheet") as saved:
+        assert main(["linkage", str(spec), "-o", str(out), "--plans", "2", "--sheet", "A3",
+                     "--lang", "en", "--measured", str(measured)]) == 0
+    assert sorted(name.lstrip(".").split(".")[0] for name, drawn in saved
+                  if not drawn) == sorted(f"{PRESS}_{s}" for s in (
+                      "accelerations", "driving_moment", "plan", "transmission_angle",
+                      "velocities"))
     return out
 
 

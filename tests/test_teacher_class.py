@@ -20,6 +20,7 @@ from crankbase.tolerances import CHECK_ATOL_OF_SCALE, CHECK_RTOL
 from crankdyn.cli import main
 from engine.check import computed_rows, known_columns
 from engine.variants import check_class, run_variants
+from xlsx_edit import altered_copy
 
 PETROL = example_path("petrol_vaz2106.toml")
 DIESEL = example_path("diesel_d240.toml")
@@ -94,15 +95,21 @@ def test_variant_spec_carries_its_pressure_file_step_and_form(tmp_path,
 
 # ------------------------------------------------------------------ a class at once
 def _alter(src, dst, alpha, column, factor):
-    """A copy of a report workbook with one Table 2 cell multiplied by ``factor``."""
-    wb = load_workbook(src)
-    ws = wb.worksheets[1]                         # Table 2: keys in hidden row 5
-    keys = [c.value for c in ws[5]]
-    row = next(r for r in range(6, ws.max_row + 1) if ws.cell(r, 1).value == alpha)
-    cell = ws.cell(row, keys.index(column) + 1)
-    cell.value *= factor
-    wb.save(dst)
-    return cell.coordinate
+    """A copy of a report workbook with one Table 2 cell multiplied by ``factor``,
+    altered in the file (xlsx_edit.altered_copy): Table 2 (the second sheet) holds the
+    report's forces.csv from row 6 in its order, its columns engine.report.TABLE2_KEYS
+    (so the cell is found without parsing the workbook; were it another, the test's
+    check would flag another cell)."""
+    from openpyxl.utils import get_column_letter
+
+    from engine.report import TABLE2_KEYS
+
+    forces = pd.read_csv(src.with_name(f"{src.stem}_forces.csv"))
+    i = forces.index[forces["alpha_deg"] == alpha]
+    assert len(i) == 1
+    coord = f"{get_column_letter(TABLE2_KEYS.index(column) + 1)}{6 + i[0]}"
+    altered_copy(src, dst, {2: {coord: forces[column].iat[i[0]] * factor}})
+    return coord
 
 
 def test_a_class_of_four_in_one_call(petrol_variants, tmp_path, capsys):

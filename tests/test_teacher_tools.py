@@ -18,6 +18,7 @@ from crankdyn.cli import main
 from engine.plots import PLOT_NAMES, TRAIN_PLOT_NAMES
 from engine.report import KOLCHIN_SHEET
 from engine.variants import VariantRow, apply_variant, parse_cell, read_variants
+from xlsx_edit import altered_copy
 
 PETROL = example_path("petrol_vaz2106.toml")
 
@@ -247,15 +248,17 @@ def test_unaltered_workbook_passes(petrol_report, tmp_path):
 
 
 @pytest.mark.parametrize("form", ["seed", "kolchin"])
-def test_altered_cells_are_flagged_exactly(tmp_path, capsys, cli_report, form):
-    # the session's shared diesel report (read-only: the altered copy is saved elsewhere);
-    # the example's own form is seed, so that report is asked for without --form
+def test_altered_cells_are_flagged_exactly(tmp_path, capsys, cli_report, loaded_workbook,
+                                           form):
+    # the session's shared diesel report (read-only, parsed once per worker: the cells
+    # are altered in a copy of its file, xlsx_edit.altered_copy); the example's own form
+    # is seed, so that report is asked for without --form
     own = () if form == engine.load(example_path("diesel_d240.toml")).settings.form \
         else ("--form", form)
     rep = cli_report("engine", "--example", "diesel", "--lang", "ru", *own)
     assert rep.rc == 0
     src = rep.folder
-    wb = load_workbook(src / "diesel-d240.xlsx")
+    wb = loaded_workbook(src / "diesel-d240.xlsx")
     # Table 2 (keys in hidden row 5, data from row 6); Kolchin's form: its own sheet
     # (keys in row 3, data from row 4)
     sheets = {"t2": (wb.worksheets[1], 5)}
@@ -274,16 +277,15 @@ def test_altered_cells_are_flagged_exactly(tmp_path, capsys, cli_report, form):
                   ("k", 150, "tg_beta", 1.30)]
     else:
         edits += [("t2", 210, "T_mm", 1.2), ("t2", 240, "P_N", 0.5)]
-    wrong = set()
+    wrong, changes = set(), {}
     for s, a, col, f in edits:
         ws = sheets[s][0]
         c = ws.cell(rows[s][a], keys[s].index(col) + 1)
         assert abs(c.value) > 1e-3                 # a real value, not a zero crossing
-        c.value = c.value * f
+        changes.setdefault(wb.worksheets.index(ws) + 1, {})[c.coordinate] = c.value * f
         if abs(f - 1) > 0.02:
             wrong.add((a, col))
-    student = tmp_path / "student.xlsx"
-    wb.save(student)
+    student = altered_copy(src / "diesel-d240.xlsx", tmp_path / "student.xlsx", changes)
     code, out = _check(tmp_path, example_path("diesel_d240.toml"), student)
     assert code == 1
     check = pd.read_csv(out / "check.csv")
@@ -311,19 +313,16 @@ def test_altered_cells_are_flagged_exactly(tmp_path, capsys, cli_report, form):
 
 
 def test_check_reads_a_formula_by_its_value_and_marks_it_keeping_the_formula(
-        petrol_report, tmp_path):
+        petrol_report, tmp_path, loaded_workbook):
     """A student's cell computed by a formula is checked by the value the spreadsheet
     last computed (what a ``data_only`` reading gives), and the marked copy keeps the
     formula: one T_N cell ``=1.3*…`` (30 % off, flagged), one M_Nm cell ``=1*…`` (right).
-    openpyxl writes no computed value, so the values are put into the sheet's XML as
-    Excel and LibreOffice leave them."""
-    import re
-    import zipfile
-
+    The formulas and their values are put into the sheet's XML as Excel and LibreOffice
+    leave them (xlsx_edit.altered_copy; openpyxl writes no computed value)."""
     from crankbase.checking import check_table, write_check
     from engine.check import check_side
 
-    wb = load_workbook(petrol_report / "petrol-vaz2106.xlsx")
+    wb = loaded_workbook(petrol_report / "petrol-vaz2106.xlsx")    # shared, read-only
     ws = wb.worksheets[1]                        # Table 2: keys in hidden row 5
     keys = [c.value for c in ws[5]]
     rows = {ws.cell(r, 1).value: r for r in range(6, ws.max_row + 1)}
@@ -331,21 +330,8 @@ def test_check_reads_a_formula_by_its_value_and_marks_it_keeping_the_formula(
     for a, col, f in ((30.0, "T_N", 1.3), (60.0, "M_Nm", 1.0)):
         c = ws.cell(rows[a], keys.index(col) + 1)
         edits[c.coordinate] = (f"{f!r}*{c.value!r}", f * c.value)
-        c.value = f"={edits[c.coordinate][0]}"
-    plain = tmp_path / "plain.xlsx"
-    wb.save(plain)
-    student = tmp_path / "student.xlsx"
-    with zipfile.ZipFile(plain) as zin, zipfile.ZipFile(student, "w") as zout:
-        for item in zin.infolist():
-            data = zin.read(item)
-            if item.filename == "xl/worksheets/sheet2.xml":
-                text = data.decode()
-                for coord, (formula, value) in edits.items():
-                    text, n = re.subn(rf'(<c r="{coord}"[^>]*>)<f>([^<]*)</f>(<v\s*/>|<v>'
-                                      rf'</v>)?', rf"\1<f>\2</f><v>{value!r}</v>", text)
-                    assert n == 1, coord
-                data = text.encode()
-            zout.writestr(item, data)
+    student = altered_copy(petrol_report / "petrol-vaz2106.xlsx", tmp_path / "student.xlsx",
+                           {2: edits})
     result = check_table(check_side(engine.load(PETROL)), student)
     bad = result.table.loc[~result.table["ok"], ["alpha_deg", "column"]].values.tolist()
     assert bad == [[30.0, "T_N"]]
@@ -403,14 +389,16 @@ def test_library_never_names_a_command_line_option():
 
 
 @pytest.mark.parametrize("lang", ["ru", "en"])
-def test_check_linkage_tables(tmp_path, lang):
+def test_check_linkage_tables(tmp_path, cli_report, lang):
     """The check reads our linkage workbook by its CSV-name header row (row 3), the same
     in the Russian workbook (sheets «Скорости», «Реакции и Mур», symbols Mур, units Н·м)
     and the English one: altered cells are flagged exactly there, the unaltered
-    workbook passes."""
-    src = tmp_path / "lk"
-    assert main(["linkage", "--example", "ratchet", "-o", str(src), "--no-plots",
-                 "--lang", lang]) == 0
+    workbook passes.  The workbook is the session's shared ``crankdyn linkage --example
+    ratchet --no-plots --lang LANG`` report's (read-only: the altered copy is saved
+    elsewhere)."""
+    rep = cli_report("linkage", "--example", "ratchet", "--no-plots", "--lang", lang)
+    assert rep.rc == 0, rep.err
+    src = rep.folder
     wb = load_workbook(src / "ratchet-drive.xlsx")
     # sheets by their place (inputs, positions, velocities, accelerations, loads, forces):
     # the titles are in the report's language

@@ -10,6 +10,7 @@ from __future__ import annotations
 import pytest
 from openpyxl import load_workbook
 from workbook_audit import problems
+from xlsx_edit import altered_copy
 
 import engine
 from crankbase.resources import example_path
@@ -54,7 +55,7 @@ def _shared_xlsx(cli_report, *argv):
     return xlsx
 
 
-def _all(tmp, cli_report):
+def _all(tmp, cli_report, loaded_workbook):
     """{key: path} of every workbook."""
     import linkage
     from linkage import synthesis as syn
@@ -94,7 +95,7 @@ def _all(tmp, cli_report):
                 cli_report, "dynamics", "--example", SHARED_DYNAMICS[name], "--lang", lang)
         out[("variants", lang)] = variants_summary(tmp / f"variants_{lang}", lang, records)
         out[("check", lang)] = checked_copy(out[("engine", "diesel_d240.toml", lang)],
-                                            tmp / f"check_{lang}", lang)
+                                            tmp / f"check_{lang}", lang, loaded_workbook)
     return out
 
 
@@ -125,17 +126,15 @@ def variants_summary(folder, lang, records=None):
     return write_summary(folder, records, [], lang)[1]
 
 
-def checked_copy(report, folder, lang):
-    """``crankdyn check``'s marked copy of a report with one cell altered."""
+def checked_copy(report, folder, lang, loaded_workbook):
+    """``crankdyn check``'s marked copy of a report with one cell altered (Table 2's
+    B8, altered in the file: :func:`xlsx_edit.altered_copy`)."""
     from crankbase.checking import compare, mark_workbook, read_student_table
     from engine.check import KEY, computed_rows, known_columns
 
-    src = load_workbook(report)
-    ws = src.worksheets[1]
-    ws.cell(8, 2).value = ws.cell(8, 2).value + 7.0           # one wrong ΔPг, mm
     folder.mkdir()
-    student = folder / "student.xlsx"
-    src.save(student)
+    b8 = loaded_workbook(report).worksheets[1]["B8"].value
+    student = altered_copy(report, folder / "student.xlsx", {2: {"B8": b8 + 7.0}})
     study = engine.load(example_path("diesel_d240.toml"))
     table = read_student_table(student, KEY, known_columns(), {})
     computed = computed_rows(study.spec, study.settings, table.data[KEY].to_numpy(float))
@@ -146,8 +145,8 @@ def checked_copy(report, folder, lang):
 
 
 @pytest.fixture(scope="module")
-def workbooks(tmp_path_factory, cli_report):
-    return _all(tmp_path_factory.mktemp("audit"), cli_report)
+def workbooks(tmp_path_factory, cli_report, loaded_workbook):
+    return _all(tmp_path_factory.mktemp("audit"), cli_report, loaded_workbook)
 
 
 def _shared(key):
