@@ -17,7 +17,7 @@ import functools
 import re
 
 __all__ = ["plot_words", "plot_fonts", "cjk_fonts", "plain_math", "cjk_texts",
-           "CJK_FONTS", "FONT_FAMILY"]
+           "figure_texts", "CJK_FONTS", "FONT_FAMILY"]
 
 #: Fonts with Chinese glyphs, tried in this order after DejaVu Sans: Linux (Noto Sans CJK /
 #: Source Han Sans: fonts-noto-cjk; WenQuanYi Zen Hei: fonts-wqy-zenhei; Droid Sans
@@ -131,7 +131,7 @@ def plain_math(text: str) -> str:
     return _MATH.sub(one, text)
 
 
-def _texts(fig):
+def figure_texts(fig):
     """Every :class:`matplotlib.text.Text` of ``fig``, as ``fig.findobj(Text)`` finds
     them, but without making an axis's ticks: ``Axis.get_children`` asks for as many
     ticks as the locator gives (each a tick of two lines, a grid line and two labels,
@@ -161,10 +161,10 @@ def cjk_texts(fig) -> int:
     installed CJK fonts as fallback (:func:`plot_fonts`), and its mathtext set as plain
     Unicode (:func:`plain_math`); returns the number of texts whose mathtext changed.  Texts without Chinese characters
     (every Russian and English figure) are left exactly as they are.  No tick is made
-    for the search (:func:`_texts`)."""
+    for the search (:func:`figure_texts`)."""
     n = 0
     family = None
-    for art in list(_texts(fig)):
+    for art in list(figure_texts(fig)):
         s = art.get_text()
         if not _CJK.search(s):
             continue

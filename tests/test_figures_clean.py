@@ -157,32 +157,12 @@ MATH = re.compile(r"\$[^$]*\$")
 
 
 def _texts(fig):
-    """Every ``Text`` of ``fig``, as ``fig.findobj(Text)`` finds them, but without making
-    ticks: ``findobj`` asks each axis for its children, and an axis makes a tick for
-    every tick location it has not made yet (a sheet's or a drawing's axes, switched
-    off, had its thousand-odd ticks made only for this).  A tick made so has an empty
-    label (a label's text is set when its axis is drawn), which no check reads; the
-    ticks an axis has made (every drawn one) are walked, with its label and offset
-    text."""
-    from matplotlib.axis import Axis
-    from matplotlib.text import Text
+    """Every ``Text`` of ``fig`` without making ticks (a sheet's or a drawing's axes,
+    switched off, would make their thousand-odd ticks only for the search):
+    :func:`crankbase.plot_texts.figure_texts`."""
+    from crankbase.plot_texts import figure_texts
 
-    out = []
-
-    def walk(a):
-        if isinstance(a, Text):
-            out.append(a)
-        if isinstance(a, Axis):
-            kids = [a.label, a.offsetText]
-            for name in ("majorTicks", "minorTicks"):       # the ticks made so far
-                kids += vars(a).get(name, [])
-        else:
-            kids = a.get_children()
-        for c in kids:
-            walk(c)
-
-    walk(fig)
-    return out
+    return list(figure_texts(fig))
 
 
 def _word_problems(fig, lang):

@@ -61,3 +61,38 @@ def test_only_chinese_texts_change():
     if P.cjk_fonts():
         assert ax.xaxis.label.get_fontfamily()[0] == "DejaVu Sans"
         assert set(P.cjk_fonts()) <= set(ax.xaxis.label.get_fontfamily())
+
+
+def test_chinese_texts_are_found_without_making_ticks():
+    """crankbase.plot_texts.cjk_texts (every figure's save: the Chinese report above)
+    finds every text findobj finds that holds a word, Chinese tick labels set with
+    ``set_xticks(…, labels)`` included, and gives the Chinese ones the CJK fonts, without
+    making an axis's ticks (Axis.get_children makes as many as its locator gives: a
+    third of the CPU of a figure saved unrendered); its drawing makes them as before."""
+    from matplotlib.figure import Figure
+    from matplotlib.text import Text
+
+    from crankbase.plot_texts import FONT_FAMILY, cjk_fonts, cjk_texts, figure_texts
+
+    fig = Figure()
+    ax = fig.subplots()
+    ax.plot([0.0, 1.0], [0.0, 2.0])
+    ax.set_xticks([0.0, 1.0], ["曲柄", "连杆 $M_{kr}$"])
+    ax.set_ylabel("扭矩 $M_{kr}$, N·m")
+    fig.suptitle("petrol-vaz2106")
+    ticks = len(ax.yaxis.majorTicks)
+    title = fig._suptitle.get_fontfamily()          # rcParams' (a Chinese run's changed)
+    found = {id(t) for t in figure_texts(fig)}
+    assert cjk_texts(fig) == 3          # mathtext set as plain text: the y label and the
+    assert ax.yaxis.label.get_text() == "扭矩 Mₖᵣ, N·m"    # tick's two labels (label2 too)
+    assert len(ax.yaxis.majorTicks) == ticks            # no tick made
+    worded = [t for t in fig.findobj(Text) if t.get_text()]
+    assert len(ax.yaxis.majorTicks) > ticks             # findobj makes the locator's
+    assert worded and all(id(t) in found for t in worded)
+    assert ax.xaxis.majorTicks[1].label1.get_text() == "连杆 Mₖᵣ"
+    family = [FONT_FAMILY[0], *cjk_fonts()]
+    if len(family) > 1:                                  # a CJK font installed
+        for t in (ax.yaxis.label, ax.xaxis.majorTicks[0].label1,
+                  ax.xaxis.majorTicks[1].label2):
+            assert t.get_fontfamily() == family, t
+    assert fig._suptitle.get_fontfamily() == title      # no Chinese: left as it is
