@@ -204,12 +204,35 @@ def header_rows(ws, row, labels, names, col=1):
     Returns the first data row."""
     from openpyxl.styles import Alignment
 
+    head = sub = None               # the style ids of the first header cells
     for j, (label, name) in enumerate(zip(labels, names), start=col):
-        style_header(ws.cell(row, j, label))
+        c = ws.cell(row, j, label)
+        if head is None:
+            style_header(c)
+            head = c._style
+        else:                       # the same font, fill, border and alignment
+            _same_style(c, head, (0, 1, 2, 5))
         c = ws.cell(row + 1, j, str(name))
-        c.font = font(italic=True, size=8, color="555555")
-        c.alignment = Alignment(horizontal="center")
+        if sub is None:
+            c.font = font(italic=True, size=8, color="555555")
+            c.alignment = Alignment(horizontal="center")
+            sub = c._style
+        else:
+            _same_style(c, sub, (0, 5))
     return row + 2
+
+
+def _same_style(cell, ids, fields):
+    """Give ``cell`` the style ``ids`` (a StyleArray) has in ``fields`` (0 font, 1 fill,
+    2 border, 5 alignment …): what ``cell.font = …`` and the like set, each style object
+    looked up (hashed) in the workbook's styles once for all cells, not once a cell."""
+    from openpyxl.styles.cell_style import StyleArray
+
+    st = cell._style
+    if not st:
+        st = cell._style = StyleArray()
+    for k in fields:
+        st[k] = ids[k]
 
 
 def new_workbook():
@@ -266,6 +289,14 @@ def filled_cells(ws):
 
 
 _ROW = operator.attrgetter("row")
+_COLUMN = operator.itemgetter(1)
+
+
+def _max_column(ws):
+    """``ws.max_column`` (the last column of a cell of ``ws``, 1 without one), the keys
+    read in C."""
+    cells = ws._cells
+    return max(map(_COLUMN, cells)) if cells else 1
 
 
 class _Scan:
@@ -585,7 +616,7 @@ def _fit_columns(ws, scan, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH)
             widths[col] = _col_width(ws, col)
         return widths[col]
 
-    last = max(ws.max_column, _last_print_col(ws))
+    last = max(_max_column(ws), _last_print_col(ws))
     for c in scan.texts:
         if (c.row, c.column) in covered or not col_width(c.column):
             continue
@@ -601,7 +632,7 @@ def _fit_columns(ws, scan, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH)
                 continue
             width = used
             ws.merge_cells(start_row=c.row, start_column=c.column, end_row=c.row,
-                           end_column=max(ws.max_column, c.column))
+                           end_column=max(_max_column(ws), c.column))
         if _need(c.value, st)[0] > width:
             al = copy.copy(c.alignment) if c.alignment else Alignment()
             c.alignment = Alignment(horizontal=al.horizontal, vertical="top",
@@ -629,7 +660,7 @@ def _last_print_col(ws):
 
 
 def _used_width(ws, col):
-    last = max(ws.max_column, col, _last_print_col(ws))
+    last = max(_max_column(ws), col, _last_print_col(ws))
     return sum(_col_width(ws, j) for j in range(col, last + 1))
 
 
@@ -670,12 +701,18 @@ def _fit_rows(ws, texts):
             w = widths[col] = _col_width(ws, col)
         return w
 
+    looks = {}                  # {(font id, alignment id): (wraps, bold, size)}
     for c in texts:
-        if not (c.alignment and c.alignment.wrap_text) \
-                or (c.row, c.column) in covered or not col_width(c.column):
+        st = c._style
+        key = None if st is None else (st[0], st[5])
+        look = looks.get(key)
+        if look is None:
+            font, al = c.font, c.alignment
+            look = looks[key] = (bool(al and al.wrap_text), bool(font and font.b),
+                                 font.sz if font and font.sz else 11)
+        wraps, bold, size = look
+        if not wraps or (c.row, c.column) in covered or not col_width(c.column):
             continue
-        bold, size = bool(c.font and c.font.b), (c.font.sz if c.font and c.font.sz
-                                                  else 11)
         m = first.get((c.row, c.column))
         width = sum(col_width(j) for j in (range(m.min_col, m.max_col + 1) if m
                                            else [c.column]))
@@ -694,7 +731,7 @@ def page_setup(ws, orientation=None, title_rows=None, title_cols=None):
     ps.orientation = orientation or ps.orientation or "landscape"
     ws.sheet_properties.pageSetUpPr.fitToPage = True
     ps.fitToHeight = 0
-    last = _last_print_col(ws) or ws.max_column
+    last = _last_print_col(ws) or _max_column(ws)
     width = sum(_col_width(ws, j) for j in range(1, last + 1))
     ps.fitToWidth = max(1, math.ceil(width / WIDTH_PER_PAGE))
     if title_rows:

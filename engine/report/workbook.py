@@ -19,8 +19,9 @@ house look (:func:`crankbase.workbook.finish`).
 from __future__ import annotations
 
 
-import copy
+import itertools
 import math
+from array import array
 
 import numpy as np
 
@@ -130,8 +131,39 @@ def _fit_row(ws, cell, width=None):
                                                  15 * lines)
 
 
+_new_array = array.__new__
+
+#: {template path: ((its modification time, size), the workbook read from it, pickled)}.
+_TEMPLATES = {}
+
+
+def _template(path):
+    """A fresh workbook of the template ``path``: read by openpyxl once per version of the
+    file (its parse is most of the time of a report's build), then a copy unpickled from
+    that (a tenth of the time; the same workbook, saved byte for byte the same)."""
+    import os
+    import pickle
+
+    from openpyxl import load_workbook
+
+    st = os.stat(path)
+    stamp = (st.st_mtime_ns, st.st_size)
+    got = _TEMPLATES.get(str(path))
+    if got is None or got[0] != stamp:
+        got = _TEMPLATES[str(path)] = (stamp, pickle.dumps(load_workbook(path),
+                                                           pickle.HIGHEST_PROTOCOL))
+    wb = pickle.loads(got[1])
+    for ws in wb.worksheets:
+        # a pickled defaultdict keeps its items, not its factory: openpyxl's own
+        # (Worksheet._setup), which makes a row's or column's dimensions when first asked
+        ws.row_dimensions.default_factory = ws._add_row
+        ws.column_dimensions.default_factory = ws._add_column
+    return wb
+
+
 def _copy_style(src, dst):
-    dst._style = copy.copy(src._style)
+    st = src._style         # copy.copy(st), the copy made in C (StyleArray's is Python)
+    dst._style = None if st is None else _new_array(type(st), "i", st)
 
 
 def _check_finite(values, where):
@@ -158,7 +190,6 @@ def build_workbook(result, lang="ru"):
     openpyxl.Workbook
         In memory; write it with :func:`save_workbook`.
     """
-    from openpyxl import load_workbook
     from openpyxl.chart import Reference, ScatterChart, Series
 
     from crankbase.output import ensure_finite
@@ -175,7 +206,7 @@ def build_workbook(result, lang="ru"):
     ensure_finite(table, "force table")
     full = table
     table = sheet_rows(table)          # at most MAX_ROWS rows (the CSV keeps every row)
-    wb = load_workbook(template_path(f"engine_{lang}.xlsx"))
+    wb = _template(template_path(f"engine_{lang}.xlsx"))
     ws_in, ws_t2, ws_sum, ws_data, ws_ch = wb.worksheets[:5]
 
     # Inputs: fill column D by the key in column A
@@ -550,15 +581,41 @@ _TR = _Lazy()
 
 def _write_rows(ws, r0, c0, rows, bold=False):
     from openpyxl.styles import Font
+    from openpyxl.styles.cell_style import StyleArray
 
+    from crankbase.workbook import put_numbers
+
+    font_id = None
+    plain = []                  # a run of rows of numbers (and None): one put_numbers
     for i, row in enumerate(rows):
-        for j, v in enumerate(row):
+        values = [float(v) if isinstance(v, (np.floating, np.integer)) and not
+                  isinstance(v, np.bool_) else v for v in row]
+        if not bold and all(v is None or type(v) in _PLAIN for v in values):
+            plain.append(values)                    # the cells _put makes, at once
+            continue
+        if plain:
+            put_numbers(ws, r0 + i - len(plain), c0, plain)
+            plain = []
+        for j, v in enumerate(values):
             cell = ws.cell(r0 + i, c0 + j)
-            _put(cell, float(v) if isinstance(v, (np.floating, np.integer)) and not
-                 isinstance(v, np.bool_) else v)
+            _put(cell, v)
             if bold:
-                cell.font = Font(bold=True)
+                if font_id is None:
+                    cell.font = Font(bold=True)
+                    font_id = cell._style[0]
+                else:               # the same font: its id, as openpyxl's setter sets it
+                    st = cell._style
+                    if not st:
+                        st = cell._style = StyleArray()
+                    st[0] = font_id
+    if plain:
+        put_numbers(ws, r0 + len(rows) - len(plain), c0, plain)
     return r0 + len(rows)
+
+
+#: The types a value of :func:`_write_rows` goes to :func:`crankbase.workbook.put_numbers`
+#: with (a bool is no number there; a text is stored by :func:`_put`).
+_PLAIN = (float, int)
 
 
 def readable_numbers(ws, widths=None, default_width=None, per_column=True):
@@ -579,19 +636,34 @@ def readable_numbers(ws, widths=None, default_width=None, per_column=True):
         return "0" if a >= 1e5 else "0.0" if a >= 1e3 else "0.00" if a >= 1 else "0.0000"
 
     cells = filled_cells(ws)
-    numbers = [c for c in cells if isinstance(c.value, (int, float))
-               and not isinstance(c.value, bool)]
+    by_column = {}                  # {column: its numbers}, columns in the order first met
+    for c in cells:
+        v = c._value
+        if type(v) in _PLAIN or (isinstance(v, (int, float)) and not isinstance(v, bool)):
+            got = by_column.get(c.column)
+            if got is None:
+                by_column[c.column] = [c]
+            else:
+                got.append(c)
     top, whole = {}, {}
-    for c in numbers:
-        top[c.column] = max(top.get(c.column, 0.0), abs(c.value))
-        whole[c.column] = whole.get(c.column, True) and float(c.value).is_integer()
+    for col, group in by_column.items():
+        values = [c._value for c in group]
+        top[col] = max(itertools.chain((0.0,), map(abs, values)))
+        whole[col] = all(map(float.is_integer, map(float, values)))
     by_format = {}                  # {format: cells}, formats in the order first met
-    for c in numbers:
-        if whole[c.column] or float(c.value).is_integer() and not per_column:
-            by_format.setdefault("0", []).append(c)
-        else:
-            by_format.setdefault(fmt(top[c.column] if per_column else abs(c.value)),
-                                 []).append(c)
+    if per_column:                  # a column's first number comes first in its format
+        for col, group in by_column.items():
+            by_format.setdefault("0" if whole[col] else fmt(top[col]), []).extend(group)
+    else:
+        for c in cells:
+            v = c._value
+            if c.column not in by_column or not (type(v) in _PLAIN or (
+                    isinstance(v, (int, float)) and not isinstance(v, bool))):
+                continue
+            if whole[c.column] or float(v).is_integer():
+                by_format.setdefault("0", []).append(c)
+            else:
+                by_format.setdefault(fmt(abs(v)), []).append(c)
     for f, group in by_format.items():
         set_number_format(group, f)
     for c in cells:
