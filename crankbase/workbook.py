@@ -39,7 +39,7 @@ __all__ = ["A4_LANDSCAPE_PRINT_CM", "FONT", "HEAD_FILL", "MAX_ROWS", "MAX_WIDTH"
            "style_header",
            "table_blocks", "unify_fonts", "fit_numbers", "fit_columns", "fit_rows",
            "page_setup", "finish", "save", "set_number_format", "put_numbers", "bounded", "filled_cells", "sheet_rows", "thinned_note", "summary_workbook", "new_workbook",
-           "words", "Words", "header_rows"]
+           "words", "Words", "header_rows", "CellStyles"]
 
 #: The one font family of every workbook (metric twin: Liberation Sans).
 FONT = "Arial"
@@ -233,6 +233,49 @@ def _same_style(cell, ids, fields):
         st = cell._style = StyleArray()
     for k in fields:
         st[k] = ids[k]
+
+
+class CellStyles:
+    """``styles(cell, font=…, border=…, number_format=…)`` does what ``cell.font = …;
+    cell.border = …; cell.number_format = …`` do, each style object looked up in the
+    workbook's styles once, then known by its identity: openpyxl hashes a font, fill,
+    border or alignment at every assignment, most of the time a writer spends styling a
+    table cell by cell.  The style objects given must not change while in use."""
+
+    #: The StyleArray index and the workbook's collection of each style (openpyxl's
+    #: StyleableObject descriptors).
+    FIELDS = {"font": (0, "_fonts"), "fill": (1, "_fills"), "border": (2, "_borders"),
+              "protection": (4, "_protections"), "alignment": (5, "_alignments")}
+
+    def __init__(self, wb):
+        self.wb = wb
+        self._ids = {}              # {(name, id(style)): (style, its index)}
+
+    def _index(self, name, value):
+        from openpyxl.styles.numbers import BUILTIN_FORMATS_MAX_SIZE, BUILTIN_FORMATS_REVERSE
+
+        key = (name, id(value))
+        got = self._ids.get(key)
+        if got is None:
+            if name == "number_format":
+                idx = BUILTIN_FORMATS_REVERSE.get(value)
+                if idx is None:
+                    idx = self.wb._number_formats.add(value) + BUILTIN_FORMATS_MAX_SIZE
+            else:
+                idx = getattr(self.wb, self.FIELDS[name][1]).add(value)
+            got = self._ids[key] = (value, idx)     # the style kept: its id stays its own
+        return got[1]
+
+    def __call__(self, cell, **styles):
+        from openpyxl.styles.cell_style import StyleArray
+
+        st = cell._style
+        if not st:
+            st = cell._style = StyleArray()
+        for name, value in styles.items():
+            st[_NUM_FMT if name == "number_format" else self.FIELDS[name][0]] = \
+                self._index(name, value)
+        return cell
 
 
 def new_workbook():
@@ -443,7 +486,8 @@ def put_numbers(ws, r0, c0, rows):
     for r, values in enumerate(rows, start=r0):
         for j, v in enumerate(values, start=c0):
             kind = type(v)
-            if (r, j) in cells or not (v is None or kind is float or kind is int):
+            key = (r, j)
+            if key in cells or not (v is None or kind is float or kind is int):
                 ws.cell(r, j).value = v
                 continue
             # the state Cell(ws, row=r, column=j, value=v) gives a number (data type
@@ -451,7 +495,7 @@ def put_numbers(ws, r0, c0, rows):
             c = new(Cell)
             c.parent, c._style, c.row, c.column = ws, None, r, j
             c._value, c._hyperlink, c.data_type, c._comment = v, None, "n", None
-            cells[(r, j)] = c
+            cells[key] = c
     if r >= r0:
         ws._current_row = max(ws._current_row, r)
 

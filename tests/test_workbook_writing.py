@@ -330,3 +330,42 @@ def test_engine_template_read_once_builds_the_same_workbook(monkeypatch):
     assert list(first) == list(own) == list(again)
     for part in own:
         assert first[part] == own[part] and again[part] == own[part], part
+
+
+def test_cell_styles_set_what_the_cells_setters_set():
+    """CellStyles (each style object looked up once, then by identity): the workbook
+    ``cell.font = …`` and the like give, part by part, with equal styles in distinct
+    objects, a built-in and a custom number format, and a cell styled before."""
+    from openpyxl.styles import Alignment, Border, Font, PatternFill, Side
+
+    def build(fast):
+        wb = wbk.new_workbook()
+        ws = wb.active
+        bold, box = Font(bold=True), Border(bottom=Side(style="thin"))
+        fill = PatternFill("solid", fgColor="DDEBF7")
+        styles = wbk.CellStyles(wb)
+        ws["C2"] = 1.0
+        ws["C2"].font = Font(italic=True)                   # styled before
+        for r in range(1, 6):
+            for j in range(1, 5):
+                c = ws.cell(r, j, r * j + 0.5 if j > 1 else f"row {r}")
+                spec = dict(font=bold if j % 2 else Font(bold=True, size=9),
+                            border=box, number_format="0.000" if r % 2 else "0.0##",
+                            alignment=Alignment(horizontal="right"))
+                if r == 1:
+                    spec["fill"] = fill
+                if fast:
+                    styles(c, **spec)
+                else:
+                    for name, value in spec.items():
+                        setattr(c, name, value)
+        return wb
+
+    a, b = _parts(build(True)), _parts(build(False))
+    assert list(a) == list(b)
+    for part in a:
+        assert a[part] == b[part], part
+    ws = build(True).active
+    assert ws["B1"].font.b and ws["B3"].font.sz == 9 and ws["C3"].font.sz is None
+    assert ws["C2"].number_format == "0.0##" and ws["C3"].number_format == "0.000"
+    assert ws["D1"].fill.fgColor.rgb.endswith("DDEBF7") and ws["D2"].fill.fill_type is None

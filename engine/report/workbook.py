@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import operator
 from array import array
 
 import numpy as np
@@ -166,6 +167,32 @@ def _copy_style(src, dst):
     dst._style = None if st is None else _new_array(type(st), "i", st)
 
 
+def _put_table(ws, r0, rows, proto):
+    """Write ``rows`` from row ``r0``, column A, each cell (:func:`_put`) below the first
+    row styled as the cell of ``proto`` (the template's first table row) of its column.
+    Rows of numbers go in at once (:func:`crankbase.workbook.put_numbers`), their styles
+    copied in C."""
+    from openpyxl.styles.cell_style import StyleArray
+
+    from crankbase.workbook import put_numbers
+
+    if not all(v is None or type(v) in _PLAIN for row in rows for v in row):
+        for i, rowvals in enumerate(rows):
+            for j, val in enumerate(rowvals):
+                c = ws.cell(r0 + i, j + 1)
+                _put(c, val)
+                if i:
+                    _copy_style(proto[j], c)
+        return
+    put_numbers(ws, r0, 1, rows)
+    cells = ws._cells
+    styles = [p._style for p in proto]
+    for i in range(1, len(rows)):
+        r = r0 + i
+        for j, st in zip(range(1, len(rows[i]) + 1), styles):
+            cells[(r, j)]._style = None if st is None else _new_array(StyleArray, "i", st)
+
+
 def _check_finite(values, where):
     for key, val in values.items():
         if isinstance(val, float) and not math.isfinite(val):
@@ -233,13 +260,7 @@ def build_workbook(result, lang="ru"):
         cols += [n / mu, n]
     cols += [table["M_Nm"].to_numpy(), table["psi_deg"].to_numpy()]
     data = np.column_stack(cols)
-    for i, rowvals in enumerate(data.tolist()):
-        r = _T2_FIRST_ROW + i
-        for j, val in enumerate(rowvals):
-            c = ws_t2.cell(r, j + 1)
-            _put(c, val)
-            if i:
-                _copy_style(proto[j], c)
+    _put_table(ws_t2, _T2_FIRST_ROW, data.tolist(), proto)
 
     if len(table) < len(full):
         _put(ws_t2["E2"], thinned_note(full, table, "forces.csv", lang))
@@ -263,12 +284,7 @@ def build_workbook(result, lang="ru"):
         _put(ws_data["A2"], thinned_note(full, table, "forces.csv", lang))
     for j, name in enumerate(COLUMNS):
         ws_data.cell(_DATA_FIRST_ROW - 1, j + 1, name)
-    for i, rowvals in enumerate(table[list(COLUMNS)].to_numpy().tolist()):
-        for j, val in enumerate(rowvals):
-            c = ws_data.cell(_DATA_FIRST_ROW + i, j + 1)
-            _put(c, val)
-            if i:
-                _copy_style(proto[j], c)
+    _put_table(ws_data, _DATA_FIRST_ROW, table[list(COLUMNS)].to_numpy().tolist(), proto)
 
     # Charts over α, from the fine grid (the summary's grid: the charts' extremes are
     # the summary's) on a hidden sheet, each series in its own colour and dash; two
@@ -671,7 +687,8 @@ def readable_numbers(ws, widths=None, default_width=None, per_column=True):
                 and not (c.font.sz and c.font.sz > 11)):   # headers, not titles
             c.alignment = Alignment(wrap_text=True, vertical="top")
     if default_width:
-        for j in range(1, ws.max_column + 1):
+        last = max(map(operator.itemgetter(1), ws._cells), default=1)   # ws.max_column
+        for j in range(1, last + 1):
             ws.column_dimensions[get_column_letter(j)].width = default_width
     for col, w in (widths or {}).items():
         ws.column_dimensions[col].width = w
