@@ -672,24 +672,29 @@ def _number_cell_writer(write_cell, number_text):
             if comment is not None:
                 ws._comments.append(CommentRecord.from_cell(cell))
             st = cell._style
-            styled = st is not None and any(st)
-            value = cell._value
-            if value is None and not styled and not comment:
-                continue
-            if styled:
-                # the style's id, found (or added to the workbook's styles) in the order
-                # of the cells as openpyxl does; by the bytes of the style's ids (hashed in
-                # C) after its first cell
+            if st is None:
+                sid = -1
+            else:
+                # the style's id (-1: no style), found (or added to the workbook's styles)
+                # in the order of the cells as openpyxl does; known by the bytes of the
+                # style's ids (hashed in C) after its first cell
                 key = st.tobytes()
                 sid = sids.get(key)
                 if sid is None:
-                    sid = ids.get(st)
-                    if sid is None:
-                        sid = styles.add(st)
+                    if any(st):
+                        sid = ids.get(st)
+                        if sid is None:
+                            sid = styles.add(st)
+                    else:
+                        sid = -1
                     sids[key] = sid
+            styled = sid >= 0
+            value = cell._value
+            if value is None and not styled and not comment:
+                continue
             kind = type(value)
-            if raw is None or cell.data_type != "n" or cell.hyperlink or not (
-                    value is None or kind is int or kind is float and isfinite(value)):
+            if raw is None or cell.data_type != "n" or getattr(cell, "_hyperlink", None) \
+                    or not (value is None or kind is int or kind is float and isfinite(value)):
                 parts.append((cell, styled))
                 plain = False
                 continue
@@ -697,16 +702,13 @@ def _number_cell_writer(write_cell, number_text):
             letter = letters.get(col)
             if letter is None:
                 letter = letters[col] = get_column_letter(col)
-            if styled:
-                head = f'<c r="{letter}{tail}" s="{sid}" t="n"'
-            else:
-                head = f'<c r="{letter}{tail}" t="n"'
             if value is None:
-                parts.append(head + " />")
-            elif kind is float:
-                parts.append(f"{head}><v>{float_repr(value)}</v></c>")
-            else:
-                parts.append(f"{head}><v>{number_text(value)}</v></c>")
+                parts.append(f'<c r="{letter}{tail}" s="{sid}" t="n" />' if styled
+                             else f'<c r="{letter}{tail}" t="n" />')
+                continue
+            text = float_repr(value) if kind is float else number_text(value)
+            parts.append(f'<c r="{letter}{tail}" s="{sid}" t="n"><v>{text}</v></c>' if styled
+                         else f'<c r="{letter}{tail}" t="n"><v>{text}</v></c>')
         if plain and all(k[:1] != "{" and _PLAIN_ATTRIBUTE.match(v) for k, v in attrs.items()):
             # the row element as et_xmlfile writes it (attributes in order, none to
             # escape; an opening and a closing tag), around its cells' texts
