@@ -19,7 +19,9 @@ which gives the whole workbook
 
 :func:`save` writes atomically with every float bit for bit; :func:`bounded` thins a table
 longer than :data:`MAX_ROWS` rows for a sheet (the CSV keeps every row);
-:func:`summary_workbook` writes a one-table workbook (the variants summary).
+:func:`summary_workbook` writes a one-table workbook (the variants summary).  Writers fill
+their tables with :func:`put_numbers` (number cells made at once), :func:`header_rows` and
+:class:`CellStyles` (a style object looked up in the workbook once, not at every cell).
 
 openpyxl is imported inside the functions only.
 """

@@ -800,7 +800,8 @@ def add_engine_sheets(wb, tr, lang="ru"):
     # one-cylinder curves
     cd = _chart_data(wb, lang)
     names = [c for c in tr.curves.columns if c.startswith("M_") or c == "alpha_deg"]
-    col, first, last = _put_columns(cd, tr.curves, names, cd.max_column + 2)
+    last_col = max(map(operator.itemgetter(1), cd._cells), default=1)    # cd.max_column
+    col, first, last = _put_columns(cd, tr.curves, names, last_col + 2)
     ch = ScatterChart()
     ch.title = t["chart"]
     ch.x_axis.title = t["alpha"]
