@@ -747,10 +747,14 @@ def _fit_rows(ws, texts):
             w = widths[col] = _col_width(ws, col)
         return w
 
+    from openpyxl.styles.cell_style import StyleArray
+
     looks = {}                  # {(font id, alignment id): (wraps, bold, size)}
     for c in texts:
         st = c._style
-        key = None if st is None else (st[0], st[5])
+        if st is None:          # as reading c.alignment does: every text has its style ids
+            st = c._style = StyleArray()
+        key = (st[0], st[5])
         look = looks.get(key)
         if look is None:
             font, al = c.font, c.alignment
