@@ -646,7 +646,9 @@ def readable_numbers(ws, widths=None, default_width=None, per_column=True):
     from openpyxl.styles import Alignment
     from openpyxl.utils import get_column_letter
 
-    from crankbase.workbook import set_number_format
+    from openpyxl.styles.cell_style import StyleArray
+
+    from crankbase.workbook import CellStyles, set_number_format
 
     def fmt(a):
         return "0" if a >= 1e5 else "0.0" if a >= 1e3 else "0.00" if a >= 1 else "0.0000"
@@ -682,10 +684,20 @@ def readable_numbers(ws, widths=None, default_width=None, per_column=True):
                 by_format.setdefault(fmt(abs(v)), []).append(c)
     for f, group in by_format.items():
         set_number_format(group, f)
+    heads = {}                      # {font id: a header's font (bold, not a title's)}
+    styles = CellStyles(ws.parent)
+    wrap = Alignment(wrap_text=True, vertical="top")
     for c in cells:
-        if (isinstance(c.value, str) and c.font.b
-                and not (c.font.sz and c.font.sz > 11)):   # headers, not titles
-            c.alignment = Alignment(wrap_text=True, vertical="top")
+        if isinstance(c._value, str):
+            st = c._style
+            if st is None:          # as reading c.font does: the text gets its style ids
+                st = c._style = StyleArray()
+            head = heads.get(st[0])
+            if head is None:
+                f = c.font
+                head = heads[st[0]] = bool(f.b and not (f.sz and f.sz > 11))
+            if head:                # headers, not titles
+                styles(c, alignment=wrap)
     if default_width:
         last = max(map(operator.itemgetter(1), ws._cells), default=1)   # ws.max_column
         for j in range(1, last + 1):
