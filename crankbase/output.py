@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import re
 import tempfile
 from pathlib import Path
 
@@ -578,6 +579,7 @@ def full_precision_xlsx():
             return float.__repr__(value)
         return original(value)
 
+    safe_string.finite_float_text = float.__repr__
     _writer.safe_string = safe_string
     cell_writer = _number_cell_writer(original_cell, safe_string)
     sheet_writer.write_cell = cell_writer
@@ -597,14 +599,13 @@ def _sheet_rows(self):
     """openpyxl's ``WorksheetWriter.rows``: [(row, its cells left to right)], a row of
     only a height or a style (a row dimension) with no cells; the cells' keys sorted
     alone (pairs of ints), several times cheaper than sorting the (key, cell) pairs."""
+    import itertools
+    import operator
+
     cells = self.ws._cells
-    rows = {}
-    for key in sorted(cells):
-        r = key[0]
-        row = rows.get(r)
-        if row is None:
-            row = rows[r] = []
-        row.append(cells[key])
+    cell = cells.__getitem__
+    rows = {r: list(map(cell, keys))
+            for r, keys in itertools.groupby(sorted(cells), operator.itemgetter(0))}
     for r in self.ws.row_dimensions.keys() - rows.keys():
         rows[r] = []
     return sorted(rows.items())
@@ -630,6 +631,8 @@ def _number_cell_writer(write_cell, number_text):
     from openpyxl.utils.cell import get_column_letter
 
     isfinite = math.isfinite
+    # number_text of a finite float, when it says which (full_precision_xlsx's: repr)
+    float_repr = getattr(number_text, "finite_float_text", number_text)
 
     def write(xf, worksheet, cell, styled=None):
         raw = getattr(xf, "_file", None)
@@ -647,6 +650,7 @@ def _number_cell_writer(write_cell, number_text):
             raw(f'<c r="{cell.coordinate}"{style} t="n"><v>{number_text(value)}</v></c>')
 
     letters = {}
+    sid_cache = {}                  # {id(styles): (styles, {style ids' bytes: style id})}
 
     def write_row(self, xf, row, row_idx):
         # openpyxl's WorksheetWriter.write_row, the number cells as write() writes them
@@ -656,46 +660,80 @@ def _number_cell_writer(write_cell, number_text):
         raw = getattr(xf, "_file", None)
         styles = ws.parent._cell_styles
         ids = styles._dict
+        cache = sid_cache.get(id(styles))
+        if cache is None or cache[0] is not styles:
+            cache = sid_cache[id(styles)] = (styles, {})
+        sids = cache[1]
         tail = f"{row_idx}"
+        parts = []                  # the cells' texts, or (cell, styled) for write_cell
+        plain = raw is not None
+        for cell in row:
+            comment = cell._comment
+            if comment is not None:
+                ws._comments.append(CommentRecord.from_cell(cell))
+            st = cell._style
+            if st is None:
+                sid = -1
+            else:
+                # the style's id (-1: no style), found (or added to the workbook's styles)
+                # in the order of the cells as openpyxl does; known by the bytes of the
+                # style's ids (hashed in C) after its first cell
+                key = st.tobytes()
+                sid = sids.get(key)
+                if sid is None:
+                    if any(st):
+                        sid = ids.get(st)
+                        if sid is None:
+                            sid = styles.add(st)
+                    else:
+                        sid = -1
+                    sids[key] = sid
+            styled = sid >= 0
+            value = cell._value
+            if value is None and not styled and not comment:
+                continue
+            kind = type(value)
+            if raw is None or cell.data_type != "n" or getattr(cell, "_hyperlink", None) \
+                    or not (value is None or kind is int or kind is float and isfinite(value)):
+                parts.append((cell, styled))
+                plain = False
+                continue
+            col = cell.column
+            letter = letters.get(col)
+            if letter is None:
+                letter = letters[col] = get_column_letter(col)
+            if value is None:
+                parts.append(f'<c r="{letter}{tail}" s="{sid}" t="n" />' if styled
+                             else f'<c r="{letter}{tail}" t="n" />')
+                continue
+            text = float_repr(value) if kind is float else number_text(value)
+            parts.append(f'<c r="{letter}{tail}" s="{sid}" t="n"><v>{text}</v></c>' if styled
+                         else f'<c r="{letter}{tail}" t="n"><v>{text}</v></c>')
+        if plain and all(k[:1] != "{" and _PLAIN_ATTRIBUTE.match(v) for k, v in attrs.items()):
+            # the row element as et_xmlfile writes it (attributes in order, none to
+            # escape; an opening and a closing tag), around its cells' texts
+            raw("<row" + "".join(f' {k}="{v}"' for k, v in attrs.items()) + ">"
+                + "".join(parts) + "</row>")
+            return
         with xf.element("row", attrs):
             run = []
-            for cell in row:
-                comment = cell._comment
-                if comment is not None:
-                    ws._comments.append(CommentRecord.from_cell(cell))
-                st = cell._style
-                styled = st is not None and any(st)
-                value = cell._value
-                if value is None and not styled and not comment:
+            for part in parts:
+                if type(part) is str:
+                    run.append(part)
                     continue
-                kind = type(value)
-                if raw is None or cell.data_type != "n" or cell.hyperlink or not (
-                        value is None or kind is int or kind is float and isfinite(value)):
-                    if run:
-                        raw("".join(run))
-                        run = []
-                    write_cell(xf, ws, cell, styled)
-                    continue
-                col = cell.column
-                letter = letters.get(col)
-                if letter is None:
-                    letter = letters[col] = get_column_letter(col)
-                if styled:
-                    sid = ids.get(st)
-                    if sid is None:
-                        sid = styles.add(st)
-                    head = f'<c r="{letter}{tail}" s="{sid}" t="n"'
-                else:
-                    head = f'<c r="{letter}{tail}" t="n"'
-                if value is None:
-                    run.append(head + " />")
-                else:
-                    run.append(f"{head}><v>{number_text(value)}</v></c>")
+                if run:
+                    raw("".join(run))
+                    run = []
+                write_cell(xf, ws, *part)
             if run:
                 raw("".join(run))
 
     write.row_writer = write_row
     return write
+
+
+#: An attribute value of a row that needs no escaping in XML (a number, a flag).
+_PLAIN_ATTRIBUTE = re.compile(r"[\w.+-]*\Z")
 
 
 #: Device names Windows reserves, with any extension and in any case (``con.xlsx``,

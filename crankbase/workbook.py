@@ -19,7 +19,9 @@ which gives the whole workbook
 
 :func:`save` writes atomically with every float bit for bit; :func:`bounded` thins a table
 longer than :data:`MAX_ROWS` rows for a sheet (the CSV keeps every row);
-:func:`summary_workbook` writes a one-table workbook (the variants summary).
+:func:`summary_workbook` writes a one-table workbook (the variants summary).  Writers fill
+their tables with :func:`put_numbers` (number cells made at once), :func:`header_rows` and
+:class:`CellStyles` (a style object looked up in the workbook once, not at every cell).
 
 openpyxl is imported inside the functions only.
 """
@@ -27,7 +29,9 @@ from __future__ import annotations
 
 import copy
 import functools
+import itertools
 import math
+import operator
 import re
 
 from .output import paused_gc
@@ -37,7 +41,7 @@ __all__ = ["A4_LANDSCAPE_PRINT_CM", "FONT", "HEAD_FILL", "MAX_ROWS", "MAX_WIDTH"
            "style_header",
            "table_blocks", "unify_fonts", "fit_numbers", "fit_columns", "fit_rows",
            "page_setup", "finish", "save", "set_number_format", "put_numbers", "bounded", "filled_cells", "sheet_rows", "thinned_note", "summary_workbook", "new_workbook",
-           "words", "Words", "header_rows"]
+           "words", "Words", "header_rows", "CellStyles"]
 
 #: The one font family of every workbook (metric twin: Liberation Sans).
 FONT = "Arial"
@@ -113,14 +117,34 @@ def _is_number(v) -> bool:
     return isinstance(v, (int, float)) and not isinstance(v, bool)
 
 
+#: The types of a number :func:`_is_number` takes at a glance (a bool is no number; a
+#: subclass of int or float, numpy's float64, goes the long way).
+_PLAIN = frozenset((float, int))
+
+
+def _finite(values) -> bool:
+    """Every value of ``values`` (Python floats and ints) finite, their sum found in C (a
+    sum past the largest float, or an int too large for a float, says False: the caller
+    then looks value by value)."""
+    try:
+        return math.isfinite(sum(values))
+    except OverflowError:
+        return False
+
+
 def number_format(values) -> str:
     """One display format for ``values``: about six significant digits of the largest
     magnitude (``0.000`` for 123.456…; at most eight decimals), fewer when fewer show
     every value exactly (``0.0`` for angles on a 0.5° grid, ``0`` for whole numbers)."""
-    nums = [float(v) for v in values if _is_number(v) and math.isfinite(v)]
-    if not nums or all(v.is_integer() for v in nums):
+    values = values if isinstance(values, list) else list(values)
+    nums = [v for v in values if type(v) is float]
+    if len(nums) != len(values):        # ints, a bool, a text, numpy's scalars
+        nums = [float(v) for v in values if _is_number(v) and math.isfinite(v)]
+    elif not _finite(nums):
+        nums = [v for v in nums if math.isfinite(v)]
+    if not nums or all(map(float.is_integer, nums)):
         return "0"
-    top = max(abs(v) for v in nums)
+    top = max(map(abs, nums))
     if top == 0:
         return "0"
     most = max(0, min(8, 5 - math.floor(math.log10(top))))
@@ -182,12 +206,78 @@ def header_rows(ws, row, labels, names, col=1):
     Returns the first data row."""
     from openpyxl.styles import Alignment
 
+    head = sub = None               # the style ids of the first header cells
     for j, (label, name) in enumerate(zip(labels, names), start=col):
-        style_header(ws.cell(row, j, label))
+        c = ws.cell(row, j, label)
+        if head is None:
+            style_header(c)
+            head = c._style
+        else:                       # the same font, fill, border and alignment
+            _same_style(c, head, (0, 1, 2, 5))
         c = ws.cell(row + 1, j, str(name))
-        c.font = font(italic=True, size=8, color="555555")
-        c.alignment = Alignment(horizontal="center")
+        if sub is None:
+            c.font = font(italic=True, size=8, color="555555")
+            c.alignment = Alignment(horizontal="center")
+            sub = c._style
+        else:
+            _same_style(c, sub, (0, 5))
     return row + 2
+
+
+def _same_style(cell, ids, fields):
+    """Give ``cell`` the style ``ids`` (a StyleArray) has in ``fields`` (0 font, 1 fill,
+    2 border, 5 alignment …): what ``cell.font = …`` and the like set, each style object
+    looked up (hashed) in the workbook's styles once for all cells, not once a cell."""
+    from openpyxl.styles.cell_style import StyleArray
+
+    st = cell._style
+    if not st:
+        st = cell._style = StyleArray()
+    for k in fields:
+        st[k] = ids[k]
+
+
+class CellStyles:
+    """``styles(cell, font=…, border=…, number_format=…)`` does what ``cell.font = …;
+    cell.border = …; cell.number_format = …`` do, each style object looked up in the
+    workbook's styles once, then known by its identity: openpyxl hashes a font, fill,
+    border or alignment at every assignment, most of the time a writer spends styling a
+    table cell by cell.  The style objects given must not change while in use."""
+
+    #: The StyleArray index and the workbook's collection of each style (openpyxl's
+    #: StyleableObject descriptors).
+    FIELDS = {"font": (0, "_fonts"), "fill": (1, "_fills"), "border": (2, "_borders"),
+              "protection": (4, "_protections"), "alignment": (5, "_alignments")}
+
+    def __init__(self, wb):
+        self.wb = wb
+        self._ids = {}              # {(name, id(style)): (style, its index)}
+
+    def _index(self, name, value):
+        from openpyxl.styles.numbers import BUILTIN_FORMATS_MAX_SIZE, BUILTIN_FORMATS_REVERSE
+
+        key = (name, id(value))
+        got = self._ids.get(key)
+        if got is None:
+            if name == "number_format":
+                idx = BUILTIN_FORMATS_REVERSE.get(value)
+                if idx is None:
+                    idx = self.wb._number_formats.add(value) + BUILTIN_FORMATS_MAX_SIZE
+            else:
+                idx = getattr(self.wb, self.FIELDS[name][1]).add(value)
+            got = self._ids[key] = (value, idx)     # the style kept: its id stays its own
+        return got[1]
+
+    def __call__(self, cell, **styles):
+        from openpyxl.styles.cell_style import StyleArray
+
+        st = cell._style
+        if not st:
+            st = cell._style = StyleArray()
+        for name, value in styles.items():
+            st[_NUM_FMT if name == "number_format" else self.FIELDS[name][0]] = \
+                self._index(name, value)
+        return cell
 
 
 def new_workbook():
@@ -240,20 +330,93 @@ def filled_cells(ws):
     # {(row, column): cell}: its keys sorted alone (pairs of ints), several times
     # cheaper than its items sorted (pairs of a pair and a cell), in the same order
     cells = ws._cells
-    return [c for c in map(cells.__getitem__, sorted(cells)) if c.value is not None]
+    return [c for c in map(cells.__getitem__, sorted(cells)) if c._value is not None]
 
 
-def _filled_rows(ws, cells=None):
-    """:func:`filled_cells` (or ``cells``, as it gives them) as a list of rows (a row
-    without a value left out)."""
-    rows = []
-    last = None
-    for c in (filled_cells(ws) if cells is None else cells):
-        if c.row != last:
-            rows.append([])
-            last = c.row
-        rows[-1].append(c)
-    return rows
+_ROW = operator.attrgetter("row")
+_COLUMN = operator.itemgetter(1)
+
+
+def _max_column(ws):
+    """``ws.max_column`` (the last column of a cell of ``ws``, 1 without one), the keys
+    read in C."""
+    cells = ws._cells
+    return max(map(_COLUMN, cells)) if cells else 1
+
+
+class _Scan:
+    """What the passes of :func:`finish` read of a sheet's filled cells, found in one
+    walk over them (row by row, as :func:`filled_cells` gives them):
+
+    ``blocks``
+        the table columns of :func:`table_blocks`, ``[column, first row, last row,
+        its cells]``, sorted by column and first row;
+    ``lone``
+        the numbers outside every table (in rows that are no table row), in order;
+    ``plain``
+        the cells of a Python float or int (the bulk of a sheet), in order;
+    ``other``
+        every other filled cell (texts, bools, numpy's scalars …), in order;
+    ``texts``
+        the cells of a text, in order;
+    ``shown_in_row``
+        {row: its columns not hidden} of each row that holds a text."""
+
+    __slots__ = ("blocks", "lone", "plain", "other", "texts", "shown_in_row")
+
+    def __init__(self, ws, cells=None):
+        cells = filled_cells(ws) if cells is None else cells
+        widths = {}
+
+        def width(col):
+            w = widths.get(col)
+            if w is None:
+                w = widths[col] = _col_width(ws, col)
+            return w
+
+        blocks, lone, plain, other, texts, shown_in_row = [], [], [], [], [], {}
+        runs = {}                       # {column: its open block}
+        for r, group in itertools.groupby(cells, _ROW):
+            row = list(group)
+            nums = [c for c in row if type(c._value) in _PLAIN]
+            plain += nums
+            if len(nums) != len(row):
+                rest = [c for c in row if type(c._value) not in _PLAIN]
+                other += rest
+                words = [c for c in rest if isinstance(c._value, str)]
+                if words:
+                    texts += words
+                    shown_in_row[r] = {c.column for c in row if width(c.column)}
+                nums = [c for c in row if _is_number(c._value)]   # numpy's floats too
+            # a table row: two numbers or more, fewer than three shown texts before the
+            # first (quantity, unit and key make a list of one quantity a row)
+            if len(nums) < 2:
+                lone += nums
+                continue
+            lead = 0
+            head = nums[0]
+            for c in row:
+                if c is head:
+                    break
+                if isinstance(c._value, str):
+                    lead += width(c.column) > 0
+            if lead >= 3:
+                lone += nums
+                continue
+            for c in nums:
+                col = c.column
+                run = runs.get(col)
+                if run is not None and run[2] == r - 1:
+                    run[2] = r
+                    run[3].append(c)
+                else:
+                    if run is not None:
+                        blocks.append(run)
+                    runs[col] = [col, r, r, [c]]
+        blocks += runs.values()
+        blocks.sort(key=lambda b: (b[0], b[1]))
+        self.blocks, self.lone, self.plain, self.other = blocks, lone, plain, other
+        self.texts, self.shown_in_row = texts, shown_in_row
 
 
 def table_blocks(ws, cells=None):
@@ -262,59 +425,30 @@ def table_blocks(ws, cells=None):
     row (a list of single values with labels is not a table, nor a list of one quantity
     a row: numbers after three texts such as quantity, unit and key).  ``cells``: the
     sheet's :func:`filled_cells`, when the caller has them."""
-    numeric = {}
-    shown = {}                    # {column: not hidden}
-    for row in _filled_rows(ws, cells):
-        cols = [c.column for c in row if _is_number(c.value)]
-        if len(cols) < 2:
-            continue
-        lead = 0                  # texts before the first number (quantity, unit, key)
-        for c in row:
-            if _is_number(c.value):
-                break
-            if isinstance(c.value, str):
-                col = c.column
-                if col not in shown:
-                    shown[col] = _col_width(ws, col) > 0
-                lead += shown[col]
-        if lead < 3:
-            numeric[row[0].row] = cols
-    blocks = []
-    runs = {}
-    for r in sorted(numeric):
-        for col in numeric[r]:
-            start, end = runs.get(col, (None, None))
-            if end is not None and end == r - 1:
-                runs[col] = (start, r)
-            else:
-                if start is not None:
-                    blocks.append((col, start, end))
-                runs[col] = (r, r)
-    blocks += [(col, s, e) for col, (s, e) in runs.items()]
-    return sorted(blocks)
+    return [(col, r0, r1) for col, r0, r1, _ in _Scan(ws, cells).blocks]
 
 
 def fit_numbers(ws, cells=None):
     """One number format per column of each table (:func:`table_blocks`), and each number
     alone in its row its own six digits; text formats (``@``) are kept.  ``cells``: the
     sheet's :func:`filled_cells`, when the caller has them."""
-    cells = filled_cells(ws) if cells is None else cells
-    at = ws._cells
-    in_table = set()
-    for col, r0, r1 in table_blocks(ws, cells):
-        block = [at[(r, col)] for r in range(r0, r1 + 1)]     # each holds a number
-        set_number_format(block, number_format(c.value for c in block))
-        in_table.update(zip(range(r0, r1 + 1), [col] * (r1 + 1 - r0)))
-    for c in cells:
-        if _is_number(c.value) and (c.row, c.column) not in in_table \
-                and c.number_format != "@":
-            c.number_format = number_format([c.value])
+    _fit_numbers(ws, _Scan(ws, cells))
+
+
+def _fit_numbers(ws, scan):
+    for _, _, _, block in scan.blocks:                   # each cell holds a number
+        set_number_format(block, number_format([c._value for c in block]))
+    for c in scan.lone:
+        if c.number_format != "@":
+            c.number_format = number_format([c._value])
 
 
 def set_number_format(cells, fmt):
     """``c.number_format = fmt`` for every cell of ``cells`` (of one workbook), the
     format looked up (or added to the workbook's formats) once: what openpyxl's setter
     does per cell."""
+    from array import array
+
     from openpyxl.styles.cell_style import StyleArray
     from openpyxl.styles.numbers import BUILTIN_FORMATS_MAX_SIZE, BUILTIN_FORMATS_REVERSE
 
@@ -324,10 +458,16 @@ def set_number_format(cells, fmt):
             idx = BUILTIN_FORMATS_REVERSE.get(fmt)
             if idx is None:
                 idx = c.parent.parent._number_formats.add(fmt) + BUILTIN_FORMATS_MAX_SIZE
+            # a cell without a style gets openpyxl's StyleArray() with the format set,
+            # a copy of this one made in C (StyleArray's own constructor is Python)
+            blank = StyleArray()
+            blank[_NUM_FMT] = idx
+            new = array.__new__
         st = c._style
         if not st:
-            st = c._style = StyleArray()
-        st[_NUM_FMT] = idx                      # st.numFmtId = idx, without the descriptor
+            c._style = new(StyleArray, "i", blank)
+        else:
+            st[_NUM_FMT] = idx                  # st.numFmtId = idx, without the descriptor
 
 
 #: The index of ``numFmtId`` in openpyxl's StyleArray (fontId, fillId, borderId,
@@ -348,7 +488,8 @@ def put_numbers(ws, r0, c0, rows):
     for r, values in enumerate(rows, start=r0):
         for j, v in enumerate(values, start=c0):
             kind = type(v)
-            if (r, j) in cells or not (v is None or kind is float or kind is int):
+            key = (r, j)
+            if key in cells or not (v is None or kind is float or kind is int):
                 ws.cell(r, j).value = v
                 continue
             # the state Cell(ws, row=r, column=j, value=v) gives a number (data type
@@ -356,7 +497,7 @@ def put_numbers(ws, r0, c0, rows):
             c = new(Cell)
             c.parent, c._style, c.row, c.column = ws, None, r, j
             c._value, c._hyperlink, c.data_type, c._comment = v, None, "n", None
-            cells[(r, j)] = c
+            cells[key] = c
     if r >= r0:
         ws._current_row = max(ws._current_row, r)
 
@@ -403,20 +544,34 @@ def fit_columns(ws, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH, cells=
 
     Each cell is visited once per pass, its style read once per distinct style and each
     text (each shape of a number) measured once."""
+    _fit_columns(ws, _Scan(ws, cells), max_width, fixed, min_width)
+
+
+def _extremes(values):
+    """The numbers of ``values`` (finite Python floats and ints, one format) whose shown
+    text is the widest: the largest of those not below +0 and the most negative of those
+    below or at -0.0 (rounding keeps the order, every digit is as wide as 0)."""
+    hi, lo = max(values), min(values)
+    out = []
+    if hi > 0:
+        out.append(hi)
+    elif hi == 0 and max(map(math.copysign, itertools.repeat(1.0), values)) > 0:
+        out.append(0.0)                             # a +0 (or an int 0): "0.000"
+    if lo < 0:
+        out.append(lo)
+    elif lo == 0 and min(map(math.copysign, itertools.repeat(1.0), values)) < 0:
+        out.append(-0.0)                            # a -0.0: "-0.000"
+    return out
+
+
+def _fit_columns(ws, scan, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH):
     from openpyxl.styles import Alignment
     from openpyxl.utils import get_column_letter
 
     fixed = fixed or {}
     first, covered = _merged(ws)
-    cells = filled_cells(ws) if cells is None else cells
-    hidden = {}                     # {column: hidden}
-    for c in cells:
-        if c.column not in hidden:
-            hidden[c.column] = not _col_width(ws, c.column)
-    shown_in_row = {}               # {row: columns of its values, hidden ones left out}
-    for c in cells:
-        if not hidden[c.column]:
-            shown_in_row.setdefault(c.row, set()).add(c.column)
+    skip = covered.union(first) if first else None       # merged cells: no width
+    shown_in_row = scan.shown_in_row     # {row: columns of its values, hidden ones left out}
 
     def lone(c):                    # the only value of its row (a hidden key aside)
         return shown_in_row.get(c.row, set()) <= {c.column}
@@ -431,22 +586,54 @@ def fit_columns(ws, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH, cells=
         return st
 
     need = {}
-    # numbers in a fixed format (0.000): the widest shown of a column's numbers of one
-    # style is its largest or its most negative one (rounding keeps the order, every
-    # digit is as wide as 0): {(column, style): [largest, most negative]}
+
+    def widen(col, w):
+        need[col] = max(need.get(col, 0.0), w)
+
+    # the numbers (Python floats and ints) by column and style: in a fixed format
+    # (0.000) the widest shown is that of the largest or the most negative one
+    # (:func:`_extremes`); in another each is measured
+    groups = {}                     # {(column, style ids): (a cell, [values])}
+    for c in scan.plain:
+        if skip is not None and (c.row, c.column) in skip:
+            continue
+        st = c._style
+        key = (c.column, None) if st is None else (c.column, st[0], st[5], st[3])
+        g = groups.get(key)
+        if g is None:
+            groups[key] = (c, [c._value])
+        else:
+            g[1].append(c._value)
+    for (col, *_), (c, values) in groups.items():
+        st = style(c)
+        d = _decimals(st[3])
+        if d is None or d[1]:
+            for v in values:
+                widen(col, _need(v, st)[0])
+            continue
+        if not _finite(values):                         # inf, nan: measured each
+            for v in values:
+                if type(v) is float and not math.isfinite(v):
+                    widen(col, _need(v, st)[0])
+            values = [v for v in values if type(v) is not float or math.isfinite(v)]
+            if not values:
+                continue
+        for v in _extremes(values):
+            widen(col, _need(v, st)[0])
+    # every other value: texts, bools, numpy's numbers …
     extremes = {}
-    for c in cells:
-        if (c.row, c.column) in covered or (c.row, c.column) in first:
+    for c in scan.other:
+        if skip is not None and (c.row, c.column) in skip:
             continue
         st = style(c)
-        v = c.value
+        v = c._value
         if _is_number(v) and (not isinstance(v, float) or math.isfinite(v)):
             d = _decimals(st[3])
             if d is not None and not d[1]:
                 e = extremes.get((c.column, st))
                 if e is None:
                     e = extremes[(c.column, st)] = [None, None]
-                if v > 0 or v == 0 and math.copysign(1.0, v) > 0:     # not -0.0
+                if v > 0 or v == 0 and math.copysign(1, v) > 0:     # not -0.0
                     if e[0] is None or v > e[0]:
                         e[0] = v
                 elif e[1] is None or v < e[1] or (v == e[1] == 0):
@@ -454,12 +641,11 @@ def fit_columns(ws, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH, cells=
                 continue
         elif isinstance(v, str) and lone(c) and not st[2]:
             continue                # a title runs over the empty cells beside it
-        w, _ = _need(v, st)
-        need[c.column] = max(need.get(c.column, 0.0), w)
+        widen(c.column, _need(v, st)[0])
     for (col, st), pair in extremes.items():
         for v in pair:
             if v is not None:
-                need[col] = max(need.get(col, 0.0), _need(v, st)[0])
+                widen(col, _need(v, st)[0])
     for col, w in need.items():
         letter = get_column_letter(col)
         if letter in fixed or ws.column_dimensions[letter].hidden:
@@ -476,10 +662,9 @@ def fit_columns(ws, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH, cells=
             widths[col] = _col_width(ws, col)
         return widths[col]
 
-    last = max(ws.max_column, _last_print_col(ws))
-    for c in cells:
-        if not isinstance(c.value, str) or (c.row, c.column) in covered \
-                or not col_width(c.column):
+    last = max(_max_column(ws), _last_print_col(ws))
+    for c in scan.texts:
+        if (c.row, c.column) in covered or not col_width(c.column):
             continue
         m = first.get((c.row, c.column))
         width = sum(col_width(j) for j in (range(m.min_col, m.max_col + 1) if m
@@ -493,7 +678,7 @@ def fit_columns(ws, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH, cells=
                 continue
             width = used
             ws.merge_cells(start_row=c.row, start_column=c.column, end_row=c.row,
-                           end_column=max(ws.max_column, c.column))
+                           end_column=max(_max_column(ws), c.column))
         if _need(c.value, st)[0] > width:
             al = copy.copy(c.alignment) if c.alignment else Alignment()
             c.alignment = Alignment(horizontal=al.horizontal, vertical="top",
@@ -521,7 +706,7 @@ def _last_print_col(ws):
 
 
 def _used_width(ws, col):
-    last = max(ws.max_column, col, _last_print_col(ws))
+    last = max(_max_column(ws), col, _last_print_col(ws))
     return sum(_col_width(ws, j) for j in range(col, last + 1))
 
 
@@ -542,15 +727,46 @@ def fit_rows(ws, cells=None):
     """Rows of wrapped text exactly as tall as their most lines (at their columns'
     width); other rows keep their height.  ``cells``: the sheet's :func:`filled_cells`,
     when the caller has them."""
+    _fit_rows(ws, [c for c in (filled_cells(ws) if cells is None else cells)
+                   if isinstance(c._value, str)])
+
+
+#: :func:`wrapped_lines` of the texts a workbook repeats (headers, notes), each once.
+_wrapped_lines = functools.lru_cache(maxsize=1 << 12)(wrapped_lines)
+
+
+def _fit_rows(ws, texts):
+    """:func:`fit_rows` over ``texts``, the sheet's filled cells of a text, in order."""
     first, covered = _merged(ws)
     need = {}
-    for c in (filled_cells(ws) if cells is None else cells):
-        if not (isinstance(c.value, str) and c.alignment and c.alignment.wrap_text) \
-                or (c.row, c.column) in covered or not _col_width(ws, c.column):
+    widths = {}
+
+    def col_width(col):
+        w = widths.get(col)
+        if w is None:
+            w = widths[col] = _col_width(ws, col)
+        return w
+
+    from openpyxl.styles.cell_style import StyleArray
+
+    looks = {}                  # {(font id, alignment id): (wraps, bold, size)}
+    for c in texts:
+        st = c._style
+        if st is None:          # as reading c.alignment does: every text has its style ids
+            st = c._style = StyleArray()
+        key = (st[0], st[5])
+        look = looks.get(key)
+        if look is None:
+            font, al = c.font, c.alignment
+            look = looks[key] = (bool(al and al.wrap_text), bool(font and font.b),
+                                 font.sz if font and font.sz else 11)
+        wraps, bold, size = look
+        if not wraps or (c.row, c.column) in covered or not col_width(c.column):
             continue
-        bold, size = bool(c.font and c.font.b), (c.font.sz if c.font and c.font.sz
-                                                  else 11)
-        lines = wrapped_lines(c.value, _span_width(ws, c, first), bold, size)
+        m = first.get((c.row, c.column))
+        width = sum(col_width(j) for j in (range(m.min_col, m.max_col + 1) if m
+                                           else [c.column]))
+        lines = _wrapped_lines(c._value, width, bold, size)
         need[c.row] = max(need.get(c.row, 0.0), lines * LINE_PT * size / 11 + 2)
     for r, h in need.items():
         ws.row_dimensions[r].height = round(max(h, 15.0), 1)
@@ -565,7 +781,7 @@ def page_setup(ws, orientation=None, title_rows=None, title_cols=None):
     ps.orientation = orientation or ps.orientation or "landscape"
     ws.sheet_properties.pageSetUpPr.fitToPage = True
     ps.fitToHeight = 0
-    last = _last_print_col(ws) or ws.max_column
+    last = _last_print_col(ws) or _max_column(ws)
     width = sum(_col_width(ws, j) for j in range(1, last + 1))
     ps.fitToWidth = max(1, math.ceil(width / WIDTH_PER_PAGE))
     if title_rows:
@@ -589,13 +805,15 @@ def finish(wb, fixed=None, max_width=MAX_WIDTH):
         if ws.sheet_state != "visible":
             page_setup(ws)
             continue
-        cells = filled_cells(ws)             # the sheet's values, found once
+        scan = _Scan(ws)                     # the sheet's values, found once
         merged = len(ws.merged_cells.ranges)
-        fit_numbers(ws, cells)
-        fit_columns(ws, max_width=max_width, fixed=(fixed or {}).get(ws.title),
-                    cells=cells)
+        _fit_numbers(ws, scan)
+        _fit_columns(ws, scan, max_width=max_width, fixed=(fixed or {}).get(ws.title))
         # a title fit_columns merged over its row took the cells it covers
-        fit_rows(ws, cells if len(ws.merged_cells.ranges) == merged else None)
+        if len(ws.merged_cells.ranges) == merged:
+            _fit_rows(ws, scan.texts)
+        else:
+            fit_rows(ws)
         page_setup(ws)
     return wb
 

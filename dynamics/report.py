@@ -179,7 +179,7 @@ def build_workbook(result: dict, lang="en", name=None):
             raise ValueError(f"sheet {title}: a value is not finite")
         s = wb.create_sheet(title)
         header_rows(s, 1, [column_label(c, lang, symbols) for c in df.columns], df.columns)
-        put_numbers(s, 3, 1, [[float(v) for v in rec] for rec in df.itertuples(index=False)])
+        put_numbers(s, 3, 1, df.to_numpy(float).tolist())     # Python floats
         at, rows = s._cells, range(3, 3 + len(df))
         for j, col in enumerate(df.columns, start=1):
             letter = get_column_letter(j)

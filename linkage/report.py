@@ -418,6 +418,9 @@ def write_workbook(result, path, lang: str = "ru"):
     box = Border(left=thin, right=thin, top=thin, bottom=thin)
     center = Alignment(horizontal="center", vertical="center", wrap_text=True)
     wrap = Alignment(wrap_text=True, vertical="top")
+    from crankbase.workbook import CellStyles
+
+    styles = CellStyles(wb)         # each style above looked up once
 
     # -- inputs (portrait A4: A spec key / label, B value, C unit, D meaning)
     ws = wb.active
@@ -450,9 +453,7 @@ def write_workbook(result, path, lang: str = "ru"):
     ws.append([])
     ws.append(list(t["spec_head"]))
     for c in ws[3]:
-        c.font = bold
-        c.fill = head_fill
-        c.alignment = wrap
+        styles(c, font=bold, fill=head_fill, alignment=wrap)
     from .schema import CHAIN_SCHEMA, SCHEMA
 
     schema = CHAIN_SCHEMA if spec.kind == "chain" else SCHEMA
@@ -460,13 +461,12 @@ def write_workbook(result, path, lang: str = "ru"):
         ws.append([key, value, unit_text(_spec_unit(key, schema), lang),
                    _key_meaning(key, value, lang)])
         for c in ws[ws.max_row]:
-            c.alignment = wrap
+            styles(c, alignment=wrap)
         fit(ws.max_row, widths.values())
     ws.append([])
     ws.append(list(t["cycle_head"]))
     for c in ws[ws.max_row][:3]:
-        c.font = bold
-        c.fill = head_fill
+        styles(c, font=bold, fill=head_fill)
     for label, value, unit in summary_lines(result, lang):
         ws.append([label, value, unit])
         ws.cell(ws.max_row, 1).alignment = wrap
@@ -505,17 +505,15 @@ def write_workbook(result, path, lang: str = "ru"):
     for key, df, cols in tables:
         ws = wb.create_sheet(t["sheets"][key])
         if key == "extremes":
-            _extremes_sheet(ws, df, cols, lang, bold, grey, head_fill, box, center)
+            _extremes_sheet(ws, df, cols, lang, bold, grey, head_fill, box, center, styles)
             continue
         for j, col in enumerate(cols, start=1):
             sym, unit = column_label(col, lang)
             for i, txt in enumerate((sym, unit, col), start=1):
-                cell = ws.cell(i, j, txt)
-                cell.alignment = center
-                cell.border = box
-                cell.font = grey if i == 3 else bold
+                cell = styles(ws.cell(i, j, txt), alignment=center, border=box,
+                              font=grey if i == 3 else bold)
                 if i < 3:
-                    cell.fill = head_fill
+                    styles(cell, fill=head_fill)
             ws.column_dimensions[get_column_letter(j)].width = max(11, len(col) + 2)
         for j, col in enumerate(cols, start=1):
             values = _cell_values(df[col])
@@ -594,7 +592,7 @@ _EXTREME_WIDTH = 22
 _WIDTH_PER_PAGE = 190
 
 
-def _extremes_sheet(ws, df, cols, lang, bold, grey, head_fill, box, center):
+def _extremes_sheet(ws, df, cols, lang, bold, grey, head_fill, box, center, styles):
     """The extreme positions, one quantity per row (quantity, unit, CSV key, one value
     column per extreme position): two positions of ~100 quantities print as a readable
     portrait list instead of a strip 100 columns wide."""
@@ -603,9 +601,10 @@ def _extremes_sheet(ws, df, cols, lang, bold, grey, head_fill, box, center):
     t = _SHEET[lang]
     heads = list(t["ext_head"]) + [t["extreme"].format(i=i + 1) for i in range(len(df))]
     for j, txt in enumerate(heads, start=1):
-        c = ws.cell(1, j, txt)
-        c.font, c.fill, c.border, c.alignment = bold, head_fill, box, center
+        styles(ws.cell(1, j, txt), font=bold, fill=head_fill, border=box, alignment=center)
     ws.row_dimensions[1].height = 30
+    right = Alignment(horizontal="right", wrap_text=True)
+    middle = Alignment(horizontal="center", vertical="center", wrap_text=True)
     for i, col in enumerate(cols, start=2):
         sym, unit = column_label(col, lang)
         values = _cell_values(df[col])
@@ -613,19 +612,16 @@ def _extremes_sheet(ws, df, cols, lang, bold, grey, head_fill, box, center):
             values = [t["ext_labels"].get(v, v) for v in values]
         fmt = _number_format(col, values)
         for j, v in enumerate([sym, unit, col] + values, start=1):
-            c = ws.cell(i, j, v)
-            c.border = box
+            c = styles(ws.cell(i, j, v), border=box)
             if j == 3:
-                c.font = grey
+                styles(c, font=grey)
             if j > 3:
-                c.number_format = fmt
-                c.alignment = Alignment(horizontal="right", wrap_text=True)
+                styles(c, number_format=fmt, alignment=right)
         if col == "label":                   # the stroke's name: centred, wrapped
             if max(_text_width(str(v)) for v in values) > _EXTREME_WIDTH:
                 ws.row_dimensions[i].height = 2 * _LINE_PT + 4
             for j in range(4, 4 + len(values)):
-                ws.cell(i, j).alignment = Alignment(horizontal="center", vertical="center",
-                                                    wrap_text=True)
+                styles(ws.cell(i, j), alignment=middle)
     ws.column_dimensions["A"].width = 14
     ws.column_dimensions["B"].width = 9
     ws.column_dimensions["C"].width = 22

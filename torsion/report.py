@@ -85,7 +85,7 @@ def _cell(v):
 
 def _table(ws, row, df, lang):
     """``df`` with its two header rows from ``row``; returns the row after it."""
-    from crankbase.workbook import header_rows, sheet_rows
+    from crankbase.workbook import CellStyles, header_rows, put_numbers, sheet_rows
 
     from openpyxl.styles import Alignment
 
@@ -94,14 +94,21 @@ def _table(ws, row, df, lang):
     # a text cell (a mass's name, the nodes "1.203; 3.428") stands indented from the
     # right-aligned number before it: "2467.2 6.604" would read as one row of numbers
     text = Alignment(horizontal="left", indent=1)
+    rows, words = [], []            # the cells' values; the (row, column) of each text
     for r, rec in enumerate(sheet_rows(df).itertuples(index=False), start=first):
+        values = []
         for j, (column, v) in enumerate(zip(df.columns, rec), start=1):
             if isinstance(v, str):
                 v = _word(column, v, lang)
-            cell = ws.cell(r, j, _cell(v))
             if isinstance(v, str):
-                cell.alignment = text
-    return first + len(sheet_rows(df))
+                words.append((r, j))
+            values.append(_cell(v))
+        rows.append(values)
+    put_numbers(ws, first, 1, rows)     # what ws.cell(r, j, value) makes, the numbers at once
+    styles = CellStyles(ws.parent)
+    for key in words:
+        styles(ws._cells[key], alignment=text)
+    return first + len(rows)
 
 
 def _title(ws, text, row=1):

@@ -19,8 +19,10 @@ house look (:func:`crankbase.workbook.finish`).
 from __future__ import annotations
 
 
-import copy
+import itertools
 import math
+import operator
+from array import array
 
 import numpy as np
 
@@ -130,8 +132,65 @@ def _fit_row(ws, cell, width=None):
                                                  15 * lines)
 
 
+_new_array = array.__new__
+
+#: {template path: ((its modification time, size), the workbook read from it, pickled)}.
+_TEMPLATES = {}
+
+
+def _template(path):
+    """A fresh workbook of the template ``path``: read by openpyxl once per version of the
+    file (its parse is most of the time of a report's build), then a copy unpickled from
+    that (a tenth of the time; the same workbook, saved byte for byte the same)."""
+    import os
+    import pickle
+
+    from openpyxl import load_workbook
+
+    st = os.stat(path)
+    stamp = (st.st_mtime_ns, st.st_size)
+    got = _TEMPLATES.get(str(path))
+    if got is None or got[0] != stamp:
+        got = _TEMPLATES[str(path)] = (stamp, pickle.dumps(load_workbook(path),
+                                                           pickle.HIGHEST_PROTOCOL))
+    wb = pickle.loads(got[1])
+    for ws in wb.worksheets:
+        # a pickled defaultdict keeps its items, not its factory: openpyxl's own
+        # (Worksheet._setup), which makes a row's or column's dimensions when first asked
+        ws.row_dimensions.default_factory = ws._add_row
+        ws.column_dimensions.default_factory = ws._add_column
+    return wb
+
+
 def _copy_style(src, dst):
-    dst._style = copy.copy(src._style)
+    st = src._style         # copy.copy(st), the copy made in C (StyleArray's is Python)
+    dst._style = None if st is None else _new_array(type(st), "i", st)
+
+
+def _put_table(ws, r0, rows, proto):
+    """Write ``rows`` from row ``r0``, column A, each cell (:func:`_put`) below the first
+    row styled as the cell of ``proto`` (the template's first table row) of its column.
+    Rows of numbers go in at once (:func:`crankbase.workbook.put_numbers`), their styles
+    copied in C."""
+    from openpyxl.styles.cell_style import StyleArray
+
+    from crankbase.workbook import put_numbers
+
+    if not all(v is None or type(v) in _PLAIN for row in rows for v in row):
+        for i, rowvals in enumerate(rows):
+            for j, val in enumerate(rowvals):
+                c = ws.cell(r0 + i, j + 1)
+                _put(c, val)
+                if i:
+                    _copy_style(proto[j], c)
+        return
+    put_numbers(ws, r0, 1, rows)
+    cells = ws._cells
+    styles = [p._style for p in proto]
+    for i in range(1, len(rows)):
+        r = r0 + i
+        for j, st in zip(range(1, len(rows[i]) + 1), styles):
+            cells[(r, j)]._style = None if st is None else _new_array(StyleArray, "i", st)
 
 
 def _check_finite(values, where):
@@ -158,7 +217,6 @@ def build_workbook(result, lang="ru"):
     openpyxl.Workbook
         In memory; write it with :func:`save_workbook`.
     """
-    from openpyxl import load_workbook
     from openpyxl.chart import Reference, ScatterChart, Series
 
     from crankbase.output import ensure_finite
@@ -175,7 +233,7 @@ def build_workbook(result, lang="ru"):
     ensure_finite(table, "force table")
     full = table
     table = sheet_rows(table)          # at most MAX_ROWS rows (the CSV keeps every row)
-    wb = load_workbook(template_path(f"engine_{lang}.xlsx"))
+    wb = _template(template_path(f"engine_{lang}.xlsx"))
     ws_in, ws_t2, ws_sum, ws_data, ws_ch = wb.worksheets[:5]
 
     # Inputs: fill column D by the key in column A
@@ -202,13 +260,7 @@ def build_workbook(result, lang="ru"):
         cols += [n / mu, n]
     cols += [table["M_Nm"].to_numpy(), table["psi_deg"].to_numpy()]
     data = np.column_stack(cols)
-    for i, rowvals in enumerate(data.tolist()):
-        r = _T2_FIRST_ROW + i
-        for j, val in enumerate(rowvals):
-            c = ws_t2.cell(r, j + 1)
-            _put(c, val)
-            if i:
-                _copy_style(proto[j], c)
+    _put_table(ws_t2, _T2_FIRST_ROW, data.tolist(), proto)
 
     if len(table) < len(full):
         _put(ws_t2["E2"], thinned_note(full, table, "forces.csv", lang))
@@ -232,12 +284,7 @@ def build_workbook(result, lang="ru"):
         _put(ws_data["A2"], thinned_note(full, table, "forces.csv", lang))
     for j, name in enumerate(COLUMNS):
         ws_data.cell(_DATA_FIRST_ROW - 1, j + 1, name)
-    for i, rowvals in enumerate(table[list(COLUMNS)].to_numpy().tolist()):
-        for j, val in enumerate(rowvals):
-            c = ws_data.cell(_DATA_FIRST_ROW + i, j + 1)
-            _put(c, val)
-            if i:
-                _copy_style(proto[j], c)
+    _put_table(ws_data, _DATA_FIRST_ROW, table[list(COLUMNS)].to_numpy().tolist(), proto)
 
     # Charts over α, from the fine grid (the summary's grid: the charts' extremes are
     # the summary's) on a hidden sheet, each series in its own colour and dash; two
@@ -550,15 +597,41 @@ _TR = _Lazy()
 
 def _write_rows(ws, r0, c0, rows, bold=False):
     from openpyxl.styles import Font
+    from openpyxl.styles.cell_style import StyleArray
 
+    from crankbase.workbook import put_numbers
+
+    font_id = None
+    plain = []                  # a run of rows of numbers (and None): one put_numbers
     for i, row in enumerate(rows):
-        for j, v in enumerate(row):
+        values = [float(v) if isinstance(v, (np.floating, np.integer)) and not
+                  isinstance(v, np.bool_) else v for v in row]
+        if not bold and all(v is None or type(v) in _PLAIN for v in values):
+            plain.append(values)                    # the cells _put makes, at once
+            continue
+        if plain:
+            put_numbers(ws, r0 + i - len(plain), c0, plain)
+            plain = []
+        for j, v in enumerate(values):
             cell = ws.cell(r0 + i, c0 + j)
-            _put(cell, float(v) if isinstance(v, (np.floating, np.integer)) and not
-                 isinstance(v, np.bool_) else v)
+            _put(cell, v)
             if bold:
-                cell.font = Font(bold=True)
+                if font_id is None:
+                    cell.font = Font(bold=True)
+                    font_id = cell._style[0]
+                else:               # the same font: its id, as openpyxl's setter sets it
+                    st = cell._style
+                    if not st:
+                        st = cell._style = StyleArray()
+                    st[0] = font_id
+    if plain:
+        put_numbers(ws, r0 + len(rows) - len(plain), c0, plain)
     return r0 + len(rows)
+
+
+#: The types a value of :func:`_write_rows` goes to :func:`crankbase.workbook.put_numbers`
+#: with (a bool is no number there; a text is stored by :func:`_put`).
+_PLAIN = (float, int)
 
 
 def readable_numbers(ws, widths=None, default_width=None, per_column=True):
@@ -573,33 +646,61 @@ def readable_numbers(ws, widths=None, default_width=None, per_column=True):
     from openpyxl.styles import Alignment
     from openpyxl.utils import get_column_letter
 
-    from crankbase.workbook import set_number_format
+    from openpyxl.styles.cell_style import StyleArray
+
+    from crankbase.workbook import CellStyles, set_number_format
 
     def fmt(a):
         return "0" if a >= 1e5 else "0.0" if a >= 1e3 else "0.00" if a >= 1 else "0.0000"
 
     cells = filled_cells(ws)
-    numbers = [c for c in cells if isinstance(c.value, (int, float))
-               and not isinstance(c.value, bool)]
+    by_column = {}                  # {column: its numbers}, columns in the order first met
+    for c in cells:
+        v = c._value
+        if type(v) in _PLAIN or (isinstance(v, (int, float)) and not isinstance(v, bool)):
+            got = by_column.get(c.column)
+            if got is None:
+                by_column[c.column] = [c]
+            else:
+                got.append(c)
     top, whole = {}, {}
-    for c in numbers:
-        top[c.column] = max(top.get(c.column, 0.0), abs(c.value))
-        whole[c.column] = whole.get(c.column, True) and float(c.value).is_integer()
+    for col, group in by_column.items():
+        values = [c._value for c in group]
+        top[col] = max(itertools.chain((0.0,), map(abs, values)))
+        whole[col] = all(map(float.is_integer, map(float, values)))
     by_format = {}                  # {format: cells}, formats in the order first met
-    for c in numbers:
-        if whole[c.column] or float(c.value).is_integer() and not per_column:
-            by_format.setdefault("0", []).append(c)
-        else:
-            by_format.setdefault(fmt(top[c.column] if per_column else abs(c.value)),
-                                 []).append(c)
+    if per_column:                  # a column's first number comes first in its format
+        for col, group in by_column.items():
+            by_format.setdefault("0" if whole[col] else fmt(top[col]), []).extend(group)
+    else:
+        for c in cells:
+            v = c._value
+            if c.column not in by_column or not (type(v) in _PLAIN or (
+                    isinstance(v, (int, float)) and not isinstance(v, bool))):
+                continue
+            if whole[c.column] or float(v).is_integer():
+                by_format.setdefault("0", []).append(c)
+            else:
+                by_format.setdefault(fmt(abs(v)), []).append(c)
     for f, group in by_format.items():
         set_number_format(group, f)
+    heads = {}                      # {font id: a header's font (bold, not a title's)}
+    styles = CellStyles(ws.parent)
+    wrap = Alignment(wrap_text=True, vertical="top")
     for c in cells:
-        if (isinstance(c.value, str) and c.font.b
-                and not (c.font.sz and c.font.sz > 11)):   # headers, not titles
-            c.alignment = Alignment(wrap_text=True, vertical="top")
+        if isinstance(c._value, str):
+            st = c._style
+            if st is None:          # as reading c.font does: the text gets its style ids
+                st = c._style = StyleArray()
+            head = heads.get(st[0])
+            if head is None:
+                f = c.font
+                head = heads[st[0]] = bool(f.b and not (f.sz and f.sz > 11))
+            if head:                # headers, not titles
+                styles(c, alignment=wrap)
     if default_width:
-        for j in range(1, ws.max_column + 1):
+        last = max(map(operator.itemgetter(1), ws._cells), default=1)   # ws.max_column
+        for j in range(1, last + 1):
             ws.column_dimensions[get_column_letter(j)].width = default_width
     for col, w in (widths or {}).items():
         ws.column_dimensions[col].width = w
@@ -711,7 +812,8 @@ def add_engine_sheets(wb, tr, lang="ru"):
     # one-cylinder curves
     cd = _chart_data(wb, lang)
     names = [c for c in tr.curves.columns if c.startswith("M_") or c == "alpha_deg"]
-    col, first, last = _put_columns(cd, tr.curves, names, cd.max_column + 2)
+    last_col = max(map(operator.itemgetter(1), cd._cells), default=1)    # cd.max_column
+    col, first, last = _put_columns(cd, tr.curves, names, last_col + 2)
     ch = ScatterChart()
     ch.title = t["chart"]
     ch.x_axis.title = t["alpha"]
