@@ -112,7 +112,7 @@ def main():
                 prof.enable()
                 time_saves(saves, tmp, a.repeat)
                 prof.disable()
-                pstats.Stats(prof).sort_stats("cumulative").print_stats(45)
+                pstats.Stats(prof).sort_stats(os.environ.get("BENCH_SORT", "cumulative")).print_stats(int(os.environ.get("BENCH_ROWS", "45")))
                 continue
             best = time_saves(saves, tmp, a.repeat)
         files = sum(len(kw["formats"]) for _, _, kw, _ in saves)

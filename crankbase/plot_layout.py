@@ -97,12 +97,22 @@ def save_laid_out(fig, path, fmt: str, dpi: float, **kwargs) -> None:
     if plain:
         fig.savefig(path, format=fmt, dpi=dpi, **kwargs)
         return
-    run_layout(fig, dpi, fmt)
-    # No engine while saving (what savefig does itself after its first draw): savefig
-    # skips that draw.  matplotlib has no public setter for "no engine"; "none" leaves a
-    # placeholder engine, for which savefig would still draw twice.
-    fig._layout_engine = None
+    from matplotlib.backend_bases import get_registered_canvas_class
+
+    canvas = fig.canvas
     try:
+        # the format's canvas for the layout and the save, as savefig switches to it for
+        # both: one Agg renderer measures every text once (its measures are cached by
+        # renderer)
+        if not hasattr(canvas, f"print_{fmt}"):
+            get_registered_canvas_class(fmt)(fig)
+        run_layout(fig, dpi, fmt)
+        # No engine while saving (what savefig does itself after its first draw):
+        # savefig skips that draw.  matplotlib has no public setter for "no engine";
+        # "none" leaves a placeholder engine, for which savefig would still draw twice.
+        fig._layout_engine = None
         fig.savefig(path, format=fmt, dpi=dpi, **kwargs)
     finally:
         fig.set_layout_engine(engine)
+        if fig.canvas is not canvas:
+            fig.set_canvas(canvas)
