@@ -77,28 +77,46 @@ def run_layout(fig, dpi=None, fmt="png") -> bool:
     return True
 
 
+def _tight_box(fig, engine, pad_inches, extra_artists):
+    """The box ``bbox_inches="tight"`` crops to (in inches), as savefig finds it: the
+    figure's tight box measured by the renderer of the canvas and dpi in place, padded by
+    ``pad_inches`` ("layout": the constrained layout's pads)."""
+    import matplotlib
+    from matplotlib.layout_engine import ConstrainedLayoutEngine
+
+    box = fig.get_tightbbox(fig._get_renderer(), bbox_extra_artists=extra_artists)
+    if isinstance(engine, ConstrainedLayoutEngine) and pad_inches == "layout":
+        w_pad, h_pad = engine.get()["w_pad"], engine.get()["h_pad"]
+    else:
+        if pad_inches in (None, "layout"):
+            pad_inches = matplotlib.rcParams["savefig.pad_inches"]
+        w_pad = h_pad = pad_inches
+    return box.padded(w_pad, h_pad)
+
+
 def save_laid_out(fig, path, fmt: str, dpi: float, **kwargs) -> None:
     """``fig.savefig(path, format=fmt, dpi=dpi, **kwargs)`` with the layout run once by
     :func:`run_layout` at the dpi saving lays out at (:func:`layout_dpi`) and the figure
-    then saved without its layout engine: savefig draws it once instead of twice.  The
-    same file as ``fig.savefig``'s (the same pixels; SVG and PDF the same but for their
-    date and random ids), and the figure keeps its engine.  Where that cannot be promised
-    (no layout engine, a crop (``bbox_inches``), another canvas than Agg, a format other
-    than PNG, SVG or PDF, vector layouts measured by another backend than Agg
-    (``savefig.format``)) this is plain ``fig.savefig``."""
+    then saved without its layout engine: savefig draws it once instead of twice.  A PNG
+    cropped ``bbox_inches="tight"`` has its crop measured right after that layout (savefig
+    measures it after its first draw) and given to savefig as a box.  The same file as
+    ``fig.savefig``'s (the same pixels; SVG and PDF the same but for their date and
+    random ids), and the figure keeps its engine.  Where that is not known to hold (no
+    layout engine, a crop to a given box, a cropped SVG or PDF (measured without that
+    draw, a legend moves by 1e-6 pt), another canvas than Agg, a format other than PNG,
+    SVG or PDF) this is plain ``fig.savefig``."""
     import matplotlib
-
-    engine = fig.get_layout_engine()
-    rc = matplotlib.rcParams
-    plain = (engine is None or not fig.axes or not isinstance(dpi, (int, float)) or fmt not in ("png", *VECTOR_FORMATS)
-             or kwargs.get("bbox_inches", rc["savefig.bbox"]) is not None
-             or rc["savefig.format"] != "png" or not _agg_canvas(fig)
-             or getattr(fig, "_layout_engine", None) is not engine)
-    if plain:
-        fig.savefig(path, format=fmt, dpi=dpi, **kwargs)
-        return
     from matplotlib.backend_bases import get_registered_canvas_class
 
+    engine = fig.get_layout_engine()
+    bbox = kwargs.pop("bbox_inches", matplotlib.rcParams["savefig.bbox"])
+    plain = (engine is None or not fig.axes or not isinstance(dpi, (int, float))
+             or fmt not in ("png", *VECTOR_FORMATS) or bbox not in (None, "tight")
+             or (bbox == "tight" and fmt != "png")
+             or not _agg_canvas(fig) or getattr(fig, "_layout_engine", None) is not engine)
+    if plain:
+        fig.savefig(path, format=fmt, dpi=dpi, bbox_inches=bbox, **kwargs)
+        return
     canvas = fig.canvas
     try:
         # the format's canvas for the layout and the save, as savefig switches to it for
@@ -107,11 +125,20 @@ def save_laid_out(fig, path, fmt: str, dpi: float, **kwargs) -> None:
         if not hasattr(canvas, f"print_{fmt}"):
             get_registered_canvas_class(fmt)(fig)
         run_layout(fig, dpi, fmt)
+        if bbox == "tight":
+            old_dpi = fig.dpi
+            fig.dpi = layout_dpi(fmt, dpi)
+            try:
+                bbox = _tight_box(fig, engine, kwargs.pop("pad_inches", None),
+                                  kwargs.pop("bbox_extra_artists", None))
+            finally:
+                fig.dpi = old_dpi
         # No engine while saving (what savefig does itself after its first draw):
-        # savefig skips that draw.  matplotlib has no public setter for "no engine";
-        # "none" leaves a placeholder engine, for which savefig would still draw twice.
+        # savefig skips that draw (and with a box, not "tight", its measuring draw).
+        # matplotlib has no public setter for "no engine"; "none" leaves a placeholder
+        # engine, for which savefig would still draw twice.
         fig._layout_engine = None
-        fig.savefig(path, format=fmt, dpi=dpi, **kwargs)
+        fig.savefig(path, format=fmt, dpi=dpi, bbox_inches=bbox, **kwargs)
     finally:
         fig.set_layout_engine(engine)
         if fig.canvas is not canvas:

@@ -46,12 +46,14 @@ def _saved(fig, fmt, save):
     return buf.getvalue()
 
 
-def _plain(fig, buf, fmt):
-    fig.savefig(buf, format=fmt, dpi=110, metadata=META[fmt])
+def _plain(fig, buf, fmt, **kw):
+    fig.savefig(buf, format=fmt, dpi=110, metadata=META[fmt], **kw)
 
 
-def _once(fig, buf, fmt):
-    save_laid_out(fig, buf, fmt, 110, metadata=META[fmt])
+def _once(fig, buf, fmt, **kw):
+    save_laid_out(fig, buf, fmt, 110, metadata=META[fmt], **kw)
+
+
 
 
 def _pixels(data):
@@ -73,6 +75,23 @@ def test_same_files_as_savefig(layout):
             assert a == b, fmt
     assert once.get_layout_engine() is not None          # the engine stays
     assert type(once.get_layout_engine()) is type(plain.get_layout_engine())
+
+
+@pytest.mark.parametrize("pad", [0.15, "layout"])
+def test_same_crops_as_savefig(pad):
+    # bbox_inches="tight" (the synthesis figures): the box measured after the layout
+    plain, once = _figure(), _figure()
+    crop = {"bbox_inches": "tight", "pad_inches": pad}
+    for fmt in ("png", "svg", "pdf"):
+        a = _saved(plain, fmt, lambda f, b, m: _plain(f, b, m, **crop))
+        b = _saved(once, fmt, lambda f, b, m: _once(f, b, m, **crop))
+        if fmt == "png":
+            assert _pixels(a).shape == _pixels(b).shape
+            if pad != "layout":     # a crop indeed (the layout's pads: the whole figure)
+                assert _pixels(a).shape != _pixels(_saved(_figure(), fmt, _plain)).shape
+            assert np.array_equal(_pixels(a), _pixels(b))
+        else:                       # cropped vector files: savefig's own way
+            assert a == b, fmt
 
 
 def test_vector_layout_is_measured_by_the_vector_renderer():
@@ -103,8 +122,8 @@ def test_drawn_once_per_file(tmp_path):
     save_figure(fig, tmp_path / "b", formats=("png", "svg"))
     assert len(draws) == 2
     draws.clear()
-    save_figure(fig, tmp_path / "c", formats=("png",), tight=True)   # a crop: savefig's way
-    assert len(draws) == 2
+    save_figure(fig, tmp_path / "c", formats=("png",), tight=True)   # a crop too
+    assert len(draws) == 1
 
 
 def test_run_layout_leaves_canvas_and_dpi():
