@@ -769,7 +769,11 @@ def save_figure(fig, stem, formats=("png", "svg"), dpi=110, tight=False) -> list
 
     ``stem`` is a path without suffix.  ``tight`` crops to the drawn content (keeps a
     legend placed outside the axes inside the image).  Returns the paths written.
+    A figure with a layout engine is laid out once per file and drawn once
+    (:func:`crankbase.plot_layout.save_laid_out`), not twice as by ``fig.savefig``; the
+    files are the same.
     """
+    from .plot_layout import save_laid_out
     from .plot_texts import cjk_texts
 
     cjk_texts(fig)           # Chinese labels: their mathtext as plain text (CJK fallback)
@@ -777,8 +781,8 @@ def save_figure(fig, stem, formats=("png", "svg"), dpi=110, tight=False) -> list
     extra = {"bbox_inches": "tight", "pad_inches": 0.15} if tight else {}
     for fmt in formats:
         path = Path(f"{stem}.{fmt}")
-        with atomic_path(path) as tmp:
-            fig.savefig(tmp, format=fmt, dpi=dpi, **extra)
+        with atomic_path(path) as tmp:      # a figure with a layout engine: drawn once
+            save_laid_out(fig, tmp, fmt, dpi, **extra)
         paths.append(path)
     return paths
 

@@ -17,6 +17,8 @@ from functools import lru_cache
 
 import numpy as np
 
+from .plot_layout import run_layout
+
 __all__ = ["Obstacles", "add_axes_lines", "fixed_axes_obstacles", "renderer_of", "text_size", "place_label",
            "label_points", "frozen_frame", "segment_hits_box"]
 
@@ -369,8 +371,7 @@ def fixed_axes_obstacles(ax):
     The first step of placing labels on a finished plot."""
     fig = ax.figure
     renderer_of(fig)
-    if fig.get_layout_engine() is not None:
-        fig.draw_without_rendering()              # the final axes box
+    run_layout(fig)            # the final axes box (a layout engine's), nothing drawn
     ax.apply_aspect()
     ax.set_xlim(ax.get_xlim())
     ax.set_ylim(ax.get_ylim())

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from crankbase.plot_layout import run_layout
 from crankbase.tolerances import SAME_ANGLE_DEG
 
 __all__ = ["plot_region", "plot_mu_min_curves", "plot_transmission_angle"]
@@ -156,8 +157,8 @@ def _label_curves(ax, xs, ys, names, avoid, fontsize=8, step=0.02, label_in=0.12
     the axes, the curves resampled every ``step`` inches, a label counted ``label_in``
     wide.  Layout only, no physics."""
     fig = ax.figure
-    if lines is not None and fig.get_layout_engine() is not None:
-        fig.draw_without_rendering()           # the final axes box (constrained layout)
+    if lines is not None:
+        run_layout(fig)         # the final axes box (constrained layout), nothing drawn
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
     pos = ax.get_position()
     w = pos.width * fig.get_figwidth()        # axes size in inches (before the layout:
