@@ -25,6 +25,8 @@ from pathlib import Path
 import pytest
 from hypothesis import settings
 
+from rendering import save_through_savefig
+
 settings.register_profile("ci", derandomize=True, database=None)
 if os.environ.get("CI"):
     settings.load_profile("ci")
@@ -131,6 +133,11 @@ def _run_cli(key, folder):
 
             stack.callback(setattr, Figure, "savefig", Figure.savefig)
             Figure.savefig = real if rendered else _savefig_rendering_only((), [])
+            if not rendered:
+                import crankbase.plot_layout as layout
+
+                stack.callback(setattr, layout, "save_laid_out", layout.save_laid_out)
+                layout.save_laid_out = save_through_savefig
         with contextlib.redirect_stdout(o), contextlib.redirect_stderr(e):
             rc = main([*key, "-o", str(folder)])
     return Report(folder, rc, o.getvalue(), e.getvalue(), rendered)
@@ -237,6 +244,7 @@ def unrendered_figures(monkeypatch):
 
     _REAL_SAVEFIG.setdefault("savefig", Figure.savefig)
     monkeypatch.setattr(Figure, "savefig", savefig)
+    monkeypatch.setattr("crankbase.plot_layout.save_laid_out", save_through_savefig)
     return saved
 
 
@@ -312,6 +320,7 @@ def figures_rendered_only(monkeypatch):
 
     def start(*parts):
         monkeypatch.setattr(Figure, "savefig", _savefig_rendering_only(parts, saved))
+        monkeypatch.setattr("crankbase.plot_layout.save_laid_out", save_through_savefig)
         return saved
 
     return start
@@ -329,6 +338,7 @@ def figures_rendered_only_within():
         saved = []
         with pytest.MonkeyPatch.context() as mp:
             mp.setattr(Figure, "savefig", _savefig_rendering_only(parts, saved))
+            mp.setattr("crankbase.plot_layout.save_laid_out", save_through_savefig)
             yield saved
 
     return within

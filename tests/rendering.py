@@ -59,3 +59,11 @@ def page_sizes_many(named, outdir):
         pages = re.findall(r"Page\s+\d+ size:\s+([\d.]+) x ([\d.]+) pts", info)
         sizes[key] = [tuple(sorted((round(float(w)), round(float(h))))) for w, h in pages]
     return sizes
+
+
+def save_through_savefig(fig, path, fmt, dpi, **kwargs):
+    """:func:`crankbase.plot_layout.save_laid_out` while ``Figure.savefig`` is a test's
+    stand-in (a figure saved unrendered, or laid out and not encoded): straight to it,
+    without the layout ``save_laid_out`` runs for the one draw it saves (a figure not
+    drawn needs none; one rendered for real is laid out by ``savefig``)."""
+    fig.savefig(path, format=fmt, dpi=dpi, **kwargs)

@@ -20,6 +20,7 @@ from crankbase.errors import CrankdynError
 from crankbase.resources import example_path
 from crankdyn.cli import main
 from linkage.analysis import SingularPositionWarning
+from rendering import save_through_savefig
 
 
 def _load(name):
@@ -237,6 +238,7 @@ def _laid_out_not_encoded(monkeypatch):
         saved.append(fmt)
 
     monkeypatch.setattr(Figure, "savefig", savefig)
+    monkeypatch.setattr("crankbase.plot_layout.save_laid_out", save_through_savefig)
     return saved
 
 

@@ -136,6 +136,9 @@ def _laid_out(self, fname, *args, format=None, **kwargs):
         self._laid_out = True
     Path(fname).write_bytes(f"figure laid out, not encoded ({fmt})\n".encode())
 Figure.savefig = _laid_out
+import crankbase.plot_layout as _layout   # savefig lays out: no second layout before it
+_layout.save_laid_out = lambda fig, path, fmt, dpi, **kw: fig.savefig(path, format=fmt,
+                                                                     dpi=dpi, **kw)
 from crankdyn.cli import main
 from crankbase.output import verify_report
 results = []
