@@ -366,14 +366,7 @@ class _Scan:
 
     def __init__(self, ws, cells=None):
         cells = filled_cells(ws) if cells is None else cells
-        widths = {}
-
-        def width(col):
-            w = widths.get(col)
-            if w is None:
-                w = widths[col] = _col_width(ws, col)
-            return w
-
+        width = _col_widths(ws)
         blocks, lone, plain, other, texts, shown_in_row = [], [], [], [], [], {}
         runs = {}                       # {column: its open block}
         for r, group in itertools.groupby(cells, _ROW):
@@ -655,13 +648,7 @@ def _fit_columns(ws, scan, max_width=MAX_WIDTH, fixed=None, min_width=MIN_WIDTH)
     for letter, w in fixed.items():
         ws.column_dimensions[letter].width = w
     # texts wider than their column wrap
-    widths = {}
-
-    def col_width(col):
-        if col not in widths:
-            widths[col] = _col_width(ws, col)
-        return widths[col]
-
+    col_width = _col_widths(ws)
     last = max(_max_column(ws), _last_print_col(ws))
     for c in scan.texts:
         if (c.row, c.column) in covered or not col_width(c.column):
@@ -690,6 +677,20 @@ def _col_width(ws, col):
 
     d = ws.column_dimensions[get_column_letter(col)]
     return 0.0 if d.hidden else (d.width or 8.43)
+
+
+def _col_widths(ws):
+    """:func:`_col_width` of ``ws`` as a function of the column, each column's read once
+    (for a pass over a sheet whose widths it does not change)."""
+    widths = {}
+
+    def width(col):
+        w = widths.get(col)
+        if w is None:
+            w = widths[col] = _col_width(ws, col)
+        return w
+
+    return width
 
 
 def _last_print_col(ws):
@@ -739,13 +740,7 @@ def _fit_rows(ws, texts):
     """:func:`fit_rows` over ``texts``, the sheet's filled cells of a text, in order."""
     first, covered = _merged(ws)
     need = {}
-    widths = {}
-
-    def col_width(col):
-        w = widths.get(col)
-        if w is None:
-            w = widths[col] = _col_width(ws, col)
-        return w
+    col_width = _col_widths(ws)
 
     from openpyxl.styles.cell_style import StyleArray
 
