@@ -107,7 +107,7 @@ def _table(ws, row, df, lang):
     put_numbers(ws, first, 1, rows)     # what ws.cell(r, j, value) makes, the numbers at once
     styles = CellStyles(ws.parent)
     for key in words:
-        styles(ws._cells[key], alignment=text)
+        styles(ws.cell(*key), alignment=text)
     return first + len(rows)
 
 
