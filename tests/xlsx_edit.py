@@ -36,3 +36,25 @@ def altered_copy(src, dst, changes):
             zout.writestr(item, data)
     assert not parts, f"no such sheet in {src}: {sorted(parts)}"
     return dst
+
+
+def thinned_copy(src, dst, rows):
+    """Copy the workbook ``src`` to ``dst`` with every worksheet cut to its first ``rows``
+    rows (the rows below removed from the sheet's XML, its ``<dimension>`` cut to match);
+    every other part, the page setup of each sheet included, the same bytes.  For the
+    tests that have LibreOffice print a workbook only to see the pages its page setup
+    gives: a sheet's paper and orientation are the same on each of its pages, so its first
+    pages show them, without laying out thousands of rows.  Returns ``dst``."""
+    row = re.compile(r'<row r="(\d+)"[^>]*?(?:/>|>.*?</row>)', re.S)
+    dim = re.compile(r'(<dimension ref="[A-Z]+\d+:[A-Z]+)(\d+)"')
+    with zipfile.ZipFile(src) as zin, zipfile.ZipFile(dst, "w", zipfile.ZIP_DEFLATED) \
+            as zout:
+        for item in zin.infolist():
+            data = zin.read(item)
+            if re.fullmatch(r"xl/worksheets/sheet\d+\.xml", item.filename):
+                text = row.sub(lambda m: m[0] if int(m[1]) <= rows else "",
+                               data.decode("utf-8"))
+                text = dim.sub(lambda m: f'{m[1]}{min(int(m[2]), rows)}"', text)
+                data = text.encode("utf-8")
+            zout.writestr(item, data)
+    return dst
