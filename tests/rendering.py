@@ -26,6 +26,12 @@ needs_office = pytest.mark.skipif(
     reason="LibreOffice or poppler-utils not installed")
 
 
+#: Rows of each sheet a render for its pages' size keeps (``xlsx_edit.thinned_copy``): a
+#: sheet's page setup is the same on each of its pages, and these rows still run over
+#: several pages of every long sheet.
+RENDER_ROWS = 100
+
+
 def page_sizes(xlsx, outdir):
     """The pages of ``xlsx`` converted to PDF by LibreOffice in ``outdir``: a list of
     (short side, long side) in points, one per page (A4 is (595, 842))."""

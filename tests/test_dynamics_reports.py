@@ -4,7 +4,7 @@ files; the terminal summary, the workbook and the plots speak the report's langu
 import re
 
 import pytest
-from rendering import needs_office, page_sizes_many, unrendered
+from rendering import RENDER_ROWS, needs_office, page_sizes_many, unrendered
 from xlsx_edit import thinned_copy
 
 from crankbase.output import MANIFEST_NAME, read_manifest, verify_report
@@ -314,11 +314,6 @@ def test_column_labels():
     assert column_label("M_resist_loads_Nm", "ru") == "Mс от нагрузок, Н·м"
     assert column_label("M_resist_weights_Nm", "en") == "M_c of the weights [N·m]"
     assert column_label("M_resist_loads_Nm", "zh") == "M_c（载荷） [N·m]"
-
-
-#: Rows of each sheet the A4 render below keeps (a sheet's page setup is the same on each
-#: of its pages; these rows still run over several pages of every long sheet).
-RENDER_ROWS = 100
 
 
 @pytest.mark.slow
