@@ -1,7 +1,9 @@
-"""A copy of a workbook with a few number cells changed in the file itself, as a student's
-spreadsheet leaves them: the changed cells' XML rewritten, every other part of the file the
-same bytes.  For the tests of ``crankdyn check``: no load and save of a whole report with
-openpyxl (a report's workbook holds ~40,000 cells) to alter three of them."""
+"""Copies of a workbook edited in the file itself, every other part of the file the same
+bytes: a few number cells changed, as a student's spreadsheet leaves them
+(:func:`altered_copy`, for the tests of ``crankdyn check``: no load and save of a whole
+report with openpyxl, a report's workbook holds ~40,000 cells, to alter three of them); each
+sheet cut to its first rows (:func:`thinned_copy`, for the renders that look at the pages a
+sheet's page setup gives)."""
 from __future__ import annotations
 
 import re
@@ -40,11 +42,12 @@ def altered_copy(src, dst, changes):
 
 def thinned_copy(src, dst, rows):
     """Copy the workbook ``src`` to ``dst`` with every worksheet cut to its first ``rows``
-    rows (the rows below removed from the sheet's XML, its ``<dimension>`` cut to match);
-    every other part, the page setup of each sheet included, the same bytes.  For the
-    tests that have LibreOffice print a workbook only to see the pages its page setup
-    gives: a sheet's paper and orientation are the same on each of its pages, so its first
-    pages show them, without laying out thousands of rows.  Returns ``dst``."""
+    rows: the rows below removed from the sheet's XML and its ``<dimension>`` cut to match,
+    the sheet's other elements (page setup, margins, columns, views) unchanged, every other
+    part the same bytes.  For the tests that have LibreOffice print a workbook only to see
+    the pages its page setup gives: a sheet's paper and orientation are the same on each of
+    its pages, so its first pages show them, without laying out thousands of rows.
+    Returns ``dst``."""
     row = re.compile(r'<row r="(\d+)"[^>]*?(?:/>|>.*?</row>)', re.S)
     dim = re.compile(r'(<dimension ref="[A-Z]+\d+:[A-Z]+)(\d+)"')
     with zipfile.ZipFile(src) as zin, zipfile.ZipFile(dst, "w", zipfile.ZIP_DEFLATED) \
