@@ -20,22 +20,17 @@ def altered_copy(src, dst, changes):
     it, as Excel and LibreOffice save them).  Each cell must be a number cell of
     ``src`` (``<c r="B6" …><v>x</v></c>``).  Returns ``dst``."""
     parts = {f"xl/worksheets/sheet{n}.xml": cells for n, cells in changes.items()}
-    with zipfile.ZipFile(src) as zin, zipfile.ZipFile(dst, "w", zipfile.ZIP_DEFLATED) \
-            as zout:
-        for item in zin.infolist():
-            data = zin.read(item)
-            cells = parts.pop(item.filename, None)
-            if cells:
-                text = data.decode("utf-8")
-                for coord, change in cells.items():
-                    formula, value = change if isinstance(change, tuple) else (None,
-                                                                               change)
-                    f = "" if formula is None else f"<f>{formula}</f>"
-                    text, n = re.subn(rf'(<c r="{coord}"(?: [^>]*)?>)<v>[^<]*</v>',
-                                      lambda m: f"{m[1]}{f}<v>{float(value)!r}</v>", text)
-                    assert n == 1, (item.filename, coord)
-                data = text.encode("utf-8")
-            zout.writestr(item, data)
+
+    def edit(name, text):
+        for coord, change in parts.pop(name).items():
+            formula, value = change if isinstance(change, tuple) else (None, change)
+            f = "" if formula is None else f"<f>{formula}</f>"
+            text, n = re.subn(rf'(<c r="{coord}"(?: [^>]*)?>)<v>[^<]*</v>',
+                              lambda m: f"{m[1]}{f}<v>{float(value)!r}</v>", text)
+            assert n == 1, (name, coord)
+        return text
+
+    _sheets_rewritten(src, dst, lambda name: name in parts, edit)
     assert not parts, f"no such sheet in {src}: {sorted(parts)}"
     return dst
 
@@ -50,14 +45,24 @@ def thinned_copy(src, dst, rows):
     Returns ``dst``."""
     row = re.compile(r'<row r="(\d+)"[^>]*?(?:/>|>.*?</row>)', re.S)
     dim = re.compile(r'(<dimension ref="[A-Z]+\d+:[A-Z]+)(\d+)"')
+
+    def edit(name, text):
+        text = row.sub(lambda m: m[0] if int(m[1]) <= rows else "", text)
+        return dim.sub(lambda m: f'{m[1]}{min(int(m[2]), rows)}"', text)
+
+    _sheets_rewritten(src, dst, lambda name: True, edit)
+    return dst
+
+
+def _sheets_rewritten(src, dst, chosen, edit):
+    """Copy the workbook ``src`` to ``dst``, the XML text of each worksheet part whose name
+    ``chosen(name)`` accepts replaced by ``edit(name, text)``; every other part the same
+    bytes."""
     with zipfile.ZipFile(src) as zin, zipfile.ZipFile(dst, "w", zipfile.ZIP_DEFLATED) \
             as zout:
         for item in zin.infolist():
             data = zin.read(item)
-            if re.fullmatch(r"xl/worksheets/sheet\d+\.xml", item.filename):
-                text = row.sub(lambda m: m[0] if int(m[1]) <= rows else "",
-                               data.decode("utf-8"))
-                text = dim.sub(lambda m: f'{m[1]}{min(int(m[2]), rows)}"', text)
-                data = text.encode("utf-8")
+            if re.fullmatch(r"xl/worksheets/sheet\d+\.xml", item.filename) \
+                    and chosen(item.filename):
+                data = edit(item.filename, data.decode("utf-8")).encode("utf-8")
             zout.writestr(item, data)
-    return dst
